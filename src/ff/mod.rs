@@ -1,0 +1,1 @@
+//! The `ff` layer (see DESIGN in the README).

@@ -1,0 +1,15 @@
+//! fixedfunc: the OpenGL 1.x fixed-function pipeline, emulated on a modern GL context and
+//! checked against Mesa's own fixed-function path, to reproduce the classic shadow techniques
+//! headless and measurably.
+//!
+//! Layers, lowest first (a module uses those below it, never those above):
+//! `gpu` (contexts, render targets, readback) → `ff` (commands and the GL 1.x state model,
+//! no GL calls) → `mesh`, `scene`, `truth`, `metrics` (pure) → `bench` → the `fixedfunc` CLI.
+
+pub mod bench;
+pub mod ff;
+pub mod gpu;
+pub mod mesh;
+pub mod metrics;
+pub mod scene;
+pub mod truth;

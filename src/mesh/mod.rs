@@ -1,0 +1,1 @@
+//! The `mesh` layer (see DESIGN in the README).

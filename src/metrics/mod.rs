@@ -1,0 +1,1 @@
+//! The `metrics` layer (see DESIGN in the README).

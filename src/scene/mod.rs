@@ -1,0 +1,1 @@
+//! The `scene` layer (see DESIGN in the README).

@@ -1,0 +1,1 @@
+//! The `truth` layer (see DESIGN in the README).
