@@ -1,1 +1,245 @@
-//! Contexts and render targets.
+//! The only layer that creates GL contexts.
+//!
+//! Three backends, one `GpuContext`:
+//! - `Backend::Egl` (the default): Mesa's `EGL_MESA_platform_surfaceless`, loaded at run time
+//!   through khronos-egl; when that platform is missing, the `EGL_EXT_platform_device`
+//!   platform. No window system, no surface: rendering goes to framebuffer objects.
+//! - `Backend::OsMesa`: `libOSMesa.so.8` through libloading (`OSMesaCreateContextAttribs`).
+//!   The context gets a 1×1 client buffer it never draws to; rendering goes to FBOs, so the
+//!   same frame reads back identically on both headless backends.
+//! - `Backend::Window`: glutin + winit on X11, a real window that can present a rendered
+//!   target (a framebuffer blit) and save what it shows.
+//!
+//! Each backend gives either profile: `Profile::Core33` for the emulated pipeline,
+//! `Profile::Compatibility` for Mesa's native fixed-function path (the oracle).
+//! A library that does not load is a `GpuError::LibraryMissing` naming the Debian package.
+
+mod conv;
+mod egl;
+mod error;
+mod info;
+mod osmesa;
+mod readback;
+mod target;
+mod trivial;
+mod xvfb;
+#[cfg(feature = "window")]
+mod window;
+
+use std::fmt;
+use std::str::FromStr;
+
+use glow::HasContext;
+
+pub use error::GpuError;
+pub use info::{ContextInfo, DepthReport, ExtensionReport, Limits, SHADOW_EXTENSIONS};
+pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8, DepthRule};
+pub use target::{DepthBits, RenderTarget, TargetSpec};
+pub use trivial::FlatProgram;
+pub use xvfb::VirtualDisplay;
+
+/// Which library provides the context.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum Backend {
+    /// EGL, surfaceless platform (device platform as a fallback). The default.
+    Egl,
+    /// OSMesa (`libOSMesa.so.8`; removed from Mesa 25.1).
+    #[value(name = "osmesa")]
+    OsMesa,
+    /// A glutin window on X11 (needs a display, e.g. Xvfb).
+    Window,
+}
+
+impl Backend {
+    pub const ALL: [Backend; 3] = [Backend::Egl, Backend::OsMesa, Backend::Window];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Backend::Egl => "egl",
+            Backend::OsMesa => "osmesa",
+            Backend::Window => "window",
+        }
+    }
+}
+
+impl fmt::Display for Backend {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Backend {
+    type Err = GpuError;
+    fn from_str(s: &str) -> Result<Self, GpuError> {
+        Backend::ALL
+            .into_iter()
+            .find(|b| b.name().eq_ignore_ascii_case(s))
+            .ok_or_else(|| GpuError::UnknownBackend {
+                name: s.to_string(),
+                valid: Backend::ALL.iter().map(|b| b.name()).collect(),
+            })
+    }
+}
+
+/// Which GL profile a context exposes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum Profile {
+    /// OpenGL 3.3 core: no fixed function; the emulated pipeline runs here.
+    #[value(name = "core")]
+    Core33,
+    /// The highest compatibility profile the driver offers: Mesa's fixed-function path.
+    #[value(name = "compat")]
+    Compatibility,
+}
+
+impl Profile {
+    pub const ALL: [Profile; 2] = [Profile::Core33, Profile::Compatibility];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Profile::Core33 => "core 3.3",
+            Profile::Compatibility => "compatibility",
+        }
+    }
+}
+
+/// What to create. `library` overrides the shared library the backend loads (the default is
+/// `libEGL.so.1` or `libOSMesa.so.8`); it exists so that a missing library can be tested.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ContextRequest {
+    pub backend: Backend,
+    pub profile: Profile,
+    pub library: Option<String>,
+}
+
+impl ContextRequest {
+    pub fn new(backend: Backend, profile: Profile) -> Self {
+        ContextRequest {
+            backend,
+            profile,
+            library: None,
+        }
+    }
+
+    pub fn with_library(mut self, library: impl Into<String>) -> Self {
+        self.library = Some(library.into());
+        self
+    }
+}
+
+/// The backend-specific half of a context: what must stay alive, and how to make it current.
+enum Handle {
+    Egl(egl::EglContext),
+    OsMesa(osmesa::OsMesaContext),
+    #[cfg(feature = "window")]
+    Window(Box<window::WindowContext>),
+}
+
+/// A live GL context with its function table. Dropping it destroys the context.
+pub struct GpuContext {
+    // Field order matters: `gl` holds function pointers into the library `handle` owns.
+    gl: glow::Context,
+    handle: Handle,
+    backend: Backend,
+    profile: Profile,
+    /// How the context was obtained, e.g. "EGL_MESA_platform_surfaceless".
+    path: String,
+}
+
+impl GpuContext {
+    /// Creates a context as requested and makes it current on this thread.
+    pub fn new(request: &ContextRequest) -> Result<GpuContext, GpuError> {
+        let lib = request.library.as_deref();
+        let (gl, handle, path) = match request.backend {
+            Backend::Egl => {
+                let (ctx, gl) = egl::EglContext::create(request.profile, lib)?;
+                let path = ctx.platform().to_string();
+                (gl, Handle::Egl(ctx), path)
+            }
+            Backend::OsMesa => {
+                let (ctx, gl) = osmesa::OsMesaContext::create(request.profile, lib)?;
+                (gl, Handle::OsMesa(ctx), "OSMesaCreateContextAttribs".to_string())
+            }
+            #[cfg(feature = "window")]
+            Backend::Window => {
+                let (ctx, gl) = window::WindowContext::create(request.profile)?;
+                let path = ctx.describe();
+                (gl, Handle::Window(Box::new(ctx)), path)
+            }
+            #[cfg(not(feature = "window"))]
+            Backend::Window => {
+                return Err(GpuError::NotCompiled {
+                    backend: Backend::Window,
+                    feature: "window",
+                })
+            }
+        };
+        Ok(GpuContext {
+            gl,
+            handle,
+            backend: request.backend,
+            profile: request.profile,
+            path,
+        })
+    }
+
+    /// The GL function table. Call [`GpuContext::make_current`] first when several contexts
+    /// live on one thread.
+    pub fn gl(&self) -> &glow::Context {
+        &self.gl
+    }
+
+    pub fn backend(&self) -> Backend {
+        self.backend
+    }
+
+    pub fn profile(&self) -> Profile {
+        self.profile
+    }
+
+    /// How the context was obtained (the EGL platform, OSMesa, or the window system).
+    pub fn path(&self) -> &str {
+        &self.path
+    }
+
+    /// Makes this context current on the calling thread.
+    pub fn make_current(&self) -> Result<(), GpuError> {
+        match &self.handle {
+            Handle::Egl(c) => c.make_current(),
+            Handle::OsMesa(c) => c.make_current(),
+            #[cfg(feature = "window")]
+            Handle::Window(c) => c.make_current(),
+        }
+    }
+
+    /// Reads and clears GL's error flag: `Err` names the call that raised it.
+    pub fn check_error(&self, call: &'static str) -> Result<(), GpuError> {
+        let code = unsafe { self.gl.get_error() };
+        if code == glow::NO_ERROR {
+            Ok(())
+        } else {
+            Err(GpuError::Gl {
+                call,
+                code,
+                name: conv::error_name(code),
+            })
+        }
+    }
+
+    /// Presents `target` in the window and returns what the window shows, top row first.
+    /// Only the window backend has something to present to.
+    pub fn present(&mut self, target: &RenderTarget) -> Result<image::RgbaImage, GpuError> {
+        match &mut self.handle {
+            #[cfg(feature = "window")]
+            Handle::Window(w) => w.present(&self.gl, target),
+            _ => Err(GpuError::Window {
+                detail: format!(
+                    "the {} backend has no window to present to; use --backend window",
+                    self.backend
+                ),
+            }),
+        }
+    }
+}

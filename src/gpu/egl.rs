@@ -1,0 +1,190 @@
+//! EGL without a window system. The surfaceless platform (`EGL_MESA_platform_surfaceless`,
+//! 0x31DD) is tried first; if the client extensions lack it, the device platform
+//! (`EGL_EXT_platform_device`, 0x313F) on the first device `eglQueryDevicesEXT` lists. The
+//! context is made current with no surface (`EGL_KHR_surfaceless_context`), so all rendering
+//! goes to framebuffer objects.
+
+use std::ffi::c_void;
+
+use khronos_egl as egl;
+
+use super::{Backend, GpuError, Profile};
+
+const PLATFORM_SURFACELESS_MESA: egl::Enum = 0x31DD;
+const PLATFORM_DEVICE_EXT: egl::Enum = 0x313F;
+const DEFAULT_LIBRARY: &str = "libEGL.so.1";
+
+type Egl = egl::DynamicInstance<egl::EGL1_5>;
+type QueryDevices = unsafe extern "system" fn(i32, *mut *mut c_void, *mut i32) -> egl::Boolean;
+
+/// Which EGL platform gave the display.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EglPlatform {
+    Surfaceless,
+    Device,
+}
+
+impl std::fmt::Display for EglPlatform {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            EglPlatform::Surfaceless => "EGL_MESA_platform_surfaceless",
+            EglPlatform::Device => "EGL_EXT_platform_device (surfaceless platform missing)",
+        })
+    }
+}
+
+pub struct EglContext {
+    egl: Egl,
+    display: egl::Display,
+    context: egl::Context,
+    platform: EglPlatform,
+}
+
+fn egl_err(call: &'static str, platform: EglPlatform) -> impl Fn(egl::Error) -> GpuError {
+    move |e| GpuError::Egl {
+        call,
+        platform: match platform {
+            EglPlatform::Surfaceless => "surfaceless",
+            EglPlatform::Device => "device",
+        },
+        code: format!("{e} ({e:?})"),
+    }
+}
+
+impl EglContext {
+    pub fn create(
+        profile: Profile,
+        library: Option<&str>,
+    ) -> Result<(EglContext, glow::Context), GpuError> {
+        let library = library.unwrap_or(DEFAULT_LIBRARY);
+        // SAFETY: the library is Mesa's (or glvnd's) libEGL, which implements EGL 1.5.
+        let egl = unsafe { Egl::load_required_from_filename(library) }.map_err(|e| {
+            GpuError::LibraryMissing {
+                backend: Backend::Egl,
+                library: library.to_string(),
+                reason: e.to_string(),
+                debian_packages: "libegl1 libegl-mesa0 libgl1-mesa-dri",
+                hint: "",
+            }
+        })?;
+        let (display, platform) = open_display(&egl)?;
+        let err = |call| egl_err(call, platform);
+        egl.initialize(display).map_err(err("eglInitialize"))?;
+        egl.bind_api(egl::OPENGL_API).map_err(err("eglBindAPI"))?;
+        let config = egl
+            .choose_first_config(
+                display,
+                &[
+                    egl::RENDERABLE_TYPE,
+                    egl::OPENGL_BIT,
+                    egl::SURFACE_TYPE,
+                    egl::DONT_CARE,
+                    egl::NONE,
+                ],
+            )
+            .map_err(err("eglChooseConfig"))?
+            .ok_or(GpuError::Egl {
+                call: "eglChooseConfig",
+                platform: "headless",
+                code: "no config renders OpenGL".into(),
+            })?;
+        let attribs: &[egl::Int] = match profile {
+            Profile::Core33 => &[
+                egl::CONTEXT_MAJOR_VERSION,
+                3,
+                egl::CONTEXT_MINOR_VERSION,
+                3,
+                egl::CONTEXT_OPENGL_PROFILE_MASK,
+                egl::CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                egl::NONE,
+            ],
+            // No version: the driver's highest compatibility profile (4.5 on llvmpipe).
+            Profile::Compatibility => &[
+                egl::CONTEXT_OPENGL_PROFILE_MASK,
+                egl::CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                egl::NONE,
+            ],
+        };
+        let context = egl
+            .create_context(display, config, None, attribs)
+            .map_err(err("eglCreateContext"))?;
+        let ctx = EglContext {
+            egl,
+            display,
+            context,
+            platform,
+        };
+        ctx.make_current()?;
+        // SAFETY: the context is current; eglGetProcAddress returns entry points for it.
+        let gl = unsafe {
+            glow::Context::from_loader_function(|name| {
+                ctx.egl
+                    .get_proc_address(name)
+                    .map_or(std::ptr::null(), |f| f as *const c_void)
+            })
+        };
+        Ok((ctx, gl))
+    }
+
+    pub fn platform(&self) -> EglPlatform {
+        self.platform
+    }
+
+    pub fn make_current(&self) -> Result<(), GpuError> {
+        self.egl
+            .make_current(self.display, None, None, Some(self.context))
+            .map_err(egl_err("eglMakeCurrent", self.platform))
+    }
+}
+
+impl Drop for EglContext {
+    fn drop(&mut self) {
+        // Errors here cannot be acted on; the display stays initialised for other contexts
+        // of this process (eglTerminate would destroy them too).
+        let _ = self.egl.make_current(self.display, None, None, None);
+        let _ = self.egl.destroy_context(self.display, self.context);
+    }
+}
+
+/// Opens the surfaceless display, or the first EGL device's display.
+fn open_display(egl: &Egl) -> Result<(egl::Display, EglPlatform), GpuError> {
+    let extensions = egl
+        .query_string(None, egl::EXTENSIONS)
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let has = |name: &str| extensions.split_whitespace().any(|e| e == name);
+    if has("EGL_MESA_platform_surfaceless") {
+        // SAFETY: the surfaceless platform takes EGL_DEFAULT_DISPLAY as its native display.
+        let display = unsafe {
+            egl.get_platform_display(
+                PLATFORM_SURFACELESS_MESA,
+                egl::DEFAULT_DISPLAY,
+                &[egl::ATTRIB_NONE],
+            )
+        }
+        .map_err(egl_err("eglGetPlatformDisplay", EglPlatform::Surfaceless))?;
+        return Ok((display, EglPlatform::Surfaceless));
+    }
+    if has("EGL_EXT_platform_device") {
+        let query = egl
+            .get_proc_address("eglQueryDevicesEXT")
+            .ok_or_else(|| GpuError::NoHeadlessPlatform {
+                extensions: extensions.clone(),
+            })?;
+        // SAFETY: eglQueryDevicesEXT has this signature (EGL_EXT_device_enumeration).
+        let query: QueryDevices = unsafe { std::mem::transmute(query) };
+        let mut device: *mut c_void = std::ptr::null_mut();
+        let mut count = 0;
+        // SAFETY: room for one device handle.
+        let ok = unsafe { query(1, &mut device, &mut count) };
+        if ok == egl::TRUE && count > 0 {
+            // SAFETY: an EGLDeviceEXT is the native display of the device platform.
+            let display = unsafe {
+                egl.get_platform_display(PLATFORM_DEVICE_EXT, device, &[egl::ATTRIB_NONE])
+            }
+            .map_err(egl_err("eglGetPlatformDisplay", EglPlatform::Device))?;
+            return Ok((display, EglPlatform::Device));
+        }
+    }
+    Err(GpuError::NoHeadlessPlatform { extensions })
+}

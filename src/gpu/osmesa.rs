@@ -1,0 +1,148 @@
+//! OSMesa, loaded at run time from `libOSMesa.so.8` (Debian: `libosmesa6`). OSMesa was
+//! removed from Mesa 25.1; on newer systems use the EGL backend.
+//!
+//! `OSMesaCreateContextAttribs` gives a core 3.3 or a compatibility context. OSMesa needs a
+//! client buffer to make a context current; ours is 1×1 and never drawn to — every frame goes
+//! to a framebuffer object, exactly as on EGL, so both backends read back the same pixels.
+
+use std::ffi::{c_char, c_int, c_uint, c_void, CString};
+
+use libloading::Library;
+
+use super::{Backend, GpuError, Profile};
+
+const DEFAULT_LIBRARY: &str = "libOSMesa.so.8";
+
+// osmesa.h
+const OSMESA_FORMAT: c_int = 0x22;
+const OSMESA_RGBA: c_int = 0x1908;
+const OSMESA_DEPTH_BITS: c_int = 0x30;
+const OSMESA_STENCIL_BITS: c_int = 0x31;
+const OSMESA_ACCUM_BITS: c_int = 0x32;
+const OSMESA_PROFILE: c_int = 0x33;
+const OSMESA_CORE_PROFILE: c_int = 0x34;
+const OSMESA_COMPAT_PROFILE: c_int = 0x35;
+const OSMESA_CONTEXT_MAJOR_VERSION: c_int = 0x36;
+const OSMESA_CONTEXT_MINOR_VERSION: c_int = 0x37;
+const GL_UNSIGNED_BYTE: c_uint = 0x1401;
+
+type RawContext = *mut c_void;
+type CreateContextAttribs = unsafe extern "C" fn(*const c_int, RawContext) -> RawContext;
+type MakeCurrent = unsafe extern "C" fn(RawContext, *mut c_void, c_uint, c_int, c_int) -> u8;
+type DestroyContext = unsafe extern "C" fn(RawContext);
+type GetProcAddress = unsafe extern "C" fn(*const c_char) -> *const c_void;
+
+pub struct OsMesaContext {
+    context: RawContext,
+    make_current: MakeCurrent,
+    destroy: DestroyContext,
+    /// The client buffer OSMesa requires; never rendered to.
+    buffer: Box<[u8; 4]>,
+    // Last: the function pointers above point into it.
+    _library: Library,
+}
+
+fn symbol<T: Copy>(library: &Library, name: &'static str) -> Result<T, GpuError> {
+    // SAFETY: each call site names the symbol's C signature as `T`.
+    unsafe { library.get::<T>(name.as_bytes()) }
+        .map(|s| *s)
+        .map_err(|e| GpuError::OsMesa {
+            call: name,
+            detail: format!("symbol missing from libOSMesa: {e}"),
+        })
+}
+
+impl OsMesaContext {
+    pub fn create(
+        profile: Profile,
+        library: Option<&str>,
+    ) -> Result<(OsMesaContext, glow::Context), GpuError> {
+        let name = library.unwrap_or(DEFAULT_LIBRARY);
+        // SAFETY: loading libOSMesa runs Mesa's initialisers, which have no preconditions.
+        let library = unsafe { Library::new(name) }.map_err(|e| GpuError::LibraryMissing {
+            backend: Backend::OsMesa,
+            library: name.to_string(),
+            reason: e.to_string(),
+            debian_packages: "libosmesa6",
+            hint: "\n  note: OSMesa was removed from Mesa 25.1; on newer systems use --backend egl",
+        })?;
+        let create: CreateContextAttribs = symbol(&library, "OSMesaCreateContextAttribs")?;
+        let make_current: MakeCurrent = symbol(&library, "OSMesaMakeCurrent")?;
+        let destroy: DestroyContext = symbol(&library, "OSMesaDestroyContext")?;
+        let get_proc: GetProcAddress = symbol(&library, "OSMesaGetProcAddress")?;
+
+        let (profile_value, major, minor) = match profile {
+            Profile::Core33 => (OSMESA_CORE_PROFILE, 3, 3),
+            // Mesa grants the highest compatibility version it has for 1.0.
+            Profile::Compatibility => (OSMESA_COMPAT_PROFILE, 1, 0),
+        };
+        let attribs = [
+            OSMESA_FORMAT,
+            OSMESA_RGBA,
+            OSMESA_DEPTH_BITS,
+            0,
+            OSMESA_STENCIL_BITS,
+            0,
+            OSMESA_ACCUM_BITS,
+            0,
+            OSMESA_PROFILE,
+            profile_value,
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            major,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            minor,
+            0,
+        ];
+        // SAFETY: a zero-terminated attribute list and no share context.
+        let context = unsafe { create(attribs.as_ptr(), std::ptr::null_mut()) };
+        if context.is_null() {
+            return Err(GpuError::OsMesa {
+                call: "OSMesaCreateContextAttribs",
+                detail: format!("no {} context", profile.name()),
+            });
+        }
+        let ctx = OsMesaContext {
+            context,
+            make_current,
+            destroy,
+            buffer: Box::new([0; 4]),
+            _library: library,
+        };
+        ctx.make_current()?;
+        // SAFETY: the context is current; OSMesaGetProcAddress returns its entry points.
+        let gl = unsafe {
+            glow::Context::from_loader_function(|name| match CString::new(name) {
+                Ok(c) => get_proc(c.as_ptr()),
+                Err(_) => std::ptr::null(),
+            })
+        };
+        Ok((ctx, gl))
+    }
+
+    pub fn make_current(&self) -> Result<(), GpuError> {
+        // SAFETY: the buffer is 1×1 RGBA8 and lives as long as the context.
+        let ok = unsafe {
+            (self.make_current)(
+                self.context,
+                self.buffer.as_ptr() as *mut c_void,
+                GL_UNSIGNED_BYTE,
+                1,
+                1,
+            )
+        };
+        if ok == 0 {
+            return Err(GpuError::OsMesa {
+                call: "OSMesaMakeCurrent",
+                detail: "the context could not be made current".into(),
+            });
+        }
+        Ok(())
+    }
+}
+
+impl Drop for OsMesaContext {
+    fn drop(&mut self) {
+        // SAFETY: the context was created by this library and is destroyed once.
+        unsafe { (self.destroy)(self.context) };
+    }
+}

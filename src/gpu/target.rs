@@ -1,0 +1,327 @@
+//! Render targets: a framebuffer object with an RGBA8 colour renderbuffer and a depth
+//! attachment chosen by `DepthBits`, plus pixel readback.
+//!
+//! Row order: `read_color` returns an image with the top row first (image convention);
+//! depth and stencil readbacks keep GL's order, bottom row first, because they feed
+//! `glTexImage2D` as they are. The bits actually obtained are queried from the framebuffer
+//! (`GL_FRAMEBUFFER_ATTACHMENT_{DEPTH,STENCIL}_SIZE`) and reported, never assumed.
+
+use glow::HasContext;
+use serde::Serialize;
+
+use super::readback::{depth_to_u16, depth_to_u32, depth_to_u8, DepthRule};
+use super::{conv, GpuContext, GpuError};
+
+/// The depth buffer format of a target (and of a light's shadow-map pass).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, clap::ValueEnum)]
+pub enum DepthBits {
+    /// 16-bit unsigned normalised; no stencil.
+    #[value(name = "16")]
+    D16,
+    /// 24-bit unsigned normalised, always packed with 8 stencil bits (DEPTH24_STENCIL8).
+    #[value(name = "24")]
+    D24,
+    /// 32-bit float; packed with 8 stencil bits (DEPTH32F_STENCIL8) when stencil is asked for.
+    #[value(name = "32f")]
+    D32F,
+}
+
+impl DepthBits {
+    pub const ALL: [DepthBits; 3] = [DepthBits::D16, DepthBits::D24, DepthBits::D32F];
+
+    /// The number of depth bits the format names.
+    pub fn bits(self) -> u32 {
+        match self {
+            DepthBits::D16 => 16,
+            DepthBits::D24 => 24,
+            DepthBits::D32F => 32,
+        }
+    }
+
+    /// Whether the format stores depth as a float.
+    pub fn is_float(self) -> bool {
+        matches!(self, DepthBits::D32F)
+    }
+}
+
+/// Size and buffers of a target.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TargetSpec {
+    pub width: u32,
+    pub height: u32,
+    pub depth: DepthBits,
+    /// Ask for 8 stencil bits. D24 always has them; D16 has none.
+    pub stencil: bool,
+}
+
+impl TargetSpec {
+    pub fn new(width: u32, height: u32, depth: DepthBits) -> Self {
+        TargetSpec {
+            width,
+            height,
+            depth,
+            stencil: false,
+        }
+    }
+
+    pub fn with_stencil(mut self) -> Self {
+        self.stencil = true;
+        self
+    }
+}
+
+/// A framebuffer object and its renderbuffers. Owned by the context that made it; call
+/// [`RenderTarget::delete`] before dropping that context to free the GL objects early.
+#[derive(Debug)]
+pub struct RenderTarget {
+    spec: TargetSpec,
+    framebuffer: glow::Framebuffer,
+    color: glow::Renderbuffer,
+    depth: glow::Renderbuffer,
+    depth_bits: u32,
+    stencil_bits: u32,
+}
+
+impl RenderTarget {
+    /// Creates the target and leaves it bound as the draw and read framebuffer, with the
+    /// viewport covering it.
+    pub fn new(ctx: &GpuContext, spec: TargetSpec) -> Result<RenderTarget, GpuError> {
+        let gl = ctx.gl();
+        let limit = unsafe { gl.get_parameter_i32(glow::MAX_RENDERBUFFER_SIZE) }.max(0) as u32;
+        let size_ok = |s: u32| (1..=limit).contains(&s);
+        if !size_ok(spec.width) || !size_ok(spec.height) {
+            return Err(GpuError::TargetSize {
+                width: spec.width,
+                height: spec.height,
+                limit,
+            });
+        }
+        if spec.stencil && spec.depth == DepthBits::D16 {
+            return Err(GpuError::IncompleteFramebuffer {
+                depth: spec.depth,
+                stencil: true,
+                status: glow::FRAMEBUFFER_UNSUPPORTED,
+            });
+        }
+        let (w, h) = (spec.width as i32, spec.height as i32);
+        let (format, attachment) = conv::depth_storage(spec.depth, spec.stencil);
+        let target = unsafe {
+            let framebuffer = gl.create_framebuffer().map_err(GpuError::Object)?;
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(framebuffer));
+            let color = gl.create_renderbuffer().map_err(GpuError::Object)?;
+            gl.bind_renderbuffer(glow::RENDERBUFFER, Some(color));
+            gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, w, h);
+            gl.framebuffer_renderbuffer(
+                glow::FRAMEBUFFER,
+                glow::COLOR_ATTACHMENT0,
+                glow::RENDERBUFFER,
+                Some(color),
+            );
+            let depth = gl.create_renderbuffer().map_err(GpuError::Object)?;
+            gl.bind_renderbuffer(glow::RENDERBUFFER, Some(depth));
+            gl.renderbuffer_storage(glow::RENDERBUFFER, format, w, h);
+            gl.framebuffer_renderbuffer(
+                glow::FRAMEBUFFER,
+                attachment,
+                glow::RENDERBUFFER,
+                Some(depth),
+            );
+            let mut target = RenderTarget {
+                spec,
+                framebuffer,
+                color,
+                depth,
+                depth_bits: 0,
+                stencil_bits: 0,
+            };
+            let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
+            if status != glow::FRAMEBUFFER_COMPLETE {
+                target.delete(ctx);
+                return Err(GpuError::IncompleteFramebuffer {
+                    depth: spec.depth,
+                    stencil: spec.stencil,
+                    status,
+                });
+            }
+            let query = |attachment, pname| {
+                gl.get_framebuffer_attachment_parameter_i32(glow::FRAMEBUFFER, attachment, pname)
+                    .max(0) as u32
+            };
+            target.depth_bits =
+                query(glow::DEPTH_ATTACHMENT, glow::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE);
+            target.stencil_bits = if attachment == glow::DEPTH_STENCIL_ATTACHMENT {
+                query(
+                    glow::STENCIL_ATTACHMENT,
+                    glow::FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+                )
+            } else {
+                0
+            };
+            gl.viewport(0, 0, w, h);
+            target
+        };
+        ctx.check_error("RenderTarget::new")?;
+        Ok(target)
+    }
+
+    pub fn spec(&self) -> TargetSpec {
+        self.spec
+    }
+
+    pub fn width(&self) -> u32 {
+        self.spec.width
+    }
+
+    pub fn height(&self) -> u32 {
+        self.spec.height
+    }
+
+    /// Depth bits the driver actually gave (GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE).
+    pub fn depth_bits(&self) -> u32 {
+        self.depth_bits
+    }
+
+    /// Stencil bits the driver actually gave; 0 when there is no stencil buffer.
+    pub fn stencil_bits(&self) -> u32 {
+        self.stencil_bits
+    }
+
+    pub fn framebuffer(&self) -> glow::Framebuffer {
+        self.framebuffer
+    }
+
+    /// Binds the target for drawing and reading and sets the viewport to cover it.
+    pub fn bind(&self, ctx: &GpuContext) {
+        let gl = ctx.gl();
+        unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(self.framebuffer));
+            gl.viewport(0, 0, self.spec.width as i32, self.spec.height as i32);
+        }
+    }
+
+    /// Frees the GL objects. The context must be current.
+    pub fn delete(self, ctx: &GpuContext) {
+        let gl = ctx.gl();
+        unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+            gl.delete_framebuffer(self.framebuffer);
+            gl.delete_renderbuffer(self.color);
+            gl.delete_renderbuffer(self.depth);
+        }
+    }
+
+    /// The colour buffer as RGBA8, top row first.
+    pub fn read_color(&self, ctx: &GpuContext) -> Result<image::RgbaImage, GpuError> {
+        let (w, h) = (self.spec.width, self.spec.height);
+        let mut data = vec![0u8; (w * h * 4) as usize];
+        self.read(ctx, glow::RGBA, glow::UNSIGNED_BYTE, &mut data)?;
+        let row = (w * 4) as usize;
+        let flipped: Vec<u8> = data.chunks_exact(row).rev().flatten().copied().collect();
+        image::RgbaImage::from_raw(w, h, flipped).ok_or(GpuError::Object(
+            "colour readback has the wrong length".into(),
+        ))
+    }
+
+    /// Depth as GL_FLOAT, bottom row first. For D16/D24 this is the stored integer n as
+    /// n / (2^bits − 1) (GL 4.6 §8.4.4.2 / Table 8.7 inverse); for D32F the stored float.
+    pub fn read_depth_f32(&self, ctx: &GpuContext) -> Result<Vec<f32>, GpuError> {
+        let mut bytes = vec![0u8; self.pixel_count() * 4];
+        self.read(ctx, glow::DEPTH_COMPONENT, glow::FLOAT, &mut bytes)?;
+        Ok(bytes
+            .chunks_exact(4)
+            .map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+            .collect())
+    }
+
+    /// Depth as u8, bottom row first, converted by `rule` (see [`DepthRule`]).
+    pub fn read_depth_u8(&self, ctx: &GpuContext, rule: DepthRule) -> Result<Vec<u8>, GpuError> {
+        match rule {
+            DepthRule::Driver => {
+                let mut data = vec![0u8; self.pixel_count()];
+                self.read(ctx, glow::DEPTH_COMPONENT, glow::UNSIGNED_BYTE, &mut data)?;
+                Ok(data)
+            }
+            _ => Ok(self
+                .read_depth_f32(ctx)?
+                .into_iter()
+                .map(|z| depth_to_u8(z, rule))
+                .collect()),
+        }
+    }
+
+    /// Depth as u16, bottom row first, converted by `rule`.
+    pub fn read_depth_u16(&self, ctx: &GpuContext, rule: DepthRule) -> Result<Vec<u16>, GpuError> {
+        match rule {
+            DepthRule::Driver => {
+                let mut bytes = vec![0u8; self.pixel_count() * 2];
+                self.read(ctx, glow::DEPTH_COMPONENT, glow::UNSIGNED_SHORT, &mut bytes)?;
+                Ok(bytes
+                    .chunks_exact(2)
+                    .map(|b| u16::from_ne_bytes([b[0], b[1]]))
+                    .collect())
+            }
+            _ => Ok(self
+                .read_depth_f32(ctx)?
+                .into_iter()
+                .map(|z| depth_to_u16(z, rule))
+                .collect()),
+        }
+    }
+
+    /// Depth as u32, bottom row first, converted by `rule`.
+    pub fn read_depth_u32(&self, ctx: &GpuContext, rule: DepthRule) -> Result<Vec<u32>, GpuError> {
+        match rule {
+            DepthRule::Driver => {
+                let mut bytes = vec![0u8; self.pixel_count() * 4];
+                self.read(ctx, glow::DEPTH_COMPONENT, glow::UNSIGNED_INT, &mut bytes)?;
+                Ok(bytes
+                    .chunks_exact(4)
+                    .map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+                    .collect())
+            }
+            _ => Ok(self
+                .read_depth_f32(ctx)?
+                .into_iter()
+                .map(|z| depth_to_u32(z, rule))
+                .collect()),
+        }
+    }
+
+    /// Stencil indices, bottom row first.
+    pub fn read_stencil(&self, ctx: &GpuContext) -> Result<Vec<u8>, GpuError> {
+        if self.stencil_bits == 0 {
+            return Err(GpuError::NoStencil);
+        }
+        let mut data = vec![0u8; self.pixel_count()];
+        self.read(ctx, glow::STENCIL_INDEX, glow::UNSIGNED_BYTE, &mut data)?;
+        Ok(data)
+    }
+
+    fn pixel_count(&self) -> usize {
+        (self.spec.width * self.spec.height) as usize
+    }
+
+    fn read(
+        &self,
+        ctx: &GpuContext,
+        format: u32,
+        ty: u32,
+        out: &mut [u8],
+    ) -> Result<(), GpuError> {
+        let gl = ctx.gl();
+        unsafe {
+            gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.framebuffer));
+            gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
+            gl.read_pixels(
+                0,
+                0,
+                self.spec.width as i32,
+                self.spec.height as i32,
+                format,
+                ty,
+                glow::PixelPackData::Slice(Some(out)),
+            );
+        }
+        ctx.check_error("glReadPixels")
+    }
+}

@@ -1,0 +1,272 @@
+//! A real window on X11 through glutin + winit: GLX, or EGL on X11 when GLX fails.
+//!
+//! winit allows one event loop per process, so the loop lives in a thread-local and every
+//! window context of a process must be created on the thread that made the first one (the
+//! CLI's main thread; one test function in the window test binary).
+//!
+//! `present` blits a render target into the window's back buffer (same size, NEAREST, so
+//! the copy is exact), swaps, and reads the front buffer back: what the window shows.
+
+use std::cell::RefCell;
+use std::ffi::c_void;
+use std::num::NonZeroU32;
+use std::time::{Duration, Instant};
+
+use glow::HasContext;
+use glutin::config::{ConfigTemplateBuilder, GlConfig};
+use glutin::context::{
+    ContextApi, ContextAttributesBuilder, GlProfile, NotCurrentGlContext, PossiblyCurrentContext,
+    PossiblyCurrentGlContext,
+    Version,
+};
+use glutin::display::{GetGlDisplay, GlDisplay};
+use glutin::surface::{GlSurface, Surface, WindowSurface};
+use glutin_winit::{DisplayBuilder, GlWindow};
+use raw_window_handle::HasWindowHandle;
+use winit::application::ApplicationHandler;
+use winit::dpi::PhysicalSize;
+use winit::event::WindowEvent;
+use winit::event_loop::{ActiveEventLoop, EventLoop};
+use winit::platform::pump_events::EventLoopExtPumpEvents;
+use winit::platform::x11::EventLoopBuilderExtX11;
+use winit::window::{Window, WindowId};
+
+use super::{GpuError, Profile, RenderTarget};
+
+const INITIAL_SIZE: (u32, u32) = (256, 256);
+
+thread_local! {
+    static EVENT_LOOP: RefCell<Option<EventLoop<()>>> = const { RefCell::new(None) };
+}
+
+fn window_err(what: &str) -> impl Fn(Box<dyn std::error::Error>) -> GpuError + '_ {
+    move |e| GpuError::Window {
+        detail: format!("{what}: {e}"),
+    }
+}
+
+/// Events are only pumped so that the X server maps and resizes the window; none is acted on.
+struct Ignore;
+
+impl ApplicationHandler for Ignore {
+    fn resumed(&mut self, _: &ActiveEventLoop) {}
+    fn window_event(&mut self, _: &ActiveEventLoop, _: WindowId, _: WindowEvent) {}
+}
+
+fn pump(event_loop: &mut EventLoop<()>, time: Duration) {
+    let _ = event_loop.pump_app_events(Some(time), &mut Ignore);
+}
+
+pub struct WindowContext {
+    // Drop order: context and surface before the window they render into.
+    context: PossiblyCurrentContext,
+    surface: Surface<WindowSurface>,
+    window: Window,
+    api: String,
+}
+
+impl WindowContext {
+    pub fn create(profile: Profile) -> Result<(WindowContext, glow::Context), GpuError> {
+        if std::env::var_os("DISPLAY").is_none() {
+            return Err(GpuError::Window {
+                detail: "no X display: set DISPLAY, or run under xvfb-run \
+                         (apt-get install xvfb xauth)"
+                    .into(),
+            });
+        }
+        EVENT_LOOP.with(|cell| {
+            let mut slot = cell.borrow_mut();
+            if slot.is_none() {
+                let event_loop = EventLoop::builder()
+                    .with_x11()
+                    .with_any_thread(true)
+                    .build()
+                    .map_err(|e| GpuError::Window {
+                        detail: format!(
+                            "cannot open the X11 event loop: {e} (winit allows one event loop \
+                             per process: create every window context on one thread)"
+                        ),
+                    })?;
+                *slot = Some(event_loop);
+            }
+            let event_loop = slot.as_mut().ok_or(GpuError::Window {
+                detail: "event loop missing".into(),
+            })?;
+            Self::create_on(event_loop, profile)
+        })
+    }
+
+    fn create_on(
+        event_loop: &mut EventLoop<()>,
+        profile: Profile,
+    ) -> Result<(WindowContext, glow::Context), GpuError> {
+        let attributes = Window::default_attributes()
+            .with_title("fixedfunc")
+            .with_inner_size(PhysicalSize::new(INITIAL_SIZE.0, INITIAL_SIZE.1))
+            .with_resizable(true);
+        let (window, config) = DisplayBuilder::new()
+            .with_window_attributes(Some(attributes))
+            .build(
+                &*event_loop,
+                ConfigTemplateBuilder::new().with_alpha_size(8),
+                |mut configs| {
+                    // glutin reports an error instead of calling the picker with no config.
+                    configs.next().expect("glutin passes at least one config")
+                },
+            )
+            .map_err(window_err("no GL config for an X11 window"))?;
+        let window = window.ok_or(GpuError::Window {
+            detail: "glutin created no window".into(),
+        })?;
+        let handle = window
+            .window_handle()
+            .map_err(|e| GpuError::Window {
+                detail: format!("window handle: {e}"),
+            })?
+            .as_raw();
+        let display = config.display();
+        let attributes = match profile {
+            Profile::Core33 => ContextAttributesBuilder::new()
+                .with_profile(GlProfile::Core)
+                .with_context_api(ContextApi::OpenGl(Some(Version::new(3, 3)))),
+            Profile::Compatibility => ContextAttributesBuilder::new()
+                .with_profile(GlProfile::Compatibility)
+                .with_context_api(ContextApi::OpenGl(None)),
+        }
+        .build(Some(handle));
+        // SAFETY: the handle belongs to `window`, which outlives the context.
+        let context = unsafe { display.create_context(&config, &attributes) }.map_err(|e| {
+            GpuError::Window {
+                detail: format!("{} context: {e}", profile.name()),
+            }
+        })?;
+        let surface_attributes = window
+            .build_surface_attributes(Default::default())
+            .map_err(|e| GpuError::Window {
+                detail: format!("surface attributes: {e}"),
+            })?;
+        // SAFETY: as above, the window outlives the surface.
+        let surface = unsafe { display.create_window_surface(&config, &surface_attributes) }
+            .map_err(|e| GpuError::Window {
+                detail: format!("window surface: {e}"),
+            })?;
+        let context = context
+            .make_current(&surface)
+            .map_err(|e| GpuError::Window {
+                detail: format!("make current: {e}"),
+            })?;
+        let api = format!("{:?} on X11 (glutin + winit)", config.api());
+        window.set_visible(true);
+        pump(event_loop, Duration::from_millis(10));
+        // SAFETY: the context is current; the display resolves its entry points.
+        let gl = unsafe {
+            glow::Context::from_loader_function_cstr(|name| {
+                display.get_proc_address(name) as *const c_void
+            })
+        };
+        Ok((
+            WindowContext {
+                context,
+                surface,
+                window,
+                api,
+            },
+            gl,
+        ))
+    }
+
+    pub fn describe(&self) -> String {
+        self.api.clone()
+    }
+
+    pub fn make_current(&self) -> Result<(), GpuError> {
+        self.context
+            .make_current(&self.surface)
+            .map_err(|e| GpuError::Window {
+                detail: format!("make current: {e}"),
+            })
+    }
+
+    /// Resizes the window to the target, blits the target into it, swaps, and returns the
+    /// front buffer (what the window shows), top row first.
+    pub fn present(
+        &mut self,
+        gl: &glow::Context,
+        target: &RenderTarget,
+    ) -> Result<image::RgbaImage, GpuError> {
+        let (w, h) = (target.width(), target.height());
+        self.resize(w, h)?;
+        self.make_current()?;
+        unsafe {
+            gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(target.framebuffer()));
+            gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, None);
+            gl.draw_buffer(glow::BACK);
+            let (w, h) = (w as i32, h as i32);
+            gl.blit_framebuffer(0, 0, w, h, 0, 0, w, h, glow::COLOR_BUFFER_BIT, glow::NEAREST);
+        }
+        self.surface
+            .swap_buffers(&self.context)
+            .map_err(|e| GpuError::Window {
+                detail: format!("swap buffers: {e}"),
+            })?;
+        let mut data = vec![0u8; (w * h * 4) as usize];
+        unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+            gl.read_buffer(glow::FRONT);
+            gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
+            gl.read_pixels(
+                0,
+                0,
+                w as i32,
+                h as i32,
+                glow::RGBA,
+                glow::UNSIGNED_BYTE,
+                glow::PixelPackData::Slice(Some(&mut data)),
+            );
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.framebuffer()));
+        }
+        let row = (w * 4) as usize;
+        let flipped: Vec<u8> = data.chunks_exact(row).rev().flatten().copied().collect();
+        image::RgbaImage::from_raw(w, h, flipped).ok_or(GpuError::Window {
+            detail: "window readback has the wrong length".into(),
+        })
+    }
+
+    /// Asks the X server for a w×h window and waits (at most two seconds) until it is.
+    fn resize(&mut self, w: u32, h: u32) -> Result<(), GpuError> {
+        let want = PhysicalSize::new(w, h);
+        if self.window.inner_size() != want {
+            let _ = self.window.request_inner_size(want);
+            let start = Instant::now();
+            while self.window.inner_size() != want && start.elapsed() < Duration::from_secs(2) {
+                EVENT_LOOP.with(|cell| {
+                    if let Some(event_loop) = cell.borrow_mut().as_mut() {
+                        pump(event_loop, Duration::from_millis(10));
+                    }
+                });
+            }
+            if self.window.inner_size() != want {
+                return Err(GpuError::Window {
+                    detail: format!(
+                        "the window is {:?}, not the {w}x{h} the target needs",
+                        self.window.inner_size()
+                    ),
+                });
+            }
+        }
+        let (nw, nh) = (
+            NonZeroU32::new(w).ok_or(GpuError::TargetSize {
+                width: w,
+                height: h,
+                limit: 0,
+            })?,
+            NonZeroU32::new(h).ok_or(GpuError::TargetSize {
+                width: w,
+                height: h,
+                limit: 0,
+            })?,
+        );
+        self.surface.resize(&self.context, nw, nh);
+        Ok(())
+    }
+}
