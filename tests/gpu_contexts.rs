@@ -48,7 +48,11 @@ fn each_headless_backend_and_profile_draws_exact_pixels() {
             // Pixel centres with x + y < 63 are covered; the 64 centres exactly on the
             // hypotenuse (x + y = 63) lie on a right edge, which the top-left rule excludes.
             let covered = img.pixels().filter(|p| p.0 == [255, 51, 153, 255]).count();
-            assert_eq!(covered, (0..64).map(|y| 63 - y).sum::<usize>(), "{backend} {profile:?}");
+            assert_eq!(
+                covered,
+                (0..64).map(|y| 63 - y).sum::<usize>(),
+                "{backend} {profile:?}"
+            );
             assert_no_gl_error(&ctx);
         }
     }
@@ -112,7 +116,10 @@ fn depth_readback_round_trips_known_depths() {
             let read = t.read_depth_f32(&ctx).expect("read depth");
             for (k, z) in read.iter().enumerate() {
                 let want = k as f32 / 8.0;
-                assert!((z - want).abs() <= tol, "{backend} {depth:?}: column {k} reads {z}, want {want} ± {tol}");
+                assert!(
+                    (z - want).abs() <= tol,
+                    "{backend} {depth:?}: column {k} reads {z}, want {want} ± {tol}"
+                );
             }
             unsafe { ctx.gl().disable(glow::DEPTH_TEST) };
             assert_no_gl_error(&ctx);
@@ -185,21 +192,37 @@ fn driver_depth_readback_follows_the_named_rules() {
         flat.draw(&ctx, &ramp, [1.0; 4]);
         let bytes_driver = t.read_depth_u8(&ctx, DepthRule::Driver).unwrap();
         let bytes_ours = t.read_depth_u8(&ctx, DepthRule::Truncate).unwrap();
-        assert_eq!(bytes_driver, bytes_ours, "{backend}: UNSIGNED_BYTE is ⌊255z⌋");
+        assert_eq!(
+            bytes_driver, bytes_ours,
+            "{backend}: UNSIGNED_BYTE is ⌊255z⌋"
+        );
         let shorts_driver = t.read_depth_u16(&ctx, DepthRule::Driver).unwrap();
         let shorts_ours = t.read_depth_u16(&ctx, DepthRule::Round).unwrap();
-        let same = shorts_driver.iter().zip(&shorts_ours).filter(|(a, b)| a == b).count();
+        let same = shorts_driver
+            .iter()
+            .zip(&shorts_ours)
+            .filter(|(a, b)| a == b)
+            .count();
         let within_one = shorts_driver
             .iter()
             .zip(&shorts_ours)
             .all(|(a, b)| a.abs_diff(*b) <= 1);
-        assert!(within_one, "{backend}: UNSIGNED_SHORT within 1 of ⌊65535z + ½⌋");
-        assert!(same >= 1014, "{backend}: only {same}/1024 shorts follow ⌊65535z + ½⌋");
+        assert!(
+            within_one,
+            "{backend}: UNSIGNED_SHORT within 1 of ⌊65535z + ½⌋"
+        );
+        assert!(
+            same >= 1014,
+            "{backend}: only {same}/1024 shorts follow ⌊65535z + ½⌋"
+        );
         let ints = t.read_depth_u32(&ctx, DepthRule::Driver).unwrap();
         let floats = t.read_depth_f32(&ctx).unwrap();
         for (i, z) in ints.iter().zip(&floats) {
             let from_int = *i as f64 / u32::MAX as f64;
-            assert!((from_int - *z as f64).abs() < 1e-6, "UNSIGNED_INT {i} vs float {z}");
+            assert!(
+                (from_int - *z as f64).abs() < 1e-6,
+                "UNSIGNED_INT {i} vs float {z}"
+            );
         }
         assert_no_gl_error(&ctx);
     }
@@ -214,8 +237,16 @@ fn egl_and_osmesa_render_bit_identical_images() {
         let flat = FlatProgram::new(&ctx).expect("flat program");
         unsafe { ctx.gl().enable(glow::DEPTH_TEST) };
         clear(&ctx, [0.1, 0.2, 0.3, 1.0]);
-        flat.draw(&ctx, &[[-0.9, -0.7, 0.3], [0.8, -0.2, -0.4], [-0.1, 0.95, 0.9]], [0.7, 0.3, 0.1, 1.0]);
-        flat.draw(&ctx, &[[-0.5, 0.6, 0.0], [0.9, 0.9, 0.0], [0.2, -0.9, 0.0]], [0.2, 0.9, 0.5, 0.5]);
+        flat.draw(
+            &ctx,
+            &[[-0.9, -0.7, 0.3], [0.8, -0.2, -0.4], [-0.1, 0.95, 0.9]],
+            [0.7, 0.3, 0.1, 1.0],
+        );
+        flat.draw(
+            &ctx,
+            &[[-0.5, 0.6, 0.0], [0.9, 0.9, 0.0], [0.2, -0.9, 0.0]],
+            [0.2, 0.9, 0.5, 0.5],
+        );
         images.push(t.read_color(&ctx).expect("colour"));
         assert_no_gl_error(&ctx);
     }

@@ -1,1 +1,20 @@
-//! Benchmarks behind `fixedfunc bench`.
+//! Measurements behind `fixedfunc bench`: each group times real work repeatedly and reports
+//! medians (with min and max), never a single run. Groups: `context` (creating each
+//! backend's contexts and producing the first read-back frame).
+
+pub mod context;
+mod stats;
+
+pub use stats::Summary;
+
+/// Which measurements to run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum BenchGroup {
+    /// Context creation and the first read-back frame, per backend and profile.
+    Context,
+}
+
+impl BenchGroup {
+    pub const ALL: [BenchGroup; 1] = [BenchGroup::Context];
+}

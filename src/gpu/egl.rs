@@ -166,11 +166,11 @@ fn open_display(egl: &Egl) -> Result<(egl::Display, EglPlatform), GpuError> {
         return Ok((display, EglPlatform::Surfaceless));
     }
     if has("EGL_EXT_platform_device") {
-        let query = egl
-            .get_proc_address("eglQueryDevicesEXT")
-            .ok_or_else(|| GpuError::NoHeadlessPlatform {
+        let query = egl.get_proc_address("eglQueryDevicesEXT").ok_or_else(|| {
+            GpuError::NoHeadlessPlatform {
                 extensions: extensions.clone(),
-            })?;
+            }
+        })?;
         // SAFETY: eglQueryDevicesEXT has this signature (EGL_EXT_device_enumeration).
         let query: QueryDevices = unsafe { std::mem::transmute(query) };
         let mut device: *mut c_void = std::ptr::null_mut();

@@ -44,10 +44,7 @@ pub enum GpuError {
     },
     /// An OSMesa call failed.
     #[error("{call} failed: {detail}")]
-    OsMesa {
-        call: &'static str,
-        detail: String,
-    },
+    OsMesa { call: &'static str, detail: String },
     /// The window backend failed (no display, no visual, winit or glutin errors).
     #[error("window backend: {detail}")]
     Window { detail: String },

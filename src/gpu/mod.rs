@@ -22,9 +22,9 @@ mod osmesa;
 mod readback;
 mod target;
 mod trivial;
-mod xvfb;
 #[cfg(feature = "window")]
 mod window;
+mod xvfb;
 
 use std::fmt;
 use std::str::FromStr;
@@ -131,7 +131,7 @@ impl ContextRequest {
 
 /// The backend-specific half of a context: what must stay alive, and how to make it current.
 enum Handle {
-    Egl(egl::EglContext),
+    Egl(Box<egl::EglContext>),
     OsMesa(osmesa::OsMesaContext),
     #[cfg(feature = "window")]
     Window(Box<window::WindowContext>),
@@ -156,11 +156,15 @@ impl GpuContext {
             Backend::Egl => {
                 let (ctx, gl) = egl::EglContext::create(request.profile, lib)?;
                 let path = ctx.platform().to_string();
-                (gl, Handle::Egl(ctx), path)
+                (gl, Handle::Egl(Box::new(ctx)), path)
             }
             Backend::OsMesa => {
                 let (ctx, gl) = osmesa::OsMesaContext::create(request.profile, lib)?;
-                (gl, Handle::OsMesa(ctx), "OSMesaCreateContextAttribs".to_string())
+                (
+                    gl,
+                    Handle::OsMesa(ctx),
+                    "OSMesaCreateContextAttribs".to_string(),
+                )
             }
             #[cfg(feature = "window")]
             Backend::Window => {

@@ -147,8 +147,10 @@ impl RenderTarget {
                 gl.get_framebuffer_attachment_parameter_i32(glow::FRAMEBUFFER, attachment, pname)
                     .max(0) as u32
             };
-            target.depth_bits =
-                query(glow::DEPTH_ATTACHMENT, glow::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE);
+            target.depth_bits = query(
+                glow::DEPTH_ATTACHMENT,
+                glow::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE,
+            );
             target.stencil_bits = if attachment == glow::DEPTH_STENCIL_ATTACHMENT {
                 query(
                     glow::STENCIL_ATTACHMENT,
@@ -301,13 +303,7 @@ impl RenderTarget {
         (self.spec.width * self.spec.height) as usize
     }
 
-    fn read(
-        &self,
-        ctx: &GpuContext,
-        format: u32,
-        ty: u32,
-        out: &mut [u8],
-    ) -> Result<(), GpuError> {
+    fn read(&self, ctx: &GpuContext, format: u32, ty: u32, out: &mut [u8]) -> Result<(), GpuError> {
         let gl = ctx.gl();
         unsafe {
             gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.framebuffer));

@@ -30,8 +30,10 @@ impl FlatProgram {
         let gl = ctx.gl();
         unsafe {
             let program = gl.create_program().map_err(GpuError::Object)?;
-            for (kind, source) in [(glow::VERTEX_SHADER, VERTEX), (glow::FRAGMENT_SHADER, FRAGMENT)]
-            {
+            for (kind, source) in [
+                (glow::VERTEX_SHADER, VERTEX),
+                (glow::FRAGMENT_SHADER, FRAGMENT),
+            ] {
                 let shader = gl.create_shader(kind).map_err(GpuError::Object)?;
                 gl.shader_source(shader, source);
                 gl.compile_shader(shader);

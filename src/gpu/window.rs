@@ -8,16 +8,14 @@
 //! the copy is exact), swaps, and reads the front buffer back: what the window shows.
 
 use std::cell::RefCell;
-use std::ffi::c_void;
 use std::num::NonZeroU32;
 use std::time::{Duration, Instant};
 
 use glow::HasContext;
-use glutin::config::{ConfigTemplateBuilder, GlConfig};
+use glutin::config::ConfigTemplateBuilder;
 use glutin::context::{
     ContextApi, ContextAttributesBuilder, GlProfile, NotCurrentGlContext, PossiblyCurrentContext,
-    PossiblyCurrentGlContext,
-    Version,
+    PossiblyCurrentGlContext, Version,
 };
 use glutin::display::{GetGlDisplay, GlDisplay};
 use glutin::surface::{GlSurface, Surface, WindowSurface};
@@ -155,14 +153,12 @@ impl WindowContext {
             .map_err(|e| GpuError::Window {
                 detail: format!("make current: {e}"),
             })?;
-        let api = format!("{:?} on X11 (glutin + winit)", config.api());
+        let api = format!("{} on X11 (glutin + winit)", display.version_string());
         window.set_visible(true);
         pump(event_loop, Duration::from_millis(10));
         // SAFETY: the context is current; the display resolves its entry points.
         let gl = unsafe {
-            glow::Context::from_loader_function_cstr(|name| {
-                display.get_proc_address(name) as *const c_void
-            })
+            glow::Context::from_loader_function_cstr(|name| display.get_proc_address(name))
         };
         Ok((
             WindowContext {
@@ -202,17 +198,26 @@ impl WindowContext {
             gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, None);
             gl.draw_buffer(glow::BACK);
             let (w, h) = (w as i32, h as i32);
-            gl.blit_framebuffer(0, 0, w, h, 0, 0, w, h, glow::COLOR_BUFFER_BIT, glow::NEAREST);
+            gl.blit_framebuffer(
+                0,
+                0,
+                w,
+                h,
+                0,
+                0,
+                w,
+                h,
+                glow::COLOR_BUFFER_BIT,
+                glow::NEAREST,
+            );
         }
-        self.surface
-            .swap_buffers(&self.context)
-            .map_err(|e| GpuError::Window {
-                detail: format!("swap buffers: {e}"),
-            })?;
+        // What the window shows is the back buffer once swapped: read it just before the
+        // swap (the front buffer of a composited or unmapped X window cannot be read back
+        // reliably).
         let mut data = vec![0u8; (w * h * 4) as usize];
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-            gl.read_buffer(glow::FRONT);
+            gl.read_buffer(glow::BACK);
             gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
             gl.read_pixels(
                 0,
@@ -223,8 +228,13 @@ impl WindowContext {
                 glow::UNSIGNED_BYTE,
                 glow::PixelPackData::Slice(Some(&mut data)),
             );
-            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.framebuffer()));
         }
+        self.surface
+            .swap_buffers(&self.context)
+            .map_err(|e| GpuError::Window {
+                detail: format!("swap buffers: {e}"),
+            })?;
+        unsafe { gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.framebuffer())) };
         let row = (w * 4) as usize;
         let flipped: Vec<u8> = data.chunks_exact(row).rev().flatten().copied().collect();
         image::RgbaImage::from_raw(w, h, flipped).ok_or(GpuError::Window {
@@ -268,5 +278,13 @@ impl WindowContext {
         );
         self.surface.resize(&self.context, nw, nh);
         Ok(())
+    }
+}
+
+impl Drop for WindowContext {
+    fn drop(&mut self) {
+        // Release the thread: glvnd lets one window-system API (GLX or EGL) be current per
+        // thread, so a context left current here would block a later EGL context.
+        let _ = self.context.make_not_current_in_place();
     }
 }

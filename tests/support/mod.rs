@@ -41,10 +41,7 @@ pub fn assert_no_gl_error(ctx: &GpuContext) {
 /// Asserts that the pixel at (x, y), top row first, is `expected` within `tol` per channel.
 pub fn probe(img: &RgbaImage, x: u32, y: u32, expected: [u8; 4], tol: u8) {
     let got = img.get_pixel(x, y).0;
-    let ok = got
-        .iter()
-        .zip(expected)
-        .all(|(&g, e)| g.abs_diff(e) <= tol);
+    let ok = got.iter().zip(expected).all(|(&g, e)| g.abs_diff(e) <= tol);
     assert!(
         ok,
         "pixel ({x},{y}) is {got:?}, expected {expected:?} ± {tol}"
@@ -87,7 +84,12 @@ pub fn assert_images_match(name: &str, actual: &RgbaImage, expected: &RgbaImage,
     let mut worst = 0u8;
     for (x, y, a) in actual.enumerate_pixels() {
         let e = expected.get_pixel(x, y);
-        let d = a.0.iter().zip(e.0).map(|(&p, q)| p.abs_diff(q)).max().unwrap_or(0);
+        let d =
+            a.0.iter()
+                .zip(e.0)
+                .map(|(&p, q)| p.abs_diff(q))
+                .max()
+                .unwrap_or(0);
         worst = worst.max(d);
         if d > tol.per_channel {
             bad += 1;
