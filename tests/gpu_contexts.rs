@@ -4,7 +4,9 @@
 
 mod support;
 
-use fixedfunc::gpu::{Backend, DepthBits, DepthRule, FlatProgram, GpuContext, Profile};
+use fixedfunc::gpu::{
+    Backend, ContextRequest, DepthBits, DepthRule, EglPlatform, FlatProgram, GpuContext, Profile,
+};
 use glow::HasContext;
 use support::{assert_images_match, assert_no_gl_error, context, probe, target, Tolerance};
 
@@ -251,4 +253,28 @@ fn egl_and_osmesa_render_bit_identical_images() {
         assert_no_gl_error(&ctx);
     }
     assert_images_match("egl-vs-osmesa", &images[1], &images[0], Tolerance::EXACT);
+}
+
+/// The default EGL path is the surfaceless platform; the device platform (the fallback) works
+/// too when forced, and says which path it took.
+#[test]
+fn egl_takes_the_surfaceless_platform_and_can_fall_back_to_a_device() {
+    let ctx = context(Backend::Egl, Profile::Core33);
+    assert_eq!(ctx.path(), "EGL_MESA_platform_surfaceless");
+    let request = ContextRequest::new(Backend::Egl, Profile::Compatibility)
+        .with_egl_platform(EglPlatform::Device);
+    let ctx = GpuContext::new(&request).expect("EGL device platform");
+    assert_eq!(ctx.path(), "EGL_EXT_platform_device");
+    let t = target(&ctx, 8, 8, DepthBits::D24, false);
+    let flat = FlatProgram::new(&ctx).expect("flat program");
+    clear(&ctx, [0.0, 0.0, 0.0, 1.0]);
+    flat.draw(&ctx, &full_screen(0.0), [0.0, 1.0, 0.0, 1.0]);
+    probe(
+        &t.read_color(&ctx).expect("colour"),
+        4,
+        4,
+        [0, 255, 0, 255],
+        0,
+    );
+    assert_no_gl_error(&ctx);
 }

@@ -17,8 +17,9 @@ const DEFAULT_LIBRARY: &str = "libEGL.so.1";
 type Egl = egl::DynamicInstance<egl::EGL1_5>;
 type QueryDevices = unsafe extern "system" fn(i32, *mut *mut c_void, *mut i32) -> egl::Boolean;
 
-/// Which EGL platform gave the display.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Which EGL platform gave the display (or, in a request, which one to use; `None` in a
+/// request means "surfaceless, else device").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum EglPlatform {
     Surfaceless,
     Device,
@@ -28,7 +29,7 @@ impl std::fmt::Display for EglPlatform {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(match self {
             EglPlatform::Surfaceless => "EGL_MESA_platform_surfaceless",
-            EglPlatform::Device => "EGL_EXT_platform_device (surfaceless platform missing)",
+            EglPlatform::Device => "EGL_EXT_platform_device",
         })
     }
 }
@@ -55,6 +56,7 @@ impl EglContext {
     pub fn create(
         profile: Profile,
         library: Option<&str>,
+        platform: Option<EglPlatform>,
     ) -> Result<(EglContext, glow::Context), GpuError> {
         let library = library.unwrap_or(DEFAULT_LIBRARY);
         // SAFETY: the library is Mesa's (or glvnd's) libEGL, which implements EGL 1.5.
@@ -67,7 +69,7 @@ impl EglContext {
                 hint: "",
             }
         })?;
-        let (display, platform) = open_display(&egl)?;
+        let (display, platform) = open_display(&egl, platform)?;
         let err = |call| egl_err(call, platform);
         egl.initialize(display).map_err(err("eglInitialize"))?;
         egl.bind_api(egl::OPENGL_API).map_err(err("eglBindAPI"))?;
@@ -147,13 +149,16 @@ impl Drop for EglContext {
 }
 
 /// Opens the surfaceless display, or the first EGL device's display.
-fn open_display(egl: &Egl) -> Result<(egl::Display, EglPlatform), GpuError> {
+fn open_display(
+    egl: &Egl,
+    wanted: Option<EglPlatform>,
+) -> Result<(egl::Display, EglPlatform), GpuError> {
     let extensions = egl
         .query_string(None, egl::EXTENSIONS)
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_default();
     let has = |name: &str| extensions.split_whitespace().any(|e| e == name);
-    if has("EGL_MESA_platform_surfaceless") {
+    if wanted != Some(EglPlatform::Device) && has("EGL_MESA_platform_surfaceless") {
         // SAFETY: the surfaceless platform takes EGL_DEFAULT_DISPLAY as its native display.
         let display = unsafe {
             egl.get_platform_display(
@@ -165,7 +170,7 @@ fn open_display(egl: &Egl) -> Result<(egl::Display, EglPlatform), GpuError> {
         .map_err(egl_err("eglGetPlatformDisplay", EglPlatform::Surfaceless))?;
         return Ok((display, EglPlatform::Surfaceless));
     }
-    if has("EGL_EXT_platform_device") {
+    if wanted != Some(EglPlatform::Surfaceless) && has("EGL_EXT_platform_device") {
         let query = egl.get_proc_address("eglQueryDevicesEXT").ok_or_else(|| {
             GpuError::NoHeadlessPlatform {
                 extensions: extensions.clone(),

@@ -31,6 +31,7 @@ use std::str::FromStr;
 
 use glow::HasContext;
 
+pub use egl::EglPlatform;
 pub use error::GpuError;
 pub use info::{ContextInfo, DepthReport, ExtensionReport, Limits, SHADOW_EXTENSIONS};
 pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8, DepthRule};
@@ -107,11 +108,13 @@ impl Profile {
 
 /// What to create. `library` overrides the shared library the backend loads (the default is
 /// `libEGL.so.1` or `libOSMesa.so.8`); it exists so that a missing library can be tested.
+/// `egl_platform` forces one EGL platform instead of "surfaceless, else device".
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ContextRequest {
     pub backend: Backend,
     pub profile: Profile,
     pub library: Option<String>,
+    pub egl_platform: Option<EglPlatform>,
 }
 
 impl ContextRequest {
@@ -120,7 +123,13 @@ impl ContextRequest {
             backend,
             profile,
             library: None,
+            egl_platform: None,
         }
+    }
+
+    pub fn with_egl_platform(mut self, platform: EglPlatform) -> Self {
+        self.egl_platform = Some(platform);
+        self
     }
 
     pub fn with_library(mut self, library: impl Into<String>) -> Self {
@@ -154,8 +163,14 @@ impl GpuContext {
         let lib = request.library.as_deref();
         let (gl, handle, path) = match request.backend {
             Backend::Egl => {
-                let (ctx, gl) = egl::EglContext::create(request.profile, lib)?;
-                let path = ctx.platform().to_string();
+                let (ctx, gl) =
+                    egl::EglContext::create(request.profile, lib, request.egl_platform)?;
+                let path = match (request.egl_platform, ctx.platform()) {
+                    (None, egl::EglPlatform::Device) => {
+                        "EGL_EXT_platform_device (no surfaceless platform)".to_string()
+                    }
+                    (_, platform) => platform.to_string(),
+                };
                 (gl, Handle::Egl(Box::new(ctx)), path)
             }
             Backend::OsMesa => {
