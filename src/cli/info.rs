@@ -16,12 +16,22 @@ struct BackendReport {
 #[derive(Serialize)]
 struct ProfileReport {
     profile: Profile,
-    result: Result<ContextInfo, String>,
+    #[serde(flatten)]
+    result: ProfileResult,
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "lowercase")]
+enum ProfileResult {
+    Context(Box<ContextInfo>),
+    Error(String),
 }
 
 impl BackendReport {
     fn works(&self) -> bool {
-        self.contexts.iter().any(|c| c.result.is_ok())
+        self.contexts
+            .iter()
+            .any(|c| matches!(c.result, ProfileResult::Context(_)))
     }
 }
 
@@ -48,9 +58,12 @@ pub fn run(only: Option<Backend>, json: bool) -> Result<(), CliError> {
             .into_iter()
             .map(|profile| ProfileReport {
                 profile,
-                result: GpuContext::new(&ContextRequest::new(backend, profile))
+                result: match GpuContext::new(&ContextRequest::new(backend, profile))
                     .and_then(|ctx| ContextInfo::query(&ctx))
-                    .map_err(|e| e.to_string()),
+                {
+                    Ok(info) => ProfileResult::Context(Box::new(info)),
+                    Err(e) => ProfileResult::Error(e.to_string()),
+                },
             })
             .collect();
         reports.push(BackendReport {
@@ -72,7 +85,10 @@ pub fn run(only: Option<Backend>, json: bool) -> Result<(), CliError> {
             reasons: report
                 .contexts
                 .iter()
-                .filter_map(|c| c.result.as_ref().err())
+                .filter_map(|c| match &c.result {
+                    ProfileResult::Error(e) => Some(e),
+                    ProfileResult::Context(_) => None,
+                })
                 .map(|e| format!("  {e}"))
                 .collect::<Vec<_>>()
                 .join("\n"),
@@ -93,12 +109,12 @@ fn print_text(report: &BackendReport) {
     }
     for c in &report.contexts {
         match &c.result {
-            Err(e) => println!(
+            ProfileResult::Error(e) => println!(
                 "  {:<14} error: {}",
                 c.profile.name(),
                 e.replace('\n', "\n    ")
             ),
-            Ok(i) => print_context(i),
+            ProfileResult::Context(i) => print_context(i),
         }
     }
     println!();
@@ -130,9 +146,9 @@ fn print_context(i: &ContextInfo) {
                 d.requested,
                 if d.stencil_requested { "+S" } else { "" }
             );
-            match &d.result {
-                Ok((z, s)) => format!("{asked} → {z}/{s}"),
-                Err(_) => format!("{asked} → unsupported"),
+            match (d.depth_bits, d.stencil_bits) {
+                (Some(z), Some(s)) => format!("{asked} → {z}/{s}"),
+                _ => format!("{asked} → unsupported"),
             }
         })
         .collect();

@@ -39,8 +39,11 @@ pub struct Limits {
 pub struct DepthReport {
     pub requested: DepthBits,
     pub stencil_requested: bool,
-    /// `Err` text when the target could not be made.
-    pub result: Result<(u32, u32), String>,
+    /// Bits obtained, `None` when the target could not be made.
+    pub depth_bits: Option<u32>,
+    pub stencil_bits: Option<u32>,
+    /// Why the target could not be made.
+    pub error: Option<String>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -106,10 +109,16 @@ impl ContextInfo {
                     t.delete(ctx);
                     obtained
                 });
+                let (depth_bits, stencil_bits, error) = match result {
+                    Ok((z, s)) => (Some(z), Some(s), None),
+                    Err(e) => (None, None, Some(e.to_string())),
+                };
                 depth.push(DepthReport {
                     requested: bits,
                     stencil_requested: stencil,
-                    result: result.map_err(|e| e.to_string()),
+                    depth_bits,
+                    stencil_bits,
+                    error,
                 });
             }
         }
