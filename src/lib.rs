@@ -11,5 +11,6 @@ pub mod ff;
 pub mod gpu;
 pub mod mesh;
 pub mod metrics;
+pub mod pipeline;
 pub mod scene;
 pub mod truth;

@@ -118,14 +118,14 @@ impl EglContext {
         };
         ctx.make_current()?;
         // SAFETY: the context is current; eglGetProcAddress returns entry points for it.
-        let gl = unsafe {
-            glow::Context::from_loader_function(|name| {
-                ctx.egl
-                    .get_proc_address(name)
-                    .map_or(std::ptr::null(), |f| f as *const c_void)
-            })
-        };
+        let gl = unsafe { glow::Context::from_loader_function(|name| ctx.proc_address(name)) };
         Ok((ctx, gl))
+    }
+
+    pub fn proc_address(&self, name: &str) -> *const c_void {
+        self.egl
+            .get_proc_address(name)
+            .map_or(std::ptr::null(), |f| f as *const c_void)
     }
 
     pub fn platform(&self) -> EglPlatform {

@@ -223,6 +223,17 @@ impl GpuContext {
         &self.path
     }
 
+    /// The address of a GL entry point of this context (null when the driver has none), for
+    /// bindings other than glow's (the native pipeline's generated ones).
+    pub fn proc_address(&self, name: &str) -> *const std::ffi::c_void {
+        match &self.handle {
+            Handle::Egl(c) => c.proc_address(name),
+            Handle::OsMesa(c) => c.proc_address(name),
+            #[cfg(feature = "window")]
+            Handle::Window(c) => c.proc_address(name),
+        }
+    }
+
     /// Makes this context current on the calling thread.
     pub fn make_current(&self) -> Result<(), GpuError> {
         match &self.handle {

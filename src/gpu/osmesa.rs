@@ -36,6 +36,7 @@ pub struct OsMesaContext {
     context: RawContext,
     make_current: MakeCurrent,
     destroy: DestroyContext,
+    get_proc: GetProcAddress,
     /// The client buffer OSMesa requires; never rendered to.
     buffer: Box<[u8; 4]>,
     // Last: the function pointers above point into it.
@@ -105,18 +106,22 @@ impl OsMesaContext {
             context,
             make_current,
             destroy,
+            get_proc,
             buffer: Box::new([0; 4]),
             _library: library,
         };
         ctx.make_current()?;
         // SAFETY: the context is current; OSMesaGetProcAddress returns its entry points.
-        let gl = unsafe {
-            glow::Context::from_loader_function(|name| match CString::new(name) {
-                Ok(c) => get_proc(c.as_ptr()),
-                Err(_) => std::ptr::null(),
-            })
-        };
+        let gl = unsafe { glow::Context::from_loader_function(|name| ctx.proc_address(name)) };
         Ok((ctx, gl))
+    }
+
+    pub fn proc_address(&self, name: &str) -> *const c_void {
+        match CString::new(name) {
+            // SAFETY: a NUL-terminated name; OSMesaGetProcAddress only reads it.
+            Ok(c) => unsafe { (self.get_proc)(c.as_ptr()) },
+            Err(_) => std::ptr::null(),
+        }
     }
 
     pub fn make_current(&self) -> Result<(), GpuError> {

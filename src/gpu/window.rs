@@ -171,6 +171,13 @@ impl WindowContext {
         ))
     }
 
+    pub fn proc_address(&self, name: &str) -> *const std::ffi::c_void {
+        match std::ffi::CString::new(name) {
+            Ok(c) => self.context.display().get_proc_address(&c),
+            Err(_) => std::ptr::null(),
+        }
+    }
+
     pub fn describe(&self) -> String {
         self.api.clone()
     }
