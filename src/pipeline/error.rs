@@ -1,0 +1,43 @@
+//! The pipeline layer's errors. A shader error carries the evidence: the stage, the key that
+//! produced the program (as text), the generated source and the driver's log.
+
+use crate::gpu::GpuError;
+
+/// Which shader stage failed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShaderStage {
+    Vertex,
+    Fragment,
+    /// The link step of the program.
+    Link,
+}
+
+/// A generated program that the driver refused.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{stage:?} shader failed for key {key}:\n{log}\n--- generated GLSL ---\n{glsl}")]
+pub struct ShaderError {
+    pub stage: ShaderStage,
+    pub key: String,
+    /// The generated GLSL (thiserror reserves the name `source`).
+    pub glsl: String,
+    pub log: String,
+}
+
+/// Everything that can stop a Command list from executing.
+#[derive(Debug, thiserror::Error)]
+pub enum PipelineError {
+    #[error(transparent)]
+    Shader(#[from] ShaderError),
+    #[error(transparent)]
+    Gpu(#[from] GpuError),
+    /// The native path needs a compatibility context, the emulated one a core context.
+    #[error("the {path} pipeline needs a {needs} context, got {got}")]
+    WrongProfile {
+        path: &'static str,
+        needs: &'static str,
+        got: &'static str,
+    },
+    /// A GL object could not be created.
+    #[error("GL object creation failed: {0}")]
+    Object(String),
+}
