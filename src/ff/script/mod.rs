@@ -2,8 +2,8 @@
 //!
 //! A script is the body of a C function (compiled with <GL/gl.h>, <GL/glext.h> under
 //! GL_GLEXT_PROTOTYPES, <math.h> and <stddef.h>): `glTexGenfv(GL_S, GL_EYE_PLANE,
-//! (GLfloat[]){1, 0, 0, 0});`. Arrays are compound literals (`GLfloat`, `GLdouble`, `GLint`,
-//! `GLubyte`, `GLushort`, `GLuint`); pixel data is given as such an array whose element type
+//! (GLfloat[]){1, 0, 0, 0});`. Arrays are compound literals: `(GLfloat[])` for vectors and
+//! matrices; pixel data is a `GLubyte`, `GLushort`, `GLuint` or `GLfloat` array whose element type
 //! fixes how its values become bytes (little-endian), or `NULL`. `glBegin … glEnd` with
 //! glVertex/glColor/glNormal/glTexCoord/glMultiTexCoord folds into one `Command::Draw`; an
 //! attribute called inside the pair becomes a per-vertex array (vertices before its first call
