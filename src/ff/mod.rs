@@ -1,1 +1,61 @@
-//! The `ff` layer (see DESIGN in the README).
+//! The `ff` layer: the OpenGL 1.x fixed-function pipeline as data and rules, with no GL calls.
+//!
+//! - [`Command`] lists every GL-like operation once, as data. Techniques emit commands, the
+//!   pipelines (`emulate`, `native`) execute them, [`script`] reads and prints them as the C
+//!   calls of the era.
+//! - [`FixedState`] is the GL 1.x state with every initial value documented;
+//!   [`FixedState::apply`] folds a command in with GL's error semantics (an error leaves the
+//!   state unchanged; the first error sticks until read).
+//! - The small modules hold the GL rules both pipelines and the tests need, each with its
+//!   formula: matrices ([`matrix`]), texgen ([`texgen`]), texture environments ([`texenv`]),
+//!   register combiners ([`combiners`]), per-fragment tests ([`fragment`]).
+//!
+//! Eye planes and light positions are transformed by the modelview current when they are
+//! set (GL 1.5 §2.11.4, §2.14.1), never at draw time. Depth readback conversions belong to
+//! the `gpu` layer.
+
+pub mod apply;
+pub mod combiners;
+pub mod command;
+pub mod error;
+pub mod fragment;
+pub mod geometry;
+pub mod light;
+pub mod matrix;
+pub mod script;
+pub mod state;
+pub mod texenv;
+pub mod texgen;
+pub mod texture;
+
+#[cfg(test)]
+mod state_tests;
+
+pub use combiners::{
+    CombinerBias, CombinerInput, CombinerOutput, CombinerParam, CombinerScale, ComponentUsage,
+    FinalVariable, GeneralStage, Mapping, Portion, Product, Register, RegisterCombiners,
+    StagePortion, SumOrMux, Variable, MAX_GENERAL_COMBINERS,
+};
+pub use command::{Capability, Command, CopyTexImage, ReadPixels, TexImage, TexSubImage};
+pub use error::{GlError, GlErrorKind, GlResult};
+pub use fragment::{
+    AlphaTest, Blend, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc, DepthRange,
+    DepthTest, Face, FrontFace, OffsetEnables, PolygonMode, PolygonOffset, ShadeModel, StencilOp,
+    StencilTest, Toggle, Viewport,
+};
+pub use geometry::{Geometry, Primitive};
+pub use light::{
+    ColorControl, ColorMaterial, ColorMaterialMode, Light, LightModel, LightModelParam, LightParam,
+    Material, MaterialParam, Materials, MAX_LIGHTS,
+};
+pub use matrix::{MatrixMode, MatrixStack, ViewVolume};
+pub use state::{CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_TEXTURE_UNITS};
+pub use texenv::{
+    Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,
+    TexEnvMode, TexEnvParam,
+};
+pub use texgen::{TexCoord, TexGen, TexGenMode, TexGenParam};
+pub use texture::{
+    BaseFormat, CompareMode, DepthTextureMode, Filter, PixelData, PixelFormat, PixelType,
+    TexFormat, TexLevel, TexParam, TexParams, TextureObject, TextureTarget, Wrap,
+};

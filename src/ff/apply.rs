@@ -1,0 +1,447 @@
+//! `FixedState::apply`: one Command folded into the state with GL's error semantics.
+//!
+//! Every arm validates first and mutates last, so an error leaves the state unchanged
+//! (GL 1.5 §2.5). The first error is kept in the sticky flag until read; each call also
+//! returns its own result. Light positions, spot directions and eye planes use the
+//! modelview current at the call (§2.11.4, §2.14.1).
+
+use std::sync::Arc;
+
+use glam::Vec4;
+
+use super::command::{Capability, Command, CopyTexImage, ReadPixels, TexImage, TexSubImage};
+use super::error::{GlError, GlResult};
+use super::fragment::{BlendFactor, DepthRange, Face, Viewport};
+use super::geometry::Geometry;
+use super::light::MAX_LIGHTS;
+use super::matrix::{frustum, ortho, rotate, scale, translate};
+use super::state::{FixedState, PolygonModes, MAX_TEXTURE_UNITS};
+use super::texture::{
+    blit, check_format_pair, check_image_size, image_size, PixelData, TexLevel, TextureObject,
+    TextureTarget,
+};
+
+impl FixedState {
+    /// Applies one command. On error the state is unchanged, the error is returned, and it is
+    /// recorded unless an earlier error is still pending.
+    pub fn apply(&mut self, cmd: &Command) -> GlResult {
+        let result = self.execute(cmd);
+        if let Err(e) = result {
+            self.error.get_or_insert(e);
+        }
+        result
+    }
+
+    /// Applies every command, stopping at none: returns the first error, as glGetError
+    /// would after the sequence.
+    pub fn apply_all<'a>(&mut self, cmds: impl IntoIterator<Item = &'a Command>) -> GlResult {
+        let mut first = Ok(());
+        for c in cmds {
+            if let Err(e) = self.apply(c) {
+                if first.is_ok() {
+                    first = Err(e);
+                }
+            }
+        }
+        first
+    }
+
+    fn execute(&mut self, cmd: &Command) -> GlResult {
+        let mv = self.modelview.top();
+        let unit = self.active_unit();
+        match cmd {
+            Command::MatrixMode(m) => self.matrix_mode = *m,
+            Command::LoadIdentity => self.current_stack_mut().set_top(glam::Mat4::IDENTITY),
+            Command::LoadMatrix(m) => self.current_stack_mut().set_top(*m),
+            Command::MultMatrix(m) => self.mult(*m),
+            Command::PushMatrix => self.current_stack_mut().push()?,
+            Command::PopMatrix => self.current_stack_mut().pop()?,
+            Command::Translate(v) => self.mult(translate(*v)),
+            Command::Rotate { angle_deg, axis } => self.mult(rotate(*angle_deg, *axis)),
+            Command::Scale(v) => self.mult(scale(*v)),
+            Command::Frustum(v) => self.mult(frustum(*v)?),
+            Command::Ortho(v) => self.mult(ortho(*v)?),
+            Command::Viewport(v) => self.viewport = check_viewport(*v)?,
+            Command::DepthRange { near, far } => {
+                self.depth_range = DepthRange {
+                    near: near.clamp(0.0, 1.0),
+                    far: far.clamp(0.0, 1.0),
+                }
+            }
+            Command::Enable(c) => self.set_capability(*c, true)?,
+            Command::Disable(c) => self.set_capability(*c, false)?,
+            Command::Color(c) => self.set_color(*c)?,
+            Command::Normal(n) => self.current.normal = *n,
+            Command::TexCoord { unit, coord } => {
+                let u = check_unit(*unit)?;
+                self.current.texcoords[u] = *coord;
+            }
+            Command::Light { light, param } => {
+                let i = usize::from(*light);
+                if i >= MAX_LIGHTS {
+                    return Err(GlError::invalid_enum("LIGHTi beyond MAX_LIGHTS"));
+                }
+                let mut l = self.lights[i].value;
+                l.set(*param, mv)?;
+                self.lights[i].value = l;
+            }
+            Command::LightModel(p) => self.light_model.set(*p),
+            Command::Material { face, param } => self.materials.set(*face, *param)?,
+            Command::ColorMaterial { face, mode } => {
+                self.color_material.value = super::light::ColorMaterial {
+                    face: *face,
+                    mode: *mode,
+                };
+                if self.color_material.enabled {
+                    self.track_color_material()?;
+                }
+            }
+            Command::ShadeModel(m) => self.shade_model = *m,
+            Command::ActiveTexture(u) => self.active_texture = check_unit(*u)?,
+            Command::BindTexture { target, name } => self.bind_texture(*target, *name)?,
+            Command::TexImage(t) => self.tex_image(t)?,
+            Command::TexSubImage2D(t) => self.tex_sub_image(t)?,
+            Command::CopyTexImage2D(c) => self.copy_tex_image(c)?,
+            Command::TexParameter { target, param } => {
+                let name = self.units[unit].bound(*target);
+                let tex = self
+                    .texture_mut(*target, name)
+                    .ok_or(GlError::invalid_operation(
+                        "bound name belongs to another target",
+                    ))?;
+                let mut p = tex.params;
+                p.set(*param)?;
+                tex.params = p;
+            }
+            Command::TexGen { coord, param } => {
+                let slot = &mut self.units[unit].texgen[coord.index()].value;
+                let mut g = *slot;
+                g.set(*coord, *param, mv)?;
+                *slot = g;
+            }
+            Command::TexEnv(p) => {
+                let mut env = self.units[unit].env;
+                env.set(*p, MAX_TEXTURE_UNITS)?;
+                self.units[unit].env = env;
+            }
+            Command::CombinerParameter(p) => self.register_combiners.value.set_parameter(*p)?,
+            Command::CombinerInput {
+                stage,
+                portion,
+                variable,
+                input,
+            } => self.register_combiners.value.set_input(
+                *stage,
+                *portion,
+                *variable,
+                *input,
+                MAX_TEXTURE_UNITS,
+            )?,
+            Command::CombinerOutput {
+                stage,
+                portion,
+                output,
+            } => self.register_combiners.value.set_output(
+                *stage,
+                *portion,
+                *output,
+                MAX_TEXTURE_UNITS,
+            )?,
+            Command::FinalCombinerInput { variable, input } => self
+                .register_combiners
+                .value
+                .set_final_input(*variable, *input, MAX_TEXTURE_UNITS)?,
+            Command::AlphaFunc { func, reference } => {
+                self.alpha_test.value.func = *func;
+                self.alpha_test.value.reference = reference.clamp(0.0, 1.0);
+            }
+            Command::DepthFunc(f) => self.depth_test.value.func = *f,
+            Command::DepthMask(b) => self.depth_test.value.write = *b,
+            Command::StencilFunc {
+                func,
+                reference,
+                mask,
+            } => {
+                let s = &mut self.stencil_test.value;
+                s.func = *func;
+                s.reference = *reference;
+                s.value_mask = *mask;
+            }
+            Command::StencilOp {
+                fail,
+                depth_fail,
+                depth_pass,
+            } => {
+                let s = &mut self.stencil_test.value;
+                s.fail = *fail;
+                s.depth_fail = *depth_fail;
+                s.depth_pass = *depth_pass;
+            }
+            Command::StencilMask(m) => self.stencil_test.value.write_mask = *m,
+            Command::BlendFunc { src, dst } => {
+                if *dst == BlendFactor::SrcAlphaSaturate {
+                    return Err(GlError::invalid_enum(
+                        "SRC_ALPHA_SATURATE is a source factor only",
+                    ));
+                }
+                self.blend.value = super::fragment::Blend {
+                    src: *src,
+                    dst: *dst,
+                };
+            }
+            Command::ColorMask(m) => self.color_mask = *m,
+            Command::PolygonOffset { factor, units } => {
+                self.polygon_offset = super::fragment::PolygonOffset {
+                    factor: *factor,
+                    units: *units,
+                }
+            }
+            Command::PolygonMode { face, mode } => {
+                let PolygonModes { front, back } = self.polygon_mode;
+                self.polygon_mode = match face {
+                    Face::Front => PolygonModes { front: *mode, back },
+                    Face::Back => PolygonModes { front, back: *mode },
+                    Face::FrontAndBack => PolygonModes {
+                        front: *mode,
+                        back: *mode,
+                    },
+                };
+            }
+            Command::CullFace(f) => self.cull_face.value = *f,
+            Command::FrontFace(f) => self.front_face = *f,
+            Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
+            Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
+            Command::Clear(_) => {}
+            Command::ClearColor(c) => self.clear.color = c.clamp(Vec4::ZERO, Vec4::ONE),
+            Command::ClearDepth(d) => self.clear.depth = d.clamp(0.0, 1.0),
+            Command::ClearStencil(s) => self.clear.stencil = *s,
+            Command::ReadPixels(r) => check_read_pixels(r)?,
+            Command::Draw(g) => self.draw(g)?,
+        }
+        Ok(())
+    }
+
+    /// M ← M·N on the current stack.
+    fn mult(&mut self, n: glam::Mat4) {
+        let stack = self.current_stack_mut();
+        let m = stack.top();
+        stack.set_top(m * n);
+    }
+
+    fn set_capability(&mut self, cap: Capability, on: bool) -> GlResult {
+        let unit = self.active_unit();
+        match cap {
+            Capability::Lighting => self.lighting = on,
+            Capability::Light(i) => {
+                let light = self
+                    .lights
+                    .get_mut(usize::from(i))
+                    .ok_or(GlError::invalid_enum("LIGHTi beyond MAX_LIGHTS"))?;
+                light.enabled = on;
+            }
+            Capability::ColorMaterial => {
+                self.color_material.enabled = on;
+                if on {
+                    self.track_color_material()?;
+                }
+            }
+            Capability::Normalize => self.normalize = on,
+            Capability::RescaleNormal => self.rescale_normal = on,
+            Capability::Texture1D => self.units[unit].texture_1d = on,
+            Capability::Texture2D => self.units[unit].texture_2d = on,
+            Capability::TextureGen(c) => self.units[unit].texgen[c.index()].enabled = on,
+            Capability::AlphaTest => self.alpha_test.enabled = on,
+            Capability::DepthTest => self.depth_test.enabled = on,
+            Capability::StencilTest => self.stencil_test.enabled = on,
+            Capability::Blend => self.blend.enabled = on,
+            Capability::CullFace => self.cull_face.enabled = on,
+            Capability::PolygonOffsetFill => self.offset_enables.fill = on,
+            Capability::PolygonOffsetLine => self.offset_enables.line = on,
+            Capability::PolygonOffsetPoint => self.offset_enables.point = on,
+            Capability::RegisterCombiners => self.register_combiners.enabled = on,
+        }
+        Ok(())
+    }
+
+    /// glColor; under COLOR_MATERIAL the tracked material colours follow (§2.14.3).
+    fn set_color(&mut self, c: Vec4) -> GlResult {
+        self.current.color = c;
+        if self.color_material.enabled {
+            self.track_color_material()?;
+        }
+        Ok(())
+    }
+
+    fn track_color_material(&mut self) -> GlResult {
+        let cm = self.color_material.value;
+        self.materials
+            .set(cm.face, cm.mode.param(self.current.color))
+    }
+
+    fn bind_texture(&mut self, target: TextureTarget, name: u32) -> GlResult {
+        if name != 0 {
+            match self.textures.get(&name) {
+                Some(t) if t.target != target => {
+                    return Err(GlError::invalid_operation(
+                        "BindTexture: the name was first bound to another target",
+                    ));
+                }
+                Some(_) => {}
+                None => {
+                    self.textures.insert(name, TextureObject::new(target));
+                }
+            }
+        }
+        let u = &mut self.units[self.active_unit()];
+        match target {
+            TextureTarget::Texture1D => u.bound_1d = name,
+            TextureTarget::Texture2D => u.bound_2d = name,
+        }
+        Ok(())
+    }
+
+    fn bound_mut(&mut self, target: TextureTarget) -> GlResult<&mut TextureObject> {
+        let name = self.units[self.active_unit()].bound(target);
+        self.texture_mut(target, name)
+            .ok_or(GlError::invalid_operation(
+                "bound name belongs to another target",
+            ))
+    }
+
+    fn tex_image(&mut self, t: &TexImage) -> GlResult {
+        check_image_size(t.level, t.width, t.height, t.border)?;
+        if t.target == TextureTarget::Texture1D && t.height != 1 {
+            return Err(GlError::invalid_value("TexImage1D has height 1"));
+        }
+        check_format_pair(t.internal_format, t.format)?;
+        if let Some(d) = &t.data {
+            if d.len() != image_size(t.format, t.ty, t.width, t.height) {
+                return Err(GlError::invalid_value(
+                    "pixel data length differs from width·height·components·size",
+                ));
+            }
+        }
+        let level = TexLevel {
+            internal_format: t.internal_format,
+            width: t.width,
+            height: t.height,
+            data: t.data.clone().map(|bytes| PixelData {
+                format: t.format,
+                ty: t.ty,
+                bytes,
+            }),
+        };
+        self.bound_mut(t.target)?.set_level(t.level, level);
+        Ok(())
+    }
+
+    fn tex_sub_image(&mut self, t: &TexSubImage) -> GlResult {
+        let tex = self.bound_mut(TextureTarget::Texture2D)?;
+        let level = tex.level_mut(t.level).ok_or(GlError::invalid_operation(
+            "TexSubImage2D on an unspecified level",
+        ))?;
+        if t.width < 0
+            || t.height < 0
+            || t.x < 0
+            || t.y < 0
+            || t.x + t.width > level.width
+            || t.y + t.height > level.height
+        {
+            return Err(GlError::invalid_value(
+                "TexSubImage2D region outside the image",
+            ));
+        }
+        check_format_pair(level.internal_format, t.format)?;
+        if t.data.len() != image_size(t.format, t.ty, t.width, t.height) {
+            return Err(GlError::invalid_value(
+                "pixel data length differs from width·height·components·size",
+            ));
+        }
+        let pixel = t.format.components() * t.ty.size();
+        let rect = [t.x, t.y, t.width, t.height].map(|v| v as usize);
+        level.data = match level.data.take() {
+            Some(d) if d.format == t.format && d.ty == t.ty => {
+                let mut bytes = d.bytes.to_vec();
+                blit(&mut bytes, level.width as usize, &t.data, rect, pixel);
+                Some(PixelData {
+                    bytes: Arc::from(bytes),
+                    ..d
+                })
+            }
+            // The whole image replaced: the new bytes are the CPU copy.
+            _ if t.width == level.width && t.height == level.height => Some(PixelData {
+                format: t.format,
+                ty: t.ty,
+                bytes: t.data.clone(),
+            }),
+            // Mixed formats or unknown texels: only the GPU copy is authoritative.
+            _ => None,
+        };
+        Ok(())
+    }
+
+    fn copy_tex_image(&mut self, c: &CopyTexImage) -> GlResult {
+        check_image_size(c.level, c.width, c.height, c.border)?;
+        let level = TexLevel {
+            internal_format: c.internal_format,
+            width: c.width,
+            height: c.height,
+            data: None,
+        };
+        self.bound_mut(TextureTarget::Texture2D)?
+            .set_level(c.level, level);
+        Ok(())
+    }
+
+    /// A draw changes no state except the current values, which become the last vertex's
+    /// (what glBegin/glEnd leaves behind).
+    fn draw(&mut self, g: &Geometry) -> GlResult {
+        g.validate()?;
+        if let Some(n) = Geometry::last(&g.normals) {
+            self.current.normal = n;
+        }
+        for (u, coords) in g.texcoords.iter().enumerate() {
+            if let Some(t) = Geometry::last(coords) {
+                self.current.texcoords[u] = t;
+            }
+        }
+        if let Some(c) = Geometry::last(&g.colors) {
+            self.set_color(c)?;
+        }
+        Ok(())
+    }
+}
+
+fn check_unit(unit: u8) -> GlResult<usize> {
+    let u = usize::from(unit);
+    if u >= MAX_TEXTURE_UNITS {
+        return Err(GlError::invalid_enum("TEXTUREi beyond MAX_TEXTURE_UNITS"));
+    }
+    Ok(u)
+}
+
+fn check_viewport(v: Viewport) -> GlResult<Viewport> {
+    if v.width < 0 || v.height < 0 {
+        return Err(GlError::invalid_value(
+            "Viewport width and height must be ≥ 0",
+        ));
+    }
+    Ok(v)
+}
+
+fn positive(v: f32, rule: &'static str) -> GlResult<f32> {
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err(GlError::invalid_value(rule))
+    }
+}
+
+fn check_read_pixels(r: &ReadPixels) -> GlResult {
+    if r.width < 0 || r.height < 0 {
+        return Err(GlError::invalid_value(
+            "ReadPixels width and height must be ≥ 0",
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,248 @@
+//! Every GL-like operation, listed once, as data.
+//!
+//! Techniques emit `Command`s; the emulated and native pipelines execute them;
+//! [`FixedState::apply`](super::FixedState::apply) folds them into the state model;
+//! [`script`](super::script) reads and prints them as the GL 1.x calls of the era. Values
+//! are typed: an enum the GL entry point would reject with INVALID_ENUM cannot be written
+//! here unless the rejection depends on the state or on another argument (e.g. DOT3 for
+//! COMBINE_ALPHA, light 9, TEXTURE12); the script parser rejects the rest with the valid
+//! alternatives.
+
+use std::sync::Arc;
+
+use glam::{Mat4, Vec3, Vec4};
+
+use super::combiners::{
+    CombinerInput, CombinerOutput, CombinerParam, FinalVariable, Portion, Variable,
+};
+use super::fragment::{
+    BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, PolygonMode, ShadeModel,
+    StencilOp, Viewport,
+};
+use super::geometry::Geometry;
+use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
+use super::matrix::{MatrixMode, ViewVolume};
+use super::texenv::TexEnvParam;
+use super::texgen::{TexCoord, TexGenParam};
+use super::texture::{PixelFormat, PixelType, TexFormat, TexParam, TextureTarget};
+
+/// glEnable / glDisable capabilities.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Capability {
+    Lighting,
+    /// LIGHTi; INVALID_ENUM for i ≥ MAX_LIGHTS.
+    Light(u8),
+    ColorMaterial,
+    Normalize,
+    RescaleNormal,
+    /// Of the active texture unit.
+    Texture1D,
+    /// Of the active texture unit.
+    Texture2D,
+    /// TEXTURE_GEN_S/T/R/Q of the active texture unit.
+    TextureGen(TexCoord),
+    AlphaTest,
+    DepthTest,
+    StencilTest,
+    Blend,
+    CullFace,
+    PolygonOffsetFill,
+    PolygonOffsetLine,
+    PolygonOffsetPoint,
+    /// REGISTER_COMBINERS_NV.
+    RegisterCombiners,
+}
+
+/// glTexImage1D / glTexImage2D.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TexImage {
+    pub target: TextureTarget,
+    pub level: i32,
+    pub internal_format: TexFormat,
+    pub width: i32,
+    /// 1 for TEXTURE_1D (glTexImage1D has no height).
+    pub height: i32,
+    pub border: i32,
+    pub format: PixelFormat,
+    pub ty: PixelType,
+    /// Tightly packed rows, bottom row first; `None` = NULL (storage only).
+    pub data: Option<Arc<[u8]>>,
+}
+
+/// glTexSubImage2D (target TEXTURE_2D).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TexSubImage {
+    pub level: i32,
+    pub x: i32,
+    pub y: i32,
+    pub width: i32,
+    pub height: i32,
+    pub format: PixelFormat,
+    pub ty: PixelType,
+    pub data: Arc<[u8]>,
+}
+
+/// glCopyTexImage2D (target TEXTURE_2D) from the current read buffer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct CopyTexImage {
+    pub level: i32,
+    pub internal_format: TexFormat,
+    pub x: i32,
+    pub y: i32,
+    pub width: i32,
+    pub height: i32,
+    pub border: i32,
+}
+
+/// glReadPixels into a numbered readback slot (the pipeline keeps the bytes under `slot`;
+/// a script names it `readback_<slot>`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct ReadPixels {
+    pub x: i32,
+    pub y: i32,
+    pub width: i32,
+    pub height: i32,
+    /// A colour format, DEPTH_COMPONENT or STENCIL_INDEX.
+    pub format: PixelFormat,
+    pub ty: PixelType,
+    pub slot: u32,
+}
+
+/// One GL call.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    // Matrices and viewport.
+    MatrixMode(MatrixMode),
+    LoadIdentity,
+    LoadMatrix(Mat4),
+    MultMatrix(Mat4),
+    PushMatrix,
+    PopMatrix,
+    Translate(Vec3),
+    Rotate {
+        angle_deg: f32,
+        axis: Vec3,
+    },
+    Scale(Vec3),
+    Frustum(ViewVolume),
+    Ortho(ViewVolume),
+    Viewport(Viewport),
+    DepthRange {
+        near: f32,
+        far: f32,
+    },
+
+    // Enables and current vertex values.
+    Enable(Capability),
+    Disable(Capability),
+    Color(Vec4),
+    Normal(Vec3),
+    /// glMultiTexCoord4f(TEXTURE0 + unit, s, t, r, q).
+    TexCoord {
+        unit: u8,
+        coord: Vec4,
+    },
+
+    // Lighting.
+    /// light < MAX_LIGHTS, else INVALID_ENUM.
+    Light {
+        light: u8,
+        param: LightParam,
+    },
+    LightModel(LightModelParam),
+    Material {
+        face: Face,
+        param: MaterialParam,
+    },
+    ColorMaterial {
+        face: Face,
+        mode: ColorMaterialMode,
+    },
+    ShadeModel(ShadeModel),
+
+    // Textures.
+    /// unit < MAX_TEXTURE_UNITS, else INVALID_ENUM.
+    ActiveTexture(u8),
+    BindTexture {
+        target: TextureTarget,
+        name: u32,
+    },
+    TexImage(TexImage),
+    TexSubImage2D(TexSubImage),
+    CopyTexImage2D(CopyTexImage),
+    TexParameter {
+        target: TextureTarget,
+        param: TexParam,
+    },
+    TexGen {
+        coord: TexCoord,
+        param: TexGenParam,
+    },
+    TexEnv(TexEnvParam),
+
+    // NV_register_combiners.
+    CombinerParameter(CombinerParam),
+    CombinerInput {
+        stage: u8,
+        portion: Portion,
+        variable: Variable,
+        input: CombinerInput,
+    },
+    CombinerOutput {
+        stage: u8,
+        portion: Portion,
+        output: CombinerOutput,
+    },
+    FinalCombinerInput {
+        variable: FinalVariable,
+        input: CombinerInput,
+    },
+
+    // Per-fragment operations and rasterisation.
+    AlphaFunc {
+        func: CompareFunc,
+        reference: f32,
+    },
+    DepthFunc(CompareFunc),
+    DepthMask(bool),
+    StencilFunc {
+        func: CompareFunc,
+        reference: i32,
+        mask: u32,
+    },
+    StencilOp {
+        fail: StencilOp,
+        depth_fail: StencilOp,
+        depth_pass: StencilOp,
+    },
+    StencilMask(u32),
+    BlendFunc {
+        src: BlendFactor,
+        dst: BlendFactor,
+    },
+    ColorMask(ColorMask),
+    PolygonOffset {
+        factor: f32,
+        units: f32,
+    },
+    PolygonMode {
+        face: Face,
+        mode: PolygonMode,
+    },
+    CullFace(Face),
+    FrontFace(FrontFace),
+    /// > 0, else INVALID_VALUE.
+    LineWidth(f32),
+    /// > 0, else INVALID_VALUE.
+    PointSize(f32),
+
+    // Framebuffer.
+    Clear(ClearMask),
+    ClearColor(Vec4),
+    ClearDepth(f32),
+    ClearStencil(i32),
+    ReadPixels(ReadPixels),
+
+    /// glBegin … glEnd, or glDrawArrays/glDrawElements.
+    Draw(Arc<Geometry>),
+}

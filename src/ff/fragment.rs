@@ -1,0 +1,354 @@
+//! Per-fragment operations and rasterisation state: alpha, stencil and depth tests,
+//! blending, masks, polygon offset, culling (GL 1.5 §3.5, §4.1).
+//!
+//! One [`CompareFunc`] serves the alpha, depth and stencil tests and the depth-texture compare.
+//! Parameters are stored apart from their enables, as in GL (glAlphaFunc while the alpha test
+//! is disabled still sets the function); [`Toggle::get`] gives the `Option` a pipeline keys on.
+
+use glam::Vec4;
+
+/// A state value with its GL enable. Disabling keeps the value (GL keeps it too).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Toggle<T> {
+    pub enabled: bool,
+    pub value: T,
+}
+
+impl<T: Copy> Toggle<T> {
+    /// Disabled, holding `value` (every capability starts disabled except DITHER and
+    /// MULTISAMPLE, neither modelled here).
+    pub const fn off(value: T) -> Self {
+        Self {
+            enabled: false,
+            value,
+        }
+    }
+
+    /// `Some(value)` when enabled: what a shader key or a sync step needs.
+    pub fn get(&self) -> Option<T> {
+        self.enabled.then_some(self.value)
+    }
+}
+
+/// NEVER … ALWAYS. `passes(incoming, reference)`:
+/// alpha test `α_frag op ref`, depth test `z_frag op z_buf`, stencil `(ref & mask) op
+/// (stencil & mask)`, texture compare `r op D_t` (ARB_shadow).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CompareFunc {
+    Never,
+    Less,
+    Equal,
+    Lequal,
+    Greater,
+    Notequal,
+    Gequal,
+    Always,
+}
+
+impl CompareFunc {
+    /// `a op b`.
+    pub fn passes<T: PartialOrd>(self, a: T, b: T) -> bool {
+        match self {
+            CompareFunc::Never => false,
+            CompareFunc::Less => a < b,
+            CompareFunc::Equal => a == b,
+            CompareFunc::Lequal => a <= b,
+            CompareFunc::Greater => a > b,
+            CompareFunc::Notequal => a != b,
+            CompareFunc::Gequal => a >= b,
+            CompareFunc::Always => true,
+        }
+    }
+}
+
+/// glAlphaFunc. GL default: ALWAYS, ref 0. The reference is clamped to [0, 1] when set.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AlphaTest {
+    pub func: CompareFunc,
+    pub reference: f32,
+}
+
+impl AlphaTest {
+    pub const DEFAULT: Self = Self {
+        func: CompareFunc::Always,
+        reference: 0.0,
+    };
+}
+
+/// glDepthFunc + glDepthMask. GL default: LESS, mask TRUE. With the depth test disabled the
+/// depth buffer is neither tested nor written (§4.1.5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct DepthTest {
+    pub func: CompareFunc,
+    pub write: bool,
+}
+
+impl DepthTest {
+    pub const LESS_WRITE: Self = Self {
+        func: CompareFunc::Less,
+        write: true,
+    };
+}
+
+/// glStencilOp actions. INCR/DECR saturate at 0 and 2^s − 1; the WRAP forms (GL 1.4) wrap.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum StencilOp {
+    Keep,
+    Zero,
+    Replace,
+    Incr,
+    Decr,
+    Invert,
+    IncrWrap,
+    DecrWrap,
+}
+
+impl StencilOp {
+    /// The new stencil value for an s-bit buffer: `max = 2^s − 1`.
+    pub fn apply(self, value: u32, reference: i32, max: u32) -> u32 {
+        match self {
+            StencilOp::Keep => value,
+            StencilOp::Zero => 0,
+            // The reference is clamped to [0, 2^s − 1] (§4.1.4).
+            StencilOp::Replace => (reference.max(0) as u32).min(max),
+            StencilOp::Incr => value.saturating_add(1).min(max),
+            StencilOp::Decr => value.saturating_sub(1),
+            StencilOp::Invert => !value & max,
+            StencilOp::IncrWrap => value.wrapping_add(1) & max,
+            StencilOp::DecrWrap => value.wrapping_sub(1) & max,
+        }
+    }
+}
+
+/// glStencilFunc + glStencilOp + glStencilMask. GL default: ALWAYS, ref 0, masks all ones,
+/// KEEP/KEEP/KEEP.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct StencilTest {
+    pub func: CompareFunc,
+    pub reference: i32,
+    pub value_mask: u32,
+    pub write_mask: u32,
+    /// Stencil test fails.
+    pub fail: StencilOp,
+    /// Stencil passes, depth fails.
+    pub depth_fail: StencilOp,
+    /// Both pass (or no depth test).
+    pub depth_pass: StencilOp,
+}
+
+impl StencilTest {
+    pub const DEFAULT: Self = Self {
+        func: CompareFunc::Always,
+        reference: 0,
+        value_mask: u32::MAX,
+        write_mask: u32::MAX,
+        fail: StencilOp::Keep,
+        depth_fail: StencilOp::Keep,
+        depth_pass: StencilOp::Keep,
+    };
+}
+
+/// glBlendFunc factors (GL 1.5 Table 4.2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BlendFactor {
+    Zero,
+    One,
+    SrcColor,
+    OneMinusSrcColor,
+    DstColor,
+    OneMinusDstColor,
+    SrcAlpha,
+    OneMinusSrcAlpha,
+    DstAlpha,
+    OneMinusDstAlpha,
+    /// Source factor only: (f, f, f, 1) with f = min(As, 1 − Ad).
+    SrcAlphaSaturate,
+}
+
+/// glBlendFunc. GL default: ONE, ZERO.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Blend {
+    pub src: BlendFactor,
+    pub dst: BlendFactor,
+}
+
+impl Blend {
+    pub const ONE_ZERO: Self = Self {
+        src: BlendFactor::One,
+        dst: BlendFactor::Zero,
+    };
+}
+
+/// glColorMask. GL default: all TRUE.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct ColorMask {
+    pub r: bool,
+    pub g: bool,
+    pub b: bool,
+    pub a: bool,
+}
+
+impl ColorMask {
+    pub const ALL: Self = Self {
+        r: true,
+        g: true,
+        b: true,
+        a: true,
+    };
+}
+
+/// glPolygonOffset: o = m·factor + r·units, m = max(|∂z/∂x|, |∂z/∂y|) on llvmpipe (the spec
+/// allows up to the Euclidean norm), r the minimum resolvable difference. GL default: 0, 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PolygonOffset {
+    pub factor: f32,
+    pub units: f32,
+}
+
+/// Which rasterisation modes get the offset (POLYGON_OFFSET_FILL/LINE/POINT). GL default: none.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct OffsetEnables {
+    pub fill: bool,
+    pub line: bool,
+    pub point: bool,
+}
+
+/// glPolygonMode modes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PolygonMode {
+    Point,
+    Line,
+    Fill,
+}
+
+/// Front, back or both: glCullFace, glPolygonMode, glMaterial, glColorMaterial.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Face {
+    Front,
+    Back,
+    FrontAndBack,
+}
+
+/// glFrontFace. GL default: CCW.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FrontFace {
+    Cw,
+    Ccw,
+}
+
+/// glShadeModel. GL default: SMOOTH.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ShadeModel {
+    Flat,
+    Smooth,
+}
+
+/// glClear's mask (COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct ClearMask {
+    pub color: bool,
+    pub depth: bool,
+    pub stencil: bool,
+}
+
+impl ClearMask {
+    pub const ALL: Self = Self {
+        color: true,
+        depth: true,
+        stencil: true,
+    };
+}
+
+/// glClearColor / glClearDepth / glClearStencil. GL default: (0,0,0,0), 1, 0. Colour and depth
+/// are clamped to [0, 1] when set.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClearValues {
+    pub color: Vec4,
+    pub depth: f32,
+    pub stencil: i32,
+}
+
+impl ClearValues {
+    pub const DEFAULT: Self = Self {
+        color: Vec4::ZERO,
+        depth: 1.0,
+        stencil: 0,
+    };
+}
+
+/// glViewport. GL default: (0, 0, window width, window height); here (0, 0, 0, 0) until the
+/// pipeline sets the target size.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Viewport {
+    pub x: i32,
+    pub y: i32,
+    pub width: i32,
+    pub height: i32,
+}
+
+/// glDepthRange, clamped to [0, 1] when set: z_w = z_ndc·(f − n)/2 + (n + f)/2.
+/// GL default: 0, 1.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DepthRange {
+    pub near: f32,
+    pub far: f32,
+}
+
+impl DepthRange {
+    pub const DEFAULT: Self = Self {
+        near: 0.0,
+        far: 1.0,
+    };
+
+    /// Window z of an NDC z.
+    pub fn window_z(&self, z_ndc: f32) -> f32 {
+        z_ndc * (self.far - self.near) * 0.5 + (self.near + self.far) * 0.5
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn compare_funcs() {
+        use CompareFunc::*;
+        let table = [
+            (Never, 1, 2, false),
+            (Less, 1, 2, true),
+            (Less, 2, 2, false),
+            (Equal, 2, 2, true),
+            (Lequal, 2, 2, true),
+            (Greater, 3, 2, true),
+            (Notequal, 2, 2, false),
+            (Gequal, 2, 2, true),
+            (Always, 0, 9, true),
+        ];
+        for (f, a, b, want) in table {
+            assert_eq!(f.passes(a, b), want, "{f:?} {a} {b}");
+        }
+    }
+
+    #[test]
+    fn stencil_wrap_and_saturate_like_piglit_stencil_wrap() {
+        let max = 255;
+        let mut v = 0;
+        for _ in 0..max + 5 {
+            v = StencilOp::Incr.apply(v, 0, max);
+        }
+        assert_eq!(v, max);
+        let mut v = 0;
+        for _ in 0..max + 5 {
+            v = StencilOp::IncrWrap.apply(v, 0, max);
+        }
+        assert_eq!(v, 4);
+        assert_eq!(StencilOp::Decr.apply(0, 0, max), 0);
+        let mut v = 0;
+        for _ in 0..5 {
+            v = StencilOp::DecrWrap.apply(v, 0, max);
+        }
+        assert_eq!(v, 251);
+        assert_eq!(StencilOp::Replace.apply(0, 300, max), 255);
+        assert_eq!(StencilOp::Invert.apply(0x0f, 0, max), 0xf0);
+    }
+}

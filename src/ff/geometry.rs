@@ -1,0 +1,84 @@
+//! Geometry for `Command::Draw`: vertex arrays as glBegin/glEnd or glDrawArrays/Elements
+//! would deliver them. Other layers (meshes) convert into this; it depends on nothing else.
+
+use glam::{Vec3, Vec4};
+
+use super::error::{GlError, GlResult};
+use super::state::MAX_TEXTURE_UNITS;
+
+/// glBegin modes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Primitive {
+    Points,
+    Lines,
+    LineStrip,
+    #[default]
+    Triangles,
+    TriangleStrip,
+    TriangleFan,
+    /// Split along v0–v2 (as Mesa does).
+    Quads,
+    QuadStrip,
+    Polygon,
+}
+
+/// One draw's vertices. A missing attribute array means "the current value" (glColor,
+/// glNormal, glMultiTexCoord issued before the draw).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Geometry {
+    pub primitive: Primitive,
+    /// Object coordinates (x, y, z, w).
+    pub positions: Vec<Vec4>,
+    pub normals: Option<Vec<Vec3>>,
+    pub colors: Option<Vec<Vec4>>,
+    /// (s, t, r, q) per unit.
+    pub texcoords: [Option<Vec<Vec4>>; MAX_TEXTURE_UNITS],
+    /// Indices into the arrays; `None` draws them in order.
+    pub indices: Option<Vec<u32>>,
+}
+
+impl Geometry {
+    /// A non-indexed geometry with positions only.
+    pub fn new(primitive: Primitive, positions: Vec<Vec4>) -> Self {
+        Self {
+            primitive,
+            positions,
+            ..Self::default()
+        }
+    }
+
+    /// Vertices the primitive assembly sees (indices if present, else positions).
+    pub fn vertex_count(&self) -> usize {
+        self.indices.as_ref().map_or(self.positions.len(), Vec::len)
+    }
+
+    /// Attribute arrays must match the positions in length and indices must be in range
+    /// (INVALID_VALUE: GL cannot check client arrays, we can).
+    pub fn validate(&self) -> GlResult {
+        let n = self.positions.len();
+        let same = |len: Option<usize>| len.map_or(true, |l| l == n);
+        let ok = same(self.normals.as_ref().map(Vec::len))
+            && same(self.colors.as_ref().map(Vec::len))
+            && self
+                .texcoords
+                .iter()
+                .all(|t| same(t.as_ref().map(Vec::len)));
+        if !ok {
+            return Err(GlError::invalid_value(
+                "attribute arrays differ in length from positions",
+            ));
+        }
+        if let Some(idx) = &self.indices {
+            if idx.iter().any(|&i| i as usize >= n) {
+                return Err(GlError::invalid_value("index beyond the vertex arrays"));
+            }
+        }
+        Ok(())
+    }
+
+    /// The last value of an attribute array, if the array exists and is not empty: what
+    /// becomes current after the draw.
+    pub fn last<T: Copy>(array: &Option<Vec<T>>) -> Option<T> {
+        array.as_ref().and_then(|a| a.last().copied())
+    }
+}

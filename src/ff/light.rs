@@ -1,0 +1,332 @@
+//! Lighting state (GL 1.5 §2.14): eight lights, the light model, front and back materials,
+//! colour material.
+//!
+//! Light positions are stored in eye coordinates: multiplied by the modelview current when
+//! glLight(POSITION) is called; spot directions by its upper-left 3×3 (§2.14.1). Later
+//! modelview changes do not move a light.
+
+use glam::{Mat4, Vec3, Vec4};
+
+use super::error::{GlError, GlResult};
+use super::fragment::Face;
+
+/// GL_MAX_LIGHTS.
+pub const MAX_LIGHTS: usize = 8;
+
+/// One glLight parameter with its value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LightParam {
+    Ambient(Vec4),
+    Diffuse(Vec4),
+    Specular(Vec4),
+    /// Object coordinates; w = 0 is a directional light.
+    Position(Vec4),
+    /// Object coordinates.
+    SpotDirection(Vec3),
+    /// [0, 128], else INVALID_VALUE.
+    SpotExponent(f32),
+    /// [0, 90] or 180, else INVALID_VALUE.
+    SpotCutoff(f32),
+    /// ≥ 0, else INVALID_VALUE (all three attenuations).
+    ConstantAttenuation(f32),
+    LinearAttenuation(f32),
+    QuadraticAttenuation(f32),
+}
+
+/// One light source. Defaults per GL 1.5 Table 6.10.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Light {
+    /// GL default: (0, 0, 0, 1).
+    pub ambient: Vec4,
+    /// GL default: (1, 1, 1, 1) for light 0, (0, 0, 0, 1) for the others.
+    pub diffuse: Vec4,
+    /// GL default: (1, 1, 1, 1) for light 0, (0, 0, 0, 1) for the others.
+    pub specular: Vec4,
+    /// Eye coordinates. GL default: (0, 0, 1, 0), a directional light along −z.
+    pub position: Vec4,
+    /// Eye coordinates. GL default: (0, 0, −1).
+    pub spot_direction: Vec3,
+    /// GL default: 0.
+    pub spot_exponent: f32,
+    /// Degrees; 180 means no spot. GL default: 180.
+    pub spot_cutoff: f32,
+    /// Attenuation 1/(k0 + k1·d + k2·d²). GL default: k0 = 1, k1 = 0, k2 = 0.
+    pub constant_attenuation: f32,
+    pub linear_attenuation: f32,
+    pub quadratic_attenuation: f32,
+}
+
+impl Light {
+    /// The GL default for light `index`.
+    pub fn default_for(index: usize) -> Self {
+        let bright = if index == 0 { Vec4::ONE } else { Vec4::W };
+        Self {
+            ambient: Vec4::W,
+            diffuse: bright,
+            specular: bright,
+            position: Vec4::Z,
+            spot_direction: Vec3::NEG_Z,
+            spot_exponent: 0.0,
+            spot_cutoff: 180.0,
+            constant_attenuation: 1.0,
+            linear_attenuation: 0.0,
+            quadratic_attenuation: 0.0,
+        }
+    }
+
+    /// Sets one parameter; positions and directions go to eye space through `modelview`.
+    pub fn set(&mut self, param: LightParam, modelview: Mat4) -> GlResult {
+        match param {
+            LightParam::Ambient(c) => self.ambient = c,
+            LightParam::Diffuse(c) => self.diffuse = c,
+            LightParam::Specular(c) => self.specular = c,
+            // P_eye = M·P (§2.14.1).
+            LightParam::Position(p) => self.position = modelview * p,
+            // d_eye = M₃ₓ₃·d: the direction is transformed as a vector (w = 0).
+            LightParam::SpotDirection(d) => {
+                self.spot_direction = (modelview * d.extend(0.0)).truncate()
+            }
+            LightParam::SpotExponent(e) => {
+                if !(0.0..=128.0).contains(&e) {
+                    return Err(GlError::invalid_value("SPOT_EXPONENT must be in [0, 128]"));
+                }
+                self.spot_exponent = e;
+            }
+            LightParam::SpotCutoff(c) => {
+                if !((0.0..=90.0).contains(&c) || c == 180.0) {
+                    return Err(GlError::invalid_value(
+                        "SPOT_CUTOFF must be in [0, 90] or 180",
+                    ));
+                }
+                self.spot_cutoff = c;
+            }
+            LightParam::ConstantAttenuation(k) => self.constant_attenuation = non_negative(k)?,
+            LightParam::LinearAttenuation(k) => self.linear_attenuation = non_negative(k)?,
+            LightParam::QuadraticAttenuation(k) => self.quadratic_attenuation = non_negative(k)?,
+        }
+        Ok(())
+    }
+}
+
+fn non_negative(k: f32) -> GlResult<f32> {
+    if k >= 0.0 {
+        Ok(k)
+    } else {
+        Err(GlError::invalid_value("attenuation factors must be ≥ 0"))
+    }
+}
+
+/// LIGHT_MODEL_COLOR_CONTROL (GL 1.2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ColorControl {
+    SingleColor,
+    SeparateSpecularColor,
+}
+
+/// One glLightModel parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LightModelParam {
+    Ambient(Vec4),
+    LocalViewer(bool),
+    TwoSide(bool),
+    ColorControl(ColorControl),
+}
+
+/// glLightModel state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LightModel {
+    /// GL default: (0.2, 0.2, 0.2, 1).
+    pub ambient: Vec4,
+    /// GL default: FALSE (the viewer at (0, 0, ∞) for specular).
+    pub local_viewer: bool,
+    /// GL default: FALSE.
+    pub two_side: bool,
+    /// GL default: SINGLE_COLOR.
+    pub color_control: ColorControl,
+}
+
+impl LightModel {
+    pub const DEFAULT: Self = Self {
+        ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+        local_viewer: false,
+        two_side: false,
+        color_control: ColorControl::SingleColor,
+    };
+
+    pub fn set(&mut self, param: LightModelParam) {
+        match param {
+            LightModelParam::Ambient(c) => self.ambient = c,
+            LightModelParam::LocalViewer(b) => self.local_viewer = b,
+            LightModelParam::TwoSide(b) => self.two_side = b,
+            LightModelParam::ColorControl(c) => self.color_control = c,
+        }
+    }
+}
+
+/// One glMaterial parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MaterialParam {
+    Ambient(Vec4),
+    Diffuse(Vec4),
+    AmbientAndDiffuse(Vec4),
+    Specular(Vec4),
+    Emission(Vec4),
+    /// [0, 128], else INVALID_VALUE.
+    Shininess(f32),
+}
+
+/// One face's material. Defaults per GL 1.5 Table 6.9.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    /// GL default: (0.2, 0.2, 0.2, 1).
+    pub ambient: Vec4,
+    /// GL default: (0.8, 0.8, 0.8, 1).
+    pub diffuse: Vec4,
+    /// GL default: (0, 0, 0, 1).
+    pub specular: Vec4,
+    /// GL default: (0, 0, 0, 1).
+    pub emission: Vec4,
+    /// GL default: 0.
+    pub shininess: f32,
+}
+
+impl Material {
+    pub const DEFAULT: Self = Self {
+        ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+        diffuse: Vec4::new(0.8, 0.8, 0.8, 1.0),
+        specular: Vec4::W,
+        emission: Vec4::W,
+        shininess: 0.0,
+    };
+
+    fn set(&mut self, param: MaterialParam) {
+        match param {
+            MaterialParam::Ambient(c) => self.ambient = c,
+            MaterialParam::Diffuse(c) => self.diffuse = c,
+            MaterialParam::AmbientAndDiffuse(c) => {
+                self.ambient = c;
+                self.diffuse = c;
+            }
+            MaterialParam::Specular(c) => self.specular = c,
+            MaterialParam::Emission(c) => self.emission = c,
+            MaterialParam::Shininess(s) => self.shininess = s,
+        }
+    }
+}
+
+/// Front and back materials.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Materials {
+    pub front: Material,
+    pub back: Material,
+}
+
+impl Materials {
+    pub const DEFAULT: Self = Self {
+        front: Material::DEFAULT,
+        back: Material::DEFAULT,
+    };
+
+    /// glMaterial: validates, then sets the face(s).
+    pub fn set(&mut self, face: Face, param: MaterialParam) -> GlResult {
+        if let MaterialParam::Shininess(s) = param {
+            if !(0.0..=128.0).contains(&s) {
+                return Err(GlError::invalid_value("SHININESS must be in [0, 128]"));
+            }
+        }
+        if matches!(face, Face::Front | Face::FrontAndBack) {
+            self.front.set(param);
+        }
+        if matches!(face, Face::Back | Face::FrontAndBack) {
+            self.back.set(param);
+        }
+        Ok(())
+    }
+}
+
+/// Which material colour tracks the current colour under COLOR_MATERIAL.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ColorMaterialMode {
+    Ambient,
+    Diffuse,
+    Specular,
+    Emission,
+    AmbientAndDiffuse,
+}
+
+impl ColorMaterialMode {
+    /// The glMaterial call that colour material stands for.
+    pub fn param(self, c: Vec4) -> MaterialParam {
+        match self {
+            ColorMaterialMode::Ambient => MaterialParam::Ambient(c),
+            ColorMaterialMode::Diffuse => MaterialParam::Diffuse(c),
+            ColorMaterialMode::Specular => MaterialParam::Specular(c),
+            ColorMaterialMode::Emission => MaterialParam::Emission(c),
+            ColorMaterialMode::AmbientAndDiffuse => MaterialParam::AmbientAndDiffuse(c),
+        }
+    }
+}
+
+/// glColorMaterial. GL default: FRONT_AND_BACK, AMBIENT_AND_DIFFUSE. While COLOR_MATERIAL is
+/// enabled the selected material colours follow the current colour (§2.14.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct ColorMaterial {
+    pub face: Face,
+    pub mode: ColorMaterialMode,
+}
+
+impl ColorMaterial {
+    pub const DEFAULT: Self = Self {
+        face: Face::FrontAndBack,
+        mode: ColorMaterialMode::AmbientAndDiffuse,
+    };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_follow_table_6_10() {
+        assert_eq!(Light::default_for(0).diffuse, Vec4::ONE);
+        assert_eq!(Light::default_for(3).diffuse, Vec4::new(0.0, 0.0, 0.0, 1.0));
+        assert_eq!(
+            Light::default_for(3).position,
+            Vec4::new(0.0, 0.0, 1.0, 0.0)
+        );
+    }
+
+    #[test]
+    fn position_and_direction_use_the_modelview_at_set_time() {
+        let mv = Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0));
+        let mut l = Light::default_for(0);
+        l.set(LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0)), mv)
+            .unwrap();
+        assert_eq!(l.position, Vec4::new(1.0, 2.0, 3.0, 1.0));
+        l.set(LightParam::SpotDirection(Vec3::NEG_Z), mv).unwrap();
+        assert_eq!(
+            l.spot_direction,
+            Vec3::NEG_Z,
+            "translation does not move a direction"
+        );
+    }
+
+    #[test]
+    fn out_of_range_values_keep_the_state() {
+        let mut l = Light::default_for(1);
+        let before = l;
+        for p in [
+            LightParam::SpotCutoff(91.0),
+            LightParam::SpotCutoff(-1.0),
+            LightParam::SpotExponent(129.0),
+            LightParam::LinearAttenuation(-0.5),
+        ] {
+            assert!(l.set(p, Mat4::IDENTITY).is_err(), "{p:?}");
+        }
+        assert_eq!(l, before);
+        assert!(l.set(LightParam::SpotCutoff(180.0), Mat4::IDENTITY).is_ok());
+        let mut m = Materials::DEFAULT;
+        assert!(m.set(Face::Front, MaterialParam::Shininess(200.0)).is_err());
+        assert_eq!(m, Materials::DEFAULT);
+    }
+}

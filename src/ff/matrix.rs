@@ -1,0 +1,294 @@
+//! Matrices and matrix stacks (GL 1.5 §2.11).
+//!
+//! Every matrix command multiplies the top of the current stack on the right: `M ← M·N`
+//! (§2.11.2), so the last command issued is the first applied to a vertex. Matrices are
+//! column-major, as `glLoadMatrixf` reads them and as glam stores them.
+//!
+//! Stack depths are the GL minimums (modelview 32, projection 2, texture 2, Table 6.43):
+//! a script that runs here runs on every conforming implementation. Mesa allows deeper
+//! projection and texture stacks, so a script that overflows here may still run natively.
+
+use glam::{Mat4, Vec3, Vec4};
+
+use super::error::{GlError, GlResult};
+
+/// GL_MAX_MODELVIEW_STACK_DEPTH (GL minimum).
+pub const MODELVIEW_STACK_DEPTH: usize = 32;
+/// GL_MAX_PROJECTION_STACK_DEPTH (GL minimum).
+pub const PROJECTION_STACK_DEPTH: usize = 2;
+/// GL_MAX_TEXTURE_STACK_DEPTH (GL minimum), per texture unit.
+pub const TEXTURE_STACK_DEPTH: usize = 2;
+
+/// The stack that matrix commands act on (glMatrixMode). `Texture` means the texture matrix
+/// of the texture unit active when each matrix command runs (GL 1.5 §2.11.2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MatrixMode {
+    Modelview,
+    Projection,
+    Texture,
+}
+
+/// The six planes of glFrustum / glOrtho.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ViewVolume {
+    pub left: f32,
+    pub right: f32,
+    pub bottom: f32,
+    pub top: f32,
+    pub near: f32,
+    pub far: f32,
+}
+
+/// A matrix stack: never empty, the last element is the current matrix.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MatrixStack {
+    stack: Vec<Mat4>,
+    max_depth: usize,
+}
+
+impl MatrixStack {
+    /// A stack holding one identity matrix (GL default).
+    pub fn new(max_depth: usize) -> Self {
+        Self {
+            stack: vec![Mat4::IDENTITY],
+            max_depth: max_depth.max(1),
+        }
+    }
+
+    /// The current matrix.
+    pub fn top(&self) -> Mat4 {
+        self.stack.last().copied().unwrap_or(Mat4::IDENTITY)
+    }
+
+    /// Replaces the current matrix.
+    pub fn set_top(&mut self, m: Mat4) {
+        match self.stack.last_mut() {
+            Some(top) => *top = m,
+            None => self.stack.push(m),
+        }
+    }
+
+    /// Number of matrices on the stack (GL_*_STACK_DEPTH; 1 initially).
+    pub fn depth(&self) -> usize {
+        self.stack.len()
+    }
+
+    pub fn max_depth(&self) -> usize {
+        self.max_depth
+    }
+
+    /// glPushMatrix: duplicates the top; STACK_OVERFLOW when full.
+    pub fn push(&mut self) -> GlResult {
+        if self.stack.len() >= self.max_depth {
+            return Err(GlError::stack_overflow("PushMatrix on a full matrix stack"));
+        }
+        self.stack.push(self.top());
+        Ok(())
+    }
+
+    /// glPopMatrix: STACK_UNDERFLOW when only one matrix is left.
+    pub fn pop(&mut self) -> GlResult {
+        if self.stack.len() <= 1 {
+            return Err(GlError::stack_underflow(
+                "PopMatrix on a stack holding one matrix",
+            ));
+        }
+        self.stack.pop();
+        Ok(())
+    }
+}
+
+/// glFrustum (GL 1.5 §2.11.2):
+/// ```text
+/// | 2n/(r−l)   0         (r+l)/(r−l)    0          |
+/// | 0          2n/(t−b)  (t+b)/(t−b)    0          |
+/// | 0          0         −(f+n)/(f−n)   −2fn/(f−n) |
+/// | 0          0         −1             0          |
+/// ```
+/// INVALID_VALUE if n ≤ 0, f ≤ 0, l = r, b = t or n = f.
+pub fn frustum(v: ViewVolume) -> GlResult<Mat4> {
+    let ViewVolume {
+        left: l,
+        right: r,
+        bottom: b,
+        top: t,
+        near: n,
+        far: f,
+    } = v;
+    if n <= 0.0 || f <= 0.0 || l == r || b == t || n == f {
+        return Err(GlError::invalid_value(
+            "Frustum needs n > 0, f > 0, l ≠ r, b ≠ t, n ≠ f",
+        ));
+    }
+    Ok(Mat4::from_cols(
+        Vec4::new(2.0 * n / (r - l), 0.0, 0.0, 0.0),
+        Vec4::new(0.0, 2.0 * n / (t - b), 0.0, 0.0),
+        Vec4::new(
+            (r + l) / (r - l),
+            (t + b) / (t - b),
+            -(f + n) / (f - n),
+            -1.0,
+        ),
+        Vec4::new(0.0, 0.0, -2.0 * f * n / (f - n), 0.0),
+    ))
+}
+
+/// glOrtho (GL 1.5 §2.11.2):
+/// ```text
+/// | 2/(r−l)  0        0         −(r+l)/(r−l) |
+/// | 0        2/(t−b)  0         −(t+b)/(t−b) |
+/// | 0        0        −2/(f−n)  −(f+n)/(f−n) |
+/// | 0        0        0         1            |
+/// ```
+/// INVALID_VALUE if l = r, b = t or n = f.
+pub fn ortho(v: ViewVolume) -> GlResult<Mat4> {
+    let ViewVolume {
+        left: l,
+        right: r,
+        bottom: b,
+        top: t,
+        near: n,
+        far: f,
+    } = v;
+    if l == r || b == t || n == f {
+        return Err(GlError::invalid_value("Ortho needs l ≠ r, b ≠ t, n ≠ f"));
+    }
+    Ok(Mat4::from_cols(
+        Vec4::new(2.0 / (r - l), 0.0, 0.0, 0.0),
+        Vec4::new(0.0, 2.0 / (t - b), 0.0, 0.0),
+        Vec4::new(0.0, 0.0, -2.0 / (f - n), 0.0),
+        Vec4::new(
+            -(r + l) / (r - l),
+            -(t + b) / (t - b),
+            -(f + n) / (f - n),
+            1.0,
+        ),
+    ))
+}
+
+/// glRotate (GL 1.5 §2.11.2): with u = axis/|axis| and θ in degrees,
+/// R = u·uᵀ + cos θ·(I − u·uᵀ) + sin θ·S(u), counter-clockwise looking down −u.
+/// A zero axis leaves the matrix unchanged (identity), as Mesa does.
+pub fn rotate(angle_deg: f32, axis: Vec3) -> Mat4 {
+    let len = axis.length();
+    if len == 0.0 || !len.is_finite() {
+        return Mat4::IDENTITY;
+    }
+    Mat4::from_axis_angle(axis / len, angle_deg.to_radians())
+}
+
+/// glTranslate: the identity with (x, y, z) in the last column.
+pub fn translate(v: Vec3) -> Mat4 {
+    Mat4::from_translation(v)
+}
+
+/// glScale: diag(x, y, z, 1).
+pub fn scale(v: Vec3) -> Mat4 {
+    Mat4::from_scale(v)
+}
+
+/// M⁻¹, or the identity when M is singular or not finite (Mesa's `_math_matrix_analyse`
+/// falls back to the identity when inversion fails; GL leaves the result undefined).
+pub fn inverse_or_identity(m: Mat4) -> Mat4 {
+    let det = m.determinant();
+    if det == 0.0 || !det.is_finite() {
+        return Mat4::IDENTITY;
+    }
+    let inv = m.inverse();
+    if inv.is_finite() {
+        inv
+    } else {
+        Mat4::IDENTITY
+    }
+}
+
+/// A plane (a, b, c, d) given in object coordinates, in eye coordinates:
+/// (a′ b′ c′ d′) = (a b c d)·M⁻¹ (GL 1.5 §2.11.4, eqn 2.4), M the modelview when the plane
+/// is specified. As a column vector: p′ = (M⁻¹)ᵀ·p.
+pub fn plane_to_eye(plane: Vec4, modelview: Mat4) -> Vec4 {
+    inverse_or_identity(modelview).transpose() * plane
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frustum_maps_near_and_far_to_ndc_minus_one_and_one() {
+        let m = frustum(ViewVolume {
+            left: -1.0,
+            right: 1.0,
+            bottom: -1.0,
+            top: 1.0,
+            near: 1.0,
+            far: 10.0,
+        })
+        .unwrap();
+        let near = m * Vec4::new(0.0, 0.0, -1.0, 1.0);
+        let far = m * Vec4::new(0.0, 0.0, -10.0, 1.0);
+        assert!((near.z / near.w + 1.0).abs() < 1e-6);
+        assert!((far.z / far.w - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn degenerate_volumes_are_invalid_value() {
+        let v = ViewVolume {
+            left: 0.0,
+            right: 0.0,
+            bottom: -1.0,
+            top: 1.0,
+            near: 1.0,
+            far: 2.0,
+        };
+        assert!(frustum(v).is_err());
+        assert!(ortho(v).is_err());
+        let v = ViewVolume {
+            left: -1.0,
+            right: 1.0,
+            bottom: -1.0,
+            top: 1.0,
+            near: 0.0,
+            far: 2.0,
+        };
+        assert!(frustum(v).is_err());
+        assert!(ortho(v).is_ok());
+    }
+
+    #[test]
+    fn ortho_matches_glam() {
+        let v = ViewVolume {
+            left: -2.0,
+            right: 3.0,
+            bottom: -1.0,
+            top: 4.0,
+            near: 0.5,
+            far: 9.0,
+        };
+        let ours = ortho(v).unwrap();
+        let glam = Mat4::orthographic_rh_gl(-2.0, 3.0, -1.0, 4.0, 0.5, 9.0);
+        assert!(ours.abs_diff_eq(glam, 1e-6));
+    }
+
+    #[test]
+    fn rotate_is_counter_clockwise_about_the_axis() {
+        let r = rotate(90.0, Vec3::new(0.0, 0.0, 2.0));
+        let x = r * Vec4::X;
+        assert!(x.abs_diff_eq(Vec4::Y, 1e-6));
+        assert_eq!(rotate(30.0, Vec3::ZERO), Mat4::IDENTITY);
+    }
+
+    #[test]
+    fn stack_overflow_and_underflow() {
+        let mut s = MatrixStack::new(2);
+        assert!(s.pop().is_err());
+        s.push().unwrap();
+        assert!(s.push().is_err());
+        assert_eq!(s.depth(), 2);
+    }
+
+    #[test]
+    fn singular_modelview_leaves_the_plane_unchanged() {
+        let p = Vec4::new(1.0, 2.0, 3.0, 4.0);
+        assert_eq!(plane_to_eye(p, Mat4::ZERO), p);
+    }
+}

@@ -1,0 +1,606 @@
+//! One converter per area from a parsed call to its Command. Each returns `Ok(None)` for
+//! calls of other areas.
+
+use super::names::Family;
+use super::parse::Call;
+use super::ScriptError;
+use crate::ff::*;
+
+type Res<T> = Result<T, ScriptError>;
+
+fn volume(c: &Call) -> Res<ViewVolume> {
+    c.count(6)?;
+    Ok(ViewVolume {
+        left: c.f32(0)?,
+        right: c.f32(1)?,
+        bottom: c.f32(2)?,
+        top: c.f32(3)?,
+        near: c.f32(4)?,
+        far: c.f32(5)?,
+    })
+}
+
+fn clear_mask(c: &Call) -> Res<ClearMask> {
+    const BITS: [&str; 3] = [
+        "GL_COLOR_BUFFER_BIT",
+        "GL_DEPTH_BUFFER_BIT",
+        "GL_STENCIL_BUFFER_BIT",
+    ];
+    let names = c
+        .or_names(0)
+        .ok_or_else(|| c.bad(0, "buffer bits joined by '|', or 0"))?;
+    let mut m = ClearMask::default();
+    for n in names {
+        match n {
+            "GL_COLOR_BUFFER_BIT" => m.color = true,
+            "GL_DEPTH_BUFFER_BIT" => m.depth = true,
+            "GL_STENCIL_BUFFER_BIT" => m.stencil = true,
+            other => {
+                return Err(ScriptError::UnknownEnum {
+                    line: c.line,
+                    call: c.name,
+                    arg: 1,
+                    name: other.to_string(),
+                    expected: BITS.to_vec(),
+                })
+            }
+        }
+    }
+    Ok(m)
+}
+
+fn capability(c: &Call) -> Res<Capability> {
+    if let Ok(i) = c.family(0, Family::Light) {
+        return Ok(Capability::Light(i));
+    }
+    c.enm(0).map_err(|e| match e {
+        ScriptError::UnknownEnum {
+            line,
+            call,
+            arg,
+            name,
+            mut expected,
+        } => {
+            expected.push("GL_LIGHT0..GL_LIGHT7");
+            ScriptError::UnknownEnum {
+                line,
+                call,
+                arg,
+                name,
+                expected,
+            }
+        }
+        other => other,
+    })
+}
+
+/// Matrices, viewport, enables, per-fragment operations, clears and readback.
+pub(super) fn transform_and_fragment(c: &Call) -> Res<Option<Command>> {
+    let n = |k: usize| c.count(k);
+    Ok(Some(match c.name {
+        "glMatrixMode" => n(1).and(c.enm(0)).map(Command::MatrixMode)?,
+        "glLoadIdentity" => n(0).map(|_| Command::LoadIdentity)?,
+        "glLoadMatrixf" => n(1).and(c.mat4(0)).map(Command::LoadMatrix)?,
+        "glMultMatrixf" => n(1).and(c.mat4(0)).map(Command::MultMatrix)?,
+        "glPushMatrix" => n(0).map(|_| Command::PushMatrix)?,
+        "glPopMatrix" => n(0).map(|_| Command::PopMatrix)?,
+        "glTranslatef" => n(3).and(c.vec3_args(0)).map(Command::Translate)?,
+        "glScalef" => n(3).and(c.vec3_args(0)).map(Command::Scale)?,
+        "glRotatef" => {
+            n(4)?;
+            Command::Rotate {
+                angle_deg: c.f32(0)?,
+                axis: c.vec3_args(1)?,
+            }
+        }
+        "glFrustum" => Command::Frustum(volume(c)?),
+        "glOrtho" => Command::Ortho(volume(c)?),
+        "glViewport" => {
+            n(4)?;
+            Command::Viewport(Viewport {
+                x: c.i32(0)?,
+                y: c.i32(1)?,
+                width: c.i32(2)?,
+                height: c.i32(3)?,
+            })
+        }
+        "glDepthRange" => n(2).map(|_| ()).and_then(|_| {
+            Ok(Command::DepthRange {
+                near: c.f32(0)?,
+                far: c.f32(1)?,
+            })
+        })?,
+        "glEnable" => n(1).and(capability(c)).map(Command::Enable)?,
+        "glDisable" => n(1).and(capability(c)).map(Command::Disable)?,
+        "glAlphaFunc" => {
+            n(2)?;
+            Command::AlphaFunc {
+                func: c.enm(0)?,
+                reference: c.f32(1)?,
+            }
+        }
+        "glDepthFunc" => n(1).and(c.enm(0)).map(Command::DepthFunc)?,
+        "glDepthMask" => n(1).and(c.boolean(0)).map(Command::DepthMask)?,
+        "glStencilFunc" => {
+            n(3)?;
+            Command::StencilFunc {
+                func: c.enm(0)?,
+                reference: c.i32(1)?,
+                mask: c.u32(2)?,
+            }
+        }
+        "glStencilOp" => {
+            n(3)?;
+            Command::StencilOp {
+                fail: c.enm(0)?,
+                depth_fail: c.enm(1)?,
+                depth_pass: c.enm(2)?,
+            }
+        }
+        "glStencilMask" => n(1).and(c.u32(0)).map(Command::StencilMask)?,
+        "glBlendFunc" => {
+            n(2)?;
+            Command::BlendFunc {
+                src: c.enm(0)?,
+                dst: c.enm(1)?,
+            }
+        }
+        "glColorMask" => {
+            n(4)?;
+            Command::ColorMask(ColorMask {
+                r: c.boolean(0)?,
+                g: c.boolean(1)?,
+                b: c.boolean(2)?,
+                a: c.boolean(3)?,
+            })
+        }
+        "glPolygonOffset" => {
+            n(2)?;
+            Command::PolygonOffset {
+                factor: c.f32(0)?,
+                units: c.f32(1)?,
+            }
+        }
+        "glPolygonMode" => {
+            n(2)?;
+            Command::PolygonMode {
+                face: c.enm(0)?,
+                mode: c.enm(1)?,
+            }
+        }
+        "glCullFace" => n(1).and(c.enm(0)).map(Command::CullFace)?,
+        "glFrontFace" => n(1).and(c.enm(0)).map(Command::FrontFace)?,
+        "glLineWidth" => n(1).and(c.f32(0)).map(Command::LineWidth)?,
+        "glPointSize" => n(1).and(c.f32(0)).map(Command::PointSize)?,
+        "glClear" => n(1).and(clear_mask(c)).map(Command::Clear)?,
+        "glClearColor" => n(4).and(c.vec4_args(0)).map(Command::ClearColor)?,
+        "glClearDepth" => n(1).and(c.f32(0)).map(Command::ClearDepth)?,
+        "glClearStencil" => n(1).and(c.i32(0)).map(Command::ClearStencil)?,
+        "glReadPixels" => {
+            n(7)?;
+            Command::ReadPixels(ReadPixels {
+                x: c.i32(0)?,
+                y: c.i32(1)?,
+                width: c.i32(2)?,
+                height: c.i32(3)?,
+                format: c.enm(4)?,
+                ty: c.enm(5)?,
+                slot: c.slot(6)?,
+            })
+        }
+        _ => return Ok(None),
+    }))
+}
+
+const LIGHT_VECTORS: &[&str] = &[
+    "GL_AMBIENT",
+    "GL_DIFFUSE",
+    "GL_SPECULAR",
+    "GL_POSITION",
+    "GL_SPOT_DIRECTION",
+];
+const LIGHT_SCALARS: &[&str] = &[
+    "GL_SPOT_EXPONENT",
+    "GL_SPOT_CUTOFF",
+    "GL_CONSTANT_ATTENUATION",
+    "GL_LINEAR_ATTENUATION",
+    "GL_QUADRATIC_ATTENUATION",
+];
+const MATERIAL_VECTORS: &[&str] = &[
+    "GL_AMBIENT",
+    "GL_DIFFUSE",
+    "GL_AMBIENT_AND_DIFFUSE",
+    "GL_SPECULAR",
+    "GL_EMISSION",
+];
+
+/// Lighting and materials.
+pub(super) fn lighting(c: &Call) -> Res<Option<Command>> {
+    Ok(Some(match c.name {
+        "glLightfv" => {
+            c.count(3)?;
+            let light = c.family(0, Family::Light)?;
+            let param = match c.pname(1, &[LIGHT_VECTORS, LIGHT_SCALARS].concat())? {
+                "GL_AMBIENT" => LightParam::Ambient(c.vec4_array(2)?),
+                "GL_DIFFUSE" => LightParam::Diffuse(c.vec4_array(2)?),
+                "GL_SPECULAR" => LightParam::Specular(c.vec4_array(2)?),
+                "GL_POSITION" => LightParam::Position(c.vec4_array(2)?),
+                "GL_SPOT_DIRECTION" => LightParam::SpotDirection(c.vec3_array(2)?),
+                p => light_scalar(p, c.floats::<1>(2)?[0]),
+            };
+            Command::Light { light, param }
+        }
+        "glLightf" | "glLighti" => {
+            c.count(3)?;
+            let light = c.family(0, Family::Light)?;
+            Command::Light {
+                light,
+                param: light_scalar(c.pname(1, LIGHT_SCALARS)?, c.f32(2)?),
+            }
+        }
+        "glLightModelfv" => {
+            c.count(2)?;
+            c.pname(0, &["GL_LIGHT_MODEL_AMBIENT"])?;
+            Command::LightModel(LightModelParam::Ambient(c.vec4_array(1)?))
+        }
+        "glLightModeli" | "glLightModelf" => {
+            c.count(2)?;
+            let names = [
+                "GL_LIGHT_MODEL_LOCAL_VIEWER",
+                "GL_LIGHT_MODEL_TWO_SIDE",
+                "GL_LIGHT_MODEL_COLOR_CONTROL",
+            ];
+            Command::LightModel(match c.pname(0, &names)? {
+                "GL_LIGHT_MODEL_LOCAL_VIEWER" => LightModelParam::LocalViewer(c.boolean(1)?),
+                "GL_LIGHT_MODEL_TWO_SIDE" => LightModelParam::TwoSide(c.boolean(1)?),
+                _ => LightModelParam::ColorControl(c.enm(1)?),
+            })
+        }
+        "glMaterialfv" => {
+            c.count(3)?;
+            let face = c.enm(0)?;
+            let all = [MATERIAL_VECTORS, &["GL_SHININESS"]].concat();
+            let param = match c.pname(1, &all)? {
+                "GL_SHININESS" => MaterialParam::Shininess(c.floats::<1>(2)?[0]),
+                p => material_vector(p, c.vec4_array(2)?),
+            };
+            Command::Material { face, param }
+        }
+        "glMaterialf" => {
+            c.count(3)?;
+            let face = c.enm(0)?;
+            c.pname(1, &["GL_SHININESS"])?;
+            Command::Material {
+                face,
+                param: MaterialParam::Shininess(c.f32(2)?),
+            }
+        }
+        "glColorMaterial" => {
+            c.count(2)?;
+            Command::ColorMaterial {
+                face: c.enm(0)?,
+                mode: c.enm(1)?,
+            }
+        }
+        "glShadeModel" => c.count(1).and(c.enm(0)).map(Command::ShadeModel)?,
+        _ => return Ok(None),
+    }))
+}
+
+fn light_scalar(pname: &str, v: f32) -> LightParam {
+    match pname {
+        "GL_SPOT_EXPONENT" => LightParam::SpotExponent(v),
+        "GL_SPOT_CUTOFF" => LightParam::SpotCutoff(v),
+        "GL_CONSTANT_ATTENUATION" => LightParam::ConstantAttenuation(v),
+        "GL_LINEAR_ATTENUATION" => LightParam::LinearAttenuation(v),
+        _ => LightParam::QuadraticAttenuation(v),
+    }
+}
+
+fn material_vector(pname: &str, v: glam::Vec4) -> MaterialParam {
+    match pname {
+        "GL_AMBIENT" => MaterialParam::Ambient(v),
+        "GL_DIFFUSE" => MaterialParam::Diffuse(v),
+        "GL_AMBIENT_AND_DIFFUSE" => MaterialParam::AmbientAndDiffuse(v),
+        "GL_SPECULAR" => MaterialParam::Specular(v),
+        _ => MaterialParam::Emission(v),
+    }
+}
+
+const TEX_PARAMS: &[&str] = &[
+    "GL_TEXTURE_MIN_FILTER",
+    "GL_TEXTURE_MAG_FILTER",
+    "GL_TEXTURE_WRAP_S",
+    "GL_TEXTURE_WRAP_T",
+    "GL_TEXTURE_COMPARE_MODE",
+    "GL_TEXTURE_COMPARE_FUNC",
+    "GL_DEPTH_TEXTURE_MODE",
+    "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB",
+    "GL_GENERATE_MIPMAP",
+];
+
+const ENV_PARAMS: &[&str] = &[
+    "GL_TEXTURE_ENV_MODE",
+    "GL_COMBINE_RGB",
+    "GL_COMBINE_ALPHA",
+    "GL_SOURCE0_RGB",
+    "GL_SOURCE1_RGB",
+    "GL_SOURCE2_RGB",
+    "GL_SOURCE0_ALPHA",
+    "GL_SOURCE1_ALPHA",
+    "GL_SOURCE2_ALPHA",
+    "GL_OPERAND0_RGB",
+    "GL_OPERAND1_RGB",
+    "GL_OPERAND2_RGB",
+    "GL_OPERAND0_ALPHA",
+    "GL_OPERAND1_ALPHA",
+    "GL_OPERAND2_ALPHA",
+    "GL_RGB_SCALE",
+    "GL_ALPHA_SCALE",
+    // GL 1.5 spellings.
+    "GL_SRC0_RGB",
+    "GL_SRC1_RGB",
+    "GL_SRC2_RGB",
+    "GL_SRC0_ALPHA",
+    "GL_SRC1_ALPHA",
+    "GL_SRC2_ALPHA",
+];
+
+/// Texture units, objects, images, parameters, texgen and texenv.
+pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
+    Ok(Some(match c.name {
+        "glActiveTexture" => c
+            .count(1)
+            .and(c.family(0, Family::Texture))
+            .map(Command::ActiveTexture)?,
+        "glBindTexture" => {
+            c.count(2)?;
+            Command::BindTexture {
+                target: c.enm(0)?,
+                name: c.u32(1)?,
+            }
+        }
+        "glTexImage1D" => {
+            c.count(8)?;
+            target_is(c, TextureTarget::Texture1D)?;
+            Command::TexImage(TexImage {
+                target: TextureTarget::Texture1D,
+                level: c.i32(1)?,
+                internal_format: c.enm(2)?,
+                width: c.i32(3)?,
+                height: 1,
+                border: c.i32(4)?,
+                format: c.enm(5)?,
+                ty: c.enm(6)?,
+                data: c.pixels(7)?,
+            })
+        }
+        "glTexImage2D" => {
+            c.count(9)?;
+            target_is(c, TextureTarget::Texture2D)?;
+            Command::TexImage(TexImage {
+                target: TextureTarget::Texture2D,
+                level: c.i32(1)?,
+                internal_format: c.enm(2)?,
+                width: c.i32(3)?,
+                height: c.i32(4)?,
+                border: c.i32(5)?,
+                format: c.enm(6)?,
+                ty: c.enm(7)?,
+                data: c.pixels(8)?,
+            })
+        }
+        "glTexSubImage2D" => {
+            c.count(9)?;
+            target_is(c, TextureTarget::Texture2D)?;
+            Command::TexSubImage2D(TexSubImage {
+                level: c.i32(1)?,
+                x: c.i32(2)?,
+                y: c.i32(3)?,
+                width: c.i32(4)?,
+                height: c.i32(5)?,
+                format: c.enm(6)?,
+                ty: c.enm(7)?,
+                data: c.pixels(8)?.ok_or_else(|| c.bad(8, "a pixel array"))?,
+            })
+        }
+        "glCopyTexImage2D" => {
+            c.count(8)?;
+            target_is(c, TextureTarget::Texture2D)?;
+            Command::CopyTexImage2D(CopyTexImage {
+                level: c.i32(1)?,
+                internal_format: c.enm(2)?,
+                x: c.i32(3)?,
+                y: c.i32(4)?,
+                width: c.i32(5)?,
+                height: c.i32(6)?,
+                border: c.i32(7)?,
+            })
+        }
+        "glTexParameteri" | "glTexParameterf" => {
+            c.count(3)?;
+            Command::TexParameter {
+                target: c.enm(0)?,
+                param: tex_param(c)?,
+            }
+        }
+        "glTexParameterfv" => {
+            c.count(3)?;
+            c.pname(1, &["GL_TEXTURE_BORDER_COLOR"])?;
+            Command::TexParameter {
+                target: c.enm(0)?,
+                param: TexParam::BorderColor(c.vec4_array(2)?),
+            }
+        }
+        "glTexGeni" => {
+            c.count(3)?;
+            c.pname(1, &["GL_TEXTURE_GEN_MODE"])?;
+            Command::TexGen {
+                coord: c.enm(0)?,
+                param: TexGenParam::Mode(c.enm(2)?),
+            }
+        }
+        "glTexGenfv" => {
+            c.count(3)?;
+            let coord = c.enm(0)?;
+            let plane = c.vec4_array(2)?;
+            let param = match c.pname(1, &["GL_OBJECT_PLANE", "GL_EYE_PLANE"])? {
+                "GL_OBJECT_PLANE" => TexGenParam::ObjectPlane(plane),
+                _ => TexGenParam::EyePlane(plane),
+            };
+            Command::TexGen { coord, param }
+        }
+        "glTexEnvi" | "glTexEnvf" => {
+            c.count(3)?;
+            env_target(c)?;
+            Command::TexEnv(tex_env(c)?)
+        }
+        "glTexEnvfv" => {
+            c.count(3)?;
+            env_target(c)?;
+            c.pname(1, &["GL_TEXTURE_ENV_COLOR"])?;
+            Command::TexEnv(TexEnvParam::Color(c.vec4_array(2)?))
+        }
+        _ => return Ok(None),
+    }))
+}
+
+fn target_is(c: &Call, want: TextureTarget) -> Res<()> {
+    let t: TextureTarget = c.enm(0)?;
+    if t == want {
+        Ok(())
+    } else {
+        Err(c.unknown(
+            0,
+            vec![if want == TextureTarget::Texture1D {
+                "GL_TEXTURE_1D"
+            } else {
+                "GL_TEXTURE_2D"
+            }],
+        ))
+    }
+}
+
+fn env_target(c: &Call) -> Res<()> {
+    c.pname(0, &["GL_TEXTURE_ENV"]).map(|_| ())
+}
+
+fn tex_param(c: &Call) -> Res<TexParam> {
+    Ok(match c.pname(1, TEX_PARAMS)? {
+        "GL_TEXTURE_MIN_FILTER" => TexParam::MinFilter(c.enm(2)?),
+        "GL_TEXTURE_MAG_FILTER" => TexParam::MagFilter(c.enm(2)?),
+        "GL_TEXTURE_WRAP_S" => TexParam::WrapS(c.enm(2)?),
+        "GL_TEXTURE_WRAP_T" => TexParam::WrapT(c.enm(2)?),
+        "GL_TEXTURE_COMPARE_MODE" => TexParam::CompareMode(c.enm(2)?),
+        "GL_TEXTURE_COMPARE_FUNC" => TexParam::CompareFunc(c.enm(2)?),
+        "GL_DEPTH_TEXTURE_MODE" => TexParam::DepthTextureMode(c.enm(2)?),
+        "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB" => TexParam::CompareFailValue(c.f32(2)?),
+        _ => TexParam::GenerateMipmap(c.boolean(2)?),
+    })
+}
+
+fn tex_env(c: &Call) -> Res<TexEnvParam> {
+    let pname = c.pname(1, ENV_PARAMS)?;
+    // GL_SOURCE1_RGB, GL_SRC1_ALPHA, GL_OPERAND2_RGB: the first digit is the argument.
+    let digit_arg = |p: &str| {
+        let d = p.bytes().find(|b| b.is_ascii_digit());
+        match d {
+            Some(b'0') => CombineArg::Arg0,
+            Some(b'1') => CombineArg::Arg1,
+            _ => CombineArg::Arg2,
+        }
+    };
+    let source = || -> Res<CombineSource> {
+        if let Ok(u) = c.family(2, Family::Texture) {
+            return Ok(CombineSource::TextureUnit(u));
+        }
+        c.enm(2)
+    };
+    Ok(match pname {
+        "GL_TEXTURE_ENV_MODE" => TexEnvParam::Mode(c.enm(2)?),
+        "GL_COMBINE_RGB" => TexEnvParam::CombineRgb(c.enm(2)?),
+        "GL_COMBINE_ALPHA" => TexEnvParam::CombineAlpha(c.enm(2)?),
+        "GL_RGB_SCALE" => TexEnvParam::RgbScale(c.f32(2)?),
+        "GL_ALPHA_SCALE" => TexEnvParam::AlphaScale(c.f32(2)?),
+        p if p.starts_with("GL_OPERAND") && p.ends_with("_RGB") => {
+            TexEnvParam::OperandRgb(digit_arg(p), c.enm(2)?)
+        }
+        p if p.starts_with("GL_OPERAND") => TexEnvParam::OperandAlpha(digit_arg(p), c.enm(2)?),
+        p if p.ends_with("_RGB") => TexEnvParam::SourceRgb(digit_arg(p), source()?),
+        p => TexEnvParam::SourceAlpha(digit_arg(p), source()?),
+    })
+}
+
+fn register(c: &Call, i: usize) -> Res<Register> {
+    if let Ok(u) = c.family(i, Family::Texture) {
+        return Ok(Register::Texture(u));
+    }
+    c.enm(i)
+}
+
+fn input(c: &Call, from: usize) -> Res<CombinerInput> {
+    Ok(CombinerInput {
+        register: register(c, from)?,
+        mapping: c.enm(from + 1)?,
+        usage: c.enm(from + 2)?,
+    })
+}
+
+/// NV_register_combiners.
+pub(super) fn combiners(c: &Call) -> Res<Option<Command>> {
+    Ok(Some(match c.name {
+        "glCombinerParameteriNV" => {
+            c.count(2)?;
+            Command::CombinerParameter(
+                match c.pname(0, &["GL_NUM_GENERAL_COMBINERS_NV", "GL_COLOR_SUM_CLAMP_NV"])? {
+                    "GL_NUM_GENERAL_COMBINERS_NV" => CombinerParam::NumGeneralCombiners(c.i32(1)?),
+                    _ => CombinerParam::ColorSumClamp(c.boolean(1)?),
+                },
+            )
+        }
+        "glCombinerParameterfvNV" => {
+            c.count(2)?;
+            let v = c.vec4_array(1)?;
+            Command::CombinerParameter(
+                match c.pname(0, &["GL_CONSTANT_COLOR0_NV", "GL_CONSTANT_COLOR1_NV"])? {
+                    "GL_CONSTANT_COLOR0_NV" => CombinerParam::ConstantColor0(v),
+                    _ => CombinerParam::ConstantColor1(v),
+                },
+            )
+        }
+        "glCombinerInputNV" => {
+            c.count(6)?;
+            Command::CombinerInput {
+                stage: c.family(0, Family::Combiner)?,
+                portion: c.enm(1)?,
+                variable: c.enm(2)?,
+                input: input(c, 3)?,
+            }
+        }
+        "glCombinerOutputNV" => {
+            c.count(10)?;
+            Command::CombinerOutput {
+                stage: c.family(0, Family::Combiner)?,
+                portion: c.enm(1)?,
+                output: CombinerOutput {
+                    ab: register(c, 2)?,
+                    cd: register(c, 3)?,
+                    sum: register(c, 4)?,
+                    scale: c.enm(5)?,
+                    bias: c.enm(6)?,
+                    ab_product: c.enm(7)?,
+                    cd_product: c.enm(8)?,
+                    sum_or_mux: c.enm(9)?,
+                },
+            }
+        }
+        "glFinalCombinerInputNV" => {
+            c.count(4)?;
+            Command::FinalCombinerInput {
+                variable: c.enm(0)?,
+                input: input(c, 1)?,
+            }
+        }
+        _ => return Ok(None),
+    }))
+}

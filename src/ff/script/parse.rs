@@ -1,0 +1,699 @@
+//! Script text → Commands: statements are read generically (name, arguments), then each
+//! call is converted by a small function per area; glBegin/glEnd pairs fold into one Draw.
+
+use std::sync::Arc;
+
+use glam::{Mat4, Vec3, Vec4};
+
+use super::lexer::{lex, Tok, Token};
+use super::names::{ranked, Family, GlName, CALLS};
+use super::ScriptError;
+use crate::ff::*;
+
+type Res<T> = Result<T, ScriptError>;
+
+/// One argument as written.
+#[derive(Debug, Clone, PartialEq)]
+enum Arg<'a> {
+    /// A number literal, `INFINITY` or `NAN`, optionally negated.
+    Num { neg: bool, text: &'a str },
+    /// An identifier, optionally `+ n`.
+    Name { name: &'a str, offset: u32 },
+    /// `A | B | …`
+    Or(Vec<&'a str>),
+    /// `(T[]){…}`
+    Array {
+        ty: &'a str,
+        values: Vec<(bool, &'a str)>,
+    },
+}
+
+struct Stmt<'a> {
+    line: usize,
+    name: &'a str,
+    args: Vec<Arg<'a>>,
+}
+
+struct Cursor<'t, 'a> {
+    toks: &'t [Token<'a>],
+    pos: usize,
+}
+
+impl<'a> Cursor<'_, 'a> {
+    fn peek(&self) -> Option<Tok<'a>> {
+        self.toks.get(self.pos).map(|t| t.tok)
+    }
+    fn line(&self) -> usize {
+        self.toks
+            .get(self.pos)
+            .or(self.toks.last())
+            .map_or(1, |t| t.line)
+    }
+    fn next(&mut self) -> Option<Tok<'a>> {
+        let t = self.peek();
+        self.pos += 1;
+        t
+    }
+    fn error(&self, expected: &'static str) -> ScriptError {
+        let found = self
+            .peek()
+            .map_or("end of input".to_string(), |t| describe(t));
+        ScriptError::Syntax {
+            line: self.line(),
+            expected,
+            found,
+        }
+    }
+    fn eat(&mut self, tok: Tok<'a>, expected: &'static str) -> Res<()> {
+        if self.peek() == Some(tok) {
+            self.pos += 1;
+            Ok(())
+        } else {
+            Err(self.error(expected))
+        }
+    }
+    fn ident(&mut self, expected: &'static str) -> Res<&'a str> {
+        match self.peek() {
+            Some(Tok::Ident(s)) => {
+                self.pos += 1;
+                Ok(s)
+            }
+            _ => Err(self.error(expected)),
+        }
+    }
+    fn number(&mut self, neg: bool) -> Res<(bool, &'a str)> {
+        match self.next() {
+            Some(Tok::Num(t)) => Ok((neg, t)),
+            Some(Tok::Ident(t @ ("INFINITY" | "NAN"))) => Ok((neg, t)),
+            Some(Tok::Minus) if !neg => self.number(true),
+            _ => {
+                self.pos -= 1;
+                Err(self.error("a number"))
+            }
+        }
+    }
+
+    fn statement(&mut self) -> Res<Stmt<'a>> {
+        let line = self.line();
+        let name = self.ident("a GL call")?;
+        self.eat(Tok::LParen, "'('")?;
+        let mut args = Vec::new();
+        if self.peek() != Some(Tok::RParen) {
+            loop {
+                args.push(self.arg()?);
+                if self.peek() == Some(Tok::Comma) {
+                    self.pos += 1;
+                } else {
+                    break;
+                }
+            }
+        }
+        self.eat(Tok::RParen, "',' or ')'")?;
+        self.eat(Tok::Semi, "';'")?;
+        Ok(Stmt { line, name, args })
+    }
+
+    fn arg(&mut self) -> Res<Arg<'a>> {
+        match self.peek() {
+            Some(Tok::LParen) => self.array(),
+            Some(Tok::Num(_) | Tok::Minus | Tok::Ident("INFINITY" | "NAN")) => {
+                let (neg, text) = self.number(false)?;
+                Ok(Arg::Num { neg, text })
+            }
+            Some(Tok::Ident(name)) => {
+                self.pos += 1;
+                match self.peek() {
+                    Some(Tok::Pipe) => {
+                        let mut names = vec![name];
+                        while self.peek() == Some(Tok::Pipe) {
+                            self.pos += 1;
+                            names.push(self.ident("a GL token after '|'")?);
+                        }
+                        Ok(Arg::Or(names))
+                    }
+                    Some(Tok::Plus) => {
+                        self.pos += 1;
+                        let (_, text) = self.number(true)?;
+                        let offset = int_literal(text)
+                            .and_then(|v| u32::try_from(v).ok())
+                            .ok_or_else(|| self.error("an index after '+'"))?;
+                        Ok(Arg::Name { name, offset })
+                    }
+                    _ => Ok(Arg::Name { name, offset: 0 }),
+                }
+            }
+            _ => Err(self.error("an argument")),
+        }
+    }
+
+    fn array(&mut self) -> Res<Arg<'a>> {
+        self.eat(Tok::LParen, "'('")?;
+        let ty = self.ident("an array type such as GLfloat")?;
+        self.eat(Tok::LBracket, "'['")?;
+        self.eat(Tok::RBracket, "']'")?;
+        self.eat(Tok::RParen, "')'")?;
+        self.eat(Tok::LBrace, "'{'")?;
+        let mut values = Vec::new();
+        while self.peek() != Some(Tok::RBrace) {
+            values.push(self.number(false)?);
+            if self.peek() == Some(Tok::Comma) {
+                self.pos += 1;
+            } else {
+                break;
+            }
+        }
+        self.eat(Tok::RBrace, "',' or '}'")?;
+        Ok(Arg::Array { ty, values })
+    }
+}
+
+fn describe(t: Tok<'_>) -> String {
+    match t {
+        Tok::Ident(s) | Tok::Num(s) => s.to_string(),
+        other => format!("{other:?}"),
+    }
+}
+
+/// C integer literal: decimal or hex, optional u/U/l/L suffixes.
+fn int_literal(text: &str) -> Option<i64> {
+    let t = text.trim_end_matches(['u', 'U', 'l', 'L']);
+    if let Some(hex) = t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
+        i64::from_str_radix(hex, 16).ok()
+    } else {
+        t.parse().ok()
+    }
+}
+
+/// C floating literal (or integer), optional f/F suffix; INFINITY and NAN from <math.h>.
+fn float_literal(text: &str) -> Option<f32> {
+    match text {
+        "INFINITY" => Some(f32::INFINITY),
+        "NAN" => Some(f32::NAN),
+        _ if text.starts_with("0x") || text.starts_with("0X") => {
+            int_literal(text).map(|v| v as f32)
+        }
+        _ => {
+            let t = text.strip_suffix(['f', 'F']).unwrap_or(text);
+            t.parse()
+                .ok()
+                .or_else(|| int_literal(text).map(|v| v as f32))
+        }
+    }
+}
+
+/// A statement with its call name resolved, and typed argument readers.
+pub(super) struct Call<'s, 'a> {
+    pub(super) line: usize,
+    pub(super) name: &'static str,
+    args: &'s [Arg<'a>],
+}
+
+impl Call<'_, '_> {
+    pub(super) fn count(&self, n: usize) -> Res<()> {
+        if self.args.len() == n {
+            Ok(())
+        } else {
+            Err(ScriptError::ArgCount {
+                line: self.line,
+                call: self.name,
+                expected: n,
+                found: self.args.len(),
+            })
+        }
+    }
+    pub(super) fn bad(&self, i: usize, expected: &'static str) -> ScriptError {
+        let found = self.args.get(i).map_or("nothing".to_string(), |a| match a {
+            Arg::Num { neg, text } => format!("{}{text}", if *neg { "-" } else { "" }),
+            Arg::Name { name, offset: 0 } => name.to_string(),
+            Arg::Name { name, offset } => format!("{name} + {offset}"),
+            Arg::Or(names) => names.join(" | "),
+            Arg::Array { ty, .. } => format!("a ({ty}[]) array"),
+        });
+        ScriptError::BadArgument {
+            line: self.line,
+            call: self.name,
+            arg: i + 1,
+            expected,
+            found,
+        }
+    }
+    fn num(&self, i: usize) -> Option<(bool, &str)> {
+        match self.args.get(i) {
+            Some(Arg::Num { neg, text }) => Some((*neg, text)),
+            _ => None,
+        }
+    }
+    pub(super) fn f32(&self, i: usize) -> Res<f32> {
+        let (neg, text) = self.num(i).ok_or_else(|| self.bad(i, "a number"))?;
+        let v = float_literal(text).ok_or_else(|| self.bad(i, "a number"))?;
+        Ok(if neg { -v } else { v })
+    }
+    pub(super) fn int(&self, i: usize) -> Res<i64> {
+        let (neg, text) = self.num(i).ok_or_else(|| self.bad(i, "an integer"))?;
+        let v = int_literal(text).ok_or_else(|| self.bad(i, "an integer"))?;
+        Ok(if neg { -v } else { v })
+    }
+    pub(super) fn i32(&self, i: usize) -> Res<i32> {
+        i32::try_from(self.int(i)?).map_err(|_| self.bad(i, "a 32-bit integer"))
+    }
+    pub(super) fn u32(&self, i: usize) -> Res<u32> {
+        u32::try_from(self.int(i)?).map_err(|_| self.bad(i, "an unsigned 32-bit integer"))
+    }
+    fn name(&self, i: usize) -> Option<(&str, u32)> {
+        match self.args.get(i) {
+            Some(Arg::Name { name, offset }) => Some((name, *offset)),
+            _ => None,
+        }
+    }
+    pub(super) fn unknown(&self, i: usize, expected: Vec<&'static str>) -> ScriptError {
+        let found = match self.args.get(i) {
+            Some(Arg::Name { name, offset: 0 }) => name.to_string(),
+            _ => return self.bad(i, "a GL token"),
+        };
+        let expected = ranked(&found, &expected);
+        ScriptError::UnknownEnum {
+            line: self.line,
+            call: self.name,
+            arg: i + 1,
+            name: found,
+            expected,
+        }
+    }
+    pub(super) fn enm<T: GlName>(&self, i: usize) -> Res<T> {
+        self.name(i)
+            .filter(|(_, off)| *off == 0)
+            .and_then(|(n, _)| T::from_gl_name(n))
+            .ok_or_else(|| self.unknown(i, T::names()))
+    }
+    /// A GL token naming one of `pnames` (a parameter name).
+    pub(super) fn pname(&self, i: usize, pnames: &[&'static str]) -> Res<&'static str> {
+        self.name(i)
+            .and_then(|(n, off)| pnames.iter().find(|p| **p == n && off == 0).copied())
+            .ok_or_else(|| self.unknown(i, pnames.to_vec()))
+    }
+    pub(super) fn family(&self, i: usize, f: Family) -> Res<u8> {
+        self.name(i)
+            .and_then(|(n, off)| f.parse(n, off))
+            .ok_or_else(|| self.unknown(i, vec![f.example()]))
+    }
+    pub(super) fn boolean(&self, i: usize) -> Res<bool> {
+        match self.num(i) {
+            Some((false, "0")) => Ok(false),
+            Some((false, "1")) => Ok(true),
+            _ => self.enm::<bool>(i),
+        }
+    }
+    fn array(&self, i: usize) -> Option<(&str, &[(bool, &str)])> {
+        match self.args.get(i) {
+            Some(Arg::Array { ty, values }) => Some((ty, values)),
+            _ => None,
+        }
+    }
+    pub(super) fn floats<const N: usize>(&self, i: usize) -> Res<[f32; N]> {
+        let (_, values) = self
+            .array(i)
+            .ok_or_else(|| self.bad(i, "a (GLfloat[]){…} array"))?;
+        if values.len() != N {
+            return Err(ScriptError::ArrayLength {
+                line: self.line,
+                call: self.name,
+                expected: N,
+                found: values.len(),
+            });
+        }
+        let mut out = [0.0; N];
+        for (o, (neg, text)) in out.iter_mut().zip(values) {
+            let v = float_literal(text).ok_or_else(|| self.bad(i, "numbers in the array"))?;
+            *o = if *neg { -v } else { v };
+        }
+        Ok(out)
+    }
+    pub(super) fn vec4_array(&self, i: usize) -> Res<Vec4> {
+        self.floats::<4>(i).map(Vec4::from_array)
+    }
+    pub(super) fn vec3_args(&self, from: usize) -> Res<Vec3> {
+        Ok(Vec3::new(
+            self.f32(from)?,
+            self.f32(from + 1)?,
+            self.f32(from + 2)?,
+        ))
+    }
+    pub(super) fn vec3_array(&self, i: usize) -> Res<Vec3> {
+        self.floats::<3>(i).map(Vec3::from_array)
+    }
+    pub(super) fn mat4(&self, i: usize) -> Res<Mat4> {
+        self.floats::<16>(i).map(|a| Mat4::from_cols_array(&a))
+    }
+    pub(super) fn vec4_args(&self, from: usize) -> Res<Vec4> {
+        Ok(Vec4::new(
+            self.f32(from)?,
+            self.f32(from + 1)?,
+            self.f32(from + 2)?,
+            self.f32(from + 3)?,
+        ))
+    }
+    /// Pixel data: NULL, or a compound literal whose element type gives the byte encoding.
+    pub(super) fn pixels(&self, i: usize) -> Res<Option<Arc<[u8]>>> {
+        if let Some(("NULL", 0)) = self.name(i) {
+            return Ok(None);
+        }
+        let (ty, values) = self
+            .array(i)
+            .ok_or_else(|| self.bad(i, "NULL or a pixel array"))?;
+        let mut bytes = Vec::new();
+        for (neg, text) in values {
+            let int = || int_literal(text).map(|v| if *neg { -v } else { v });
+            let ok = match ty {
+                "GLubyte" => int()
+                    .and_then(|v| u8::try_from(v).ok())
+                    .map(|v| bytes.push(v)),
+                "GLushort" => int()
+                    .and_then(|v| u16::try_from(v).ok())
+                    .map(|v| bytes.extend(v.to_le_bytes())),
+                "GLuint" => int()
+                    .and_then(|v| u32::try_from(v).ok())
+                    .map(|v| bytes.extend(v.to_le_bytes())),
+                "GLfloat" => float_literal(text)
+                    .map(|v| bytes.extend((if *neg { -v } else { v }).to_le_bytes())),
+                _ => return Err(self.bad(i, "a GLubyte, GLushort, GLuint or GLfloat array")),
+            };
+            ok.ok_or_else(|| self.bad(i, "array values that fit the element type"))?;
+        }
+        Ok(Some(Arc::from(bytes)))
+    }
+}
+
+/// Parses a script into Commands.
+pub fn parse(src: &str) -> Result<Vec<Command>, ScriptError> {
+    let toks = lex(src)?;
+    let mut cur = Cursor {
+        toks: &toks,
+        pos: 0,
+    };
+    let mut out = Folder::default();
+    while cur.peek().is_some() {
+        let stmt = cur.statement()?;
+        let name = CALLS
+            .iter()
+            .find(|c| **c == stmt.name)
+            .copied()
+            .ok_or_else(|| ScriptError::UnknownCall {
+                line: stmt.line,
+                name: stmt.name.to_string(),
+                expected: ranked(stmt.name, CALLS),
+            })?;
+        out.call(&Call {
+            line: stmt.line,
+            name,
+            args: &stmt.args,
+        })?;
+    }
+    out.finish()
+}
+
+/// glBegin/glEnd folding, with the current vertex values tracked across the script (GL
+/// defaults at the start) so vertices before an attribute's first call get the right value.
+#[derive(Default)]
+struct Folder {
+    cmds: Vec<Command>,
+    current: Option<CurrentValues>,
+    open: Option<Open>,
+}
+
+/// A glBegin not yet ended.
+struct Open {
+    line: usize,
+    geometry: Geometry,
+    /// The current values at glBegin: what vertices before an attribute's first call get.
+    begin: CurrentValues,
+    /// Attributes called inside the pair (colour, normal, texcoord per unit): each gets an
+    /// array at the next vertex, so a value set after the last vertex only stays current.
+    called: [bool; 2 + MAX_TEXTURE_UNITS],
+}
+
+enum Attr {
+    Color(Vec4),
+    Normal(Vec3),
+    TexCoord(u8, Vec4),
+}
+
+impl Folder {
+    fn current(&self) -> CurrentValues {
+        self.current.unwrap_or(CurrentValues::DEFAULT)
+    }
+
+    fn call(&mut self, c: &Call) -> Res<()> {
+        if let Some(attr) = attribute(c)? {
+            if let (Some(_), Attr::TexCoord(unit, _)) = (&self.open, &attr) {
+                if usize::from(*unit) >= MAX_TEXTURE_UNITS {
+                    return Err(immediate(c, "texture unit beyond MAX_TEXTURE_UNITS"));
+                }
+            }
+            self.attribute(attr);
+            return Ok(());
+        }
+        match c.name {
+            "glBegin" => {
+                c.count(1)?;
+                if self.open.is_some() {
+                    return Err(immediate(c, "glBegin inside glBegin/glEnd"));
+                }
+                self.open = Some(Open {
+                    line: c.line,
+                    geometry: Geometry::new(c.enm(0)?, Vec::new()),
+                    begin: self.current(),
+                    called: [false; 2 + MAX_TEXTURE_UNITS],
+                });
+            }
+            "glEnd" => {
+                c.count(0)?;
+                let open = self
+                    .open
+                    .take()
+                    .ok_or_else(|| immediate(c, "glEnd without glBegin"))?;
+                self.end(open.geometry, open.begin);
+            }
+            "glVertex2f" | "glVertex3f" | "glVertex4f" => {
+                let p = match c.name {
+                    "glVertex2f" => {
+                        c.count(2)?;
+                        Vec4::new(c.f32(0)?, c.f32(1)?, 0.0, 1.0)
+                    }
+                    "glVertex3f" => {
+                        c.count(3)?;
+                        c.vec3_args(0)?.extend(1.0)
+                    }
+                    _ => {
+                        c.count(4)?;
+                        c.vec4_args(0)?
+                    }
+                };
+                let cur = self.current();
+                let open = self
+                    .open
+                    .as_mut()
+                    .ok_or_else(|| immediate(c, "glVertex outside glBegin/glEnd"))?;
+                open.arrays_for_called();
+                let g = &mut open.geometry;
+                g.positions.push(p);
+                if let Some(v) = &mut g.colors {
+                    v.push(cur.color);
+                }
+                if let Some(v) = &mut g.normals {
+                    v.push(cur.normal);
+                }
+                for (u, t) in g.texcoords.iter_mut().enumerate() {
+                    if let Some(v) = t {
+                        v.push(cur.texcoords[u]);
+                    }
+                }
+            }
+            _ => {
+                if self.open.is_some() {
+                    return Err(immediate(
+                        c,
+                        "only vertex attributes are allowed inside glBegin/glEnd",
+                    ));
+                }
+                self.cmds.push(command(c)?);
+            }
+        }
+        Ok(())
+    }
+
+    fn attribute(&mut self, attr: Attr) {
+        let mut cur = self.current();
+        let index = match attr {
+            Attr::Color(v) => {
+                cur.color = v;
+                0
+            }
+            Attr::Normal(v) => {
+                cur.normal = v;
+                1
+            }
+            Attr::TexCoord(unit, coord) => {
+                // An invalid unit is FixedState's INVALID_ENUM outside the pair, a parse
+                // error inside (checked by `attribute`).
+                if let Some(t) = cur.texcoords.get_mut(usize::from(unit)) {
+                    *t = coord;
+                }
+                2 + usize::from(unit)
+            }
+        };
+        match &mut self.open {
+            Some(open) => {
+                if let Some(flag) = open.called.get_mut(index) {
+                    *flag = true;
+                }
+            }
+            None => self.cmds.push(match attr {
+                Attr::Color(v) => Command::Color(v),
+                Attr::Normal(v) => Command::Normal(v),
+                Attr::TexCoord(unit, coord) => Command::TexCoord { unit, coord },
+            }),
+        }
+        self.current = Some(cur);
+    }
+
+    /// Emits the Draw, then any value set after the last vertex, so the state after the
+    /// commands equals GL's after glEnd.
+    fn end(&mut self, g: Geometry, begin: CurrentValues) {
+        let mut after = after_draw(&g, begin);
+        let cur = self.current();
+        self.cmds.push(Command::Draw(Arc::new(g)));
+        if after.color != cur.color {
+            self.cmds.push(Command::Color(cur.color));
+            after.color = cur.color;
+        }
+        if after.normal != cur.normal {
+            self.cmds.push(Command::Normal(cur.normal));
+        }
+        for u in 0..MAX_TEXTURE_UNITS {
+            if after.texcoords[u] != cur.texcoords[u] {
+                self.cmds.push(Command::TexCoord {
+                    unit: u as u8,
+                    coord: cur.texcoords[u],
+                });
+            }
+        }
+    }
+
+    fn finish(self) -> Res<Vec<Command>> {
+        if let Some(Open { line, .. }) = self.open {
+            return Err(ScriptError::Immediate {
+                line,
+                call: "glBegin".into(),
+                rule: "glBegin without glEnd",
+            });
+        }
+        Ok(self.cmds)
+    }
+}
+
+/// What FixedState holds after the Draw: the last vertex's values where arrays exist, else
+/// the values current at glBegin (attributes without arrays were not called inside the
+/// pair, or only after the last vertex).
+fn after_draw(g: &Geometry, mut v: CurrentValues) -> CurrentValues {
+    v.color = Geometry::last(&g.colors).unwrap_or(v.color);
+    v.normal = Geometry::last(&g.normals).unwrap_or(v.normal);
+    for (u, t) in g.texcoords.iter().enumerate() {
+        v.texcoords[u] = Geometry::last(t).unwrap_or(v.texcoords[u]);
+    }
+    v
+}
+
+impl Open {
+    /// Creates the arrays of attributes called since glBegin, filled with the glBegin
+    /// values for the vertices already emitted.
+    fn arrays_for_called(&mut self) {
+        let n = self.geometry.positions.len();
+        let g = &mut self.geometry;
+        if self.called[0] {
+            g.colors.get_or_insert_with(|| vec![self.begin.color; n]);
+        }
+        if self.called[1] {
+            g.normals.get_or_insert_with(|| vec![self.begin.normal; n]);
+        }
+        for (u, t) in g.texcoords.iter_mut().enumerate() {
+            if self.called[2 + u] {
+                t.get_or_insert_with(|| vec![self.begin.texcoords[u]; n]);
+            }
+        }
+    }
+}
+
+fn immediate(c: &Call, rule: &'static str) -> ScriptError {
+    ScriptError::Immediate {
+        line: c.line,
+        call: c.name.to_string(),
+        rule,
+    }
+}
+
+/// glColor/glNormal/glTexCoord/glMultiTexCoord, inside or outside glBegin.
+fn attribute(c: &Call) -> Res<Option<Attr>> {
+    let tc = |from: usize, n: usize| -> Res<Vec4> {
+        c.count(from + n)?;
+        let mut v = Vec4::W;
+        for k in 0..n {
+            v[k] = c.f32(from + k)?;
+        }
+        Ok(v)
+    };
+    Ok(Some(match c.name {
+        "glColor3f" => Attr::Color(tc(0, 3)?.truncate().extend(1.0)),
+        "glColor4f" => Attr::Color(tc(0, 4)?),
+        "glNormal3f" => Attr::Normal(tc(0, 3)?.truncate()),
+        "glTexCoord1f" => Attr::TexCoord(0, tc(0, 1)?),
+        "glTexCoord2f" => Attr::TexCoord(0, tc(0, 2)?),
+        "glTexCoord3f" => Attr::TexCoord(0, tc(0, 3)?),
+        "glTexCoord4f" => Attr::TexCoord(0, tc(0, 4)?),
+        "glMultiTexCoord1f" => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 1)?),
+        "glMultiTexCoord2f" => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 2)?),
+        "glMultiTexCoord3f" => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 3)?),
+        "glMultiTexCoord4f" => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 4)?),
+        _ => return Ok(None),
+    }))
+}
+
+/// Every call that is not immediate mode.
+fn command(c: &Call) -> Res<Command> {
+    for area in [
+        super::calls::transform_and_fragment,
+        super::calls::lighting,
+        super::calls::texturing,
+        super::calls::combiners,
+    ] {
+        if let Some(cmd) = area(c)? {
+            return Ok(cmd);
+        }
+    }
+    Err(ScriptError::UnknownCall {
+        line: c.line,
+        name: c.name.to_string(),
+        expected: ranked(c.name, CALLS),
+    })
+}
+
+impl Call<'_, '_> {
+    pub(super) fn or_names(&self, i: usize) -> Option<Vec<&str>> {
+        match self.args.get(i) {
+            Some(Arg::Or(v)) => Some(v.clone()),
+            Some(Arg::Name { name, offset: 0 }) => Some(vec![name]),
+            Some(Arg::Num {
+                neg: false,
+                text: "0",
+            }) => Some(vec![]),
+            _ => None,
+        }
+    }
+    pub(super) fn slot(&self, i: usize) -> Res<u32> {
+        self.name(i)
+            .filter(|(_, off)| *off == 0)
+            .and_then(|(n, _)| n.strip_prefix("readback_"))
+            .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+            .and_then(|d| d.parse().ok())
+            .ok_or_else(|| self.bad(i, "a readback slot readback_<n>"))
+    }
+}

@@ -1,0 +1,640 @@
+//! Script tables: parse errors with lines and alternatives, immediate-mode folding, round
+//! trips (hand-picked and property-based), and C validity of printed scripts.
+
+use std::sync::Arc;
+
+use glam::{Mat4, Vec3, Vec4};
+use proptest::prelude::*;
+
+use super::names::GlName;
+use super::*;
+use crate::ff::*;
+
+fn err(src: &str) -> ScriptError {
+    parse(src).unwrap_err()
+}
+
+#[test]
+fn parses_a_texgen_script() {
+    let src = "// piglit general/texgen, quad 2\n\
+               glMatrixMode(GL_MODELVIEW);\n\
+               glTexGenfv(GL_S, GL_EYE_PLANE, (GLfloat[]){1, 0, 0, -0.25f});\n\
+               /* then move */ glTranslatef(0.5, -0.5, 0);\n\
+               glEnable(GL_TEXTURE_GEN_S);\n";
+    let cmds = parse(src).unwrap();
+    assert_eq!(
+        cmds,
+        vec![
+            Command::MatrixMode(MatrixMode::Modelview),
+            Command::TexGen {
+                coord: TexCoord::S,
+                param: TexGenParam::EyePlane(Vec4::new(1.0, 0.0, 0.0, -0.25)),
+            },
+            Command::Translate(Vec3::new(0.5, -0.5, 0.0)),
+            Command::Enable(Capability::TextureGen(TexCoord::S)),
+        ]
+    );
+}
+
+#[test]
+fn error_table() {
+    // Unknown call: line 2, closest first.
+    match err("glLoadIdentity();\nglTexEnvv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);") {
+        ScriptError::UnknownCall {
+            line,
+            name,
+            expected,
+        } => {
+            assert_eq!((line, name.as_str()), (2, "glTexEnvv"));
+            assert!(expected[..3].contains(&"glTexEnvi"), "{expected:?}");
+        }
+        e => panic!("{e}"),
+    }
+    // An enum valid in GL but not for this argument: the six texenv modes are listed.
+    match err("\n\nglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DOT3_RGB);") {
+        ScriptError::UnknownEnum {
+            line,
+            call,
+            arg,
+            name,
+            expected,
+        } => {
+            assert_eq!(
+                (line, call, arg, name.as_str()),
+                (3, "glTexEnvi", 3, "GL_DOT3_RGB")
+            );
+            let mut want = TexEnvMode::names();
+            want.sort();
+            let mut got = expected.clone();
+            got.sort();
+            assert_eq!(got, want);
+        }
+        e => panic!("{e}"),
+    }
+    let table: Vec<(&str, usize, &str)> = vec![
+        ("glEnable(GL_FOO);", 1, "UnknownEnum"),
+        ("glEnable(GL_LIGHT9);", 1, "UnknownEnum"),
+        ("glDepthFunc(GL_LESS)", 1, "Syntax"),
+        ("glRotatef(1, 2, 3);", 1, "ArgCount"),
+        ("glAlphaFunc(GL_GREATER, GL_ONE);", 1, "BadArgument"),
+        ("\nglTexGenfv(GL_S, GL_EYE_PLANE, (GLfloat[]){1, 0, 0});", 2, "ArrayLength"),
+        ("glBegin(GL_QUADS);\nglEnable(GL_BLEND);", 2, "Immediate"),
+        ("glEnd();", 1, "Immediate"),
+        ("glBegin(GL_TRIANGLES);\nglVertex3f(0,0,0);", 1, "Immediate"),
+        ("glVertex3f(0, 0, 0);", 1, "Immediate"),
+        ("glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, buffer);", 1, "BadArgument"),
+        ("glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, (GLubyte[]){256, 0, 0, 0});", 1, "BadArgument"),
+        ("glClear(GL_COLOR_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);", 1, "UnknownEnum"),
+        ("\n\n\n  @", 4, "UnexpectedChar"),
+        ("/* a\n b", 1, "UnterminatedComment"),
+    ];
+    for (src, want_line, want_kind) in table {
+        let e = err(src);
+        let (line, kind) = match &e {
+            ScriptError::UnexpectedChar { line, .. } => (*line, "UnexpectedChar"),
+            ScriptError::UnterminatedComment { line } => (*line, "UnterminatedComment"),
+            ScriptError::Syntax { line, .. } => (*line, "Syntax"),
+            ScriptError::UnknownCall { line, .. } => (*line, "UnknownCall"),
+            ScriptError::UnknownEnum { line, .. } => (*line, "UnknownEnum"),
+            ScriptError::ArgCount { line, .. } => (*line, "ArgCount"),
+            ScriptError::BadArgument { line, .. } => (*line, "BadArgument"),
+            ScriptError::ArrayLength { line, .. } => (*line, "ArrayLength"),
+            ScriptError::Immediate { line, .. } => (*line, "Immediate"),
+        };
+        assert_eq!((line, kind), (want_line, want_kind), "{src:?}: {e}");
+        assert!(
+            e.to_string().starts_with(&format!("line {want_line}:")),
+            "{e}"
+        );
+    }
+}
+
+#[test]
+fn immediate_mode_folds_into_one_draw() {
+    let src = "glColor4f(1, 0, 0, 1);\n\
+               glBegin(GL_QUADS);\n\
+               glVertex3f(0, 0, 0);\n\
+               glColor3f(0, 1, 0);\n\
+               glMultiTexCoord2f(GL_TEXTURE1, 0.5, 1);\n\
+               glVertex2f(1, 0);\n\
+               glVertex4f(1, 1, 0, 2);\n\
+               glNormal3f(0, 1, 0);\n\
+               glEnd();\n";
+    let cmds = parse(src).unwrap();
+    assert_eq!(cmds.len(), 3, "{cmds:?}");
+    let Command::Draw(g) = &cmds[1] else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(g.primitive, Primitive::Quads);
+    assert_eq!(g.positions[2], Vec4::new(1.0, 1.0, 0.0, 2.0));
+    let red = Vec4::new(1.0, 0.0, 0.0, 1.0);
+    let green = Vec4::new(0.0, 1.0, 0.0, 1.0);
+    assert_eq!(g.colors.as_deref(), Some(&[red, green, green][..]));
+    assert_eq!(g.texcoords[1].as_deref().map(|t| t[0]), Some(Vec4::W));
+    assert_eq!(
+        g.texcoords[1].as_deref().map(|t| t[1]),
+        Some(Vec4::new(0.5, 1.0, 0.0, 1.0))
+    );
+    assert!(g.normals.is_none(), "the normal came after the last vertex");
+    // ... so it is kept as the current normal after the draw.
+    assert_eq!(cmds[2], Command::Normal(Vec3::Y));
+}
+
+fn sample_commands() -> Vec<Command> {
+    let mut g = Geometry::new(
+        Primitive::TriangleFan,
+        vec![
+            Vec4::new(0.0, 0.0, 0.0, 1.0),
+            Vec4::new(1.0, 0.0, -0.5, 1.0),
+            Vec4::new(1.0, 1.0, 0.0, 0.5),
+        ],
+    );
+    g.colors = Some(vec![
+        Vec4::ONE,
+        Vec4::X + Vec4::W,
+        Vec4::new(0.1, 0.2, 0.3, 0.4),
+    ]);
+    g.normals = Some(vec![Vec3::Z; 3]);
+    g.texcoords[0] = Some(vec![Vec4::W, Vec4::X, Vec4::Y]);
+    g.texcoords[3] = Some(vec![Vec4::ZERO; 3]);
+    let input = CombinerInput {
+        register: Register::Texture(1),
+        mapping: Mapping::ExpandNormal,
+        usage: ComponentUsage::Rgb,
+    };
+    vec![
+        Command::MatrixMode(MatrixMode::Texture),
+        Command::LoadMatrix(Mat4::from_cols_array(&std::array::from_fn(|i| {
+            i as f32 * 0.1
+        }))),
+        Command::MultMatrix(Mat4::IDENTITY),
+        Command::PushMatrix,
+        Command::PopMatrix,
+        Command::LoadIdentity,
+        Command::Rotate {
+            angle_deg: 30.0,
+            axis: Vec3::new(1.0, 1.0, 0.0),
+        },
+        Command::Scale(Vec3::new(-1.0, 1e-7, 3e20)),
+        Command::Frustum(ViewVolume {
+            left: -1.0,
+            right: 1.0,
+            bottom: -0.75,
+            top: 0.75,
+            near: 4.0,
+            far: 24.0,
+        }),
+        Command::Ortho(ViewVolume {
+            left: 0.0,
+            right: 1.0,
+            bottom: 0.0,
+            top: 1.0,
+            near: -1.0,
+            far: f32::INFINITY,
+        }),
+        Command::Viewport(Viewport {
+            x: 0,
+            y: 0,
+            width: 256,
+            height: 256,
+        }),
+        Command::DepthRange {
+            near: 0.0,
+            far: 1.0,
+        },
+        Command::Enable(Capability::Light(3)),
+        Command::Disable(Capability::Light(12)),
+        Command::Enable(Capability::RegisterCombiners),
+        Command::Color(Vec4::new(0.0, 0.25, 0.5, 0.75)),
+        Command::Normal(Vec3::NEG_Z),
+        Command::TexCoord {
+            unit: 2,
+            coord: Vec4::new(0.5, 0.5, 0.0, 1.0),
+        },
+        Command::Light {
+            light: 0,
+            param: LightParam::Position(Vec4::new(1.0, 2.0, 3.0, 0.0)),
+        },
+        Command::Light {
+            light: 1,
+            param: LightParam::SpotDirection(Vec3::NEG_Y),
+        },
+        Command::Light {
+            light: 7,
+            param: LightParam::SpotCutoff(40.0),
+        },
+        Command::Light {
+            light: 2,
+            param: LightParam::QuadraticAttenuation(0.01),
+        },
+        Command::LightModel(LightModelParam::Ambient(Vec4::splat(0.1))),
+        Command::LightModel(LightModelParam::TwoSide(true)),
+        Command::LightModel(LightModelParam::ColorControl(
+            ColorControl::SeparateSpecularColor,
+        )),
+        Command::Material {
+            face: Face::FrontAndBack,
+            param: MaterialParam::AmbientAndDiffuse(Vec4::ONE),
+        },
+        Command::Material {
+            face: Face::Front,
+            param: MaterialParam::Shininess(64.0),
+        },
+        Command::ColorMaterial {
+            face: Face::Back,
+            mode: ColorMaterialMode::Emission,
+        },
+        Command::ShadeModel(ShadeModel::Flat),
+        Command::ActiveTexture(1),
+        Command::BindTexture {
+            target: TextureTarget::Texture1D,
+            name: 42,
+        },
+        Command::TexImage(TexImage {
+            target: TextureTarget::Texture1D,
+            level: 0,
+            internal_format: TexFormat::Intensity8,
+            width: 4,
+            height: 1,
+            border: 0,
+            format: PixelFormat::Luminance,
+            ty: PixelType::UnsignedByte,
+            data: Some(Arc::from(vec![0u8, 85, 170, 255])),
+        }),
+        Command::TexImage(TexImage {
+            target: TextureTarget::Texture2D,
+            level: 0,
+            internal_format: TexFormat::DepthComponent24,
+            width: 2,
+            height: 1,
+            border: 0,
+            format: PixelFormat::DepthComponent,
+            ty: PixelType::Float,
+            data: Some(Arc::from(
+                [0.25f32.to_le_bytes(), 1.0f32.to_le_bytes()].concat(),
+            )),
+        }),
+        Command::TexImage(TexImage {
+            target: TextureTarget::Texture2D,
+            level: 1,
+            internal_format: TexFormat::Luminance8Alpha8,
+            width: 256,
+            height: 256,
+            border: 0,
+            format: PixelFormat::LuminanceAlpha,
+            ty: PixelType::UnsignedByte,
+            data: None,
+        }),
+        Command::TexSubImage2D(TexSubImage {
+            level: 0,
+            x: 1,
+            y: 0,
+            width: 1,
+            height: 1,
+            format: PixelFormat::DepthComponent,
+            ty: PixelType::UnsignedShort,
+            data: Arc::from(65535u16.to_le_bytes().to_vec()),
+        }),
+        Command::CopyTexImage2D(CopyTexImage {
+            level: 0,
+            internal_format: TexFormat::DepthComponent16,
+            x: 0,
+            y: 0,
+            width: 64,
+            height: 64,
+            border: 0,
+        }),
+        Command::TexParameter {
+            target: TextureTarget::Texture2D,
+            param: TexParam::MinFilter(Filter::LinearMipmapNearest),
+        },
+        Command::TexParameter {
+            target: TextureTarget::Texture2D,
+            param: TexParam::WrapT(Wrap::ClampToBorder),
+        },
+        Command::TexParameter {
+            target: TextureTarget::Texture2D,
+            param: TexParam::BorderColor(Vec4::ONE),
+        },
+        Command::TexParameter {
+            target: TextureTarget::Texture2D,
+            param: TexParam::CompareMode(CompareMode::CompareRToTexture),
+        },
+        Command::TexParameter {
+            target: TextureTarget::Texture2D,
+            param: TexParam::CompareFunc(CompareFunc::Gequal),
+        },
+        Command::TexParameter {
+            target: TextureTarget::Texture2D,
+            param: TexParam::DepthTextureMode(DepthTextureMode::Intensity),
+        },
+        Command::TexParameter {
+            target: TextureTarget::Texture2D,
+            param: TexParam::CompareFailValue(0.3),
+        },
+        Command::TexParameter {
+            target: TextureTarget::Texture2D,
+            param: TexParam::GenerateMipmap(true),
+        },
+        Command::TexGen {
+            coord: TexCoord::Q,
+            param: TexGenParam::Mode(TexGenMode::ObjectLinear),
+        },
+        Command::TexGen {
+            coord: TexCoord::R,
+            param: TexGenParam::ObjectPlane(Vec4::new(0.0, 0.05, 0.0, 1.5)),
+        },
+        Command::TexEnv(TexEnvParam::Mode(TexEnvMode::Combine)),
+        Command::TexEnv(TexEnvParam::Color(Vec4::new(0.25, 0.5, 0.75, 1.0))),
+        Command::TexEnv(TexEnvParam::CombineRgb(CombineFunc::Dot3Rgba)),
+        Command::TexEnv(TexEnvParam::CombineAlpha(CombineFunc::AddSigned)),
+        Command::TexEnv(TexEnvParam::SourceRgb(
+            CombineArg::Arg2,
+            CombineSource::TextureUnit(3),
+        )),
+        Command::TexEnv(TexEnvParam::SourceAlpha(
+            CombineArg::Arg1,
+            CombineSource::Previous,
+        )),
+        Command::TexEnv(TexEnvParam::OperandRgb(
+            CombineArg::Arg0,
+            CombineOperand::OneMinusSrcColor,
+        )),
+        Command::TexEnv(TexEnvParam::OperandAlpha(
+            CombineArg::Arg1,
+            CombineOperand::OneMinusSrcAlpha,
+        )),
+        Command::TexEnv(TexEnvParam::RgbScale(4.0)),
+        Command::TexEnv(TexEnvParam::AlphaScale(2.0)),
+        Command::CombinerParameter(CombinerParam::NumGeneralCombiners(2)),
+        Command::CombinerParameter(CombinerParam::ColorSumClamp(true)),
+        Command::CombinerParameter(CombinerParam::ConstantColor1(Vec4::splat(0.5))),
+        Command::CombinerInput {
+            stage: 1,
+            portion: Portion::Rgb,
+            variable: Variable::D,
+            input,
+        },
+        Command::CombinerOutput {
+            stage: 0,
+            portion: Portion::Alpha,
+            output: CombinerOutput {
+                ab: Register::Discard,
+                cd: Register::Texture(0),
+                sum: Register::Spare0,
+                scale: CombinerScale::ByTwo,
+                bias: CombinerBias::ByNegativeOneHalf,
+                ab_product: Product::Componentwise,
+                cd_product: Product::Dot,
+                sum_or_mux: SumOrMux::Mux,
+            },
+        },
+        Command::FinalCombinerInput {
+            variable: FinalVariable::G,
+            input: CombinerInput {
+                register: Register::Spare0,
+                mapping: Mapping::UnsignedInvert,
+                usage: ComponentUsage::Alpha,
+            },
+        },
+        Command::AlphaFunc {
+            func: CompareFunc::Greater,
+            reference: 0.5,
+        },
+        Command::DepthFunc(CompareFunc::Equal),
+        Command::DepthMask(false),
+        Command::StencilFunc {
+            func: CompareFunc::Notequal,
+            reference: -1,
+            mask: 0xFF,
+        },
+        Command::StencilOp {
+            fail: StencilOp::IncrWrap,
+            depth_fail: StencilOp::Invert,
+            depth_pass: StencilOp::Replace,
+        },
+        Command::StencilMask(u32::MAX),
+        Command::BlendFunc {
+            src: BlendFactor::SrcAlphaSaturate,
+            dst: BlendFactor::OneMinusSrcAlpha,
+        },
+        Command::ColorMask(ColorMask {
+            r: true,
+            g: false,
+            b: true,
+            a: false,
+        }),
+        Command::PolygonOffset {
+            factor: -2.0,
+            units: -9.0,
+        },
+        Command::PolygonMode {
+            face: Face::Back,
+            mode: PolygonMode::Line,
+        },
+        Command::CullFace(Face::Front),
+        Command::FrontFace(FrontFace::Cw),
+        Command::LineWidth(12.0),
+        Command::PointSize(0.5),
+        Command::Clear(ClearMask::ALL),
+        Command::Clear(ClearMask::default()),
+        Command::ClearColor(Vec4::new(0.5, 0.5, 0.5, 0.0)),
+        Command::ClearDepth(1.0),
+        Command::ClearStencil(128),
+        Command::ReadPixels(ReadPixels {
+            x: 0,
+            y: 0,
+            width: 4,
+            height: 4,
+            format: PixelFormat::DepthComponent,
+            ty: PixelType::UnsignedInt,
+            slot: 3,
+        }),
+        Command::Draw(Arc::new(g)),
+        Command::Draw(Arc::new(Geometry::new(Primitive::Points, vec![]))),
+    ]
+}
+
+#[test]
+fn round_trip_of_every_command() {
+    let cmds = sample_commands();
+    let text = print(&cmds);
+    let back = parse(&text).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    for (a, b) in cmds.iter().zip(&back) {
+        assert_eq!(a, b, "\n{text}");
+    }
+    assert_eq!(back.len(), cmds.len());
+}
+
+#[test]
+fn indexed_geometry_prints_de_indexed() {
+    let mut g = Geometry::new(
+        Primitive::Triangles,
+        vec![Vec4::W, Vec4::X + Vec4::W, Vec4::Y + Vec4::W],
+    );
+    g.indices = Some(vec![2, 1, 0]);
+    let back = parse(&print(&[Command::Draw(Arc::new(g))])).unwrap();
+    let Command::Draw(b) = &back[0] else { panic!() };
+    assert_eq!(
+        b.positions,
+        vec![Vec4::Y + Vec4::W, Vec4::X + Vec4::W, Vec4::W]
+    );
+    assert_eq!(b.indices, None);
+}
+
+/// The printed script compiles as C99 against the system's GL headers (skipped without gcc
+/// or the headers).
+#[test]
+fn printed_script_is_valid_c() {
+    let dir = std::env::temp_dir().join(format!("ff-script-c-{}", std::process::id()));
+    let header = std::path::Path::new("/usr/include/GL/glext.h");
+    if !header.exists() || std::fs::create_dir_all(&dir).is_err() {
+        return;
+    }
+    let body = print(&sample_commands());
+    let src = format!(
+        "#define GL_GLEXT_PROTOTYPES 1\n#include <GL/gl.h>\n#include <GL/glext.h>\n#include <math.h>\n#include <stddef.h>\n\
+         static GLuint readback_3[16];\nvoid script(void) {{\n{body}}}\n"
+    );
+    let file = dir.join("script.c");
+    if std::fs::write(&file, src).is_err() {
+        return;
+    }
+    let Ok(out) = std::process::Command::new("gcc")
+        .args(["-std=c99", "-fsyntax-only", "-Wall", "-Werror"])
+        .arg(&file)
+        .output()
+    else {
+        return;
+    };
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+fn finite() -> impl Strategy<Value = f32> {
+    use proptest::num::f32::{NEGATIVE, NORMAL, POSITIVE, SUBNORMAL, ZERO};
+    POSITIVE | NEGATIVE | NORMAL | SUBNORMAL | ZERO
+}
+
+fn vec4() -> impl Strategy<Value = Vec4> {
+    prop::array::uniform4(finite()).prop_map(Vec4::from_array)
+}
+
+fn token<T: GlName + std::fmt::Debug>() -> impl Strategy<Value = T> {
+    prop::sample::select(T::TABLE.iter().map(|(_, v)| *v).collect::<Vec<_>>())
+}
+
+fn geometry() -> impl Strategy<Value = Geometry> {
+    (token::<Primitive>(), 1usize..6).prop_flat_map(|(p, n)| {
+        (
+            prop::collection::vec(vec4(), n),
+            prop::option::of(prop::collection::vec(vec4(), n)),
+            prop::option::of(prop::collection::vec(vec4(), n)),
+            prop::option::of(prop::collection::vec(vec4(), n)),
+        )
+            .prop_map(move |(pos, colors, normals, tc)| {
+                let mut g = Geometry::new(p, pos);
+                g.colors = colors;
+                g.normals = normals.map(|v| v.into_iter().map(Vec4::truncate).collect());
+                g.texcoords[5] = tc;
+                g
+            })
+    })
+}
+
+fn command() -> impl Strategy<Value = Command> {
+    prop_oneof![
+        vec4().prop_map(Command::Color),
+        vec4().prop_map(|v| Command::Translate(v.truncate())),
+        (finite(), vec4()).prop_map(|(a, v)| Command::Rotate {
+            angle_deg: a,
+            axis: v.truncate()
+        }),
+        prop::array::uniform16(finite())
+            .prop_map(|a| Command::LoadMatrix(Mat4::from_cols_array(&a))),
+        (token::<TexCoord>(), vec4()).prop_map(|(coord, p)| Command::TexGen {
+            coord,
+            param: TexGenParam::EyePlane(p)
+        }),
+        token::<Capability>().prop_map(Command::Enable),
+        any::<u8>().prop_map(|i| Command::Disable(Capability::Light(i))),
+        (token::<CompareFunc>(), finite())
+            .prop_map(|(func, reference)| Command::AlphaFunc { func, reference }),
+        (token::<CompareFunc>(), any::<i32>(), any::<u32>()).prop_map(|(func, reference, mask)| {
+            Command::StencilFunc {
+                func,
+                reference,
+                mask,
+            }
+        }),
+        (token::<CombineFunc>(), any::<bool>()).prop_map(|(f, rgb)| Command::TexEnv(if rgb {
+            TexEnvParam::CombineRgb(f)
+        } else {
+            TexEnvParam::CombineAlpha(f)
+        })),
+        (
+            any::<u8>(),
+            token::<Register>(),
+            token::<Mapping>(),
+            token::<ComponentUsage>()
+        )
+            .prop_map(|(stage, register, mapping, usage)| {
+                Command::CombinerInput {
+                    stage,
+                    portion: Portion::Rgb,
+                    variable: Variable::B,
+                    input: CombinerInput {
+                        register,
+                        mapping,
+                        usage,
+                    },
+                }
+            }),
+        (
+            any::<u8>(),
+            prop::collection::vec(any::<u8>(), 0..12),
+            token::<PixelType>()
+        )
+            .prop_map(|(w, bytes, ty)| {
+                Command::TexImage(TexImage {
+                    target: TextureTarget::Texture2D,
+                    level: 0,
+                    internal_format: TexFormat::Rgba8,
+                    width: i32::from(w),
+                    height: 1,
+                    border: 0,
+                    format: PixelFormat::Rgba,
+                    ty,
+                    data: Some(Arc::from(bytes)),
+                })
+            }),
+        geometry().prop_map(|g| Command::Draw(Arc::new(g))),
+    ]
+}
+
+proptest! {
+    #[test]
+    fn parse_inverts_print(cmds in prop::collection::vec(command(), 0..12)) {
+        let text = print(&cmds);
+        let back = parse(&text);
+        prop_assert_eq!(back.as_ref(), Ok(&cmds), "{}", text);
+    }
+
+    #[test]
+    fn parse_never_panics(src in "[ -~\\n]{0,200}") {
+        let _ = parse(&src);
+    }
+
+    #[test]
+    fn parse_never_panics_on_gl_like_text(
+        calls in prop::collection::vec(prop::sample::select(super::names::CALLS.to_vec()), 0..6),
+        args in prop::collection::vec("(GL_[A-Z0-9_]{1,12}|-?[0-9]{1,3}(\\.[0-9])?|\\(GLfloat\\[\\]\\)\\{[0-9, ]{0,9}\\}|readback_[0-9])", 0..6),
+    ) {
+        let src: String = calls.iter().map(|c| format!("{c}({});\n", args.join(", "))).collect();
+        let _ = parse(&src);
+    }
+}

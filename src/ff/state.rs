@@ -1,0 +1,310 @@
+//! `FixedState`: the GL 1.x fixed-function state, every field at its GL initial value.
+//!
+//! Change it only through [`FixedState::apply`] (in `apply.rs`), which follows GL's error
+//! semantics; read it freely. Values whose enable is separate in GL are [`Toggle`]s, so
+//! disabling keeps the parameters and `toggle.get()` gives the `Option` a shader key wants.
+
+use std::collections::BTreeMap;
+
+use glam::{Mat4, Vec3, Vec4};
+
+use super::combiners::RegisterCombiners;
+use super::error::GlError;
+use super::fragment::{
+    AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace,
+    OffsetEnables, PolygonMode, PolygonOffset, ShadeModel, StencilTest, Toggle, Viewport,
+};
+use super::light::{ColorMaterial, Light, LightModel, Materials, MAX_LIGHTS};
+use super::matrix::{
+    MatrixMode, MatrixStack, MODELVIEW_STACK_DEPTH, PROJECTION_STACK_DEPTH, TEXTURE_STACK_DEPTH,
+};
+use super::texenv::TexEnv;
+use super::texgen::{TexCoord, TexGen};
+use super::texture::{TextureObject, TextureTarget};
+
+/// GL_MAX_TEXTURE_UNITS modelled: texgen, env, matrices and coordinates for 8 units (the
+/// pipelines need at least 4 image units).
+pub const MAX_TEXTURE_UNITS: usize = 8;
+
+/// The current vertex values (glColor, glNormal, glMultiTexCoord).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CurrentValues {
+    /// GL default: (1, 1, 1, 1).
+    pub color: Vec4,
+    /// GL default: (0, 0, 1).
+    pub normal: Vec3,
+    /// GL default: (0, 0, 0, 1) on every unit.
+    pub texcoords: [Vec4; MAX_TEXTURE_UNITS],
+}
+
+impl CurrentValues {
+    pub const DEFAULT: Self = Self {
+        color: Vec4::ONE,
+        normal: Vec3::Z,
+        texcoords: [Vec4::W; MAX_TEXTURE_UNITS],
+    };
+}
+
+/// Front and back polygon modes. GL default: FILL, FILL.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct PolygonModes {
+    pub front: PolygonMode,
+    pub back: PolygonMode,
+}
+
+/// One texture unit's state (apart from its matrix stack).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TextureUnit {
+    /// TEXTURE_1D enable. GL default: FALSE.
+    pub texture_1d: bool,
+    /// TEXTURE_2D enable. GL default: FALSE.
+    pub texture_2d: bool,
+    /// Names bound to TEXTURE_1D and TEXTURE_2D. GL default: 0 (the default textures).
+    pub bound_1d: u32,
+    pub bound_2d: u32,
+    /// GL default: [`TexEnv::DEFAULT`].
+    pub env: TexEnv,
+    /// S, T, R, Q. GL default: disabled, EYE_LINEAR, planes per [`TexGen::default_for`].
+    pub texgen: [Toggle<TexGen>; 4],
+}
+
+impl TextureUnit {
+    pub fn new() -> Self {
+        Self {
+            texture_1d: false,
+            texture_2d: false,
+            bound_1d: 0,
+            bound_2d: 0,
+            env: TexEnv::DEFAULT,
+            texgen: TexCoord::ALL.map(|c| Toggle::off(TexGen::default_for(c))),
+        }
+    }
+
+    /// The target that texturing uses: 2D wins over 1D (GL 1.5 §3.8.15); `None` = unit off.
+    pub fn enabled_target(&self) -> Option<TextureTarget> {
+        if self.texture_2d {
+            Some(TextureTarget::Texture2D)
+        } else if self.texture_1d {
+            Some(TextureTarget::Texture1D)
+        } else {
+            None
+        }
+    }
+
+    pub fn bound(&self, target: TextureTarget) -> u32 {
+        match target {
+            TextureTarget::Texture1D => self.bound_1d,
+            TextureTarget::Texture2D => self.bound_2d,
+        }
+    }
+
+    pub fn texgen(&self, coord: TexCoord) -> Option<TexGen> {
+        self.texgen[coord.index()].get()
+    }
+}
+
+impl Default for TextureUnit {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The whole fixed-function state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FixedState {
+    /// The sticky error flag (glGetError). GL default: NO_ERROR.
+    pub(crate) error: Option<GlError>,
+
+    /// GL default: MODELVIEW.
+    pub matrix_mode: MatrixMode,
+    /// Depth 32; GL default: one identity matrix.
+    pub modelview: MatrixStack,
+    /// Depth 2; GL default: one identity matrix.
+    pub projection: MatrixStack,
+    /// Depth 2 per unit; GL default: one identity matrix each.
+    pub texture_matrices: [MatrixStack; MAX_TEXTURE_UNITS],
+    /// GL default: the window; here (0, 0, 0, 0) until set.
+    pub viewport: Viewport,
+    /// GL default: [0, 1].
+    pub depth_range: DepthRange,
+
+    pub current: CurrentValues,
+
+    /// LIGHTING. GL default: FALSE.
+    pub lighting: bool,
+    /// LIGHT0..7. GL default: disabled, [`Light::default_for`].
+    pub lights: [Toggle<Light>; MAX_LIGHTS],
+    pub light_model: LightModel,
+    pub materials: Materials,
+    /// COLOR_MATERIAL. GL default: disabled, FRONT_AND_BACK, AMBIENT_AND_DIFFUSE.
+    pub color_material: Toggle<ColorMaterial>,
+    /// GL default: SMOOTH.
+    pub shade_model: ShadeModel,
+    /// NORMALIZE. GL default: FALSE.
+    pub normalize: bool,
+    /// RESCALE_NORMAL. GL default: FALSE.
+    pub rescale_normal: bool,
+
+    /// ACTIVE_TEXTURE as an index. GL default: 0 (TEXTURE0).
+    pub active_texture: usize,
+    pub units: [TextureUnit; MAX_TEXTURE_UNITS],
+    /// Texture objects by name (≠ 0), created by their first glBindTexture.
+    pub textures: BTreeMap<u32, TextureObject>,
+    /// The default (name 0) textures of TEXTURE_1D and TEXTURE_2D.
+    pub default_1d: TextureObject,
+    pub default_2d: TextureObject,
+
+    /// REGISTER_COMBINERS_NV. GL default: disabled, [`RegisterCombiners::DEFAULT`].
+    pub register_combiners: Toggle<RegisterCombiners>,
+
+    /// ALPHA_TEST. GL default: disabled, ALWAYS, 0.
+    pub alpha_test: Toggle<AlphaTest>,
+    /// DEPTH_TEST. GL default: disabled, LESS, mask TRUE.
+    pub depth_test: Toggle<DepthTest>,
+    /// STENCIL_TEST. GL default: disabled, [`StencilTest::DEFAULT`].
+    pub stencil_test: Toggle<StencilTest>,
+    /// BLEND. GL default: disabled, ONE, ZERO.
+    pub blend: Toggle<Blend>,
+    /// GL default: all TRUE.
+    pub color_mask: ColorMask,
+    /// GL default: factor 0, units 0.
+    pub polygon_offset: PolygonOffset,
+    /// POLYGON_OFFSET_FILL/LINE/POINT. GL default: all FALSE.
+    pub offset_enables: OffsetEnables,
+    /// GL default: FILL, FILL.
+    pub polygon_mode: PolygonModes,
+    /// CULL_FACE with glCullFace. GL default: disabled, BACK.
+    pub cull_face: Toggle<Face>,
+    /// GL default: CCW.
+    pub front_face: FrontFace,
+    /// GL default: 1.
+    pub line_width: f32,
+    /// GL default: 1.
+    pub point_size: f32,
+    /// GL default: colour (0,0,0,0), depth 1, stencil 0.
+    pub clear: ClearValues,
+}
+
+impl Default for FixedState {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl FixedState {
+    /// The GL initial state.
+    pub fn new() -> Self {
+        Self {
+            error: None,
+            matrix_mode: MatrixMode::Modelview,
+            modelview: MatrixStack::new(MODELVIEW_STACK_DEPTH),
+            projection: MatrixStack::new(PROJECTION_STACK_DEPTH),
+            texture_matrices: std::array::from_fn(|_| MatrixStack::new(TEXTURE_STACK_DEPTH)),
+            viewport: Viewport::default(),
+            depth_range: DepthRange::DEFAULT,
+            current: CurrentValues::DEFAULT,
+            lighting: false,
+            lights: std::array::from_fn(|i| Toggle::off(Light::default_for(i))),
+            light_model: LightModel::DEFAULT,
+            materials: Materials::DEFAULT,
+            color_material: Toggle::off(ColorMaterial::DEFAULT),
+            shade_model: ShadeModel::Smooth,
+            normalize: false,
+            rescale_normal: false,
+            active_texture: 0,
+            units: [TextureUnit::new(); MAX_TEXTURE_UNITS],
+            textures: BTreeMap::new(),
+            default_1d: TextureObject::new(TextureTarget::Texture1D),
+            default_2d: TextureObject::new(TextureTarget::Texture2D),
+            register_combiners: Toggle::off(RegisterCombiners::DEFAULT),
+            alpha_test: Toggle::off(AlphaTest::DEFAULT),
+            depth_test: Toggle::off(DepthTest::LESS_WRITE),
+            stencil_test: Toggle::off(StencilTest::DEFAULT),
+            blend: Toggle::off(Blend::ONE_ZERO),
+            color_mask: ColorMask::ALL,
+            polygon_offset: PolygonOffset {
+                factor: 0.0,
+                units: 0.0,
+            },
+            offset_enables: OffsetEnables::default(),
+            polygon_mode: PolygonModes {
+                front: PolygonMode::Fill,
+                back: PolygonMode::Fill,
+            },
+            cull_face: Toggle::off(Face::Back),
+            front_face: FrontFace::Ccw,
+            line_width: 1.0,
+            point_size: 1.0,
+            clear: ClearValues::DEFAULT,
+        }
+    }
+
+    /// glGetError without clearing: the first error since the last read.
+    pub fn error(&self) -> Option<GlError> {
+        self.error
+    }
+
+    /// glGetError: returns and clears the pending error.
+    pub fn take_error(&mut self) -> Option<GlError> {
+        self.error.take()
+    }
+
+    /// The active texture unit's index, always < MAX_TEXTURE_UNITS.
+    pub fn active_unit(&self) -> usize {
+        self.active_texture.min(MAX_TEXTURE_UNITS - 1)
+    }
+
+    /// The current modelview matrix.
+    pub fn modelview_matrix(&self) -> Mat4 {
+        self.modelview.top()
+    }
+
+    /// The current projection matrix.
+    pub fn projection_matrix(&self) -> Mat4 {
+        self.projection.top()
+    }
+
+    /// The current texture matrix of `unit` (identity for a unit out of range).
+    pub fn texture_matrix(&self, unit: usize) -> Mat4 {
+        self.texture_matrices
+            .get(unit)
+            .map_or(Mat4::IDENTITY, MatrixStack::top)
+    }
+
+    /// The texture object `name` of `target` (0 = the default texture).
+    pub fn texture(&self, target: TextureTarget, name: u32) -> Option<&TextureObject> {
+        match (name, target) {
+            (0, TextureTarget::Texture1D) => Some(&self.default_1d),
+            (0, TextureTarget::Texture2D) => Some(&self.default_2d),
+            _ => self.textures.get(&name).filter(|t| t.target == target),
+        }
+    }
+
+    pub(crate) fn texture_mut(
+        &mut self,
+        target: TextureTarget,
+        name: u32,
+    ) -> Option<&mut TextureObject> {
+        match (name, target) {
+            (0, TextureTarget::Texture1D) => Some(&mut self.default_1d),
+            (0, TextureTarget::Texture2D) => Some(&mut self.default_2d),
+            _ => self.textures.get_mut(&name).filter(|t| t.target == target),
+        }
+    }
+
+    /// The texture a unit samples when drawing: its enabled target's bound object.
+    pub fn enabled_texture(&self, unit: usize) -> Option<&TextureObject> {
+        let u = self.units.get(unit)?;
+        let target = u.enabled_target()?;
+        self.texture(target, u.bound(target))
+    }
+
+    /// The stack matrix commands act on (the texture stack of the active unit for TEXTURE).
+    pub(crate) fn current_stack_mut(&mut self) -> &mut MatrixStack {
+        match self.matrix_mode {
+            MatrixMode::Modelview => &mut self.modelview,
+            MatrixMode::Projection => &mut self.projection,
+            MatrixMode::Texture => &mut self.texture_matrices[self.active_unit()],
+        }
+    }
+}

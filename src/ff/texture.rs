@@ -1,0 +1,428 @@
+//! Texture objects, formats and parameters (GL 1.5 §3.8, ARB_depth_texture, ARB_shadow,
+//! ARB_shadow_ambient).
+//!
+//! The table maps a texture name (u32, as GL) to its target, parameters and mip levels.
+//! Name 0 is the default texture of each target. Pixel data is kept as the bytes of the
+//! upload (with their format and type) so a pipeline or a CPU model can read them; after a
+//! CopyTexImage2D, or a TexSubImage2D in another format/type, only the GPU copy is
+//! authoritative and `data` is `None`.
+
+use std::sync::Arc;
+
+use glam::Vec4;
+
+use super::error::{GlError, GlResult};
+use super::fragment::CompareFunc;
+
+/// GL_MAX_TEXTURE_SIZE assumed by validation (every GL 3.3 context has at least 1024; llvmpipe
+/// has 16384). Non-power-of-two sizes are accepted (a core context supports them).
+pub const MAX_TEXTURE_SIZE: i32 = 16384;
+/// Highest mip level accepted: log2(MAX_TEXTURE_SIZE).
+pub const MAX_TEXTURE_LEVEL: i32 = 14;
+
+/// Texture targets of the fixed-function pipeline.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum TextureTarget {
+    Texture1D,
+    Texture2D,
+}
+
+/// Sized internal formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum TexFormat {
+    Rgba8,
+    Rgb8,
+    Luminance8,
+    Intensity8,
+    Alpha8,
+    Luminance8Alpha8,
+    DepthComponent16,
+    DepthComponent24,
+    DepthComponent32F,
+}
+
+/// The base internal format, which decides how texenv treats a texel (GL 1.5 Table 3.23).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BaseFormat {
+    Alpha,
+    Luminance,
+    LuminanceAlpha,
+    Intensity,
+    Rgb,
+    Rgba,
+    Depth,
+}
+
+impl TexFormat {
+    pub fn base(self) -> BaseFormat {
+        match self {
+            TexFormat::Rgba8 => BaseFormat::Rgba,
+            TexFormat::Rgb8 => BaseFormat::Rgb,
+            TexFormat::Luminance8 => BaseFormat::Luminance,
+            TexFormat::Intensity8 => BaseFormat::Intensity,
+            TexFormat::Alpha8 => BaseFormat::Alpha,
+            TexFormat::Luminance8Alpha8 => BaseFormat::LuminanceAlpha,
+            TexFormat::DepthComponent16
+            | TexFormat::DepthComponent24
+            | TexFormat::DepthComponent32F => BaseFormat::Depth,
+        }
+    }
+
+    pub fn is_depth(self) -> bool {
+        self.base() == BaseFormat::Depth
+    }
+}
+
+/// The external format of pixel data (TexImage, TexSubImage, ReadPixels).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PixelFormat {
+    Rgba,
+    Rgb,
+    Luminance,
+    LuminanceAlpha,
+    Alpha,
+    DepthComponent,
+    StencilIndex,
+}
+
+impl PixelFormat {
+    /// Components per pixel.
+    pub fn components(self) -> usize {
+        match self {
+            PixelFormat::Rgba => 4,
+            PixelFormat::Rgb => 3,
+            PixelFormat::LuminanceAlpha => 2,
+            PixelFormat::Luminance
+            | PixelFormat::Alpha
+            | PixelFormat::DepthComponent
+            | PixelFormat::StencilIndex => 1,
+        }
+    }
+}
+
+/// The external component type of pixel data.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PixelType {
+    UnsignedByte,
+    UnsignedShort,
+    UnsignedInt,
+    Float,
+}
+
+impl PixelType {
+    /// Bytes per component.
+    pub fn size(self) -> usize {
+        match self {
+            PixelType::UnsignedByte => 1,
+            PixelType::UnsignedShort => 2,
+            PixelType::UnsignedInt | PixelType::Float => 4,
+        }
+    }
+}
+
+/// Bytes of a tightly packed `width × height` image (UNPACK/PACK_ALIGNMENT 1 assumed; the
+/// pipelines set it).
+pub fn image_size(format: PixelFormat, ty: PixelType, width: i32, height: i32) -> usize {
+    let w = width.max(0) as usize;
+    let h = height.max(0) as usize;
+    w * h * format.components() * ty.size()
+}
+
+/// Minification and magnification filters. Mag accepts NEAREST and LINEAR only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Filter {
+    Nearest,
+    Linear,
+    NearestMipmapNearest,
+    LinearMipmapNearest,
+    NearestMipmapLinear,
+    LinearMipmapLinear,
+}
+
+impl Filter {
+    pub fn uses_mipmaps(self) -> bool {
+        !matches!(self, Filter::Nearest | Filter::Linear)
+    }
+}
+
+/// Wrap modes. CLAMP blends with the border colour at the edge under LINEAR; CLAMP_TO_EDGE
+/// never samples the border; CLAMP_TO_BORDER samples only the border outside [0, 1].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Wrap {
+    Repeat,
+    Clamp,
+    ClampToEdge,
+    ClampToBorder,
+}
+
+/// TEXTURE_COMPARE_MODE (ARB_shadow).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CompareMode {
+    None,
+    /// Compare r (clamped to [0, 1] after the divide by q) with the depth texel.
+    CompareRToTexture,
+}
+
+/// DEPTH_TEXTURE_MODE (ARB_depth_texture): how a depth (or compare) result L becomes a texel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DepthTextureMode {
+    /// (L, L, L, 1)
+    Luminance,
+    /// (L, L, L, L)
+    Intensity,
+    /// (0, 0, 0, L)
+    Alpha,
+}
+
+/// One glTexParameter with its value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TexParam {
+    MinFilter(Filter),
+    /// NEAREST or LINEAR, else INVALID_ENUM.
+    MagFilter(Filter),
+    WrapS(Wrap),
+    WrapT(Wrap),
+    BorderColor(Vec4),
+    CompareMode(CompareMode),
+    CompareFunc(CompareFunc),
+    DepthTextureMode(DepthTextureMode),
+    /// TEXTURE_COMPARE_FAIL_VALUE_ARB, clamped to [0, 1].
+    CompareFailValue(f32),
+    /// GENERATE_MIPMAP (GL 1.4).
+    GenerateMipmap(bool),
+}
+
+/// The parameters of one texture object.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TexParams {
+    /// GL default: NEAREST_MIPMAP_LINEAR.
+    pub min_filter: Filter,
+    /// GL default: LINEAR.
+    pub mag_filter: Filter,
+    /// GL default: REPEAT.
+    pub wrap_s: Wrap,
+    /// GL default: REPEAT.
+    pub wrap_t: Wrap,
+    /// Clamped to [0, 1]. GL default: (0, 0, 0, 0).
+    pub border_color: Vec4,
+    /// GL default: NONE.
+    pub compare_mode: CompareMode,
+    /// GL default: LEQUAL.
+    pub compare_func: CompareFunc,
+    /// GL default: LUMINANCE.
+    pub depth_texture_mode: DepthTextureMode,
+    /// The result of a failed compare (ARB_shadow_ambient). GL default: 0.
+    pub compare_fail_value: f32,
+    /// GL default: FALSE.
+    pub generate_mipmap: bool,
+}
+
+impl TexParams {
+    pub const DEFAULT: Self = Self {
+        min_filter: Filter::NearestMipmapLinear,
+        mag_filter: Filter::Linear,
+        wrap_s: Wrap::Repeat,
+        wrap_t: Wrap::Repeat,
+        border_color: Vec4::ZERO,
+        compare_mode: CompareMode::None,
+        compare_func: CompareFunc::Lequal,
+        depth_texture_mode: DepthTextureMode::Luminance,
+        compare_fail_value: 0.0,
+        generate_mipmap: false,
+    };
+
+    /// glTexParameter: validates, then sets.
+    pub fn set(&mut self, param: TexParam) -> GlResult {
+        match param {
+            TexParam::MinFilter(f) => self.min_filter = f,
+            TexParam::MagFilter(f) => {
+                if f.uses_mipmaps() {
+                    return Err(GlError::invalid_enum(
+                        "MAG_FILTER must be NEAREST or LINEAR",
+                    ));
+                }
+                self.mag_filter = f;
+            }
+            TexParam::WrapS(w) => self.wrap_s = w,
+            TexParam::WrapT(w) => self.wrap_t = w,
+            TexParam::BorderColor(c) => self.border_color = c.clamp(Vec4::ZERO, Vec4::ONE),
+            TexParam::CompareMode(m) => self.compare_mode = m,
+            TexParam::CompareFunc(f) => self.compare_func = f,
+            TexParam::DepthTextureMode(m) => self.depth_texture_mode = m,
+            TexParam::CompareFailValue(v) => self.compare_fail_value = v.clamp(0.0, 1.0),
+            TexParam::GenerateMipmap(b) => self.generate_mipmap = b,
+        }
+        Ok(())
+    }
+}
+
+/// Pixel bytes as uploaded, with their external format and type.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PixelData {
+    pub format: PixelFormat,
+    pub ty: PixelType,
+    pub bytes: Arc<[u8]>,
+}
+
+/// One mip level.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TexLevel {
+    pub internal_format: TexFormat,
+    pub width: i32,
+    /// 1 for 1D textures.
+    pub height: i32,
+    /// The CPU copy of the texels, when known (see the module note).
+    pub data: Option<PixelData>,
+}
+
+/// A texture object: what glBindTexture names.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TextureObject {
+    pub target: TextureTarget,
+    pub params: TexParams,
+    /// Index = mip level; `None` = level not specified.
+    pub levels: Vec<Option<TexLevel>>,
+}
+
+impl TextureObject {
+    pub fn new(target: TextureTarget) -> Self {
+        Self {
+            target,
+            params: TexParams::DEFAULT,
+            levels: Vec::new(),
+        }
+    }
+
+    pub fn level(&self, level: i32) -> Option<&TexLevel> {
+        usize::try_from(level)
+            .ok()
+            .and_then(|l| self.levels.get(l))
+            .and_then(Option::as_ref)
+    }
+
+    /// The base level's internal format, if specified.
+    pub fn format(&self) -> Option<TexFormat> {
+        self.level(0).map(|l| l.internal_format)
+    }
+
+    pub(crate) fn set_level(&mut self, level: i32, image: TexLevel) {
+        let Ok(l) = usize::try_from(level) else {
+            return;
+        };
+        if self.levels.len() <= l {
+            self.levels.resize(l + 1, None);
+        }
+        self.levels[l] = Some(image);
+    }
+
+    pub(crate) fn level_mut(&mut self, level: i32) -> Option<&mut TexLevel> {
+        usize::try_from(level)
+            .ok()
+            .and_then(|l| self.levels.get_mut(l))
+            .and_then(Option::as_mut)
+    }
+}
+
+/// The checks TexImage and CopyTexImage share (GL 1.5 §3.8.1, ARB_depth_texture):
+/// level in [0, MAX_TEXTURE_LEVEL], sizes in [0, MAX_TEXTURE_SIZE], border 0 (borders are not
+/// supported by a core context: INVALID_VALUE).
+pub fn check_image_size(level: i32, width: i32, height: i32, border: i32) -> GlResult {
+    if !(0..=MAX_TEXTURE_LEVEL).contains(&level) {
+        return Err(GlError::invalid_value(
+            "level must be in [0, log2(MAX_TEXTURE_SIZE)]",
+        ));
+    }
+    if !(0..=MAX_TEXTURE_SIZE).contains(&width) || !(0..=MAX_TEXTURE_SIZE).contains(&height) {
+        return Err(GlError::invalid_value(
+            "width and height must be in [0, MAX_TEXTURE_SIZE]",
+        ));
+    }
+    if border != 0 {
+        return Err(GlError::invalid_value(
+            "texture borders are not supported (border must be 0)",
+        ));
+    }
+    Ok(())
+}
+
+/// A depth internal format needs DEPTH_COMPONENT pixels and the other way round
+/// (ARB_depth_texture: INVALID_OPERATION); STENCIL_INDEX is never a texture format
+/// (INVALID_ENUM).
+pub fn check_format_pair(internal: TexFormat, format: PixelFormat) -> GlResult {
+    if format == PixelFormat::StencilIndex {
+        return Err(GlError::invalid_enum(
+            "STENCIL_INDEX is not a texture image format",
+        ));
+    }
+    if internal.is_depth() != (format == PixelFormat::DepthComponent) {
+        return Err(GlError::invalid_operation(
+            "depth internal formats need DEPTH_COMPONENT pixel data and vice versa",
+        ));
+    }
+    Ok(())
+}
+
+/// Copies a `w × h` block of `src` (rows of `w` pixels) into `dst` (rows of `dst_width`
+/// pixels) at (x, y); `pixel` bytes per pixel. Bounds are checked by the caller.
+pub(crate) fn blit(dst: &mut [u8], dst_width: usize, src: &[u8], rect: [usize; 4], pixel: usize) {
+    let [x, y, w, h] = rect;
+    for row in 0..h {
+        let s = row * w * pixel;
+        let d = ((y + row) * dst_width + x) * pixel;
+        if let (Some(from), Some(to)) = (src.get(s..s + w * pixel), dst.get_mut(d..d + w * pixel)) {
+            to.copy_from_slice(from);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults() {
+        let p = TexParams::DEFAULT;
+        assert_eq!(p.min_filter, Filter::NearestMipmapLinear);
+        assert_eq!(p.mag_filter, Filter::Linear);
+        assert_eq!(p.compare_func, CompareFunc::Lequal);
+        assert_eq!(p.depth_texture_mode, DepthTextureMode::Luminance);
+    }
+
+    #[test]
+    fn mag_filter_rejects_mipmaps_and_keeps_the_state() {
+        let mut p = TexParams::DEFAULT;
+        let e = p
+            .set(TexParam::MagFilter(Filter::LinearMipmapLinear))
+            .unwrap_err();
+        assert_eq!(e.kind, crate::ff::GlErrorKind::InvalidEnum);
+        assert_eq!(p, TexParams::DEFAULT);
+    }
+
+    #[test]
+    fn fail_value_and_border_are_clamped() {
+        let mut p = TexParams::DEFAULT;
+        p.set(TexParam::CompareFailValue(1.5)).unwrap();
+        p.set(TexParam::BorderColor(Vec4::splat(-1.0))).unwrap();
+        assert_eq!(p.compare_fail_value, 1.0);
+        assert_eq!(p.border_color, Vec4::ZERO);
+    }
+
+    #[test]
+    fn depth_format_pairs() {
+        assert!(
+            check_format_pair(TexFormat::DepthComponent24, PixelFormat::DepthComponent).is_ok()
+        );
+        assert!(check_format_pair(TexFormat::DepthComponent24, PixelFormat::Rgba).is_err());
+        assert!(check_format_pair(TexFormat::Intensity8, PixelFormat::DepthComponent).is_err());
+        assert!(
+            check_format_pair(TexFormat::Luminance8Alpha8, PixelFormat::LuminanceAlpha).is_ok()
+        );
+    }
+
+    #[test]
+    fn blit_patches_rows() {
+        let mut dst = vec![0u8; 4 * 3];
+        blit(&mut dst, 4, &[1, 2, 3, 4], [1, 1, 2, 2], 1);
+        assert_eq!(dst, [0, 0, 0, 0, 0, 1, 2, 0, 0, 3, 4, 0]);
+    }
+}
