@@ -81,7 +81,7 @@ pub fn aircraft(length: f32) -> Mesh {
             .map(|p| mirror(Vec2::from(*p)).into())
             .collect();
         mesh.append(&slab(&stab, 0.025, |x, z, y| Vec3::new(x, y, z)));
-        let fin = slab(&FIN, 0.025, |x, y, z| Vec3::new(x, y, z));
+        let fin = slab(&FIN, 0.025, Vec3::new);
         let place = Mat4::from_translation(Vec3::new(0.0, 0.2, 0.22 * side))
             * Mat4::from_rotation_x(side * FIN_CANT.to_radians());
         mesh.append(&fin.transformed(&place));

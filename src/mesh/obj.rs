@@ -37,7 +37,6 @@ pub fn load_obj_str(text: &str, path: &Path) -> Result<ObjMesh, MeshError> {
         single_index: true,
         ignore_points: true,
         ignore_lines: true,
-        ..Default::default()
     };
     let mut reader = std::io::BufReader::new(text.as_bytes());
     let (models, _materials) = tobj::load_obj_buf(&mut reader, &options, |_| {

@@ -168,7 +168,18 @@ pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError>
     };
     let start = Instant::now();
     let all = Accel::build(scene, |_| true);
-    let casters = Accel::build(scene, |o| o.casts);
+    // When every object casts, the shadow rays use the primary BVH: one build, not two.
+    let every_object_casts = scene.objects.iter().all(|o| o.casts);
+    let casters_only = if every_object_casts {
+        None
+    } else {
+        Accel::build(scene, |o| o.casts)
+    };
+    let casters = if every_object_casts {
+        all.as_ref()
+    } else {
+        casters_only.as_ref()
+    };
     let build = start.elapsed();
     let (w, h) = (scene.image.width, scene.image.height);
     let epsilon = OFFSET * scene_radius(scene);
@@ -202,7 +213,7 @@ pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError>
         .enumerate()
         .map(|(i, hit)| match hit {
             None => (BACKGROUND, 0.0, 0),
-            Some(hit) => shade(hit, emitter, casters.as_ref(), epsilon, side, i as u32),
+            Some(hit) => shade(hit, emitter, casters, epsilon, side, i as u32),
         })
         .collect();
     let shadow = start.elapsed();
