@@ -56,7 +56,7 @@ impl Geometry {
     /// (INVALID_VALUE: GL cannot check client arrays, we can).
     pub fn validate(&self) -> GlResult {
         let n = self.positions.len();
-        let same = |len: Option<usize>| len.map_or(true, |l| l == n);
+        let same = |len: Option<usize>| len.is_none_or(|l| l == n);
         let ok = same(self.normals.as_ref().map(Vec::len))
             && same(self.colors.as_ref().map(Vec::len))
             && self

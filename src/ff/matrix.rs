@@ -265,7 +265,7 @@ mod tests {
             far: 9.0,
         };
         let ours = ortho(v).unwrap();
-        let glam = Mat4::orthographic_rh_gl(-2.0, 3.0, -1.0, 4.0, 0.5, 9.0);
+        let glam = glam::camera::rh::proj::opengl::orthographic(-2.0, 3.0, -1.0, 4.0, 0.5, 9.0);
         assert!(ours.abs_diff_eq(glam, 1e-6));
     }
 

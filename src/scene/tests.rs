@@ -1,0 +1,215 @@
+//! Table tests of the scene errors: each bad input names its line, key and alternatives.
+
+use super::*;
+use std::path::Path;
+
+fn parse(text: &str) -> Result<Scene, SceneError> {
+    Scene::parse(text, Path::new("test.toml"), KNOWN_TECHNIQUES)
+}
+
+const CAMERA: &str = "[camera]\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 45\nnear = 1\nfar = 10\n";
+
+#[test]
+fn default_file_equals_built_in() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets");
+    let file = Scene::load(&dir.join("default.toml")).expect("default.toml loads");
+    assert_eq!(file, Scene::default_scene());
+}
+
+#[test]
+fn example_scenes_load() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets");
+    for name in ["default", "teapot", "aircraft", "near-plane", "obj"] {
+        let scene = Scene::load(&dir.join(format!("{name}.toml")))
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(
+            !scene.objects.is_empty() && !scene.lights.is_empty(),
+            "{name}"
+        );
+        assert!(scene.warnings.is_empty(), "{name}: {:?}", scene.warnings);
+    }
+}
+
+#[test]
+fn minimal_scene_takes_defaults() {
+    let scene = parse(CAMERA).expect("parses");
+    assert_eq!(scene.shadow, ShadowSettings::default());
+    assert!(scene.objects.is_empty());
+    assert_eq!(scene.image, Scene::default_scene().image);
+}
+
+/// (name, scene text, expected line, words the message must contain)
+const BAD: &[(&str, &str, usize, &[&str])] = &[
+    ("syntax", "[camera\n", 1, &["test.toml:1"]),
+    ("unknown field", "[camera]\neye = [0,0,5]\nat = [0,0,0]\nfov = 45\n", 4, &["fov", "fovy", "ortho"]),
+    ("unknown table", "[lights]\n", 1, &["lights", "light", "object"]),
+    ("wrong type", "[image]\nwidth = \"wide\"\n", 2, &["width"]),
+    ("negative count", "[image]\nwidth = -3\n", 2, &["-3"]),
+    ("zero width", "[image]\nwidth = 0\n", 2, &["image.width", "at least 1"]),
+    ("unknown shape", "[[object]]\nshape = \"cone\"\n", 2, &["cone", "sphere", "teapot"]),
+    ("unknown technique", "[shadow]\n\ntechnique = \"magic\"\n", 3, &["shadow.technique", "magic", "none"]),
+    ("unknown precision", "[shadow]\nprecision = \"half\"\n", 2, &["half", "float", "fixed8"]),
+    ("depth bits", "[shadow]\ndepth_bits = 8\n", 2, &["depth_bits", "16", "24", "32f"]),
+    ("zero radius", "[[object]]\nshape = \"sphere\"\nradius = 0\n", 3, &["object[0].radius", "greater than zero"]),
+    ("negative size", "[[object]]\nshape = \"plane\"\nsize = -2\n", 3, &["object[0].size", "-2"]),
+    ("negative box", "[[object]]\nshape = \"box\"\nsize = [1, -1, 1]\n", 3, &["object[0].size"]),
+    ("zero tessellation", "[[object]]\nshape = \"plane\"\ntessellation = 0\n", 3, &["tessellation", "at least 1"]),
+    ("coarse sphere", "[[object]]\nshape = \"sphere\"\nslices = 2\n", 3, &["slices", "at least 3"]),
+    ("key not for shape", "[[object]]\nshape = \"box\"\nradius = 1\n", 3, &["object[0].radius", "box", "size"]),
+    ("shape and mesh", "[[object]]\nshape = \"box\"\nmesh = \"a.obj\"\n", 3, &["mesh", "shape"]),
+    ("no shape", "\n[[object]]\ncolour = [1, 0, 0]\n", 2, &["object[0].shape", "mesh"]),
+    ("nan", "[[object]]\nshape = \"sphere\"\nradius = nan\n", 3, &["radius", "finite"]),
+    ("inf translate", "[[object]]\nshape = \"box\"\ntranslate = [0, inf, 0]\n", 3, &["translate", "finite"]),
+    ("near >= far", "[camera]\neye = [0,0,5]\nat = [0,0,0]\nfovy = 45\nnear = 10\nfar = 10\n", 6, &["camera.far", "near (10)"]),
+    ("fovy 180", "[camera]\neye = [0,0,5]\nat = [0,0,0]\nfovy = 180\nnear = 1\nfar = 10\n", 4, &["camera.fovy", "(0, 180)"]),
+    ("fovy 0", "[camera]\neye = [0,0,5]\nat = [0,0,0]\nfovy = 0\nnear = 1\nfar = 10\n", 4, &["camera.fovy"]),
+    ("up along view", "[camera]\neye = [0,5,0]\nat = [0,0,0]\nup = [0,1,0]\nfovy = 45\nnear = 1\nfar = 10\n", 4, &["camera.up", "parallel"]),
+    ("eye at target", "[camera]\neye = [0,0,0]\nat = [0,0,0]\nfovy = 45\nnear = 1\nfar = 10\n", 3, &["camera.at", "zero"]),
+    ("fovy and ortho", "[camera]\neye = [0,0,5]\nat = [0,0,0]\nfovy = 45\northo = { left = -1, right = 1, bottom = -1, top = 1 }\nnear = 1\nfar = 10\n", 4, &["ortho"]),
+    ("empty ortho", "[camera]\neye = [0,0,5]\nat = [0,0,0]\northo = { left = 1, right = 1, bottom = -1, top = 1 }\nnear = 1\nfar = 10\n", 4, &["camera.ortho"]),
+    ("light near >= far", "[[light]]\ntype = \"spot\"\nposition = [0,5,1]\nat = [0,0,0]\nnear = 30\nfar = 24\n", 6, &["light[0].far"]),
+    ("light missing position", "[[light]]\ntype = \"point\"\nat = [0,0,0]\n", 1, &["light[0].position", "point light"]),
+    ("light key not for type", "[[light]]\ntype = \"point\"\nposition = [0,5,1]\nat = [0,0,0]\ncutoff = 30\n", 5, &["light[0].cutoff", "point light", "position"]),
+    ("unknown light type", "[[light]]\ntype = \"laser\"\n", 2, &["laser", "spot", "area"]),
+    ("directional zero", "[[light]]\ntype = \"directional\"\ndirection = [0,0,0]\n", 3, &["direction", "zero"]),
+    ("area without at", "[[light]]\ntype = \"area\"\ncentre = [0,5,0]\nsize = [1,1]\n", 1, &["light[0].at"]),
+    ("missing obj", "[[object]]\nmesh = \"does-not-exist.obj\"\n", 2, &["object[0].mesh", "does-not-exist.obj"]),
+    ("shininess", "[[object]]\nshape = \"box\"\nshininess = 200\n", 3, &["shininess", "128"]),
+];
+
+#[test]
+fn every_bad_input_names_its_line_and_alternatives() {
+    for (name, text, line, words) in BAD {
+        let err = match parse(text) {
+            Ok(_) => panic!("{name}: accepted"),
+            Err(e) => e,
+        };
+        let msg = err.to_string();
+        let at = err
+            .location()
+            .unwrap_or_else(|| panic!("{name}: no location in {msg}"));
+        assert_eq!(
+            (at.file.as_str(), at.line),
+            ("test.toml", *line),
+            "{name}: {msg}"
+        );
+        for w in *words {
+            assert!(msg.contains(w), "{name}: `{w}` missing from: {msg}");
+        }
+    }
+}
+
+#[test]
+fn obj_files_resolve_relative_and_report_degenerate_faces() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\n";
+    std::fs::write(dir.path().join("tri.obj"), obj).expect("write obj");
+    std::fs::write(dir.path().join("empty.obj"), "v 0 0 0\n").expect("write obj");
+    let origin = dir.path().join("scene.toml");
+    let text = "[[object]]\nmesh = \"tri.obj\"\n";
+    let scene = Scene::parse(text, &origin, KNOWN_TECHNIQUES).expect("loads");
+    assert_eq!(scene.objects[0].mesh.triangle_count(), 1);
+    assert_eq!(scene.warnings.len(), 1);
+    assert_eq!(
+        scene.warnings[0].kind,
+        WarningKind::DegenerateFaces { count: 1 }
+    );
+    assert_eq!(scene.warnings[0].at.line, 2);
+    let err = Scene::parse(
+        "[[object]]\nmesh = \"empty.obj\"\n",
+        &origin,
+        KNOWN_TECHNIQUES,
+    )
+    .expect_err("no faces");
+    assert!(err.to_string().contains("no faces"), "{err}");
+}
+
+#[test]
+fn techniques_come_from_the_list_passed_in() {
+    let text = "[shadow]\ntechnique = \"depth-compare\"\n";
+    assert!(parse(text).is_err());
+    let known = ["none", "depth-compare"];
+    let scene = Scene::parse(text, Path::new("t.toml"), &known).expect("known");
+    assert_eq!(scene.shadow.technique, "depth-compare");
+}
+
+#[test]
+fn shadow_table_values() {
+    let text = "[shadow]\nmap_size = 512\ndepth_bits = \"32f\"\npolygon_offset = { factor = 1.5, units = 4 }\nprecision = \"fixed8\"\nreadback = \"round\"\n";
+    let s = parse(text).expect("parses").shadow;
+    assert_eq!(s.map_size, 512);
+    assert_eq!(s.depth, DepthBits::D32F);
+    assert_eq!(
+        s.polygon_offset,
+        Some(PolygonOffset {
+            factor: 1.5,
+            units: 4.0
+        })
+    );
+    assert_eq!(
+        (s.precision, s.readback),
+        (Precision::Fixed8, ReadbackRule::Round)
+    );
+    assert_eq!(
+        parse("[shadow]\ndepth_bits = 16\n")
+            .expect("16")
+            .shadow
+            .depth,
+        DepthBits::D16
+    );
+}
+
+#[test]
+fn lights_of_every_kind() {
+    let text = r#"
+[[light]]
+type = "point"
+position = [0, 10, 0]
+at = [0, 0, 0]
+[[light]]
+type = "directional"
+direction = [0, -1, 0.5]
+[[light]]
+type = "area"
+corner = [-1, 8, -1]
+edge_u = [2, 0, 0]
+edge_v = [0, 0, 2]
+[[light]]
+type = "area"
+centre = [0, 8, 0]
+size = [2, 1]
+at = [0, 0, 0]
+"#;
+    let scene = parse(text).expect("parses");
+    assert_eq!(scene.lights.len(), 4);
+    assert_eq!(
+        scene.lights[0].view.up,
+        -glam::Vec3::Z,
+        "looking down ±y picks −z as up"
+    );
+    let LightKind::Area {
+        corner,
+        edge_u,
+        edge_v,
+    } = scene.lights[3].kind
+    else {
+        panic!("area");
+    };
+    assert!((corner + 0.5 * (edge_u + edge_v) - glam::Vec3::new(0.0, 8.0, 0.0)).length() < 1e-5);
+    assert!((edge_u.length() - 2.0).abs() < 1e-5 && (edge_v.length() - 1.0).abs() < 1e-5);
+    assert_eq!(
+        scene.lights[2].position(),
+        Some(glam::Vec3::new(0.0, 8.0, 0.0))
+    );
+}
+
+#[test]
+fn no_input_panics() {
+    // Truncations of a valid scene at every byte: errors, never panics.
+    let text =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/default.toml"))
+            .expect("read");
+    for end in (0..text.len()).filter(|&i| text.is_char_boundary(i)) {
+        let _ = parse(&text[..end]);
+    }
+}

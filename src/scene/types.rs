@@ -1,0 +1,324 @@
+//! The validated scene: every number finite and in range, every mesh loaded.
+
+use crate::mesh::{self, Mesh};
+use glam::{Mat4, Vec3};
+use serde::Deserialize;
+use std::path::PathBuf;
+
+use super::error::SceneWarning;
+
+/// A parsed, validated scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    pub camera: Camera,
+    pub image: ImageSpec,
+    pub lights: Vec<Light>,
+    pub objects: Vec<Object>,
+    pub shadow: ShadowSettings,
+    /// What loading accepted but dropped (e.g. degenerate OBJ faces).
+    pub warnings: Vec<SceneWarning>,
+}
+
+/// A gluLookAt view with a gluPerspective or glOrtho projection. Also a light's
+/// shadow-map view.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Camera {
+    pub eye: Vec3,
+    pub at: Vec3,
+    pub up: Vec3,
+    pub projection: Projection,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Projection {
+    /// gluPerspective(fovy, aspect, near, far), fovy in degrees.
+    Perspective { fovy: f32, near: f32, far: f32 },
+    /// glOrtho(left, right, bottom, top, near, far).
+    Orthographic {
+        left: f32,
+        right: f32,
+        bottom: f32,
+        top: f32,
+        near: f32,
+        far: f32,
+    },
+}
+
+impl Camera {
+    /// gluLookAt(eye, at, up).
+    pub fn view(&self) -> Mat4 {
+        glam::camera::rh::view::look_at_mat4(self.eye, self.at, self.up)
+    }
+
+    /// The projection matrix for a viewport of `aspect` = width / height (GL clip space,
+    /// z in [−w, w]).
+    pub fn projection_matrix(&self, aspect: f32) -> Mat4 {
+        match self.projection {
+            Projection::Perspective { fovy, near, far } => {
+                glam::camera::rh::proj::opengl::perspective(fovy.to_radians(), aspect, near, far)
+            }
+            Projection::Orthographic {
+                left,
+                right,
+                bottom,
+                top,
+                near,
+                far,
+            } => glam::camera::rh::proj::opengl::orthographic(left, right, bottom, top, near, far),
+        }
+    }
+}
+
+/// The output image.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ImageSpec {
+    pub width: u32,
+    pub height: u32,
+    /// Clear colour, RGB in [0, 1].
+    pub background: Vec3,
+}
+
+/// A light and the view its shadow map is rendered from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Light {
+    pub kind: LightKind,
+    /// The shadow map's view: from the light's position (or the area light's centre, or a
+    /// point back along a directional light) towards its target.
+    pub view: Camera,
+    pub colour: Vec3,
+    pub intensity: f32,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LightKind {
+    /// An omnidirectional light at `view.eye`.
+    Point,
+    /// A spot light at `view.eye` aimed at `view.at`; GL_SPOT_CUTOFF and GL_SPOT_EXPONENT.
+    Spot { cutoff: f32, exponent: f32 },
+    /// Light travelling along `direction` (GL position w = 0, pointing at −direction).
+    Directional { direction: Vec3 },
+    /// A rectangle corner + s·edge_u + t·edge_v, s, t ∈ [0, 1], emitting on both sides.
+    Area {
+        corner: Vec3,
+        edge_u: Vec3,
+        edge_v: Vec3,
+    },
+}
+
+impl Light {
+    /// The point the hard shadow is cast from: the position, or an area light's centre;
+    /// `None` for a directional light.
+    pub fn position(&self) -> Option<Vec3> {
+        match self.kind {
+            LightKind::Point | LightKind::Spot { .. } => Some(self.view.eye),
+            LightKind::Area {
+                corner,
+                edge_u,
+                edge_v,
+            } => Some(corner + 0.5 * (edge_u + edge_v)),
+            LightKind::Directional { .. } => None,
+        }
+    }
+}
+
+/// A shape with its parameters, as written in the scene.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    Plane {
+        size: f32,
+        tessellation: u32,
+    },
+    Box {
+        size: Vec3,
+    },
+    Sphere {
+        radius: f32,
+        slices: u32,
+        stacks: u32,
+    },
+    Torus {
+        major_radius: f32,
+        minor_radius: f32,
+        rings: u32,
+        sides: u32,
+    },
+    Teapot {
+        size: f32,
+        tessellation: u32,
+    },
+    Aircraft {
+        length: f32,
+    },
+    /// An OBJ file, resolved against the scene file's folder.
+    Obj {
+        path: PathBuf,
+    },
+}
+
+impl Shape {
+    /// The object-space mesh of a procedural shape (`None` for an OBJ, which the loader
+    /// reads).
+    pub fn procedural_mesh(&self) -> Option<Mesh> {
+        Some(match *self {
+            Shape::Plane { size, tessellation } => mesh::plane(size, tessellation),
+            Shape::Box { size } => mesh::cuboid(size),
+            Shape::Sphere {
+                radius,
+                slices,
+                stacks,
+            } => mesh::sphere(radius, slices, stacks),
+            Shape::Torus {
+                major_radius,
+                minor_radius,
+                rings,
+                sides,
+            } => mesh::torus(major_radius, minor_radius, rings, sides),
+            Shape::Teapot { size, tessellation } => mesh::teapot(size, tessellation),
+            Shape::Aircraft { length } => mesh::aircraft(length),
+            Shape::Obj { .. } => return None,
+        })
+    }
+}
+
+/// glTranslate(translate) · glRotate(r₁) · glRotate(r₂) · … · glScale(scale).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Transform {
+    pub translate: Vec3,
+    pub rotate: Vec<Rotation>,
+    pub scale: Vec3,
+}
+
+impl Default for Transform {
+    fn default() -> Self {
+        Transform {
+            translate: Vec3::ZERO,
+            rotate: Vec::new(),
+            scale: Vec3::ONE,
+        }
+    }
+}
+
+/// glRotate(degrees, axis); the axis is normalised.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rotation {
+    pub axis: Vec3,
+    pub degrees: f32,
+}
+
+impl Transform {
+    /// M = T · R₁ · R₂ · … · S.
+    pub fn matrix(&self) -> Mat4 {
+        let rotation = self.rotate.iter().fold(Mat4::IDENTITY, |m, r| {
+            m * Mat4::from_axis_angle(r.axis, r.degrees.to_radians())
+        });
+        Mat4::from_translation(self.translate) * rotation * Mat4::from_scale(self.scale)
+    }
+}
+
+/// Fixed-function material.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    /// GL_AMBIENT_AND_DIFFUSE, RGB. Default 0.8 grey (GL's diffuse default).
+    pub colour: Vec3,
+    /// GL_SPECULAR, RGB. Default black.
+    pub specular: Vec3,
+    /// GL_SHININESS in [0, 128]. Default 0.
+    pub shininess: f32,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            colour: Vec3::splat(0.8),
+            specular: Vec3::ZERO,
+            shininess: 0.0,
+        }
+    }
+}
+
+/// One object of the scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Object {
+    pub name: Option<String>,
+    pub shape: Shape,
+    /// The shape's mesh in object space.
+    pub mesh: Mesh,
+    pub transform: Transform,
+    pub material: Material,
+    /// Whether it casts shadows (is drawn into shadow maps and occludes in the truth).
+    pub casts: bool,
+    /// Whether shadows fall on it.
+    pub receives: bool,
+}
+
+impl Object {
+    /// The mesh in world space.
+    pub fn world_mesh(&self) -> Mesh {
+        self.mesh.transformed(&self.transform.matrix())
+    }
+}
+
+/// Depth format of the light's buffer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DepthBits {
+    D16,
+    D24,
+    D32F,
+}
+
+/// Arithmetic of the texture and combiner stages (see DESIGN: "Precision is a mode").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Precision {
+    /// What Mesa's native fixed-function path does on llvmpipe.
+    Float,
+    /// 8-bit era integer combiners.
+    Fixed8,
+}
+
+/// Depth → UNSIGNED_BYTE/SHORT readback conversion.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ReadbackRule {
+    /// floor(255·z) (Mesa's ubyte path).
+    Truncate,
+    /// round(65535·z) (Mesa's ushort path).
+    Round,
+}
+
+/// glPolygonOffset(factor, units) for the light pass.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PolygonOffset {
+    pub factor: f32,
+    pub units: f32,
+}
+
+/// The `[shadow]` table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShadowSettings {
+    /// One of the names the scene was validated against (`KNOWN_TECHNIQUES` by default).
+    pub technique: String,
+    /// Shadow map edge in texels. Default 256 (mesa-demos shadowtex).
+    pub map_size: u32,
+    /// Default D24.
+    pub depth: DepthBits,
+    /// `None`: no offset.
+    pub polygon_offset: Option<PolygonOffset>,
+    /// Default Float.
+    pub precision: Precision,
+    /// Default Truncate.
+    pub readback: ReadbackRule,
+}
+
+impl Default for ShadowSettings {
+    fn default() -> Self {
+        ShadowSettings {
+            technique: "none".to_string(),
+            map_size: 256,
+            depth: DepthBits::D24,
+            polygon_offset: None,
+            precision: Precision::Float,
+            readback: ReadbackRule::Truncate,
+        }
+    }
+}

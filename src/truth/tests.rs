@@ -1,0 +1,345 @@
+//! Analytic cases for the ground truth.
+
+use super::*;
+use crate::metrics::Class;
+use crate::scene::{
+    Camera, ImageSpec, Light, Material, Object, Projection, ShadowSettings, Shape, Transform,
+};
+
+fn object(shape: Shape, translate: Vec3, casts: bool) -> Object {
+    Object {
+        name: None,
+        mesh: shape.procedural_mesh().unwrap_or_default(),
+        shape,
+        transform: Transform {
+            translate,
+            ..Transform::default()
+        },
+        material: Material::default(),
+        casts,
+        receives: true,
+    }
+}
+
+/// A camera looking straight down on the y = 0 plane through an orthographic box of
+/// half-size `half`: pixel centres land on a regular grid of the plane.
+fn top_down(size: u32, half: f32, lights: Vec<Light>, objects: Vec<Object>) -> Scene {
+    Scene {
+        camera: Camera {
+            eye: Vec3::new(0.0, 10.0, 0.0),
+            at: Vec3::ZERO,
+            up: -Vec3::Z,
+            projection: Projection::Orthographic {
+                left: -half,
+                right: half,
+                bottom: -half,
+                top: half,
+                near: 1.0,
+                far: 20.0,
+            },
+        },
+        image: ImageSpec {
+            width: size,
+            height: size,
+            background: Vec3::ZERO,
+        },
+        lights,
+        objects,
+        shadow: ShadowSettings::default(),
+        warnings: Vec::new(),
+    }
+}
+
+fn point_light(p: Vec3) -> Light {
+    Light {
+        kind: LightKind::Point,
+        view: Camera {
+            eye: p,
+            at: Vec3::ZERO,
+            up: Vec3::Z,
+            projection: Projection::Perspective {
+                fovy: 90.0,
+                near: 1.0,
+                far: 50.0,
+            },
+        },
+        colour: Vec3::ONE,
+        intensity: 1.0,
+    }
+}
+
+#[test]
+fn square_occluder_shadow_matches_projection() {
+    // Light at height 8 above the origin, square of side 2 at height 4: the shadow on the
+    // ground is the square scaled by 8 / (8 − 4) = 2, side 4 → 16 square units.
+    let occluder = object(
+        Shape::Box {
+            size: Vec3::new(2.0, 0.001, 2.0),
+        },
+        Vec3::new(0.0, 4.0, 0.0),
+        true,
+    );
+    let ground = object(
+        Shape::Plane {
+            size: 10.0,
+            tessellation: 4,
+        },
+        Vec3::ZERO,
+        true,
+    );
+    let (size, half) = (200u32, 5.0f32);
+    let mut scene = top_down(
+        size,
+        half,
+        vec![point_light(Vec3::new(0.0, 8.0, 0.0))],
+        vec![ground, occluder],
+    );
+    // Look from below the occluder so the primary rays see the ground only.
+    scene.camera.eye = Vec3::new(0.0, 3.0, 0.0);
+    scene.camera.projection = Projection::Orthographic {
+        left: -half,
+        right: half,
+        bottom: -half,
+        top: half,
+        near: 0.5,
+        far: 20.0,
+    };
+    let t = truth(&scene, &TruthOptions::default()).expect("truth");
+    let pixel = 2.0 * half / size as f32;
+    let shadowed = t.mask.data.iter().filter(|&&v| v == SHADOWED).count();
+    let expected = 16.0 / (pixel * pixel);
+    // Within one pixel row along the perimeter: |Δ| ≤ perimeter / pixel = 4·4 / pixel.
+    let tolerance = 16.0 / pixel;
+    assert!(
+        (shadowed as f32 - expected).abs() <= tolerance,
+        "{shadowed} vs {expected} ± {tolerance}"
+    );
+    assert!(t.mask.data.iter().all(|&v| v != BACKGROUND));
+}
+
+#[test]
+fn sphere_terminator_is_where_n_dot_l_is_zero() {
+    // A finely tessellated unit sphere lit from +x by a distant directional light, seen from
+    // +y: lit where n · L > 0 (x > 0 on the visible hemisphere), shadowed where < 0.
+    let sphere = object(
+        Shape::Sphere {
+            radius: 1.0,
+            slices: 256,
+            stacks: 128,
+        },
+        Vec3::ZERO,
+        true,
+    );
+    let light = Light {
+        kind: LightKind::Directional {
+            direction: -Vec3::X,
+        },
+        view: Camera {
+            eye: Vec3::new(10.0, 0.0, 0.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+            projection: Projection::Perspective {
+                fovy: 30.0,
+                near: 1.0,
+                far: 20.0,
+            },
+        },
+        colour: Vec3::ONE,
+        intensity: 1.0,
+    };
+    let size = 128u32;
+    let scene = top_down(size, 1.0, vec![light], vec![sphere]);
+    let t = truth(&scene, &TruthOptions::default()).expect("truth");
+    let mut checked = 0;
+    for y in 0..size {
+        for x in 0..size {
+            let px = -1.0 + 2.0 * (x as f32 + 0.5) / size as f32;
+            let pz = -1.0 + 2.0 * (y as f32 + 0.5) / size as f32;
+            let r2 = px * px + pz * pz;
+            if r2 > 0.95 {
+                continue;
+            }
+            let n = Vec3::new(px, (1.0 - r2).sqrt(), pz);
+            let ndotl = n.x;
+            let class = t.mask.class(x, y);
+            if ndotl > 0.03 {
+                assert_eq!(class, Class::Lit, "({x}, {y}) n·L = {ndotl}");
+                checked += 1;
+            } else if ndotl < -0.03 {
+                assert_eq!(class, Class::Shadowed, "({x}, {y}) n·L = {ndotl}");
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 10_000, "{checked}");
+}
+
+#[test]
+fn shadow_edge_decided_the_same_every_run() {
+    // The occluder's edge projects exactly onto a column of pixel centres: x = 0 on the
+    // ground under a light straight above the edge. Repeated runs and thread counts agree.
+    let occluder = object(
+        Shape::Box {
+            size: Vec3::new(2.0, 0.001, 2.0),
+        },
+        Vec3::new(1.0, 2.0, 0.0),
+        true,
+    );
+    let ground = object(
+        Shape::Plane {
+            size: 4.0,
+            tessellation: 1,
+        },
+        Vec3::ZERO,
+        true,
+    );
+    let mut scene = top_down(
+        33,
+        2.0 * 33.0 / 32.0,
+        vec![point_light(Vec3::new(0.0, 4.0, 0.0))],
+        vec![ground, occluder],
+    );
+    scene.camera.eye = Vec3::new(0.0, 1.0, 0.0);
+    let reference = truth(&scene, &TruthOptions::default()).expect("truth");
+    for threads in [1, 2, 3] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("pool");
+        for _ in 0..3 {
+            let again = pool
+                .install(|| truth(&scene, &TruthOptions::default()))
+                .expect("truth");
+            assert_eq!(again.mask, reference.mask, "{threads} threads");
+            assert_eq!(again.visibility, reference.visibility);
+        }
+    }
+}
+
+#[test]
+fn backgrounds_facing_away_and_non_casters() {
+    let ground = object(
+        Shape::Plane {
+            size: 2.0,
+            tessellation: 1,
+        },
+        Vec3::ZERO,
+        true,
+    );
+    let mut blocker = object(
+        Shape::Box {
+            size: Vec3::splat(3.0),
+        },
+        Vec3::new(0.0, 4.0, 0.0),
+        false,
+    );
+    blocker.receives = false;
+    let mut scene = top_down(
+        16,
+        2.0,
+        vec![point_light(Vec3::new(0.0, 8.0, 0.0))],
+        vec![ground],
+    );
+    scene.camera.eye = Vec3::new(0.0, 2.0, 0.0);
+    let lit = truth(&scene, &TruthOptions::default()).expect("truth");
+    assert_eq!(
+        lit.mask.class(0, 0),
+        Class::Background,
+        "corner beyond the plane"
+    );
+    assert_eq!(lit.mask.class(8, 8), Class::Lit);
+    scene.objects.push(blocker);
+    let still = truth(&scene, &TruthOptions::default()).expect("truth");
+    assert_eq!(
+        still.mask, lit.mask,
+        "a non-caster above the camera changes nothing"
+    );
+    // Light below the ground: the visible side faces away.
+    scene.lights = vec![point_light(Vec3::new(0.0, -5.0, 0.0))];
+    let below = truth(&scene, &TruthOptions::default()).expect("truth");
+    assert_eq!(below.mask.class(8, 8), Class::Shadowed);
+    assert_eq!(
+        truth(
+            &scene,
+            &TruthOptions {
+                light: 3,
+                ..TruthOptions::default()
+            }
+        ),
+        Err(TruthError::NoSuchLight { index: 3, count: 1 })
+    );
+}
+
+#[test]
+fn area_light_penumbra() {
+    // A 2×2 area light at height 8 over a half-plane occluder: visibility runs from 1 in
+    // full light to 0 in umbra, with values in between in the penumbra.
+    let occluder = object(
+        Shape::Box {
+            size: Vec3::new(4.0, 0.001, 8.0),
+        },
+        Vec3::new(-2.0, 4.0, 0.0),
+        true,
+    );
+    let ground = object(
+        Shape::Plane {
+            size: 8.0,
+            tessellation: 1,
+        },
+        Vec3::ZERO,
+        true,
+    );
+    let light = Light {
+        kind: LightKind::Area {
+            corner: Vec3::new(-1.0, 8.0, -1.0),
+            edge_u: Vec3::new(2.0, 0.0, 0.0),
+            edge_v: Vec3::new(0.0, 0.0, 2.0),
+        },
+        view: Camera {
+            eye: Vec3::new(0.0, 8.0, 0.0),
+            at: Vec3::ZERO,
+            up: Vec3::Z,
+            projection: Projection::Perspective {
+                fovy: 90.0,
+                near: 1.0,
+                far: 50.0,
+            },
+        },
+        colour: Vec3::ONE,
+        intensity: 1.0,
+    };
+    let mut scene = top_down(64, 4.0, vec![light], vec![ground, occluder]);
+    scene.camera.eye = Vec3::new(0.0, 3.0, 0.0);
+    let t = truth(
+        &scene,
+        &TruthOptions {
+            light: 0,
+            area_samples: 64,
+        },
+    )
+    .expect("truth");
+    let row = 32usize * 64;
+    let v = &t.visibility[row..row + 64];
+    assert!(v[2] < 0.01 && v[61] > 0.99, "umbra {} lit {}", v[2], v[61]);
+    // Penumbra width on the ground: the light's 2 units scaled by 4 / (8 − 4) = 1 → 2 units,
+    // centred on x = 0: x ∈ (−1, 1) has partial visibility, increasing with x.
+    let partial: Vec<f32> = v[24..40].to_vec();
+    assert!(partial.iter().all(|&x| x > 0.0 && x < 1.0), "{partial:?}");
+    assert!(
+        partial.windows(2).all(|w| w[1] >= w[0] - 0.1),
+        "{partial:?}"
+    );
+}
+
+#[test]
+fn default_scene_has_all_three_values() {
+    let mut scene = Scene::default_scene();
+    scene.image.width = 128;
+    scene.image.height = 128;
+    let t = truth(&scene, &TruthOptions::default()).expect("truth");
+    for v in [LIT, SHADOWED, BACKGROUND] {
+        assert!(t.mask.data.contains(&v), "{v}");
+    }
+    assert!(t.shadow_rays > 0 && t.primary_rays == 128 * 128);
+    assert_eq!(t.visibility_image().dimensions(), (128, 128));
+}
