@@ -10,10 +10,10 @@
 //!
 //! The products are taken in f64, so z·M is exact for every f32 z and M < 2^32.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// How a depth value in [0, 1] becomes an integer on readback.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
 pub enum DepthRule {
     /// ⌊z·(2^n − 1)⌋.

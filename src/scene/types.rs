@@ -1,5 +1,6 @@
 //! The validated scene: every number finite and in range, every mesh loaded.
 
+pub use crate::gpu::{DepthBits, DepthRule as ReadbackRule};
 use crate::mesh::{self, Mesh};
 use glam::{Mat4, Vec3};
 use serde::Deserialize;
@@ -258,14 +259,6 @@ impl Object {
     }
 }
 
-/// Depth format of the light's buffer.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum DepthBits {
-    D16,
-    D24,
-    D32F,
-}
-
 /// Arithmetic of the texture and combiner stages (see DESIGN: "Precision is a mode").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -274,16 +267,6 @@ pub enum Precision {
     Float,
     /// 8-bit era integer combiners.
     Fixed8,
-}
-
-/// Depth → UNSIGNED_BYTE/SHORT readback conversion.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum ReadbackRule {
-    /// floor(255·z) (Mesa's ubyte path).
-    Truncate,
-    /// round(65535·z) (Mesa's ushort path).
-    Round,
 }
 
 /// glPolygonOffset(factor, units) for the light pass.
