@@ -1,9 +1,91 @@
 //! Executes fixed-function Commands on a GL context, by one of two interchangeable paths:
 //! `native` (real legacy GL calls on a compatibility context, the oracle) and `emulate`
 //! (generated GLSL keyed by state, on a core 3.3 context).
+//!
+//! Both paths fold every Command into their own `ff::FixedState` (so GL's error semantics
+//! are the model's, on either path), render into whatever framebuffer the caller bound (a
+//! `gpu::RenderTarget`), keep the bytes of each `ReadPixels` in its slot, and count what
+//! they did (`Counters`): the figures `render` and `bench` report.
 
 pub mod emulate;
 pub mod error;
 pub mod native;
 
+use serde::Serialize;
+
+use crate::ff::{Command, FixedState, GlError, PixelFormat, PixelType};
+use crate::gpu::GpuContext;
+
 pub use error::{PipelineError, ShaderError, ShaderStage};
+
+/// Which path executes the Commands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum PipelineKind {
+    /// Generated GLSL on a core 3.3 context.
+    Emulate,
+    /// Mesa's own fixed-function path on a compatibility context.
+    Native,
+}
+
+impl PipelineKind {
+    /// The context profile the path needs.
+    pub fn profile(self) -> crate::gpu::Profile {
+        match self {
+            PipelineKind::Emulate => crate::gpu::Profile::Core33,
+            PipelineKind::Native => crate::gpu::Profile::Compatibility,
+        }
+    }
+}
+
+/// The bytes one `ReadPixels` produced, packed with PACK_ALIGNMENT 1, bottom row first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Readback {
+    pub width: u32,
+    pub height: u32,
+    pub format: PixelFormat,
+    pub ty: PixelType,
+    pub bytes: Vec<u8>,
+}
+
+/// What a path did, for reports and for tests that assert "only what the scene asks for".
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Counters {
+    /// Commands executed.
+    pub commands: u64,
+    /// Draw commands executed.
+    pub draws: u64,
+    /// Programs generated and compiled (emulate only; 0 on native).
+    pub programs_compiled: u64,
+    /// GL state calls sent to the driver by the state-sync layer.
+    pub state_calls_sent: u64,
+    /// GL state calls skipped because the driver already had that state.
+    pub state_calls_skipped: u64,
+    /// Texture images uploaded or copied (TexImage, TexSubImage, CopyTexImage).
+    pub texture_uploads: u64,
+}
+
+/// One way of executing Commands. The context must be current and stay the same for the
+/// life of the pipeline.
+pub trait Pipeline {
+    fn kind(&self) -> PipelineKind;
+
+    /// Executes the commands in order. A command the GL state model rejects records the
+    /// error (see [`Pipeline::take_gl_error`]) and is otherwise skipped, as GL does; GPU or
+    /// shader failures stop execution with `Err`.
+    fn execute(&mut self, ctx: &GpuContext, commands: &[Command]) -> Result<(), PipelineError>;
+
+    /// The bytes the last `ReadPixels` into `slot` produced.
+    fn readback(&self, slot: u32) -> Option<&Readback>;
+
+    /// The model state after the commands so far.
+    fn state(&self) -> &FixedState;
+
+    /// Reads and clears the first GL error recorded since the last call (glGetError).
+    fn take_gl_error(&mut self) -> Option<GlError>;
+
+    fn counters(&self) -> Counters;
+
+    /// Deletes every GL object the pipeline made (textures, buffers, programs).
+    fn release(&mut self, ctx: &GpuContext);
+}
