@@ -37,6 +37,9 @@ pub enum PipelineError {
         needs: &'static str,
         got: &'static str,
     },
+    /// A feature the path cannot execute (say, register combiners where Mesa has none).
+    #[error("{what} is not supported on the {path} pipeline")]
+    Unsupported { what: String, path: &'static str },
     /// A GL object could not be created.
     #[error("GL object creation failed: {0}")]
     Object(String),

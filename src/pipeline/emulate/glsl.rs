@@ -1,47 +1,31 @@
-//! A GLSL source writer that records every uniform as it declares it, so that uploading
-//! walks the same list the generator wrote — the two cannot drift apart.
+//! A GLSL source writer that records every uniform as it declares it (by its
+//! `UniformSource`), so that uploading walks the same list the generator wrote — the two
+//! cannot drift apart.
 
 use std::fmt::Write;
+
+use super::uniforms::UniformSource;
 
 /// The GLSL type of a uniform.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum UniformType {
     Float,
-    Vec2,
-    Vec3,
     Vec4,
     Mat3,
     Mat4,
     Int,
-    Sampler1D,
-    Sampler2D,
-    Sampler2DShadow,
-    Sampler1DShadow,
 }
 
 impl UniformType {
     pub fn glsl(self) -> &'static str {
         match self {
             UniformType::Float => "float",
-            UniformType::Vec2 => "vec2",
-            UniformType::Vec3 => "vec3",
             UniformType::Vec4 => "vec4",
             UniformType::Mat3 => "mat3",
             UniformType::Mat4 => "mat4",
             UniformType::Int => "int",
-            UniformType::Sampler1D => "sampler1D",
-            UniformType::Sampler2D => "sampler2D",
-            UniformType::Sampler2DShadow => "sampler2DShadow",
-            UniformType::Sampler1DShadow => "sampler1DShadow",
         }
     }
-}
-
-/// One declared uniform.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct UniformDecl {
-    pub name: String,
-    pub ty: UniformType,
 }
 
 /// Builds one shader's source: declarations first, then `main`'s body.
@@ -49,7 +33,7 @@ pub struct UniformDecl {
 pub struct GlslWriter {
     declarations: String,
     body: String,
-    uniforms: Vec<UniformDecl>,
+    uniforms: Vec<UniformSource>,
 }
 
 impl GlslWriter {
@@ -57,34 +41,37 @@ impl GlslWriter {
         Self::default()
     }
 
-    /// Declares `uniform TY NAME;` once and returns the name.
-    pub fn uniform(&mut self, name: &str, ty: UniformType) -> String {
-        if !self.uniforms.iter().any(|u| u.name == name) {
-            let _ = writeln!(self.declarations, "uniform {} {name};", ty.glsl());
-            self.uniforms.push(UniformDecl {
-                name: name.to_string(),
-                ty,
-            });
-        }
-        name.to_string()
+    /// Declares the uniform for `source` once and returns its name.
+    pub fn uniform(&mut self, source: UniformSource) -> String {
+        self.uniform_typed(source, source.ty().glsl())
     }
 
-    /// Declares anything else (inputs, outputs, helper functions) verbatim.
-    pub fn declare(&mut self, line: &str) {
-        if !self.declarations.contains(line) {
-            self.declarations.push_str(line);
+    /// Declares a uniform with an explicit GLSL type (samplers).
+    pub fn uniform_typed(&mut self, source: UniformSource, glsl_type: &str) -> String {
+        let name = source.name();
+        if !self.uniforms.contains(&source) {
+            let _ = writeln!(self.declarations, "uniform {glsl_type} {name};");
+            self.uniforms.push(source);
+        }
+        name
+    }
+
+    /// Declares anything else (inputs, outputs, helper functions) once, verbatim.
+    pub fn declare(&mut self, text: &str) {
+        if !self.declarations.contains(text) {
+            self.declarations.push_str(text);
             self.declarations.push('\n');
         }
     }
 
     /// Appends one statement (or comment) to `main`.
-    pub fn line(&mut self, statement: &str) {
+    pub fn line(&mut self, statement: impl AsRef<str>) {
         self.body.push_str("    ");
-        self.body.push_str(statement);
+        self.body.push_str(statement.as_ref());
         self.body.push('\n');
     }
 
-    pub fn uniforms(&self) -> &[UniformDecl] {
+    pub fn uniforms(&self) -> &[UniformSource] {
         &self.uniforms
     }
 
@@ -104,14 +91,16 @@ mod tests {
     #[test]
     fn uniforms_are_declared_once_and_recorded_in_order() {
         let mut w = GlslWriter::new();
-        let a = w.uniform("alpha_ref", UniformType::Float);
-        w.uniform("mvp", UniformType::Mat4);
-        w.uniform("alpha_ref", UniformType::Float);
-        w.line(&format!("if (color.a <= {a}) discard;"));
+        let a = w.uniform(UniformSource::AlphaRef);
+        w.uniform(UniformSource::Modelview);
+        w.uniform(UniformSource::AlphaRef);
+        w.line(format!("if (color.a <= {a}) discard;"));
         let src = w.finish();
-        assert_eq!(src.matches("uniform float alpha_ref;").count(), 1);
+        assert_eq!(src.matches("uniform float u_alpha_ref;").count(), 1);
         assert!(src.starts_with("#version 330 core\n"));
-        let names: Vec<_> = w.uniforms().iter().map(|u| u.name.as_str()).collect();
-        assert_eq!(names, ["alpha_ref", "mvp"]);
+        assert_eq!(
+            w.uniforms(),
+            [UniformSource::AlphaRef, UniformSource::Modelview]
+        );
     }
 }

@@ -1,5 +1,286 @@
 //! The emulated path: `FixedState` → `ShaderKey` → generated GLSL → a program cached by key,
-//! on a core 3.3 context.
+//! on a core 3.3 context. Each Command is folded into the model state first (GL's error
+//! semantics live there); a Draw then derives the key, looks the program up (compiling only
+//! keys never seen), uploads the uniforms from the state, binds the enabled units'
+//! textures, syncs the raster state through its shadow copy and draws.
+//!
+//! `Precision::Float` is what this path implements today: fp32 texture environment with a
+//! clamp per stage, and the alpha test on unorm8 values rounded half to even, as Mesa's
+//! native path does on llvmpipe.
 
 pub mod cache;
+pub mod conv;
+pub mod draw;
 pub mod glsl;
+pub mod key;
+pub mod program;
+pub mod shadergen;
+pub mod sync;
+pub mod textures;
+pub mod uniforms;
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use glow::HasContext;
+
+use self::cache::ProgramCache;
+use self::draw::GeometryCache;
+use self::key::ShaderKey;
+use self::program::Program;
+use self::sync::RasterSync;
+use self::textures::Textures;
+use super::{Counters, Pipeline, PipelineError, PipelineKind, Readback};
+use crate::ff::{
+    Command, FixedState, Geometry, GlError, PixelFormat, PixelType, ReadPixels, Viewport,
+};
+use crate::gpu::{GpuContext, Profile};
+
+pub struct EmulatedPipeline {
+    state: FixedState,
+    programs: ProgramCache<ShaderKey, Program>,
+    geometry: GeometryCache,
+    textures: Textures,
+    raster: RasterSync,
+    readbacks: HashMap<u32, Readback>,
+    counters: Counters,
+}
+
+impl EmulatedPipeline {
+    /// A pipeline on a core-profile context. The model's viewport starts as the GL viewport
+    /// current now (GL's initial viewport is the window; here, the bound target).
+    pub fn new(ctx: &GpuContext) -> Result<EmulatedPipeline, PipelineError> {
+        if ctx.profile() != Profile::Core33 {
+            return Err(PipelineError::WrongProfile {
+                path: "emulated",
+                needs: Profile::Core33.name(),
+                got: ctx.profile().name(),
+            });
+        }
+        let mut state = FixedState::new();
+        let mut v = [0i32; 4];
+        unsafe { ctx.gl().get_parameter_i32_slice(glow::VIEWPORT, &mut v) };
+        let _ = state.apply(&Command::Viewport(Viewport {
+            x: v[0],
+            y: v[1],
+            width: v[2],
+            height: v[3],
+        }));
+        Ok(EmulatedPipeline {
+            state,
+            programs: ProgramCache::default(),
+            geometry: GeometryCache::default(),
+            textures: Textures::default(),
+            raster: RasterSync::default(),
+            readbacks: HashMap::new(),
+            counters: Counters::default(),
+        })
+    }
+
+    /// The key the next draw would use (for `fixedfunc shaders` and tests).
+    pub fn current_key(&self) -> ShaderKey {
+        ShaderKey::from_state(&self.state)
+    }
+
+    fn draw(&mut self, gl: &glow::Context, geometry: &Arc<Geometry>) -> Result<(), PipelineError> {
+        if self.state.register_combiners.enabled {
+            return Err(PipelineError::Unsupported {
+                what: "NV_register_combiners".into(),
+                path: "emulated",
+            });
+        }
+        let key = ShaderKey::from_state(&self.state);
+        let program = self
+            .programs
+            .get_or_build(&key, |k| Program::build(gl, k))?;
+        program.bind(gl, &self.state);
+        let units: Vec<_> = key
+            .fragment
+            .units
+            .iter()
+            .map(|u| (u.unit, u.target))
+            .collect();
+        self.textures.bind_units(gl, &self.state, &units)?;
+        self.raster.sync(gl, &self.state);
+        self.geometry.get(gl, geometry)?.draw(gl, &self.state);
+        self.counters.draws += 1;
+        Ok(())
+    }
+
+    fn clear(&mut self, gl: &glow::Context, mask: crate::ff::ClearMask) {
+        self.raster.sync(gl, &self.state);
+        let c = self.state.clear;
+        let mut bits = 0;
+        unsafe {
+            if mask.color {
+                gl.clear_color(c.color.x, c.color.y, c.color.z, c.color.w);
+                bits |= glow::COLOR_BUFFER_BIT;
+            }
+            if mask.depth {
+                gl.clear_depth_f64(f64::from(c.depth));
+                bits |= glow::DEPTH_BUFFER_BIT;
+            }
+            if mask.stencil {
+                gl.clear_stencil(c.stencil);
+                bits |= glow::STENCIL_BUFFER_BIT;
+            }
+            // Clear obeys the scissor-free viewport-independent masks (§4.2.3).
+            gl.clear(bits);
+        }
+    }
+
+    fn read_pixels(&mut self, gl: &glow::Context, r: &ReadPixels) {
+        let (w, h) = (r.width.max(0) as u32, r.height.max(0) as u32);
+        let bytes = read(gl, r);
+        self.readbacks.insert(
+            r.slot,
+            Readback {
+                width: w,
+                height: h,
+                format: r.format,
+                ty: r.ty,
+                bytes,
+            },
+        );
+    }
+
+    fn execute_one(&mut self, gl: &glow::Context, cmd: &Command) -> Result<(), PipelineError> {
+        self.counters.commands += 1;
+        if self.state.apply(cmd).is_err() {
+            // The model recorded the error and kept its state; GL is not touched (§2.5).
+            return Ok(());
+        }
+        match cmd {
+            Command::Draw(g) => self.draw(gl, g)?,
+            Command::Clear(mask) => self.clear(gl, *mask),
+            Command::TexImage(t) => {
+                self.textures
+                    .upload_level(gl, &self.state, t.target, t.level)?
+            }
+            Command::TexSubImage2D(t) => self.textures.sub_image(gl, &self.state, t)?,
+            Command::CopyTexImage2D(c) => self.textures.copy_level(gl, &self.state, c)?,
+            Command::TexParameter { target, .. } => {
+                self.textures.sync_params(gl, &self.state, *target)?
+            }
+            Command::ReadPixels(r) => self.read_pixels(gl, r),
+            // Everything else lives in the model and reaches GL at the next draw.
+            _ => {}
+        }
+        Ok(())
+    }
+}
+
+/// glReadPixels with the core formats; LUMINANCE and ALPHA (absent from core ReadPixels)
+/// come from an RGBA read: L = R + G + B clamped to 1 (GL 1.5 §4.3.2), A = A.
+fn read(gl: &glow::Context, r: &ReadPixels) -> Vec<u8> {
+    let (w, h) = (r.width.max(0) as usize, r.height.max(0) as usize);
+    let size = r.ty.size();
+    let read_raw = |format: u32, components: usize, ty: PixelType| {
+        let mut out = vec![0u8; w * h * components * ty.size()];
+        unsafe {
+            gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
+            gl.read_pixels(
+                r.x,
+                r.y,
+                r.width,
+                r.height,
+                format,
+                conv::pixel_type(ty),
+                glow::PixelPackData::Slice(Some(&mut out)),
+            );
+        }
+        out
+    };
+    match r.format {
+        PixelFormat::Luminance | PixelFormat::LuminanceAlpha | PixelFormat::Alpha => {
+            let rgba = read_raw(glow::RGBA, 4, PixelType::Float);
+            let px: Vec<[f32; 4]> = rgba
+                .chunks_exact(16)
+                .map(|c| {
+                    std::array::from_fn(|i| {
+                        f32::from_ne_bytes([c[4 * i], c[4 * i + 1], c[4 * i + 2], c[4 * i + 3]])
+                    })
+                })
+                .collect();
+            let values: Vec<f32> = px
+                .iter()
+                .flat_map(|p| {
+                    let l = (p[0] + p[1] + p[2]).min(1.0);
+                    match r.format {
+                        PixelFormat::Luminance => vec![l],
+                        PixelFormat::LuminanceAlpha => vec![l, p[3]],
+                        _ => vec![p[3]],
+                    }
+                })
+                .collect();
+            values
+                .into_iter()
+                .flat_map(|v| encode(v, r.ty))
+                .collect::<Vec<u8>>()
+        }
+        other => {
+            let _ = size;
+            read_raw(conv::pixel_format(other), other.components(), r.ty)
+        }
+    }
+}
+
+/// A colour component as the pixel type stores it: unorm ⌊v·M + ½⌋ or f32.
+fn encode(v: f32, ty: PixelType) -> Vec<u8> {
+    let v = v.clamp(0.0, 1.0);
+    match ty {
+        PixelType::UnsignedByte => vec![(v * 255.0 + 0.5) as u8],
+        PixelType::UnsignedShort => ((v * 65535.0 + 0.5) as u16).to_ne_bytes().to_vec(),
+        PixelType::UnsignedInt => ((f64::from(v) * f64::from(u32::MAX) + 0.5) as u32)
+            .to_ne_bytes()
+            .to_vec(),
+        PixelType::Float => v.to_ne_bytes().to_vec(),
+    }
+}
+
+impl Pipeline for EmulatedPipeline {
+    fn kind(&self) -> PipelineKind {
+        PipelineKind::Emulate
+    }
+
+    fn execute(&mut self, ctx: &GpuContext, commands: &[Command]) -> Result<(), PipelineError> {
+        let gl = ctx.gl();
+        for cmd in commands {
+            self.execute_one(gl, cmd)?;
+        }
+        Ok(())
+    }
+
+    fn readback(&self, slot: u32) -> Option<&Readback> {
+        self.readbacks.get(&slot)
+    }
+
+    fn state(&self) -> &FixedState {
+        &self.state
+    }
+
+    fn take_gl_error(&mut self) -> Option<GlError> {
+        self.state.take_error()
+    }
+
+    fn counters(&self) -> Counters {
+        let (sent, skipped) = self.raster.counts();
+        Counters {
+            programs_compiled: self.programs.compiles() as u64,
+            state_calls_sent: sent,
+            state_calls_skipped: skipped + self.textures.binds_skipped,
+            texture_uploads: self.textures.uploads,
+            ..self.counters
+        }
+    }
+
+    fn release(&mut self, ctx: &GpuContext) {
+        let gl = ctx.gl();
+        for p in self.programs.drain() {
+            p.delete(gl);
+        }
+        self.geometry.release(gl);
+        self.textures.release(gl);
+        self.raster.invalidate();
+    }
+}

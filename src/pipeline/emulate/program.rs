@@ -1,0 +1,111 @@
+//! Compiling a generated program and uploading its uniforms. The location list is built
+//! from the same `UniformSource` list the generator declared.
+
+use glow::HasContext;
+
+use super::key::ShaderKey;
+use super::shadergen::{self, GeneratedProgram};
+use super::uniforms::{self, UniformSource, UniformValue};
+use crate::ff::FixedState;
+use crate::pipeline::{ShaderError, ShaderStage};
+
+pub struct Program {
+    pub program: glow::Program,
+    uniforms: Vec<(UniformSource, Option<glow::UniformLocation>)>,
+}
+
+fn compile_stage(
+    gl: &glow::Context,
+    kind: u32,
+    stage: ShaderStage,
+    source: &str,
+    key: &ShaderKey,
+) -> Result<glow::Shader, ShaderError> {
+    let err = |log: String| ShaderError {
+        stage,
+        key: format!("{key:?}"),
+        glsl: source.to_string(),
+        log,
+    };
+    unsafe {
+        let shader = gl.create_shader(kind).map_err(err)?;
+        gl.shader_source(shader, source);
+        gl.compile_shader(shader);
+        if !gl.get_shader_compile_status(shader) {
+            let log = gl.get_shader_info_log(shader);
+            gl.delete_shader(shader);
+            return Err(err(log));
+        }
+        Ok(shader)
+    }
+}
+
+impl Program {
+    /// Generates, compiles and links the program of `key`.
+    pub fn build(gl: &glow::Context, key: &ShaderKey) -> Result<Program, ShaderError> {
+        let GeneratedProgram {
+            vertex,
+            fragment,
+            uniforms,
+        } = shadergen::generate(key);
+        let vs = compile_stage(gl, glow::VERTEX_SHADER, ShaderStage::Vertex, &vertex, key)?;
+        let fs = compile_stage(
+            gl,
+            glow::FRAGMENT_SHADER,
+            ShaderStage::Fragment,
+            &fragment,
+            key,
+        )?;
+        unsafe {
+            let link_err = |log: String| ShaderError {
+                stage: ShaderStage::Link,
+                key: format!("{key:?}"),
+                glsl: format!("{vertex}\n// ---- fragment ----\n{fragment}"),
+                log,
+            };
+            let program = gl.create_program().map_err(link_err)?;
+            gl.attach_shader(program, vs);
+            gl.attach_shader(program, fs);
+            gl.link_program(program);
+            gl.delete_shader(vs);
+            gl.delete_shader(fs);
+            if !gl.get_program_link_status(program) {
+                let log = gl.get_program_info_log(program);
+                gl.delete_program(program);
+                return Err(link_err(log));
+            }
+            let uniforms = uniforms
+                .into_iter()
+                .map(|u| (u, gl.get_uniform_location(program, &u.name())))
+                .collect();
+            Ok(Program { program, uniforms })
+        }
+    }
+
+    /// Uses the program and uploads every uniform it declared, from `state`.
+    pub fn bind(&self, gl: &glow::Context, state: &FixedState) {
+        unsafe {
+            gl.use_program(Some(self.program));
+            for (source, location) in &self.uniforms {
+                let Some(loc) = location.as_ref() else {
+                    continue; // declared but optimised away by the compiler
+                };
+                match uniforms::value(*source, state) {
+                    UniformValue::Float(v) => gl.uniform_1_f32(Some(loc), v),
+                    UniformValue::Int(v) => gl.uniform_1_i32(Some(loc), v),
+                    UniformValue::Vec4(v) => gl.uniform_4_f32(Some(loc), v.x, v.y, v.z, v.w),
+                    UniformValue::Mat3(m) => {
+                        gl.uniform_matrix_3_f32_slice(Some(loc), false, &m.to_cols_array())
+                    }
+                    UniformValue::Mat4(m) => {
+                        gl.uniform_matrix_4_f32_slice(Some(loc), false, &m.to_cols_array())
+                    }
+                }
+            }
+        }
+    }
+
+    pub fn delete(&self, gl: &glow::Context) {
+        unsafe { gl.delete_program(self.program) };
+    }
+}

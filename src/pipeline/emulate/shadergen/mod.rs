@@ -1,0 +1,42 @@
+//! `generate(&ShaderKey)`: the GLSL 330 source of one fixed-function program. It sees only
+//! the key (never the state), and emits only the stages the key enables: a key with one
+//! texture unit has no code for any other unit, a key without lighting has no lighting code.
+//!
+//! Attribute locations are fixed: 0 position (vec4), 1 normal, 2 colour, 3 + u texture
+//! coordinate of unit u. A vertex array that a draw lacks is disabled and its current value
+//! is set as a constant attribute, so "per vertex or per draw" never changes the key.
+
+mod fragment;
+mod vertex;
+
+use super::key::ShaderKey;
+use super::uniforms::UniformSource;
+
+pub const ATTRIB_POSITION: u32 = 0;
+pub const ATTRIB_NORMAL: u32 = 1;
+pub const ATTRIB_COLOR: u32 = 2;
+pub const ATTRIB_TEXCOORD0: u32 = 3;
+
+/// A generated program: both sources and the uniforms each declared.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GeneratedProgram {
+    pub vertex: String,
+    pub fragment: String,
+    pub uniforms: Vec<UniformSource>,
+}
+
+pub fn generate(key: &ShaderKey) -> GeneratedProgram {
+    let vs = vertex::generate(&key.vertex, &key.fragment);
+    let fs = fragment::generate(&key.fragment);
+    let mut uniforms = vs.uniforms().to_vec();
+    for u in fs.uniforms() {
+        if !uniforms.contains(u) {
+            uniforms.push(*u);
+        }
+    }
+    GeneratedProgram {
+        vertex: vs.finish(),
+        fragment: fs.finish(),
+        uniforms,
+    }
+}

@@ -1,0 +1,245 @@
+//! The vertex stage: transform (GL 1.5 §2.10), lighting (§2.14.1), texture coordinate
+//! generation (§2.11.4) and the texture matrix.
+
+use crate::ff::{ColorMaterialMode, TexCoord, TexGenMode};
+use crate::pipeline::emulate::glsl::GlslWriter;
+use crate::pipeline::emulate::key::{
+    ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, VertexKey, VertexUnitKey,
+};
+use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
+
+use super::{ATTRIB_COLOR, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_TEXCOORD0};
+
+pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
+    let mut w = GlslWriter::new();
+    w.declare(&format!(
+        "layout(location = {ATTRIB_POSITION}) in vec4 a_position;"
+    ));
+    w.declare(&format!(
+        "layout(location = {ATTRIB_COLOR}) in vec4 a_color;"
+    ));
+    let flat = if fragment.flat { "flat " } else { "" };
+    w.declare(&format!("{flat}out vec4 v_color;"));
+    let mv = w.uniform(UniformSource::Modelview);
+    let proj = w.uniform(UniformSource::Projection);
+    // One expression for every program, so DepthFunc(EQUAL) passes see identical depths.
+    w.line(format!("gl_Position = {proj} * ({mv} * a_position);"));
+    let mut eye = EyeTerms::default();
+    match &key.lighting {
+        Some(lighting) => emit_lighting(&mut w, &mut eye, key, lighting, flat),
+        None => w.line("v_color = a_color;"),
+    }
+    for unit in &key.units {
+        emit_texcoords(&mut w, &mut eye, key, unit);
+    }
+    w
+}
+
+/// Eye-space position and normal, emitted on first use only.
+#[derive(Default)]
+struct EyeTerms {
+    position: bool,
+    normal: bool,
+}
+
+impl EyeTerms {
+    fn position(&mut self, w: &mut GlslWriter) -> &'static str {
+        if !self.position {
+            let mv = w.uniform(UniformSource::Modelview);
+            w.line(format!("vec4 eye = {mv} * a_position;"));
+            self.position = true;
+        }
+        "eye"
+    }
+
+    /// n = (M⁻¹)ᵀ·normal, then NORMALIZE (n/|n|) or RESCALE_NORMAL (f·n) (§2.11.3).
+    fn normal(&mut self, w: &mut GlslWriter, key: &VertexKey) -> &'static str {
+        if !self.normal {
+            w.declare(&format!(
+                "layout(location = {ATTRIB_NORMAL}) in vec3 a_normal;"
+            ));
+            let nm = w.uniform(UniformSource::NormalMatrix);
+            w.line(format!("vec3 normal = {nm} * a_normal;"));
+            if key.normalize {
+                w.line("normal = normalize(normal);");
+            } else if key.rescale_normal {
+                let f = w.uniform(UniformSource::RescaleFactor);
+                w.line(format!("normal *= {f};"));
+            }
+            self.normal = true;
+        }
+        "normal"
+    }
+}
+
+fn emit_lighting(
+    w: &mut GlslWriter,
+    eye: &mut EyeTerms,
+    key: &VertexKey,
+    lighting: &LightingKey,
+    flat: &str,
+) {
+    let e = eye.position(w);
+    let n = eye.normal(w, key);
+    w.line(format!(
+        "vec3 view_dir = {};",
+        if lighting.local_viewer {
+            format!("normalize(-{e}.xyz)")
+        } else {
+            "vec3(0.0, 0.0, 1.0)".to_string()
+        }
+    ));
+    emit_face(w, lighting, 0, n, "v_color");
+    if lighting.two_side {
+        w.declare(&format!("{flat}out vec4 v_back_color;"));
+        w.line(format!("vec3 back_normal = -{n};"));
+        emit_face(w, lighting, 1, "back_normal", "v_back_color");
+    }
+}
+
+/// The material colour of `value` for a face: the current colour under COLOR_MATERIAL.
+fn material(
+    w: &mut GlslWriter,
+    cm: Option<ColorMaterialKey>,
+    face: u8,
+    value: MaterialValue,
+) -> String {
+    let tracks = cm.is_some_and(|c| {
+        (if face == 0 { c.front } else { c.back })
+            && matches!(
+                (c.mode, value),
+                (ColorMaterialMode::Ambient, MaterialValue::Ambient)
+                    | (ColorMaterialMode::Diffuse, MaterialValue::Diffuse)
+                    | (ColorMaterialMode::Specular, MaterialValue::Specular)
+                    | (ColorMaterialMode::Emission, MaterialValue::Emission)
+                    | (ColorMaterialMode::AmbientAndDiffuse, MaterialValue::Ambient)
+                    | (ColorMaterialMode::AmbientAndDiffuse, MaterialValue::Diffuse)
+            )
+    });
+    if tracks {
+        "a_color".to_string()
+    } else {
+        w.uniform(UniformSource::Material(face, value))
+    }
+}
+
+/// c = e_m + a_m·a_cs + Σ att·spot·(a_m·a_l + max(n·L,0)·d_m·d_l + f·max(n·h,0)^s·s_m·s_l),
+/// alpha = d_m.a, clamped to [0, 1] (GL 1.5 §2.14.1).
+fn emit_face(w: &mut GlslWriter, lighting: &LightingKey, face: u8, n: &str, out: &str) {
+    let cm = lighting.color_material;
+    let emission = material(w, cm, face, MaterialValue::Emission);
+    let ambient = material(w, cm, face, MaterialValue::Ambient);
+    let diffuse = material(w, cm, face, MaterialValue::Diffuse);
+    let scene = w.uniform(UniformSource::LightModelAmbient);
+    let c = format!("c{face}");
+    w.line(format!(
+        "vec3 {c} = {emission}.rgb + {ambient}.rgb * {scene}.rgb;"
+    ));
+    for light in &lighting.lights {
+        emit_light(w, lighting, *light, face, n, &c);
+    }
+    w.line(format!("{out} = clamp(vec4({c}, {diffuse}.a), 0.0, 1.0);"));
+}
+
+fn emit_light(w: &mut GlslWriter, lighting: &LightingKey, l: LightKey, face: u8, n: &str, c: &str) {
+    let i = l.index;
+    let u = |w: &mut GlslWriter, v| w.uniform(UniformSource::Light(i, v));
+    let pos = u(w, LightValue::Position);
+    let la = u(w, LightValue::Ambient);
+    let ld = u(w, LightValue::Diffuse);
+    let ls = u(w, LightValue::Specular);
+    let cm = lighting.color_material;
+    let ma = material(w, cm, face, MaterialValue::Ambient);
+    let md = material(w, cm, face, MaterialValue::Diffuse);
+    let ms = material(w, cm, face, MaterialValue::Specular);
+    let shin = w.uniform(UniformSource::Material(face, MaterialValue::Shininess));
+    let v = format!("l{i}_{face}");
+    w.line(format!(
+        "// light {i}, {} face",
+        ["front", "back"][face as usize]
+    ));
+    if l.directional {
+        w.line(format!("vec3 {v}_dir = normalize({pos}.xyz);"));
+        w.line(format!("float {v}_att = 1.0;"));
+    } else {
+        let k = u(w, LightValue::Attenuation);
+        w.line(format!(
+            "vec3 {v}_d = {pos}.xyz / {pos}.w - eye.xyz / eye.w;"
+        ));
+        w.line(format!("float {v}_dist = length({v}_d);"));
+        w.line(format!("vec3 {v}_dir = {v}_d / max({v}_dist, 1e-30);"));
+        w.line(format!(
+            "float {v}_att = 1.0 / ({k}.x + {k}.y * {v}_dist + {k}.z * {v}_dist * {v}_dist);"
+        ));
+    }
+    if l.spot {
+        // spot = (−L·ŝ)^e when −L·ŝ ≥ cos(cutoff), else 0; x^0 = 1 (GLSL's pow(0,0) is undefined).
+        let dir = u(w, LightValue::SpotDirection);
+        let spot = u(w, LightValue::Spot);
+        w.line(format!(
+            "float {v}_sd = dot(-{v}_dir, normalize({dir}.xyz));"
+        ));
+        w.line(format!(
+            "{v}_att *= ({v}_sd < {spot}.y) ? 0.0 : (({spot}.x == 0.0) ? 1.0 : pow(max({v}_sd, 0.0), {spot}.x));"
+        ));
+    }
+    w.line(format!("float {v}_ndl = dot({n}, {v}_dir);"));
+    w.line(format!(
+        "vec3 {v}_c = {ma}.rgb * {la}.rgb + max({v}_ndl, 0.0) * {md}.rgb * {ld}.rgb;"
+    ));
+    w.line(format!("if ({v}_ndl > 0.0) {{"));
+    w.line(format!(
+        "    float {v}_ndh = max(dot({n}, normalize({v}_dir + view_dir)), 0.0);"
+    ));
+    w.line(format!(
+        "    {v}_c += (({shin} == 0.0) ? 1.0 : pow({v}_ndh, {shin})) * {ms}.rgb * {ls}.rgb;"
+    ));
+    w.line("}");
+    w.line(format!("{c} += {v}_att * {v}_c;"));
+}
+
+/// Each coordinate from its source, then the texture matrix: tc = T·(s, t, r, q).
+fn emit_texcoords(w: &mut GlslWriter, eye: &mut EyeTerms, key: &VertexKey, unit: &VertexUnitKey) {
+    let u = unit.unit;
+    let attribute = format!("a_texcoord{u}");
+    w.declare(&format!(
+        "layout(location = {}) in vec4 {attribute};",
+        ATTRIB_TEXCOORD0 + u32::from(u)
+    ));
+    w.declare(&format!("out vec4 v_tc{u};"));
+    let sphere = unit
+        .coords
+        .contains(&CoordSource::Generated(TexGenMode::SphereMap));
+    if sphere {
+        // r = u − 2n(n·u), m = 2√(rx² + ry² + (rz+1)²), (s,t) = r.xy/m + ½ (§2.11.4).
+        let e = eye.position(w);
+        let n = eye.normal(w, key);
+        w.line(format!("vec3 sm_u{u} = normalize({e}.xyz);"));
+        w.line(format!("vec3 sm_r{u} = reflect(sm_u{u}, {n});"));
+        w.line(format!(
+            "float sm_m{u} = 2.0 * sqrt(sm_r{u}.x * sm_r{u}.x + sm_r{u}.y * sm_r{u}.y + (sm_r{u}.z + 1.0) * (sm_r{u}.z + 1.0));"
+        ));
+    }
+    let mut parts = Vec::new();
+    for coord in TexCoord::ALL {
+        let i = coord.index();
+        let comp = ["x", "y", "z", "w"][i];
+        parts.push(match unit.coords[i] {
+            CoordSource::Attribute => format!("{attribute}.{comp}"),
+            CoordSource::Generated(TexGenMode::ObjectLinear) => {
+                let p = w.uniform(UniformSource::ObjectPlane(u, coord));
+                format!("dot({p}, a_position)")
+            }
+            CoordSource::Generated(TexGenMode::EyeLinear) => {
+                let e = eye.position(w);
+                let p = w.uniform(UniformSource::EyePlane(u, coord));
+                format!("dot({p}, {e})")
+            }
+            CoordSource::Generated(TexGenMode::SphereMap) => {
+                format!("(sm_r{u}.{comp} / sm_m{u} + 0.5)")
+            }
+        });
+    }
+    let m = w.uniform(UniformSource::TextureMatrix(u));
+    w.line(format!("v_tc{u} = {m} * vec4({});", parts.join(", ")));
+}

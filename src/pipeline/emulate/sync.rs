@@ -1,0 +1,135 @@
+//! The raster state that stays GL state on the core path (depth, stencil, blend, masks,
+//! polygon offset, culling, polygon mode, viewport, depth range), synced before each draw
+//! through a shadow copy of what was last sent: an unchanged value is not sent again, and
+//! both outcomes are counted.
+
+use glow::HasContext;
+
+use super::conv;
+use crate::ff::{
+    Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, OffsetEnables,
+    PolygonModes, PolygonOffset, StencilTest, Viewport,
+};
+
+/// One piece of state as last sent (`None` = never sent).
+struct Sent<T>(Option<T>);
+
+impl<T: PartialEq + Copy> Sent<T> {
+    fn sync(&mut self, value: T, counts: &mut (u64, u64), send: impl FnOnce(T)) {
+        if self.0 == Some(value) {
+            counts.1 += 1;
+        } else {
+            send(value);
+            self.0 = Some(value);
+            counts.0 += 1;
+        }
+    }
+}
+
+impl<T> Default for Sent<T> {
+    fn default() -> Self {
+        Sent(None)
+    }
+}
+
+#[derive(Default)]
+pub struct RasterSync {
+    depth: Sent<Option<DepthTest>>,
+    stencil: Sent<Option<StencilTest>>,
+    blend: Sent<Option<Blend>>,
+    color_mask: Sent<ColorMask>,
+    offset: Sent<(OffsetEnables, PolygonOffset)>,
+    cull: Sent<(Option<Face>, FrontFace)>,
+    polygon_mode: Sent<PolygonModes>,
+    viewport: Sent<Viewport>,
+    depth_range: Sent<DepthRange>,
+    /// (sent, skipped)
+    counts: (u64, u64),
+}
+
+fn toggle(gl: &glow::Context, cap: u32, on: bool) {
+    unsafe {
+        if on {
+            gl.enable(cap)
+        } else {
+            gl.disable(cap)
+        }
+    }
+}
+
+impl RasterSync {
+    /// Calls sent and skipped so far.
+    pub fn counts(&self) -> (u64, u64) {
+        self.counts
+    }
+
+    /// Brings the GL raster state in line with the model before a draw or a clear.
+    pub fn sync(&mut self, gl: &glow::Context, s: &FixedState) {
+        let c = &mut self.counts;
+        self.viewport.sync(s.viewport, c, |v| unsafe {
+            gl.viewport(v.x, v.y, v.width, v.height)
+        });
+        self.depth_range.sync(s.depth_range, c, |r| unsafe {
+            gl.depth_range_f64(f64::from(r.near), f64::from(r.far))
+        });
+        self.color_mask.sync(s.color_mask, c, |m| unsafe {
+            gl.color_mask(m.r, m.g, m.b, m.a)
+        });
+        self.sync_tests(gl, s);
+    }
+
+    fn sync_tests(&mut self, gl: &glow::Context, s: &FixedState) {
+        let c = &mut self.counts;
+        // With the depth test off GL writes no depth either (§4.1.5), so the mask only
+        // matters while it is on; it is still sent, for Clear.
+        self.depth.sync(s.depth_test.get(), c, |d| unsafe {
+            toggle(gl, glow::DEPTH_TEST, d.is_some());
+            let d = d.unwrap_or(s.depth_test.value);
+            gl.depth_func(conv::compare_func(d.func));
+            gl.depth_mask(s.depth_test.value.write);
+        });
+        self.stencil.sync(s.stencil_test.get(), c, |t| unsafe {
+            toggle(gl, glow::STENCIL_TEST, t.is_some());
+            let t = t.unwrap_or(s.stencil_test.value);
+            gl.stencil_func(conv::compare_func(t.func), t.reference, t.value_mask);
+            gl.stencil_op(
+                conv::stencil_op(t.fail),
+                conv::stencil_op(t.depth_fail),
+                conv::stencil_op(t.depth_pass),
+            );
+            gl.stencil_mask(t.write_mask);
+        });
+        self.blend.sync(s.blend.get(), c, |b| unsafe {
+            toggle(gl, glow::BLEND, b.is_some());
+            if let Some(b) = b {
+                gl.blend_func(conv::blend_factor(b.src), conv::blend_factor(b.dst));
+            }
+        });
+        self.offset
+            .sync((s.offset_enables, s.polygon_offset), c, |(e, o)| unsafe {
+                toggle(gl, glow::POLYGON_OFFSET_FILL, e.fill);
+                toggle(gl, glow::POLYGON_OFFSET_LINE, e.line);
+                toggle(gl, glow::POLYGON_OFFSET_POINT, e.point);
+                gl.polygon_offset(o.factor, o.units);
+            });
+        self.cull
+            .sync((s.cull_face.get(), s.front_face), c, |(f, ff)| unsafe {
+                toggle(gl, glow::CULL_FACE, f.is_some());
+                if let Some(f) = f {
+                    gl.cull_face(conv::face(f));
+                }
+                gl.front_face(conv::front_face(ff));
+            });
+        // Core GL has one polygon mode for both faces; the front one is used.
+        self.polygon_mode.sync(s.polygon_mode, c, |m| unsafe {
+            gl.polygon_mode(glow::FRONT_AND_BACK, conv::polygon_mode(m.front))
+        });
+    }
+
+    /// Forget what was sent (after something else touched GL state).
+    pub fn invalidate(&mut self) {
+        let counts = self.counts;
+        *self = RasterSync::default();
+        self.counts = counts;
+    }
+}

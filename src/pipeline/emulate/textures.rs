@@ -1,0 +1,274 @@
+//! GL texture objects behind the model's texture names. After the model accepts a texture
+//! command, the affected object is brought up to date from the model: level images
+//! (legacy formats as R8/RG8 + swizzle, see `conv::tex_format`), parameters, and copies
+//! from the bound framebuffer. Draws bind the objects the enabled units use.
+
+use std::collections::HashMap;
+
+use glow::HasContext;
+
+use super::conv;
+use crate::ff::{CompareMode, FixedState, TexLevel, TextureObject, TextureTarget};
+use crate::pipeline::PipelineError;
+
+/// Our key for a GL texture: (target, model name). Name 0 is each target's default texture.
+type TextureId = (TextureTarget, u32);
+
+fn gl_target(t: TextureTarget) -> u32 {
+    match t {
+        TextureTarget::Texture1D => glow::TEXTURE_1D,
+        TextureTarget::Texture2D => glow::TEXTURE_2D,
+    }
+}
+
+#[derive(Default)]
+pub struct Textures {
+    objects: HashMap<TextureId, glow::Texture>,
+    /// What is bound on each image unit, to skip redundant binds.
+    bound: HashMap<u8, (TextureTarget, glow::Texture)>,
+    pub uploads: u64,
+    pub binds_skipped: u64,
+}
+
+impl Textures {
+    fn object(
+        &mut self,
+        gl: &glow::Context,
+        id: TextureId,
+    ) -> Result<glow::Texture, PipelineError> {
+        if let Some(t) = self.objects.get(&id) {
+            return Ok(*t);
+        }
+        let t = unsafe { gl.create_texture() }.map_err(PipelineError::Object)?;
+        self.objects.insert(id, t);
+        Ok(t)
+    }
+
+    /// Binds the GL object for `id` on a scratch unit (the last one) for editing.
+    fn edit(&mut self, gl: &glow::Context, id: TextureId) -> Result<u32, PipelineError> {
+        let t = self.object(gl, id)?;
+        let target = gl_target(id.0);
+        unsafe {
+            gl.active_texture(glow::TEXTURE0 + SCRATCH_UNIT);
+            gl.bind_texture(target, Some(t));
+        }
+        self.bound.remove(&(SCRATCH_UNIT as u8));
+        Ok(target)
+    }
+
+    /// Uploads level `level` of the texture bound to `target` on the active unit.
+    pub fn upload_level(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        target: TextureTarget,
+        level: i32,
+    ) -> Result<(), PipelineError> {
+        let name = state.units[state.active_unit()].bound(target);
+        let Some(object) = state.texture(target, name) else {
+            return Ok(());
+        };
+        let Some(l) = object.level(level) else {
+            return Ok(());
+        };
+        let gl_t = self.edit(gl, (target, name))?;
+        upload(gl, gl_t, level, l);
+        apply_params(gl, gl_t, object);
+        self.uploads += 1;
+        Ok(())
+    }
+
+    /// glTexSubImage2D into the active unit's 2D texture, straight from the command's bytes.
+    pub fn sub_image(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        t: &crate::ff::TexSubImage,
+    ) -> Result<(), PipelineError> {
+        let target = TextureTarget::Texture2D;
+        let name = state.units[state.active_unit()].bound(target);
+        let gl_t = self.edit(gl, (target, name))?;
+        unsafe {
+            gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+            gl.tex_sub_image_2d(
+                gl_t,
+                t.level,
+                t.x,
+                t.y,
+                t.width,
+                t.height,
+                conv::pixel_format(t.format),
+                conv::pixel_type(t.ty),
+                glow::PixelUnpackData::Slice(Some(&t.data[..])),
+            );
+        }
+        self.uploads += 1;
+        Ok(())
+    }
+
+    /// glCopyTexImage2D from the bound read framebuffer into the active unit's 2D texture.
+    pub fn copy_level(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        copy: &crate::ff::CopyTexImage,
+    ) -> Result<(), PipelineError> {
+        let target = TextureTarget::Texture2D;
+        let name = state.units[state.active_unit()].bound(target);
+        let gl_t = self.edit(gl, (target, name))?;
+        let (internal, _) = conv::tex_format(copy.internal_format);
+        unsafe {
+            gl.copy_tex_image_2d(
+                gl_t,
+                copy.level,
+                internal,
+                copy.x,
+                copy.y,
+                copy.width,
+                copy.height,
+                0,
+            );
+        }
+        if let Some(object) = state.texture(target, name) {
+            apply_params(gl, gl_t, object);
+        }
+        self.uploads += 1;
+        Ok(())
+    }
+
+    /// Re-sends every parameter of the active unit's `target` texture.
+    pub fn sync_params(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        target: TextureTarget,
+    ) -> Result<(), PipelineError> {
+        let name = state.units[state.active_unit()].bound(target);
+        if let Some(object) = state.texture(target, name) {
+            let gl_t = self.edit(gl, (target, name))?;
+            apply_params(gl, gl_t, object);
+        }
+        Ok(())
+    }
+
+    /// Binds the textures of the enabled units before a draw.
+    pub fn bind_units(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        units: &[(u8, TextureTarget)],
+    ) -> Result<(), PipelineError> {
+        for &(unit, target) in units {
+            let name = state.units[unit as usize].bound(target);
+            let t = self.object(gl, (target, name))?;
+            if self.bound.get(&unit) == Some(&(target, t)) {
+                self.binds_skipped += 1;
+                continue;
+            }
+            unsafe {
+                gl.active_texture(glow::TEXTURE0 + u32::from(unit));
+                gl.bind_texture(gl_target(target), Some(t));
+            }
+            self.bound.insert(unit, (target, t));
+        }
+        Ok(())
+    }
+
+    pub fn release(&mut self, gl: &glow::Context) {
+        for (_, t) in self.objects.drain() {
+            unsafe { gl.delete_texture(t) };
+        }
+        self.bound.clear();
+    }
+}
+
+/// The unit used to edit textures outside draws (never a fixed-function unit).
+const SCRATCH_UNIT: u32 = 15;
+
+fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel) {
+    let (internal, _) = conv::tex_format(l.internal_format);
+    let (format, ty, bytes) = match &l.data {
+        Some(d) => (
+            conv::pixel_format(d.format),
+            conv::pixel_type(d.ty),
+            Some(&d.bytes[..]),
+        ),
+        // Storage only: any matching client format will do.
+        None if l.internal_format.is_depth() => (glow::DEPTH_COMPONENT, glow::FLOAT, None),
+        None => (glow::RED, glow::UNSIGNED_BYTE, None),
+    };
+    unsafe {
+        gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+        match target {
+            glow::TEXTURE_1D => gl.tex_image_1d(
+                target,
+                level,
+                internal as i32,
+                l.width,
+                0,
+                format,
+                ty,
+                glow::PixelUnpackData::Slice(bytes),
+            ),
+            _ => gl.tex_image_2d(
+                target,
+                level,
+                internal as i32,
+                l.width,
+                l.height,
+                0,
+                format,
+                ty,
+                glow::PixelUnpackData::Slice(bytes),
+            ),
+        }
+    }
+}
+
+/// Every parameter, plus the swizzle of the level-0 format and the mipmap range: a texture
+/// with only level 0 is complete whatever its filter (GL 1.x would call a mipmap filter
+/// without mipmaps incomplete; MAX_LEVEL is set to the highest level the model holds so
+/// both agree).
+fn apply_params(gl: &glow::Context, target: u32, object: &TextureObject) {
+    let p = &object.params;
+    let max_level = object.levels.iter().rposition(Option::is_some).unwrap_or(0) as i32;
+    let (_, swizzle) = object.format().map(conv::tex_format).unwrap_or((
+        glow::RGBA8,
+        [glow::RED, glow::GREEN, glow::BLUE, glow::ALPHA],
+    ));
+    let is_depth = object.format().is_some_and(|f| f.is_depth());
+    unsafe {
+        gl.tex_parameter_i32(
+            target,
+            glow::TEXTURE_MIN_FILTER,
+            conv::filter(p.min_filter) as i32,
+        );
+        gl.tex_parameter_i32(
+            target,
+            glow::TEXTURE_MAG_FILTER,
+            conv::filter(p.mag_filter) as i32,
+        );
+        gl.tex_parameter_i32(target, glow::TEXTURE_WRAP_S, conv::wrap(p.wrap_s) as i32);
+        gl.tex_parameter_i32(target, glow::TEXTURE_WRAP_T, conv::wrap(p.wrap_t) as i32);
+        gl.tex_parameter_f32_slice(
+            target,
+            glow::TEXTURE_BORDER_COLOR,
+            &p.border_color.to_array(),
+        );
+        gl.tex_parameter_i32(target, glow::TEXTURE_MAX_LEVEL, max_level);
+        let swizzle = swizzle.map(|s| s as i32);
+        gl.tex_parameter_i32_slice(target, glow::TEXTURE_SWIZZLE_RGBA, &swizzle);
+        if is_depth {
+            let mode = match p.compare_mode {
+                CompareMode::None => glow::NONE,
+                CompareMode::CompareRToTexture => glow::COMPARE_REF_TO_TEXTURE,
+            };
+            gl.tex_parameter_i32(target, glow::TEXTURE_COMPARE_MODE, mode as i32);
+            gl.tex_parameter_i32(
+                target,
+                glow::TEXTURE_COMPARE_FUNC,
+                conv::compare_func(p.compare_func) as i32,
+            );
+        }
+    }
+}

@@ -1,0 +1,183 @@
+//! Where every uniform's value comes from. The generator declares a uniform by naming its
+//! `UniformSource`; the GLSL writer records the list; upload walks that same list and asks
+//! `value` for each — so the code and the uploads cannot disagree.
+
+use glam::{Mat3, Mat4, Vec4};
+
+use super::glsl::UniformType;
+use crate::ff::{FixedState, Material, TexCoord};
+
+/// A light parameter, in eye space where GL stores it so.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LightValue {
+    Ambient,
+    Diffuse,
+    Specular,
+    Position,
+    SpotDirection,
+    /// (spot exponent, cos(cutoff), 0, 0).
+    Spot,
+    /// (constant, linear, quadratic, 0).
+    Attenuation,
+}
+
+/// A material parameter of one face.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MaterialValue {
+    Ambient,
+    Diffuse,
+    Specular,
+    Emission,
+    Shininess,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum UniformSource {
+    Modelview,
+    Projection,
+    /// Inverse transpose of the modelview's upper 3×3 (GL 1.5 §2.11.3).
+    NormalMatrix,
+    /// RESCALE_NORMAL's factor: 1 / length of the third row of that inverse.
+    RescaleFactor,
+    TextureMatrix(u8),
+    ObjectPlane(u8, TexCoord),
+    EyePlane(u8, TexCoord),
+    Light(u8, LightValue),
+    /// Face 0 = front, 1 = back.
+    Material(u8, MaterialValue),
+    LightModelAmbient,
+    EnvColor(u8),
+    /// TEXTURE_COMPARE_FAIL_VALUE of the unit's texture.
+    CompareFail(u8),
+    AlphaRef,
+    /// The texture image unit the sampler reads (the fixed-function unit index).
+    Sampler(u8),
+}
+
+impl UniformSource {
+    pub fn name(self) -> String {
+        let c = |c: TexCoord| ["s", "t", "r", "q"][c.index()];
+        match self {
+            UniformSource::Modelview => "u_modelview".into(),
+            UniformSource::Projection => "u_projection".into(),
+            UniformSource::NormalMatrix => "u_normal_matrix".into(),
+            UniformSource::RescaleFactor => "u_rescale".into(),
+            UniformSource::TextureMatrix(u) => format!("u_texmat{u}"),
+            UniformSource::ObjectPlane(u, k) => format!("u_obj_plane{u}_{}", c(k)),
+            UniformSource::EyePlane(u, k) => format!("u_eye_plane{u}_{}", c(k)),
+            UniformSource::Light(i, v) => format!("u_light{i}_{v:?}").to_lowercase(),
+            UniformSource::Material(f, v) => {
+                format!("u_{}_{v:?}", ["front", "back"][f as usize & 1]).to_lowercase()
+            }
+            UniformSource::LightModelAmbient => "u_scene_ambient".into(),
+            UniformSource::EnvColor(u) => format!("u_env_color{u}"),
+            UniformSource::CompareFail(u) => format!("u_compare_fail{u}"),
+            UniformSource::AlphaRef => "u_alpha_ref".into(),
+            UniformSource::Sampler(u) => format!("u_tex{u}"),
+        }
+    }
+
+    /// The GLSL type; samplers are typed by the generator (`glsl::sampler_type`).
+    pub fn ty(self) -> UniformType {
+        match self {
+            UniformSource::Modelview
+            | UniformSource::Projection
+            | UniformSource::TextureMatrix(_) => UniformType::Mat4,
+            UniformSource::NormalMatrix => UniformType::Mat3,
+            UniformSource::RescaleFactor
+            | UniformSource::CompareFail(_)
+            | UniformSource::AlphaRef
+            | UniformSource::Material(_, MaterialValue::Shininess) => UniformType::Float,
+            UniformSource::Sampler(_) => UniformType::Int,
+            _ => UniformType::Vec4,
+        }
+    }
+}
+
+/// A value ready to upload.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum UniformValue {
+    Float(f32),
+    Vec4(Vec4),
+    Mat3(Mat3),
+    Mat4(Mat4),
+    Int(i32),
+}
+
+fn material(state: &FixedState, face: u8) -> &Material {
+    if face == 0 {
+        &state.materials.front
+    } else {
+        &state.materials.back
+    }
+}
+
+/// The value of `source` in `state`.
+pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
+    use UniformValue::*;
+    match source {
+        UniformSource::Modelview => Mat4(state.modelview_matrix()),
+        UniformSource::Projection => Mat4(state.projection_matrix()),
+        UniformSource::NormalMatrix => Mat3(
+            glam::Mat3::from_mat4(crate::ff::matrix::inverse_or_identity(
+                state.modelview_matrix(),
+            ))
+            .transpose(),
+        ),
+        UniformSource::RescaleFactor => {
+            // GL 1.5 eqn 2.6: f = 1 / sqrt(m31² + m32² + m33²) of the inverse modelview.
+            let inv = crate::ff::matrix::inverse_or_identity(state.modelview_matrix());
+            let row = glam::Vec3::new(inv.x_axis.z, inv.y_axis.z, inv.z_axis.z);
+            let len = row.length();
+            Float(if len > 0.0 { 1.0 / len } else { 1.0 })
+        }
+        UniformSource::TextureMatrix(u) => Mat4(state.texture_matrix(u as usize)),
+        UniformSource::ObjectPlane(u, c) => {
+            Vec4(state.units[u as usize].texgen[c.index()].value.object_plane)
+        }
+        UniformSource::EyePlane(u, c) => {
+            Vec4(state.units[u as usize].texgen[c.index()].value.eye_plane)
+        }
+        UniformSource::Light(i, v) => {
+            let l = &state.lights[i as usize].value;
+            match v {
+                LightValue::Ambient => Vec4(l.ambient),
+                LightValue::Diffuse => Vec4(l.diffuse),
+                LightValue::Specular => Vec4(l.specular),
+                LightValue::Position => Vec4(l.position),
+                LightValue::SpotDirection => Vec4(l.spot_direction.extend(0.0)),
+                LightValue::Spot => Vec4(glam::Vec4::new(
+                    l.spot_exponent,
+                    l.spot_cutoff.to_radians().cos(),
+                    0.0,
+                    0.0,
+                )),
+                LightValue::Attenuation => Vec4(glam::Vec4::new(
+                    l.constant_attenuation,
+                    l.linear_attenuation,
+                    l.quadratic_attenuation,
+                    0.0,
+                )),
+            }
+        }
+        UniformSource::Material(face, v) => {
+            let m = material(state, face);
+            match v {
+                MaterialValue::Ambient => Vec4(m.ambient),
+                MaterialValue::Diffuse => Vec4(m.diffuse),
+                MaterialValue::Specular => Vec4(m.specular),
+                MaterialValue::Emission => Vec4(m.emission),
+                MaterialValue::Shininess => Float(m.shininess),
+            }
+        }
+        UniformSource::LightModelAmbient => Vec4(state.light_model.ambient),
+        UniformSource::EnvColor(u) => Vec4(state.units[u as usize].env.color),
+        UniformSource::CompareFail(u) => Float(
+            state
+                .enabled_texture(u as usize)
+                .map_or(0.0, |t| t.params.compare_fail_value),
+        ),
+        UniformSource::AlphaRef => Float(state.alpha_test.value.reference),
+        UniformSource::Sampler(u) => Int(i32::from(u)),
+    }
+}
