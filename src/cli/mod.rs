@@ -5,13 +5,20 @@
 mod bench;
 mod error;
 mod info;
+mod replay;
+mod script_io;
+mod shaders;
+mod size;
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
 use fixedfunc::bench::BenchGroup;
+use std::path::PathBuf;
+
 use fixedfunc::gpu::Backend;
+use fixedfunc::pipeline::PipelineKind;
 
 /// An emulator of the OpenGL 1.x fixed-function pipeline for the classic shadow techniques.
 #[derive(Parser)]
@@ -32,6 +39,26 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Run a script of GL 1.x calls (valid C99) and write the image it draws.
+    Replay {
+        /// The script.
+        file: PathBuf,
+        #[arg(long, value_enum, default_value = "emulate")]
+        pipeline: PipelineKind,
+        #[arg(long, value_enum, default_value = "egl")]
+        backend: Backend,
+        /// Target size, WIDTHxHEIGHT.
+        #[arg(long, default_value = "256x256")]
+        size: size::Size,
+        /// The PNG to write.
+        #[arg(long, default_value = "replay.png")]
+        out: PathBuf,
+    },
+    /// Print each distinct program a script needs: its key and its generated GLSL.
+    Shaders {
+        /// The script.
+        file: PathBuf,
+    },
     /// Repeated timings, reported as medians.
     Bench {
         /// Only this group (default: all).
@@ -50,6 +77,14 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Info { backend, json } => info::run(backend, json),
+        Command::Replay {
+            file,
+            pipeline,
+            backend,
+            size,
+            out,
+        } => replay::run(&file, pipeline, backend, size, &out),
+        Command::Shaders { file } => shaders::run(&file),
         Command::Bench {
             only,
             repeats,

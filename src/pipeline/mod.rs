@@ -38,6 +38,17 @@ impl PipelineKind {
     }
 }
 
+/// Creates the pipeline of `kind` on `ctx` (whose profile must be `kind.profile()`).
+pub fn create(kind: PipelineKind, ctx: &GpuContext) -> Result<Box<dyn Pipeline>, PipelineError> {
+    match kind {
+        PipelineKind::Emulate => Ok(Box::new(emulate::EmulatedPipeline::new(ctx)?)),
+        PipelineKind::Native => Err(PipelineError::Unsupported {
+            what: "the native path".into(),
+            path: "native",
+        }),
+    }
+}
+
 /// The bytes one `ReadPixels` produced, packed with PACK_ALIGNMENT 1, bottom row first.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Readback {
