@@ -15,6 +15,7 @@
 //! the `gpu` layer.
 
 pub mod apply;
+pub mod combiner_model;
 pub mod combiners;
 pub mod command;
 pub mod error;

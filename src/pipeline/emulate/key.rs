@@ -4,9 +4,9 @@
 //! from the key, so toggling them off can never cause a recompile of an unrelated program.
 
 use crate::ff::{
-    AlphaTest, BaseFormat, ColorMaterialMode, Combine, CompareFunc, CompareMode, DepthTextureMode,
-    Face, FixedState, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode, TextureTarget,
-    MAX_LIGHTS, MAX_TEXTURE_UNITS,
+    AlphaTest, BaseFormat, ColorMaterialMode, Combine, CombinerInput, CompareFunc, CompareMode,
+    DepthTextureMode, Face, FixedState, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat,
+    TexGenMode, TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
 };
 
 /// Where a vertex colour comes from when lighting is on (COLOR_MATERIAL).
@@ -106,9 +106,20 @@ pub struct FragmentUnitKey {
     pub env: EnvKey,
 }
 
+/// NV_register_combiners: the stages that run and the final combiner (the constant
+/// colours are uniforms).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct CombinersKey {
+    pub stages: Vec<GeneralStage>,
+    pub final_inputs: [CombinerInput; 7],
+    pub color_sum_clamp: bool,
+}
+
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct FragmentKey {
     pub units: Vec<FragmentUnitKey>,
+    /// Register combiners replace the texture environments when enabled.
+    pub combiners: Option<CombinersKey>,
     /// Two-sided lighting: the fragment picks the back colour on back faces.
     pub two_side: bool,
     pub flat: bool,
@@ -155,6 +166,11 @@ impl ShaderKey {
                     env: env_key(state, unit),
                 })
                 .collect(),
+            combiners: state.register_combiners.get().map(|rc| CombinersKey {
+                stages: rc.active_stages().to_vec(),
+                final_inputs: rc.final_inputs,
+                color_sum_clamp: rc.color_sum_clamp,
+            }),
             two_side,
             flat: state.shade_model == ShadeModel::Flat,
             alpha_test: state

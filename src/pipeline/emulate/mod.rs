@@ -83,12 +83,6 @@ impl EmulatedPipeline {
     }
 
     fn draw(&mut self, gl: &glow::Context, geometry: &Arc<Geometry>) -> Result<(), PipelineError> {
-        if self.state.register_combiners.enabled {
-            return Err(PipelineError::Unsupported {
-                what: "NV_register_combiners".into(),
-                path: "emulated",
-            });
-        }
         let key = ShaderKey::from_state(&self.state);
         let program = self
             .programs

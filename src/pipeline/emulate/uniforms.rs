@@ -50,6 +50,8 @@ pub enum UniformSource {
     /// TEXTURE_COMPARE_FAIL_VALUE of the unit's texture.
     CompareFail(u8),
     AlphaRef,
+    /// CONSTANT_COLOR0_NV / CONSTANT_COLOR1_NV.
+    CombinerConstant(u8),
     /// The texture image unit the sampler reads (the fixed-function unit index).
     Sampler(u8),
 }
@@ -73,6 +75,7 @@ impl UniformSource {
             UniformSource::EnvColor(u) => format!("u_env_color{u}"),
             UniformSource::CompareFail(u) => format!("u_compare_fail{u}"),
             UniformSource::AlphaRef => "u_alpha_ref".into(),
+            UniformSource::CombinerConstant(i) => format!("u_combiner_constant{i}"),
             UniformSource::Sampler(u) => format!("u_tex{u}"),
         }
     }
@@ -178,6 +181,9 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
                 .map_or(0.0, |t| t.params.compare_fail_value),
         ),
         UniformSource::AlphaRef => Float(state.alpha_test.value.reference),
+        UniformSource::CombinerConstant(i) => {
+            Vec4(state.register_combiners.value.constant_color[usize::from(i & 1)])
+        }
         UniformSource::Sampler(u) => Int(i32::from(u)),
     }
 }

@@ -23,11 +23,16 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
     }
     w.line("primary = clamp(primary, 0.0, 1.0);");
     for unit in &key.units {
-        emit_texel(&mut w, unit);
+        emit_texel(&mut w, unit, key.combiners.is_some());
     }
     w.line("vec4 previous = primary;");
-    for unit in &key.units {
-        emit_env(&mut w, key, unit);
+    match &key.combiners {
+        Some(c) => super::combiners::emit(&mut w, key, c),
+        None => {
+            for unit in &key.units {
+                emit_env(&mut w, key, unit);
+            }
+        }
     }
     if let Some(func) = key.alpha_test {
         emit_alpha_test(&mut w, func);
@@ -56,8 +61,9 @@ fn projected(w: &mut GlslWriter) {
     );
 }
 
-/// t{u}: the unit's texel as GL's texture environment sees it.
-fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey) {
+/// t{u}: the unit's texel as GL's texture environment sees it — or, for register
+/// combiners, as their texture register holds it (depth: (0,0,0,D); compare: (L,L,L,L)).
+fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
     let u = unit.unit;
     w.declare(&format!("in vec4 v_tc{u};"));
     projected(w);
@@ -84,6 +90,11 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey) {
     match unit.texel {
         // The texture's swizzle already gives (L,L,L,1), (I,I,I,I), (0,0,0,A), (L,L,L,A).
         TexelKey::Color(_) => w.line(format!("vec4 t{u} = texture({s}, {coord});")),
+        TexelKey::Depth(_) if combiners => {
+            w.line(format!(
+                "vec4 t{u} = vec4(0.0, 0.0, 0.0, texture({s}, {coord}).r);"
+            ));
+        }
         TexelKey::Depth(m) => {
             w.line(format!("float d{u} = texture({s}, {coord}).r;"));
             w.line(format!("vec4 t{u} = {};", as_mode(m, &format!("d{u}"))));
@@ -94,6 +105,11 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey) {
             let fail = w.uniform(UniformSource::CompareFail(u));
             w.line(format!("float c{u} = texture({s}, {coord});"));
             w.line(format!("c{u} = {fail} + c{u} * (1.0 - {fail});"));
+            let m = if combiners {
+                DepthTextureMode::Intensity
+            } else {
+                m
+            };
             w.line(format!("vec4 t{u} = {};", as_mode(m, &format!("c{u}"))));
         }
     }

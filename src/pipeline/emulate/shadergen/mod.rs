@@ -6,6 +6,7 @@
 //! coordinate of unit u. A vertex array that a draw lacks is disabled and its current value
 //! is set as a constant attribute, so "per vertex or per draw" never changes the key.
 
+mod combiners;
 mod fragment;
 mod vertex;
 
