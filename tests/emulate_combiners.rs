@@ -8,6 +8,7 @@ mod support;
 use std::sync::Arc;
 
 use fixedfunc::ff::combiner_model::{evaluate, CombinerInputs};
+use fixedfunc::ff::Precision;
 use fixedfunc::ff::{
     Capability, CombinerBias, CombinerInput, CombinerOutput, CombinerParam, CombinerScale, Command,
     ComponentUsage, Filter, FinalVariable, FixedState, Geometry, Mapping, PixelFormat, PixelType,
@@ -198,7 +199,7 @@ fn case(
     cmds
 }
 
-fn expected(cmds: &[Command]) -> [u8; 4] {
+fn expected(cmds: &[Command], precision: Precision) -> [u8; 4] {
     let mut state = FixedState::new();
     for c in cmds {
         state.apply(c).expect("the model accepts the case");
@@ -215,13 +216,22 @@ fn expected(cmds: &[Command]) -> [u8; 4] {
             textures,
             fog: Vec4::new(0.0, 0.0, 0.0, 1.0),
         },
+        precision,
     );
     out.to_array()
         .map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
 }
 
+/// Float: within one 8-bit step (one rounding, on the framebuffer write). Fixed8: the
+/// 9-bit integer arithmetic is exact, so GPU and model agree bit for bit.
 #[test]
 fn gpu_register_combiners_match_the_cpu_model() {
+    for (precision, tolerance) in [(Precision::Float, 1), (Precision::Fixed8, 0)] {
+        check_table(precision, tolerance);
+    }
+}
+
+fn check_table(precision: Precision, tolerance: u8) {
     let ctx = support::context(support::HEADLESS[0], Profile::Core33);
     let t = support::target(&ctx, 2, 2, DepthBits::D24, false);
     let mut seen = std::collections::HashSet::new();
@@ -253,21 +263,30 @@ fn gpu_register_combiners_match_the_cpu_model() {
             ),
         ] {
             let cmds = case(mapping, product, third, scale, bias);
-            let mut p = EmulatedPipeline::new(&ctx).expect("pipeline");
+            let mut p = EmulatedPipeline::new(&ctx)
+                .expect("pipeline")
+                .with_precision(precision);
             p.execute(&ctx, &cmds).expect("execute");
             assert_eq!(p.take_gl_error(), None);
             let got = t.read_color(&ctx).expect("colour").get_pixel(0, 0).0;
-            let want = expected(&cmds);
-            let ok = got.iter().zip(want).all(|(g, w)| g.abs_diff(w) <= 1);
+            let want = expected(&cmds, precision);
+            let ok = got
+                .iter()
+                .zip(want)
+                .all(|(g, w)| g.abs_diff(w) <= tolerance);
             assert!(
                 ok,
-                "{mapping:?} {product:?} {third:?} {scale:?} {bias:?}: GPU {got:?}, model {want:?}"
+                "{precision:?} {mapping:?} {product:?} {third:?} {scale:?} {bias:?}: GPU {got:?}, model {want:?}"
             );
             p.release(&ctx);
             seen.insert(want);
         }
     }
     // The table exercises the arithmetic: most cases give different colours.
-    assert!(seen.len() >= 20, "only {} distinct results: {seen:?}", seen.len());
+    assert!(
+        seen.len() >= 20,
+        "only {} distinct results: {seen:?}",
+        seen.len()
+    );
     support::assert_no_gl_error(&ctx);
 }

@@ -12,7 +12,35 @@ use super::combiners::{
     output, CombinerInput, ComponentUsage, Product, Register, RegisterCombiners, StagePortion,
     SumOrMux,
 };
+use super::precision::{quantise, quantise9, Precision};
 use super::state::MAX_TEXTURE_UNITS;
+
+/// Fixed8: q9 after every mapping, product and output (ff::precision); Float: identity.
+fn q(p: Precision, v: f32) -> f32 {
+    match p {
+        Precision::Float => v,
+        Precision::Fixed8 => quantise9(v) as f32 / 255.0,
+    }
+}
+
+fn q3(p: Precision, v: Vec3) -> Vec3 {
+    Vec3::new(q(p, v.x), q(p, v.y), q(p, v.z))
+}
+
+/// clamp((r + bias)·scale, −1, 1); in Fixed8 the −½ bias is −128/255 and q9 clamps.
+fn out(p: Precision, o: &super::combiners::CombinerOutput, r: f32) -> f32 {
+    match p {
+        Precision::Float => output(r, o.scale, o.bias),
+        Precision::Fixed8 => {
+            let bias = if o.bias.value() == 0.0 {
+                0.0
+            } else {
+                -128.0 / 255.0
+            };
+            q(p, (r + bias) * o.scale.factor())
+        }
+    }
+}
 
 /// What the combiners start from at one fragment.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,35 +95,38 @@ impl Registers {
 }
 
 /// An RGB-portion input: the register's RGB or its alpha replicated, then the mapping.
-fn rgb_input(regs: &Registers, i: CombinerInput) -> Vec3 {
+fn rgb_input(regs: &Registers, p: Precision, i: CombinerInput) -> Vec3 {
     let v = regs.read(i.register);
     let e = match i.usage {
         ComponentUsage::Rgb => v.truncate(),
         ComponentUsage::Alpha => Vec3::splat(v.w),
         ComponentUsage::Blue => Vec3::splat(v.z),
     };
-    Vec3::new(
-        i.mapping.apply(e.x),
-        i.mapping.apply(e.y),
-        i.mapping.apply(e.z),
+    q3(
+        p,
+        Vec3::new(
+            i.mapping.apply(e.x),
+            i.mapping.apply(e.y),
+            i.mapping.apply(e.z),
+        ),
     )
 }
 
 /// An alpha-portion input: the register's alpha or blue, then the mapping.
-fn alpha_input(regs: &Registers, i: CombinerInput) -> f32 {
+fn alpha_input(regs: &Registers, p: Precision, i: CombinerInput) -> f32 {
     let v = regs.read(i.register);
     let e = match i.usage {
         ComponentUsage::Blue => v.z,
         ComponentUsage::Alpha | ComponentUsage::Rgb => v.w,
     };
-    i.mapping.apply(e)
+    q(p, i.mapping.apply(e))
 }
 
-fn rgb_portion(regs: &Registers, p: &StagePortion) -> [Vec3; 3] {
-    let [a, b, c, d] = p.inputs.map(|i| rgb_input(regs, i));
+fn rgb_portion(regs: &Registers, pr: Precision, p: &StagePortion) -> [Vec3; 3] {
+    let [a, b, c, d] = p.inputs.map(|i| rgb_input(regs, pr, i));
     let product = |x: Vec3, y: Vec3, kind| match kind {
-        Product::Componentwise => x * y,
-        Product::Dot => Vec3::splat(x.dot(y)),
+        Product::Componentwise => q3(pr, x * y),
+        Product::Dot => q3(pr, Vec3::splat(x.dot(y))),
     };
     let ab = product(a, b, p.output.ab_product);
     let cd = product(c, d, p.output.cd_product);
@@ -104,27 +135,37 @@ fn rgb_portion(regs: &Registers, p: &StagePortion) -> [Vec3; 3] {
         SumOrMux::Mux if regs.spare0.w >= 0.5 => cd,
         SumOrMux::Mux => ab,
     };
-    let out = |v: Vec3| {
-        v.to_array()
-            .map(|e| output(e, p.output.scale, p.output.bias))
-            .into()
-    };
-    [out(ab), out(cd), out(third)]
+    let o = |v: Vec3| v.to_array().map(|e| out(pr, &p.output, e)).into();
+    [o(ab), o(cd), o(third)]
 }
 
-fn alpha_portion(regs: &Registers, p: &StagePortion) -> [f32; 3] {
-    let [a, b, c, d] = p.inputs.map(|i| alpha_input(regs, i));
-    let (ab, cd) = (a * b, c * d);
+fn alpha_portion(regs: &Registers, pr: Precision, p: &StagePortion) -> [f32; 3] {
+    let [a, b, c, d] = p.inputs.map(|i| alpha_input(regs, pr, i));
+    let (ab, cd) = (q(pr, a * b), q(pr, c * d));
     let third = match p.output.sum_or_mux {
         SumOrMux::Sum => ab + cd,
         SumOrMux::Mux if regs.spare0.w >= 0.5 => cd,
         SumOrMux::Mux => ab,
     };
-    [ab, cd, third].map(|e| output(e, p.output.scale, p.output.bias))
+    [ab, cd, third].map(|e| out(pr, &p.output, e))
 }
 
-/// The fragment colour the combiners produce.
-pub fn evaluate(rc: &RegisterCombiners, inputs: &CombinerInputs) -> Vec4 {
+/// The fragment colour the combiners produce. In Fixed8 the inputs are first quantised to
+/// 8 bits (the texels and colours the stages receive) and the result to 8 bits.
+pub fn evaluate(rc: &RegisterCombiners, inputs: &CombinerInputs, precision: Precision) -> Vec4 {
+    let inputs = &match precision {
+        Precision::Float => *inputs,
+        Precision::Fixed8 => {
+            let q8 =
+                |v: Vec4| Vec4::from_array(v.to_array().map(|c| f32::from(quantise(c)) / 255.0));
+            CombinerInputs {
+                primary: q8(inputs.primary),
+                secondary: inputs.secondary,
+                textures: inputs.textures.map(|t| t.map(q8)),
+                fog: inputs.fog,
+            }
+        }
+    };
     let mut regs = Registers {
         primary: inputs.primary,
         secondary: inputs.secondary,
@@ -135,8 +176,8 @@ pub fn evaluate(rc: &RegisterCombiners, inputs: &CombinerInputs) -> Vec4 {
         constant: rc.constant_color,
     };
     for stage in rc.active_stages() {
-        let rgb = rgb_portion(&regs, &stage.rgb);
-        let alpha = alpha_portion(&regs, &stage.alpha);
+        let rgb = rgb_portion(&regs, precision, &stage.rgb);
+        let alpha = alpha_portion(&regs, precision, &stage.alpha);
         let o = &stage.rgb.output;
         for (reg, v) in [(o.ab, rgb[0]), (o.cd, rgb[1]), (o.sum, rgb[2])] {
             if let Some(slot) = regs.slot(reg) {
@@ -150,15 +191,21 @@ pub fn evaluate(rc: &RegisterCombiners, inputs: &CombinerInputs) -> Vec4 {
             }
         }
     }
-    final_combiner(rc, &regs)
+    let result = final_combiner(rc, &regs, precision);
+    match precision {
+        Precision::Float => result,
+        Precision::Fixed8 => {
+            Vec4::from_array(result.to_array().map(|c| f32::from(quantise(c)) / 255.0))
+        }
+    }
 }
 
 /// RGB = min(A·B + (1 − A)·C + D, 1), alpha = G; inputs mapped by unsigned identity or
 /// invert; E_TIMES_F = E·F, SPARE0_PLUS_SECONDARY_COLOR = spare0 + secondary (clamped to
 /// [0,1] with COLOR_SUM_CLAMP); both with alpha 0.
-fn final_combiner(rc: &RegisterCombiners, regs: &Registers) -> Vec4 {
+fn final_combiner(rc: &RegisterCombiners, regs: &Registers, p: Precision) -> Vec4 {
     let fi = &rc.final_inputs;
-    let plain = |i: CombinerInput| rgb_input(regs, i);
+    let plain = |i: CombinerInput| rgb_input(regs, p, i);
     let (e, f) = (plain(fi[4]), plain(fi[5]));
     let sum = {
         let s = regs.spare0.truncate().max(Vec3::ZERO) + regs.secondary.truncate().max(Vec3::ZERO);
@@ -226,7 +273,7 @@ mod tests {
     fn untouched_combiners_pass_the_primary_colour() {
         let rc = RegisterCombiners::DEFAULT;
         let c = Vec4::new(0.25, 0.5, 0.75, 0.6);
-        assert_eq!(evaluate(&rc, &inputs(c)), c);
+        assert_eq!(evaluate(&rc, &inputs(c), Precision::Float), c);
     }
 
     /// A stage that puts ½ + (x − y) into SPARE0.a: SUM of x·1 and (1 − y)·1, bias −½.
@@ -255,10 +302,18 @@ mod tests {
             usage: ComponentUsage::Alpha,
         };
         p.output.bias = CombinerBias::ByNegativeOneHalf;
-        let out = evaluate(&rc, &inputs(Vec4::new(0.0, 0.0, 0.25, 0.75)));
+        let out = evaluate(
+            &rc,
+            &inputs(Vec4::new(0.0, 0.0, 0.25, 0.75)),
+            Precision::Float,
+        );
         // ½ + 0.75 − 0.25 = 1.0, then the bias: (0.75 + 0.75 − 0.5) → clamp to 1.
         assert!((out.w - 1.0).abs() < 1e-6, "{out}");
-        let out = evaluate(&rc, &inputs(Vec4::new(0.0, 0.0, 0.5, 0.4)));
+        let out = evaluate(
+            &rc,
+            &inputs(Vec4::new(0.0, 0.0, 0.5, 0.4)),
+            Precision::Float,
+        );
         assert!((out.w - 0.4).abs() < 1e-6, "{out}");
     }
 }

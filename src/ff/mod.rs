@@ -23,6 +23,7 @@ pub mod fragment;
 pub mod geometry;
 pub mod light;
 pub mod matrix;
+pub mod precision;
 pub mod script;
 pub mod state;
 pub mod texenv;
@@ -50,6 +51,7 @@ pub use light::{
     Material, MaterialParam, Materials, MAX_LIGHTS,
 };
 pub use matrix::{MatrixMode, MatrixStack, ViewVolume};
+pub use precision::Precision;
 pub use state::{CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_TEXTURE_UNITS};
 pub use texenv::{
     Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,

@@ -1,9 +1,10 @@
 //! The validated scene: every number finite and in range, every mesh loaded.
 
+pub use crate::ff::Precision;
 pub use crate::gpu::{DepthBits, DepthRule as ReadbackRule};
 use crate::mesh::{self, Mesh};
 use glam::{Mat4, Vec3};
-use serde::Deserialize;
+
 use std::path::PathBuf;
 
 use super::error::SceneWarning;
@@ -257,16 +258,6 @@ impl Object {
     pub fn world_mesh(&self) -> Mesh {
         self.mesh.transformed(&self.transform.matrix())
     }
-}
-
-/// Arithmetic of the texture and combiner stages (see DESIGN: "Precision is a mode").
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Precision {
-    /// What Mesa's native fixed-function path does on llvmpipe.
-    Float,
-    /// 8-bit era integer combiners.
-    Fixed8,
 }
 
 /// glPolygonOffset(factor, units) for the light pass.

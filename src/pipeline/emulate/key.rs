@@ -5,8 +5,8 @@
 
 use crate::ff::{
     AlphaTest, BaseFormat, ColorMaterialMode, Combine, CombinerInput, CompareFunc, CompareMode,
-    DepthTextureMode, Face, FixedState, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat,
-    TexGenMode, TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
+    DepthTextureMode, Face, FixedState, GeneralStage, Precision, ShadeModel, TexCoord, TexEnvMode,
+    TexFormat, TexGenMode, TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
 };
 
 /// Where a vertex colour comes from when lighting is on (COLOR_MATERIAL).
@@ -118,6 +118,8 @@ pub struct CombinersKey {
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct FragmentKey {
     pub units: Vec<FragmentUnitKey>,
+    /// The arithmetic of the stages and the alpha test.
+    pub precision: Precision,
     /// Register combiners replace the texture environments when enabled.
     pub combiners: Option<CombinersKey>,
     /// Two-sided lighting: the fragment picks the back colour on back faces.
@@ -135,7 +137,7 @@ pub struct ShaderKey {
 }
 
 impl ShaderKey {
-    pub fn from_state(state: &FixedState) -> ShaderKey {
+    pub fn from_state(state: &FixedState, precision: Precision) -> ShaderKey {
         let units = enabled_units(state);
         let lighting = lighting_key(state);
         let two_side = lighting.as_ref().is_some_and(|l| l.two_side);
@@ -166,6 +168,7 @@ impl ShaderKey {
                     env: env_key(state, unit),
                 })
                 .collect(),
+            precision,
             combiners: state.register_combiners.get().map(|rc| CombinersKey {
                 stages: rc.active_stages().to_vec(),
                 final_inputs: rc.final_inputs,

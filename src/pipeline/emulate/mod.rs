@@ -4,9 +4,10 @@
 //! keys never seen), uploads the uniforms from the state, binds the enabled units'
 //! textures, syncs the raster state through its shadow copy and draws.
 //!
-//! `Precision::Float` is what this path implements today: fp32 texture environment with a
-//! clamp per stage, and the alpha test on unorm8 values rounded half to even, as Mesa's
-//! native path does on llvmpipe.
+//! Two precisions (`ff::precision`): `Float` (the default) follows Mesa's native path —
+//! fp32 stages clamped per stage, the alpha test on unorm8 values rounded half to even;
+//! `Fixed8` computes the stages on 8-bit integers and the register combiners on 9-bit
+//! signed values, as the era's hardware did.
 
 pub mod cache;
 pub mod conv;
@@ -32,7 +33,7 @@ use self::sync::RasterSync;
 use self::textures::Textures;
 use super::{Counters, Pipeline, PipelineError, PipelineKind, Readback};
 use crate::ff::{
-    Command, FixedState, Geometry, GlError, PixelFormat, PixelType, ReadPixels, Viewport,
+    Command, FixedState, Geometry, GlError, PixelFormat, PixelType, Precision, ReadPixels, Viewport,
 };
 use crate::gpu::{GpuContext, Profile};
 
@@ -44,6 +45,7 @@ pub struct EmulatedPipeline {
     raster: RasterSync,
     readbacks: HashMap<u32, Readback>,
     counters: Counters,
+    precision: Precision,
 }
 
 impl EmulatedPipeline {
@@ -74,16 +76,23 @@ impl EmulatedPipeline {
             raster: RasterSync::default(),
             readbacks: HashMap::new(),
             counters: Counters::default(),
+            precision: Precision::Float,
         })
+    }
+
+    /// The same pipeline computing its stages in `precision` (`ff::precision`).
+    pub fn with_precision(mut self, precision: Precision) -> Self {
+        self.precision = precision;
+        self
     }
 
     /// The key the next draw would use (for `fixedfunc shaders` and tests).
     pub fn current_key(&self) -> ShaderKey {
-        ShaderKey::from_state(&self.state)
+        ShaderKey::from_state(&self.state, self.precision)
     }
 
     fn draw(&mut self, gl: &glow::Context, geometry: &Arc<Geometry>) -> Result<(), PipelineError> {
-        let key = ShaderKey::from_state(&self.state);
+        let key = ShaderKey::from_state(&self.state, self.precision);
         let program = self
             .programs
             .get_or_build(&key, |k| Program::build(gl, k))?;

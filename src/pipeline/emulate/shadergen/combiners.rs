@@ -4,11 +4,23 @@
 //! when it began, then writes its outputs through clamp((r + bias)·scale, −1, 1).
 
 use crate::ff::{
-    CombinerInput, CombinerOutput, ComponentUsage, Mapping, Product, Register, SumOrMux,
+    CombinerInput, CombinerOutput, ComponentUsage, Mapping, Precision, Product, Register, SumOrMux,
 };
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{CombinersKey, FragmentKey};
 use crate::pipeline::emulate::uniforms::UniformSource;
+
+/// Fixed8: q9(v) = clamp(⌊255v + ½⌋, −256, 255)/255 after every mapping, product and
+/// output (ff::precision); Float: the value itself.
+const Q9: &str = "vec3 q9(vec3 v) { return clamp(floor(v * 255.0 + 0.5), -256.0, 255.0) / 255.0; }
+float q9(float v) { return clamp(floor(v * 255.0 + 0.5), -256.0, 255.0) / 255.0; }";
+
+fn q9(p: Precision, e: String) -> String {
+    match p {
+        Precision::Float => e,
+        Precision::Fixed8 => format!("q9({e})"),
+    }
+}
 
 fn register(w: &mut GlslWriter, r: Register) -> String {
     match r {
@@ -41,31 +53,43 @@ fn mapping(m: Mapping, e: &str) -> String {
     }
 }
 
-fn rgb_input(w: &mut GlslWriter, i: CombinerInput) -> String {
+fn rgb_input(w: &mut GlslWriter, p: Precision, i: CombinerInput) -> String {
     let r = register(w, i.register);
     let e = match i.usage {
         ComponentUsage::Rgb => format!("{r}.rgb"),
         ComponentUsage::Alpha => format!("vec3({r}.a)"),
         ComponentUsage::Blue => format!("vec3({r}.b)"),
     };
-    mapping(i.mapping, &e)
+    q9(p, mapping(i.mapping, &e))
 }
 
-fn alpha_input(w: &mut GlslWriter, i: CombinerInput) -> String {
+fn alpha_input(w: &mut GlslWriter, p: Precision, i: CombinerInput) -> String {
     let r = register(w, i.register);
     let e = match i.usage {
         ComponentUsage::Blue => format!("{r}.b"),
         ComponentUsage::Alpha | ComponentUsage::Rgb => format!("{r}.a"),
     };
-    mapping(i.mapping, &e)
+    q9(p, mapping(i.mapping, &e))
 }
 
-fn output_expr(o: &CombinerOutput, v: &str) -> String {
-    format!(
-        "clamp(({v} + {:?}) * {:?}, -1.0, 1.0)",
-        o.bias.value(),
-        o.scale.factor()
-    )
+/// clamp((r + bias)·scale, −1, 1); in Fixed8 the bias −½ is −128/255 and q9 clamps.
+fn output_expr(p: Precision, o: &CombinerOutput, v: &str) -> String {
+    match p {
+        Precision::Float => format!(
+            "clamp(({v} + {:?}) * {:?}, -1.0, 1.0)",
+            o.bias.value(),
+            o.scale.factor()
+        ),
+        Precision::Fixed8 => format!(
+            "q9(({v} + {:?}) * {:?})",
+            if o.bias.value() == 0.0 {
+                0.0
+            } else {
+                -128.0 / 255.0
+            },
+            o.scale.factor()
+        ),
+    }
 }
 
 /// Every register a key reads or writes, so only those are declared.
@@ -91,14 +115,27 @@ fn used_textures(key: &CombinersKey) -> Vec<u8> {
 
 pub fn emit(w: &mut GlslWriter, fragment: &FragmentKey, key: &CombinersKey) {
     let enabled = |n: u8| fragment.units.iter().any(|u| u.unit == n);
+    let p = fragment.precision;
+    // Registers hold values in [−1, 1]; Fixed8's stage values are integers 0..=255.
+    let unit = match p {
+        Precision::Float => "",
+        Precision::Fixed8 => " / 255.0",
+    };
+    if p == Precision::Fixed8 {
+        w.declare(Q9);
+    }
     w.line("// NV_register_combiners");
-    w.line("vec4 rc_primary = primary;");
+    w.line(format!("vec4 rc_primary = primary{unit};"));
     w.line("vec4 rc_secondary = vec4(0.0);");
     // Fog is off: FOG = (fog colour, 1); SPARE0.a starts as texture 0's alpha.
     w.line("vec4 rc_fog = vec4(0.0, 0.0, 0.0, 1.0);");
     w.line(format!(
         "vec4 rc_spare0 = vec4(0.0, 0.0, 0.0, {});",
-        if enabled(0) { "t0.a" } else { "0.0" }
+        if enabled(0) {
+            format!("t0.a{unit}")
+        } else {
+            "0.0".into()
+        }
     ));
     w.line("vec4 rc_spare1 = vec4(0.0);");
     let mut units: Vec<u8> = fragment.units.iter().map(|u| u.unit).collect();
@@ -107,25 +144,25 @@ pub fn emit(w: &mut GlslWriter, fragment: &FragmentKey, key: &CombinersKey) {
     units.dedup();
     for n in units {
         let init = if enabled(n) {
-            format!("t{n}")
+            format!("t{n}{unit}")
         } else {
             "vec4(0.0)".into()
         };
         w.line(format!("vec4 rc_tex{n} = {init};"));
     }
     for (s, stage) in key.stages.iter().enumerate() {
-        emit_stage(w, s, stage);
+        emit_stage(w, p, s, stage);
     }
-    emit_final(w, key);
+    emit_final(w, p, key);
 }
 
-fn emit_stage(w: &mut GlslWriter, s: usize, stage: &crate::ff::GeneralStage) {
+fn emit_stage(w: &mut GlslWriter, pr: Precision, s: usize, stage: &crate::ff::GeneralStage) {
     w.line(format!("// general combiner {s}"));
     let p = &stage.rgb;
-    let [a, b, c, d] = p.inputs.map(|i| rgb_input(w, i));
+    let [a, b, c, d] = p.inputs.map(|i| rgb_input(w, pr, i));
     let prod = |x: &str, y: &str, k: Product| match k {
-        Product::Componentwise => format!("({x} * {y})"),
-        Product::Dot => format!("vec3(dot({x}, {y}))"),
+        Product::Componentwise => q9(pr, format!("({x} * {y})")),
+        Product::Dot => q9(pr, format!("vec3(dot({x}, {y}))")),
     };
     w.line(format!(
         "vec3 s{s}_ab = {};",
@@ -140,9 +177,15 @@ fn emit_stage(w: &mut GlslWriter, s: usize, stage: &crate::ff::GeneralStage) {
         third(s, "", p.output.sum_or_mux)
     ));
     let p = &stage.alpha;
-    let [a, b, c, d] = p.inputs.map(|i| alpha_input(w, i));
-    w.line(format!("float s{s}_ab_a = {a} * {b};"));
-    w.line(format!("float s{s}_cd_a = {c} * {d};"));
+    let [a, b, c, d] = p.inputs.map(|i| alpha_input(w, pr, i));
+    w.line(format!(
+        "float s{s}_ab_a = {};",
+        q9(pr, format!("{a} * {b}"))
+    ));
+    w.line(format!(
+        "float s{s}_cd_a = {};",
+        q9(pr, format!("{c} * {d}"))
+    ));
     w.line(format!(
         "float s{s}_sum_a = {};",
         third(s, "_a", p.output.sum_or_mux)
@@ -154,7 +197,7 @@ fn emit_stage(w: &mut GlslWriter, s: usize, stage: &crate::ff::GeneralStage) {
             let r = register(w, reg);
             w.line(format!(
                 "{r}.rgb = {};",
-                output_expr(o, &format!("s{s}_{v}"))
+                output_expr(pr, o, &format!("s{s}_{v}"))
             ));
         }
     }
@@ -162,7 +205,10 @@ fn emit_stage(w: &mut GlslWriter, s: usize, stage: &crate::ff::GeneralStage) {
     for (reg, v) in [(o.ab, "ab_a"), (o.cd, "cd_a"), (o.sum, "sum_a")] {
         if reg != Register::Discard {
             let r = register(w, reg);
-            w.line(format!("{r}.a = {};", output_expr(o, &format!("s{s}_{v}"))));
+            w.line(format!(
+                "{r}.a = {};",
+                output_expr(pr, o, &format!("s{s}_{v}"))
+            ));
         }
     }
 }
@@ -175,7 +221,7 @@ fn third(s: usize, suffix: &str, k: SumOrMux) -> String {
     }
 }
 
-fn emit_final(w: &mut GlslWriter, key: &CombinersKey) {
+fn emit_final(w: &mut GlslWriter, p: Precision, key: &CombinersKey) {
     w.line("// final combiner: min(A·B + (1 − A)·C + D, 1), alpha G");
     let fi = key.final_inputs;
     let sum = if key.color_sum_clamp {
@@ -184,8 +230,8 @@ fn emit_final(w: &mut GlslWriter, key: &CombinersKey) {
         "max(rc_spare0.rgb, 0.0) + max(rc_secondary.rgb, 0.0)"
     };
     w.line(format!("vec4 rc_sum = vec4({sum}, 0.0);"));
-    let e = rgb_input(w, fi[4]);
-    let f = rgb_input(w, fi[5]);
+    let e = rgb_input(w, p, fi[4]);
+    let f = rgb_input(w, p, fi[5]);
     w.line(format!("vec4 rc_ef = vec4({e} * {f}, 0.0);"));
     let value = |w: &mut GlslWriter, i: CombinerInput| {
         let r = match i.register {
@@ -217,7 +263,10 @@ fn emit_final(w: &mut GlslWriter, key: &CombinersKey) {
         mapping(i.mapping, &raw)
     };
     w.line(format!("vec3 rc_a = {a};"));
-    w.line(format!(
-        "previous = vec4(min(rc_a * {b} + (1.0 - rc_a) * {c} + {d}, vec3(1.0)), {g});"
-    ));
+    let out = format!("vec4(min(rc_a * {b} + (1.0 - rc_a) * {c} + {d}, vec3(1.0)), {g})");
+    match p {
+        Precision::Float => w.line(format!("previous = {out};")),
+        // Back to the stage units: integers 0..=255.
+        Precision::Fixed8 => w.line(format!("previous = q8({out});")),
+    }
 }

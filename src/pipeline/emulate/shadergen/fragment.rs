@@ -4,7 +4,7 @@
 
 use crate::ff::{
     BaseFormat, Combine, CombineFunc, CombineOperand, CombineSource, CompareFunc, DepthTextureMode,
-    TextureTarget,
+    Precision, TextureTarget,
 };
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{EnvKey, FragmentKey, FragmentUnitKey, TexelKey};
@@ -22,8 +22,16 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
         w.line("vec4 primary = v_color;");
     }
     w.line("primary = clamp(primary, 0.0, 1.0);");
+    if key.precision == Precision::Fixed8 {
+        // Fixed8: the stages work on integers 0..=255 (ff::precision).
+        w.declare(FIXED8_HELPERS);
+        w.line("primary = q8(primary);");
+    }
     for unit in &key.units {
         emit_texel(&mut w, unit, key.combiners.is_some());
+        if key.precision == Precision::Fixed8 {
+            w.line(format!("t{0} = q8(t{0});", unit.unit));
+        }
     }
     w.line("vec4 previous = primary;");
     match &key.combiners {
@@ -35,9 +43,12 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
         }
     }
     if let Some(func) = key.alpha_test {
-        emit_alpha_test(&mut w, func);
+        emit_alpha_test(&mut w, func, key.precision);
     }
-    w.line("frag_color = previous;");
+    match key.precision {
+        Precision::Float => w.line("frag_color = previous;"),
+        Precision::Fixed8 => w.line("frag_color = previous / 255.0;"),
+    }
     w
 }
 
@@ -115,77 +126,121 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
     }
 }
 
+/// Expression builders for the precision mode (see `ff::precision` for the Fixed8 rules).
+/// In `Fixed8` every value in the fragment stage is an integer 0..=255 held in a float.
+#[derive(Clone, Copy)]
+struct Arith(Precision);
+
+impl Arith {
+    fn fixed(self) -> bool {
+        self.0 == Precision::Fixed8
+    }
+    fn one_minus(self, x: &str) -> String {
+        if self.fixed() {
+            format!("(255.0 - {x})")
+        } else {
+            format!("(1.0 - {x})")
+        }
+    }
+    fn mul(self, a: &str, b: &str) -> String {
+        if self.fixed() {
+            format!("f8_mul({a}, {b})")
+        } else {
+            format!("({a} * {b})")
+        }
+    }
+    fn add_signed(self, a: &str, b: &str) -> String {
+        if self.fixed() {
+            format!("({a} + {b} - 128.0)")
+        } else {
+            format!("({a} + {b} - 0.5)")
+        }
+    }
+    /// a0·a2 + a1·(1 − a2).
+    fn lerp(self, a0: &str, a1: &str, a2: &str) -> String {
+        if self.fixed() {
+            format!("f8_lerp({a0}, {a1}, {a2})")
+        } else {
+            format!("({a0} * {a2} + {a1} * (1.0 - {a2}))")
+        }
+    }
+    fn dot3(self, a: &str, b: &str) -> String {
+        if self.fixed() {
+            format!("floor(dot({a} - vec3(128.0), {b} - vec3(128.0)) / 64.0)")
+        } else {
+            format!("(4.0 * dot({a} - vec3(0.5), {b} - vec3(0.5)))")
+        }
+    }
+    /// Every stage ends clamped to the representable range.
+    fn clamp(self, v: &str) -> String {
+        if self.fixed() {
+            format!("clamp({v}, 0.0, 255.0)")
+        } else {
+            format!("clamp({v}, 0.0, 1.0)")
+        }
+    }
+    /// A uniform colour in the stage's units.
+    fn color(self, u: &str) -> String {
+        if self.fixed() {
+            format!("q8({u})")
+        } else {
+            u.to_string()
+        }
+    }
+}
+
+/// GLSL helpers of the Fixed8 rules: q(v) = ⌊255v + ½⌋; c' = c + (c >> 7);
+/// MODULATE (a·b' + 127) >> 8; INTERPOLATE (a0·a2' + a1·(256 − a2') + 127) >> 8.
+const FIXED8_HELPERS: &str = "vec4 q8(vec4 v) { return floor(clamp(v, 0.0, 1.0) * 255.0 + 0.5); }
+float q8(float v) { return floor(clamp(v, 0.0, 1.0) * 255.0 + 0.5); }
+vec3 f8_mul(vec3 a, vec3 b) { return floor((a * (b + floor(b / 128.0)) + 127.0) / 256.0); }
+float f8_mul(float a, float b) { return floor((a * (b + floor(b / 128.0)) + 127.0) / 256.0); }
+vec3 f8_lerp(vec3 a0, vec3 a1, vec3 a2) { vec3 w = a2 + floor(a2 / 128.0); return floor((a0 * w + a1 * (256.0 - w) + 127.0) / 256.0); }
+float f8_lerp(float a0, float a1, float a2) { float w = a2 + floor(a2 / 128.0); return floor((a0 * w + a1 * (256.0 - w) + 127.0) / 256.0); }";
+
 fn emit_env(w: &mut GlslWriter, key: &FragmentKey, unit: &FragmentUnitKey) {
+    let m = Arith(key.precision);
     let u = unit.unit;
     let base = unit.texel.env_base();
     let (c, a) = (has_color(base), has_alpha(base));
-    let t = format!("t{u}");
+    let (tc, ta) = (format!("t{u}.rgb"), format!("t{u}.a"));
+    let (pc, pa) = ("previous.rgb".to_string(), "previous.a".to_string());
     w.line(format!("// unit {u}: {:?} on {base:?}", unit.env));
+    let pick = |cond: bool, yes: String, no: &String| if cond { yes } else { no.clone() };
     let (rgb, alpha): (String, String) = match unit.env {
-        EnvKey::Replace => (
-            if c {
-                format!("{t}.rgb")
-            } else {
-                "previous.rgb".into()
-            },
-            if a {
-                format!("{t}.a")
-            } else {
-                "previous.a".into()
-            },
-        ),
-        EnvKey::Modulate => (
-            if c {
-                format!("previous.rgb * {t}.rgb")
-            } else {
-                "previous.rgb".into()
-            },
-            if a {
-                format!("previous.a * {t}.a")
-            } else {
-                "previous.a".into()
-            },
-        ),
+        EnvKey::Replace => (pick(c, tc.clone(), &pc), pick(a, ta.clone(), &pa)),
+        EnvKey::Modulate => (pick(c, m.mul(&pc, &tc), &pc), pick(a, m.mul(&pa, &ta), &pa)),
         // DECAL is defined for RGB and RGBA only; otherwise the fragment passes unchanged
         // (what Mesa does; DESIGN "Measured facts").
         EnvKey::Decal => match base {
-            BaseFormat::Rgb => (format!("{t}.rgb"), "previous.a".into()),
-            BaseFormat::Rgba => (
-                format!("mix(previous.rgb, {t}.rgb, {t}.a)"),
-                "previous.a".into(),
-            ),
-            _ => ("previous.rgb".into(), "previous.a".into()),
+            BaseFormat::Rgb => (tc.clone(), pa.clone()),
+            BaseFormat::Rgba => (m.lerp(&tc, &pc, &format!("vec3({ta})")), pa.clone()),
+            _ => (pc.clone(), pa.clone()),
         },
         EnvKey::Blend => {
             let cc = w.uniform(UniformSource::EnvColor(u));
+            let cc = m.color(&cc);
             (
-                if c {
-                    format!("previous.rgb * (1.0 - {t}.rgb) + {cc}.rgb * {t}.rgb")
-                } else {
-                    "previous.rgb".into()
-                },
+                pick(c, m.lerp(&format!("{cc}.rgb"), &pc, &tc), &pc),
                 match base {
-                    BaseFormat::Intensity => format!("previous.a * (1.0 - {t}.a) + {cc}.a * {t}.a"),
-                    _ if a => format!("previous.a * {t}.a"),
-                    _ => "previous.a".into(),
+                    BaseFormat::Intensity => m.lerp(&format!("{cc}.a"), &pa, &ta),
+                    _ if a => m.mul(&pa, &ta),
+                    _ => pa.clone(),
                 },
             )
         }
         EnvKey::Add => (
-            if c {
-                format!("previous.rgb + {t}.rgb")
-            } else {
-                "previous.rgb".into()
-            },
+            pick(c, format!("({pc} + {tc})"), &pc),
             match base {
-                BaseFormat::Intensity => format!("previous.a + {t}.a"),
-                _ if a => format!("previous.a * {t}.a"),
-                _ => "previous.a".into(),
+                BaseFormat::Intensity => format!("({pa} + {ta})"),
+                _ if a => m.mul(&pa, &ta),
+                _ => pa.clone(),
             },
         ),
         EnvKey::Combine { rgb, alpha } => return emit_combine(w, key, u, rgb, alpha),
     };
-    w.line(format!("previous = clamp(vec4({rgb}, {alpha}), 0.0, 1.0);"));
+    let v = m.clamp(&format!("vec4({rgb}, {alpha})"));
+    w.line(format!("previous = {v};"));
 }
 
 /// The value of a combine source for unit `u`.
@@ -198,88 +253,97 @@ fn source(w: &mut GlslWriter, key: &FragmentKey, u: u8, s: CombineSource) -> Str
             if key.units.iter().any(|k| k.unit == n) {
                 format!("t{n}")
             } else {
-                "vec4(1.0)".into()
+                Arith(key.precision).color("vec4(1.0)")
             }
         }
-        CombineSource::Constant => w.uniform(UniformSource::EnvColor(u)),
+        CombineSource::Constant => {
+            let c = w.uniform(UniformSource::EnvColor(u));
+            Arith(key.precision).color(&c)
+        }
         CombineSource::PrimaryColor => "primary".into(),
         CombineSource::Previous => "previous".into(),
     }
 }
 
-fn operand_rgb(v: &str, op: CombineOperand) -> String {
+fn operand_rgb(m: Arith, v: &str, op: CombineOperand) -> String {
     match op {
         CombineOperand::SrcColor => format!("{v}.rgb"),
-        CombineOperand::OneMinusSrcColor => format!("(1.0 - {v}.rgb)"),
+        CombineOperand::OneMinusSrcColor => m.one_minus(&format!("{v}.rgb")),
         CombineOperand::SrcAlpha => format!("vec3({v}.a)"),
-        CombineOperand::OneMinusSrcAlpha => format!("vec3(1.0 - {v}.a)"),
+        CombineOperand::OneMinusSrcAlpha => format!("vec3({})", m.one_minus(&format!("{v}.a"))),
     }
 }
 
-fn operand_alpha(v: &str, op: CombineOperand) -> String {
+fn operand_alpha(m: Arith, v: &str, op: CombineOperand) -> String {
     match op {
         CombineOperand::SrcAlpha | CombineOperand::SrcColor => format!("{v}.a"),
         CombineOperand::OneMinusSrcAlpha | CombineOperand::OneMinusSrcColor => {
-            format!("(1.0 - {v}.a)")
+            m.one_minus(&format!("{v}.a"))
         }
     }
 }
 
-/// The combine function on three arguments of GLSL type `ty` (vec3 or float).
-fn combine_expr(func: CombineFunc, a: &[String; 3], ty: &str) -> String {
+/// The combine function on three arguments (vec3 or float expressions).
+fn combine_expr(m: Arith, func: CombineFunc, a: &[String; 3], vec: bool) -> String {
     match func {
         CombineFunc::Replace => a[0].clone(),
-        CombineFunc::Modulate => format!("{} * {}", a[0], a[1]),
-        CombineFunc::Add => format!("{} + {}", a[0], a[1]),
-        CombineFunc::AddSigned => format!("{} + {} - {ty}(0.5)", a[0], a[1]),
-        CombineFunc::Interpolate => {
-            format!("{0} * {2} + {1} * ({ty}(1.0) - {2})", a[0], a[1], a[2])
-        }
-        CombineFunc::Subtract => format!("{} - {}", a[0], a[1]),
-        // 4·((r0−½)(r1−½) + (g0−½)(g1−½) + (b0−½)(b1−½)) (ARB_texture_env_dot3).
+        CombineFunc::Modulate => m.mul(&a[0], &a[1]),
+        CombineFunc::Add => format!("({} + {})", a[0], a[1]),
+        CombineFunc::AddSigned => m.add_signed(&a[0], &a[1]),
+        CombineFunc::Interpolate => m.lerp(&a[0], &a[1], &a[2]),
+        CombineFunc::Subtract => format!("({} - {})", a[0], a[1]),
         CombineFunc::Dot3Rgb | CombineFunc::Dot3Rgba => {
-            format!(
-                "{ty}(4.0 * dot({} - vec3(0.5), {} - vec3(0.5)))",
-                a[0], a[1]
-            )
+            let d = m.dot3(&a[0], &a[1]);
+            if vec {
+                format!("vec3({d})")
+            } else {
+                d
+            }
         }
     }
 }
 
 fn emit_combine(w: &mut GlslWriter, key: &FragmentKey, u: u8, rgb: Combine, alpha: Combine) {
+    let m = Arith(key.precision);
     let args_rgb: [String; 3] = std::array::from_fn(|i| {
         let v = source(w, key, u, rgb.sources[i]);
-        operand_rgb(&v, rgb.operands[i])
+        operand_rgb(m, &v, rgb.operands[i])
     });
     let args_alpha: [String; 3] = std::array::from_fn(|i| {
         let v = source(w, key, u, alpha.sources[i]);
-        operand_alpha(&v, alpha.operands[i])
+        operand_alpha(m, &v, alpha.operands[i])
     });
-    let rgb_scale = rgb.scale.factor();
-    let rgb_expr = combine_expr(rgb.func, &args_rgb, "vec3");
-    w.line(format!(
-        "vec3 rgb{u} = clamp(({rgb_expr}) * {rgb_scale:?}, 0.0, 1.0);"
-    ));
+    let rgb_expr = combine_expr(m, rgb.func, &args_rgb, true);
+    let rgb_v = m.clamp(&format!("({rgb_expr}) * {:?}", rgb.scale.factor()));
+    w.line(format!("vec3 rgb{u} = {rgb_v};"));
     let alpha_value = if rgb.func == CombineFunc::Dot3Rgba {
         // DOT3_RGBA writes the dot product to alpha too; COMBINE_ALPHA is ignored.
         format!("rgb{u}.r")
     } else {
-        let alpha_scale = alpha.scale.factor();
-        let e = combine_expr(alpha.func, &args_alpha, "float");
-        format!("clamp(({e}) * {alpha_scale:?}, 0.0, 1.0)")
+        let e = combine_expr(m, alpha.func, &args_alpha, false);
+        m.clamp(&format!("({e}) * {:?}", alpha.scale.factor()))
     };
     w.line(format!("previous = vec4(rgb{u}, {alpha_value});"));
 }
 
 /// Precision::Float, as Mesa's llvmpipe does it (measured): alpha and reference become
 /// unorm8 by round-half-to-even and compare as integers. So GREATER 0.5 (ref → 128) first
-/// passes at a ≥ 128.5625/255 (a·255 rounds to 129).
-fn emit_alpha_test(w: &mut GlslWriter, func: CompareFunc) {
+/// passes at a ≥ 128.5625/255 (a·255 rounds to 129). Precision::Fixed8: the stage's
+/// integer alpha against q(ref) = ⌊255·ref + ½⌋.
+fn emit_alpha_test(w: &mut GlslWriter, func: CompareFunc, precision: Precision) {
     let r = w.uniform(UniformSource::AlphaRef);
-    w.line("float alpha8 = roundEven(clamp(previous.a, 0.0, 1.0) * 255.0);");
-    w.line(format!(
-        "float ref8 = roundEven(clamp({r}, 0.0, 1.0) * 255.0);"
-    ));
+    match precision {
+        Precision::Float => {
+            w.line("float alpha8 = roundEven(clamp(previous.a, 0.0, 1.0) * 255.0);");
+            w.line(format!(
+                "float ref8 = roundEven(clamp({r}, 0.0, 1.0) * 255.0);"
+            ));
+        }
+        Precision::Fixed8 => {
+            w.line("float alpha8 = previous.a;");
+            w.line(format!("float ref8 = q8({r});"));
+        }
+    }
     let pass = match func {
         CompareFunc::Never => "false",
         CompareFunc::Less => "alpha8 < ref8",
