@@ -6,11 +6,14 @@
 //! - **The Mesa texture-matrix bug** (Mesa 22.3 llvmpipe, DESIGN "Measured facts"): after
 //!   glPopMatrix restores a non-identity texture matrix, Mesa draws with the identity until
 //!   texture state changes, although glGetFloatv(TEXTURE_MATRIX) is right. Every pop of a
-//!   texture stack is followed by glLoadMatrixf of the matrix GL itself reports, which marks
-//!   the texture matrix dirty again.
+//!   texture stack is followed by glLoadMatrixf of the matrix GL itself reports (after a
+//!   different one: Mesa ignores a load of the matrix already on top), which marks the
+//!   texture matrix dirty again.
 //! - **Register combiners** have no native path (Mesa dropped NV_register_combiners): their
 //!   commands change only the model, and a draw with REGISTER_COMBINERS_NV enabled is
 //!   refused with `PipelineError::Unsupported` instead of drawing something else.
+
+use glam::Mat4;
 
 use crate::ff::{ClearMask, Command, MatrixMode};
 use crate::pipeline::PipelineError;
@@ -173,12 +176,18 @@ impl NativePipeline {
 }
 
 /// Works around the Mesa texture-matrix bug: loads the matrix GL reports for the current
-/// texture stack, so the restored matrix is the one drawn with.
+/// texture stack, so the restored matrix is the one drawn with. Mesa skips a glLoadMatrixf
+/// whose matrix equals the top (memcmp), so a different matrix is loaded first: both loads
+/// then mark the texture matrix dirty.
 fn reload_texture_matrix(g: &gl::Gl) {
     let mut m = [0.0f32; 16];
     // SAFETY: TEXTURE_MATRIX writes 16 floats.
+    unsafe { g.GetFloatv(gl::TEXTURE_MATRIX, m.as_mut_ptr()) };
+    let identity = Mat4::IDENTITY.to_cols_array();
+    let other = if m == identity { [0.0; 16] } else { identity };
+    // SAFETY: LoadMatrixf reads 16 floats.
     unsafe {
-        g.GetFloatv(gl::TEXTURE_MATRIX, m.as_mut_ptr());
+        g.LoadMatrixf(other.as_ptr());
         g.LoadMatrixf(m.as_ptr());
     }
 }
