@@ -37,9 +37,13 @@ pub enum PipelineError {
         needs: &'static str,
         got: &'static str,
     },
-    /// A feature the path cannot execute (say, register combiners where Mesa has none).
-    #[error("{what} is not supported on the {path} pipeline")]
-    Unsupported { what: String, path: &'static str },
+    /// A feature the path cannot execute faithfully (e.g. NV_register_combiners on the
+    /// native path: Mesa no longer has it). Refused rather than drawn some other way.
+    #[error("{what} is not supported by the {path} pipeline")]
+    Unsupported {
+        what: &'static str,
+        path: &'static str,
+    },
     /// A GL object could not be created.
     #[error("GL object creation failed: {0}")]
     Object(String),

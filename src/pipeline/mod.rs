@@ -42,10 +42,7 @@ impl PipelineKind {
 pub fn create(kind: PipelineKind, ctx: &GpuContext) -> Result<Box<dyn Pipeline>, PipelineError> {
     match kind {
         PipelineKind::Emulate => Ok(Box::new(emulate::EmulatedPipeline::new(ctx)?)),
-        PipelineKind::Native => Err(PipelineError::Unsupported {
-            what: "the native path".into(),
-            path: "native",
-        }),
+        PipelineKind::Native => Ok(Box::new(native::NativePipeline::new(ctx)?)),
     }
 }
 

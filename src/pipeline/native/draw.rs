@@ -1,0 +1,124 @@
+//! Geometry as client-side vertex arrays (GL 1.1 §2.8): positions as 4 floats, optional
+//! normals, colours and per-unit texture coordinates (glClientActiveTexture selects the
+//! unit a TexCoordPointer names), drawn with glDrawArrays or glDrawElements(UNSIGNED_INT).
+//! Every primitive of GL 1.x, QUADS, QUAD_STRIP and POLYGON included, is a valid mode on a
+//! compatibility context.
+//!
+//! After a draw GL leaves the current normal, colour and texture coordinates of an enabled
+//! array indeterminate (§2.8); the model makes them the last vertex's, as glBegin/glEnd
+//! would. [`restore_current`] sends the model's values so both agree.
+
+use std::ffi::c_void;
+
+use glam::{Vec3, Vec4};
+
+use crate::ff::{FixedState, Geometry, MAX_TEXTURE_UNITS};
+
+use super::bindings as gl;
+use super::bindings::types::GLsizei;
+use super::conv;
+
+/// Flattens the attribute arrays (glam's SIMD layout is not a C array of floats).
+fn flat4(v: &[Vec4]) -> Vec<f32> {
+    v.iter().flat_map(|p| p.to_array()).collect()
+}
+
+fn flat3(v: &[Vec3]) -> Vec<f32> {
+    v.iter().flat_map(|p| p.to_array()).collect()
+}
+
+/// The arrays one draw points GL at; they must outlive the draw call.
+struct Arrays {
+    positions: Vec<f32>,
+    normals: Option<Vec<f32>>,
+    colors: Option<Vec<f32>>,
+    texcoords: Vec<(u8, Vec<f32>)>,
+}
+
+impl Arrays {
+    fn of(g: &Geometry) -> Arrays {
+        Arrays {
+            positions: flat4(&g.positions),
+            normals: g.normals.as_deref().map(flat3),
+            colors: g.colors.as_deref().map(flat4),
+            texcoords: g
+                .texcoords
+                .iter()
+                .enumerate()
+                .filter_map(|(u, t)| Some((u8::try_from(u).ok()?, flat4(t.as_deref()?))))
+                .collect(),
+        }
+    }
+}
+
+/// Draws `g` (already validated by the model: arrays of equal length, indices in range).
+pub fn draw(g: &gl::Gl, geometry: &Geometry) {
+    let arrays = Arrays::of(geometry);
+    let mode = conv::primitive(geometry.primitive);
+    // SAFETY: every pointer names a live Vec of the right length for the vertex count; the
+    // model checked that indices stay inside the arrays. No buffer object is bound to
+    // ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER (the pipeline unbinds them), so the pointers are
+    // client memory.
+    unsafe {
+        g.EnableClientState(gl::VERTEX_ARRAY);
+        g.VertexPointer(4, gl::FLOAT, 0, arrays.positions.as_ptr().cast::<c_void>());
+        if let Some(n) = &arrays.normals {
+            g.EnableClientState(gl::NORMAL_ARRAY);
+            g.NormalPointer(gl::FLOAT, 0, n.as_ptr().cast::<c_void>());
+        }
+        if let Some(c) = &arrays.colors {
+            g.EnableClientState(gl::COLOR_ARRAY);
+            g.ColorPointer(4, gl::FLOAT, 0, c.as_ptr().cast::<c_void>());
+        }
+        for (unit, t) in &arrays.texcoords {
+            g.ClientActiveTexture(conv::texture_unit(*unit));
+            g.EnableClientState(gl::TEXTURE_COORD_ARRAY);
+            g.TexCoordPointer(4, gl::FLOAT, 0, t.as_ptr().cast::<c_void>());
+        }
+        match &geometry.indices {
+            Some(idx) => g.DrawElements(
+                mode,
+                count(idx.len()),
+                gl::UNSIGNED_INT,
+                idx.as_ptr().cast::<c_void>(),
+            ),
+            None => g.DrawArrays(mode, 0, count(geometry.positions.len())),
+        }
+        // Leave no array enabled: the next draw enables exactly what it has.
+        for (unit, _) in &arrays.texcoords {
+            g.ClientActiveTexture(conv::texture_unit(*unit));
+            g.DisableClientState(gl::TEXTURE_COORD_ARRAY);
+        }
+        g.ClientActiveTexture(gl::TEXTURE0);
+        g.DisableClientState(gl::COLOR_ARRAY);
+        g.DisableClientState(gl::NORMAL_ARRAY);
+        g.DisableClientState(gl::VERTEX_ARRAY);
+    }
+}
+
+/// A vertex count as GLsizei; counts beyond i32 are clamped (GL could not draw them anyway).
+fn count(n: usize) -> GLsizei {
+    GLsizei::try_from(n).unwrap_or(GLsizei::MAX)
+}
+
+/// Sends the model's current normal, colour and texture coordinates after a draw whose
+/// arrays made GL's values indeterminate. The colour goes last: under COLOR_MATERIAL it
+/// also sets the tracked material, as the model's draw did.
+pub fn restore_current(g: &gl::Gl, state: &FixedState, geometry: &Geometry) {
+    let c = &state.current;
+    // SAFETY: plain GL calls on the current context.
+    unsafe {
+        if geometry.normals.is_some() {
+            g.Normal3f(c.normal.x, c.normal.y, c.normal.z);
+        }
+        for unit in 0..MAX_TEXTURE_UNITS {
+            if geometry.texcoords[unit].is_some() {
+                let t = c.texcoords[unit];
+                g.MultiTexCoord4f(gl::TEXTURE0 + unit as u32, t.x, t.y, t.z, t.w);
+            }
+        }
+        if geometry.colors.is_some() {
+            g.Color4f(c.color.x, c.color.y, c.color.z, c.color.w);
+        }
+    }
+}

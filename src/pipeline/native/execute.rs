@@ -1,0 +1,262 @@
+//! One accepted Command as the legacy GL calls of the era.
+//!
+//! The model has already folded the command in (and accepted it), so GL's matrices equal
+//! the model's when a light position or eye plane is sent: both are passed as given and GL
+//! transforms them itself. Two places differ from a plain one-to-one translation:
+//! - **The Mesa texture-matrix bug** (Mesa 22.3 llvmpipe, DESIGN "Measured facts"): after
+//!   glPopMatrix restores a non-identity texture matrix, Mesa draws with the identity until
+//!   texture state changes, although glGetFloatv(TEXTURE_MATRIX) is right. Every pop of a
+//!   texture stack is followed by glLoadMatrixf of the matrix GL itself reports (after a
+//!   different one: Mesa ignores a load of the matrix already on top), which marks the
+//!   texture matrix dirty again.
+//! - **Register combiners** have no native path (Mesa dropped NV_register_combiners): their
+//!   commands change only the model, and a draw with REGISTER_COMBINERS_NV enabled is
+//!   refused with `PipelineError::Unsupported` instead of drawing something else.
+
+use glam::Mat4;
+
+use crate::ff::{ClearMask, Command, MatrixMode};
+use crate::pipeline::PipelineError;
+
+use super::bindings as gl;
+use super::bindings::types::GLbitfield;
+use super::{conv, draw, lighting, readback, texenv, textures, NativePipeline};
+
+impl NativePipeline {
+    /// Issues the GL calls of `cmd`, which the model accepted.
+    pub(super) fn issue(&mut self, cmd: &Command) -> Result<(), PipelineError> {
+        let g = self.gl.raw();
+        // SAFETY (all unsafe blocks of this match): plain GL calls on the current context;
+        // pointer arguments point at local arrays of the size the entry point reads.
+        match cmd {
+            Command::MatrixMode(m) => unsafe { g.MatrixMode(conv::matrix_mode(*m)) },
+            Command::LoadIdentity => unsafe { g.LoadIdentity() },
+            Command::LoadMatrix(m) => unsafe { g.LoadMatrixf(m.to_cols_array().as_ptr()) },
+            Command::MultMatrix(m) => unsafe { g.MultMatrixf(m.to_cols_array().as_ptr()) },
+            Command::PushMatrix => unsafe { g.PushMatrix() },
+            Command::PopMatrix => {
+                unsafe { g.PopMatrix() };
+                if self.state.matrix_mode == MatrixMode::Texture {
+                    reload_texture_matrix(g);
+                }
+            }
+            Command::Translate(v) => unsafe { g.Translatef(v.x, v.y, v.z) },
+            Command::Rotate { angle_deg, axis } => unsafe {
+                g.Rotatef(*angle_deg, axis.x, axis.y, axis.z)
+            },
+            Command::Scale(v) => unsafe { g.Scalef(v.x, v.y, v.z) },
+            Command::Frustum(v) => unsafe {
+                g.Frustum(
+                    v.left.into(),
+                    v.right.into(),
+                    v.bottom.into(),
+                    v.top.into(),
+                    v.near.into(),
+                    v.far.into(),
+                )
+            },
+            Command::Ortho(v) => unsafe {
+                g.Ortho(
+                    v.left.into(),
+                    v.right.into(),
+                    v.bottom.into(),
+                    v.top.into(),
+                    v.near.into(),
+                    v.far.into(),
+                )
+            },
+            Command::Viewport(v) => unsafe { g.Viewport(v.x, v.y, v.width, v.height) },
+            Command::DepthRange { near, far } => unsafe {
+                g.DepthRange((*near).into(), (*far).into())
+            },
+            Command::Enable(c) => {
+                if let Some(cap) = conv::capability(*c) {
+                    unsafe { g.Enable(cap) }
+                }
+            }
+            Command::Disable(c) => {
+                if let Some(cap) = conv::capability(*c) {
+                    unsafe { g.Disable(cap) }
+                }
+            }
+            Command::Color(c) => unsafe { g.Color4f(c.x, c.y, c.z, c.w) },
+            Command::Normal(n) => unsafe { g.Normal3f(n.x, n.y, n.z) },
+            Command::TexCoord { unit, coord: t } => unsafe {
+                g.MultiTexCoord4f(conv::texture_unit(*unit), t.x, t.y, t.z, t.w)
+            },
+            Command::Light { light, param } => lighting::light(g, *light, *param),
+            Command::LightModel(p) => lighting::light_model(g, *p),
+            Command::Material { face, param } => lighting::material(g, *face, *param),
+            Command::ColorMaterial { face, mode } => unsafe {
+                g.ColorMaterial(conv::face(*face), conv::color_material_mode(*mode))
+            },
+            Command::ShadeModel(m) => unsafe { g.ShadeModel(conv::shade_model(*m)) },
+            Command::ActiveTexture(u) => unsafe { g.ActiveTexture(conv::texture_unit(*u)) },
+            Command::BindTexture { target, name } => self.textures.bind(g, *target, *name),
+            Command::TexImage(t) => {
+                textures::tex_image(g, t);
+                self.counters.texture_uploads += 1;
+            }
+            Command::TexSubImage2D(t) => {
+                textures::tex_sub_image(g, t);
+                self.counters.texture_uploads += 1;
+            }
+            Command::CopyTexImage2D(c) => {
+                textures::copy_tex_image(g, c);
+                self.counters.texture_uploads += 1;
+            }
+            Command::TexParameter { target, param } => {
+                textures::tex_parameter(g, *target, *param);
+            }
+            Command::TexGen { coord, param } => texenv::texgen(g, *coord, *param),
+            Command::TexEnv(p) => texenv::texenv(g, *p),
+            // NV_register_combiners: model only (see the module note).
+            Command::CombinerParameter(_)
+            | Command::CombinerInput { .. }
+            | Command::CombinerOutput { .. }
+            | Command::FinalCombinerInput { .. } => {}
+            Command::AlphaFunc { func, reference } => unsafe {
+                g.AlphaFunc(conv::compare_func(*func), *reference)
+            },
+            Command::DepthFunc(f) => unsafe { g.DepthFunc(conv::compare_func(*f)) },
+            Command::DepthMask(b) => unsafe { g.DepthMask(u8::from(*b)) },
+            Command::StencilFunc {
+                func,
+                reference,
+                mask,
+            } => unsafe { g.StencilFunc(conv::compare_func(*func), *reference, *mask) },
+            Command::StencilOp {
+                fail,
+                depth_fail,
+                depth_pass,
+            } => unsafe {
+                g.StencilOp(
+                    conv::stencil_op(*fail),
+                    conv::stencil_op(*depth_fail),
+                    conv::stencil_op(*depth_pass),
+                )
+            },
+            Command::StencilMask(m) => unsafe { g.StencilMask(*m) },
+            Command::BlendFunc { src, dst } => unsafe {
+                g.BlendFunc(conv::blend_factor(*src), conv::blend_factor(*dst))
+            },
+            Command::ColorMask(m) => unsafe {
+                g.ColorMask(u8::from(m.r), u8::from(m.g), u8::from(m.b), u8::from(m.a))
+            },
+            Command::PolygonOffset { factor, units } => unsafe { g.PolygonOffset(*factor, *units) },
+            Command::PolygonMode { face, mode } => unsafe {
+                g.PolygonMode(conv::face(*face), conv::polygon_mode(*mode))
+            },
+            Command::CullFace(f) => unsafe { g.CullFace(conv::face(*f)) },
+            Command::FrontFace(f) => unsafe { g.FrontFace(conv::front_face(*f)) },
+            Command::LineWidth(w) => unsafe { g.LineWidth(*w) },
+            Command::PointSize(s) => unsafe { g.PointSize(*s) },
+            Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
+            Command::ClearColor(c) => unsafe { g.ClearColor(c.x, c.y, c.z, c.w) },
+            Command::ClearDepth(d) => unsafe { g.ClearDepth((*d).into()) },
+            Command::ClearStencil(s) => unsafe { g.ClearStencil(*s) },
+            Command::ReadPixels(r) => {
+                let bytes = readback::read_pixels(g, r);
+                self.readbacks.insert(r.slot, bytes);
+            }
+            Command::Draw(geometry) => {
+                if self.state.register_combiners.enabled {
+                    return Err(PipelineError::Unsupported {
+                        what: "NV_register_combiners (REGISTER_COMBINERS_NV enabled at a draw)",
+                        path: "native",
+                    });
+                }
+                draw::draw(g, geometry);
+                draw::restore_current(g, &self.state, geometry);
+                self.counters.draws += 1;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Works around the Mesa texture-matrix bug: loads the matrix GL reports for the current
+/// texture stack, so the restored matrix is the one drawn with. Mesa skips a glLoadMatrixf
+/// whose matrix equals the top (memcmp), so a different matrix is loaded first: both loads
+/// then mark the texture matrix dirty.
+fn reload_texture_matrix(g: &gl::Gl) {
+    let mut m = [0.0f32; 16];
+    // SAFETY: TEXTURE_MATRIX writes 16 floats.
+    unsafe { g.GetFloatv(gl::TEXTURE_MATRIX, m.as_mut_ptr()) };
+    let identity = Mat4::IDENTITY.to_cols_array();
+    let other = if m == identity { [0.0; 16] } else { identity };
+    // SAFETY: LoadMatrixf reads 16 floats.
+    unsafe {
+        g.LoadMatrixf(other.as_ptr());
+        g.LoadMatrixf(m.as_ptr());
+    }
+}
+
+/// glClear's bitfield.
+fn clear_bits(mask: ClearMask) -> GLbitfield {
+    let bit = |on: bool, b: GLbitfield| if on { b } else { 0 };
+    bit(mask.color, gl::COLOR_BUFFER_BIT)
+        | bit(mask.depth, gl::DEPTH_BUFFER_BIT)
+        | bit(mask.stencil, gl::STENCIL_BUFFER_BIT)
+}
+
+/// The GL entry point a command becomes, named in errors GL raises for it.
+pub(super) fn gl_call(cmd: &Command) -> &'static str {
+    match cmd {
+        Command::MatrixMode(_) => "glMatrixMode",
+        Command::LoadIdentity => "glLoadIdentity",
+        Command::LoadMatrix(_) => "glLoadMatrixf",
+        Command::MultMatrix(_) => "glMultMatrixf",
+        Command::PushMatrix => "glPushMatrix",
+        Command::PopMatrix => "glPopMatrix",
+        Command::Translate(_) => "glTranslatef",
+        Command::Rotate { .. } => "glRotatef",
+        Command::Scale(_) => "glScalef",
+        Command::Frustum(_) => "glFrustum",
+        Command::Ortho(_) => "glOrtho",
+        Command::Viewport(_) => "glViewport",
+        Command::DepthRange { .. } => "glDepthRange",
+        Command::Enable(_) => "glEnable",
+        Command::Disable(_) => "glDisable",
+        Command::Color(_) => "glColor4f",
+        Command::Normal(_) => "glNormal3f",
+        Command::TexCoord { .. } => "glMultiTexCoord4f",
+        Command::Light { .. } => "glLight",
+        Command::LightModel(_) => "glLightModel",
+        Command::Material { .. } => "glMaterial",
+        Command::ColorMaterial { .. } => "glColorMaterial",
+        Command::ShadeModel(_) => "glShadeModel",
+        Command::ActiveTexture(_) => "glActiveTexture",
+        Command::BindTexture { .. } => "glBindTexture",
+        Command::TexImage(_) => "glTexImage",
+        Command::TexSubImage2D(_) => "glTexSubImage2D",
+        Command::CopyTexImage2D(_) => "glCopyTexImage2D",
+        Command::TexParameter { .. } => "glTexParameter",
+        Command::TexGen { .. } => "glTexGen",
+        Command::TexEnv(_) => "glTexEnv",
+        Command::CombinerParameter(_) => "glCombinerParameterNV",
+        Command::CombinerInput { .. } => "glCombinerInputNV",
+        Command::CombinerOutput { .. } => "glCombinerOutputNV",
+        Command::FinalCombinerInput { .. } => "glFinalCombinerInputNV",
+        Command::AlphaFunc { .. } => "glAlphaFunc",
+        Command::DepthFunc(_) => "glDepthFunc",
+        Command::DepthMask(_) => "glDepthMask",
+        Command::StencilFunc { .. } => "glStencilFunc",
+        Command::StencilOp { .. } => "glStencilOp",
+        Command::StencilMask(_) => "glStencilMask",
+        Command::BlendFunc { .. } => "glBlendFunc",
+        Command::ColorMask(_) => "glColorMask",
+        Command::PolygonOffset { .. } => "glPolygonOffset",
+        Command::PolygonMode { .. } => "glPolygonMode",
+        Command::CullFace(_) => "glCullFace",
+        Command::FrontFace(_) => "glFrontFace",
+        Command::LineWidth(_) => "glLineWidth",
+        Command::PointSize(_) => "glPointSize",
+        Command::Clear(_) => "glClear",
+        Command::ClearColor(_) => "glClearColor",
+        Command::ClearDepth(_) => "glClearDepth",
+        Command::ClearStencil(_) => "glClearStencil",
+        Command::ReadPixels(_) => "glReadPixels",
+        Command::Draw(_) => "glDrawArrays/glDrawElements",
+    }
+}

@@ -1,0 +1,158 @@
+//! Texture objects on the native path: the model's names (u32, chosen by the caller as in
+//! GL 1.0 style code) map to real objects from glGenTextures, made on the first BindTexture
+//! of a name; name 0 is GL's own default texture of each target.
+//!
+//! Uploads use UNPACK_ALIGNMENT 1 (the model's pixel data is tightly packed, bottom row
+//! first, which is GL's own row order). Every parameter is passed through, except
+//! TEXTURE_COMPARE_FAIL_VALUE_ARB: Mesa does not expose ARB_shadow_ambient, so the model
+//! records the fail value and the native path ignores it (a failed compare gives 0 here).
+
+use std::collections::HashMap;
+use std::ffi::c_void;
+
+use crate::ff::{CopyTexImage, TexImage, TexParam, TexSubImage, TextureTarget};
+
+use super::bindings as gl;
+use super::bindings::types::GLuint;
+use super::conv;
+
+/// The model's texture names and the GL objects made for them.
+#[derive(Debug, Default)]
+pub struct Textures {
+    objects: HashMap<u32, GLuint>,
+}
+
+impl Textures {
+    /// glBindTexture, generating the GL object on the first bind of a name.
+    pub fn bind(&mut self, g: &gl::Gl, target: TextureTarget, name: u32) {
+        let object = if name == 0 {
+            0
+        } else {
+            *self.objects.entry(name).or_insert_with(|| {
+                let mut id: GLuint = 0;
+                // SAFETY: one name is written into `id`.
+                unsafe { g.GenTextures(1, &mut id) };
+                id
+            })
+        };
+        // SAFETY: plain GL call on the current context.
+        unsafe { g.BindTexture(conv::texture_target(target), object) };
+    }
+
+    /// How many GL objects exist.
+    pub fn len(&self) -> usize {
+        self.objects.len()
+    }
+
+    /// glDeleteTextures on every object made.
+    pub fn delete_all(&mut self, g: &gl::Gl) {
+        for (_, id) in self.objects.drain() {
+            // SAFETY: `id` came from GenTextures on this context.
+            unsafe { g.DeleteTextures(1, &id) };
+        }
+    }
+}
+
+/// glTexImage1D / glTexImage2D into the bound texture; `None` data is a NULL pointer
+/// (storage only). The model checked the data length against the size.
+pub fn tex_image(g: &gl::Gl, t: &TexImage) {
+    let pixels = t
+        .data
+        .as_ref()
+        .map_or(std::ptr::null(), |d| d.as_ptr().cast::<c_void>());
+    let internal = conv::int(conv::tex_format(t.internal_format));
+    let format = conv::pixel_format(t.format);
+    let ty = conv::pixel_type(t.ty);
+    // SAFETY: `pixels` is NULL or holds width·height·components·size bytes (model-checked);
+    // UNPACK_ALIGNMENT is 1.
+    unsafe {
+        g.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
+        match t.target {
+            TextureTarget::Texture1D => g.TexImage1D(
+                gl::TEXTURE_1D,
+                t.level,
+                internal,
+                t.width,
+                t.border,
+                format,
+                ty,
+                pixels,
+            ),
+            TextureTarget::Texture2D => g.TexImage2D(
+                gl::TEXTURE_2D,
+                t.level,
+                internal,
+                t.width,
+                t.height,
+                t.border,
+                format,
+                ty,
+                pixels,
+            ),
+        }
+    }
+}
+
+/// glTexSubImage2D into the bound 2D texture.
+pub fn tex_sub_image(g: &gl::Gl, t: &TexSubImage) {
+    // SAFETY: the model checked that `data` holds the region's bytes.
+    unsafe {
+        g.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
+        g.TexSubImage2D(
+            gl::TEXTURE_2D,
+            t.level,
+            t.x,
+            t.y,
+            t.width,
+            t.height,
+            conv::pixel_format(t.format),
+            conv::pixel_type(t.ty),
+            t.data.as_ptr().cast::<c_void>(),
+        );
+    }
+}
+
+/// glCopyTexImage2D from the current read framebuffer into the bound 2D texture.
+pub fn copy_tex_image(g: &gl::Gl, c: &CopyTexImage) {
+    // SAFETY: plain GL call on the current context.
+    unsafe {
+        g.CopyTexImage2D(
+            gl::TEXTURE_2D,
+            c.level,
+            conv::tex_format(c.internal_format),
+            c.x,
+            c.y,
+            c.width,
+            c.height,
+            c.border,
+        );
+    }
+}
+
+/// glTexParameter on the bound texture of `target`. Returns `false` for the one parameter
+/// with no native counterpart (the ARB_shadow_ambient fail value), which is not sent.
+pub fn tex_parameter(g: &gl::Gl, target: TextureTarget, param: TexParam) -> bool {
+    let t = conv::texture_target(target);
+    let int = |pname, value| {
+        // SAFETY: plain GL call on the current context.
+        unsafe { g.TexParameteri(t, pname, conv::int(value)) }
+    };
+    match param {
+        TexParam::MinFilter(f) => int(gl::TEXTURE_MIN_FILTER, conv::filter(f)),
+        TexParam::MagFilter(f) => int(gl::TEXTURE_MAG_FILTER, conv::filter(f)),
+        TexParam::WrapS(w) => int(gl::TEXTURE_WRAP_S, conv::wrap(w)),
+        TexParam::WrapT(w) => int(gl::TEXTURE_WRAP_T, conv::wrap(w)),
+        TexParam::BorderColor(c) => {
+            let c = c.to_array();
+            // SAFETY: four floats.
+            unsafe { g.TexParameterfv(t, gl::TEXTURE_BORDER_COLOR, c.as_ptr()) }
+        }
+        TexParam::CompareMode(m) => int(gl::TEXTURE_COMPARE_MODE, conv::compare_mode(m)),
+        TexParam::CompareFunc(f) => int(gl::TEXTURE_COMPARE_FUNC, conv::compare_func(f)),
+        TexParam::DepthTextureMode(m) => int(gl::DEPTH_TEXTURE_MODE, conv::depth_texture_mode(m)),
+        // ARB_shadow_ambient is absent from Mesa: the model keeps the value, GL never sees it.
+        TexParam::CompareFailValue(_) => return false,
+        TexParam::GenerateMipmap(b) => int(gl::GENERATE_MIPMAP, u32::from(b)),
+    }
+    true
+}
