@@ -1,6 +1,11 @@
 //! The CLI's error type: what a command reports before exiting with failure.
 
+use std::path::PathBuf;
+
 use fixedfunc::gpu::{Backend, GpuError};
+use fixedfunc::render::RenderError;
+use fixedfunc::scene::SceneError;
+use fixedfunc::truth::TruthError;
 
 #[derive(Debug, thiserror::Error)]
 pub enum CliError {
@@ -10,4 +15,17 @@ pub enum CliError {
     BackendUnavailable { backend: Backend, reasons: String },
     #[error("cannot write JSON: {0}")]
     Json(#[from] serde_json::Error),
+    /// Scene errors name the file, line and column, and the valid alternatives.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    #[error(transparent)]
+    Render(#[from] RenderError),
+    #[error(transparent)]
+    Truth(#[from] TruthError),
+    #[error("cannot write {path}: {source}")]
+    WriteImage {
+        path: PathBuf,
+        #[source]
+        source: image::ImageError,
+    },
 }
