@@ -4,7 +4,8 @@
 //!
 //! Layers, lowest first (a module uses those below it, never those above):
 //! `gpu` (contexts, render targets, readback) → `ff` (commands and the GL 1.x state model,
-//! no GL calls) → `mesh`, `scene`, `truth`, `metrics` (pure) → `bench` → the `fixedfunc` CLI.
+//! no GL calls) → `mesh`, `scene`, `truth`, `metrics` (pure) → `pipeline` → `techniques` (plans of
+//! Commands) → `render` (a scene, judged against the truth) → `bench` → the `fixedfunc` CLI.
 
 pub mod bench;
 pub mod ff;
@@ -12,5 +13,7 @@ pub mod gpu;
 pub mod mesh;
 pub mod metrics;
 pub mod pipeline;
+pub mod render;
 pub mod scene;
+pub mod techniques;
 pub mod truth;

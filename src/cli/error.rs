@@ -3,6 +3,11 @@
 use fixedfunc::ff::script::ScriptError;
 use fixedfunc::gpu::{Backend, GpuError};
 use fixedfunc::pipeline::PipelineError;
+use std::path::PathBuf;
+
+use fixedfunc::render::RenderError;
+use fixedfunc::scene::SceneError;
+use fixedfunc::truth::TruthError;
 
 #[derive(Debug, thiserror::Error)]
 pub enum CliError {
@@ -18,8 +23,17 @@ pub enum CliError {
     Script { path: String, source: ScriptError },
     #[error("cannot read {path}: {reason}")]
     Read { path: String, reason: String },
-    #[error("cannot write {path}: {reason}")]
-    Write { path: String, reason: String },
-    #[error("--size {given}: expected WIDTHxHEIGHT with both sides from 1 to 16384, e.g. 512x512")]
-    Size { given: String },
+    /// Scene errors name the file, line and column, and the valid alternatives.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    #[error(transparent)]
+    Render(#[from] RenderError),
+    #[error(transparent)]
+    Truth(#[from] TruthError),
+    #[error("cannot write {path}: {source}")]
+    WriteImage {
+        path: PathBuf,
+        #[source]
+        source: image::ImageError,
+    },
 }

@@ -5,20 +5,23 @@
 mod bench;
 mod error;
 mod info;
+mod render;
 mod replay;
+mod scene_arg;
 mod script_io;
 mod shaders;
-mod size;
+mod truth;
 
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
 use fixedfunc::bench::BenchGroup;
-use std::path::PathBuf;
-
 use fixedfunc::gpu::Backend;
 use fixedfunc::pipeline::PipelineKind;
+use fixedfunc::render::ImageSize;
+use fixedfunc::scene::KNOWN_TECHNIQUES;
 
 /// An emulator of the OpenGL 1.x fixed-function pipeline for the classic shadow techniques.
 #[derive(Parser)]
@@ -30,6 +33,49 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// Render a scene, write its image and shadow mask, print one line of figures: technique,
+    /// pipeline, backend, error against the ground truth, ms per frame, passes, programs.
+    Render {
+        /// Scene file (TOML); the built-in default scene when omitted.
+        scene: Option<PathBuf>,
+        /// Technique (default: the scene's `[shadow] technique`).
+        #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(KNOWN_TECHNIQUES))]
+        technique: Option<String>,
+        /// Which path executes the fixed-function commands.
+        #[arg(long, value_enum, default_value_t = PipelineKind::Emulate)]
+        pipeline: PipelineKind,
+        #[arg(long, value_enum, default_value_t = Backend::Egl)]
+        backend: Backend,
+        /// Image size WxH (default: the scene's).
+        #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]
+        size: Option<ImageSize>,
+        /// Where the colour image goes (PNG).
+        #[arg(long, default_value = "render.png")]
+        out: PathBuf,
+        /// Where the shadow mask goes (PNG: 255 lit, 0 shadowed, 128 background).
+        #[arg(long, default_value = "render-mask.png")]
+        mask: PathBuf,
+        /// Frames rendered and timed; the figure is the median of frames 2…N.
+        #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+        frames: u32,
+    },
+    /// The CPU ground truth of a scene (no GL): shadow mask and soft-shadow visibility.
+    Truth {
+        /// Scene file (TOML); the built-in default scene when omitted.
+        scene: Option<PathBuf>,
+        /// Where the mask goes (PNG: 255 lit, 0 shadowed, 128 background).
+        #[arg(long, default_value = "truth.png")]
+        mask: PathBuf,
+        /// Also write the visibility fraction (grey + alpha PNG; alpha 0 on background).
+        #[arg(long)]
+        visibility: Option<PathBuf>,
+        /// Image size WxH (default: the scene's).
+        #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]
+        size: Option<ImageSize>,
+        /// Which of the scene's lights casts the shadows (0-based).
+        #[arg(long, default_value_t = 0)]
+        light: usize,
+    },
     /// Which backends work here: GL strings, limits, depth/stencil bits, shadow extensions.
     Info {
         /// Only this backend (default: all three).
@@ -48,8 +94,8 @@ enum Command {
         #[arg(long, value_enum, default_value = "egl")]
         backend: Backend,
         /// Target size, WIDTHxHEIGHT.
-        #[arg(long, default_value = "256x256")]
-        size: size::Size,
+        #[arg(long, value_name = "WxH", default_value = "256x256", value_parser = scene_arg::parse_size)]
+        size: ImageSize,
         /// The PNG to write.
         #[arg(long, default_value = "replay.png")]
         out: PathBuf,
@@ -90,6 +136,38 @@ pub fn run() -> ExitCode {
             repeats,
             json,
         } => bench::run(only, repeats, json),
+        Command::Render {
+            scene,
+            technique,
+            pipeline,
+            backend,
+            size,
+            out,
+            mask,
+            frames,
+        } => render::run(render::Args {
+            scene,
+            technique,
+            pipeline,
+            backend,
+            size,
+            out,
+            mask,
+            frames,
+        }),
+        Command::Truth {
+            scene,
+            mask,
+            visibility,
+            size,
+            light,
+        } => truth::run(truth::Args {
+            scene,
+            mask,
+            visibility,
+            size,
+            light,
+        }),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -10,13 +10,13 @@ use fixedfunc::pipeline::{self, PipelineKind};
 
 use super::error::CliError;
 use super::script_io;
-use super::size::Size;
+use fixedfunc::render::ImageSize;
 
 pub fn run(
     file: &Path,
     kind: PipelineKind,
     backend: Backend,
-    size: Size,
+    size: ImageSize,
     out: &Path,
 ) -> Result<(), CliError> {
     let commands = script_io::load(file)?;
@@ -33,10 +33,7 @@ pub fn run(
     let mut p = pipeline::create(kind, &ctx)?;
     p.execute(&ctx, &commands)?;
     let image = target.read_color(&ctx)?;
-    image.save(out).map_err(|e| CliError::Write {
-        path: out.display().to_string(),
-        reason: e.to_string(),
-    })?;
+    super::scene_arg::save(&image, &out.to_path_buf())?;
     let c = p.counters();
     println!(
         "replay {}: {} commands, {} draws, {} programs compiled, {} state calls sent / {} skipped → {}",

@@ -244,6 +244,12 @@ impl GpuContext {
         }
     }
 
+    /// glFinish: returns when every command sent so far has completed, so a frame's wall
+    /// time includes the driver's work (llvmpipe renders asynchronously).
+    pub fn finish(&self) {
+        unsafe { self.gl.finish() }
+    }
+
     /// Reads and clears GL's error flag: `Err` names the call that raised it.
     pub fn check_error(&self, call: &'static str) -> Result<(), GpuError> {
         let code = unsafe { self.gl.get_error() };

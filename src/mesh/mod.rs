@@ -24,6 +24,7 @@ pub use obj::{load_obj, load_obj_str, ObjMesh};
 pub use shapes::{cuboid, plane, sphere, torus};
 pub use teapot::teapot;
 
+use crate::ff::{Geometry, Primitive};
 use glam::{Mat3, Mat4, Vec3};
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -73,6 +74,21 @@ impl Mesh {
             self.positions[b as usize],
             self.positions[c as usize],
         ]
+    }
+
+    /// The mesh as one indexed GL_TRIANGLES draw: positions (x, y, z, 1), the unit normals
+    /// as the normal array (absent when the mesh has none, so the current normal applies),
+    /// and the index triples flattened in order, windings kept.
+    pub fn to_geometry(&self) -> Geometry {
+        let normals = (!self.normals.is_empty() && self.normals.len() == self.positions.len())
+            .then(|| self.normals.clone());
+        Geometry {
+            primitive: Primitive::Triangles,
+            positions: self.positions.iter().map(|p| p.extend(1.0)).collect(),
+            normals,
+            indices: Some(self.triangles.iter().flatten().copied().collect()),
+            ..Geometry::default()
+        }
     }
 
     /// Appends `other`, re-basing its indices.

@@ -175,3 +175,19 @@ fn obj_errors() {
     let obj = load_obj_str(one_bad, Path::new("one.obj")).expect("loads");
     assert_eq!((obj.mesh.triangle_count(), obj.degenerate), (1, 1));
 }
+
+#[test]
+fn geometry_is_indexed_triangles_with_w_one() {
+    let mesh = sphere(1.0, 8, 4);
+    let g = mesh.to_geometry();
+    assert_eq!(g.primitive, crate::ff::Primitive::Triangles);
+    assert_eq!(g.vertex_count(), 3 * mesh.triangle_count());
+    assert!(g.positions.iter().all(|p| p.w == 1.0));
+    assert_eq!(g.positions[5].truncate(), mesh.positions[5]);
+    assert_eq!(g.normals.as_deref(), Some(&mesh.normals[..]));
+    assert_eq!(
+        g.indices.as_ref().map(|i| i[3..6].to_vec()),
+        Some(mesh.triangles[1].to_vec())
+    );
+    assert!(g.validate().is_ok());
+}

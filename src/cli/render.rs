@@ -1,0 +1,75 @@
+//! `fixedfunc render`: renders a scene, writes the image and the shadow mask, prints the
+//! figures line. Progress bars for multiple frames and for the ground truth (stderr; hidden
+//! when stderr is not a terminal).
+
+use std::path::PathBuf;
+use std::time::Duration;
+
+use fixedfunc::gpu::Backend;
+use fixedfunc::pipeline::PipelineKind;
+use fixedfunc::render::{self, ImageSize, Progress, RenderOptions};
+use indicatif::{ProgressBar, ProgressStyle};
+
+use super::error::CliError;
+use super::scene_arg;
+
+pub struct Args {
+    pub scene: Option<PathBuf>,
+    pub technique: Option<String>,
+    pub pipeline: PipelineKind,
+    pub backend: Backend,
+    pub size: Option<ImageSize>,
+    pub out: PathBuf,
+    pub mask: PathBuf,
+    pub frames: u32,
+}
+
+pub fn run(args: Args) -> Result<(), CliError> {
+    let scene = scene_arg::load(args.scene.as_deref())?;
+    let options = RenderOptions {
+        backend: args.backend,
+        pipeline: args.pipeline,
+        technique: args.technique,
+        size: args.size,
+        frames: args.frames,
+        ..RenderOptions::default()
+    };
+    let bar = ProgressBar::hidden();
+    let outcome = render::render_with_progress(&scene, &options, |p| match p {
+        Progress::Frame { done, total } if total > 1 => {
+            if done == 1 {
+                bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+                bar.set_length(u64::from(total));
+                bar.set_style(
+                    ProgressStyle::with_template("frames [{bar:30}] {pos}/{len}")
+                        .unwrap_or_else(|_| ProgressStyle::default_bar()),
+                );
+            }
+            bar.set_position(u64::from(done));
+        }
+        Progress::Frame { .. } => {}
+        Progress::Truth => {
+            bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            bar.set_style(ProgressStyle::default_spinner());
+            bar.set_message(format!(
+                "ray-casting the ground truth of {}",
+                scene_arg::name(args.scene.as_deref())
+            ));
+            bar.enable_steady_tick(Duration::from_millis(100));
+        }
+    });
+    bar.finish_and_clear();
+    let outcome = outcome?;
+    scene_arg::save(&outcome.image, &args.out)?;
+    scene_arg::save(&outcome.mask.to_image(), &args.mask)?;
+    println!("{}", outcome.figures());
+    println!(
+        "image {} · mask {} · {}x{} via {}",
+        args.out.display(),
+        args.mask.display(),
+        outcome.image.width(),
+        outcome.image.height(),
+        outcome.context_path
+    );
+    Ok(())
+}

@@ -1,0 +1,91 @@
+//! The one line of figures `fixedfunc render` prints: what ran, how wrong its mask is
+//! against the truth, what a frame costs, and how much work the pipeline did.
+//!
+//! `none · emulate · egl · error 0.00% (false shadow 0, missed shadow 0) · 2.31 ms median
+//! of 9 [2.10–2.80], cold 45.20 ms · 1 pass · 2 programs`
+//!
+//! Error % = 100 · (false + missed + coverage) / truth geometry pixels (see `metrics`).
+
+use std::fmt;
+
+use crate::gpu::Backend;
+use crate::pipeline::PipelineKind;
+
+use super::{pipeline_name, FrameTimings};
+
+/// The figures of one render.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figures {
+    pub technique: &'static str,
+    pub pipeline: PipelineKind,
+    pub backend: Backend,
+    pub wrong_percent: f64,
+    pub false_shadow: u64,
+    pub missed_shadow: u64,
+    pub timings: FrameTimings,
+    pub passes: usize,
+    pub programs: u64,
+}
+
+impl fmt::Display for Figures {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} · {} · {} · error {:.2}% (false shadow {}, missed shadow {}) · ",
+            self.technique,
+            pipeline_name(self.pipeline),
+            self.backend,
+            self.wrong_percent,
+            self.false_shadow,
+            self.missed_shadow,
+        )?;
+        match self.timings.steady {
+            Some(s) => write!(
+                f,
+                "{:.2} ms median of {} [{:.2}–{:.2}], cold {:.2} ms",
+                s.median, s.samples, s.min, s.max, self.timings.cold_ms
+            )?,
+            None => write!(f, "{:.2} ms (one cold frame)", self.timings.cold_ms)?,
+        }
+        let plural = |n: u64| if n == 1 { "" } else { "s" };
+        write!(
+            f,
+            " · {} pass{} · {} program{}",
+            self.passes,
+            if self.passes == 1 { "" } else { "es" },
+            self.programs,
+            plural(self.programs)
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn figures(steady: Vec<f64>) -> Figures {
+        Figures {
+            technique: "none",
+            pipeline: PipelineKind::Emulate,
+            backend: Backend::Egl,
+            wrong_percent: 1.234,
+            false_shadow: 3,
+            missed_shadow: 4,
+            timings: FrameTimings::new(40.0, steady),
+            passes: 1,
+            programs: 2,
+        }
+    }
+
+    #[test]
+    fn one_line_with_every_figure() {
+        assert_eq!(
+            figures(vec![3.0, 1.0, 2.0]).to_string(),
+            "none · emulate · egl · error 1.23% (false shadow 3, missed shadow 4) · \
+             2.00 ms median of 3 [1.00–3.00], cold 40.00 ms · 1 pass · 2 programs"
+        );
+        let single = figures(Vec::new()).to_string();
+        assert!(single.contains("40.00 ms (one cold frame)"), "{single}");
+        assert!(!single.contains('\n'));
+    }
+}

@@ -1,0 +1,285 @@
+//! Techniques: each is a plan of passes written as fixed-function [`Command`]s, the calls a
+//! program of the era would have made. A technique sets state and draws; it never touches
+//! GL, so a plan can be printed, asserted on in pure tests, and executed by either pipeline.
+//!
+//! **One list of names.** The scene layer validates `[shadow] technique` against
+//! [`scene::KNOWN_TECHNIQUES`] (it sits below this layer and cannot see it); [`REGISTRY`]
+//! holds the technique behind each of those names, in the same order, and a compile-time
+//! assertion refuses to build when the two differ. Adding a technique means
+//! adding its name there and its entry here; forgetting either one is a build error.
+//!
+//! **Preparation once, plans once, frames many.** [`Prepared::new`] converts every object's
+//! mesh into one shared `Arc<Geometry>`; [`Technique::plan`] builds the passes from the scene
+//! and those geometries; the renderer then executes the same command lists every frame, so
+//! nothing is converted or uploaded twice by this layer.
+//!
+//! **Passes only for what the scene asks for.** A plan enables a capability only when the
+//! scene uses it: lighting only with lights, LIGHTi only for the scene's lights, NORMALIZE
+//! only when a transform scales, no texture unit unless the technique samples a map.
+//!
+//! **The shadow mask.** After the last frame the renderer executes [`Plan::mask`]'s commands
+//! and decodes their readback with [`MaskPlan::decode`] into a [`Mask`] (255 lit, 0
+//! shadowed, 128 background, top row first) that `metrics` compares with the truth.
+
+pub mod none;
+
+use std::sync::Arc;
+
+use crate::ff::{Command, Geometry, PixelFormat, PixelType, MAX_LIGHTS};
+use crate::metrics::{Mask, BACKGROUND, LIT};
+use crate::pipeline::Readback;
+use crate::scene::{self, Scene};
+
+/// Failures of the techniques layer.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum TechniqueError {
+    #[error("`{name}` is not a known technique; known techniques: {}", .known.join(", "))]
+    Unknown {
+        name: String,
+        known: Vec<&'static str>,
+    },
+    #[error("the scene has {count} lights; the fixed-function pipeline has {max} (GL_MAX_LIGHTS)")]
+    TooManyLights { count: usize, max: usize },
+    #[error("the mask readback (slot {slot}) is missing: the pipeline did not execute ReadPixels")]
+    MissingReadback { slot: u32 },
+    #[error("the mask readback is {got_w}×{got_h} {format:?}/{ty:?}; expected {w}×{h} {expected_format:?}/{expected_ty:?}", got_w = .got.0, got_h = .got.1, w = .expected.0, h = .expected.1)]
+    ReadbackShape {
+        got: (u32, u32),
+        expected: (u32, u32),
+        format: PixelFormat,
+        ty: PixelType,
+        expected_format: PixelFormat,
+        expected_ty: PixelType,
+    },
+}
+
+/// A technique's entry in the registry.
+#[derive(Clone, Copy)]
+pub struct Technique {
+    /// The name scene files and `--technique` use.
+    pub name: &'static str,
+    /// One line for `--help` and reports.
+    pub summary: &'static str,
+    /// Builds the passes and the mask plan for a scene and its prepared geometry.
+    pub plan: fn(&Scene, &Prepared) -> Result<Plan, TechniqueError>,
+}
+
+impl std::fmt::Debug for Technique {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name)
+    }
+}
+
+/// Every technique, in the order of [`scene::KNOWN_TECHNIQUES`].
+pub const REGISTRY: &[Technique] = &[none::TECHNIQUE];
+
+// The registry's names are exactly the scene layer's names, in order (evaluated at build
+// time: a mismatch does not compile).
+const _: () = assert!(
+    same_names(REGISTRY, scene::KNOWN_TECHNIQUES),
+    "techniques::REGISTRY and scene::KNOWN_TECHNIQUES list different names"
+);
+
+const fn same_names(registry: &[Technique], names: &[&str]) -> bool {
+    if registry.len() != names.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < names.len() {
+        let (a, b) = (registry[i].name.as_bytes(), names[i].as_bytes());
+        if a.len() != b.len() {
+            return false;
+        }
+        let mut j = 0;
+        while j < a.len() {
+            if a[j] != b[j] {
+                return false;
+            }
+            j += 1;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// The technique called `name`.
+pub fn lookup(name: &str) -> Result<&'static Technique, TechniqueError> {
+    REGISTRY
+        .iter()
+        .find(|t| t.name == name)
+        .ok_or_else(|| TechniqueError::Unknown {
+            name: name.to_string(),
+            known: scene::KNOWN_TECHNIQUES.to_vec(),
+        })
+}
+
+/// The scene's meshes as draw-ready geometry, made once per scene and shared (Arc) by every
+/// pass and frame that draws them. `objects[i]` belongs to `scene.objects[i]`.
+#[derive(Debug, Clone)]
+pub struct Prepared {
+    pub objects: Vec<Arc<Geometry>>,
+}
+
+impl Prepared {
+    pub fn new(scene: &Scene) -> Prepared {
+        Prepared {
+            objects: scene
+                .objects
+                .iter()
+                .map(|o| Arc::new(o.mesh.to_geometry()))
+                .collect(),
+        }
+    }
+}
+
+/// One pass: the commands of one trip through the scene (or one full-screen step).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pass {
+    /// What the pass is for, e.g. "eye".
+    pub name: &'static str,
+    pub commands: Vec<Command>,
+}
+
+/// What a technique runs each frame, and how its shadow mask is obtained afterwards.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plan {
+    /// Executed in order, every frame.
+    pub passes: Vec<Pass>,
+    pub mask: MaskPlan,
+}
+
+impl Plan {
+    /// Every command of one frame, in order.
+    pub fn frame_commands(&self) -> impl Iterator<Item = &Command> {
+        self.passes.iter().flat_map(|p| p.commands.iter())
+    }
+}
+
+/// Commands executed once after the last frame, and how their readback becomes a mask.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MaskPlan {
+    pub commands: Vec<Command>,
+    pub source: MaskSource,
+}
+
+/// The readback slot mask plans use.
+pub const MASK_SLOT: u32 = 0;
+
+/// How a readback becomes a shadow mask.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MaskSource {
+    /// The frame's own depth buffer read as FLOAT (no extra pass): a pixel is geometry iff
+    /// z < 1 (the cleared far value), and every geometry pixel is lit — a technique without
+    /// shadows. 255 where z < 1, 128 elsewhere.
+    DepthCoverage { slot: u32, width: u32, height: u32 },
+}
+
+impl MaskPlan {
+    /// Decodes the readback of `self.source`'s slot (bottom row first, as GL returns it)
+    /// into a mask (top row first).
+    pub fn decode<'r>(
+        &self,
+        readback: impl Fn(u32) -> Option<&'r Readback>,
+    ) -> Result<Mask, TechniqueError> {
+        match self.source {
+            MaskSource::DepthCoverage {
+                slot,
+                width,
+                height,
+            } => {
+                let r = readback(slot).ok_or(TechniqueError::MissingReadback { slot })?;
+                let expected = (PixelFormat::DepthComponent, PixelType::Float);
+                let n = width as usize * height as usize;
+                if (r.width, r.height) != (width, height)
+                    || (r.format, r.ty) != expected
+                    || r.bytes.len() != n * 4
+                {
+                    return Err(TechniqueError::ReadbackShape {
+                        got: (r.width, r.height),
+                        expected: (width, height),
+                        format: r.format,
+                        ty: r.ty,
+                        expected_format: expected.0,
+                        expected_ty: expected.1,
+                    });
+                }
+                let row = width as usize * 4;
+                let data = r
+                    .bytes
+                    .chunks_exact(row.max(1))
+                    .rev()
+                    .flat_map(|line| line.chunks_exact(4))
+                    .map(|b| {
+                        let z = f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
+                        if z < 1.0 {
+                            LIT
+                        } else {
+                            BACKGROUND
+                        }
+                    })
+                    .collect();
+                Ok(Mask {
+                    width,
+                    height,
+                    data,
+                })
+            }
+        }
+    }
+}
+
+/// Fails when the scene has more lights than GL_MAX_LIGHTS.
+pub(crate) fn check_light_count(scene: &Scene) -> Result<(), TechniqueError> {
+    if scene.lights.len() > MAX_LIGHTS {
+        return Err(TechniqueError::TooManyLights {
+            count: scene.lights.len(),
+            max: MAX_LIGHTS,
+        });
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_scene_name_has_a_technique() {
+        for name in scene::KNOWN_TECHNIQUES {
+            assert_eq!(lookup(name).map(|t| t.name), Ok(*name));
+        }
+        let err = lookup("shadow-volumes").unwrap_err();
+        assert!(err.to_string().contains("known techniques: none"), "{err}");
+    }
+
+    #[test]
+    fn depth_coverage_flips_rows_and_splits_at_the_far_value() {
+        // 2×2, bottom row first: bottom (1.0, 0.5), top (0.25, 1.0).
+        let bytes: Vec<u8> = [1.0f32, 0.5, 0.25, 1.0]
+            .iter()
+            .flat_map(|z| z.to_ne_bytes())
+            .collect();
+        let plan = MaskPlan {
+            commands: Vec::new(),
+            source: MaskSource::DepthCoverage {
+                slot: 3,
+                width: 2,
+                height: 2,
+            },
+        };
+        let stored = Readback {
+            width: 2,
+            height: 2,
+            format: PixelFormat::DepthComponent,
+            ty: PixelType::Float,
+            bytes,
+        };
+        let readback = |slot| (slot == 3).then_some(&stored);
+        let mask = plan.decode(readback).unwrap();
+        assert_eq!(mask.data, vec![LIT, BACKGROUND, BACKGROUND, LIT]);
+        assert_eq!(
+            plan.decode(|_| None),
+            Err(TechniqueError::MissingReadback { slot: 3 })
+        );
+    }
+}
