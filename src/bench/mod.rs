@@ -1,8 +1,10 @@
 //! Measurements behind `fixedfunc bench`: each group times real work repeatedly and reports
 //! medians (with min and max), never a single run. Groups: `context` (creating each
-//! backend's contexts and producing the first read-back frame).
+//! backend's contexts and producing the first read-back frame) and `pipeline` (the same
+//! frame through the emulated and the native path, interleaved).
 
 pub mod context;
+pub mod pipeline;
 mod stats;
 
 pub use stats::Summary;
@@ -13,8 +15,10 @@ pub use stats::Summary;
 pub enum BenchGroup {
     /// Context creation and the first read-back frame, per backend and profile.
     Context,
+    /// One frame of the default scene through the emulated and the native pipeline.
+    Pipeline,
 }
 
 impl BenchGroup {
-    pub const ALL: [BenchGroup; 1] = [BenchGroup::Context];
+    pub const ALL: [BenchGroup; 2] = [BenchGroup::Context, BenchGroup::Pipeline];
 }

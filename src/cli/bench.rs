@@ -1,6 +1,6 @@
 //! `fixedfunc bench`: repeated timings with medians, a progress bar while they run.
 
-use fixedfunc::bench::{context, BenchGroup};
+use fixedfunc::bench::{context, pipeline, BenchGroup};
 use fixedfunc::gpu::{Backend, Profile, VirtualDisplay};
 use indicatif::{ProgressBar, ProgressStyle};
 
@@ -11,6 +11,7 @@ pub fn run(only: Option<BenchGroup>, repeats: usize, json: bool) -> Result<(), C
     for group in groups {
         match group {
             BenchGroup::Context => run_context(repeats, json)?,
+            BenchGroup::Pipeline => run_pipeline(repeats, json)?,
         }
     }
     Ok(())
@@ -60,6 +61,53 @@ fn run_context(repeats: usize, json: bool) -> Result<(), CliError> {
             r.profile.name(),
             fmt(&r.create_ms),
             fmt(&r.first_frame_ms)
+        );
+    }
+    Ok(())
+}
+
+fn run_pipeline(frames: usize, json: bool) -> Result<(), CliError> {
+    let frames = frames.max(2);
+    let bar = ProgressBar::new(2 * frames as u64).with_style(
+        ProgressStyle::with_template("{msg:>22} [{bar:30}] {pos}/{len}")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    bar.set_message("emulate vs native");
+    let rows = pipeline::measure(Backend::Egl, frames, || bar.inc(1))?;
+    bar.finish_and_clear();
+    if json {
+        println!("{}", serde_json::to_string_pretty(&rows)?);
+        return Ok(());
+    }
+    println!(
+        "pipeline: one frame of the default scene (none), {frames} frames each, interleaved; \
+         medians of frames 2..N [min–max]"
+    );
+    println!(
+        "{:<8} {:>24} {:>26} {:>9} {:>12} {:>12}",
+        "path", "frame ms", "submit µs per draw", "programs", "after frame1", "sent/skipped"
+    );
+    for r in &rows {
+        let fmt = |s: &fixedfunc::bench::Summary, d: usize| {
+            format!("{:.d$} [{:.d$}–{:.d$}]", s.median, s.min, s.max)
+        };
+        println!(
+            "{:<8} {:>24} {:>26} {:>9} {:>12} {:>12}",
+            format!("{:?}", r.pipeline).to_lowercase(),
+            fmt(&r.frame_ms, 2),
+            fmt(&r.submit_us_per_draw, 1),
+            r.programs_compiled,
+            r.programs_after_first_frame,
+            format!(
+                "{}/{}",
+                r.counters.state_calls_sent, r.counters.state_calls_skipped
+            )
+        );
+    }
+    if let [e, n] = rows.as_slice() {
+        println!(
+            "emulated / native frame time: {:.2}×",
+            e.frame_ms.median / n.frame_ms.median
         );
     }
     Ok(())

@@ -17,6 +17,8 @@ pub enum CliError {
     Pipeline(#[from] PipelineError),
     #[error("the {backend} backend does not work here:\n{reasons}")]
     BackendUnavailable { backend: Backend, reasons: String },
+    #[error(transparent)]
+    Bench(#[from] fixedfunc::bench::pipeline::BenchError),
     #[error("cannot write JSON: {0}")]
     Json(#[from] serde_json::Error),
     #[error("{path}: {source}")]
