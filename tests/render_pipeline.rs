@@ -55,6 +55,39 @@ fn none_on_the_default_scene_matches_across_pipelines_and_backends() {
     }
 }
 
+/// The stored reference (`tests/reference/none-default-160x120.png`, made once by the
+/// native path on EGL) guards against both paths drifting together. Tolerance as above.
+/// Set FIXEDFUNC_BLESS=1 to rewrite it after an intended change of the default scene.
+#[test]
+fn none_on_the_default_scene_matches_the_reference_image() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/reference/none-default-160x120.png"
+    );
+    if std::env::var_os("FIXEDFUNC_BLESS").is_some() {
+        run(Backend::Egl, PipelineKind::Native)
+            .image
+            .save(path)
+            .expect("write reference");
+    }
+    let reference = image::open(path).expect("reference image").to_rgba8();
+    let tolerance = Tolerance {
+        per_channel: 3,
+        max_bad_pixels: (SIZE.width * SIZE.height / 100) as usize,
+    };
+    for backend in HEADLESS {
+        for kind in KINDS {
+            let got = run(backend, kind);
+            assert_images_match(
+                &format!("none-reference-{backend}-{kind:?}"),
+                &got.image,
+                &reference,
+                tolerance,
+            );
+        }
+    }
+}
+
 #[test]
 fn none_runs_one_pass_and_compiles_few_programs() {
     let objects = Scene::default_scene().objects.len() as u64;
