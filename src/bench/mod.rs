@@ -17,8 +17,10 @@ pub enum BenchGroup {
     Context,
     /// One frame of the default scene through the emulated and the native pipeline.
     Pipeline,
+    /// The CPU ground truth: rays per second on the default scene and on ~1M triangles.
+    Truth,
 }
 
 impl BenchGroup {
-    pub const ALL: [BenchGroup; 2] = [BenchGroup::Context, BenchGroup::Pipeline];
+    pub const ALL: [BenchGroup; 3] = [BenchGroup::Context, BenchGroup::Pipeline, BenchGroup::Truth];
 }

@@ -12,6 +12,7 @@ pub fn run(only: Option<BenchGroup>, repeats: usize, json: bool) -> Result<(), C
         match group {
             BenchGroup::Context => run_context(repeats, json)?,
             BenchGroup::Pipeline => run_pipeline(repeats, json)?,
+            BenchGroup::Truth => run_truth(repeats, json)?,
         }
     }
     Ok(())
@@ -108,6 +109,53 @@ fn run_pipeline(frames: usize, json: bool) -> Result<(), CliError> {
         println!(
             "emulated / native frame time: {:.2}×",
             e.frame_ms.median / n.frame_ms.median
+        );
+    }
+    Ok(())
+}
+
+fn run_truth(runs: usize, json: bool) -> Result<(), CliError> {
+    use fixedfunc::scene::Scene;
+    use fixedfunc::truth::{bench, TruthOptions};
+    let runs = runs.clamp(1, 1000) as u32;
+    let spinner = ProgressBar::new_spinner();
+    spinner.set_message("ray casting the default scene");
+    spinner.enable_steady_tick(std::time::Duration::from_millis(100));
+    let default = bench::throughput(&Scene::default_scene(), &TruthOptions::default(), runs)?;
+    spinner.set_message("ray casting ~1M triangles");
+    let million = bench::throughput(
+        &bench::million_triangle_scene(),
+        &TruthOptions::default(),
+        runs,
+    )?;
+    spinner.finish_and_clear();
+    let rows = [("default", default), ("~1M triangles", million)];
+    if json {
+        let v: Vec<_> = rows
+            .iter()
+            .map(|(n, t)| serde_json::json!({ "scene": n, "result": t }))
+            .collect();
+        println!("{}", serde_json::to_string_pretty(&v)?);
+        return Ok(());
+    }
+    println!(
+        "truth: median run of {runs}, {} threads",
+        rayon::current_num_threads()
+    );
+    println!(
+        "{:<15} {:>10} {:>10} {:>12} {:>16} {:>16} {:>10}",
+        "scene", "size", "triangles", "BVH ms", "primary rays/s", "shadow rays/s", "total ms"
+    );
+    for (name, t) in &rows {
+        println!(
+            "{:<15} {:>10} {:>10} {:>12.1} {:>14.1} M {:>14.1} M {:>10.1}",
+            name,
+            format!("{}x{}", t.width, t.height),
+            t.triangles,
+            t.build_ms,
+            t.primary_rays_per_s / 1e6,
+            t.shadow_rays_per_s / 1e6,
+            t.total_ms
         );
     }
     Ok(())

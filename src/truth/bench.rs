@@ -22,13 +22,14 @@ pub struct Throughput {
     pub total_ms: f64,
 }
 
-/// Runs the truth on `scene` `runs` times (at least once) and reports the fastest run.
+/// Runs the truth on `scene` `runs` times (at least once) and reports the median run (by
+/// total time; the upper middle for an even count).
 pub fn throughput(
     scene: &Scene,
     options: &TruthOptions,
     runs: u32,
 ) -> Result<Throughput, TruthError> {
-    let mut best: Option<Throughput> = None;
+    let mut all: Vec<Throughput> = Vec::new();
     for _ in 0..runs.max(1) {
         let t = truth(scene, options)?;
         let per_s = |n: u64, d: std::time::Duration| n as f64 / d.as_secs_f64().max(1e-9);
@@ -43,11 +44,11 @@ pub fn throughput(
             shadow_rays_per_s: per_s(t.shadow_rays, t.timings.shadow),
             total_ms: t.timings.total().as_secs_f64() * 1e3,
         };
-        if best.is_none_or(|b| run.total_ms < b.total_ms) {
-            best = Some(run);
-        }
+        all.push(run);
     }
-    best.ok_or(TruthError::NoSuchLight {
+    all.sort_by(|a, b| a.total_ms.total_cmp(&b.total_ms));
+    let middle = all.len() / 2;
+    all.into_iter().nth(middle).ok_or(TruthError::NoSuchLight {
         index: options.light,
         count: scene.lights.len(),
     })
