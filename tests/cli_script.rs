@@ -81,3 +81,15 @@ fn a_bad_script_names_its_line_and_the_valid_values() {
     let (ok, _, err) = fixedfunc(&["replay", ONE_UNIT, "--size", "0x4"]);
     assert!(!ok && err.contains("at least 1"), "{err}");
 }
+
+#[test]
+fn shaders_of_the_default_scene_frame_light_without_texturing() {
+    let (ok, out, err) = fixedfunc(&["shaders"]);
+    assert!(ok, "{err}");
+    assert!(
+        out.starts_with("the default scene (none): 1 distinct program(s)"),
+        "{out}"
+    );
+    assert!(out.contains("u_light0_diffuse"), "{out}");
+    assert!(!out.contains("sampler") && !out.contains("v_tc"), "{out}");
+}

@@ -102,8 +102,15 @@ enum Command {
     },
     /// Print each distinct program a script needs: its key and its generated GLSL.
     Shaders {
-        /// The script.
-        file: PathBuf,
+        /// A GL script; without it, one frame of `--scene` (the default scene) with its
+        /// technique.
+        file: Option<PathBuf>,
+        /// A scene file whose technique's frame is shown (when no script is given).
+        #[arg(long, conflicts_with = "file")]
+        scene: Option<PathBuf>,
+        /// The technique to show for the scene (default: the scene's own).
+        #[arg(long)]
+        technique: Option<String>,
     },
     /// Repeated timings, reported as medians.
     Bench {
@@ -130,7 +137,11 @@ pub fn run() -> ExitCode {
             size,
             out,
         } => replay::run(&file, pipeline, backend, size, &out),
-        Command::Shaders { file } => shaders::run(&file),
+        Command::Shaders {
+            file,
+            scene,
+            technique,
+        } => shaders::run(file.as_deref(), scene.as_deref(), technique.as_deref()),
         Command::Bench {
             only,
             repeats,

@@ -1,5 +1,5 @@
-//! `fixedfunc shaders FILE`: the distinct programs a script's draws need, each with its key
-//! and generated GLSL. No GL context is needed: the state model derives the keys.
+//! `fixedfunc shaders [FILE | --scene SCENE]`: the distinct programs a script's draws (or
+//! one frame of a scene's technique) need, each with its key and generated GLSL. No GL context is needed: the state model derives the keys.
 
 use std::path::Path;
 
@@ -25,10 +25,33 @@ pub fn distinct_keys(commands: &[Command]) -> Vec<ShaderKey> {
     keys
 }
 
-pub fn run(file: &Path) -> Result<(), CliError> {
-    let commands = script_io::load(file)?;
+/// One frame of a scene's technique, as Commands.
+fn scene_frame(
+    scene: Option<&Path>,
+    technique: Option<&str>,
+) -> Result<(String, Vec<Command>), CliError> {
+    let scene_value = super::scene_arg::load(scene)?;
+    let name = technique
+        .unwrap_or(&scene_value.shadow.technique)
+        .to_string();
+    let t = fixedfunc::techniques::lookup(&name).map_err(fixedfunc::render::RenderError::from)?;
+    let prepared = fixedfunc::techniques::Prepared::new(&scene_value);
+    let plan = (t.plan)(&scene_value, &prepared).map_err(fixedfunc::render::RenderError::from)?;
+    let label = format!("{} ({name})", super::scene_arg::name(scene));
+    Ok((label, plan.frame_commands().cloned().collect()))
+}
+
+pub fn run(
+    file: Option<&Path>,
+    scene: Option<&Path>,
+    technique: Option<&str>,
+) -> Result<(), CliError> {
+    let (label, commands) = match file {
+        Some(file) => (file.display().to_string(), script_io::load(file)?),
+        None => scene_frame(scene, technique)?,
+    };
     let keys = distinct_keys(&commands);
-    println!("{}: {} distinct program(s)", file.display(), keys.len());
+    println!("{label}: {} distinct program(s)", keys.len());
     for (i, key) in keys.iter().enumerate() {
         let program = shadergen::generate(key);
         println!("\n=== program {i} ===\n--- key ---\n{key:#?}");
