@@ -212,3 +212,199 @@ fn texture_env_81_colours_by_base_format_and_mode() {
         }
     }
 }
+
+/// combine.c's fragment colour and unit-0 env colour.
+const FRAG: [f64; 4] = [0.0, 0.25, 0.5, 0.75];
+const ENV: [f64; 4] = [0.25, 0.5, 0.75, 1.0];
+
+const SOURCES: [&str; 4] = ["GL_TEXTURE", "GL_CONSTANT", "GL_PRIMARY_COLOR", "GL_PREVIOUS"];
+const RGB_OPS: [&str; 4] = [
+    "GL_SRC_COLOR",
+    "GL_ONE_MINUS_SRC_COLOR",
+    "GL_SRC_ALPHA",
+    "GL_ONE_MINUS_SRC_ALPHA",
+];
+const RGB_FUNCS: [&str; 8] = [
+    "GL_REPLACE",
+    "GL_MODULATE",
+    "GL_ADD",
+    "GL_ADD_SIGNED",
+    "GL_INTERPOLATE",
+    "GL_SUBTRACT",
+    "GL_DOT3_RGB",
+    "GL_DOT3_RGBA",
+];
+
+/// One COMBINE state of unit 0: functions, sources and operands of Arg0..2, scales.
+#[derive(Clone, Copy, Debug)]
+struct Combine {
+    rgb: usize,
+    alpha: usize,
+    src_rgb: [usize; 3],
+    op_rgb: [usize; 3],
+    src_a: [usize; 3],
+    op_a: [usize; 3],
+    rgb_scale: f64,
+    alpha_scale: f64,
+}
+
+/// The combine function on three arguments (GL 1.3 table 3.24).
+fn combine_fn(func: usize, a: [f64; 3]) -> f64 {
+    match func {
+        0 => a[0],
+        1 => a[0] * a[1],
+        2 => a[0] + a[1],
+        3 => a[0] + a[1] - 0.5,
+        4 => a[0] * a[2] + a[1] * (1.0 - a[2]),
+        _ => a[0] - a[1],
+    }
+}
+
+/// The CPU model of combine.c: arguments from the sources and operands, the function, the
+/// scale, then the clamp to [0, 1]; DOT3_RGBA puts the dot product in alpha too (its scale
+/// is RGB_SCALE, so the generator gives DOT3_RGBA equal scales).
+fn combine_model(c: &Combine, tex: [f64; 4]) -> [f64; 4] {
+    let src = |s: usize| match s {
+        0 => tex,
+        1 => ENV,
+        _ => FRAG,
+    };
+    let rgb_arg = |i: usize, ch: usize| {
+        let v = src(c.src_rgb[i]);
+        match c.op_rgb[i] {
+            0 => v[ch],
+            1 => 1.0 - v[ch],
+            2 => v[3],
+            _ => 1.0 - v[3],
+        }
+    };
+    let a_arg = |i: usize| {
+        let v = src(c.src_a[i])[3];
+        if c.op_a[i] == 0 {
+            v
+        } else {
+            1.0 - v
+        }
+    };
+    let mut out = [0.0; 4];
+    if c.rgb >= 6 {
+        let dot: f64 = (0..3)
+            .map(|ch| (rgb_arg(0, ch) - 0.5) * (rgb_arg(1, ch) - 0.5))
+            .sum::<f64>()
+            * 4.0;
+        let v = (dot * c.rgb_scale).clamp(0.0, 1.0);
+        out = [v; 4];
+    } else {
+        for (ch, o) in out.iter_mut().enumerate().take(3) {
+            let a = [rgb_arg(0, ch), rgb_arg(1, ch), rgb_arg(2, ch)];
+            *o = (combine_fn(c.rgb, a) * c.rgb_scale).clamp(0.0, 1.0);
+        }
+    }
+    if c.rgb != 7 {
+        let a = [a_arg(0), a_arg(1), a_arg(2)];
+        out[3] = (combine_fn(c.alpha, a) * c.alpha_scale).clamp(0.0, 1.0);
+    }
+    out
+}
+
+/// A deterministic stride through the state space (xorshift), `n` states.
+fn combine_states(n: usize, seed: u64) -> Vec<Combine> {
+    let mut x = seed;
+    let mut next = move |m: usize| {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        (x % m as u64) as usize
+    };
+    let scales = [1.0, 2.0, 4.0];
+    (0..n)
+        .map(|i| {
+            let rgb = i % 8;
+            let rgb_scale = scales[next(3)];
+            Combine {
+                rgb,
+                alpha: next(6),
+                src_rgb: [next(4), next(4), next(4)],
+                op_rgb: [next(4), next(4), next(4)],
+                src_a: [next(4), next(4), next(4)],
+                op_a: [next(2), next(2), next(2)],
+                rgb_scale,
+                alpha_scale: if rgb == 7 { rgb_scale } else { scales[next(3)] },
+            }
+        })
+        .collect()
+}
+
+/// The script: one 1×1 texel `tex` on unit 0, then per state its TexEnv calls and a quad on
+/// pixel (i mod 32, i div 32).
+fn combine_script(states: &[Combine], tex: [u8; 4]) -> String {
+    let alpha_funcs = &RGB_FUNCS[..6];
+    let mut s = format!(
+        "glClearColor(0, 0, 0, 0);
+glClear(GL_COLOR_BUFFER_BIT);
+{}glBindTexture(GL_TEXTURE_2D, 1);
+glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, (GLubyte[]){{{}, {}, {}, {}}});
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+glEnable(GL_TEXTURE_2D);
+glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, (GLfloat[]){{0.25f, 0.5f, 0.75f, 1}});
+glColor4f(0, 0.25f, 0.5f, 0.75f);
+",
+        ortho(32, 32),
+        tex[0],
+        tex[1],
+        tex[2],
+        tex[3]
+    );
+    for (i, c) in states.iter().enumerate() {
+        s += &format!(
+            "glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, {});\nglTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, {});\nglTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, {});\nglTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, {});\n",
+            RGB_FUNCS[c.rgb], alpha_funcs[c.alpha], c.rgb_scale, c.alpha_scale
+        );
+        for a in 0..3 {
+            s += &format!(
+                "glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE{a}_RGB, {});\nglTexEnvi(GL_TEXTURE_ENV, GL_OPERAND{a}_RGB, {});\nglTexEnvi(GL_TEXTURE_ENV, GL_SOURCE{a}_ALPHA, {});\nglTexEnvi(GL_TEXTURE_ENV, GL_OPERAND{a}_ALPHA, {});\n",
+                SOURCES[c.src_rgb[a]], RGB_OPS[c.op_rgb[a]], SOURCES[c.src_a[a]], RGB_OPS[2 + c.op_a[a]]
+            );
+        }
+        let (x, y) = (i % 32, i / 32);
+        s += &format!(
+            "glBegin(GL_QUADS);\nglVertex2f({x}, {y}); glVertex2f({}, {y}); glVertex2f({}, {}); glVertex2f({x}, {});\nglEnd();\n",
+            x + 1,
+            x + 1,
+            y + 1,
+            y + 1
+        );
+    }
+    s
+}
+
+/// ext_texture_env_combine/combine.c on unit 0: 256 states (each its own program on both
+/// paths, so the stride is kept short) striding through functions,
+/// sources, operands and RGB/ALPHA scales {1, 2, 4}, with two of combine.c's texture
+/// colours. Each pixel against the model: tol 0.01 (3/255), DOT3 0.02 (5/255) as piglit;
+/// emulate vs native images within 2/255.
+#[test]
+fn combine_modes_sources_operands_and_scales() {
+    for (seed, tex) in [(0x9e37_79b9_u64, [64u8, 128, 191, 255]), (0x1234_5678, [255, 191, 0, 64])] {
+        let states = combine_states(256, seed);
+        let texf = tex.map(f);
+        let tol = Tolerance {
+            per_channel: 2,
+            max_bad_pixels: 0,
+        };
+        let src = combine_script(&states, tex);
+        for p in compare(&format!("combine-{seed:x}"), &src, Frame::new(32, 32), tol) {
+            for (path, out) in [("emulate", &p.emulate), ("native", &p.native)] {
+                for (i, c) in states.iter().enumerate() {
+                    let e = combine_model(c, texf).map(unorm8);
+                    let tol = if c.rgb >= 6 { 5 } else { TOL8 };
+                    let got = out.image.get_pixel(i as u32 % 32, 31 - i as u32 / 32).0;
+                    let ok = got.iter().zip(e).all(|(&g, e)| g.abs_diff(e) <= tol);
+                    assert!(ok, "{} {path} state {i} {c:?}: {got:?}, model {e:?} ± {tol}", p.backend);
+                }
+            }
+        }
+    }
+}
