@@ -408,3 +408,75 @@ fn combine_modes_sources_operands_and_scales() {
         }
     }
 }
+
+/// H13, H14, DOT3 scale and texturing/crossbar (`combine_bugs_crossbar.c`, one pixel per
+/// case): INTERPOLATE(1, 0, 0.251) = 64; ADD clamped then MODULATE 0.5 = 128; DOT3 × 2 =
+/// 127; five crossbar cases 0.5 (127 or 128). Tolerance 2/255 per RGB channel (below
+/// piglit's 0.01 and far from each bug's value: 191, 191, 64 or 32); paths within 1/255.
+#[test]
+fn interpolate_order_stage_clamp_dot3_scale_and_crossbar() {
+    let src = fidelity::script_file("combine_bugs_crossbar");
+    let expected: [u8; 8] = [64, 128, 127, 127, 128, 127, 127, 127];
+    let tol = Tolerance {
+        per_channel: 1,
+        max_bad_pixels: 0,
+    };
+    for p in compare("combine-bugs", &src, Frame::new(8, 1), tol) {
+        for out in [&p.emulate, &p.native] {
+            for (x, e) in expected.iter().enumerate() {
+                probe_rgb(&out.image, x as u32, 0, [*e; 3], 2);
+            }
+        }
+    }
+}
+
+/// An invalid TexEnv value (COMBINE_ALPHA = DOT3_RGB, INVALID_ENUM) keeps the previous
+/// one on both paths: alpha stays REPLACE(TEXTURE) = 191, not the default MODULATE
+/// (191·0.5 = 96) nor anything from DOT3. Exact (tol 0) on alpha.
+#[test]
+fn invalid_tex_env_value_keeps_the_previous_one() {
+    use fixedfunc::ff::{GlErrorKind, Precision};
+    use fixedfunc::pipeline::PipelineKind;
+    let src = format!(
+        "glClearColor(0, 0, 0, 0);
+glClear(GL_COLOR_BUFFER_BIT);
+{}glBindTexture(GL_TEXTURE_2D, 1);
+glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, (GLubyte[]){{191, 191, 191, 191}});
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+glEnable(GL_TEXTURE_2D);
+glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_REPLACE);
+glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_TEXTURE);
+glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_DOT3_RGB);
+glColor4f(1, 1, 1, 0.5f);
+glBegin(GL_QUADS);
+glVertex2f(0, 0); glVertex2f(1, 0); glVertex2f(1, 1); glVertex2f(0, 1);
+glEnd();
+",
+        ortho(1, 1)
+    );
+    let commands = fidelity::parse(&src);
+    for backend in support::HEADLESS {
+        for kind in [PipelineKind::Emulate, PipelineKind::Native] {
+            let ctx = support::context(backend, kind.profile());
+            let t = support::target(&ctx, 1, 1, fixedfunc::gpu::DepthBits::D24, false);
+            let mut p: Box<dyn fixedfunc::pipeline::Pipeline> = match kind {
+                PipelineKind::Emulate => Box::new(
+                    fixedfunc::pipeline::emulate::EmulatedPipeline::new(&ctx)
+                        .unwrap()
+                        .with_precision(Precision::Float),
+                ),
+                PipelineKind::Native => fixedfunc::pipeline::create(kind, &ctx).unwrap(),
+            };
+            p.execute(&ctx, &commands).expect("execute");
+            let err = p.take_gl_error().expect("INVALID_ENUM recorded");
+            assert_eq!(err.kind, GlErrorKind::InvalidEnum, "{backend} {kind:?}");
+            let img = t.read_color(&ctx).unwrap();
+            // RGB: the default COMBINE_RGB MODULATE(TEXTURE, PREVIOUS) = 191 · 1.
+            support::probe(&img, 0, 0, [191, 191, 191, 191], 0);
+            support::assert_no_gl_error(&ctx);
+            p.release(&ctx);
+        }
+    }
+}
