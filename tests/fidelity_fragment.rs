@@ -100,7 +100,12 @@ fn stencil_wrap_saturates_and_wraps() {
         );
         src += &pixel_quad(i as u32, 0, 0.0);
     }
-    for p in compare("stencil-wrap", &src, Frame::new(4, 1).with_stencil(), Tolerance::EXACT) {
+    for p in compare(
+        "stencil-wrap",
+        &src,
+        Frame::new(4, 1).with_stencil(),
+        Tolerance::EXACT,
+    ) {
         for out in [&p.emulate, &p.native] {
             for x in 0..4 {
                 probe_gl(&out.image, x, 0, [128, 128, 128, 255], 0);
@@ -148,7 +153,12 @@ fn depth_readback_ubyte_truncates_ushort_rounds() {
                 .chunks_exact(2)
                 .map(|b| u16::from_le_bytes([b[0], b[1]]))
                 .collect();
-            assert_eq!(v, vec![16384, 32768, 1000, 1001], "{} {path} UNSIGNED_SHORT", p.backend);
+            assert_eq!(
+                v,
+                vec![16384, 32768, 1000, 1001],
+                "{} {path} UNSIGNED_SHORT",
+                p.backend
+            );
         }
     }
 }
@@ -162,7 +172,12 @@ fn polygon_offset_units_decide_coplanar_quads() {
             "glClearColor(0, 0, 0, 1);\nglClearDepth(1);\nglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);\n{}glEnable(GL_DEPTH_TEST);\nglDepthFunc(GL_LESS);\nglEnable(GL_POLYGON_OFFSET_FILL);\nglPolygonOffset(0, 0);\nglColor4f(1, 0, 0, 1);\nglBegin(GL_QUADS);\nglVertex3f(0, 0, 0.3f); glVertex3f(8, 0, 0.3f); glVertex3f(8, 8, 0.3f); glVertex3f(0, 8, 0.3f);\nglEnd();\nglPolygonOffset(0, {units});\nglColor4f(0, 0, 1, 1);\nglBegin(GL_QUADS);\nglVertex3f(0, 0, 0.3f); glVertex3f(8, 0, 0.3f); glVertex3f(8, 8, 0.3f); glVertex3f(0, 8, 0.3f);\nglEnd();\n",
             ortho(8, 8)
         );
-        for p in compare(&format!("offset-units-{units}"), &src, Frame::new(8, 8), Tolerance::EXACT) {
+        for p in compare(
+            &format!("offset-units-{units}"),
+            &src,
+            Frame::new(8, 8),
+            Tolerance::EXACT,
+        ) {
             for out in [&p.emulate, &p.native] {
                 probe_gl(&out.image, 1, 1, expected, 0);
                 probe_gl(&out.image, 6, 6, expected, 0);
@@ -203,7 +218,11 @@ fn polygon_offset_units_within_piglit_mrd_bounds() {
             for (path, b, m) in [("emulate", b_e, m_e), ("native", b_n, m_n)] {
                 let i = 16 * 32 + 16;
                 let d = (f64::from(m[i]) - f64::from(b[i])) * f64::from(units);
-                println!("{path} units {units}: base {} shift {:.3} LSB", b[i], d / mrd);
+                println!(
+                    "{path} units {units}: base {} shift {:.3} LSB",
+                    b[i],
+                    d / mrd
+                );
                 assert!(
                     d >= 0.99 * mrd && d <= 2.0 * mrd,
                     "{path} units {units}: shift {d:e} not in [0.99, 2.0] × MRD {mrd:e}"
@@ -220,7 +239,12 @@ fn polygon_offset_units_within_piglit_mrd_bounds() {
 #[test]
 fn polygon_offset_slope_within_piglit_bounds() {
     let mrd = 1.0 / f64::from((1u32 << 24) - 1);
-    for axis in [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0], [2.0, 1.0, 0.0]] {
+    for axis in [
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [2.0, 1.0, 0.0],
+    ] {
         for angle in [30.0f32, 45.0, 60.0, 80.0] {
             let base = offset_depths(0.0, angle, axis, 0.0, 0.0);
             for factor in [-1.0f32, -2.0] {

@@ -52,7 +52,11 @@ impl Base {
         match self {
             Base::Alpha => ("GL_ALPHA8", "GL_ALPHA", vec![c[3]]),
             Base::Luminance => ("GL_LUMINANCE8", "GL_LUMINANCE", vec![c[0]]),
-            Base::LuminanceAlpha => ("GL_LUMINANCE8_ALPHA8", "GL_LUMINANCE_ALPHA", vec![c[0], c[3]]),
+            Base::LuminanceAlpha => (
+                "GL_LUMINANCE8_ALPHA8",
+                "GL_LUMINANCE_ALPHA",
+                vec![c[0], c[3]],
+            ),
             Base::Intensity => ("GL_INTENSITY8", "GL_LUMINANCE", vec![c[0]]),
             Base::Rgb => ("GL_RGB8", "GL_RGB", c[..3].to_vec()),
             Base::Rgba => ("GL_RGBA8", "GL_RGBA", c.to_vec()),
@@ -178,7 +182,13 @@ fn texture_env_81_colours_by_base_format_and_mode() {
     let cs = colours();
     let grey = f(128);
     for base in Base::ALL {
-        for mode in [Mode::Replace, Mode::Modulate, Mode::Decal, Mode::Blend, Mode::Add] {
+        for mode in [
+            Mode::Replace,
+            Mode::Modulate,
+            Mode::Decal,
+            Mode::Blend,
+            Mode::Add,
+        ] {
             if mode == Mode::Decal && !matches!(base, Base::Rgb | Base::Rgba) {
                 continue;
             }
@@ -217,7 +227,12 @@ fn texture_env_81_colours_by_base_format_and_mode() {
 const FRAG: [f64; 4] = [0.0, 0.25, 0.5, 0.75];
 const ENV: [f64; 4] = [0.25, 0.5, 0.75, 1.0];
 
-const SOURCES: [&str; 4] = ["GL_TEXTURE", "GL_CONSTANT", "GL_PRIMARY_COLOR", "GL_PREVIOUS"];
+const SOURCES: [&str; 4] = [
+    "GL_TEXTURE",
+    "GL_CONSTANT",
+    "GL_PRIMARY_COLOR",
+    "GL_PREVIOUS",
+];
 const RGB_OPS: [&str; 4] = [
     "GL_SRC_COLOR",
     "GL_ONE_MINUS_SRC_COLOR",
@@ -387,7 +402,10 @@ glColor4f(0, 0.25f, 0.5f, 0.75f);
 /// emulate vs native images within 2/255.
 #[test]
 fn combine_modes_sources_operands_and_scales() {
-    for (seed, tex) in [(0x9e37_79b9_u64, [64u8, 128, 191, 255]), (0x1234_5678, [255, 191, 0, 64])] {
+    for (seed, tex) in [
+        (0x9e37_79b9_u64, [64u8, 128, 191, 255]),
+        (0x1234_5678, [255, 191, 0, 64]),
+    ] {
         let states = combine_states(256, seed);
         let texf = tex.map(f);
         let tol = Tolerance {
@@ -402,7 +420,11 @@ fn combine_modes_sources_operands_and_scales() {
                     let tol = if c.rgb >= 6 { 5 } else { TOL8 };
                     let got = out.image.get_pixel(i as u32 % 32, 31 - i as u32 / 32).0;
                     let ok = got.iter().zip(e).all(|(&g, e)| g.abs_diff(e) <= tol);
-                    assert!(ok, "{} {path} state {i} {c:?}: {got:?}, model {e:?} ± {tol}", p.backend);
+                    assert!(
+                        ok,
+                        "{} {path} state {i} {c:?}: {got:?}, model {e:?} ± {tol}",
+                        p.backend
+                    );
                 }
             }
         }

@@ -76,7 +76,13 @@ pub fn run_one(
     commands: &[Command],
 ) -> Output {
     let ctx = support::context(backend, kind.profile());
-    let t = support::target(&ctx, frame.width, frame.height, DepthBits::D24, frame.stencil);
+    let t = support::target(
+        &ctx,
+        frame.width,
+        frame.height,
+        DepthBits::D24,
+        frame.stencil,
+    );
     let mut p: Box<dyn Pipeline> = match kind {
         PipelineKind::Emulate => Box::new(
             EmulatedPipeline::new(&ctx)
@@ -87,7 +93,11 @@ pub fn run_one(
     };
     p.execute(&ctx, commands)
         .unwrap_or_else(|e| panic!("{backend} {kind:?}: {e}"));
-    assert_eq!(p.take_gl_error(), None, "{backend} {kind:?}: model GL error");
+    assert_eq!(
+        p.take_gl_error(),
+        None,
+        "{backend} {kind:?}: model GL error"
+    );
     let mut readbacks = BTreeMap::new();
     for slot in 0..64 {
         if let Some(r) = p.readback(slot) {
@@ -154,7 +164,10 @@ pub fn probe_gl(img: &RgbaImage, x: u32, y: u32, expected: [u8; 4], tol: u8) {
 pub fn probe_rgb(img: &RgbaImage, x: u32, y: u32, expected: [u8; 3], tol: u8) {
     let p = img.get_pixel(x, img.height() - 1 - y).0;
     let ok = (0..3).all(|i| p[i].abs_diff(expected[i]) <= tol);
-    assert!(ok, "pixel ({x},{y}) from bottom is {p:?}, expected rgb {expected:?} ± {tol}");
+    assert!(
+        ok,
+        "pixel ({x},{y}) from bottom is {p:?}, expected rgb {expected:?} ± {tol}"
+    );
 }
 
 /// A value in [0, 1] as an unorm8 byte.
