@@ -12,7 +12,10 @@ use fixedfunc::ff::Precision;
 use fixedfunc::pipeline::PipelineKind;
 use support::Tolerance;
 
-const FUNCS: [(&str, fn(f64, f64) -> bool); 8] = [
+/// A compare function: (r, d) → passes.
+type Compare = fn(f64, f64) -> bool;
+
+const FUNCS: [(&str, Compare); 8] = [
     ("GL_NEVER", |_, _| false),
     ("GL_LESS", |r, d| r < d),
     ("GL_LEQUAL", |r, d| r <= d),
