@@ -268,3 +268,27 @@ fn polygon_offset_slope_within_piglit_bounds() {
         }
     }
 }
+
+/// H7 in D24 steps at the centre pixel: at window z 0.5 exactly (z_eye 0) units −1/+1/+4
+/// shift by −2/+1/+7, at window z 0.49 by −2/+2/+8 (llvmpipe's numbers
+/// as measured for H7). Exact, and emulate must equal native step for step.
+#[test]
+fn polygon_offset_steps_match_mesa_exactly() {
+    let step = |z: f32| (f64::from(z) * f64::from((1u32 << 24) - 1)).round() as i64;
+    for (dz, shifts) in [(0.0f32, [-2i64, 1, 7]), (0.2, [-2, 2, 8])] {
+        let base = offset_depths(dz, 0.0, [1.0, 0.0, 0.0], 0.0, 0.0);
+        for (units, want) in [-1.0f32, 1.0, 4.0].into_iter().zip(shifts) {
+            let moved = offset_depths(dz, 0.0, [1.0, 0.0, 0.0], 0.0, units);
+            for ((b_e, b_n), (m_e, m_n)) in base.iter().zip(&moved) {
+                let i = 16 * 32 + 16;
+                let e = step(m_e[i]) - step(b_e[i]);
+                let n = step(m_n[i]) - step(b_n[i]);
+                assert_eq!(
+                    (e, n),
+                    (want, want),
+                    "z_eye {dz}, units {units}: (emulate, native)"
+                );
+            }
+        }
+    }
+}
