@@ -1,0 +1,256 @@
+//! Depth-texture fidelity: piglit texturing/depth-tex-compare (r from 2.0 to 0.0, clamped to
+//! [0, 1] before the compare, H11) and texturing/texdepth (cells 0, 0.25, 0.5, 1.0 against
+//! r = 0.6/0.2/0.5/0.8 in LUMINANCE, INTENSITY and ALPHA modes, the w = 3.3 homogeneous run,
+//! and the ARB_shadow_ambient fail value 0.4 — asserted on emulate only, Mesa has no
+//! ARB_shadow_ambient). Results are shown with REPLACE and checked per pixel.
+
+mod fidelity;
+mod support;
+
+use fidelity::{compare, ortho, run_one, Frame};
+use fixedfunc::ff::Precision;
+use fixedfunc::pipeline::PipelineKind;
+use support::Tolerance;
+
+/// A compare function: (r, d) → passes.
+type Compare = fn(f64, f64) -> bool;
+
+const FUNCS: [(&str, Compare); 8] = [
+    ("GL_NEVER", |_, _| false),
+    ("GL_LESS", |r, d| r < d),
+    ("GL_LEQUAL", |r, d| r <= d),
+    ("GL_EQUAL", |r, d| r == d),
+    ("GL_GREATER", |r, d| r > d),
+    ("GL_NOTEQUAL", |r, d| r != d),
+    ("GL_GEQUAL", |r, d| r >= d),
+    ("GL_ALWAYS", |_, _| true),
+];
+
+fn depth_texture(w: u32, h: u32, values: &[f32], mode: &str, extra: &str) -> String {
+    let v: Vec<String> = values.iter().map(|x| format!("{x}f")).collect();
+    format!(
+        "glBindTexture(GL_TEXTURE_2D, 1);
+glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, {w}, {h}, 0, GL_DEPTH_COMPONENT, GL_FLOAT, (GLfloat[]){{{}}});
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, {mode});
+{extra}glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+glEnable(GL_TEXTURE_2D);
+glColor4f(1, 1, 1, 1);
+",
+        v.join(", ")
+    )
+}
+
+/// depth-tex-compare: a 2×2 checker of 0.5 / 1.0, REPEAT; one 16×16 quad per function with
+/// s, t from 0 to 2 and r from 2.0 to 0.0 across x. Expected per pixel: compare(min(r, 1),
+/// d) → 255 or 0, exact; pixels with |r − d| < 0.05 (unclamped ties) are left out.
+/// Between paths: exact.
+#[test]
+fn depth_compare_clamps_r_before_comparing() {
+    let mut src = format!(
+        "glClearColor(0, 0, 0, 1);\nglClear(GL_COLOR_BUFFER_BIT);\n{}{}",
+        ortho(128, 16),
+        depth_texture(2, 2, &[0.5, 1.0, 1.0, 0.5], "GL_LUMINANCE", "")
+    );
+    for (i, (func, _)) in FUNCS.iter().enumerate() {
+        let x0 = i * 16;
+        src += &format!(
+            "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, {func});
+glBegin(GL_QUADS);
+glTexCoord3f(0, 0, 2); glVertex2f({x0}, 0);
+glTexCoord3f(2, 0, 0); glVertex2f({}, 0);
+glTexCoord3f(2, 2, 0); glVertex2f({}, 16);
+glTexCoord3f(0, 2, 2); glVertex2f({x0}, 16);
+glEnd();
+",
+            x0 + 16,
+            x0 + 16
+        );
+    }
+    for p in compare(
+        "depth-tex-compare",
+        &src,
+        Frame::new(128, 16),
+        Tolerance::EXACT,
+    ) {
+        for (path, out) in [("emulate", &p.emulate), ("native", &p.native)] {
+            for (i, (func, cmp)) in FUNCS.iter().enumerate() {
+                for px in 0..16u32 {
+                    for py in 0..16u32 {
+                        let s = 2.0 * (f64::from(px) + 0.5) / 16.0;
+                        let t = 2.0 * (f64::from(py) + 0.5) / 16.0;
+                        let r = 2.0 - s;
+                        let cell = ((2.0 * s) as usize + (2.0 * t) as usize) % 2;
+                        let d = [0.5, 1.0][cell];
+                        let rc = r.min(1.0);
+                        if (rc - d).abs() < 0.05 && r <= 1.0 {
+                            continue;
+                        }
+                        let e = if cmp(rc, d) { 255 } else { 0 };
+                        let got = out.image.get_pixel(i as u32 * 16 + px, 15 - py).0;
+                        assert_eq!(
+                            got[0], e,
+                            "{} {path} {func} at ({px},{py}): r {r:.3}, d {d}",
+                            p.backend
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+const TEXDEPTH_R: [f64; 4] = [0.6, 0.2, 0.5, 0.8];
+const TEXDEPTH_D: [f64; 4] = [0.0, 0.25, 0.5, 1.0];
+const MODES: [&str; 3] = ["GL_LUMINANCE", "GL_INTENSITY", "GL_ALPHA"];
+/// texdepth skips EQUAL and NOTEQUAL ("bound to be unreliable due to precision problems").
+const TEXDEPTH_FUNCS: [usize; 6] = [0, 1, 2, 6, 4, 7];
+
+/// texdepth: per mode × function × r, one row of 4 pixels over the texels 0, 0.25, 0.5, 1.0.
+/// `w` multiplies s, t, r and q (the homogeneous run uses 3.3); `fail` is the
+/// COMPARE_FAIL_VALUE_ARB.
+fn texdepth_script(w: f64, fail: Option<f64>) -> String {
+    let extra = fail
+        .map(|v| {
+            format!("glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, {v}f);\n")
+        })
+        .unwrap_or_default();
+    let mut s = format!(
+        "glClearColor(0, 0, 0, 0);\nglClear(GL_COLOR_BUFFER_BIT);\n{}",
+        ortho(4, 72)
+    );
+    let mut row = 0;
+    for (m, mode) in MODES.iter().enumerate() {
+        s += &depth_texture(
+            4,
+            1,
+            &[0.0, 0.25, 0.5, 1.0],
+            mode,
+            if m == 0 { &extra } else { "" },
+        );
+        for f in TEXDEPTH_FUNCS {
+            s += &format!(
+                "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, {});\n",
+                FUNCS[f].0
+            );
+            for r in TEXDEPTH_R {
+                let (s0, s1, t, rr) = (0.0, w, 0.5 * w, r * w);
+                s += &format!(
+                    "glBegin(GL_QUADS);
+glTexCoord4f({s0}f, {t}f, {rr}f, {w}f); glVertex2f(0, {row});
+glTexCoord4f({s1}f, {t}f, {rr}f, {w}f); glVertex2f(4, {row});
+glTexCoord4f({s1}f, {t}f, {rr}f, {w}f); glVertex2f(4, {});
+glTexCoord4f({s0}f, {t}f, {rr}f, {w}f); glVertex2f(0, {});
+glEnd();
+",
+                    row + 1,
+                    row + 1
+                );
+                row += 1;
+            }
+        }
+    }
+    s
+}
+
+/// The expected texdepth image: REPLACE of a depth texture in `mode` with result L
+/// (1 on pass, `fail` otherwise): LUMINANCE (L, L, L, 1); INTENSITY (L, L, L, L);
+/// ALPHA (1, 1, 1, L) (white fragment colour).
+fn texdepth_check(name: &str, img: &image::RgbaImage, fail: f64) {
+    let mut row = 0u32;
+    for mode in MODES {
+        for f in TEXDEPTH_FUNCS {
+            for r in TEXDEPTH_R {
+                for (x, d) in TEXDEPTH_D.iter().enumerate() {
+                    let l = if FUNCS[f].1(r, *d) { 1.0 } else { fail };
+                    let l8 = fidelity::unorm8(l);
+                    let e = match mode {
+                        "GL_LUMINANCE" => [l8, l8, l8, 255],
+                        "GL_INTENSITY" => [l8; 4],
+                        _ => [255, 255, 255, l8],
+                    };
+                    let got = img.get_pixel(x as u32, 71 - row).0;
+                    let ok = got.iter().zip(e).all(|(&g, e)| g.abs_diff(e) <= 1);
+                    assert!(
+                        ok,
+                        "{name} {mode} {} r {r} d {d}: {got:?}, expected {e:?} ± 1",
+                        FUNCS[f].0
+                    );
+                }
+                row += 1;
+            }
+        }
+    }
+}
+
+/// texdepth, plain (w = 1) and homogeneous (w = 3.3, so s, t and r are divided by q):
+/// every cell against the compare result, tol 1/255; paths exact against each other.
+#[test]
+fn texdepth_functions_modes_and_homogeneous_run() {
+    for w in [1.0, 3.3] {
+        let name = format!("texdepth-w{w}");
+        for p in compare(
+            &name,
+            &texdepth_script(w, None),
+            Frame::new(4, 72),
+            Tolerance::EXACT,
+        ) {
+            texdepth_check(
+                &format!("{name} {} emulate", p.backend),
+                &p.emulate.image,
+                0.0,
+            );
+            texdepth_check(
+                &format!("{name} {} native", p.backend),
+                &p.native.image,
+                0.0,
+            );
+        }
+    }
+}
+
+/// texdepth's ambient run: COMPARE_FAIL_VALUE_ARB 0.4, so a failed compare gives 0.4 (102)
+/// instead of 0. Emulate only, against the ARB_shadow_ambient spec value (Mesa's native
+/// path has no ARB_shadow_ambient); tol 1/255. The only test of the suite without an
+/// oracle: the number is the spec's.
+#[test]
+fn texdepth_fail_value_on_emulate() {
+    let commands = fidelity::parse(&texdepth_script(1.0, Some(0.4)));
+    for backend in support::HEADLESS {
+        let frame = Frame::new(4, 72);
+        let out = run_one(
+            PipelineKind::Emulate,
+            Precision::Float,
+            backend,
+            frame,
+            &commands,
+        );
+        // Only the LUMINANCE block carries the fail value (it is set on that texture).
+        texdepth_check_luminance_fail(&format!("ambient {backend}"), &out.image);
+    }
+}
+
+/// The LUMINANCE rows (the bottom 24) of the ambient run: pass 255, fail 102.
+fn texdepth_check_luminance_fail(name: &str, img: &image::RgbaImage) {
+    let mut row = 0u32;
+    for f in TEXDEPTH_FUNCS {
+        for r in TEXDEPTH_R {
+            for (x, d) in TEXDEPTH_D.iter().enumerate() {
+                let l8 = if FUNCS[f].1(r, *d) { 255 } else { 102 };
+                let got = img.get_pixel(x as u32, 71 - row).0;
+                let e = [l8, l8, l8, 255];
+                let ok = got.iter().zip(e).all(|(&g, e)| g.abs_diff(e) <= 1);
+                assert!(
+                    ok,
+                    "{name} {} r {r} d {d}: {got:?}, expected {e:?} ± 1",
+                    FUNCS[f].0
+                );
+            }
+            row += 1;
+        }
+    }
+}

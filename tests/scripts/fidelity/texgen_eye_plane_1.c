@@ -1,0 +1,25 @@
+/* piglit general/texgen, quad 1: planes set with an identity modelview; s = x + 0.25. */
+glClearColor(0, 0, 0, 1);
+glClear(GL_COLOR_BUFFER_BIT);
+glMatrixMode(GL_PROJECTION);
+glLoadIdentity();
+glOrtho(0, 1, 0, 1, -1, 1);
+glMatrixMode(GL_MODELVIEW);
+glLoadIdentity();
+glBindTexture(GL_TEXTURE_2D, 1);
+glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, (GLubyte[]){0,0,0,64,0,0,128,0,0,191,0,0,0,64,0,64,64,0,128,64,0,191,64,0,0,128,0,64,128,0,128,128,0,191,128,0,0,191,0,64,191,0,128,191,0,191,191,0});
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP);
+glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+glEnable(GL_TEXTURE_2D);
+glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+glEnable(GL_TEXTURE_GEN_S);
+glEnable(GL_TEXTURE_GEN_T);
+glTexGenfv(GL_S, GL_EYE_PLANE, (GLfloat[]){1, 0, 0, 0.25f});
+glTexGenfv(GL_T, GL_EYE_PLANE, (GLfloat[]){0, 1, 0, 0.25f});
+glBegin(GL_QUADS);
+glVertex2f(0, 0); glVertex2f(0.75, 0); glVertex2f(0.75, 0.75); glVertex2f(0, 0.75);
+glEnd();
