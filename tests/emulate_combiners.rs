@@ -8,13 +8,13 @@ mod support;
 use std::sync::Arc;
 
 use fixedfunc::ff::combiner_model::{evaluate, CombinerInputs};
-use fixedfunc::ff::Precision;
 use fixedfunc::ff::{
     Capability, CombinerBias, CombinerInput, CombinerOutput, CombinerParam, CombinerScale, Command,
     ComponentUsage, Filter, FinalVariable, FixedState, Geometry, Mapping, PixelFormat, PixelType,
     Portion, Primitive, Product, Register, SumOrMux, TexFormat, TexImage, TexParam, TextureTarget,
     Variable, MAX_TEXTURE_UNITS,
 };
+use fixedfunc::ff::{Precision, TexData};
 use fixedfunc::gpu::{DepthBits, Profile};
 use fixedfunc::pipeline::emulate::EmulatedPipeline;
 use fixedfunc::pipeline::Pipeline;
@@ -60,7 +60,7 @@ fn texture(unit: u8, texel: [u8; 4]) -> Vec<Command> {
             border: 0,
             format: PixelFormat::Rgba,
             ty: PixelType::UnsignedByte,
-            data: Some(Arc::from(&texel[..])),
+            data: TexData::Bytes(Arc::from(&texel[..])),
         }),
         Command::TexParameter {
             target: TextureTarget::Texture2D,

@@ -12,7 +12,7 @@ use fixedfunc::ff::{
     ReadPixels, StencilOp, TexCoord, TexEnvMode, TexEnvParam, TexFormat, TexGenMode, TexGenParam,
     TexImage, TexParam, TextureTarget, ViewVolume, Wrap,
 };
-use fixedfunc::ff::{Command, LightParam, MatrixMode, Viewport};
+use fixedfunc::ff::{Command, LightParam, MatrixMode, TexData, Viewport};
 use fixedfunc::gpu::{Backend, DepthBits, GpuContext, Profile, RenderTarget};
 use fixedfunc::pipeline::native::{bindings as gl, NativeGl, NativePipeline};
 use fixedfunc::pipeline::{Pipeline, PipelineError};
@@ -86,7 +86,7 @@ fn rgba_texture(name: u32, w: i32, h: i32, texels: Vec<u8>) -> Vec<Command> {
             border: 0,
             format: PixelFormat::Rgba,
             ty: PixelType::UnsignedByte,
-            data: Some(Arc::from(texels)),
+            data: TexData::Bytes(Arc::from(texels)),
         }),
         tex_param(TexParam::MinFilter(Filter::Nearest)),
         tex_param(TexParam::MagFilter(Filter::Nearest)),

@@ -9,8 +9,8 @@ use std::sync::Arc;
 
 use fixedfunc::ff::{
     Capability, ClearMask, Command, CompareFunc, CompareMode, DepthTextureMode, Filter, Geometry,
-    MatrixMode, PixelFormat, PixelType, Primitive, TexEnvMode, TexEnvParam, TexFormat, TexImage,
-    TexParam, TextureTarget, ViewVolume, Wrap,
+    MatrixMode, PixelFormat, PixelType, Primitive, TexData, TexEnvMode, TexEnvParam, TexFormat,
+    TexImage, TexParam, TextureTarget, ViewVolume, Wrap,
 };
 use fixedfunc::gpu::{DepthBits, Profile};
 use fixedfunc::pipeline::native::NativePipeline;
@@ -79,7 +79,7 @@ fn texture(
             border: 0,
             format,
             ty,
-            data: Some(Arc::from(bytes)),
+            data: TexData::Bytes(Arc::from(bytes)),
         }),
         param(TexParam::MinFilter(Filter::Nearest)),
         param(TexParam::MagFilter(Filter::Nearest)),

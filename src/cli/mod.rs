@@ -6,6 +6,7 @@ mod bench;
 mod error;
 mod info;
 mod render;
+mod shadow_args;
 mod replay;
 mod scene_arg;
 mod script_io;
@@ -20,7 +21,7 @@ use clap::{Parser, Subcommand};
 use fixedfunc::bench::BenchGroup;
 use fixedfunc::gpu::Backend;
 use fixedfunc::pipeline::PipelineKind;
-use fixedfunc::render::ImageSize;
+use fixedfunc::render::{ImageSize, RemakeMaps};
 use fixedfunc::scene::KNOWN_TECHNIQUES;
 
 /// An emulator of the OpenGL 1.x fixed-function pipeline for the classic shadow techniques.
@@ -58,6 +59,15 @@ enum Command {
         /// Frames rendered and timed; the figure is the median of frames 2…N.
         #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=100_000))]
         frames: u32,
+        #[command(flatten)]
+        shadow: shadow_args::ShadowArgs,
+        /// When shadow maps are made again after the first frame.
+        #[arg(long, value_enum, default_value_t = RemakeMaps::WhenMoved)]
+        remake_maps: RemakeMaps,
+        /// Also write the light's map (PNG; for multidigit16 the two digits, as
+        /// NAME-big-digit.png and NAME-little-digit.png).
+        #[arg(long, value_name = "FILE")]
+        depth_map: Option<PathBuf>,
     },
     /// The CPU ground truth of a scene (no GL): shadow mask and soft-shadow visibility.
     Truth {
@@ -156,6 +166,9 @@ pub fn run() -> ExitCode {
             out,
             mask,
             frames,
+            shadow,
+            remake_maps,
+            depth_map,
         } => render::run(render::Args {
             scene,
             technique,
@@ -165,6 +178,9 @@ pub fn run() -> ExitCode {
             out,
             mask,
             frames,
+            shadow,
+            remake_maps,
+            depth_map,
         }),
         Command::Truth {
             scene,

@@ -7,10 +7,18 @@ use std::time::Duration;
 
 use fixedfunc::gpu::Backend;
 use fixedfunc::pipeline::PipelineKind;
-use fixedfunc::render::{self, ImageSize, Progress, RenderOptions};
+use fixedfunc::render::{self, ImageSize, Progress, RemakeMaps, RenderOptions};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use super::error::CliError;
+use super::shadow_args::ShadowArgs;
+
+/// `dir/map.png` + `big-digit` → `dir/map-big-digit.png`.
+fn map_file(path: &std::path::Path, label: &str) -> PathBuf {
+    let stem = path.file_stem().map_or("map".into(), |s| s.to_string_lossy());
+    let ext = path.extension().map_or("png".into(), |e| e.to_string_lossy());
+    path.with_file_name(format!("{stem}-{label}.{ext}"))
+}
 use super::scene_arg;
 
 pub struct Args {
@@ -22,16 +30,22 @@ pub struct Args {
     pub out: PathBuf,
     pub mask: PathBuf,
     pub frames: u32,
+    pub shadow: ShadowArgs,
+    pub remake_maps: RemakeMaps,
+    pub depth_map: Option<PathBuf>,
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
-    let scene = scene_arg::load(args.scene.as_deref())?;
+    let mut scene = scene_arg::load(args.scene.as_deref())?;
+    args.shadow.apply(&mut scene);
     let options = RenderOptions {
         backend: args.backend,
         pipeline: args.pipeline,
         technique: args.technique,
         size: args.size,
         frames: args.frames,
+        remake_maps: args.remake_maps,
+        depth_map: args.depth_map.is_some(),
         ..RenderOptions::default()
     };
     let bar = ProgressBar::hidden();
@@ -62,7 +76,24 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let outcome = outcome?;
     scene_arg::save(&outcome.image, &args.out)?;
     scene_arg::save(&outcome.mask.to_image(), &args.mask)?;
+    if let Some(path) = &args.depth_map {
+        for (label, picture) in &outcome.map_images {
+            let file = if outcome.map_images.len() == 1 {
+                path.clone()
+            } else {
+                map_file(path, label)
+            };
+            scene_arg::save(picture, &file)?;
+            println!("light's map ({label}) {}", file.display());
+        }
+        if outcome.map_images.is_empty() {
+            println!("`{}` makes no light's map: --depth-map ignored", outcome.technique);
+        }
+    }
     println!("{}", outcome.figures());
+    for note in &outcome.notes {
+        println!("note: {note}");
+    }
     println!(
         "image {} · mask {} · {}x{} via {}",
         args.out.display(),

@@ -25,7 +25,7 @@ pub fn distinct_keys(commands: &[Command]) -> Vec<ShaderKey> {
     keys
 }
 
-/// One frame of a scene's technique, as Commands.
+/// The setup and one frame (maps included) of a scene's technique, as Commands.
 fn scene_frame(
     scene: Option<&Path>,
     technique: Option<&str>,
@@ -38,7 +38,8 @@ fn scene_frame(
     let prepared = fixedfunc::techniques::Prepared::new(&scene_value);
     let plan = (t.plan)(&scene_value, &prepared).map_err(fixedfunc::render::RenderError::from)?;
     let label = format!("{} ({name})", super::scene_arg::name(scene));
-    Ok((label, plan.frame_commands().cloned().collect()))
+    let commands = plan.setup.iter().chain(plan.frame_commands()).cloned();
+    Ok((label, commands.collect()))
 }
 
 pub fn run(

@@ -314,7 +314,7 @@ impl FixedState {
             return Err(GlError::invalid_value("TexImage1D has height 1"));
         }
         check_format_pair(t.internal_format, t.format)?;
-        if let Some(d) = &t.data {
+        if let Some(d) = t.data.bytes() {
             if d.len() != image_size(t.format, t.ty, t.width, t.height) {
                 return Err(GlError::invalid_value(
                     "pixel data length differs from width·height·components·size",
@@ -325,10 +325,10 @@ impl FixedState {
             internal_format: t.internal_format,
             width: t.width,
             height: t.height,
-            data: t.data.clone().map(|bytes| PixelData {
+            data: t.data.bytes().map(|bytes| PixelData {
                 format: t.format,
                 ty: t.ty,
-                bytes,
+                bytes: bytes.clone(),
             }),
         };
         self.bound_mut(t.target)?.set_level(t.level, level);

@@ -65,8 +65,38 @@ pub struct TexImage {
     pub border: i32,
     pub format: PixelFormat,
     pub ty: PixelType,
-    /// Tightly packed rows, bottom row first; `None` = NULL (storage only).
-    pub data: Option<Arc<[u8]>>,
+    pub data: TexData,
+}
+
+/// The client memory a glTexImage call reads: tightly packed rows, bottom row first.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TexData {
+    /// NULL: storage only, texels undefined.
+    Null,
+    /// Bytes given with the command.
+    Bytes(Arc<[u8]>),
+    /// The bytes an earlier `ReadPixels` left in this readback slot — the era's
+    /// glReadPixels(…, buf); glTexImage2D(…, buf) round trip through client memory. The
+    /// pipeline that executes the command substitutes the slot's bytes before anything
+    /// else sees it (a missing slot stops execution); the state model alone, which has no
+    /// readbacks, records the level with unknown texels.
+    Readback(u32),
+}
+
+impl TexData {
+    /// The bytes, when the command carries them.
+    pub fn bytes(&self) -> Option<&Arc<[u8]>> {
+        match self {
+            TexData::Bytes(b) => Some(b),
+            TexData::Null | TexData::Readback(_) => None,
+        }
+    }
+}
+
+impl From<Vec<u8>> for TexData {
+    fn from(bytes: Vec<u8>) -> Self {
+        TexData::Bytes(Arc::from(bytes))
+    }
 }
 
 /// glTexSubImage2D (target TEXTURE_2D).

@@ -195,6 +195,13 @@ impl ColorMask {
         b: true,
         a: true,
     };
+    /// Every channel write-protected (a depth- or stencil-only pass).
+    pub const NONE: Self = Self {
+        r: false,
+        g: false,
+        b: false,
+        a: false,
+    };
 }
 
 /// glPolygonOffset: o = m·factor + r·units, m = max(|∂z/∂x|, |∂z/∂y|) on llvmpipe (the spec

@@ -273,7 +273,7 @@ fn texture_table() {
         border: 0,
         format: PixelFormat::Rgba,
         ty: PixelType::UnsignedByte,
-        data: Some((0u8..16).collect::<Vec<_>>().into()),
+        data: (0u8..16).collect::<Vec<_>>().into(),
     };
     let mut s = run(&[
         Command::BindTexture {
@@ -312,7 +312,7 @@ fn texture_table() {
     assert_eq!(e.kind, GlErrorKind::InvalidOperation);
     // Wrong data length, depth/colour mismatch.
     let short = TexImage {
-        data: Some(vec![0u8; 3].into()),
+        data: vec![0u8; 3].into(),
         ..img.clone()
     };
     assert_eq!(

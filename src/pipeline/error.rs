@@ -44,6 +44,9 @@ pub enum PipelineError {
         what: &'static str,
         path: &'static str,
     },
+    /// glTexImage named a readback buffer no ReadPixels has filled.
+    #[error("glTexImage reads readback_{slot}, which no glReadPixels has filled")]
+    MissingReadback { slot: u32 },
     /// A GL object could not be created.
     #[error("GL object creation failed: {0}")]
     Object(String),

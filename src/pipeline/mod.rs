@@ -11,9 +11,12 @@ pub mod emulate;
 pub mod error;
 pub mod native;
 
+use std::borrow::Cow;
+use std::collections::HashMap;
+
 use serde::Serialize;
 
-use crate::ff::{Command, FixedState, GlError, PixelFormat, PixelType};
+use crate::ff::{Command, FixedState, GlError, PixelFormat, PixelType, TexData, TexImage};
 use crate::gpu::GpuContext;
 
 pub use error::{PipelineError, ShaderError, ShaderStage};
@@ -46,6 +49,21 @@ pub fn create(kind: PipelineKind, ctx: &GpuContext) -> Result<Box<dyn Pipeline>,
     }
 }
 
+/// [`create`] with the emulated path computing in `precision` (the native path has only
+/// the driver's own arithmetic and ignores it).
+pub fn create_with(
+    kind: PipelineKind,
+    ctx: &GpuContext,
+    precision: crate::ff::Precision,
+) -> Result<Box<dyn Pipeline>, PipelineError> {
+    match kind {
+        PipelineKind::Emulate => Ok(Box::new(
+            emulate::EmulatedPipeline::new(ctx)?.with_precision(precision),
+        )),
+        PipelineKind::Native => Ok(Box::new(native::NativePipeline::new(ctx)?)),
+    }
+}
+
 /// The bytes one `ReadPixels` produced, packed with PACK_ALIGNMENT 1, bottom row first.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Readback {
@@ -54,6 +72,32 @@ pub struct Readback {
     pub format: PixelFormat,
     pub ty: PixelType,
     pub bytes: Vec<u8>,
+}
+
+/// `cmd` with a `TexData::Readback` replaced by the bytes of its slot (what the era's
+/// program passed to glTexImage2D was the buffer glReadPixels had filled). Every other
+/// command is returned as it is, without a copy.
+pub(crate) fn resolve_readback<'c>(
+    cmd: &'c Command,
+    readbacks: &HashMap<u32, Readback>,
+) -> Result<Cow<'c, Command>, PipelineError> {
+    match cmd {
+        Command::TexImage(
+            t @ TexImage {
+                data: TexData::Readback(slot),
+                ..
+            },
+        ) => {
+            let r = readbacks
+                .get(slot)
+                .ok_or(PipelineError::MissingReadback { slot: *slot })?;
+            Ok(Cow::Owned(Command::TexImage(TexImage {
+                data: TexData::Bytes(r.bytes.as_slice().into()),
+                ..t.clone()
+            })))
+        }
+        _ => Ok(Cow::Borrowed(cmd)),
+    }
 }
 
 /// What a path did, for reports and for tests that assert "only what the scene asks for".

@@ -25,6 +25,8 @@ pub struct Figures {
     pub timings: FrameTimings,
     pub passes: usize,
     pub programs: u64,
+    /// Times the map passes ran.
+    pub maps_made: u32,
 }
 
 impl fmt::Display for Figures {
@@ -55,7 +57,16 @@ impl fmt::Display for Figures {
             if self.passes == 1 { "" } else { "es" },
             self.programs,
             plural(self.programs)
-        )
+        )?;
+        if self.maps_made > 0 {
+            write!(
+                f,
+                " · {} map{} made",
+                self.maps_made,
+                plural(u64::from(self.maps_made))
+            )?;
+        }
+        Ok(())
     }
 }
 
@@ -74,6 +85,7 @@ mod tests {
             timings: FrameTimings::new(40.0, steady),
             passes: 1,
             programs: 2,
+            maps_made: 0,
         }
     }
 

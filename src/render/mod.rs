@@ -6,14 +6,23 @@
 //! 2. prepares the geometry once (`techniques::Prepared`) and builds the technique's plan
 //!    once;
 //! 3. creates a context of the pipeline's profile on the backend (a private Xvfb for the
-//!    window backend when no display is set), a target of the image size (RGBA8, D24 + 8
-//!    stencil) and the pipeline (`pipeline::create`, the only code naming a concrete path);
-//! 4. runs the plan's passes `frames` times; each frame is timed from its first command to
-//!    glFinish returning, so the driver's work is inside the figure. Frame 1 is *cold*
-//!    (programs compiled, buffers uploaded); frames 2…N are *steady*;
-//! 5. executes the mask plan, decodes the mask, reads the colour image, takes the counters;
+//!    window backend when no display is set), the framebuffer the plan asks for (RGBA8, the
+//!    light's depth bits, stencil when a technique uses it; large enough for the image and
+//!    the light's map, which share it as on the era's hardware) and the pipeline
+//!    (`pipeline::create`, the only code naming a concrete path), then executes the plan's
+//!    setup once;
+//! 4. runs `frames` frames; each frame is timed from its first command to glFinish
+//!    returning, so the driver's work is inside the figure. Frame 1 is *cold* (programs
+//!    compiled, buffers uploaded, maps made); frames 2…N are *steady*. The map passes run
+//!    on frame 1 and then only when the maps are stale ([`RemakeMaps`]);
+//! 5. executes the mask plan, decodes the mask, reads the colour image (the image's corner
+//!    of the framebuffer), takes the counters, and reads the light's map when asked;
 //! 6. ray-casts the truth (CPU) and compares the mask with it (`metrics::compare` with an
 //!    edge band of `band` pixels).
+//!
+//! The steps are a [`Session`], so that a caller can hold several renders open and
+//! interleave their frames (machine noise then hits all of them alike); [`render`] is one
+//! session from start to end.
 //!
 //! A command the GL model rejects is a bug in the technique, not a driver problem: the
 //! frame stops with [`RenderError::Gl`] naming the pass.
@@ -31,13 +40,14 @@ use image::RgbaImage;
 use crate::bench::Summary;
 use crate::ff::GlError;
 use crate::gpu::{
-    Backend, ContextRequest, DepthBits, GpuContext, GpuError, RenderTarget, TargetSpec,
+    Backend, ContextRequest, GpuContext, GpuError, RenderTarget, TargetSpec,
     VirtualDisplay,
 };
 use crate::metrics::{self, Mask, Metrics, MetricsError};
+use crate::ff::{Command, Precision};
 use crate::pipeline::{Counters, Pipeline, PipelineError, PipelineKind};
 use crate::scene::Scene;
-use crate::techniques::{self, Plan, Prepared, TechniqueError};
+use crate::techniques::{self, MapImageSource, Plan, Prepared, TechniqueError};
 use crate::truth::{self, Truth, TruthError, TruthOptions};
 
 /// Failures of the render layer.
@@ -59,6 +69,10 @@ pub enum RenderError {
     Truth(#[from] TruthError),
     #[error(transparent)]
     Metrics(#[from] MetricsError),
+    #[error("the light's map is {size}² texels; at most {max}² fit a framebuffer")]
+    MapTooLarge { size: u32, max: u32 },
+    #[error("the depth-map readback is missing or malformed (slot {slot})")]
+    MapImage { slot: u32 },
     #[error("image size `{text}`: {problem}")]
     Size { text: String, problem: SizeProblem },
 }
@@ -86,6 +100,26 @@ pub struct RenderOptions {
     pub truth: TruthOptions,
     /// Half-width k of the edge band the metrics exclude in `outside_band`.
     pub band: u32,
+    /// When the map passes run again after frame 1.
+    pub remake_maps: RemakeMaps,
+    /// Time every pass on its own (a glFinish after each; the frame time includes them).
+    pub pass_times: bool,
+    /// Read the light's map after the frames (`render --depth-map`).
+    pub depth_map: bool,
+    /// Arithmetic of the emulated pipeline's stages (the scene's `precision` when `None`).
+    pub precision: Option<Precision>,
+}
+
+/// When a technique's maps are made again.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum RemakeMaps {
+    /// Only when the light or a caster moved since the maps were made: scenes are static,
+    /// so once, on the first frame.
+    #[default]
+    WhenMoved,
+    /// Every frame, as the era's demos did.
+    Always,
 }
 
 impl Default for RenderOptions {
@@ -98,6 +132,10 @@ impl Default for RenderOptions {
             frames: 1,
             truth: TruthOptions::default(),
             band: 1,
+            remake_maps: RemakeMaps::WhenMoved,
+            pass_times: false,
+            depth_map: false,
+            precision: None,
         }
     }
 }
@@ -156,10 +194,27 @@ pub struct RenderOutcome {
     pub truth: Truth,
     pub metrics: Metrics,
     pub timings: FrameTimings,
-    /// Passes per frame.
+    /// Passes in a frame that makes its maps.
     pub passes: usize,
     /// The pipeline's counters after every frame and the mask readback.
     pub counters: Counters,
+    /// How many times the map passes ran.
+    pub maps_made: u32,
+    /// Per pass (in plan order), the times of the frames it ran in, when asked for.
+    pub pass_times: Vec<PassTime>,
+    /// The light's map as pictures (label, image), when asked for.
+    pub map_images: Vec<(String, RgbaImage)>,
+    /// What the technique says about this scene (known failure modes it triggers).
+    pub notes: Vec<String>,
+}
+
+/// One pass's times.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PassTime {
+    pub name: &'static str,
+    /// Whether it is a map pass (runs only when the maps are made).
+    pub map: bool,
+    pub ms: Vec<f64>,
 }
 
 impl RenderOutcome {
@@ -175,6 +230,7 @@ impl RenderOutcome {
             timings: self.timings.clone(),
             passes: self.passes,
             programs: self.counters.programs_compiled,
+            maps_made: self.maps_made,
         }
     }
 }
@@ -203,98 +259,305 @@ pub fn render_with_progress(
     options: &RenderOptions,
     mut progress: impl FnMut(Progress),
 ) -> Result<RenderOutcome, RenderError> {
-    let scene = apply_overrides(scene, options.size, options.technique.as_deref());
-    let technique = techniques::lookup(&scene.shadow.technique)?;
-    let prepared = Prepared::new(&scene);
-    let plan = (technique.plan)(&scene, &prepared)?;
-
-    let _display = match options.backend {
-        Backend::Window => VirtualDisplay::start_if_needed()?,
-        Backend::Egl | Backend::OsMesa => None,
-    };
-    let ctx = GpuContext::new(&ContextRequest::new(
-        options.backend,
-        options.pipeline.profile(),
-    ))?;
-    let (width, height) = (scene.image.width, scene.image.height);
-    let target = RenderTarget::new(
-        &ctx,
-        TargetSpec::new(width, height, DepthBits::D24).with_stencil(),
-    )?;
-    let mut pipeline = crate::pipeline::create(options.pipeline, &ctx)?;
-    let gpu = run_gpu(
-        &ctx,
-        &target,
-        pipeline.as_mut(),
-        &plan,
-        options,
-        &mut progress,
-    );
-    pipeline.release(&ctx);
-    target.delete(&ctx);
-    let (image, mask, timings, counters) = gpu?;
-
+    let mut session = Session::new(scene, options)?;
+    let total = options.frames.max(1);
+    for done in 1..=total {
+        session.frame()?;
+        progress(Progress::Frame { done, total });
+    }
     progress(Progress::Truth);
-    let truth = truth::truth(&scene, &options.truth)?;
-    let metrics = metrics::compare(&mask, &truth.mask, options.band)?;
-    Ok(RenderOutcome {
-        technique: technique.name,
-        pipeline: options.pipeline,
-        backend: options.backend,
-        context_path: ctx.path().to_string(),
-        image,
-        mask,
-        truth,
-        metrics,
-        timings,
-        passes: plan.passes.len(),
-        counters,
+    session.finish(None)
+}
+
+/// One render held open: context, framebuffer, pipeline and plan, frames on demand.
+pub struct Session {
+    scene: Scene,
+    technique: &'static str,
+    plan: Plan,
+    options: RenderOptions,
+    // Dropped in this order: the pipeline and target are released explicitly first.
+    pipeline: Box<dyn Pipeline>,
+    target: Option<RenderTarget>,
+    ctx: GpuContext,
+    _display: Option<VirtualDisplay>,
+    frames_ms: Vec<f64>,
+    pass_ms: Vec<Vec<f64>>,
+    maps_made: u32,
+    released: bool,
+}
+
+impl Drop for Session {
+    fn drop(&mut self) {
+        self.release();
+    }
+}
+
+impl Session {
+    /// Plans the technique, creates the context, framebuffer and pipeline, and executes
+    /// the plan's setup.
+    pub fn new(scene: &Scene, options: &RenderOptions) -> Result<Session, RenderError> {
+        let scene = apply_overrides(scene, options.size, options.technique.as_deref());
+        let technique = techniques::lookup(&scene.shadow.technique)?;
+        let prepared = Prepared::new(&scene);
+        let plan = (technique.plan)(&scene, &prepared)?;
+        let fb = plan.framebuffer;
+        if fb.width > MAX_IMAGE_SIZE || fb.height > MAX_IMAGE_SIZE {
+            return Err(RenderError::MapTooLarge {
+                size: scene.shadow.map_size,
+                max: MAX_IMAGE_SIZE,
+            });
+        }
+        let display = match options.backend {
+            Backend::Window => VirtualDisplay::start_if_needed()?,
+            Backend::Egl | Backend::OsMesa => None,
+        };
+        let ctx = GpuContext::new(&ContextRequest::new(
+            options.backend,
+            options.pipeline.profile(),
+        ))?;
+        let mut spec = TargetSpec::new(fb.width, fb.height, fb.depth);
+        if fb.stencil {
+            spec = spec.with_stencil();
+        }
+        let target = RenderTarget::new(&ctx, spec)?;
+        let precision = options.precision.unwrap_or(scene.shadow.precision);
+        let mut pipeline = crate::pipeline::create_with(options.pipeline, &ctx, precision)?;
+        target.bind(&ctx);
+        let setup = run(pipeline.as_mut(), &ctx, "setup", 0, &plan.setup);
+        let pass_ms = vec![Vec::new(); plan.pass_count()];
+        let mut session = Session {
+            scene,
+            technique: technique.name,
+            plan,
+            options: options.clone(),
+            pipeline,
+            target: Some(target),
+            ctx,
+            _display: display,
+            frames_ms: Vec::new(),
+            pass_ms,
+            maps_made: 0,
+            released: false,
+        };
+        if let Err(e) = setup {
+            session.release();
+            return Err(e);
+        }
+        Ok(session)
+    }
+
+    /// The scene as rendered (overrides applied).
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// The technique's name.
+    pub fn technique(&self) -> &'static str {
+        self.technique
+    }
+
+    /// Renders one frame and returns its time in milliseconds.
+    pub fn frame(&mut self) -> Result<f64, RenderError> {
+        self.ctx.make_current()?;
+        if let Some(t) = &self.target {
+            t.bind(&self.ctx);
+        }
+        let n = self.frames_ms.len() as u32 + 1;
+        let make_maps = self.maps_made == 0 || self.options.remake_maps == RemakeMaps::Always;
+        let start = Instant::now();
+        let maps = self.plan.maps.len();
+        for (i, pass) in self.plan.maps.iter().chain(&self.plan.passes).enumerate() {
+            if i < maps && !make_maps {
+                continue;
+            }
+            let pass_start = Instant::now();
+            run(self.pipeline.as_mut(), &self.ctx, pass.name, n, &pass.commands)?;
+            if self.options.pass_times {
+                self.ctx.finish();
+                self.pass_ms[i].push(pass_start.elapsed().as_secs_f64() * 1e3);
+            }
+        }
+        self.ctx.finish();
+        let ms = start.elapsed().as_secs_f64() * 1e3;
+        if make_maps && maps > 0 {
+            self.maps_made += 1;
+        }
+        self.frames_ms.push(ms);
+        Ok(ms)
+    }
+
+    /// Executes the mask plan, reads the image (and the map when asked), releases the GL
+    /// objects, and judges the mask against `truth` (ray-cast now when `None`).
+    pub fn finish(mut self, truth: Option<&Truth>) -> Result<RenderOutcome, RenderError> {
+        let gpu = self.read_results();
+        self.release();
+        let (image, mask, map_images) = gpu?;
+        let truth = match truth {
+            Some(t) => t.clone(),
+            None => truth::truth(&self.scene, &self.options.truth)?,
+        };
+        let metrics = metrics::compare(&mask, &truth.mask, self.options.band)?;
+        let cold_ms = self.frames_ms.first().copied().unwrap_or(0.0);
+        let steady = self.frames_ms.get(1..).unwrap_or(&[]).to_vec();
+        let names = self
+            .plan
+            .maps
+            .iter()
+            .map(|p| (p.name, true))
+            .chain(self.plan.passes.iter().map(|p| (p.name, false)));
+        let pass_times = if self.options.pass_times {
+            names
+                .zip(&self.pass_ms)
+                .map(|((name, map), ms)| PassTime {
+                    name,
+                    map,
+                    ms: ms.clone(),
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Ok(RenderOutcome {
+            technique: self.technique,
+            pipeline: self.options.pipeline,
+            backend: self.options.backend,
+            context_path: self.ctx.path().to_string(),
+            image,
+            mask,
+            truth,
+            metrics,
+            timings: FrameTimings::new(cold_ms, steady),
+            passes: self.plan.pass_count(),
+            counters: self.pipeline.counters(),
+            maps_made: self.maps_made,
+            pass_times,
+            map_images,
+            notes: self.plan.notes.clone(),
+        })
+    }
+
+    fn read_results(&mut self) -> Result<GpuResults, RenderError> {
+        self.ctx.make_current()?;
+        let target = self.target.as_ref().expect("target lives until release");
+        target.bind(&self.ctx);
+        let frames = self.frames_ms.len() as u32;
+        let p = self.pipeline.as_mut();
+        // The picture first: mask plans may draw over it.
+        let (w, h) = (self.scene.image.width, self.scene.image.height);
+        let full = target.read_color(&self.ctx)?;
+        // The image is the framebuffer's lower-left w×h: the last h rows, top row first.
+        let mut image = image::imageops::crop_imm(&full, 0, full.height() - h, w, h).to_image();
+        // What a screen shows: destination alpha holds whatever the passes computed there
+        // (alpha-tested comparisons leave their values behind); the picture is opaque.
+        for px in image.pixels_mut() {
+            px.0[3] = 255;
+        }
+        run(p, &self.ctx, "mask", frames, &self.plan.mask.commands)?;
+        let mask = self.plan.mask.decode(|slot| p.readback(slot))?;
+        let mut map_images = Vec::new();
+        if self.options.depth_map {
+            if let Some(m) = &self.plan.map_image {
+                for pass in &self.plan.maps {
+                    run(p, &self.ctx, pass.name, frames, &pass.commands)?;
+                }
+                run(p, &self.ctx, "depth-map", frames, &m.commands)?;
+                map_images = map_pictures(m.source, |slot| p.readback(slot))?;
+            }
+        }
+        Ok((image, mask, map_images))
+    }
+
+    fn release(&mut self) {
+        if std::mem::replace(&mut self.released, true) {
+            return;
+        }
+        if self.ctx.make_current().is_ok() {
+            self.pipeline.release(&self.ctx);
+            if let Some(t) = self.target.take() {
+                t.delete(&self.ctx);
+            }
+        }
+    }
+}
+
+type GpuResults = (RgbaImage, Mask, Vec<(String, RgbaImage)>);
+
+/// Executes one pass's commands; a command the model rejected is a technique bug.
+fn run(
+    pipeline: &mut dyn Pipeline,
+    ctx: &GpuContext,
+    pass: &'static str,
+    frame: u32,
+    commands: &[Command],
+) -> Result<(), RenderError> {
+    pipeline.execute(ctx, commands)?;
+    match pipeline.take_gl_error() {
+        Some(error) => Err(RenderError::Gl { pass, frame, error }),
+        None => Ok(()),
+    }
+}
+
+/// The light's map as pictures (see [`MapImageSource`]); rows flipped to top first.
+fn map_pictures<'r>(
+    source: MapImageSource,
+    readback: impl Fn(u32) -> Option<&'r crate::pipeline::Readback>,
+) -> Result<Vec<(String, RgbaImage)>, RenderError> {
+    let (slot, size, bytes_per) = match source {
+        MapImageSource::DepthFloat { slot, size } => (slot, size, 4),
+        MapImageSource::Bytes { slot, size } => (slot, size, 1),
+        MapImageSource::Digits { slot, size } => (slot, size, 2),
+    };
+    let n = size as usize * size as usize;
+    let r = readback(slot)
+        .filter(|r| r.bytes.len() == n * bytes_per)
+        .ok_or(RenderError::MapImage { slot })?;
+    let row = size as usize * bytes_per;
+    let texels: Vec<&[u8]> = r
+        .bytes
+        .chunks_exact(row)
+        .rev()
+        .flat_map(|line| line.chunks_exact(bytes_per))
+        .collect();
+    let grey = |v: u8| image::Rgba([v, v, v, 255]);
+    let picture = |f: &dyn Fn(&[u8]) -> image::Rgba<u8>| {
+        let mut img = RgbaImage::new(size, size);
+        for (p, t) in img.pixels_mut().zip(&texels) {
+            *p = f(t);
+        }
+        img
+    };
+    Ok(match source {
+        MapImageSource::DepthFloat { .. } => vec![(
+            "depth".to_string(),
+            picture(&|t| {
+                let z = f32::from_ne_bytes([t[0], t[1], t[2], t[3]]);
+                grey((z.clamp(0.0, 1.0) * 255.0).round() as u8)
+            }),
+        )],
+        MapImageSource::Bytes { .. } => vec![("depth".to_string(), picture(&|t| grey(t[0])))],
+        MapImageSource::Digits { .. } => {
+            let d = |t: &[u8]| u16::from_ne_bytes([t[0], t[1]]);
+            vec![
+                ("big-digit".to_string(), picture(&|t| grey((d(t) >> 8) as u8))),
+                (
+                    "little-digit".to_string(),
+                    picture(&|t| pseudo_colour((d(t) & 0xff) as u8)),
+                ),
+            ]
+        }
     })
 }
 
-type GpuResults = (RgbaImage, Mask, FrameTimings, Counters);
-
-/// The frames, the mask and the colour readback.
-fn run_gpu(
-    ctx: &GpuContext,
-    target: &RenderTarget,
-    pipeline: &mut dyn Pipeline,
-    plan: &Plan,
-    options: &RenderOptions,
-    progress: &mut impl FnMut(Progress),
-) -> Result<GpuResults, RenderError> {
-    let total = options.frames.max(1);
-    target.bind(ctx);
-    let mut frame = |n: u32| -> Result<f64, RenderError> {
-        let start = Instant::now();
-        for pass in &plan.passes {
-            pipeline.execute(ctx, &pass.commands)?;
-            if let Some(error) = pipeline.take_gl_error() {
-                return Err(RenderError::Gl {
-                    pass: pass.name,
-                    frame: n,
-                    error,
-                });
-            }
-        }
-        ctx.finish();
-        let ms = start.elapsed().as_secs_f64() * 1e3;
-        progress(Progress::Frame { done: n, total });
-        Ok(ms)
+/// A hue ramp over 0..=255 (blue → cyan → green → yellow → red), so that neighbouring
+/// little-digit values read as different colours, like the slide's pseudo-colour inset.
+pub fn pseudo_colour(v: u8) -> image::Rgba<u8> {
+    let x = f32::from(v) / 255.0 * 4.0;
+    let (r, g, b) = match x as u32 {
+        0 => (0.0, x, 1.0),
+        1 => (0.0, 1.0, 2.0 - x),
+        2 => (x - 2.0, 1.0, 0.0),
+        _ => (1.0, (4.0 - x).max(0.0), 0.0),
     };
-    let cold_ms = frame(1)?;
-    let steady_ms = (2..=total).map(&mut frame).collect::<Result<Vec<_>, _>>()?;
-    let timings = FrameTimings::new(cold_ms, steady_ms);
-
-    pipeline.execute(ctx, &plan.mask.commands)?;
-    if let Some(error) = pipeline.take_gl_error() {
-        return Err(RenderError::Gl {
-            pass: "mask",
-            frame: total,
-            error,
-        });
-    }
-    let mask = plan.mask.decode(|slot| pipeline.readback(slot))?;
-    let image = target.read_color(ctx)?;
-    Ok((image, mask, timings, pipeline.counters()))
+    let c = |f: f32| (f.clamp(0.0, 1.0) * 255.0).round() as u8;
+    image::Rgba([c(r), c(g), c(b), 255])
 }

@@ -690,5 +690,6 @@ fn shadow(ctx: &Ctx, s: &RawShadow) -> Result<ShadowSettings> {
         polygon_offset,
         precision: s.precision.unwrap_or(defaults.precision),
         readback: s.readback.unwrap_or(defaults.readback),
+        filter: s.filter.unwrap_or(defaults.filter),
     })
 }

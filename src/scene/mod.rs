@@ -32,7 +32,14 @@ use glam::Vec3;
 use std::path::Path;
 
 /// Every technique name a scene may ask for. Later techniques add their names here.
-pub const KNOWN_TECHNIQUES: &[&str] = &["none"];
+pub const KNOWN_TECHNIQUES: &[&str] = &[
+    "none",
+    "depth-compare",
+    "dual8",
+    "linear8",
+    "multidigit16",
+    "multidigit16-combine",
+];
 
 impl Scene {
     /// Reads and validates the scene file at `path` against [`KNOWN_TECHNIQUES`].

@@ -2,7 +2,7 @@
 //! validation may reject wrapped in `Spanned` so its error can name the line.
 //! Values stay optional here; `build` supplies defaults and checks what each kind needs.
 
-use super::types::{Precision, ReadbackRule};
+use super::types::{MapFilter, Precision, ReadbackRule};
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -167,4 +167,5 @@ pub(super) struct RawShadow {
     pub polygon_offset: S<RawOffset>,
     pub precision: Option<Precision>,
     pub readback: Option<ReadbackRule>,
+    pub filter: Option<MapFilter>,
 }

@@ -267,6 +267,20 @@ pub struct PolygonOffset {
     pub units: f32,
 }
 
+/// How a shadow map is sampled (GL_TEXTURE_MIN/MAG_FILTER of the map).
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Deserialize, serde::Serialize, clap::ValueEnum,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum MapFilter {
+    /// One texel per lookup: hard, blocky edges.
+    #[default]
+    Nearest,
+    /// LINEAR: on a depth texture with compare on, the era's hardware percentage-closer
+    /// filter (four compares blended bilinearly); on an 8-bit map, interpolated depths.
+    Linear,
+}
+
 /// The `[shadow]` table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShadowSettings {
@@ -282,6 +296,8 @@ pub struct ShadowSettings {
     pub precision: Precision,
     /// Default Truncate.
     pub readback: ReadbackRule,
+    /// Default Nearest.
+    pub filter: MapFilter,
 }
 
 impl Default for ShadowSettings {
@@ -293,6 +309,7 @@ impl Default for ShadowSettings {
             polygon_offset: None,
             precision: Precision::Float,
             readback: ReadbackRule::Truncate,
+            filter: MapFilter::Nearest,
         }
     }
 }

@@ -21,12 +21,20 @@
 //! and decodes their readback with [`MaskPlan::decode`] into a [`Mask`] (255 lit, 0
 //! shadowed, 128 background, top row first) that `metrics` compares with the truth.
 
+pub mod depth_compare;
+pub mod dual8;
+pub mod linear8;
+pub mod map;
+pub mod multidigit16;
+pub mod multidigit16_combine;
 pub mod none;
+pub mod parts;
 
 use std::sync::Arc;
 
 use crate::ff::{Command, Geometry, PixelFormat, PixelType, MAX_LIGHTS};
-use crate::metrics::{Mask, BACKGROUND, LIT};
+use crate::gpu::DepthBits;
+use crate::metrics::{Mask, BACKGROUND, LIT, SHADOWED};
 use crate::pipeline::Readback;
 use crate::scene::{self, Scene};
 
@@ -40,6 +48,10 @@ pub enum TechniqueError {
     },
     #[error("the scene has {count} lights; the fixed-function pipeline has {max} (GL_MAX_LIGHTS)")]
     TooManyLights { count: usize, max: usize },
+    #[error("`{technique}` needs a light to cast shadows; the scene has none (add a [[light]])")]
+    NoLight { technique: &'static str },
+    #[error("`{technique}` needs a stencil buffer; a {bits}-bit depth buffer has none (use depth_bits 24 or \"32f\")")]
+    NeedsStencil { technique: &'static str, bits: u32 },
     #[error("the mask readback (slot {slot}) is missing: the pipeline did not execute ReadPixels")]
     MissingReadback { slot: u32 },
     #[error("the mask readback is {got_w}×{got_h} {format:?}/{ty:?}; expected {w}×{h} {expected_format:?}/{expected_ty:?}", got_w = .got.0, got_h = .got.1, w = .expected.0, h = .expected.1)]
@@ -71,7 +83,14 @@ impl std::fmt::Debug for Technique {
 }
 
 /// Every technique, in the order of [`scene::KNOWN_TECHNIQUES`].
-pub const REGISTRY: &[Technique] = &[none::TECHNIQUE];
+pub const REGISTRY: &[Technique] = &[
+    none::TECHNIQUE,
+    depth_compare::TECHNIQUE,
+    dual8::TECHNIQUE,
+    linear8::TECHNIQUE,
+    multidigit16::TECHNIQUE,
+    multidigit16_combine::TECHNIQUE,
+];
 
 // The registry's names are exactly the scene layer's names, in order (evaluated at build
 // time: a mismatch does not compile).
@@ -140,19 +159,85 @@ pub struct Pass {
     pub commands: Vec<Command>,
 }
 
-/// What a technique runs each frame, and how its shadow mask is obtained afterwards.
+/// What a technique runs, when, and how its shadow mask is obtained afterwards.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Plan {
-    /// Executed in order, every frame.
+    /// Executed once, before the first frame: what never changes (ramps, parameters of
+    /// textures that are only ever re-specified).
+    pub setup: Vec<Command>,
+    /// The passes that make the technique's maps (light pass, readback, upload): executed
+    /// on the first frame and again only when the maps are stale (see `render::RemakeMaps`).
+    pub maps: Vec<Pass>,
+    /// Executed in order, every frame, after the maps when they are made.
     pub passes: Vec<Pass>,
     pub mask: MaskPlan,
+    /// The framebuffer the passes draw into.
+    pub framebuffer: FramebufferNeeds,
+    /// How to show the light's map as images (`render --depth-map`); `None` without maps.
+    pub map_image: Option<MapImagePlan>,
+    /// What the render line should say about this scene and technique (e.g. a known
+    /// failure mode the scene triggers).
+    pub notes: Vec<String>,
 }
 
 impl Plan {
-    /// Every command of one frame, in order.
-    pub fn frame_commands(&self) -> impl Iterator<Item = &Command> {
-        self.passes.iter().flat_map(|p| p.commands.iter())
+    /// A plan of every-frame passes only, drawn into a framebuffer of the image's size.
+    pub fn single(passes: Vec<Pass>, mask: MaskPlan, framebuffer: FramebufferNeeds) -> Plan {
+        Plan {
+            setup: Vec::new(),
+            maps: Vec::new(),
+            passes,
+            mask,
+            framebuffer,
+            map_image: None,
+            notes: Vec::new(),
+        }
     }
+
+    /// Every command of one frame that makes its maps, in order (setup excluded).
+    pub fn frame_commands(&self) -> impl Iterator<Item = &Command> {
+        self.maps
+            .iter()
+            .chain(&self.passes)
+            .flat_map(|p| p.commands.iter())
+    }
+
+    /// Passes in a frame that makes its maps.
+    pub fn pass_count(&self) -> usize {
+        self.maps.len() + self.passes.len()
+    }
+}
+
+/// The framebuffer a plan needs: at least the image and the light's map (they share one
+/// framebuffer, as on the era's hardware: the light pass draws in its lower-left corner).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FramebufferNeeds {
+    pub width: u32,
+    pub height: u32,
+    pub depth: DepthBits,
+    pub stencil: bool,
+}
+
+/// Commands that read the light's map after the frames, and how to turn the bytes into
+/// pictures.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MapImagePlan {
+    /// Executed after the map passes are executed once more (empty when the map passes
+    /// already leave the readback behind).
+    pub commands: Vec<Command>,
+    pub source: MapImageSource,
+}
+
+/// Which readback holds the map, and in what form.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MapImageSource {
+    /// Depth as FLOAT: one grey image, 0 black (near) to 1 white (far).
+    DepthFloat { slot: u32, size: u32 },
+    /// One byte per texel (an 8-bit map): one grey image.
+    Bytes { slot: u32, size: u32 },
+    /// Depth as UNSIGNED_SHORT: the big digit (high byte) grey, the little digit (low byte)
+    /// pseudo-coloured, as on Kilgard's slide of where the information is.
+    Digits { slot: u32, size: u32 },
 }
 
 /// Commands executed once after the last frame, and how their readback becomes a mask.
@@ -172,7 +257,40 @@ pub enum MaskSource {
     /// z < 1 (the cleared far value), and every geometry pixel is lit — a technique without
     /// shadows. 255 where z < 1, 128 elsewhere.
     DepthCoverage { slot: u32, width: u32, height: u32 },
+    /// The technique's passes drawn again in mask colours — cleared to pure blue
+    /// [`MASK_BACKGROUND`], everything that would be dim in black, everything lit in white
+    /// — read as RGBA/UNSIGNED_BYTE. Background iff the pixel is (0, 0, 255); otherwise lit
+    /// iff red ≥ 128 (a filtered compare that is at least half lit counts as lit),
+    /// shadowed below.
+    Colour { slot: u32, width: u32, height: u32 },
 }
+
+/// The mask plan of a technique whose `passes` were built in the mask look: the passes,
+/// then glReadPixels of the image as RGBA/UNSIGNED_BYTE into [`MASK_SLOT`].
+pub fn colour_mask(scene: &Scene, passes: Vec<Pass>) -> MaskPlan {
+    let (width, height) = (scene.image.width, scene.image.height);
+    let mut commands: Vec<Command> = passes.into_iter().flat_map(|p| p.commands).collect();
+    commands.push(Command::ReadPixels(crate::ff::ReadPixels {
+        x: 0,
+        y: 0,
+        width: width as i32,
+        height: height as i32,
+        format: PixelFormat::Rgba,
+        ty: PixelType::UnsignedByte,
+        slot: MASK_SLOT,
+    }));
+    MaskPlan {
+        commands,
+        source: MaskSource::Colour {
+            slot: MASK_SLOT,
+            width,
+            height,
+        },
+    }
+}
+
+/// The clear colour of mask passes (pure blue: no lit or shadowed pixel can be it).
+pub const MASK_BACKGROUND: [u8; 4] = [0, 0, 255, 255];
 
 impl MaskPlan {
     /// Decodes the readback of `self.source`'s slot (bottom row first, as GL returns it)
@@ -181,6 +299,14 @@ impl MaskPlan {
         &self,
         readback: impl Fn(u32) -> Option<&'r Readback>,
     ) -> Result<Mask, TechniqueError> {
+        if let MaskSource::Colour {
+            slot,
+            width,
+            height,
+        } = self.source
+        {
+            return decode_colour(readback(slot), slot, width, height);
+        }
         match self.source {
             MaskSource::DepthCoverage {
                 slot,
@@ -224,8 +350,55 @@ impl MaskPlan {
                     data,
                 })
             }
+            MaskSource::Colour { .. } => unreachable!("decoded above"),
         }
     }
+}
+
+/// See [`MaskSource::Colour`].
+fn decode_colour(
+    r: Option<&Readback>,
+    slot: u32,
+    width: u32,
+    height: u32,
+) -> Result<Mask, TechniqueError> {
+    let r = r.ok_or(TechniqueError::MissingReadback { slot })?;
+    let expected = (PixelFormat::Rgba, PixelType::UnsignedByte);
+    let n = width as usize * height as usize;
+    if (r.width, r.height) != (width, height)
+        || (r.format, r.ty) != expected
+        || r.bytes.len() != n * 4
+    {
+        return Err(TechniqueError::ReadbackShape {
+            got: (r.width, r.height),
+            expected: (width, height),
+            format: r.format,
+            ty: r.ty,
+            expected_format: expected.0,
+            expected_ty: expected.1,
+        });
+    }
+    let row = width as usize * 4;
+    let data = r
+        .bytes
+        .chunks_exact(row.max(1))
+        .rev()
+        .flat_map(|line| line.chunks_exact(4))
+        .map(|p| {
+            if p[..3] == MASK_BACKGROUND[..3] {
+                BACKGROUND
+            } else if p[0] >= 128 {
+                LIT
+            } else {
+                SHADOWED
+            }
+        })
+        .collect();
+    Ok(Mask {
+        width,
+        height,
+        data,
+    })
 }
 
 /// Fails when the scene has more lights than GL_MAX_LIGHTS.

@@ -31,10 +31,11 @@ use crate::ff::{
     Capability, ClearMask, Command, Face, LightModelParam, LightParam, MaterialParam, MatrixMode,
     PixelFormat, PixelType, ReadPixels, ViewVolume, Viewport,
 };
+use crate::gpu::DepthBits;
 use crate::scene::{Camera, Light, LightKind, Projection, Scene};
 
 use super::{
-    check_light_count, MaskPlan, MaskSource, Pass, Plan, Prepared, Technique, TechniqueError,
+    check_light_count, FramebufferNeeds, MaskPlan, MaskSource, Pass, Plan, Prepared, Technique, TechniqueError,
     MASK_SLOT,
 };
 
@@ -55,13 +56,19 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
     commands.extend(camera(&scene.camera, width, height));
     commands.extend(lighting(&scene.lights));
     commands.extend(objects(scene, prepared));
-    Ok(Plan {
-        passes: vec![Pass {
+    Ok(Plan::single(
+        vec![Pass {
             name: "eye",
             commands,
         }],
-        mask: depth_coverage_mask(width, height),
-    })
+        depth_coverage_mask(width, height),
+        FramebufferNeeds {
+            width,
+            height,
+            depth: DepthBits::D24,
+            stencil: false,
+        },
+    ))
 }
 
 /// Viewport, clear to the background, depth test on; NORMALIZE when some transform scales.

@@ -372,7 +372,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 border: c.i32(4)?,
                 format: c.enm(5)?,
                 ty: c.enm(6)?,
-                data: c.pixels(7)?,
+                data: c.tex_data(7)?,
             })
         }
         "glTexImage2D" => {
@@ -387,7 +387,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 border: c.i32(5)?,
                 format: c.enm(6)?,
                 ty: c.enm(7)?,
-                data: c.pixels(8)?,
+                data: c.tex_data(8)?,
             })
         }
         "glTexSubImage2D" => {

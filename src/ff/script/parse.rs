@@ -352,6 +352,13 @@ impl Call<'_, '_> {
             self.f32(from + 3)?,
         ))
     }
+    /// glTexImage's data: NULL, a readback buffer `readback_<n>`, or a pixel array.
+    pub(super) fn tex_data(&self, i: usize) -> Res<TexData> {
+        match self.name(i) {
+            Some((n, 0)) if n.starts_with("readback_") => self.slot(i).map(TexData::Readback),
+            _ => Ok(self.pixels(i)?.map_or(TexData::Null, TexData::Bytes)),
+        }
+    }
     /// Pixel data: NULL, or a compound literal whose element type gives the byte encoding.
     pub(super) fn pixels(&self, i: usize) -> Res<Option<Arc<[u8]>>> {
         if let Some(("NULL", 0)) = self.name(i) {

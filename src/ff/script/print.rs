@@ -433,10 +433,11 @@ fn pixels(ty: PixelType, data: &[u8]) -> String {
 }
 
 fn tex_image(out: &mut String, t: &TexImage) {
-    let data = t
-        .data
-        .as_deref()
-        .map_or("NULL".to_string(), |d| pixels(t.ty, d));
+    let data = match &t.data {
+        TexData::Null => "NULL".to_string(),
+        TexData::Bytes(d) => pixels(t.ty, d),
+        TexData::Readback(slot) => format!("readback_{slot}"),
+    };
     let (name, size) = match t.target {
         TextureTarget::Texture1D => ("glTexImage1D", format!("{}", t.width)),
         TextureTarget::Texture2D => ("glTexImage2D", format!("{}, {}", t.width, t.height)),

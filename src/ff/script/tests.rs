@@ -259,7 +259,7 @@ fn sample_commands() -> Vec<Command> {
             border: 0,
             format: PixelFormat::Luminance,
             ty: PixelType::UnsignedByte,
-            data: Some(Arc::from(vec![0u8, 85, 170, 255])),
+            data: TexData::Bytes(Arc::from(vec![0u8, 85, 170, 255])),
         }),
         Command::TexImage(TexImage {
             target: TextureTarget::Texture2D,
@@ -270,7 +270,7 @@ fn sample_commands() -> Vec<Command> {
             border: 0,
             format: PixelFormat::DepthComponent,
             ty: PixelType::Float,
-            data: Some(Arc::from(
+            data: TexData::Bytes(Arc::from(
                 [0.25f32.to_le_bytes(), 1.0f32.to_le_bytes()].concat(),
             )),
         }),
@@ -283,7 +283,7 @@ fn sample_commands() -> Vec<Command> {
             border: 0,
             format: PixelFormat::LuminanceAlpha,
             ty: PixelType::UnsignedByte,
-            data: None,
+            data: TexData::Null,
         }),
         Command::TexSubImage2D(TexSubImage {
             level: 0,
@@ -450,6 +450,19 @@ fn sample_commands() -> Vec<Command> {
             ty: PixelType::UnsignedInt,
             slot: 3,
         }),
+        // The bytes glReadPixels left in readback_3 become a texture (the two-phase idiom
+        // of the 8- and 16-bit shadow maps).
+        Command::TexImage(TexImage {
+            target: TextureTarget::Texture2D,
+            level: 0,
+            internal_format: TexFormat::Luminance8Alpha8,
+            width: 4,
+            height: 4,
+            border: 0,
+            format: PixelFormat::LuminanceAlpha,
+            ty: PixelType::UnsignedByte,
+            data: TexData::Readback(3),
+        }),
         Command::Draw(Arc::new(g)),
         Command::Draw(Arc::new(Geometry::new(Primitive::Points, vec![]))),
     ]
@@ -607,7 +620,7 @@ fn command() -> impl Strategy<Value = Command> {
                     border: 0,
                     format: PixelFormat::Rgba,
                     ty,
-                    data: Some(Arc::from(bytes)),
+                    data: TexData::Bytes(Arc::from(bytes)),
                 })
             }),
         geometry().prop_map(|g| Command::Draw(Arc::new(g))),

@@ -249,7 +249,8 @@ impl Pipeline for EmulatedPipeline {
     fn execute(&mut self, ctx: &GpuContext, commands: &[Command]) -> Result<(), PipelineError> {
         let gl = ctx.gl();
         for cmd in commands {
-            self.execute_one(gl, cmd)?;
+            let cmd = super::resolve_readback(cmd, &self.readbacks)?;
+            self.execute_one(gl, &cmd)?;
         }
         Ok(())
     }

@@ -110,12 +110,13 @@ impl Pipeline for NativePipeline {
         Self::prepare(ctx);
         for cmd in commands {
             self.counters.commands += 1;
+            let cmd = super::resolve_readback(cmd, &self.readbacks)?;
             // A rejected command has no effect on GL (GL 1.5 §2.5): nothing is sent.
-            if self.state.apply(cmd).is_err() {
+            if self.state.apply(&cmd).is_err() {
                 continue;
             }
-            self.issue(cmd)?;
-            ctx.check_error(execute::gl_call(cmd))?;
+            self.issue(&cmd)?;
+            ctx.check_error(execute::gl_call(&cmd))?;
         }
         Ok(())
     }

@@ -56,9 +56,10 @@ impl Textures {
 /// glTexImage1D / glTexImage2D into the bound texture; `None` data is a NULL pointer
 /// (storage only). The model checked the data length against the size.
 pub fn tex_image(g: &gl::Gl, t: &TexImage) {
+    // A readback slot was resolved to bytes before the model saw the command.
     let pixels = t
         .data
-        .as_ref()
+        .bytes()
         .map_or(std::ptr::null(), |d| d.as_ptr().cast::<c_void>());
     let internal = conv::int(conv::tex_format(t.internal_format));
     let format = conv::pixel_format(t.format);

@@ -1,0 +1,94 @@
+//! The shadow-map parameters every rendering command accepts, overriding the scene's
+//! `[shadow]` table: map size, light depth bits, polygon offset, precision, filter.
+
+use clap::Args;
+use fixedfunc::gpu::DepthBits;
+use fixedfunc::scene::{MapFilter, PolygonOffset, Precision, Scene};
+
+/// `--map-size`, `--depth-bits`, `--offset`, `--precision`, `--filter`.
+#[derive(Args, Debug, Clone, Default)]
+pub struct ShadowArgs {
+    /// Shadow map edge in texels (default: the scene's `map_size`).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=8192))]
+    pub map_size: Option<u32>,
+    /// Depth buffer of the light pass (default: the scene's `depth_bits`).
+    #[arg(long, value_enum)]
+    pub depth_bits: Option<DepthBits>,
+    /// glPolygonOffset(FACTOR, UNITS) for the light pass, as FACTOR,UNITS; `none` for no
+    /// offset (default: the scene's `polygon_offset`).
+    #[arg(long, value_name = "FACTOR,UNITS", value_parser = parse_offset)]
+    pub offset: Option<OffsetArg>,
+    /// Arithmetic of the emulated texture and combiner stages (default: the scene's).
+    #[arg(long, value_enum)]
+    pub precision: Option<Precision>,
+    /// Shadow map filter (default: the scene's `filter`).
+    #[arg(long, value_enum)]
+    pub filter: Option<MapFilter>,
+}
+
+/// A polygon offset on the command line, or none.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum OffsetArg {
+    None,
+    Offset(PolygonOffset),
+}
+
+/// `FACTOR,UNITS` (finite numbers) or `none`.
+pub fn parse_offset(text: &str) -> Result<OffsetArg, String> {
+    if text.eq_ignore_ascii_case("none") {
+        return Ok(OffsetArg::None);
+    }
+    let bad = || format!("`{text}`: expected FACTOR,UNITS (two finite numbers, e.g. 1,4) or none");
+    let (f, u) = text.split_once(',').ok_or_else(bad)?;
+    let factor: f32 = f.trim().parse().map_err(|_| bad())?;
+    let units: f32 = u.trim().parse().map_err(|_| bad())?;
+    if !(factor.is_finite() && units.is_finite()) {
+        return Err(bad());
+    }
+    Ok(OffsetArg::Offset(PolygonOffset { factor, units }))
+}
+
+impl ShadowArgs {
+    /// `scene` with every given parameter applied.
+    pub fn apply(&self, scene: &mut Scene) {
+        let s = &mut scene.shadow;
+        if let Some(v) = self.map_size {
+            s.map_size = v;
+        }
+        if let Some(v) = self.depth_bits {
+            s.depth = v;
+        }
+        match self.offset {
+            Some(OffsetArg::None) => s.polygon_offset = None,
+            Some(OffsetArg::Offset(o)) => s.polygon_offset = Some(o),
+            None => {}
+        }
+        if let Some(v) = self.precision {
+            s.precision = v;
+        }
+        if let Some(v) = self.filter {
+            s.filter = v;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn offsets_parse_or_say_what_is_expected() {
+        assert_eq!(
+            parse_offset("1, 4"),
+            Ok(OffsetArg::Offset(PolygonOffset {
+                factor: 1.0,
+                units: 4.0
+            }))
+        );
+        assert_eq!(parse_offset("none"), Ok(OffsetArg::None));
+        for bad in ["1", "a,b", "1,NaN", "inf,1", ""] {
+            let e = parse_offset(bad).unwrap_err();
+            assert!(e.contains("FACTOR,UNITS"), "{bad}: {e}");
+        }
+    }
+}

@@ -1,0 +1,142 @@
+//! `depth-compare`: SGIX_shadow / ARB_shadow — the depth buffer copied into a depth texture
+//! whose lookup *is* the comparison (Kilgard, "Dedicated hardware shadow mapping support").
+//!
+//! ```text
+//! maps   light:  glViewport(map); glColorMask(F,F,F,F); glClear(DEPTH); light's frustum and
+//!                gluLookAt; glPolygonOffset(factor, units); draw the casters
+//!        copy:   glBindTexture(2D, map); glCopyTexImage2D(DEPTH_COMPONENT16|24|32F, 0, 0, map, map)
+//! frame  dim:    clear; eye camera; the shadowing light off; draw everything
+//!        lit:    glDepthFunc(EQUAL); glDepthMask(F); glBlendFunc(ONE, ONE); only the shadowing
+//!                light, no global ambient; unit 0: the map, COMPARE_R_TO_TEXTURE, LEQUAL,
+//!                eye-linear S, T, R, Q = rows of B·P_light·V_light, MODULATE; draw receivers
+//! ```
+//! The texel is the compare result c (DEPTH_TEXTURE_MODE LUMINANCE: (c, c, c, 1)): 1 where
+//! r/q ≤ the stored depth (lit), 0 where something nearer the light was stored. MODULATE
+//! scales the shadowing light's contribution by c and the additive blend puts it on top of
+//! the dim pass, so lit pixels equal `none`'s image and shadowed ones keep the ambient.
+//! With the LINEAR filter the four nearest compares are blended bilinearly — the era's
+//! hardware percentage-closer filtering — and c takes values between 0 and 1.
+//!
+//! r/q is clamped to [0, 1] before the compare (ARB_shadow), so surfaces beyond the light's
+//! far plane compare as 1 and stay lit only where the stored depth is 1.
+
+use crate::ff::{
+    Capability, Command, CompareFunc, CompareMode, CopyTexImage, DepthTextureMode, PixelFormat,
+    PixelType, ReadPixels, TexCoord, TexEnvMode, TexEnvParam, TexParam, TextureTarget,
+};
+use crate::ff::{BlendFactor, Command as C};
+use crate::scene::Scene;
+
+use super::map::{bind_map, map_parameters, MapSettings, MAP_IMAGE_SLOT};
+use super::parts::{
+    dim_pass, does_not_receive, eye_linear, lighting, light_pass, objects, receives, reset,
+    LightSet, Look, ShadowLight,
+};
+use super::{
+    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared,
+    Technique, TechniqueError,
+};
+
+pub const NAME: &str = "depth-compare";
+
+pub const TECHNIQUE: Technique = Technique {
+    name: NAME,
+    summary: "ARB_shadow: the depth buffer copied into a depth texture that compares r/q",
+    plan,
+};
+
+pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
+    check_light_count(scene)?;
+    let light = ShadowLight::of(scene, NAME)?;
+    let map = MapSettings::of(scene);
+    let param = |param| Command::TexParameter {
+        target: TextureTarget::Texture2D,
+        param,
+    };
+    let mut setup = vec![Command::ActiveTexture(0), bind_map()];
+    setup.extend(map_parameters(map.gl_filter()));
+    setup.extend([
+        param(TexParam::CompareMode(CompareMode::CompareRToTexture)),
+        param(TexParam::CompareFunc(CompareFunc::Lequal)),
+        param(TexParam::DepthTextureMode(DepthTextureMode::Luminance)),
+    ]);
+    let copy = Pass {
+        name: "copy",
+        commands: vec![
+            Command::ActiveTexture(0),
+            bind_map(),
+            Command::CopyTexImage2D(CopyTexImage {
+                level: 0,
+                internal_format: map.depth_format(),
+                x: 0,
+                y: 0,
+                width: map.size as i32,
+                height: map.size as i32,
+                border: 0,
+            }),
+        ],
+    };
+    Ok(Plan {
+        setup,
+        maps: vec![
+            light_pass(scene, prepared, &light, map.size, map.offset, false),
+            copy,
+        ],
+        passes: eye_passes(scene, prepared, &light, Look::Shaded),
+        mask: colour_mask(scene, eye_passes(scene, prepared, &light, Look::Mask)),
+        framebuffer: map.framebuffer(scene, false),
+        map_image: Some(MapImagePlan {
+            commands: vec![C::ReadPixels(ReadPixels {
+                x: 0,
+                y: 0,
+                width: map.size as i32,
+                height: map.size as i32,
+                format: PixelFormat::DepthComponent,
+                ty: PixelType::Float,
+                slot: MAP_IMAGE_SLOT,
+            })],
+            source: MapImageSource::DepthFloat {
+                slot: MAP_IMAGE_SLOT,
+                size: map.size,
+            },
+        }),
+        notes: Vec::new(),
+    })
+}
+
+fn eye_passes(scene: &Scene, prepared: &Prepared, light: &ShadowLight, look: Look) -> Vec<Pass> {
+    let mut lit = vec![
+        Command::DepthFunc(CompareFunc::Equal),
+        Command::DepthMask(false),
+        Command::Enable(Capability::Blend),
+        Command::BlendFunc {
+            src: BlendFactor::One,
+            dst: BlendFactor::One,
+        },
+    ];
+    lit.extend(lighting(scene, look, LightSet::ShadowingOnly));
+    lit.extend([
+        Command::ActiveTexture(0),
+        bind_map(),
+        Command::Enable(Capability::Texture2D),
+        Command::TexEnv(TexEnvParam::Mode(TexEnvMode::Modulate)),
+    ]);
+    lit.extend(eye_linear(&[
+        (TexCoord::S, light.plane(0)),
+        (TexCoord::T, light.plane(1)),
+        (TexCoord::R, light.plane(2)),
+        (TexCoord::Q, light.plane(3)),
+    ]));
+    let paint = look.paint(true);
+    lit.extend(objects(scene, prepared, receives, paint));
+    lit.push(Command::Disable(Capability::Texture2D));
+    lit.extend(objects(scene, prepared, does_not_receive, paint));
+    lit.extend(reset(&[0]));
+    vec![
+        dim_pass(scene, prepared, look, false),
+        Pass {
+            name: "lit",
+            commands: lit,
+        },
+    ]
+}

@@ -1,0 +1,177 @@
+//! What every shadow-map technique reads from the scene's `[shadow]` table, the texture
+//! names and readback slots they use, the ramp textures, and the parameters of a map
+//! texture.
+//!
+//! **Outside the map is lit.** Fragments whose (s/q, t/q) fall outside the light's volume
+//! read the border: CLAMP_TO_BORDER with a white border (depth 1, the far plane; intensity
+//! 1) makes them lit, which is what the truth says of a surface the light's frustum does not
+//! cover. The era's programs often left CLAMP and got streaks; the border is the
+//! documented fix of the time (GL 1.3) and keeps the comparison about precision and bias.
+
+use std::sync::Arc;
+
+use glam::Vec4;
+
+use crate::ff::{
+    Command, Filter, PixelFormat, PixelType, TexData, TexFormat, TexImage, TexParam,
+    TextureTarget, Wrap,
+};
+use crate::gpu::DepthBits;
+use crate::scene::{MapFilter, PolygonOffset, Scene};
+
+use super::{FramebufferNeeds, TechniqueError};
+
+/// The texture object names the techniques bind (GL 1.1 lets a program choose them).
+pub const MAP_TEXTURE: u32 = 1;
+/// The 256-texel 1D intensity ramp, CLAMP_TO_EDGE (the fragment's depth, or big digit).
+pub const RAMP_TEXTURE: u32 = 2;
+/// The same ramp with REPEAT (the little digit, at 256·s).
+pub const REPEAT_RAMP_TEXTURE: u32 = 3;
+
+/// The readback slot the map bytes go through (glReadPixels → glTexImage2D).
+pub const MAP_SLOT: u32 = 1;
+/// The readback slot `--depth-map` uses when a technique keeps no map bytes of its own.
+pub const MAP_IMAGE_SLOT: u32 = 2;
+
+/// The `[shadow]` settings a map technique uses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MapSettings {
+    /// Edge of the square map, in texels.
+    pub size: u32,
+    /// The light pass's depth buffer.
+    pub depth: DepthBits,
+    pub offset: Option<PolygonOffset>,
+    pub filter: MapFilter,
+}
+
+impl MapSettings {
+    pub fn of(scene: &Scene) -> MapSettings {
+        MapSettings {
+            size: scene.shadow.map_size,
+            depth: scene.shadow.depth,
+            offset: scene.shadow.polygon_offset,
+            filter: scene.shadow.filter,
+        }
+    }
+
+    /// The shared framebuffer: large enough for the image and the map.
+    pub fn framebuffer(&self, scene: &Scene, stencil: bool) -> FramebufferNeeds {
+        FramebufferNeeds {
+            width: scene.image.width.max(self.size),
+            height: scene.image.height.max(self.size),
+            depth: self.depth,
+            stencil,
+        }
+    }
+
+    /// Fails when a stencil technique is asked for a depth buffer without stencil (D16).
+    pub fn check_stencil(&self, technique: &'static str) -> Result<(), TechniqueError> {
+        match self.depth {
+            DepthBits::D16 => Err(TechniqueError::NeedsStencil {
+                technique,
+                bits: 16,
+            }),
+            DepthBits::D24 | DepthBits::D32F => Ok(()),
+        }
+    }
+
+    /// GL filter of the map.
+    pub fn gl_filter(&self) -> Filter {
+        match self.filter {
+            MapFilter::Nearest => Filter::Nearest,
+            MapFilter::Linear => Filter::Linear,
+        }
+    }
+
+    /// The depth texture format matching the light pass's buffer.
+    pub fn depth_format(&self) -> TexFormat {
+        match self.depth {
+            DepthBits::D16 => TexFormat::DepthComponent16,
+            DepthBits::D24 => TexFormat::DepthComponent24,
+            DepthBits::D32F => TexFormat::DepthComponent32F,
+        }
+    }
+}
+
+/// Parameters of the bound 2D map: `filter` for both filters (no mipmaps), CLAMP_TO_BORDER
+/// with a white border (see the module note).
+pub fn map_parameters(filter: Filter) -> Vec<Command> {
+    let param = |param| Command::TexParameter {
+        target: TextureTarget::Texture2D,
+        param,
+    };
+    vec![
+        param(TexParam::MinFilter(filter)),
+        param(TexParam::MagFilter(filter)),
+        param(TexParam::WrapS(Wrap::ClampToBorder)),
+        param(TexParam::WrapT(Wrap::ClampToBorder)),
+        param(TexParam::BorderColor(Vec4::ONE)),
+    ]
+}
+
+/// The 256-texel 1D INTENSITY8 ramp, texel i = i (value i/255), NEAREST, bound as `name` on
+/// the active unit: at coordinate s it reads floor(256·s) (clamped to 255 with
+/// CLAMP_TO_EDGE; wrapped with REPEAT) — the fragment's 8-bit digit.
+pub fn ramp(name: u32, wrap: Wrap) -> Vec<Command> {
+    let param = |param| Command::TexParameter {
+        target: TextureTarget::Texture1D,
+        param,
+    };
+    let texels: Arc<[u8]> = (0..=255u8).collect::<Vec<u8>>().into();
+    vec![
+        Command::BindTexture {
+            target: TextureTarget::Texture1D,
+            name,
+        },
+        Command::TexImage(TexImage {
+            target: TextureTarget::Texture1D,
+            level: 0,
+            internal_format: TexFormat::Intensity8,
+            width: 256,
+            height: 1,
+            border: 0,
+            format: PixelFormat::Luminance,
+            ty: PixelType::UnsignedByte,
+            data: TexData::Bytes(texels),
+        }),
+        param(TexParam::MinFilter(Filter::Nearest)),
+        param(TexParam::MagFilter(Filter::Nearest)),
+        param(TexParam::WrapS(wrap)),
+    ]
+}
+
+/// glReadPixels of the map's `size`² corner into [`MAP_SLOT`].
+pub fn read_map(size: u32, format: PixelFormat, ty: PixelType) -> Command {
+    Command::ReadPixels(crate::ff::ReadPixels {
+        x: 0,
+        y: 0,
+        width: size as i32,
+        height: size as i32,
+        format,
+        ty,
+        slot: MAP_SLOT,
+    })
+}
+
+/// glTexImage2D of the bytes in [`MAP_SLOT`] into the bound map.
+pub fn upload_map(size: u32, internal_format: TexFormat, format: PixelFormat) -> Command {
+    Command::TexImage(TexImage {
+        target: TextureTarget::Texture2D,
+        level: 0,
+        internal_format,
+        width: size as i32,
+        height: size as i32,
+        border: 0,
+        format,
+        ty: PixelType::UnsignedByte,
+        data: TexData::Readback(MAP_SLOT),
+    })
+}
+
+/// Binds the map on the active unit.
+pub fn bind_map() -> Command {
+    Command::BindTexture {
+        target: TextureTarget::Texture2D,
+        name: MAP_TEXTURE,
+    }
+}

@@ -1,0 +1,445 @@
+//! The pieces the shadow techniques share: the shadowing light's view and texgen planes, the
+//! light pass, the dim pass, lighting per pass, objects drawn in a pass's paint, and the
+//! state reset that ends a frame. Each returns Commands; none touches GL.
+//!
+//! **Frames repeat.** A technique's frame ends with [`reset`], which puts back the state
+//! every pass assumes at its start (GL's defaults for the depth, alpha, stencil, blend and
+//! colour-mask state, and every texture unit the technique used disabled), so the next
+//! frame — with or without its map passes — begins from the same state.
+//!
+//! **Looks.** Every eye pass exists in two looks: [`Look::Shaded`] is the picture (dim
+//! pass with the shadowing light off, lit passes with it on); [`Look::Mask`] draws the same
+//! geometry through the same tests with lighting off, dim in black, lit in white, over the
+//! mask background — the mask the renderer decodes (`MaskSource::Colour`). The tests that
+//! decide lit or shadowed (texture compare, alpha, stencil, depth EQUAL) are the same in
+//! both looks, so the mask is the picture's shadow, not a second technique.
+//!
+//! **The light's texture matrix.** M = B · P_light · V_light with B the bias
+//! `translate(½,½,½) · scale(½,½,½)`; its four rows are the eye-linear planes of S, T, R and
+//! Q, set while the modelview holds the eye's view: GL multiplies a plane by the inverse
+//! modelview when it is set (§2.10.4), so the generated (s, t, r, q) = M · world position —
+//! Kilgard's "no need for the texture matrix". P_light is the matrix glFrustum/glOrtho build
+//! from the light's volume (`ff::matrix`), the same numbers the light pass loads.
+
+use glam::{Mat4, Vec3, Vec4};
+
+use crate::ff::{
+    self, Capability, ClearMask, ColorMask, Command, CompareFunc, Face, LightModelParam,
+    MaterialParam, TexCoord, TexGenMode, TexGenParam, ViewVolume, Viewport,
+};
+use crate::scene::{Light, Object, PolygonOffset, Projection, Scene};
+
+use super::none::{camera, GLOBAL_AMBIENT};
+use super::{Pass, Prepared, TechniqueError, MASK_BACKGROUND};
+
+/// Which picture a pass draws.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Look {
+    /// The rendered image: materials and lights.
+    Shaded,
+    /// The shadow mask: lighting off, dim black, lit white, background [`MASK_BACKGROUND`].
+    Mask,
+}
+
+/// How a pass colours the objects it draws.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Paint {
+    /// glMaterial from the scene (lighting on).
+    Material,
+    /// glColor (lighting off).
+    Flat(Vec4),
+}
+
+impl Look {
+    /// The paint of a pass that draws dim (`lit` false) or lit surfaces.
+    pub fn paint(self, lit: bool) -> Paint {
+        match (self, lit) {
+            (Look::Shaded, _) => Paint::Material,
+            (Look::Mask, true) => Paint::Flat(Vec4::ONE),
+            (Look::Mask, false) => Paint::Flat(Vec4::new(0.0, 0.0, 0.0, 1.0)),
+        }
+    }
+}
+
+/// The light whose shadows a technique draws (the scene's first light) and its view.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShadowLight {
+    /// GL light index (0).
+    pub index: u8,
+    pub light: Light,
+    /// glFrustum or glOrtho of the light's volume, aspect 1 (square maps).
+    pub volume: Command,
+    /// The matrix `volume` builds.
+    pub projection: Mat4,
+    /// gluLookAt of the light.
+    pub view: Mat4,
+    /// Near and far of the light's volume.
+    pub near: f32,
+    pub far: f32,
+}
+
+/// B = translate(½,½,½) · scale(½,½,½): clip space [−1, 1] to texture space [0, 1].
+pub const BIAS: Mat4 = Mat4::from_cols(
+    Vec4::new(0.5, 0.0, 0.0, 0.0),
+    Vec4::new(0.0, 0.5, 0.0, 0.0),
+    Vec4::new(0.0, 0.0, 0.5, 0.0),
+    Vec4::new(0.5, 0.5, 0.5, 1.0),
+);
+
+impl ShadowLight {
+    /// The scene's first light, or [`TechniqueError::NoLight`].
+    pub fn of(scene: &Scene, technique: &'static str) -> Result<ShadowLight, TechniqueError> {
+        let light = *scene
+            .lights
+            .first()
+            .ok_or(TechniqueError::NoLight { technique })?;
+        let (volume, projection, near, far) = match light.view.projection {
+            // gluPerspective(fovy, 1, near, far) as glFrustum: top = near · tan(fovy / 2).
+            Projection::Perspective { fovy, near, far } => {
+                let top = near * (fovy.to_radians() / 2.0).tan();
+                let v = ViewVolume {
+                    left: -top,
+                    right: top,
+                    bottom: -top,
+                    top,
+                    near,
+                    far,
+                };
+                let m = ff::matrix::frustum(v).unwrap_or(Mat4::IDENTITY);
+                (Command::Frustum(v), m, near, far)
+            }
+            Projection::Orthographic {
+                left,
+                right,
+                bottom,
+                top,
+                near,
+                far,
+            } => {
+                let v = ViewVolume {
+                    left,
+                    right,
+                    bottom,
+                    top,
+                    near,
+                    far,
+                };
+                let m = ff::matrix::ortho(v).unwrap_or(Mat4::IDENTITY);
+                (Command::Ortho(v), m, near, far)
+            }
+        };
+        Ok(ShadowLight {
+            index: 0,
+            light,
+            volume,
+            projection,
+            view: light.view.view(),
+            near,
+            far,
+        })
+    }
+
+    /// M = B · P_light · V_light: world position → (s, t, r, q) of the light's map.
+    pub fn texture_matrix(&self) -> Mat4 {
+        BIAS * self.projection * self.view
+    }
+
+    /// Row `i` of M: the eye plane of S (0), T (1), R (2) or Q (3).
+    pub fn plane(&self, i: usize) -> Vec4 {
+        self.texture_matrix().row(i)
+    }
+
+    /// The plane of the eye-planar distance from the light scaled to the volume:
+    /// s = (d − near) / (far − near), d = −z of the position in the light's view — 0 on the
+    /// near plane, 1 on the far one, linear in between (Heidrich's linear depth).
+    pub fn linear_distance_plane(&self) -> Vec4 {
+        let range = self.far - self.near;
+        (-self.view.row(2) - Vec4::new(0.0, 0.0, 0.0, self.near)) / range
+    }
+
+    /// The light's projection and view, the modelview left current.
+    pub fn view_commands(&self) -> Vec<Command> {
+        vec![
+            Command::MatrixMode(ff::MatrixMode::Projection),
+            Command::LoadIdentity,
+            self.volume.clone(),
+            Command::MatrixMode(ff::MatrixMode::Modelview),
+            Command::LoadMatrix(self.view),
+        ]
+    }
+}
+
+/// Eye-linear texgen on the active unit: for each (coordinate, plane), the mode, the plane
+/// (set now, so it is multiplied by the current inverse modelview) and the enable.
+pub fn eye_linear(planes: &[(TexCoord, Vec4)]) -> Vec<Command> {
+    let mut commands = Vec::with_capacity(planes.len() * 3);
+    for &(coord, plane) in planes {
+        commands.extend([
+            Command::TexGen {
+                coord,
+                param: TexGenParam::Mode(TexGenMode::EyeLinear),
+            },
+            Command::TexGen {
+                coord,
+                param: TexGenParam::EyePlane(plane),
+            },
+            Command::Enable(Capability::TextureGen(coord)),
+        ]);
+    }
+    commands
+}
+
+/// The objects `which` selects, each under its model matrix, in `paint`. The same
+/// Push/MultMatrix/Pop sequence in every pass, so every pass computes bit-identical depths
+/// and DepthFunc(EQUAL) passes match (hard case H18).
+pub fn objects(
+    scene: &Scene,
+    prepared: &Prepared,
+    which: impl Fn(&Object) -> bool,
+    paint: Paint,
+) -> Vec<Command> {
+    let mut commands = Vec::new();
+    for (object, geometry) in scene.objects.iter().zip(&prepared.objects) {
+        if !which(object) {
+            continue;
+        }
+        commands.push(Command::PushMatrix);
+        commands.push(Command::MultMatrix(object.transform.matrix()));
+        match paint {
+            Paint::Material => {
+                let m = &object.material;
+                let material = |param| Command::Material {
+                    face: Face::FrontAndBack,
+                    param,
+                };
+                commands.extend([
+                    material(MaterialParam::AmbientAndDiffuse(m.colour.extend(1.0))),
+                    material(MaterialParam::Specular(m.specular.extend(1.0))),
+                    material(MaterialParam::Shininess(m.shininess)),
+                ]);
+            }
+            Paint::Flat(c) => commands.push(Command::Color(c)),
+        }
+        commands.push(Command::Draw(geometry.clone()));
+        commands.push(Command::PopMatrix);
+    }
+    commands
+}
+
+/// Which lights a pass turns on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LightSet {
+    /// Every light but the shadowing one, and the global ambient: the shadowed look.
+    Dim,
+    /// Every light and the global ambient: the lit look of `none`.
+    All,
+    /// The shadowing light alone, no global ambient: what an additive pass adds to Dim.
+    ShadowingOnly,
+}
+
+/// Lighting for a pass in `look`: in the mask look lighting is off (paint is flat).
+/// Lights are specified with the modelview holding the eye's view (call after the camera).
+pub fn lighting(scene: &Scene, look: Look, set: LightSet) -> Vec<Command> {
+    if look == Look::Mask || scene.lights.is_empty() {
+        return vec![Command::Disable(Capability::Lighting)];
+    }
+    let ambient = match set {
+        LightSet::ShadowingOnly => 0.0,
+        LightSet::Dim | LightSet::All => GLOBAL_AMBIENT,
+    };
+    let mut commands = vec![
+        Command::Enable(Capability::Lighting),
+        Command::LightModel(LightModelParam::Ambient(Vec3::splat(ambient).extend(1.0))),
+    ];
+    for (i, light) in scene.lights.iter().enumerate() {
+        let i = i as u8;
+        let on = match set {
+            LightSet::Dim => i != 0,
+            LightSet::All => true,
+            LightSet::ShadowingOnly => i == 0,
+        };
+        if on {
+            commands.extend(super::none::light_commands(i, light));
+        } else {
+            commands.push(Command::Disable(Capability::Light(i)));
+        }
+    }
+    commands
+}
+
+/// Viewport of the image, clear (colour to the background or the mask background, depth,
+/// and stencil when the technique uses it), depth test on, NORMALIZE when a transform
+/// scales, and the eye's camera.
+pub fn eye_start(scene: &Scene, look: Look, stencil: bool) -> Vec<Command> {
+    let (w, h) = (scene.image.width, scene.image.height);
+    let clear = match look {
+        Look::Shaded => scene.image.background.extend(1.0),
+        Look::Mask => Vec4::from_array(MASK_BACKGROUND.map(|b| f32::from(b) / 255.0)),
+    };
+    let mut commands = vec![
+        Command::Viewport(Viewport {
+            x: 0,
+            y: 0,
+            width: w as i32,
+            height: h as i32,
+        }),
+        Command::ClearColor(clear),
+        Command::Clear(ClearMask {
+            color: true,
+            depth: true,
+            stencil,
+        }),
+        Command::Enable(Capability::DepthTest),
+    ];
+    if scene.objects.iter().any(|o| o.transform.scale != Vec3::ONE) {
+        commands.push(Command::Enable(Capability::Normalize));
+    }
+    commands.extend(camera(&scene.camera, w, h));
+    commands
+}
+
+/// The first eye pass of every shadow technique: everything drawn as if shadowed (the
+/// shadowing light off; black in the mask look), with the depth test writing the depths
+/// the later DepthFunc(EQUAL) passes match.
+pub fn dim_pass(scene: &Scene, prepared: &Prepared, look: Look, stencil: bool) -> Pass {
+    let mut commands = eye_start(scene, look, stencil);
+    commands.extend(lighting(scene, look, LightSet::Dim));
+    commands.extend(objects(scene, prepared, |_| true, look.paint(false)));
+    Pass {
+        name: "dim",
+        commands,
+    }
+}
+
+/// The light pass: the casters from the light into the lower-left `size`² of the
+/// framebuffer, depth only (colour masked off unless `colour`), lighting off, with
+/// glPolygonOffset(factor, units) on filled polygons when the scene asks for it — the bias
+/// lives in the map's depth values, where Kilgard puts it.
+pub fn light_pass(
+    scene: &Scene,
+    prepared: &Prepared,
+    light: &ShadowLight,
+    size: u32,
+    offset: Option<PolygonOffset>,
+    colour: bool,
+) -> Pass {
+    let mut commands = vec![
+        Command::Viewport(Viewport {
+            x: 0,
+            y: 0,
+            width: size as i32,
+            height: size as i32,
+        }),
+        Command::Disable(Capability::Lighting),
+        Command::Enable(Capability::DepthTest),
+    ];
+    if colour {
+        commands.push(Command::ClearColor(Vec4::ONE));
+    } else {
+        commands.push(Command::ColorMask(ColorMask::NONE));
+    }
+    commands.push(Command::Clear(ClearMask {
+        color: colour,
+        depth: true,
+        stencil: false,
+    }));
+    commands.extend(light.view_commands());
+    if let Some(o) = offset {
+        commands.extend([
+            Command::Enable(Capability::PolygonOffsetFill),
+            Command::PolygonOffset {
+                factor: o.factor,
+                units: o.units,
+            },
+        ]);
+    }
+    commands.extend(objects(scene, prepared, |o| o.casts, Paint::Flat(Vec4::ONE)));
+    if offset.is_some() {
+        commands.push(Command::Disable(Capability::PolygonOffsetFill));
+    }
+    if !colour {
+        commands.push(Command::ColorMask(ColorMask::ALL));
+    }
+    Pass {
+        name: "light",
+        commands,
+    }
+}
+
+/// Back to the state every pass assumes at its start: depth LESS with writes, no alpha,
+/// stencil, blend or combiners, all colour channels, and `units` with texturing and
+/// texgen off (unit 0 left active).
+pub fn reset(units: &[u8]) -> Vec<Command> {
+    let mut commands = vec![
+        Command::DepthFunc(CompareFunc::Less),
+        Command::DepthMask(true),
+        Command::Disable(Capability::AlphaTest),
+        Command::Disable(Capability::StencilTest),
+        Command::Disable(Capability::Blend),
+        Command::Disable(Capability::RegisterCombiners),
+        Command::ColorMask(ColorMask::ALL),
+    ];
+    for &unit in units {
+        commands.push(Command::ActiveTexture(unit));
+        commands.extend(texturing_off());
+    }
+    commands.push(Command::ActiveTexture(0));
+    commands
+}
+
+/// The active unit's 1D and 2D texturing and its four texgen coordinates disabled.
+pub fn texturing_off() -> Vec<Command> {
+    let mut commands = vec![
+        Command::Disable(Capability::Texture1D),
+        Command::Disable(Capability::Texture2D),
+    ];
+    commands.extend(
+        TexCoord::ALL
+            .iter()
+            .map(|&c| Command::Disable(Capability::TextureGen(c))),
+    );
+    commands
+}
+
+/// Whether an object takes the shadow test (receivers) — others are drawn lit.
+pub fn receives(o: &Object) -> bool {
+    o.receives
+}
+
+/// The complement of [`receives`].
+pub fn does_not_receive(o: &Object) -> bool {
+    !o.receives
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_texture_matrix_maps_the_light_volume_into_the_unit_cube() {
+        let scene = Scene::default_scene();
+        let light = ShadowLight::of(&scene, "test").unwrap();
+        let m = light.texture_matrix();
+        // The point the light looks at, on its axis: s = t = ½.
+        let at = m * light.light.view.at.extend(1.0);
+        assert!((at.x / at.w - 0.5).abs() < 1e-5 && (at.y / at.w - 0.5).abs() < 1e-5);
+        // A point on the near plane has r/q = 0, on the far plane r/q = 1.
+        let eye = light.light.view.eye;
+        let dir = (light.light.view.at - eye).normalize();
+        for (d, r) in [(light.near, 0.0), (light.far, 1.0)] {
+            let p = m * (eye + d * dir).extend(1.0);
+            assert!((p.z / p.w - r).abs() < 1e-4, "r/q at {d}: {}", p.z / p.w);
+            // The linear plane agrees at both ends.
+            let s = light.linear_distance_plane().dot((eye + d * dir).extend(1.0));
+            assert!((s - r).abs() < 1e-5, "linear s at {d}: {s}");
+        }
+    }
+
+    #[test]
+    fn no_light_is_a_clear_error() {
+        let mut scene = Scene::default_scene();
+        scene.lights.clear();
+        let err = ShadowLight::of(&scene, "dual8").unwrap_err();
+        assert!(err.to_string().contains("needs a light"), "{err}");
+    }
+}
