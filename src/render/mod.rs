@@ -46,7 +46,7 @@ use crate::gpu::{
 use crate::metrics::{self, Mask, Metrics, MetricsError};
 use crate::ff::{Command, Precision};
 use crate::pipeline::{Counters, Pipeline, PipelineError, PipelineKind};
-use crate::scene::Scene;
+use crate::scene::{Scene, ShadowSettings};
 use crate::techniques::{self, MapImageSource, Plan, Prepared, TechniqueError};
 use crate::truth::{self, Truth, TruthError, TruthOptions};
 
@@ -71,6 +71,8 @@ pub enum RenderError {
     Metrics(#[from] MetricsError),
     #[error("the light's map is {size}² texels; at most {max}² fit a framebuffer")]
     MapTooLarge { size: u32, max: u32 },
+    #[error("the new shadow settings need another framebuffer (depth bits, stencil or size changed): start a new session")]
+    Restage,
     #[error("the depth-map readback is missing or malformed (slot {slot})")]
     MapImage { slot: u32 },
     #[error("image size `{text}`: {problem}")]
@@ -354,6 +356,44 @@ impl Session {
     /// The technique's name.
     pub fn technique(&self) -> &'static str {
         self.technique
+    }
+
+    /// Replaces the scene's `[shadow]` settings (bias, map size, filter…) and re-plans: the
+    /// context, framebuffer, pipeline and compiled programs stay; the maps are stale, so
+    /// the next frame makes them again. The framebuffer must suit the new plan (same depth
+    /// bits and stencil, large enough), else [`RenderError::Restage`].
+    pub fn restage(&mut self, shadow: &ShadowSettings) -> Result<(), RenderError> {
+        let mut scene = self.scene.clone();
+        scene.shadow = ShadowSettings {
+            technique: scene.shadow.technique.clone(),
+            ..shadow.clone()
+        };
+        let technique = techniques::lookup(&scene.shadow.technique)?;
+        let plan = (technique.plan)(&scene, &Prepared::new(&scene))?;
+        let (old, new) = (self.plan.framebuffer, plan.framebuffer);
+        if old.depth != new.depth
+            || old.stencil != new.stencil
+            || new.width > old.width
+            || new.height > old.height
+        {
+            return Err(RenderError::Restage);
+        }
+        self.ctx.make_current()?;
+        run(self.pipeline.as_mut(), &self.ctx, "setup", 0, &plan.setup)?;
+        self.pass_ms = vec![Vec::new(); plan.pass_count()];
+        self.plan = plan;
+        self.scene = scene;
+        self.maps_made = 0;
+        Ok(())
+    }
+
+    /// Executes the mask plan now and decodes the technique's mask of the last frame.
+    pub fn mask(&mut self) -> Result<Mask, RenderError> {
+        self.ctx.make_current()?;
+        let frames = self.frames_ms.len() as u32;
+        let p = self.pipeline.as_mut();
+        run(p, &self.ctx, "mask", frames, &self.plan.mask.commands)?;
+        Ok(self.plan.mask.decode(|slot| p.readback(slot))?)
     }
 
     /// Renders one frame and returns its time in milliseconds.
