@@ -6,11 +6,11 @@ mod bench;
 mod error;
 mod info;
 mod render;
-mod shadow_args;
 mod replay;
 mod scene_arg;
 mod script_io;
 mod shaders;
+mod shadow_args;
 mod truth;
 
 use std::path::PathBuf;

@@ -39,12 +39,11 @@ use image::RgbaImage;
 
 use crate::bench::Summary;
 use crate::ff::GlError;
+use crate::ff::{Command, Precision};
 use crate::gpu::{
-    Backend, ContextRequest, GpuContext, GpuError, RenderTarget, TargetSpec,
-    VirtualDisplay,
+    Backend, ContextRequest, GpuContext, GpuError, RenderTarget, TargetSpec, VirtualDisplay,
 };
 use crate::metrics::{self, Mask, Metrics, MetricsError};
-use crate::ff::{Command, Precision};
 use crate::pipeline::{Counters, Pipeline, PipelineError, PipelineKind};
 use crate::scene::{Scene, ShadowSettings};
 use crate::techniques::{self, MapImageSource, Plan, Prepared, TechniqueError};
@@ -322,9 +321,12 @@ impl Session {
             spec = spec.with_stencil();
         }
         let target = RenderTarget::new(&ctx, spec)?;
+        // Bound once: the binding is the context's state, and a later bind would reset the
+        // viewport behind the emulated pipeline's shadow copy. The pipeline starts from the
+        // target's viewport, as GL starts from the window's.
+        target.bind(&ctx);
         let precision = options.precision.unwrap_or(scene.shadow.precision);
         let mut pipeline = crate::pipeline::create_with(options.pipeline, &ctx, precision)?;
-        target.bind(&ctx);
         let setup = run(pipeline.as_mut(), &ctx, "setup", 0, &plan.setup);
         let pass_ms = vec![Vec::new(); plan.pass_count()];
         let mut session = Session {
@@ -399,9 +401,6 @@ impl Session {
     /// Renders one frame and returns its time in milliseconds.
     pub fn frame(&mut self) -> Result<f64, RenderError> {
         self.ctx.make_current()?;
-        if let Some(t) = &self.target {
-            t.bind(&self.ctx);
-        }
         let n = self.frames_ms.len() as u32 + 1;
         let make_maps = self.maps_made == 0 || self.options.remake_maps == RemakeMaps::Always;
         let start = Instant::now();
@@ -411,7 +410,13 @@ impl Session {
                 continue;
             }
             let pass_start = Instant::now();
-            run(self.pipeline.as_mut(), &self.ctx, pass.name, n, &pass.commands)?;
+            run(
+                self.pipeline.as_mut(),
+                &self.ctx,
+                pass.name,
+                n,
+                &pass.commands,
+            )?;
             if self.options.pass_times {
                 self.ctx.finish();
                 self.pass_ms[i].push(pass_start.elapsed().as_secs_f64() * 1e3);
@@ -479,7 +484,6 @@ impl Session {
     fn read_results(&mut self) -> Result<GpuResults, RenderError> {
         self.ctx.make_current()?;
         let target = self.target.as_ref().expect("target lives until release");
-        target.bind(&self.ctx);
         let frames = self.frames_ms.len() as u32;
         let p = self.pipeline.as_mut();
         // The picture first: mask plans may draw over it.
@@ -578,7 +582,10 @@ fn map_pictures<'r>(
         MapImageSource::Digits { .. } => {
             let d = |t: &[u8]| u16::from_ne_bytes([t[0], t[1]]);
             vec![
-                ("big-digit".to_string(), picture(&|t| grey((d(t) >> 8) as u8))),
+                (
+                    "big-digit".to_string(),
+                    picture(&|t| grey((d(t) >> 8) as u8)),
+                ),
                 (
                     "little-digit".to_string(),
                     picture(&|t| pseudo_colour((d(t) & 0xff) as u8)),
