@@ -25,15 +25,19 @@
 //! - *big* (one stage): alpha A = T0.a, B = ZERO inverted (1), C = T1.a, D = ZERO expanded
 //!   (−1): SUM = big(T0) − big(T1) → SPARE0.a. Final: G = SPARE0.a (clamped to [0, 1]), RGB
 //!   = D = PRIMARY_COLOR (A = B = C = ZERO). Alpha > 0 iff big(T0) > big(T1).
-//! - *little* (two stages): stage 0 alpha A = T0.a, B = 1, C = 1 − T1.a (UNSIGNED_INVERT),
-//!   D = 1, bias −½: SPARE0.a = ½ + big(T0) − big(T1); stage 0 RGB A = T0.rgb, B = 1,
+//! - *little* (two stages): stage 0 alpha A = T0.a, B = 1, C = HALF_BIAS_NEGATE(T1.a) =
+//!   ½ − big(T1), D = 1: SPARE0.a = big(T0) + ½ − big(T1); stage 0 RGB A = T0.rgb, B = 1,
 //!   C = T2.rgb, D = −1: SPARE1.rgb = little(T0) − little(T2). Stage 1 alpha: AB = ZERO·ZERO,
 //!   CD = SPARE1.b (SIGNED_IDENTITY, BLUE usage) · 1, MUX → SPARE0.a: (SPARE0.a ≥ ½) ?
 //!   little difference : 0. Final as above. Since pixels with big(T0) > big(T1) already
 //!   hold stencil 1, a fragment reaching the MUX with SPARE0.a ≥ ½ has equal big digits.
-//!   Equal big digits give SPARE0.a = exactly ½ in `Float` (k/255 + (1 − k/255) is exact
-//!   after the −½ only up to rounding — the ADD_SIGNED tie of H15 again; `Fixed8` holds ½
-//!   as 128/255 minus 128/255 bias: see `ff::precision`), which the digit-carry tests pin.
+//!
+//! **Equal big digits must land on the ≥ ½ side, in both precisions.** The obvious setup,
+//! big(T0) + (1 − big(T1)) with the −½ output bias, fails in `Fixed8`: 1 is 255 and −½ is
+//! −128, so a tie gives 127 < 128 and the little digits are never consulted (the digit
+//! carry test caught it). HALF_BIAS_NEGATE puts the ½ inside the mapping, where `Fixed8`
+//! makes it 128 − big(T1): a tie gives exactly 128. In `Float`, ½ − f is exact for
+//! f ≥ ¼ and within 2⁻²⁶ below, and f + (½ − f) rounds to exactly ½ either way.
 //!
 //! The slide writes pass 2 as "α = bigDigit(Tex0) < bigDigit(Tex1)"; that contradicts its
 //! own pass 3 and the lit test, so the sense here is the consistent one (T0 the map, T1
@@ -43,9 +47,9 @@
 //! pipeline only; `multidigit16-combine` is the same comparison with ARB combine.
 
 use crate::ff::{
-    Capability, CombinerBias, CombinerInput, CombinerOutput, CombinerParam, Command, CompareFunc,
-    ComponentUsage, FinalVariable, Mapping, PixelFormat, PixelType, Portion, Register, StencilOp,
-    SumOrMux, TexCoord, TexFormat, TextureTarget, Variable, Wrap,
+    Capability, CombinerInput, CombinerOutput, CombinerParam, Command, CompareFunc, ComponentUsage,
+    FinalVariable, Mapping, PixelFormat, PixelType, Portion, Register, StencilOp, SumOrMux,
+    TexCoord, TexFormat, TextureTarget, Variable, Wrap,
 };
 use crate::scene::Scene;
 
@@ -285,24 +289,21 @@ pub fn little_digit_combiners() -> Vec<Command> {
         Command::Enable(Capability::RegisterCombiners),
         Command::CombinerParameter(CombinerParam::NumGeneralCombiners(2)),
     ];
-    // Stage 0 alpha: SPARE0.a = big(T0) + (1 − big(T1)) − ½.
+    // Stage 0 alpha: SPARE0.a = big(T0)·1 + HALF_BIAS_NEGATE(big(T1))·1 = big(T0) + ½ − big(T1).
     c.extend(general(
         0,
         Portion::Alpha,
         [
             input(Register::Texture(0), Mapping::UnsignedIdentity, a),
             input(Register::Zero, Mapping::UnsignedInvert, a),
-            input(Register::Texture(1), Mapping::UnsignedInvert, a),
+            input(Register::Texture(1), Mapping::HalfBiasNegate, a),
             input(Register::Zero, Mapping::UnsignedInvert, a),
         ],
     ));
     c.push(Command::CombinerOutput {
         stage: 0,
         portion: Portion::Alpha,
-        output: CombinerOutput {
-            bias: CombinerBias::ByNegativeOneHalf,
-            ..CombinerOutput::DEFAULT
-        },
+        output: CombinerOutput::DEFAULT,
     });
     // Stage 0 RGB: SPARE1.rgb = little(T0) − little(T2).
     c.extend(general(
