@@ -1,11 +1,14 @@
 //! Measurements behind `fixedfunc bench`: each group times real work repeatedly and reports
 //! medians (with min and max), never a single run. Groups: `context` (creating each
 //! backend's contexts and producing the first read-back frame) and `pipeline` (the same
-//! frame through the emulated and the native path, interleaved).
+//! frame through the emulated and the native path, interleaved), `truth` and `techniques`
+//! (every shadow technique on both paths, split into light pass, readback + upload and eye
+//! passes).
 
 pub mod context;
 pub mod pipeline;
 mod stats;
+pub mod techniques;
 
 pub use stats::Summary;
 
@@ -19,8 +22,15 @@ pub enum BenchGroup {
     Pipeline,
     /// The CPU ground truth: rays per second on the default scene and on ~1M triangles.
     Truth,
+    /// Every technique on the default scene, both paths, frame time split by pass kind.
+    Techniques,
 }
 
 impl BenchGroup {
-    pub const ALL: [BenchGroup; 3] = [BenchGroup::Context, BenchGroup::Pipeline, BenchGroup::Truth];
+    pub const ALL: [BenchGroup; 4] = [
+        BenchGroup::Context,
+        BenchGroup::Pipeline,
+        BenchGroup::Truth,
+        BenchGroup::Techniques,
+    ];
 }

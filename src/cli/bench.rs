@@ -13,6 +13,7 @@ pub fn run(only: Option<BenchGroup>, repeats: usize, json: bool) -> Result<(), C
             BenchGroup::Context => run_context(repeats, json)?,
             BenchGroup::Pipeline => run_pipeline(repeats, json)?,
             BenchGroup::Truth => run_truth(repeats, json)?,
+            BenchGroup::Techniques => run_techniques(repeats, json)?,
         }
     }
     Ok(())
@@ -156,6 +157,68 @@ fn run_truth(runs: usize, json: bool) -> Result<(), CliError> {
             t.primary_rays_per_s / 1e6,
             t.shadow_rays_per_s / 1e6,
             t.total_ms
+        );
+    }
+    Ok(())
+}
+
+fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
+    let bar = ProgressBar::new(repeats.max(1) as u64 + 1).with_style(
+        ProgressStyle::with_template("techniques, interleaved frames [{bar:30}] {pos}/{len}")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    let (rows, skipped) =
+        fixedfunc::bench::techniques::measure(repeats, || bar.inc(1)).map_err(CliError::from)?;
+    bar.finish_and_clear();
+    if json {
+        let value = serde_json::json!({ "rows": rows, "skipped": skipped });
+        println!("{}", serde_json::to_string_pretty(&value)?);
+        return Ok(());
+    }
+    println!(
+        "techniques: default scene, 512² image, 512² map, maps made every frame; {} steady frames, interleaved; ms median [min–max]",
+        repeats.max(1)
+    );
+    println!(
+        "{:<22} {:<8} {:>9} {:>22} {:>8} {:>10} {:>8} {:>8} {:>7} {:>9}",
+        "technique",
+        "path",
+        "cold",
+        "frame",
+        "light",
+        "read+load",
+        "eye",
+        "×none",
+        "passes",
+        "programs"
+    );
+    let opt = |s: Option<fixedfunc::bench::Summary>| {
+        s.map_or("—".to_string(), |s| format!("{:.2}", s.median))
+    };
+    for r in &rows {
+        println!(
+            "{:<22} {:<8} {:>9.2} {:>22} {:>8} {:>10} {:>8.2} {:>8} {:>7} {:>9}",
+            r.technique,
+            fixedfunc::render::pipeline_name(r.pipeline),
+            r.cold_ms,
+            format!(
+                "{:.2} [{:.2}–{:.2}]",
+                r.frame.median, r.frame.min, r.frame.max
+            ),
+            opt(r.light),
+            opt(r.readback_upload),
+            r.eye.median,
+            r.vs_none.map_or("—".to_string(), |v| format!("{v:.2}")),
+            r.passes,
+            r.programs
+        );
+    }
+    for s in &skipped {
+        println!(
+            "skipped: {} on {}: {}",
+            s.technique,
+            fixedfunc::render::pipeline_name(s.pipeline),
+            s.reason
         );
     }
     Ok(())

@@ -1,0 +1,160 @@
+//! `bench --only techniques`: every shadow technique on the default scene (512² image, 512²
+//! map, its well-chosen bias), on the emulated and the native path, frames interleaved
+//! round-robin across all of them so machine noise hits each alike. Maps are re-made every
+//! frame (`RemakeMaps::Always`) so that each frame's split is comparable; with
+//! `pass_times` every pass ends in glFinish, so the split adds a little synchronisation to
+//! the frame time it explains.
+//!
+//! Per row: the frame (cold, and steady median/min/max over the repeats), split into the
+//! light pass, readback + upload (every other map pass) and the eye passes, and the frame
+//! time against `none` on the same path (the cost of the shadow as a ratio).
+
+use serde::Serialize;
+
+use crate::bench::Summary;
+use crate::pipeline::PipelineKind;
+use crate::render::{ImageSize, RemakeMaps, RenderError, RenderOptions, Session};
+use crate::scene::{PolygonOffset, Scene};
+use crate::techniques::REGISTRY;
+
+/// One technique on one path.
+#[derive(Debug, Clone, Serialize)]
+pub struct TechniqueRow {
+    pub technique: &'static str,
+    pub pipeline: PipelineKind,
+    pub cold_ms: f64,
+    pub frame: Summary,
+    /// The light pass (`light`), per frame.
+    pub light: Option<Summary>,
+    /// Every other map pass (readback, upload, copy), per frame.
+    pub readback_upload: Option<Summary>,
+    /// The eye passes, per frame.
+    pub eye: Summary,
+    /// Steady frame median / `none`'s on the same path.
+    pub vs_none: Option<f64>,
+    pub passes: usize,
+    pub programs: u64,
+}
+
+/// A technique or path that could not run (e.g. register combiners on the native path).
+#[derive(Debug, Clone, Serialize)]
+pub struct Skipped {
+    pub technique: &'static str,
+    pub pipeline: PipelineKind,
+    pub reason: String,
+}
+
+/// The bias each technique is benchmarked with (the one its tests judge it at).
+pub fn bench_offset(technique: &str) -> Option<PolygonOffset> {
+    let units = match technique {
+        "none" => return None,
+        // Three 8-bit steps in a 24-bit buffer (two clear steps between map and ramp).
+        "dual8" => 3.0 * 16_777_215.0 / 255.0 / 2.0,
+        "multidigit16" | "multidigit16-combine" => 256.0,
+        _ => 4.0,
+    };
+    Some(PolygonOffset { factor: 1.0, units })
+}
+
+/// Runs the group: `repeats` steady frames after the cold one, per row.
+pub fn measure(
+    repeats: usize,
+    mut tick: impl FnMut(),
+) -> Result<(Vec<TechniqueRow>, Vec<Skipped>), RenderError> {
+    let mut sessions = Vec::new();
+    let mut skipped = Vec::new();
+    for technique in REGISTRY {
+        for pipeline in [PipelineKind::Emulate, PipelineKind::Native] {
+            let mut scene = Scene::default_scene();
+            scene.shadow.map_size = 512;
+            scene.shadow.polygon_offset = bench_offset(technique.name);
+            let options = RenderOptions {
+                pipeline,
+                technique: Some(technique.name.to_string()),
+                size: Some(ImageSize {
+                    width: 512,
+                    height: 512,
+                }),
+                remake_maps: RemakeMaps::Always,
+                pass_times: true,
+                ..RenderOptions::default()
+            };
+            match Session::new(&scene, &options) {
+                Ok(s) => sessions.push((technique.name, pipeline, s)),
+                Err(e) => skipped.push(Skipped {
+                    technique: technique.name,
+                    pipeline,
+                    reason: e.to_string(),
+                }),
+            }
+        }
+    }
+    // Round-robin: frame k of every session before frame k + 1 of any. A session whose
+    // frame fails (no path for a feature) is dropped with its reason.
+    for _ in 0..=repeats.max(1) {
+        let mut i = 0;
+        while i < sessions.len() {
+            match sessions[i].2.frame() {
+                Ok(_) => i += 1,
+                Err(e) => {
+                    let (technique, pipeline, _) = sessions.remove(i);
+                    skipped.push(Skipped {
+                        technique,
+                        pipeline,
+                        reason: e.to_string(),
+                    });
+                }
+            }
+        }
+        tick();
+    }
+    let truth = crate::truth::truth(&Scene::default_scene(), &Default::default())?;
+    let mut rows = Vec::new();
+    for (technique, pipeline, session) in sessions {
+        let outcome = session.finish(Some(&truth))?;
+        let steady = |ms: &[f64]| Summary::of(ms.get(1..).unwrap_or(&[]));
+        let sum_by = |pick: &dyn Fn(&crate::render::PassTime) -> bool| -> Option<Summary> {
+            let chosen: Vec<_> = outcome.pass_times.iter().filter(|p| pick(p)).collect();
+            if chosen.is_empty() {
+                return None;
+            }
+            let frames = chosen[0].ms.len();
+            let per_frame: Vec<f64> = (0..frames)
+                .map(|f| {
+                    chosen
+                        .iter()
+                        .map(|p| p.ms.get(f).copied().unwrap_or(0.0))
+                        .sum()
+                })
+                .collect();
+            steady(&per_frame)
+        };
+        let Some(frame) = outcome.timings.steady else {
+            continue;
+        };
+        rows.push(TechniqueRow {
+            technique,
+            pipeline,
+            cold_ms: outcome.timings.cold_ms,
+            frame,
+            light: sum_by(&|p| p.map && p.name == "light"),
+            readback_upload: sum_by(&|p| p.map && p.name != "light"),
+            eye: sum_by(&|p| !p.map).unwrap_or(frame),
+            vs_none: None,
+            passes: outcome.passes,
+            programs: outcome.counters.programs_compiled,
+        });
+    }
+    let none: Vec<(PipelineKind, f64)> = rows
+        .iter()
+        .filter(|r| r.technique == "none")
+        .map(|r| (r.pipeline, r.frame.median))
+        .collect();
+    for r in &mut rows {
+        r.vs_none = none
+            .iter()
+            .find(|(p, _)| *p == r.pipeline)
+            .map(|(_, n)| r.frame.median / n);
+    }
+    Ok((rows, skipped))
+}
