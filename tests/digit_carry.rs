@@ -8,8 +8,9 @@
 //! - Register combiners (emulated; oracle = the CPU model of the NV spec): lit iff the big
 //!   pass or the little pass writes, in both precisions, for every case here. The GPU
 //!   agrees with the model's alpha on every case.
-//! (`multidigit16-combine`, the ARB combine version, is checked against this one on whole
-//! scenes in `tests/shadow_maps.rs`.)
+//!
+//! `multidigit16-combine`, the ARB combine version, is checked against this one on whole
+//! scenes in `tests/shadow_maps.rs`.
 
 mod support;
 

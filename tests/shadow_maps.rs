@@ -151,8 +151,7 @@ fn multidigit16_is_refused_by_the_native_path_with_the_reason() {
     let err = Run::new("multidigit16")
         .on(PipelineKind::Native)
         .try_render()
-        .err()
-        .expect("the native path has no register combiners");
+        .expect_err("the native path has no register combiners");
     assert!(err.to_string().contains("NV_register_combiners"), "{err}");
 }
 

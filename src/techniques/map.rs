@@ -4,8 +4,8 @@
 //!
 //! **Outside the map is lit.** Fragments whose (s/q, t/q) fall outside the light's volume
 //! read the border: CLAMP_TO_BORDER with a white border (depth 1, the far plane; intensity
-//! 1) makes them lit, which is what the truth says of a surface the light's frustum does not
-//! cover. The era's programs often left CLAMP and got streaks; the border is the
+//! one) makes them lit, which is what the truth says of a surface the light's frustum does
+//! not cover. The era's programs often left CLAMP and got streaks; the border is the
 //! documented fix of the time (GL 1.3) and keeps the comparison about precision and bias.
 
 use std::sync::Arc;
