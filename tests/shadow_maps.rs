@@ -293,3 +293,24 @@ fn maps_are_made_once_on_a_static_scene_unless_asked_every_frame() {
     let none = Run::new("none").render();
     assert_eq!(none.maps_made, 0);
 }
+
+#[test]
+fn the_readback_rule_is_the_drivers_or_the_programs_own() {
+    // Mesa truncates UNSIGNED_BYTE depth (notes H4): reading FLOAT and truncating on the CPU
+    // gives the same map, bit for bit; rounding lifts about half the texels by one step.
+    use fixedfunc::scene::ReadbackRule;
+    let units = units_for_8bit_steps(3.0);
+    let with = |rule| {
+        let mut scene = Scene::default_scene();
+        scene.shadow.readback = rule;
+        let mut run = Run::new("dual8").offset(1.0, units).scene(scene);
+        run.offset = Some((1.0, units));
+        run.render()
+    };
+    let driver = with(ReadbackRule::Driver);
+    let truncate = with(ReadbackRule::Truncate);
+    let round = with(ReadbackRule::Round);
+    assert_eq!(driver.mask, truncate.mask, "Mesa's byte readback truncates");
+    assert_eq!(driver.image, truncate.image);
+    assert_ne!(driver.mask, round.mask, "rounding changes the 8-bit map");
+}

@@ -1,9 +1,10 @@
 //! The shadow-map parameters every rendering command accepts, overriding the scene's
-//! `[shadow]` table: map size, light depth bits, polygon offset, precision, filter.
+//! `[shadow]` table: map size, light depth bits, polygon offset, precision, filter,
+//! readback rule.
 
 use clap::Args;
 use fixedfunc::gpu::DepthBits;
-use fixedfunc::scene::{MapFilter, PolygonOffset, Precision, Scene};
+use fixedfunc::scene::{MapFilter, PolygonOffset, Precision, ReadbackRule, Scene};
 
 /// `--map-size`, `--depth-bits`, `--offset`, `--precision`, `--filter`.
 #[derive(Args, Debug, Clone, Default)]
@@ -24,6 +25,10 @@ pub struct ShadowArgs {
     /// Shadow map filter (default: the scene's `filter`).
     #[arg(long, value_enum)]
     pub filter: Option<MapFilter>,
+    /// How integer depth maps are read back: the driver's conversion, or FLOAT converted
+    /// on the CPU by truncation or rounding (default: the scene's `readback`).
+    #[arg(long, value_enum)]
+    pub readback: Option<ReadbackRule>,
 }
 
 /// A polygon offset on the command line, or none.
@@ -68,6 +73,9 @@ impl ShadowArgs {
         }
         if let Some(v) = self.filter {
             s.filter = v;
+        }
+        if let Some(v) = self.readback {
+            s.readback = v;
         }
     }
 }

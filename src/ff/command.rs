@@ -81,6 +81,25 @@ pub enum TexData {
     /// else sees it (a missing slot stops execution); the state model alone, which has no
     /// readbacks, records the level with unknown texels.
     Readback(u32),
+    /// The depth values an earlier glReadPixels(…, DEPTH_COMPONENT, FLOAT, buf) left in
+    /// `slot`, converted on the CPU — client code between the two calls — to one `ty`
+    /// (UNSIGNED_BYTE or UNSIGNED_SHORT) per value by `rule`. What a program does when it
+    /// will not leave the float-to-integer rule to the driver. A script writes it as
+    /// `fixedfunc_depth_<ubyte|ushort>_<truncate|round>(readback_<slot>)`.
+    ConvertedDepth {
+        slot: u32,
+        ty: PixelType,
+        rule: DepthConversion,
+    },
+}
+
+/// The CPU's float-to-integer depth rules (z clamped to [0, 1], M = 2ⁿ − 1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DepthConversion {
+    /// ⌊z·M⌋.
+    Truncate,
+    /// ⌊z·M + ½⌋.
+    Round,
 }
 
 impl TexData {
@@ -88,7 +107,7 @@ impl TexData {
     pub fn bytes(&self) -> Option<&Arc<[u8]>> {
         match self {
             TexData::Bytes(b) => Some(b),
-            TexData::Null | TexData::Readback(_) => None,
+            TexData::Null | TexData::Readback(_) | TexData::ConvertedDepth { .. } => None,
         }
     }
 }

@@ -38,7 +38,9 @@ pub use combiners::{
     FinalVariable, GeneralStage, Mapping, Portion, Product, Register, RegisterCombiners,
     StagePortion, SumOrMux, Variable, MAX_GENERAL_COMBINERS,
 };
-pub use command::{Capability, Command, CopyTexImage, ReadPixels, TexData, TexImage, TexSubImage};
+pub use command::{
+    Capability, Command, CopyTexImage, DepthConversion, ReadPixels, TexData, TexImage, TexSubImage,
+};
 pub use error::{GlError, GlErrorKind, GlResult};
 pub use fragment::{
     AlphaTest, Blend, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc, DepthRange,

@@ -47,6 +47,10 @@ pub enum PipelineError {
     /// glTexImage named a readback buffer no ReadPixels has filled.
     #[error("glTexImage reads readback_{slot}, which no glReadPixels has filled")]
     MissingReadback { slot: u32 },
+    /// A converted depth readback names a slot that does not hold FLOAT depth (or asks
+    /// for a type other than UNSIGNED_BYTE / UNSIGNED_SHORT).
+    #[error("readback_{slot} is not FLOAT depth, or the conversion is not to UNSIGNED_BYTE or UNSIGNED_SHORT")]
+    NotFloatDepth { slot: u32 },
     /// A GL object could not be created.
     #[error("GL object creation failed: {0}")]
     Object(String),

@@ -16,8 +16,11 @@ use std::collections::HashMap;
 
 use serde::Serialize;
 
-use crate::ff::{Command, FixedState, GlError, PixelFormat, PixelType, TexData, TexImage};
+use crate::ff::{
+    Command, DepthConversion, FixedState, GlError, PixelFormat, PixelType, TexData, TexImage,
+};
 use crate::gpu::GpuContext;
+use crate::gpu::{depth_to_u16, depth_to_u8, DepthRule};
 
 pub use error::{PipelineError, ShaderError, ShaderStage};
 
@@ -96,7 +99,49 @@ pub(crate) fn resolve_readback<'c>(
                 ..t.clone()
             })))
         }
+        Command::TexImage(
+            t @ TexImage {
+                data: TexData::ConvertedDepth { slot, ty, rule },
+                ..
+            },
+        ) => {
+            let r = readbacks
+                .get(slot)
+                .ok_or(PipelineError::MissingReadback { slot: *slot })?;
+            let bytes =
+                convert_depth(r, *ty, *rule).ok_or(PipelineError::NotFloatDepth { slot: *slot })?;
+            Ok(Cow::Owned(Command::TexImage(TexImage {
+                data: TexData::Bytes(bytes.into()),
+                ..t.clone()
+            })))
+        }
         _ => Ok(Cow::Borrowed(cmd)),
+    }
+}
+
+/// FLOAT depth bytes → one `ty` per value by `rule` (`gpu::readback`'s conversions, which
+/// state and test the boundaries); `None` when the readback is not FLOAT depth or `ty` is
+/// neither UNSIGNED_BYTE nor UNSIGNED_SHORT.
+pub fn convert_depth(r: &Readback, ty: PixelType, rule: DepthConversion) -> Option<Vec<u8>> {
+    if (r.format, r.ty) != (PixelFormat::DepthComponent, PixelType::Float) {
+        return None;
+    }
+    let rule = match rule {
+        DepthConversion::Truncate => DepthRule::Truncate,
+        DepthConversion::Round => DepthRule::Round,
+    };
+    let depths = r
+        .bytes
+        .chunks_exact(4)
+        .map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]));
+    match ty {
+        PixelType::UnsignedByte => Some(depths.map(|z| depth_to_u8(z, rule)).collect()),
+        PixelType::UnsignedShort => Some(
+            depths
+                .flat_map(|z| depth_to_u16(z, rule).to_ne_bytes())
+                .collect(),
+        ),
+        PixelType::UnsignedInt | PixelType::Float => None,
     }
 }
 

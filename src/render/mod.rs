@@ -546,18 +546,39 @@ fn map_pictures<'r>(
     source: MapImageSource,
     readback: impl Fn(u32) -> Option<&'r crate::pipeline::Readback>,
 ) -> Result<Vec<(String, RgbaImage)>, RenderError> {
-    let (slot, size, bytes_per) = match source {
-        MapImageSource::DepthFloat { slot, size } => (slot, size, 4),
-        MapImageSource::Bytes { slot, size } => (slot, size, 1),
-        MapImageSource::Digits { slot, size } => (slot, size, 2),
+    let (slot, size, from_float, out_bytes) = match source {
+        MapImageSource::DepthFloat { slot, size } => (slot, size, None, 4),
+        MapImageSource::Bytes {
+            slot,
+            size,
+            from_float,
+        } => (slot, size, from_float, 1),
+        MapImageSource::Digits {
+            slot,
+            size,
+            from_float,
+        } => (slot, size, from_float, 2),
     };
     let n = size as usize * size as usize;
+    let in_bytes = if from_float.is_some() { 4 } else { out_bytes };
     let r = readback(slot)
-        .filter(|r| r.bytes.len() == n * bytes_per)
+        .filter(|r| r.bytes.len() == n * in_bytes)
         .ok_or(RenderError::MapImage { slot })?;
+    // A converted map: the same conversion the upload used.
+    let bytes: Vec<u8> = match from_float {
+        None => r.bytes.clone(),
+        Some(rule) => {
+            let ty = if out_bytes == 1 {
+                crate::ff::PixelType::UnsignedByte
+            } else {
+                crate::ff::PixelType::UnsignedShort
+            };
+            crate::pipeline::convert_depth(r, ty, rule).ok_or(RenderError::MapImage { slot })?
+        }
+    };
+    let bytes_per = out_bytes;
     let row = size as usize * bytes_per;
-    let texels: Vec<&[u8]> = r
-        .bytes
+    let texels: Vec<&[u8]> = bytes
         .chunks_exact(row)
         .rev()
         .flat_map(|line| line.chunks_exact(bytes_per))

@@ -2,7 +2,7 @@
 //! finds with the key's dotted path (`light[0].near`) and its line.
 //!
 //! Defaults: a missing `[camera]` or `[image]` is the default scene's; a missing `[shadow]`
-//! is technique `none`, a 256² D24 map, no offset, float precision, truncating readback.
+//! is technique `none`, a 256² D24 map, no offset, float precision, the driver's depth readback, nearest filtering.
 //! A light's `up` defaults to +y, or −z when the light looks along ±y (gluLookAt needs an
 //! up that is not parallel to the view); an explicit `up` along the view is an error.
 

@@ -303,7 +303,8 @@ pub struct ShadowSettings {
     pub polygon_offset: Option<PolygonOffset>,
     /// Default Float.
     pub precision: Precision,
-    /// Default Truncate.
+    /// How integer depth maps are read back. Default Driver: glReadPixels with the integer
+    /// type, as the era's programs did (Mesa truncates bytes and rounds shorts).
     pub readback: ReadbackRule,
     /// Default Nearest.
     pub filter: MapFilter,
@@ -317,7 +318,7 @@ impl Default for ShadowSettings {
             depth: DepthBits::D24,
             polygon_offset: None,
             precision: Precision::Float,
-            readback: ReadbackRule::Truncate,
+            readback: ReadbackRule::Driver,
             filter: MapFilter::Nearest,
         }
     }

@@ -14,7 +14,8 @@
 //!                  glAlphaFunc(GREATER, 0.5); draw receivers (others without textures)
 //! ```
 //! **The comparison, as numbers** (notes H4, H6): the map holds M = ⌊255·z⌋ (Mesa's
-//! UNSIGNED_BYTE readback truncates), the ramp gives the fragment F = ⌊256·r/q⌋ clamped to
+//! UNSIGNED_BYTE readback truncates; the scene's `readback` rule can impose truncation or
+//! rounding on any driver, `map::DepthTransfer`), the ramp gives the fragment F = ⌊256·r/q⌋ clamped to
 //! 255; alpha = M/255 + (1 − F/255) − ½, and GREATER ½ passes iff M > F — equality is
 //! shadowed (the ADD_SIGNED tie, H1), and a 1-LSB difference is at the mercy of rounding
 //! (H12 and `ff::precision`). Since F − M ∈ {0, 1} for the same z, a surface shadows itself
@@ -26,12 +27,13 @@ use glam::Vec4;
 
 use crate::ff::{
     Capability, CombineArg, CombineFunc, CombineOperand, CombineSource, Command, CompareFunc,
-    PixelFormat, PixelType, TexCoord, TexEnvMode, TexEnvParam, TexFormat, TextureTarget, Wrap,
+    PixelFormat, PixelType, TexCoord, TexData, TexEnvMode, TexEnvParam, TexFormat, TextureTarget,
+    Wrap,
 };
 use crate::scene::Scene;
 
 use super::map::{
-    bind_map, map_parameters, ramp, read_map, upload_map, MapSettings, MAP_SLOT, RAMP_TEXTURE,
+    bind_map, map_parameters, ramp, upload_map, DepthTransfer, MapSettings, MAP_SLOT, RAMP_TEXTURE,
 };
 use super::parts::{
     dim_pass, does_not_receive, eye_linear, light_pass, lighting, objects, receives, reset,
@@ -61,19 +63,19 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
             dual_texture_pass(scene, prepared, &light, look, &ramp_planes),
         ]
     };
+    let transfer = DepthTransfer {
+        ty: PixelType::UnsignedByte,
+        rule: map.readback,
+    };
     Ok(Plan {
         setup: setup(&map),
         maps: vec![
             light_pass(scene, prepared, &light, map.size, map.offset, false),
             Pass {
                 name: "readback",
-                commands: vec![read_map(
-                    map.size,
-                    PixelFormat::DepthComponent,
-                    PixelType::UnsignedByte,
-                )],
+                commands: vec![transfer.read(map.size)],
             },
-            upload_pass(map.size),
+            upload_pass(map.size, transfer.data()),
         ],
         passes: eye(Look::Shaded),
         mask: colour_mask(scene, eye(Look::Mask)),
@@ -83,6 +85,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
             source: MapImageSource::Bytes {
                 slot: MAP_SLOT,
                 size: map.size,
+                from_float: transfer.conversion(),
             },
         }),
         notes: Vec::new(),
@@ -100,13 +103,13 @@ pub fn setup(map: &MapSettings) -> Vec<Command> {
 }
 
 /// glTexImage2D of the read-back bytes into the INTENSITY8 map.
-pub fn upload_pass(size: u32) -> Pass {
+pub fn upload_pass(size: u32, data: TexData) -> Pass {
     Pass {
         name: "upload",
         commands: vec![
             Command::ActiveTexture(0),
             bind_map(),
-            upload_map(size, TexFormat::Intensity8, PixelFormat::Luminance),
+            upload_map(size, TexFormat::Intensity8, PixelFormat::Luminance, data),
         ],
     }
 }

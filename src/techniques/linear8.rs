@@ -10,6 +10,9 @@
 //!        upload:   glTexImage2D(TEXTURE_2D, 0, INTENSITY8, map, map, 0, LUMINANCE, UNSIGNED_BYTE, buf)
 //! frame  dim, lit: as `dual8`, with unit 1's S = the same linear distance plane (q = 1)
 //! ```
+//! The map is colour, not depth: it is read back as ALPHA bytes whatever the scene's
+//! depth `readback` rule says (the ramp already made the bytes).
+//!
 //! The distance plane gives s = (d − near)/(far − near) with d the eye-planar distance from
 //! the light (`ShadowLight::linear_distance_plane`); the ramp stores ⌊256·s⌋, exactly, in the
 //! alpha channel (i/255 is exact in RGBA8), so the map holds M = ⌊256·(s + b)⌋ and the
@@ -24,8 +27,8 @@
 use glam::Vec4;
 
 use crate::ff::{
-    Capability, ClearMask, ColorMask, Command, PixelFormat, PixelType, TexCoord, TexEnvMode,
-    TexEnvParam, TextureTarget, Viewport,
+    Capability, ClearMask, ColorMask, Command, PixelFormat, PixelType, TexCoord, TexData,
+    TexEnvMode, TexEnvParam, TextureTarget, Viewport,
 };
 use crate::scene::Scene;
 
@@ -75,7 +78,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
                     PixelType::UnsignedByte,
                 )],
             },
-            upload_pass(map.size),
+            upload_pass(map.size, TexData::Readback(MAP_SLOT)),
         ],
         passes: eye(Look::Shaded),
         mask: colour_mask(scene, eye(Look::Mask)),
@@ -85,6 +88,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
             source: MapImageSource::Bytes {
                 slot: MAP_SLOT,
                 size: map.size,
+                from_float: None,
             },
         }),
         notes: Vec::new(),

@@ -13,11 +13,11 @@ use std::sync::Arc;
 use glam::Vec4;
 
 use crate::ff::{
-    Command, Filter, PixelFormat, PixelType, TexData, TexFormat, TexImage, TexParam, TextureTarget,
-    Wrap,
+    Command, DepthConversion, Filter, PixelFormat, PixelType, TexData, TexFormat, TexImage,
+    TexParam, TextureTarget, Wrap,
 };
 use crate::gpu::DepthBits;
-use crate::scene::{MapFilter, PolygonOffset, Scene};
+use crate::scene::{MapFilter, PolygonOffset, ReadbackRule, Scene};
 
 use super::{FramebufferNeeds, TechniqueError};
 
@@ -42,6 +42,7 @@ pub struct MapSettings {
     pub depth: DepthBits,
     pub offset: Option<PolygonOffset>,
     pub filter: MapFilter,
+    pub readback: ReadbackRule,
 }
 
 impl MapSettings {
@@ -51,6 +52,7 @@ impl MapSettings {
             depth: scene.shadow.depth,
             offset: scene.shadow.polygon_offset,
             filter: scene.shadow.filter,
+            readback: scene.shadow.readback,
         }
     }
 
@@ -153,8 +155,61 @@ pub fn read_map(size: u32, format: PixelFormat, ty: PixelType) -> Command {
     })
 }
 
-/// glTexImage2D of the bytes in [`MAP_SLOT`] into the bound map.
-pub fn upload_map(size: u32, internal_format: TexFormat, format: PixelFormat) -> Command {
+/// How an integer depth map travels from the depth buffer to the texture: one `ty`
+/// (UNSIGNED_BYTE for 8-bit maps, UNSIGNED_SHORT for the two digits) per texel, by the
+/// scene's readback rule. `Driver`: glReadPixels with the integer type, the driver's own
+/// conversion (Mesa truncates bytes and rounds shorts, `gpu::readback`). `Truncate` /
+/// `Round`: glReadPixels as FLOAT and the program converts on the CPU
+/// ([`TexData::ConvertedDepth`]) — the same rule on every driver.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DepthTransfer {
+    pub ty: PixelType,
+    pub rule: ReadbackRule,
+}
+
+impl DepthTransfer {
+    /// The readback into [`MAP_SLOT`].
+    pub fn read(&self, size: u32) -> Command {
+        let ty = match self.rule {
+            ReadbackRule::Driver => self.ty,
+            ReadbackRule::Truncate | ReadbackRule::Round => PixelType::Float,
+        };
+        read_map(size, PixelFormat::DepthComponent, ty)
+    }
+
+    /// What glTexImage2D reads.
+    pub fn data(&self) -> TexData {
+        match self.rule {
+            ReadbackRule::Driver => TexData::Readback(MAP_SLOT),
+            ReadbackRule::Truncate => TexData::ConvertedDepth {
+                slot: MAP_SLOT,
+                ty: self.ty,
+                rule: DepthConversion::Truncate,
+            },
+            ReadbackRule::Round => TexData::ConvertedDepth {
+                slot: MAP_SLOT,
+                ty: self.ty,
+                rule: DepthConversion::Round,
+            },
+        }
+    }
+
+    /// The CPU rule, when the program converts.
+    pub fn conversion(&self) -> Option<DepthConversion> {
+        match self.data() {
+            TexData::ConvertedDepth { rule, .. } => Some(rule),
+            _ => None,
+        }
+    }
+}
+
+/// glTexImage2D of `data` into the bound map.
+pub fn upload_map(
+    size: u32,
+    internal_format: TexFormat,
+    format: PixelFormat,
+    data: TexData,
+) -> Command {
     Command::TexImage(TexImage {
         target: TextureTarget::Texture2D,
         level: 0,
@@ -164,7 +219,7 @@ pub fn upload_map(size: u32, internal_format: TexFormat, format: PixelFormat) ->
         border: 0,
         format,
         ty: PixelType::UnsignedByte,
-        data: TexData::Readback(MAP_SLOT),
+        data,
     })
 }
 

@@ -233,11 +233,21 @@ pub struct MapImagePlan {
 pub enum MapImageSource {
     /// Depth as FLOAT: one grey image, 0 black (near) to 1 white (far).
     DepthFloat { slot: u32, size: u32 },
-    /// One byte per texel (an 8-bit map): one grey image.
-    Bytes { slot: u32, size: u32 },
+    /// One byte per texel (an 8-bit map): one grey image. With `from_float`, the slot
+    /// holds FLOAT depth that the program converts by that rule.
+    Bytes {
+        slot: u32,
+        size: u32,
+        from_float: Option<crate::ff::DepthConversion>,
+    },
     /// Depth as UNSIGNED_SHORT: the big digit (high byte) grey, the little digit (low byte)
-    /// pseudo-coloured, as on Kilgard's slide of where the information is.
-    Digits { slot: u32, size: u32 },
+    /// pseudo-coloured, as on Kilgard's slide of where the information is. With
+    /// `from_float`, as for `Bytes`.
+    Digits {
+        slot: u32,
+        size: u32,
+        from_float: Option<crate::ff::DepthConversion>,
+    },
 }
 
 /// Commands executed once after the last frame, and how their readback becomes a mask.

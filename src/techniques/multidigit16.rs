@@ -14,7 +14,7 @@
 //!                  AlphaFunc(GREATER, 0); stencil NOTEQUAL 1; draw receivers lit
 //! ```
 //! **Digits** (notes H5, H16). The map holds D = round(65535·z) (Mesa's UNSIGNED_SHORT
-//! readback); on a little-endian machine its bytes load as L = D & 255 (the little digit)
+//! readback; the scene's `readback` rule can impose either rule, `map::DepthTransfer`); on a little-endian machine its bytes load as L = D & 255 (the little digit)
 //! and A = D >> 8 (the big digit) of T0. The fragment's digits come from two 256-texel
 //! ramps: big = texel ⌊256·s⌋ of the CLAMP_TO_EDGE ramp at s = r/q (unit 1), little = texel
 //! ⌊256·s'⌋ mod 256 of the REPEAT ramp at s' = 256·r/q (unit 2). Lit iff the map's 16-bit
@@ -54,7 +54,7 @@ use crate::ff::{
 use crate::scene::Scene;
 
 use super::map::{
-    bind_map, map_parameters, ramp, read_map, upload_map, MapSettings, MAP_SLOT, RAMP_TEXTURE,
+    bind_map, map_parameters, ramp, upload_map, DepthTransfer, MapSettings, MAP_SLOT, RAMP_TEXTURE,
     REPEAT_RAMP_TEXTURE,
 };
 use super::parts::{
@@ -86,7 +86,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
         passes: eye(Look::Shaded),
         mask: colour_mask(scene, eye(Look::Mask)),
         framebuffer: map.framebuffer(scene, true),
-        map_image: Some(digit_map_image(map.size)),
+        map_image: Some(digit_map_image(&map)),
         notes: filter_note(&map),
     })
 }
@@ -122,15 +122,12 @@ pub fn digit_map_passes(
     light: &ShadowLight,
     map: &MapSettings,
 ) -> Vec<Pass> {
+    let transfer = digit_transfer(map);
     vec![
         light_pass(scene, prepared, light, map.size, map.offset, false),
         Pass {
             name: "readback",
-            commands: vec![read_map(
-                map.size,
-                PixelFormat::DepthComponent,
-                PixelType::UnsignedShort,
-            )],
+            commands: vec![transfer.read(map.size)],
         },
         Pass {
             name: "upload",
@@ -141,19 +138,29 @@ pub fn digit_map_passes(
                     map.size,
                     TexFormat::Luminance8Alpha8,
                     PixelFormat::LuminanceAlpha,
+                    transfer.data(),
                 ),
             ],
         },
     ]
 }
 
+/// UNSIGNED_SHORT by the scene's readback rule.
+pub fn digit_transfer(map: &MapSettings) -> DepthTransfer {
+    DepthTransfer {
+        ty: PixelType::UnsignedShort,
+        rule: map.readback,
+    }
+}
+
 /// Both digits of the read-back map, for `--depth-map`.
-pub fn digit_map_image(size: u32) -> MapImagePlan {
+pub fn digit_map_image(map: &MapSettings) -> MapImagePlan {
     MapImagePlan {
         commands: Vec::new(),
         source: MapImageSource::Digits {
             slot: MAP_SLOT,
-            size,
+            size: map.size,
+            from_float: digit_transfer(map).conversion(),
         },
     }
 }

@@ -67,7 +67,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
         passes: eye(Look::Shaded),
         mask: colour_mask(scene, eye(Look::Mask)),
         framebuffer: map.framebuffer(scene, true),
-        map_image: Some(digit_map_image(map.size)),
+        map_image: Some(digit_map_image(&map)),
         notes: filter_note(&map),
     })
 }

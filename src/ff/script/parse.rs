@@ -15,6 +15,8 @@ type Res<T> = Result<T, ScriptError>;
 /// One argument as written.
 #[derive(Debug, Clone, PartialEq)]
 enum Arg<'a> {
+    /// `f(name)`: a client helper applied to a buffer (converted depth readbacks).
+    Call { func: &'a str, arg: &'a str },
     /// A number literal, `INFINITY` or `NAN`, optionally negated.
     Num { neg: bool, text: &'a str },
     /// An identifier, optionally `+ n`.
@@ -139,6 +141,12 @@ impl<'a> Cursor<'_, 'a> {
                             .ok_or_else(|| self.error("an index after '+'"))?;
                         Ok(Arg::Name { name, offset })
                     }
+                    Some(Tok::LParen) => {
+                        self.pos += 1;
+                        let arg = self.ident("a buffer name")?;
+                        self.eat(Tok::RParen, "')'")?;
+                        Ok(Arg::Call { func: name, arg })
+                    }
                     _ => Ok(Arg::Name { name, offset: 0 }),
                 }
             }
@@ -228,6 +236,7 @@ impl Call<'_, '_> {
             Arg::Name { name, offset } => format!("{name} + {offset}"),
             Arg::Or(names) => names.join(" | "),
             Arg::Array { ty, .. } => format!("a ({ty}[]) array"),
+            Arg::Call { func, arg } => format!("{func}({arg})"),
         });
         ScriptError::BadArgument {
             line: self.line,
@@ -352,8 +361,21 @@ impl Call<'_, '_> {
             self.f32(from + 3)?,
         ))
     }
-    /// glTexImage's data: NULL, a readback buffer `readback_<n>`, or a pixel array.
+    /// glTexImage's data: NULL, a readback buffer `readback_<n>`, a converted depth
+    /// readback `fixedfunc_depth_<ubyte|ushort>_<truncate|round>(readback_<n>)`, or a pixel
+    /// array.
     pub(super) fn tex_data(&self, i: usize) -> Res<TexData> {
+        if let Some(Arg::Call { func, arg }) = self.args.get(i) {
+            let (ty, rule) = depth_helper(func).ok_or_else(|| {
+                self.bad(i, "a depth helper: fixedfunc_depth_ubyte_truncate, fixedfunc_depth_ubyte_round, fixedfunc_depth_ushort_truncate or fixedfunc_depth_ushort_round")
+            })?;
+            let slot = arg
+                .strip_prefix("readback_")
+                .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+                .and_then(|d| d.parse().ok())
+                .ok_or_else(|| self.bad(i, "a readback slot readback_<n> inside the helper"))?;
+            return Ok(TexData::ConvertedDepth { slot, ty, rule });
+        }
         match self.name(i) {
             Some((n, 0)) if n.starts_with("readback_") => self.slot(i).map(TexData::Readback),
             _ => Ok(self.pixels(i)?.map_or(TexData::Null, TexData::Bytes)),
@@ -703,4 +725,35 @@ impl Call<'_, '_> {
             .and_then(|d| d.parse().ok())
             .ok_or_else(|| self.bad(i, "a readback slot readback_<n>"))
     }
+}
+
+/// The client helpers a script may apply to a depth readback, by name.
+pub(super) const DEPTH_HELPERS: [(&str, PixelType, DepthConversion); 4] = [
+    (
+        "fixedfunc_depth_ubyte_truncate",
+        PixelType::UnsignedByte,
+        DepthConversion::Truncate,
+    ),
+    (
+        "fixedfunc_depth_ubyte_round",
+        PixelType::UnsignedByte,
+        DepthConversion::Round,
+    ),
+    (
+        "fixedfunc_depth_ushort_truncate",
+        PixelType::UnsignedShort,
+        DepthConversion::Truncate,
+    ),
+    (
+        "fixedfunc_depth_ushort_round",
+        PixelType::UnsignedShort,
+        DepthConversion::Round,
+    ),
+];
+
+fn depth_helper(name: &str) -> Option<(PixelType, DepthConversion)> {
+    DEPTH_HELPERS
+        .iter()
+        .find(|(n, _, _)| *n == name)
+        .map(|&(_, ty, rule)| (ty, rule))
 }

@@ -437,6 +437,13 @@ fn tex_image(out: &mut String, t: &TexImage) {
         TexData::Null => "NULL".to_string(),
         TexData::Bytes(d) => pixels(t.ty, d),
         TexData::Readback(slot) => format!("readback_{slot}"),
+        TexData::ConvertedDepth { slot, ty, rule } => {
+            let name = super::parse::DEPTH_HELPERS
+                .iter()
+                .find(|(_, t, r)| t == ty && r == rule)
+                .map_or("fixedfunc_depth_ushort_round", |(n, _, _)| n);
+            format!("{name}(readback_{slot})")
+        }
     };
     let (name, size) = match t.target {
         TextureTarget::Texture1D => ("glTexImage1D", format!("{}", t.width)),

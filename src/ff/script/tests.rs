@@ -463,6 +463,22 @@ fn sample_commands() -> Vec<Command> {
             ty: PixelType::UnsignedByte,
             data: TexData::Readback(3),
         }),
+        // The program's own conversion of FLOAT depth in readback_3 (see TexData).
+        Command::TexImage(TexImage {
+            target: TextureTarget::Texture2D,
+            level: 0,
+            internal_format: TexFormat::Luminance8Alpha8,
+            width: 2,
+            height: 2,
+            border: 0,
+            format: PixelFormat::LuminanceAlpha,
+            ty: PixelType::UnsignedByte,
+            data: TexData::ConvertedDepth {
+                slot: 3,
+                ty: PixelType::UnsignedShort,
+                rule: DepthConversion::Round,
+            },
+        }),
         Command::Draw(Arc::new(g)),
         Command::Draw(Arc::new(Geometry::new(Primitive::Points, vec![]))),
     ]
@@ -509,7 +525,12 @@ fn printed_script_is_valid_c() {
     let body = print(&sample_commands());
     let src = format!(
         "#define GL_GLEXT_PROTOTYPES 1\n#include <GL/gl.h>\n#include <GL/glext.h>\n#include <math.h>\n#include <stddef.h>\n\
-         static GLuint readback_3[16];\nvoid script(void) {{\n{body}}}\n"
+         static GLuint readback_3[16];\n\
+         const void *fixedfunc_depth_ubyte_truncate(const void *);\n\
+         const void *fixedfunc_depth_ubyte_round(const void *);\n\
+         const void *fixedfunc_depth_ushort_truncate(const void *);\n\
+         const void *fixedfunc_depth_ushort_round(const void *);\n\
+         void script(void) {{\n{body}}}\n"
     );
     let file = dir.join("script.c");
     std::fs::write(&file, src).expect("write script.c");

@@ -195,36 +195,43 @@ fn read(gl: &glow::Context, r: &ReadPixels) -> Vec<u8> {
         out
     };
     match r.format {
+        // Bytes from bytes: A = A exactly, L = min(R + G + B, 255) (the sum of unorm8 values
+        // is exact in integers), without a float round trip.
+        PixelFormat::Luminance | PixelFormat::LuminanceAlpha | PixelFormat::Alpha
+            if r.ty == PixelType::UnsignedByte =>
+        {
+            let rgba = read_raw(glow::RGBA, 4, PixelType::UnsignedByte);
+            let mut out = Vec::with_capacity(w * h * r.format.components());
+            for p in rgba.chunks_exact(4) {
+                let l = (u16::from(p[0]) + u16::from(p[1]) + u16::from(p[2])).min(255) as u8;
+                match r.format {
+                    PixelFormat::Luminance => out.push(l),
+                    PixelFormat::LuminanceAlpha => out.extend([l, p[3]]),
+                    _ => out.push(p[3]),
+                }
+            }
+            out
+        }
         PixelFormat::Luminance | PixelFormat::LuminanceAlpha | PixelFormat::Alpha => {
             let rgba = read_raw(glow::RGBA, 4, PixelType::Float);
-            let px: Vec<[f32; 4]> = rgba
-                .chunks_exact(16)
-                .map(|c| {
-                    std::array::from_fn(|i| {
-                        f32::from_ne_bytes([c[4 * i], c[4 * i + 1], c[4 * i + 2], c[4 * i + 3]])
-                    })
-                })
-                .collect();
-            let values: Vec<f32> = px
-                .iter()
-                .flat_map(|p| {
-                    let l = (p[0] + p[1] + p[2]).min(1.0);
-                    match r.format {
-                        PixelFormat::Luminance => vec![l],
-                        PixelFormat::LuminanceAlpha => vec![l, p[3]],
-                        _ => vec![p[3]],
+            let mut out = Vec::with_capacity(w * h * r.format.components() * size);
+            for c in rgba.chunks_exact(16) {
+                let p: [f32; 4] = std::array::from_fn(|i| {
+                    f32::from_ne_bytes([c[4 * i], c[4 * i + 1], c[4 * i + 2], c[4 * i + 3]])
+                });
+                let l = (p[0] + p[1] + p[2]).min(1.0);
+                match r.format {
+                    PixelFormat::Luminance => out.extend(encode(l, r.ty)),
+                    PixelFormat::LuminanceAlpha => {
+                        out.extend(encode(l, r.ty));
+                        out.extend(encode(p[3], r.ty));
                     }
-                })
-                .collect();
-            values
-                .into_iter()
-                .flat_map(|v| encode(v, r.ty))
-                .collect::<Vec<u8>>()
+                    _ => out.extend(encode(p[3], r.ty)),
+                }
+            }
+            out
         }
-        other => {
-            let _ = size;
-            read_raw(conv::pixel_format(other), other.components(), r.ty)
-        }
+        other => read_raw(conv::pixel_format(other), other.components(), r.ty),
     }
 }
 
