@@ -2,7 +2,8 @@
 //! [0, 1] before the compare, H11) and texturing/texdepth (cells 0, 0.25, 0.5, 1.0 against
 //! r = 0.6/0.2/0.5/0.8 in LUMINANCE, INTENSITY and ALPHA modes, the w = 3.3 homogeneous run,
 //! and the ARB_shadow_ambient fail value 0.4 — asserted on emulate only, Mesa has no
-//! ARB_shadow_ambient). Results are shown with REPLACE and checked per pixel.
+//! ARB_shadow_ambient), and texdepth's second texture made by CopyTexImage2D from the
+//! depth buffer. Results are shown with REPLACE and checked per pixel.
 
 mod fidelity;
 mod support;
@@ -28,10 +29,19 @@ const FUNCS: [(&str, Compare); 8] = [
 
 fn depth_texture(w: u32, h: u32, values: &[f32], mode: &str, extra: &str) -> String {
     let v: Vec<String> = values.iter().map(|x| format!("{x}f")).collect();
-    format!(
+    let image = format!(
         "glBindTexture(GL_TEXTURE_2D, 1);
 glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, {w}, {h}, 0, GL_DEPTH_COMPONENT, GL_FLOAT, (GLfloat[]){{{}}});
-glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+",
+        v.join(", ")
+    );
+    image + &depth_params(mode, extra)
+}
+
+/// The sampling state of texture 1 (NEAREST, REPEAT, compare on, `mode`), REPLACE, enabled.
+fn depth_params(mode: &str, extra: &str) -> String {
+    format!(
+        "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
 glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
 glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
@@ -40,8 +50,7 @@ glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, {mode});
 {extra}glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
 glEnable(GL_TEXTURE_2D);
 glColor4f(1, 1, 1, 1);
-",
-        v.join(", ")
+"
     )
 }
 
@@ -110,10 +119,52 @@ const MODES: [&str; 3] = ["GL_LUMINANCE", "GL_INTENSITY", "GL_ALPHA"];
 /// texdepth skips EQUAL and NOTEQUAL ("bound to be unreliable due to precision problems").
 const TEXDEPTH_FUNCS: [usize; 6] = [0, 1, 2, 6, 4, 7];
 
+/// texdepth's texture 1: CopyTexImage2D(DEPTH_COMPONENT) of the 4×4 corner of the depth
+/// buffer, cleared to 0.25 with a quad over its right half at window z 0.75 (object z −0.5
+/// under glOrtho(…, −1, 1)) drawn with DepthFunc ALWAYS — texels 0.25, 0.25, 0.75, 0.75
+/// along s. The colour buffer is cleared afterwards, and the depth test left off.
+fn copied_depth_texture() -> String {
+    "glClearDepth(0.25);
+glClear(GL_DEPTH_BUFFER_BIT);
+glEnable(GL_DEPTH_TEST);
+glDepthFunc(GL_ALWAYS);
+glBegin(GL_QUADS);
+glVertex3f(2, 0, -0.5); glVertex3f(4, 0, -0.5); glVertex3f(4, 4, -0.5); glVertex3f(2, 4, -0.5);
+glEnd();
+glDisable(GL_DEPTH_TEST);
+glBindTexture(GL_TEXTURE_2D, 1);
+glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 0, 0, 4, 4, 0);
+glClear(GL_COLOR_BUFFER_BIT);
+"
+    .to_string()
+}
+
+/// Where texdepth's depth texture comes from.
+#[derive(Clone, Copy, PartialEq)]
+enum DepthSource {
+    /// Texture 0: TexImage2D of 0, 0.25, 0.5, 1.0.
+    Image,
+    /// Texture 1: `copied_depth_texture`.
+    Copied,
+}
+
+impl DepthSource {
+    fn texels(self) -> [f64; 4] {
+        match self {
+            DepthSource::Image => TEXDEPTH_D,
+            DepthSource::Copied => [0.25, 0.25, 0.75, 0.75],
+        }
+    }
+}
+
 /// texdepth: per mode × function × r, one row of 4 pixels over the texels 0, 0.25, 0.5, 1.0.
 /// `w` multiplies s, t, r and q (the homogeneous run uses 3.3); `fail` is the
 /// COMPARE_FAIL_VALUE_ARB.
 fn texdepth_script(w: f64, fail: Option<f64>) -> String {
+    texdepth_script_from(DepthSource::Image, w, fail)
+}
+
+fn texdepth_script_from(source: DepthSource, w: f64, fail: Option<f64>) -> String {
     let extra = fail
         .map(|v| {
             format!("glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, {v}f);\n")
@@ -123,15 +174,16 @@ fn texdepth_script(w: f64, fail: Option<f64>) -> String {
         "glClearColor(0, 0, 0, 0);\nglClear(GL_COLOR_BUFFER_BIT);\n{}",
         ortho(4, 72)
     );
+    if source == DepthSource::Copied {
+        s += &copied_depth_texture();
+    }
     let mut row = 0;
     for (m, mode) in MODES.iter().enumerate() {
-        s += &depth_texture(
-            4,
-            1,
-            &[0.0, 0.25, 0.5, 1.0],
-            mode,
-            if m == 0 { &extra } else { "" },
-        );
+        let extra = if m == 0 { extra.as_str() } else { "" };
+        s += &match source {
+            DepthSource::Image => depth_texture(4, 1, &[0.0, 0.25, 0.5, 1.0], mode, extra),
+            DepthSource::Copied => depth_params(mode, extra),
+        };
         for f in TEXDEPTH_FUNCS {
             s += &format!(
                 "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, {});\n",
@@ -161,11 +213,15 @@ glEnd();
 /// (1 on pass, `fail` otherwise): LUMINANCE (L, L, L, 1); INTENSITY (L, L, L, L);
 /// ALPHA (1, 1, 1, L) (white fragment colour).
 fn texdepth_check(name: &str, img: &image::RgbaImage, fail: f64) {
+    texdepth_check_texels(name, img, fail, TEXDEPTH_D)
+}
+
+fn texdepth_check_texels(name: &str, img: &image::RgbaImage, fail: f64, texels: [f64; 4]) {
     let mut row = 0u32;
     for mode in MODES {
         for f in TEXDEPTH_FUNCS {
             for r in TEXDEPTH_R {
-                for (x, d) in TEXDEPTH_D.iter().enumerate() {
+                for (x, d) in texels.iter().enumerate() {
                     let l = if FUNCS[f].1(r, *d) { 1.0 } else { fail };
                     let l8 = fidelity::unorm8(l);
                     let e = match mode {
@@ -209,6 +265,25 @@ fn texdepth_functions_modes_and_homogeneous_run() {
                 &p.native.image,
                 0.0,
             );
+        }
+    }
+}
+
+/// texdepth's texture 1, made by CopyTexImage2D(DEPTH_COMPONENT) from the depth buffer
+/// (0.25 cleared, 0.75 drawn with DepthFunc ALWAYS): every mode × function × r against the
+/// texels 0.25, 0.25, 0.75, 0.75, tol 1/255 per channel; paths exact against each other.
+#[test]
+fn texdepth_copied_depth_texture() {
+    let source = DepthSource::Copied;
+    for p in compare(
+        "texdepth-copied",
+        &texdepth_script_from(source, 1.0, None),
+        Frame::new(4, 72),
+        Tolerance::EXACT,
+    ) {
+        for (path, out) in [("emulate", &p.emulate), ("native", &p.native)] {
+            let name = format!("texdepth-copied {} {path}", p.backend);
+            texdepth_check_texels(&name, &out.image, 0.0, source.texels());
         }
     }
 }
