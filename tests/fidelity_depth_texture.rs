@@ -4,6 +4,10 @@
 //! and the ARB_shadow_ambient fail value 0.4 — asserted on emulate only, Mesa has no
 //! ARB_shadow_ambient), and texdepth's second texture made by CopyTexImage2D from the
 //! depth buffer. Results are shown with REPLACE and checked per pixel.
+//!
+//! DEPTH_TEXTURE_MODE: the paths are compared exactly everywhere; no deviation of Mesa's
+//! native path from ARB_depth_texture was measured (Mesa 22.3.6, see
+//! `depth_texture_mode_is_honoured_by_both_paths`, which would name one).
 
 mod fidelity;
 mod support;
@@ -326,6 +330,96 @@ fn texdepth_check_luminance_fail(name: &str, img: &image::RgbaImage) {
                 );
             }
             row += 1;
+        }
+    }
+}
+
+/// DEPTH_TEXTURE_MODE on Mesa's native path, pinned. ARB_depth_texture: a depth (or compare)
+/// result c becomes (c, c, c, 1) in LUMINANCE, (c, c, c, c) in INTENSITY and (0, 0, 0, c) in
+/// ALPHA, which REPLACE with a white fragment shows as (c, c, c, 1), (c, c, c, c) and
+/// (1, 1, 1, c). The design notes recorded that Mesa 22.3 llvmpipe returned (c, c, c, 1)
+/// whatever the mode for fixed-function depth compares; measured here on Mesa 22.3.6 (EGL
+/// and OSMesa), for DEPTH_COMPONENT16/24/32F, with and without a compare, and whether the
+/// mode is set before or after the image, it follows the spec. Both paths are asserted
+/// against the spec, so the deviation coming (back) would fail this test by name. Texels
+/// 0.25 and 0.75, r = 0.5, LEQUAL; without compare c is the depth itself; tol 1/255.
+#[test]
+fn depth_texture_mode_is_honoured_by_both_paths() {
+    let formats = [
+        "GL_DEPTH_COMPONENT16",
+        "GL_DEPTH_COMPONENT24",
+        "GL_DEPTH_COMPONENT32F",
+    ];
+    let compares = ["GL_COMPARE_R_TO_TEXTURE", "GL_NONE"];
+    let mut src = format!(
+        "glClearColor(0, 0, 0, 1);\nglClear(GL_COLOR_BUFFER_BIT);\n{}",
+        ortho(2, 18)
+    );
+    let mut expected = Vec::new();
+    let mut row = 0;
+    for format in formats {
+        for compare in compares {
+            for (m, mode) in MODES.iter().enumerate() {
+                // Mode before the image on odd rows, after it on even rows.
+                let mode_param =
+                    format!("glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, {mode});\n");
+                let (before, after) = if m % 2 == 1 {
+                    (mode_param.as_str(), "")
+                } else {
+                    ("", mode_param.as_str())
+                };
+                src += &format!(
+                    "glBindTexture(GL_TEXTURE_2D, {tex});
+{before}glTexImage2D(GL_TEXTURE_2D, 0, {format}, 2, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, (GLfloat[]){{0.25f, 0.75f}});
+{after}glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, {compare});
+glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+glEnable(GL_TEXTURE_2D);
+glColor4f(1, 1, 1, 1);
+glBegin(GL_QUADS);
+glTexCoord3f(0, 0.5f, 0.5f); glVertex2f(0, {row});
+glTexCoord3f(1, 0.5f, 0.5f); glVertex2f(2, {row});
+glTexCoord3f(1, 0.5f, 0.5f); glVertex2f(2, {next});
+glTexCoord3f(0, 0.5f, 0.5f); glVertex2f(0, {next});
+glEnd();
+",
+                    tex = row + 1,
+                    next = row + 1
+                );
+                for (x, d) in [0.25, 0.75].into_iter().enumerate() {
+                    let c = match compare {
+                        "GL_NONE" => fidelity::unorm8(d),
+                        _ => fidelity::unorm8(if 0.5 <= d { 1.0 } else { 0.0 }),
+                    };
+                    let texel = match *mode {
+                        "GL_LUMINANCE" => [c, c, c, 255],
+                        "GL_INTENSITY" => [c; 4],
+                        _ => [255, 255, 255, c],
+                    };
+                    expected.push((x as u32, row, format, compare, *mode, texel));
+                }
+                row += 1;
+            }
+        }
+    }
+    for p in compare(
+        "depth-texture-mode",
+        &src,
+        Frame::new(2, 18),
+        Tolerance::EXACT,
+    ) {
+        for (path, out) in [("emulate", &p.emulate), ("native", &p.native)] {
+            for &(x, row, format, cmp, mode, texel) in &expected {
+                let got = out.image.get_pixel(x, 17 - row).0;
+                let ok = got.iter().zip(texel).all(|(&g, e)| g.abs_diff(e) <= 1);
+                assert!(
+                    ok,
+                    "{} {path} {format} {cmp} {mode} texel {x}: {got:?}, spec {texel:?} ± 1",
+                    p.backend
+                );
+            }
         }
     }
 }
