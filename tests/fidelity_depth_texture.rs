@@ -12,7 +12,7 @@
 mod fidelity;
 mod support;
 
-use fidelity::{compare, ortho, run_one, Frame};
+use fidelity::{compare, ortho, run_one, script_file, Frame};
 use fixedfunc::ff::Precision;
 use fixedfunc::pipeline::PipelineKind;
 use support::Tolerance;
@@ -31,59 +31,13 @@ const FUNCS: [(&str, Compare); 8] = [
     ("GL_ALWAYS", |_, _| true),
 ];
 
-fn depth_texture(w: u32, h: u32, values: &[f32], mode: &str, extra: &str) -> String {
-    let v: Vec<String> = values.iter().map(|x| format!("{x}f")).collect();
-    let image = format!(
-        "glBindTexture(GL_TEXTURE_2D, 1);
-glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, {w}, {h}, 0, GL_DEPTH_COMPONENT, GL_FLOAT, (GLfloat[]){{{}}});
-",
-        v.join(", ")
-    );
-    image + &depth_params(mode, extra)
-}
-
-/// The sampling state of texture 1 (NEAREST, REPEAT, compare on, `mode`), REPLACE, enabled.
-fn depth_params(mode: &str, extra: &str) -> String {
-    format!(
-        "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
-glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, {mode});
-{extra}glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-glEnable(GL_TEXTURE_2D);
-glColor4f(1, 1, 1, 1);
-"
-    )
-}
-
-/// depth-tex-compare: a 2×2 checker of 0.5 / 1.0, REPEAT; one 16×16 quad per function with
-/// s, t from 0 to 2 and r from 2.0 to 0.0 across x. Expected per pixel: compare(min(r, 1),
-/// d) → 255 or 0, exact; pixels with |r − d| < 0.05 (unclamped ties) are left out.
-/// Between paths: exact.
+/// depth-tex-compare (script `depth_tex_compare.c`): a 2×2 checker of 0.5 / 1.0, REPEAT;
+/// one 16×16 quad per function with s, t from 0 to 2 and r from 2.0 to 0.0 across x.
+/// Expected per pixel: compare(min(r, 1), d) → 255 or 0, exact; pixels with |r − d| < 0.05
+/// (unclamped ties) are left out. Between paths: exact.
 #[test]
 fn depth_compare_clamps_r_before_comparing() {
-    let mut src = format!(
-        "glClearColor(0, 0, 0, 1);\nglClear(GL_COLOR_BUFFER_BIT);\n{}{}",
-        ortho(128, 16),
-        depth_texture(2, 2, &[0.5, 1.0, 1.0, 0.5], "GL_LUMINANCE", "")
-    );
-    for (i, (func, _)) in FUNCS.iter().enumerate() {
-        let x0 = i * 16;
-        src += &format!(
-            "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, {func});
-glBegin(GL_QUADS);
-glTexCoord3f(0, 0, 2); glVertex2f({x0}, 0);
-glTexCoord3f(2, 0, 0); glVertex2f({}, 0);
-glTexCoord3f(2, 2, 0); glVertex2f({}, 16);
-glTexCoord3f(0, 2, 2); glVertex2f({x0}, 16);
-glEnd();
-",
-            x0 + 16,
-            x0 + 16
-        );
-    }
+    let src = script_file("depth_tex_compare");
     for p in compare(
         "depth-tex-compare",
         &src,
@@ -118,100 +72,12 @@ glEnd();
 }
 
 const TEXDEPTH_R: [f64; 4] = [0.6, 0.2, 0.5, 0.8];
+/// Texture 0 of texdepth (scripts `texdepth*.c`); one row of 4 pixels per mode × function
+/// × r samples these texels.
 const TEXDEPTH_D: [f64; 4] = [0.0, 0.25, 0.5, 1.0];
 const MODES: [&str; 3] = ["GL_LUMINANCE", "GL_INTENSITY", "GL_ALPHA"];
 /// texdepth skips EQUAL and NOTEQUAL ("bound to be unreliable due to precision problems").
 const TEXDEPTH_FUNCS: [usize; 6] = [0, 1, 2, 6, 4, 7];
-
-/// texdepth's texture 1: CopyTexImage2D(DEPTH_COMPONENT) of the 4×4 corner of the depth
-/// buffer, cleared to 0.25 with a quad over its right half at window z 0.75 (object z −0.5
-/// under glOrtho(…, −1, 1)) drawn with DepthFunc ALWAYS — texels 0.25, 0.25, 0.75, 0.75
-/// along s. The colour buffer is cleared afterwards, and the depth test left off.
-fn copied_depth_texture() -> String {
-    "glClearDepth(0.25);
-glClear(GL_DEPTH_BUFFER_BIT);
-glEnable(GL_DEPTH_TEST);
-glDepthFunc(GL_ALWAYS);
-glBegin(GL_QUADS);
-glVertex3f(2, 0, -0.5); glVertex3f(4, 0, -0.5); glVertex3f(4, 4, -0.5); glVertex3f(2, 4, -0.5);
-glEnd();
-glDisable(GL_DEPTH_TEST);
-glBindTexture(GL_TEXTURE_2D, 1);
-glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 0, 0, 4, 4, 0);
-glClear(GL_COLOR_BUFFER_BIT);
-"
-    .to_string()
-}
-
-/// Where texdepth's depth texture comes from.
-#[derive(Clone, Copy, PartialEq)]
-enum DepthSource {
-    /// Texture 0: TexImage2D of 0, 0.25, 0.5, 1.0.
-    Image,
-    /// Texture 1: `copied_depth_texture`.
-    Copied,
-}
-
-impl DepthSource {
-    fn texels(self) -> [f64; 4] {
-        match self {
-            DepthSource::Image => TEXDEPTH_D,
-            DepthSource::Copied => [0.25, 0.25, 0.75, 0.75],
-        }
-    }
-}
-
-/// texdepth: per mode × function × r, one row of 4 pixels over the texels 0, 0.25, 0.5, 1.0.
-/// `w` multiplies s, t, r and q (the homogeneous run uses 3.3); `fail` is the
-/// COMPARE_FAIL_VALUE_ARB.
-fn texdepth_script(w: f64, fail: Option<f64>) -> String {
-    texdepth_script_from(DepthSource::Image, w, fail)
-}
-
-fn texdepth_script_from(source: DepthSource, w: f64, fail: Option<f64>) -> String {
-    let extra = fail
-        .map(|v| {
-            format!("glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, {v}f);\n")
-        })
-        .unwrap_or_default();
-    let mut s = format!(
-        "glClearColor(0, 0, 0, 0);\nglClear(GL_COLOR_BUFFER_BIT);\n{}",
-        ortho(4, 72)
-    );
-    if source == DepthSource::Copied {
-        s += &copied_depth_texture();
-    }
-    let mut row = 0;
-    for (m, mode) in MODES.iter().enumerate() {
-        let extra = if m == 0 { extra.as_str() } else { "" };
-        s += &match source {
-            DepthSource::Image => depth_texture(4, 1, &[0.0, 0.25, 0.5, 1.0], mode, extra),
-            DepthSource::Copied => depth_params(mode, extra),
-        };
-        for f in TEXDEPTH_FUNCS {
-            s += &format!(
-                "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, {});\n",
-                FUNCS[f].0
-            );
-            for r in TEXDEPTH_R {
-                let (s0, s1, t, rr) = (0.0, w, 0.5 * w, r * w);
-                s += &format!(
-                    "glBegin(GL_QUADS);
-glTexCoord4f({s0}f, {t}f, {rr}f, {w}f); glVertex2f(0, {row});
-glTexCoord4f({s1}f, {t}f, {rr}f, {w}f); glVertex2f(4, {row});
-glTexCoord4f({s1}f, {t}f, {rr}f, {w}f); glVertex2f(4, {});
-glTexCoord4f({s0}f, {t}f, {rr}f, {w}f); glVertex2f(0, {});
-glEnd();
-",
-                    row + 1,
-                    row + 1
-                );
-                row += 1;
-            }
-        }
-    }
-    s
-}
 
 /// The expected texdepth image: REPLACE of a depth texture in `mode` with result L
 /// (1 on pass, `fail` otherwise): LUMINANCE (L, L, L, 1); INTENSITY (L, L, L, L);
@@ -251,11 +117,11 @@ fn texdepth_check_texels(name: &str, img: &image::RgbaImage, fail: f64, texels: 
 /// every cell against the compare result, tol 1/255; paths exact against each other.
 #[test]
 fn texdepth_functions_modes_and_homogeneous_run() {
-    for w in [1.0, 3.3] {
+    for (w, script) in [(1.0, "texdepth"), (3.3, "texdepth_homogeneous")] {
         let name = format!("texdepth-w{w}");
         for p in compare(
             &name,
-            &texdepth_script(w, None),
+            &script_file(script),
             Frame::new(4, 72),
             Tolerance::EXACT,
         ) {
@@ -278,16 +144,15 @@ fn texdepth_functions_modes_and_homogeneous_run() {
 /// texels 0.25, 0.25, 0.75, 0.75, tol 1/255 per channel; paths exact against each other.
 #[test]
 fn texdepth_copied_depth_texture() {
-    let source = DepthSource::Copied;
     for p in compare(
         "texdepth-copied",
-        &texdepth_script_from(source, 1.0, None),
+        &script_file("texdepth_copied"),
         Frame::new(4, 72),
         Tolerance::EXACT,
     ) {
         for (path, out) in [("emulate", &p.emulate), ("native", &p.native)] {
             let name = format!("texdepth-copied {} {path}", p.backend);
-            texdepth_check_texels(&name, &out.image, 0.0, source.texels());
+            texdepth_check_texels(&name, &out.image, 0.0, [0.25, 0.25, 0.75, 0.75]);
         }
     }
 }
@@ -298,7 +163,7 @@ fn texdepth_copied_depth_texture() {
 /// oracle: the number is the spec's.
 #[test]
 fn texdepth_fail_value_on_emulate() {
-    let commands = fidelity::parse(&texdepth_script(1.0, Some(0.4)));
+    let commands = fidelity::parse(&script_file("texdepth_ambient"));
     for backend in support::HEADLESS {
         let frame = Frame::new(4, 72);
         let out = run_one(
