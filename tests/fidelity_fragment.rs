@@ -6,7 +6,7 @@
 mod fidelity;
 mod support;
 
-use fidelity::{compare, ortho, parse, probe_gl, run_both, run_one, Frame};
+use fidelity::{compare, ortho, parse, probe_gl, run_both, run_one, script_file, Frame};
 use fixedfunc::ff::Precision;
 use fixedfunc::pipeline::PipelineKind;
 use support::Tolerance;
@@ -34,20 +34,12 @@ const ALPHA_CASES: [(f32, &str, f32, bool); 8] = [
     (0.5, "GL_NEVER", 3.0, false),
 ];
 
-/// Each case writes pixel (i, 0) white with its alpha if the test passes, else leaves the
-/// clear colour (0, 0, 0, 0). Exact (tol 0 on RGB, 1 on alpha for the stored value) on
-/// emulate Float, emulate Fixed8 and native.
+/// Script `alpha_test_boundaries.c`: each case writes pixel (i, 0) white with its alpha if
+/// the test passes, else leaves the clear colour (0, 0, 0, 0). Exact (tol 0 on RGB, 1 on
+/// alpha for the stored value) on emulate Float, emulate Fixed8 and native.
 #[test]
 fn alpha_test_boundaries_of_fbo_alphatest_formats() {
-    let mut src = format!(
-        "glClearColor(0, 0, 0, 0);\nglClear(GL_COLOR_BUFFER_BIT);\n{}glEnable(GL_ALPHA_TEST);\n",
-        ortho(8, 1)
-    );
-    for (i, (a, func, r, _)) in ALPHA_CASES.iter().enumerate() {
-        src += &format!("glAlphaFunc({func}, {r}f);\nglColor4f(1, 1, 1, {a}f);\n");
-        src += &pixel_quad(i as u32, 0, 0.0);
-    }
-    let commands = parse(&src);
+    let commands = parse(&script_file("alpha_test_boundaries"));
     for backend in support::HEADLESS {
         for (kind, precision) in [
             (PipelineKind::Emulate, Precision::Float),
@@ -75,31 +67,10 @@ fn alpha_test_boundaries_of_fbo_alphatest_formats() {
 /// general/stencil-wrap on an 8-bit stencil (max 255), one column per op: INCR 260 times
 /// saturates at 255; DECR 5 times from 0 stays 0; INCR_WRAP 260 times leaves 4; DECR_WRAP 5
 /// times from 0 leaves 251. A grey quad drawn with StencilFunc(EQUAL, expected) must cover
-/// every column: 0.5 grey (128) everywhere, exact.
+/// every column (script `stencil_wrap.c`): 0.5 grey (128) everywhere, exact.
 #[test]
 fn stencil_wrap_saturates_and_wraps() {
-    let cases = [
-        ("GL_INCR", 260, 255),
-        ("GL_DECR", 5, 0),
-        ("GL_INCR_WRAP", 260, 4),
-        ("GL_DECR_WRAP", 5, 251),
-    ];
-    let mut src = format!(
-        "glClearColor(0, 0, 0, 1);\nglClearStencil(0);\nglClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);\n{}glEnable(GL_STENCIL_TEST);\n",
-        ortho(4, 1)
-    );
-    for (i, (op, times, expect)) in cases.iter().enumerate() {
-        src += &format!(
-            "glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);\nglStencilFunc(GL_ALWAYS, 0, 255);\nglStencilOp(GL_KEEP, GL_KEEP, {op});\n"
-        );
-        for _ in 0..*times {
-            src += &pixel_quad(i as u32, 0, 0.0);
-        }
-        src += &format!(
-            "glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);\nglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);\nglStencilFunc(GL_EQUAL, {expect}, 255);\nglColor4f(0.5f, 0.5f, 0.5f, 1);\n"
-        );
-        src += &pixel_quad(i as u32, 0, 0.0);
-    }
+    let src = script_file("stencil_wrap");
     for p in compare(
         "stencil-wrap",
         &src,

@@ -1,14 +1,19 @@
 //! Geometry on the GPU: one vertex array object per `Geometry` (kept while the `Arc` lives,
 //! so meshes are uploaded once per context), with the primitives core GL lacks rewritten
 //! as triangles: QUADS split along v0–v2 as Mesa does ((0,1,2), (0,2,3)), QUAD_STRIP as
-//! pairs of triangles, POLYGON as a fan from v0 (GL polygons are convex).
+//! pairs of triangles, POLYGON as a fan from v0 (GL polygons are convex). Those three are
+//! uploaded as unshared triangle corners carrying the edge attribute of `polygon`, so LINE
+//! and POINT modes can drop what the split added.
 
 use std::collections::HashMap;
 use std::sync::Arc;
 
 use glow::HasContext;
 
-use super::shadergen::{ATTRIB_COLOR, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_TEXCOORD0};
+use super::polygon::split_corners;
+use super::shadergen::{
+    ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_TEXCOORD0,
+};
 use crate::ff::{FixedState, Geometry, Primitive, MAX_TEXTURE_UNITS};
 use crate::pipeline::PipelineError;
 
@@ -54,12 +59,21 @@ pub fn core_indices(primitive: Primitive, indices: &[u32]) -> (u32, Vec<u32>) {
     }
 }
 
-fn bytes_of<T: Copy>(values: &[T], to: impl Fn(&T) -> Vec<f32>) -> Vec<u8> {
-    values
-        .iter()
-        .flat_map(to)
-        .flat_map(f32::to_ne_bytes)
-        .collect()
+/// The arrays' bytes in `order` (the corners of split polygons) or as they are.
+fn bytes_of<T: Copy>(values: &[T], order: Option<&[u32]>, to: impl Fn(&T) -> Vec<f32>) -> Vec<u8> {
+    let pick = |i: &u32| values.get(*i as usize).map(&to).unwrap_or_default();
+    match order {
+        Some(order) => order
+            .iter()
+            .flat_map(pick)
+            .flat_map(f32::to_ne_bytes)
+            .collect(),
+        None => values
+            .iter()
+            .flat_map(to)
+            .flat_map(f32::to_ne_bytes)
+            .collect(),
+    }
 }
 
 impl GpuGeometry {
@@ -68,7 +82,15 @@ impl GpuGeometry {
             .indices
             .clone()
             .unwrap_or_else(|| (0..g.positions.len() as u32).collect());
-        let (mode, indices) = core_indices(g.primitive, &base);
+        let corners = split_corners(g.primitive, &base);
+        let order: Option<Vec<u32>> = corners
+            .as_ref()
+            .map(|c| c.iter().map(|(v, _)| *v).collect());
+        let order = order.as_deref();
+        let (mode, indices) = match order {
+            Some(o) => (glow::TRIANGLES, (0..o.len() as u32).collect()),
+            None => core_indices(g.primitive, &base),
+        };
         let mut buffers = Vec::new();
         unsafe {
             let vao = gl.create_vertex_array().map_err(PipelineError::Object)?;
@@ -86,13 +108,21 @@ impl GpuGeometry {
             array(
                 ATTRIB_POSITION,
                 4,
-                bytes_of(&g.positions, |v| v.to_array().to_vec()),
+                bytes_of(&g.positions, order, |v| v.to_array().to_vec()),
             )?;
             if let Some(n) = &g.normals {
-                array(ATTRIB_NORMAL, 3, bytes_of(n, |v| v.to_array().to_vec()))?;
+                array(
+                    ATTRIB_NORMAL,
+                    3,
+                    bytes_of(n, order, |v| v.to_array().to_vec()),
+                )?;
             }
             if let Some(c) = &g.colors {
-                array(ATTRIB_COLOR, 4, bytes_of(c, |v| v.to_array().to_vec()))?;
+                array(
+                    ATTRIB_COLOR,
+                    4,
+                    bytes_of(c, order, |v| v.to_array().to_vec()),
+                )?;
             }
             let mut has_texcoords = [false; MAX_TEXTURE_UNITS];
             for (u, tc) in g.texcoords.iter().enumerate() {
@@ -100,10 +130,13 @@ impl GpuGeometry {
                     array(
                         ATTRIB_TEXCOORD0 + u as u32,
                         4,
-                        bytes_of(tc, |v| v.to_array().to_vec()),
+                        bytes_of(tc, order, |v| v.to_array().to_vec()),
                     )?;
                     has_texcoords[u] = true;
                 }
+            }
+            if let Some(c) = &corners {
+                array(ATTRIB_EDGE, 4, bytes_of(c, None, |(_, e)| e.to_vec()))?;
             }
             let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
             gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));

@@ -3,6 +3,7 @@
 //! reference, the env colour) are uniforms; disabled units, lights and tests are absent
 //! from the key, so toggling them off can never cause a recompile of an unrelated program.
 
+use super::polygon::EdgeRule;
 use crate::ff::{
     AlphaTest, BaseFormat, ColorMaterialMode, Combine, CombinerInput, CompareFunc, CompareMode,
     DepthTextureMode, Face, FixedState, GeneralStage, Precision, ShadeModel, TexCoord, TexEnvMode,
@@ -127,6 +128,9 @@ pub struct FragmentKey {
     pub flat: bool,
     /// `None` when the alpha test is off or ALWAYS (no code at all).
     pub alpha_test: Option<CompareFunc>,
+    /// Which fragments of a split quad or polygon survive in LINE or POINT mode
+    /// (`polygon`); set per draw pass, `None` from the state alone.
+    pub edges: Option<EdgeRule>,
 }
 
 /// The whole key: the generator sees nothing else.
@@ -181,6 +185,7 @@ impl ShaderKey {
                 .get()
                 .map(|AlphaTest { func, .. }| func)
                 .filter(|f| *f != CompareFunc::Always),
+            edges: None,
         };
         ShaderKey { vertex, fragment }
     }

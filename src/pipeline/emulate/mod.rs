@@ -14,6 +14,7 @@ pub mod conv;
 pub mod draw;
 pub mod glsl;
 pub mod key;
+pub mod polygon;
 pub mod program;
 pub mod shadergen;
 pub mod sync;
@@ -91,27 +92,40 @@ impl EmulatedPipeline {
         ShaderKey::from_state(&self.state, self.precision)
     }
 
+    /// One draw: one pass, or two when the faces have different polygon modes
+    /// (`polygon`); each pass's edge rule is part of its key.
     fn draw(&mut self, gl: &glow::Context, geometry: &Arc<Geometry>) -> Result<(), PipelineError> {
-        let key = ShaderKey::from_state(&self.state, self.precision);
-        let program = self
-            .programs
-            .get_or_build(&key, |k| Program::build(gl, k))?;
-        program.bind(gl, &self.state);
-        let units: Vec<_> = key
-            .fragment
-            .units
-            .iter()
-            .map(|u| (u.unit, u.target))
-            .collect();
-        self.textures.bind_units(gl, &self.state, &units)?;
-        self.raster.sync(gl, &self.state);
-        self.geometry.get(gl, geometry)?.draw(gl, &self.state);
+        let base = ShaderKey::from_state(&self.state, self.precision);
+        let s = &self.state;
+        let passes = polygon::passes(
+            s.polygon_mode,
+            s.cull_face.get(),
+            s.offset_enables,
+            geometry.primitive,
+        );
+        for pass in passes {
+            let mut key = base.clone();
+            key.fragment.edges = pass.edges;
+            let program = self
+                .programs
+                .get_or_build(&key, |k| Program::build(gl, k))?;
+            program.bind(gl, &self.state);
+            let units: Vec<_> = key
+                .fragment
+                .units
+                .iter()
+                .map(|u| (u.unit, u.target))
+                .collect();
+            self.textures.bind_units(gl, &self.state, &units)?;
+            self.raster.sync(gl, &self.state, Some(&pass));
+            self.geometry.get(gl, geometry)?.draw(gl, &self.state);
+        }
         self.counters.draws += 1;
         Ok(())
     }
 
     fn clear(&mut self, gl: &glow::Context, mask: crate::ff::ClearMask) {
-        self.raster.sync(gl, &self.state);
+        self.raster.sync(gl, &self.state, None);
         let c = self.state.clear;
         let mut bits = 0;
         unsafe {

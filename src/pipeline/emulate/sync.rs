@@ -1,14 +1,16 @@
 //! The raster state that stays GL state on the core path (depth, stencil, blend, masks,
-//! polygon offset, culling, polygon mode, viewport, depth range), synced before each draw
+//! polygon offset, culling, polygon mode, line width, point size, viewport, depth range),
+//! synced before each draw
 //! through a shadow copy of what was last sent: an unchanged value is not sent again, and
 //! both outcomes are counted.
 
 use glow::HasContext;
 
 use super::conv;
+use super::polygon::PolygonPass;
 use crate::ff::{
     Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, OffsetEnables,
-    PolygonModes, PolygonOffset, StencilTest, Viewport,
+    PolygonMode, PolygonOffset, StencilTest, Viewport,
 };
 
 /// One piece of state as last sent (`None` = never sent).
@@ -40,7 +42,9 @@ pub struct RasterSync {
     color_mask: Sent<ColorMask>,
     offset: Sent<(OffsetEnables, PolygonOffset)>,
     cull: Sent<(Option<Face>, FrontFace)>,
-    polygon_mode: Sent<PolygonModes>,
+    polygon_mode: Sent<PolygonMode>,
+    /// glLineWidth; the point size is a uniform written to gl_PointSize.
+    line_width: Sent<f32>,
     viewport: Sent<Viewport>,
     depth_range: Sent<DepthRange>,
     /// (sent, skipped)
@@ -63,8 +67,10 @@ impl RasterSync {
         self.counts
     }
 
-    /// Brings the GL raster state in line with the model before a draw or a clear.
-    pub fn sync(&mut self, gl: &glow::Context, s: &FixedState) {
+    /// Brings the GL raster state in line with the model before a draw or a clear; a draw
+    /// pass brings its own core polygon mode and cull face (`polygon`), a clear uses the
+    /// state's front mode and cull face (neither affects it).
+    pub fn sync(&mut self, gl: &glow::Context, s: &FixedState, pass: Option<&PolygonPass>) {
         let c = &mut self.counts;
         self.viewport.sync(s.viewport, c, |v| unsafe {
             gl.viewport(v.x, v.y, v.width, v.height)
@@ -75,10 +81,20 @@ impl RasterSync {
         self.color_mask.sync(s.color_mask, c, |m| unsafe {
             gl.color_mask(m.r, m.g, m.b, m.a)
         });
-        self.sync_tests(gl, s);
+        self.line_width.sync(s.line_width, c, |w| unsafe {
+            // The program writes gl_PointSize (glPointSize's value, a uniform).
+            gl.enable(glow::PROGRAM_POINT_SIZE);
+            gl.line_width(w);
+        });
+        self.sync_tests(gl, s, pass);
+        let (mode, cull) = match pass {
+            Some(p) => (p.mode, p.cull),
+            None => (s.polygon_mode.front, s.cull_face.get()),
+        };
+        self.sync_faces(gl, s, mode, cull);
     }
 
-    fn sync_tests(&mut self, gl: &glow::Context, s: &FixedState) {
+    fn sync_tests(&mut self, gl: &glow::Context, s: &FixedState, pass: Option<&PolygonPass>) {
         let c = &mut self.counts;
         // With the depth test off GL writes no depth either (§4.1.5), so the mask only
         // matters while it is on; it is still sent, for Clear.
@@ -105,24 +121,43 @@ impl RasterSync {
                 gl.blend_func(conv::blend_factor(b.src), conv::blend_factor(b.dst));
             }
         });
+        // A pass offsets in its own mode only (`polygon`); a clear sends the state's enables.
+        let enables = match pass {
+            Some(p) => OffsetEnables {
+                fill: p.offset,
+                line: p.offset,
+                point: p.offset,
+            },
+            None => s.offset_enables,
+        };
         self.offset
-            .sync((s.offset_enables, s.polygon_offset), c, |(e, o)| unsafe {
+            .sync((enables, s.polygon_offset), c, |(e, o)| unsafe {
                 toggle(gl, glow::POLYGON_OFFSET_FILL, e.fill);
                 toggle(gl, glow::POLYGON_OFFSET_LINE, e.line);
                 toggle(gl, glow::POLYGON_OFFSET_POINT, e.point);
                 gl.polygon_offset(o.factor, o.units);
             });
-        self.cull
-            .sync((s.cull_face.get(), s.front_face), c, |(f, ff)| unsafe {
-                toggle(gl, glow::CULL_FACE, f.is_some());
-                if let Some(f) = f {
-                    gl.cull_face(conv::face(f));
-                }
-                gl.front_face(conv::front_face(ff));
-            });
-        // Core GL has one polygon mode for both faces; the front one is used.
-        self.polygon_mode.sync(s.polygon_mode, c, |m| unsafe {
-            gl.polygon_mode(glow::FRONT_AND_BACK, conv::polygon_mode(m.front))
+    }
+
+    /// Core GL has one polygon mode for both faces: the pass says which, and which face
+    /// to cull so that mode reaches only its own faces.
+    fn sync_faces(
+        &mut self,
+        gl: &glow::Context,
+        s: &FixedState,
+        mode: PolygonMode,
+        cull: Option<Face>,
+    ) {
+        let c = &mut self.counts;
+        self.cull.sync((cull, s.front_face), c, |(f, ff)| unsafe {
+            toggle(gl, glow::CULL_FACE, f.is_some());
+            if let Some(f) = f {
+                gl.cull_face(conv::face(f));
+            }
+            gl.front_face(conv::front_face(ff));
+        });
+        self.polygon_mode.sync(mode, c, |m| unsafe {
+            gl.polygon_mode(glow::FRONT_AND_BACK, conv::polygon_mode(m))
         });
     }
 

@@ -54,6 +54,8 @@ pub enum UniformSource {
     CombinerConstant(u8),
     /// The texture image unit the sampler reads (the fixed-function unit index).
     Sampler(u8),
+    /// glPointSize, written to gl_PointSize (core GL reads the size from the program).
+    PointSize,
 }
 
 impl UniformSource {
@@ -77,6 +79,7 @@ impl UniformSource {
             UniformSource::AlphaRef => "u_alpha_ref".into(),
             UniformSource::CombinerConstant(i) => format!("u_combiner_constant{i}"),
             UniformSource::Sampler(u) => format!("u_tex{u}"),
+            UniformSource::PointSize => "u_point_size".into(),
         }
     }
 
@@ -90,6 +93,7 @@ impl UniformSource {
             UniformSource::RescaleFactor
             | UniformSource::CompareFail(_)
             | UniformSource::AlphaRef
+            | UniformSource::PointSize
             | UniformSource::Material(_, MaterialValue::Shininess) => UniformType::Float,
             UniformSource::Sampler(_) => UniformType::Int,
             _ => UniformType::Vec4,
@@ -185,5 +189,6 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
             Vec4(state.register_combiners.value.constant_color[usize::from(i & 1)])
         }
         UniformSource::Sampler(u) => Int(i32::from(u)),
+        UniformSource::PointSize => Float(state.point_size),
     }
 }

@@ -8,6 +8,7 @@ use crate::ff::{
 };
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{EnvKey, FragmentKey, FragmentUnitKey, TexelKey};
+use crate::pipeline::emulate::polygon::EdgeRule;
 use crate::pipeline::emulate::uniforms::UniformSource;
 
 pub fn generate(key: &FragmentKey) -> GlslWriter {
@@ -15,6 +16,9 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
     let flat = if key.flat { "flat " } else { "" };
     w.declare(&format!("{flat}in vec4 v_color;"));
     w.declare("out vec4 frag_color;");
+    if let Some(rule) = key.edges {
+        emit_edge_rule(&mut w, rule);
+    }
     if key.two_side {
         w.declare(&format!("{flat}in vec4 v_back_color;"));
         w.line("vec4 primary = gl_FrontFacing ? v_color : v_back_color;");
@@ -50,6 +54,18 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
         Precision::Fixed8 => w.line("frag_color = previous / 255.0;"),
     }
     w
+}
+
+/// LINE mode keeps the fragments of boundary edges (a component of e.xyz exactly 0);
+/// POINT mode keeps the corner that owns the vertex (e.w ≠ 0) — `polygon`.
+fn emit_edge_rule(w: &mut GlslWriter, rule: EdgeRule) {
+    w.declare("noperspective in vec4 v_edge;");
+    match rule {
+        EdgeRule::BoundaryEdges => {
+            w.line("if (!any(equal(v_edge.xyz, vec3(0.0)))) discard;");
+        }
+        EdgeRule::OwnedVertices => w.line("if (v_edge.w == 0.0) discard;"),
+    }
 }
 
 fn has_color(base: BaseFormat) -> bool {

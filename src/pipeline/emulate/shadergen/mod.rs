@@ -3,7 +3,7 @@
 //! texture unit has no code for any other unit, a key without lighting has no lighting code.
 //!
 //! Attribute locations are fixed: 0 position (vec4), 1 normal, 2 colour, 3 + u texture
-//! coordinate of unit u. A vertex array that a draw lacks is disabled and its current value
+//! coordinate of unit u, then the edge attribute of split polygons. A vertex array that a draw lacks is disabled and its current value
 //! is set as a constant attribute, so "per vertex or per draw" never changes the key.
 
 mod combiners;
@@ -17,6 +17,8 @@ pub const ATTRIB_POSITION: u32 = 0;
 pub const ATTRIB_NORMAL: u32 = 1;
 pub const ATTRIB_COLOR: u32 = 2;
 pub const ATTRIB_TEXCOORD0: u32 = 3;
+/// The edge attribute of split polygons (`polygon`), after the last texture unit's.
+pub const ATTRIB_EDGE: u32 = ATTRIB_TEXCOORD0 + crate::ff::MAX_TEXTURE_UNITS as u32;
 
 /// A generated program: both sources and the uniforms each declared.
 #[derive(Clone, Debug, PartialEq, Eq)]

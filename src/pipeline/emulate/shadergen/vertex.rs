@@ -8,7 +8,7 @@ use crate::pipeline::emulate::key::{
 };
 use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
 
-use super::{ATTRIB_COLOR, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_TEXCOORD0};
+use super::{ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_TEXCOORD0};
 
 pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     let mut w = GlslWriter::new();
@@ -24,6 +24,10 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     let proj = w.uniform(UniformSource::Projection);
     // One expression for every program, so DepthFunc(EQUAL) passes see identical depths.
     w.line(format!("gl_Position = {proj} * ({mv} * a_position);"));
+    // Points (and polygons in POINT mode) take glPointSize's value; core GL reads it
+    // from here with PROGRAM_POINT_SIZE on. Lines and triangles ignore it.
+    let size = w.uniform(UniformSource::PointSize);
+    w.line(format!("gl_PointSize = {size};"));
     let mut eye = EyeTerms::default();
     match &key.lighting {
         Some(lighting) => emit_lighting(&mut w, &mut eye, key, lighting, flat),
@@ -32,7 +36,18 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     for unit in &key.units {
         emit_texcoords(&mut w, &mut eye, key, unit);
     }
+    if fragment.edges.is_some() {
+        emit_edge(&mut w);
+    }
     w
+}
+
+/// The edge attribute of split polygons, passed on without perspective so a component
+/// that is 0 at both ends of an edge stays exactly 0 along it (`polygon`).
+fn emit_edge(w: &mut GlslWriter) {
+    w.declare(&format!("layout(location = {ATTRIB_EDGE}) in vec4 a_edge;"));
+    w.declare("noperspective out vec4 v_edge;");
+    w.line("v_edge = a_edge;");
 }
 
 /// Eye-space position and normal, emitted on first use only.
