@@ -6,8 +6,11 @@
 //! the frame time it explains.
 //!
 //! Per row: the frame (cold, and steady median/min/max over the repeats), split into the
-//! light pass, readback + upload (every other map pass) and the eye passes, and the frame
-//! time against `none` on the same path (the cost of the shadow as a ratio).
+//! light pass, readback + upload (every other map pass) and the eye passes, the frame time
+//! against `none` on the same path (the cost of the shadow as a ratio) and emulated against
+//! native; and, from a second session of the same technique whose maps are made once
+//! (`RemakeMaps::WhenMoved`, the static scene), its steady frame — which should cost about
+//! the eye passes alone.
 
 use serde::Serialize;
 
@@ -32,6 +35,11 @@ pub struct TechniqueRow {
     pub eye: Summary,
     /// Steady frame median / `none`'s on the same path.
     pub vs_none: Option<f64>,
+    /// Emulated steady frame median / native's (on the emulated row).
+    pub emulate_vs_native: Option<f64>,
+    /// The steady frame of a static scene (maps made once, on frame 1): the eye passes'
+    /// cost plus nothing.
+    pub static_frame: Option<Summary>,
     pub passes: usize,
     pub programs: u64,
 }
@@ -65,27 +73,30 @@ pub fn measure(
     let mut skipped = Vec::new();
     for technique in REGISTRY {
         for pipeline in [PipelineKind::Emulate, PipelineKind::Native] {
-            let mut scene = Scene::default_scene();
-            scene.shadow.map_size = 512;
-            scene.shadow.polygon_offset = bench_offset(technique.name);
-            let options = RenderOptions {
-                pipeline,
-                technique: Some(technique.name.to_string()),
-                size: Some(ImageSize {
-                    width: 512,
-                    height: 512,
-                }),
-                remake_maps: RemakeMaps::Always,
-                pass_times: true,
-                ..RenderOptions::default()
-            };
-            match Session::new(&scene, &options) {
-                Ok(s) => sessions.push((technique.name, pipeline, s)),
-                Err(e) => skipped.push(Skipped {
-                    technique: technique.name,
+            for remake in [RemakeMaps::Always, RemakeMaps::WhenMoved] {
+                let mut scene = Scene::default_scene();
+                scene.shadow.map_size = 512;
+                scene.shadow.polygon_offset = bench_offset(technique.name);
+                let options = RenderOptions {
                     pipeline,
-                    reason: e.to_string(),
-                }),
+                    technique: Some(technique.name.to_string()),
+                    size: Some(ImageSize {
+                        width: 512,
+                        height: 512,
+                    }),
+                    remake_maps: remake,
+                    pass_times: remake == RemakeMaps::Always,
+                    ..RenderOptions::default()
+                };
+                match Session::new(&scene, &options) {
+                    Ok(s) => sessions.push((technique.name, pipeline, remake, s)),
+                    Err(e) if remake == RemakeMaps::Always => skipped.push(Skipped {
+                        technique: technique.name,
+                        pipeline,
+                        reason: e.to_string(),
+                    }),
+                    Err(_) => {}
+                }
             }
         }
     }
@@ -94,24 +105,31 @@ pub fn measure(
     for _ in 0..=repeats.max(1) {
         let mut i = 0;
         while i < sessions.len() {
-            match sessions[i].2.frame() {
+            match sessions[i].3.frame() {
                 Ok(_) => i += 1,
                 Err(e) => {
-                    let (technique, pipeline, _) = sessions.remove(i);
-                    skipped.push(Skipped {
-                        technique,
-                        pipeline,
-                        reason: e.to_string(),
-                    });
+                    let (technique, pipeline, remake, _) = sessions.remove(i);
+                    if remake == RemakeMaps::Always {
+                        skipped.push(Skipped {
+                            technique,
+                            pipeline,
+                            reason: e.to_string(),
+                        });
+                    }
                 }
             }
         }
         tick();
     }
     let truth = crate::truth::truth(&Scene::default_scene(), &Default::default())?;
-    let mut rows = Vec::new();
-    for (technique, pipeline, session) in sessions {
+    let mut rows: Vec<TechniqueRow> = Vec::new();
+    let mut statics = Vec::new();
+    for (technique, pipeline, remake, session) in sessions {
         let outcome = session.finish(Some(&truth))?;
+        if remake == RemakeMaps::WhenMoved {
+            statics.push((technique, pipeline, outcome.timings.steady));
+            continue;
+        }
         let steady = |ms: &[f64]| Summary::of(ms.get(1..).unwrap_or(&[]));
         let sum_by = |pick: &dyn Fn(&crate::render::PassTime) -> bool| -> Option<Summary> {
             let chosen: Vec<_> = outcome.pass_times.iter().filter(|p| pick(p)).collect();
@@ -141,6 +159,8 @@ pub fn measure(
             readback_upload: sum_by(&|p| p.map && p.name != "light"),
             eye: sum_by(&|p| !p.map).unwrap_or(frame),
             vs_none: None,
+            emulate_vs_native: None,
+            static_frame: None,
             passes: outcome.passes,
             programs: outcome.counters.programs_compiled,
         });
@@ -150,11 +170,25 @@ pub fn measure(
         .filter(|r| r.technique == "none")
         .map(|r| (r.pipeline, r.frame.median))
         .collect();
+    let medians: Vec<(&str, PipelineKind, f64)> = rows
+        .iter()
+        .map(|r| (r.technique, r.pipeline, r.frame.median))
+        .collect();
     for r in &mut rows {
         r.vs_none = none
             .iter()
             .find(|(p, _)| *p == r.pipeline)
             .map(|(_, n)| r.frame.median / n);
+        if r.pipeline == PipelineKind::Emulate {
+            r.emulate_vs_native = medians
+                .iter()
+                .find(|(t, p, _)| *t == r.technique && *p == PipelineKind::Native)
+                .map(|(_, _, n)| r.frame.median / n);
+        }
+        r.static_frame = statics
+            .iter()
+            .find(|(t, p, _)| *t == r.technique && *p == r.pipeline)
+            .and_then(|(_, _, s)| *s);
     }
     Ok((rows, skipped))
 }
