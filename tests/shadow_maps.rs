@@ -314,3 +314,45 @@ fn the_readback_rule_is_the_drivers_or_the_programs_own() {
     assert_eq!(driver.image, truncate.image);
     assert_ne!(driver.mask, round.mask, "rounding changes the 8-bit map");
 }
+
+#[test]
+fn linear_filtering_of_the_depth_texture_is_percentage_closer() {
+    // LINEAR on a compared depth texture blends the four nearest compare results: the
+    // shadow's edge gets partial values the NEAREST map never produces. Both paths agree,
+    // and the mask (lit iff at least half lit) stays as accurate.
+    use fixedfunc::scene::MapFilter;
+    let with = |filter, pipeline| {
+        let mut scene = Scene::default_scene();
+        scene.shadow.filter = filter;
+        Run::new("depth-compare")
+            .offset(1.0, 4.0)
+            .scene(scene)
+            .on(pipeline)
+            .render()
+    };
+    let nearest = with(MapFilter::Nearest, PipelineKind::Emulate);
+    let linear = with(MapFilter::Linear, PipelineKind::Emulate);
+    let native = with(MapFilter::Linear, PipelineKind::Native);
+    // Pixels of the ground strictly between its dim and lit colours: the ground is grey,
+    // so count grey levels that neither image has in common with NEAREST.
+    let levels = |o: &RenderOutcome| {
+        let mut v: Vec<u8> = o
+            .image
+            .pixels()
+            .filter(|p| p[0] == p[1] && p[1] == p[2])
+            .map(|p| p[0])
+            .collect();
+        v.sort_unstable();
+        v.dedup();
+        v.len()
+    };
+    assert!(
+        levels(&linear) > levels(&nearest) + 10,
+        "LINEAR {} grey levels vs NEAREST {}",
+        levels(&linear),
+        levels(&nearest)
+    );
+    assert!(linear.metrics.all.wrong_percent <= 1.5);
+    let d = disagreement(&linear, &native);
+    assert!(d <= 0.5, "LINEAR masks differ on {d:.3}% between paths");
+}
