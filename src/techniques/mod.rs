@@ -309,106 +309,79 @@ impl MaskPlan {
         &self,
         readback: impl Fn(u32) -> Option<&'r Readback>,
     ) -> Result<Mask, TechniqueError> {
-        if let MaskSource::Colour {
-            slot,
-            width,
-            height,
-        } = self.source
-        {
-            return decode_colour(readback(slot), slot, width, height);
-        }
-        match self.source {
+        let (slot, width, height, expected) = match self.source {
             MaskSource::DepthCoverage {
                 slot,
                 width,
                 height,
-            } => {
-                let r = readback(slot).ok_or(TechniqueError::MissingReadback { slot })?;
-                let expected = (PixelFormat::DepthComponent, PixelType::Float);
-                let n = width as usize * height as usize;
-                if (r.width, r.height) != (width, height)
-                    || (r.format, r.ty) != expected
-                    || r.bytes.len() != n * 4
-                {
-                    return Err(TechniqueError::ReadbackShape {
-                        got: (r.width, r.height),
-                        expected: (width, height),
-                        format: r.format,
-                        ty: r.ty,
-                        expected_format: expected.0,
-                        expected_ty: expected.1,
-                    });
-                }
-                let row = width as usize * 4;
-                let data = r
-                    .bytes
-                    .chunks_exact(row.max(1))
-                    .rev()
-                    .flat_map(|line| line.chunks_exact(4))
-                    .map(|b| {
-                        let z = f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
-                        if z < 1.0 {
-                            LIT
-                        } else {
-                            BACKGROUND
-                        }
-                    })
-                    .collect();
-                Ok(Mask {
-                    width,
-                    height,
-                    data,
-                })
-            }
-            MaskSource::Colour { .. } => unreachable!("decoded above"),
+            } => (
+                slot,
+                width,
+                height,
+                (PixelFormat::DepthComponent, PixelType::Float),
+            ),
+            MaskSource::Colour {
+                slot,
+                width,
+                height,
+            } => (
+                slot,
+                width,
+                height,
+                (PixelFormat::Rgba, PixelType::UnsignedByte),
+            ),
+        };
+        let r = readback(slot).ok_or(TechniqueError::MissingReadback { slot })?;
+        let n = width as usize * height as usize;
+        if (r.width, r.height) != (width, height)
+            || (r.format, r.ty) != expected
+            || r.bytes.len() != n * 4
+        {
+            return Err(TechniqueError::ReadbackShape {
+                got: (r.width, r.height),
+                expected: (width, height),
+                format: r.format,
+                ty: r.ty,
+                expected_format: expected.0,
+                expected_ty: expected.1,
+            });
         }
-    }
-}
-
-/// See [`MaskSource::Colour`].
-fn decode_colour(
-    r: Option<&Readback>,
-    slot: u32,
-    width: u32,
-    height: u32,
-) -> Result<Mask, TechniqueError> {
-    let r = r.ok_or(TechniqueError::MissingReadback { slot })?;
-    let expected = (PixelFormat::Rgba, PixelType::UnsignedByte);
-    let n = width as usize * height as usize;
-    if (r.width, r.height) != (width, height)
-        || (r.format, r.ty) != expected
-        || r.bytes.len() != n * 4
-    {
-        return Err(TechniqueError::ReadbackShape {
-            got: (r.width, r.height),
-            expected: (width, height),
-            format: r.format,
-            ty: r.ty,
-            expected_format: expected.0,
-            expected_ty: expected.1,
-        });
-    }
-    let row = width as usize * 4;
-    let data = r
-        .bytes
-        .chunks_exact(row.max(1))
-        .rev()
-        .flat_map(|line| line.chunks_exact(4))
-        .map(|p| {
-            if p[..3] == MASK_BACKGROUND[..3] {
-                BACKGROUND
-            } else if p[0] >= 128 {
-                LIT
-            } else {
-                SHADOWED
-            }
+        // Four bytes a pixel either way; rows flipped to top first.
+        let row = width as usize * 4;
+        let pixels = r
+            .bytes
+            .chunks_exact(row.max(1))
+            .rev()
+            .flat_map(|line| line.chunks_exact(4));
+        let data = match self.source {
+            MaskSource::DepthCoverage { .. } => pixels
+                .map(|b| {
+                    let z = f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
+                    if z < 1.0 {
+                        LIT
+                    } else {
+                        BACKGROUND
+                    }
+                })
+                .collect(),
+            MaskSource::Colour { .. } => pixels
+                .map(|p| {
+                    if p[..3] == MASK_BACKGROUND[..3] {
+                        BACKGROUND
+                    } else if p[0] >= 128 {
+                        LIT
+                    } else {
+                        SHADOWED
+                    }
+                })
+                .collect(),
+        };
+        Ok(Mask {
+            width,
+            height,
+            data,
         })
-        .collect();
-    Ok(Mask {
-        width,
-        height,
-        data,
-    })
+    }
 }
 
 /// Fails when the scene has more lights than GL_MAX_LIGHTS.

@@ -28,12 +28,13 @@
 use glam::{Vec3, Vec4};
 
 use crate::ff::{
-    Capability, ClearMask, Command, Face, LightModelParam, LightParam, MaterialParam, MatrixMode,
-    PixelFormat, PixelType, ReadPixels, ViewVolume, Viewport,
+    Capability, ClearMask, Command, LightModelParam, LightParam, MatrixMode, PixelFormat,
+    PixelType, ReadPixels, ViewVolume, Viewport,
 };
 use crate::gpu::DepthBits;
 use crate::scene::{Camera, Light, LightKind, Projection, Scene};
 
+use super::parts::Paint;
 use super::{
     check_light_count, FramebufferNeeds, MaskPlan, MaskSource, Pass, Plan, Prepared, Technique,
     TechniqueError, MASK_SLOT,
@@ -189,29 +190,12 @@ pub fn light_commands(index: u8, light: &Light) -> Vec<Command> {
 
 /// Each object under its model matrix, with its material (lit) or colour (unlit).
 pub fn objects(scene: &Scene, prepared: &Prepared) -> Vec<Command> {
-    let lit = !scene.lights.is_empty();
-    let mut commands = Vec::with_capacity(scene.objects.len() * 7);
-    for (object, geometry) in scene.objects.iter().zip(&prepared.objects) {
-        let m = &object.material;
-        commands.push(Command::PushMatrix);
-        commands.push(Command::MultMatrix(object.transform.matrix()));
-        if lit {
-            let material = |param| Command::Material {
-                face: Face::FrontAndBack,
-                param,
-            };
-            commands.extend([
-                material(MaterialParam::AmbientAndDiffuse(m.colour.extend(1.0))),
-                material(MaterialParam::Specular(m.specular.extend(1.0))),
-                material(MaterialParam::Shininess(m.shininess)),
-            ]);
-        } else {
-            commands.push(Command::Color(m.colour.extend(1.0)));
-        }
-        commands.push(Command::Draw(geometry.clone()));
-        commands.push(Command::PopMatrix);
-    }
-    commands
+    let paint = if scene.lights.is_empty() {
+        Paint::OwnColour
+    } else {
+        Paint::Material
+    };
+    super::parts::objects(scene, prepared, |_| true, paint)
 }
 
 /// Reads the frame's depth as FLOAT into [`MASK_SLOT`]; geometry where z < 1.

@@ -48,6 +48,8 @@ pub enum Paint {
     Material,
     /// glColor (lighting off).
     Flat(Vec4),
+    /// glColor of each object's own material colour (lighting off).
+    OwnColour,
 }
 
 impl Look {
@@ -219,6 +221,7 @@ pub fn objects(
                 ]);
             }
             Paint::Flat(c) => commands.push(Command::Color(c)),
+            Paint::OwnColour => commands.push(Command::Color(object.material.colour.extend(1.0))),
         }
         commands.push(Command::Draw(geometry.clone()));
         commands.push(Command::PopMatrix);
