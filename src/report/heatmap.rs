@@ -174,16 +174,20 @@ fn draw_panel<DB: DrawingBackend>(
         .margin(12)
         .x_label_area_size(46)
         .y_label_area_size(56)
-        .build_cartesian_2d((0..nf).into_segmented(), (0..nu).into_segmented())
+        .build_cartesian_2d(-0.5..f64::from(nf) - 0.5, -0.5..f64::from(nu) - 0.5)
         .map_err(|x| e(&x))?;
-    let label = |values: &[f32], v: &SegmentValue<i32>| match v {
-        SegmentValue::CenterOf(i) => values
-            .get(*i as usize)
-            .map_or(String::new(), |x| format!("{x}")),
-        _ => String::new(),
+    // Cell i sits on [i − ½, i + ½]; ticks at whole i are labelled with the i-th value.
+    let label = |values: &[f32], v: &f64| {
+        let i = v.round();
+        if (v - i).abs() > 1e-6 || i < 0.0 {
+            return String::new();
+        }
+        values
+            .get(i as usize)
+            .map_or(String::new(), |x| format!("{x}"))
     };
-    let xl = |v: &SegmentValue<i32>| label(g.factors, v);
-    let yl = |v: &SegmentValue<i32>| label(g.units, v);
+    let xl = |v: &f64| label(g.factors, v);
+    let yl = |v: &f64| label(g.units, v);
     chart
         .configure_mesh()
         .disable_mesh()
@@ -197,29 +201,25 @@ fn draw_panel<DB: DrawingBackend>(
         .axis_desc_style((font::FAMILY, 14))
         .draw()
         .map_err(|x| e(&x))?;
-    let at = |i: usize| (i as i32 % nf.max(1), i as i32 / nf.max(1));
+    let at = |i: usize| {
+        let i = i as i32;
+        (f64::from(i % nf.max(1)), f64::from(i / nf.max(1)))
+    };
+    let square = |(x, y): (f64, f64)| [(x - 0.5, y - 0.5), (x + 0.5, y + 0.5)];
     chart
         .draw_series(values.iter().enumerate().map(|(i, &v)| {
-            let (x, y) = at(i);
             let t = if max > 0.0 { v / max } else { 0.0 };
-            Rectangle::new(
-                [
-                    (SegmentValue::Exact(x), SegmentValue::Exact(y)),
-                    (SegmentValue::Exact(x + 1), SegmentValue::Exact(y + 1)),
-                ],
-                ramp(panel.colour(), t).filled(),
-            )
+            Rectangle::new(square(at(i)), ramp(panel.colour(), t).filled())
         }))
         .map_err(|x| e(&x))?;
     if g.factors.len() <= TEXT_LIMIT && g.units.len() <= TEXT_LIMIT {
         chart
             .draw_series(values.iter().enumerate().map(|(i, &v)| {
-                let (x, y) = at(i);
                 let t = if max > 0.0 { v / max } else { 0.0 };
                 let ink = if t.sqrt() > 0.6 { WHITE } else { BLACK };
                 Text::new(
                     format!("{v:.1}"),
-                    (SegmentValue::CenterOf(x), SegmentValue::CenterOf(y)),
+                    at(i),
                     (font::FAMILY, 12)
                         .into_font()
                         .color(&ink)
@@ -228,13 +228,9 @@ fn draw_panel<DB: DrawingBackend>(
             }))
             .map_err(|x| e(&x))?;
     }
-    let (bx, by) = at(g.best);
     chart
         .draw_series(std::iter::once(Rectangle::new(
-            [
-                (SegmentValue::Exact(bx), SegmentValue::Exact(by)),
-                (SegmentValue::Exact(bx + 1), SegmentValue::Exact(by + 1)),
-            ],
+            square(at(g.best)),
             RGBColor(0, 170, 80).stroke_width(4),
         )))
         .map_err(|x| e(&x))?;

@@ -34,9 +34,9 @@ body{font-family:system-ui,'DejaVu Sans',sans-serif;margin:0 auto;max-width:1360
 h1{font-size:28px;margin:0 0 6px}h2{font-size:21px;margin:28px 0 10px;border-bottom:2px solid #e2e4ea;padding-bottom:4px}
 h3{font-size:16px;margin:0 0 8px}.lead{font-size:17px;line-height:1.5;margin:6px 0}
 .lead b{color:#0a4fa8}.muted{color:#5b6070;font-size:14px}
-table{border-collapse:collapse;font-size:14px;width:100%;background:#fff}
-th,td{padding:6px 9px;border-bottom:1px solid #e6e8ee;text-align:right;white-space:nowrap}
-th{background:#eef0f5;font-weight:600}td.name,th.name{text-align:left}
+table{border-collapse:collapse;font-size:13.5px;width:100%;background:#fff}
+th,td{padding:5px 7px;border-bottom:1px solid #e6e8ee;text-align:right;white-space:nowrap}
+th{background:#eef0f5;font-weight:600;white-space:normal;vertical-align:bottom}td.name,th.name{text-align:left}
 tr.front td{background-color:#eefaf2}tr.skip td{color:#80859a;font-style:italic}
 .bar{background-repeat:no-repeat;background-size:var(--w) 70%;background-position:left center}
 .err{background-image:linear-gradient(#f7c9a6,#f7c9a6)}.time{background-image:linear-gradient(#bcd4f5,#bcd4f5)}
@@ -104,8 +104,8 @@ fn headline(h: &mut String, c: &Comparison, rows: &[ResultRow], scene: &str) {
         h,
         "<header><h1>Shadow techniques compared: accuracy against time</h1>\
          <p class=\"lead\">{} — {} runs measured{} on the {} backend, {}×{} pixels, \
-         {} frames each with the frames of all runs interleaved. Error is the share of \
-         geometry pixels whose shadow differs from a ray-cast ground truth.</p>",
+         {} frames each with the frames of all runs interleaved; shadow map {}. Error is the \
+         share of geometry pixels whose shadow differs from a ray-cast ground truth.</p>",
         escape(scene),
         measured.len(),
         if skipped > 0 {
@@ -116,7 +116,8 @@ fn headline(h: &mut String, c: &Comparison, rows: &[ResultRow], scene: &str) {
         rows.first().map_or("egl", |r| r.backend.name()),
         c.scene.image.width,
         c.scene.image.height,
-        c.frames
+        c.frames,
+        escape(&shadow_brief(&c.scene.shadow))
     );
     h.push_str("<p class=\"lead\">");
     if let Some((r, m)) = best {
@@ -144,6 +145,19 @@ fn headline(h: &mut String, c: &Comparison, rows: &[ResultRow], scene: &str) {
         );
     }
     h.push_str("</p></header>\n");
+}
+
+/// `256² texels, 24-bit depth, no polygon offset`.
+fn shadow_brief(s: &crate::scene::ShadowSettings) -> String {
+    format!(
+        "{}² texels, {} depth, {}",
+        s.map_size,
+        super::heatmap::depth_label(s.depth),
+        s.polygon_offset.map_or("no polygon offset".to_string(), |o| format!(
+            "polygon offset ({}, {})",
+            o.factor, o.units
+        ))
+    )
 }
 
 fn table(h: &mut String, rows: &[ResultRow]) {

@@ -155,7 +155,7 @@ fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, pts: &[Point]) -> Resu
                     + Text::new(
                         p.label.clone(),
                         (9, label_dy(kind)),
-                        (font::FAMILY, 13).into_font().color(&c),
+                        (font::FAMILY, 15).into_font().color(&c),
                     )
             }))
             .map_err(|x| e(&x))?;
