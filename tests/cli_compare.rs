@@ -32,7 +32,11 @@ fn json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&s).expect("valid JSON")
 }
 
-fn row<'a>(report: &'a serde_json::Value, technique: &str, pipeline: &str) -> &'a serde_json::Value {
+fn row<'a>(
+    report: &'a serde_json::Value,
+    technique: &str,
+    pipeline: &str,
+) -> &'a serde_json::Value {
     report["rows"]
         .as_array()
         .expect("rows")
@@ -43,7 +47,10 @@ fn row<'a>(report: &'a serde_json::Value, technique: &str, pipeline: &str) -> &'
 
 /// (error % as printed, false shadow, missed shadow) from `render`'s figures line.
 fn render_line(stdout: &str) -> (String, u64, u64) {
-    let line = stdout.lines().find(|l| l.contains(" · error ")).expect("figures line");
+    let line = stdout
+        .lines()
+        .find(|l| l.contains(" · error "))
+        .expect("figures line");
     let after = |key: &str| -> &str {
         let i = line.find(key).unwrap_or_else(|| panic!("{key} in {line}")) + key.len();
         &line[i..]
@@ -81,7 +88,14 @@ fn a_compare_row_has_exactly_the_figures_of_a_render_of_the_same_technique() {
     let dir = tempfile::tempdir().expect("temp dir");
     let out = dir.path().join("report");
     let common = [
-        "--size", "96x96", "--map-size", "64", "--frames", "2", "--offset", "1,4",
+        "--size",
+        "96x96",
+        "--map-size",
+        "64",
+        "--frames",
+        "2",
+        "--offset",
+        "1,4",
     ];
     let mut args = vec![
         "compare",
@@ -116,7 +130,10 @@ fn a_compare_row_has_exactly_the_figures_of_a_render_of_the_same_technique() {
 
     let report = json(&out.join("results.json"));
     let m = &row(&report, "depth-compare", "emulate")["measured"];
-    assert_eq!(format!("{:.2}", m["error_percent"].as_f64().expect("error %")), pct);
+    assert_eq!(
+        format!("{:.2}", m["error_percent"].as_f64().expect("error %")),
+        pct
+    );
     assert_eq!(m["false_shadow"].as_u64(), Some(false_shadow));
     assert_eq!(m["missed_shadow"].as_u64(), Some(missed_shadow));
     assert!(
@@ -179,8 +196,22 @@ fn library_compare_rows_equal_library_renders() {
         assert_eq!(got.mask, want.mask, "{:?}", row.pipeline);
         let (g, w) = (got.figures(), want.figures());
         assert_eq!(
-            (g.wrong_percent, g.false_shadow, g.missed_shadow, g.passes, g.programs, g.maps_made),
-            (w.wrong_percent, w.false_shadow, w.missed_shadow, w.passes, w.programs, w.maps_made)
+            (
+                g.wrong_percent,
+                g.false_shadow,
+                g.missed_shadow,
+                g.passes,
+                g.programs,
+                g.maps_made
+            ),
+            (
+                w.wrong_percent,
+                w.false_shadow,
+                w.missed_shadow,
+                w.passes,
+                w.programs,
+                w.maps_made
+            )
         );
     }
 }
@@ -232,7 +263,10 @@ fn the_page_refers_only_to_files_it_wrote_and_skips_what_a_pipeline_cannot_run()
             !r.contains('/') && !r.contains(':') && !r.contains('\\'),
             "`{r}` is not a file in the report folder"
         );
-        assert!(out.join(r).is_file(), "the page names {r}, which is missing");
+        assert!(
+            out.join(r).is_file(),
+            "the page names {r}, which is missing"
+        );
     }
     for needed in [
         "accuracy_vs_time.svg",
@@ -247,22 +281,36 @@ fn the_page_refers_only_to_files_it_wrote_and_skips_what_a_pipeline_cannot_run()
         assert!(refs.iter().any(|r| r == needed), "the page omits {needed}");
     }
     assert!(!html.contains("<script"), "no scripts");
-    assert!(!html.contains("multidigit16-native"), "no pictures of a skipped run");
+    assert!(
+        !html.contains("multidigit16-native"),
+        "no pictures of a skipped run"
+    );
     assert!(html.contains("skipped") && html.contains("NV_register_combiners"));
 
     let report = json(&out.join("results.json"));
     let skipped = &row(&report, "multidigit16", "native");
     assert!(skipped["measured"].is_null());
-    assert!(skipped["skipped"].as_str().unwrap_or("").contains("not supported"));
+    assert!(skipped["skipped"]
+        .as_str()
+        .unwrap_or("")
+        .contains("not supported"));
     assert!(row(&report, "multidigit16", "emulate")["measured"]["passes"].as_u64() > Some(1));
-    assert!(report["rows"].as_array().is_some_and(|r| r.iter().any(|r| r["pareto"] == true)));
+    assert!(report["rows"]
+        .as_array()
+        .is_some_and(|r| r.iter().any(|r| r["pareto"] == true)));
 
     let svg = std::fs::read_to_string(out.join("accuracy_vs_time.svg")).expect("svg");
-    assert!(svg.contains("<svg") && svg.contains("Pareto front"), "{}", &svg[..200.min(svg.len())]);
+    assert!(
+        svg.contains("<svg") && svg.contains("Pareto front"),
+        "{}",
+        &svg[..200.min(svg.len())]
+    );
     let plot = image::open(out.join("accuracy_vs_time.png")).expect("plot png");
     assert_eq!((plot.width(), plot.height()), (960, 600));
     // Header line, truth line, three measured runs: each a line of 96-pixel tiles.
-    let sheet = image::open(out.join("contact_sheet.png")).expect("sheet").to_rgb8();
+    let sheet = image::open(out.join("contact_sheet.png"))
+        .expect("sheet")
+        .to_rgb8();
     assert!(sheet.height() >= 4 * 96, "{:?}", sheet.dimensions());
     let distinct: std::collections::HashSet<[u8; 3]> = sheet.pixels().map(|p| p.0).collect();
     assert!(distinct.len() > 20, "the sheet holds pictures and text");
@@ -273,8 +321,15 @@ fn bad_compare_arguments_are_refused_with_the_valid_choices() {
     let run = fixedfunc(&["compare", "--techniques", "none,shadow-volumes"]);
     assert!(!run.status.success());
     let err = text(&run.stderr);
-    assert!(err.contains("shadow-volumes") && err.contains("depth-compare"), "{err}");
+    assert!(
+        err.contains("shadow-volumes") && err.contains("depth-compare"),
+        "{err}"
+    );
     let run = fixedfunc(&["compare", "--frames", "0"]);
     assert!(!run.status.success());
-    assert!(text(&run.stderr).contains("--frames"), "{}", text(&run.stderr));
+    assert!(
+        text(&run.stderr).contains("--frames"),
+        "{}",
+        text(&run.stderr)
+    );
 }

@@ -101,12 +101,19 @@ fn a_single_cell_sweep_equals_render_with_those_parameters() {
     let surface = &s["surfaces"][0];
     assert_eq!(surface["cells"].as_array().map(Vec::len), Some(1));
     let cell = &surface["cells"][0];
-    assert_eq!((cell["factor"].as_f64(), cell["units"].as_f64()), (Some(1.5), Some(3.0)));
+    assert_eq!(
+        (cell["factor"].as_f64(), cell["units"].as_f64()),
+        (Some(1.5), Some(3.0))
+    );
     assert_eq!(
         counts(cell),
         render_counts(dir.path(), "depth-compare", "1.5,3", "24")
     );
-    assert!(text(&run.stdout).contains("best offset (1.5, 3)"), "{}", text(&run.stdout));
+    assert!(
+        text(&run.stdout).contains("best offset (1.5, 3)"),
+        "{}",
+        text(&run.stdout)
+    );
 }
 
 #[test]
@@ -137,11 +144,18 @@ fn a_restaged_cell_equals_render_and_unusable_formats_are_skipped() {
     assert_eq!(surfaces.len(), 2);
     assert_eq!(surfaces[0]["depth_bits"], "16");
     assert!(
-        surfaces[0]["skipped"].as_str().unwrap_or("").contains("stencil"),
+        surfaces[0]["skipped"]
+            .as_str()
+            .unwrap_or("")
+            .contains("stencil"),
         "{}",
         surfaces[0]
     );
-    assert!(text(&run.stdout).contains("skipped"), "{}", text(&run.stdout));
+    assert!(
+        text(&run.stdout).contains("skipped"),
+        "{}",
+        text(&run.stdout)
+    );
     assert!(!out.join("heatmap-emulate-16.png").exists());
     let cells = surfaces[1]["cells"].as_array().expect("cells");
     assert_eq!(cells.len(), 2);
@@ -150,7 +164,10 @@ fn a_restaged_cell_equals_render_and_unusable_formats_are_skipped() {
     let two = render_counts(dir.path(), "multidigit16-combine", "2,4", "24");
     assert_eq!(counts(&cells[0]), zero);
     assert_eq!(counts(&cells[1]), two);
-    assert_ne!(zero, two, "the offset changes the mask, so the equality means something");
+    assert_ne!(
+        zero, two,
+        "the offset changes the mask, so the equality means something"
+    );
 }
 
 #[test]
@@ -225,9 +242,18 @@ fn bad_ranges_are_refused_with_the_reason() {
         ]);
         assert!(!run.status.success(), "{range} accepted");
         let err = text(&run.stderr);
-        assert!(err.contains(message) && err.contains("--factor"), "{range}: {err}");
+        assert!(
+            err.contains(message) && err.contains("--factor"),
+            "{range}: {err}"
+        );
     }
-    let run = fixedfunc(&["sweep-bias", "--technique", "depth-compare", "--factor", "1"]);
+    let run = fixedfunc(&[
+        "sweep-bias",
+        "--technique",
+        "depth-compare",
+        "--factor",
+        "1",
+    ]);
     assert!(!run.status.success());
     assert!(text(&run.stderr).contains("--units"));
 }

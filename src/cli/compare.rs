@@ -51,7 +51,10 @@ pub fn run(args: Args) -> Result<(), CliError> {
         let mut chosen = Vec::new();
         for name in &args.techniques {
             let t = techniques::lookup(name).map_err(study::StudyError::from)?;
-            if !chosen.iter().any(|c: &&techniques::Technique| c.name == t.name) {
+            if !chosen
+                .iter()
+                .any(|c: &&techniques::Technique| c.name == t.name)
+            {
                 chosen.push(t);
             }
         }

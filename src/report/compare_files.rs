@@ -12,9 +12,7 @@ use crate::study::{Comparison, RowCost, RowResult};
 
 use super::csv::{line, opt};
 use super::pictures::{self, SheetLine};
-use super::{
-    ensure_dir, html, plot, write_png, write_text, ReportError, ResultRow, Written,
-};
+use super::{ensure_dir, html, plot, write_png, write_text, ReportError, ResultRow, Written};
 
 /// File names of a row's pictures.
 pub(super) struct RowFiles {
@@ -70,7 +68,12 @@ pub fn write_comparison(
     }
 
     write_text(dir, CSV, &results_csv(c, &rows), &mut written)?;
-    write_text(dir, JSON, &results_json(c, &rows, scene_name)?, &mut written)?;
+    write_text(
+        dir,
+        JSON,
+        &results_json(c, &rows, scene_name)?,
+        &mut written,
+    )?;
 
     let svg = dir.join(PLOT_SVG);
     let png = plot::accuracy_vs_time(&rows, &svg)?;
@@ -223,25 +226,39 @@ pub(super) fn scene_facts(scene: &Scene) -> Vec<(String, String)> {
         ),
         (
             "camera".to_string(),
-            format!("eye {} looking at {}", v(scene.camera.eye), v(scene.camera.at)),
+            format!(
+                "eye {} looking at {}",
+                v(scene.camera.eye),
+                v(scene.camera.at)
+            ),
         ),
     ];
     for (i, light) in scene.lights.iter().enumerate() {
         let kind = match light.kind {
             LightKind::Point => "point light".to_string(),
             LightKind::Spot { cutoff, .. } => format!("spot light, cutoff {cutoff}°"),
-            LightKind::Directional { direction } => format!("directional light along {}", v(direction)),
+            LightKind::Directional { direction } => {
+                format!("directional light along {}", v(direction))
+            }
             LightKind::Area { .. } => "area light (hard mask from its centre)".to_string(),
         };
         facts.push((
             format!("light {i}"),
-            format!("{kind} at {} aimed at {}", v(light.view.eye), v(light.view.at)),
+            format!(
+                "{kind} at {} aimed at {}",
+                v(light.view.eye),
+                v(light.view.at)
+            ),
         ));
     }
     for (i, o) in scene.objects.iter().enumerate() {
         let name = o.name.clone().unwrap_or_else(|| format!("object {i}"));
         let shape = format!("{:?}", o.shape);
-        let shape = shape.split([' ', '{', '(']).next().unwrap_or("").to_lowercase();
+        let shape = shape
+            .split([' ', '{', '('])
+            .next()
+            .unwrap_or("")
+            .to_lowercase();
         facts.push((
             name,
             format!(
@@ -260,8 +277,10 @@ pub(super) fn scene_facts(scene: &Scene) -> Vec<(String, String)> {
             "{}² texels, {} depth, polygon offset {}, {:?} precision, {:?} filter",
             s.map_size,
             super::heatmap::depth_label(s.depth),
-            s.polygon_offset
-                .map_or("none".to_string(), |o| format!("({}, {})", o.factor, o.units)),
+            s.polygon_offset.map_or("none".to_string(), |o| format!(
+                "({}, {})",
+                o.factor, o.units
+            )),
             s.precision,
             s.filter
         ),

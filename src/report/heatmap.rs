@@ -105,7 +105,10 @@ pub fn title(sweep: &Sweep, surface: &Surface) -> String {
             let b = &cells[*best];
             format!(
                 "{head} — best: factor {}, units {} → error {:.2}% (false {}, missed {})",
-                b.factor, b.units, b.metrics.all.wrong_percent, b.metrics.all.false_shadow,
+                b.factor,
+                b.units,
+                b.metrics.all.wrong_percent,
+                b.metrics.all.false_shadow,
                 b.metrics.all.missed_shadow
             )
         }
@@ -115,7 +118,11 @@ pub fn title(sweep: &Sweep, surface: &Surface) -> String {
 
 /// Writes the surface's heatmap as SVG to `svg` and returns the PNG picture; `None` for a
 /// skipped surface.
-pub fn heatmap(sweep: &Sweep, surface: &Surface, svg: &Path) -> Result<Option<RgbImage>, ReportError> {
+pub fn heatmap(
+    sweep: &Sweep,
+    surface: &Surface,
+    svg: &Path,
+) -> Result<Option<RgbImage>, ReportError> {
     let SurfaceResult::Measured { cells, best, .. } = &surface.result else {
         return Ok(None);
     };
@@ -130,8 +137,11 @@ pub fn heatmap(sweep: &Sweep, surface: &Surface, svg: &Path) -> Result<Option<Rg
     let err = super::plot_error(svg);
     draw(SVGBackend::new(svg, SIZE).into_drawing_area(), &grid).map_err(|e| err(&e))?;
     let mut png = RgbImage::new(SIZE.0, SIZE.1);
-    draw(BitMapBackend::with_buffer(&mut png, SIZE).into_drawing_area(), &grid)
-        .map_err(|e| err(&e))?;
+    draw(
+        BitMapBackend::with_buffer(&mut png, SIZE).into_drawing_area(),
+        &grid,
+    )
+    .map_err(|e| err(&e))?;
     Ok(Some(png))
 }
 

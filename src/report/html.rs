@@ -153,10 +153,11 @@ fn shadow_brief(s: &crate::scene::ShadowSettings) -> String {
         "{}² texels, {} depth, {}",
         s.map_size,
         super::heatmap::depth_label(s.depth),
-        s.polygon_offset.map_or("no polygon offset".to_string(), |o| format!(
-            "polygon offset ({}, {})",
-            o.factor, o.units
-        ))
+        s.polygon_offset
+            .map_or("no polygon offset".to_string(), |o| format!(
+                "polygon offset ({}, {})",
+                o.factor, o.units
+            ))
     )
 }
 
@@ -253,7 +254,7 @@ fn plot_and_truth(h: &mut String, written: &Written) {
         h,
         "<section class=\"two\"><div><h2>Error against time</h2>{}\
          <p class=\"muted\">One point per run; the green staircase is the Pareto front. \
-         Lower is more accurate, further left is faster.</p></div>\
+         Lower is more accurate (the error axis is logarithmic), further left is faster; filled circles ran on the emulated pipeline, hollow squares on the native one.</p></div>\
          <div><h2>Ground truth and error colours</h2>{}<ul class=\"legend\">{}{}{}{}{}{}</ul>\
          <p class=\"muted\">The truth mask: white lit, black shadowed (surfaces facing away \
          from the light included), grey background.</p></div></section>\n",
@@ -285,7 +286,7 @@ fn cards(h: &mut String, c: &Comparison, rows: &[ResultRow], written: &Written) 
             h,
             "<div class=\"card{}\"><h3>{}{}</h3><p class=\"muted\">{}</p><div class=\"pics\">{}{}{}</div>\
              <p class=\"fig\">error <b>{:.2}%</b> (false shadow {}, missed shadow {}) · \
-             <b>{}</b> ms per frame · cold {:.1} ms · {} passes · {} programs</p>",
+             <b>{}</b> ms per frame · cold {:.1} ms · {} pass{} · {} program{}</p>",
             if r.pareto { " front" } else { "" },
             escape(&label(r)),
             if r.pareto {
@@ -303,7 +304,9 @@ fn cards(h: &mut String, c: &Comparison, rows: &[ResultRow], written: &Written) 
             ms_cell(m),
             m.cold_ms,
             m.passes,
-            m.programs_compiled
+            if m.passes == 1 { "" } else { "es" },
+            m.programs_compiled,
+            if m.programs_compiled == 1 { "" } else { "s" }
         );
         for note in &m.notes {
             let _ = write!(h, "<p class=\"note\">note: {}</p>", escape(note));

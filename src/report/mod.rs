@@ -93,7 +93,12 @@ fn ensure_dir(dir: &Path) -> Result<(), ReportError> {
 }
 
 /// Writes `text` to `dir/name` and records it.
-fn write_text(dir: &Path, name: &str, text: &str, written: &mut Written) -> Result<(), ReportError> {
+fn write_text(
+    dir: &Path,
+    name: &str,
+    text: &str,
+    written: &mut Written,
+) -> Result<(), ReportError> {
     let path = dir.join(name);
     std::fs::write(&path, text).map_err(|source| ReportError::Write {
         path: path.clone(),

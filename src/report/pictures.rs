@@ -16,7 +16,7 @@ use plotters::prelude::*;
 use crate::metrics::{Class, Mask};
 use crate::render::pipeline_name;
 
-use super::{font, ResultRow, ReportError};
+use super::{font, ReportError, ResultRow};
 
 /// The colours of an error image (RGB).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -214,7 +214,14 @@ mod tests {
         let got: Vec<[u8; 3]> = img.pixels().map(|p| p.0).collect();
         assert_eq!(
             got,
-            vec![c.lit, c.shadowed, c.false_shadow, c.missed_shadow, c.coverage, c.background]
+            vec![
+                c.lit,
+                c.shadowed,
+                c.false_shadow,
+                c.missed_shadow,
+                c.coverage,
+                c.background
+            ]
         );
     }
 }

@@ -1,8 +1,8 @@
 //! `accuracy_vs_time`: error % of geometry pixels (y) against ms per frame (x), one point per
 //! measured technique × pipeline (emulate filled circles, native hollow squares), each
 //! labelled, and the Pareto front drawn as the staircase through its points: the frontier
-//! below and left of which no measured row lies. Both axes start at 0 so that distances
-//! read as ratios. Drawn once for SVG and once for PNG by the same function.
+//! below and left of which no measured row lies. Time starts at 0 so that distances
+//! read as ratios on the time axis; the error axis is logarithmic. Drawn once for SVG and once for PNG by the same function.
 
 use std::path::Path;
 
@@ -30,7 +30,7 @@ fn points(rows: &[ResultRow]) -> Vec<Point> {
     rows.iter()
         .filter_map(|r| {
             r.measured.as_ref().map(|m| Point {
-                label: format!("{} ({})", r.technique, pipeline_name(r.pipeline)),
+                label: r.technique.to_string(),
                 ms: m.typical_ms,
                 error: m.error_percent,
                 pipeline: r.pipeline,
@@ -79,7 +79,17 @@ fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, pts: &[Point]) -> Resu
     let e = |x: &dyn std::fmt::Display| x.to_string();
     root.fill(&WHITE).map_err(|x| e(&x))?;
     let max_ms = pts.iter().map(|p| p.ms).fold(0.0, f64::max).max(0.1) * 1.25;
-    let max_err = pts.iter().map(|p| p.error).fold(0.0, f64::max).max(0.1) * 1.15;
+    // Errors span orders of magnitude (a self-shadowing 8-bit map near 90%, a good map
+    // under 1%): the error axis is logarithmic, and an error of 0 sits on its floor.
+    let floor = pts
+        .iter()
+        .map(|p| p.error)
+        .filter(|&e| e > 0.0)
+        .fold(1.0, f64::min)
+        .max(0.01)
+        / 2.0;
+    let max_err = pts.iter().map(|p| p.error).fold(1.0, f64::max) * 2.0;
+    let y = |err: f64| err.max(floor);
     let mut chart = ChartBuilder::on(&root)
         .caption(
             "Shadow error against time per frame",
@@ -88,12 +98,19 @@ fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, pts: &[Point]) -> Resu
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(64)
-        .build_cartesian_2d(0.0..max_ms, 0.0..max_err)
+        .build_cartesian_2d(0.0..max_ms, (floor..max_err).log_scale())
         .map_err(|x| e(&x))?;
     chart
         .configure_mesh()
         .x_desc("ms per frame (median of the steady frames)")
-        .y_desc("error, % of geometry pixels")
+        .y_desc("error, % of geometry pixels (log scale)")
+        .y_label_formatter(&|v: &f64| {
+            if *v >= 1.0 {
+                format!("{v:.0}")
+            } else {
+                format!("{v}")
+            }
+        })
         .label_style((font::FAMILY, 14))
         .axis_desc_style((font::FAMILY, 16))
         .light_line_style(RGBColor(235, 235, 235))
@@ -106,13 +123,13 @@ fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, pts: &[Point]) -> Resu
         // Staircase: from each front point right to the next one's time, then down.
         let mut stairs = Vec::new();
         for (i, p) in front.iter().enumerate() {
-            stairs.push((p.ms, p.error));
+            stairs.push((p.ms, y(p.error)));
             if let Some(next) = front.get(i + 1) {
-                stairs.push((next.ms, p.error));
+                stairs.push((next.ms, y(p.error)));
             }
         }
         if let Some(last) = front.last() {
-            stairs.push((max_ms, last.error));
+            stairs.push((max_ms, y(last.error)));
         }
         chart
             .draw_series(LineSeries::new(stairs, FRONT.stroke_width(3)))
@@ -127,7 +144,7 @@ fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, pts: &[Point]) -> Resu
             continue;
         }
         let name = format!("{} pipeline", pipeline_name(kind));
-        let at = |p: &&Point| (p.ms, p.error);
+        let at = |p: &&Point| (p.ms, y(p.error));
         match kind {
             PipelineKind::Emulate => {
                 chart
@@ -151,7 +168,7 @@ fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, pts: &[Point]) -> Resu
         }
         chart
             .draw_series(series.iter().map(|p| {
-                EmptyElement::at((p.ms, p.error))
+                EmptyElement::at((p.ms, y(p.error)))
                     + Text::new(
                         p.label.clone(),
                         (9, label_dy(kind)),

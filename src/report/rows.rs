@@ -123,14 +123,11 @@ impl ResultRow {
 /// Indices of the points (time, error) no other point dominates, ordered by time (then
 /// error); `None` points take no part.
 pub fn pareto_front(points: &[Option<(f64, f64)>]) -> Vec<usize> {
-    let dominates = |a: (f64, f64), b: (f64, f64)| a.0 <= b.0 && a.1 <= b.1 && (a.0 < b.0 || a.1 < b.1);
+    let dominates =
+        |a: (f64, f64), b: (f64, f64)| a.0 <= b.0 && a.1 <= b.1 && (a.0 < b.0 || a.1 < b.1);
     let mut front: Vec<usize> = (0..points.len())
         .filter(|&i| {
-            points[i].is_some_and(|p| {
-                !points
-                    .iter()
-                    .any(|q| q.is_some_and(|q| dominates(q, p)))
-            })
+            points[i].is_some_and(|p| !points.iter().any(|q| q.is_some_and(|q| dominates(q, p))))
         })
         .collect();
     front.sort_by(|&a, &b| {
@@ -149,7 +146,14 @@ mod tests {
         let p = |t: f64, e: f64| Some((t, e));
         // 0 fast and wrong, 1 slow and right, 2 dominated by 0 and 1, 3 equal to 0 (kept:
         // equal points do not dominate each other), 4 skipped.
-        let pts = [p(1.0, 10.0), p(5.0, 0.5), p(6.0, 12.0), p(1.0, 10.0), None, p(3.0, 2.0)];
+        let pts = [
+            p(1.0, 10.0),
+            p(5.0, 0.5),
+            p(6.0, 12.0),
+            p(1.0, 10.0),
+            None,
+            p(3.0, 2.0),
+        ];
         assert_eq!(pareto_front(&pts), vec![0, 3, 5, 1]);
         assert_eq!(pareto_front(&[None, None]), Vec::<usize>::new());
         assert_eq!(pareto_front(&[p(2.0, 2.0), p(2.0, 1.0)]), vec![1]);

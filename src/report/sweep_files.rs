@@ -15,7 +15,10 @@ use super::heatmap::{self, depth_arg, depth_label};
 use super::{ensure_dir, write_png, write_text, ReportError, Written};
 
 /// Stem of a surface's heatmap files.
-pub fn heatmap_stem(pipeline: crate::pipeline::PipelineKind, depth: crate::gpu::DepthBits) -> String {
+pub fn heatmap_stem(
+    pipeline: crate::pipeline::PipelineKind,
+    depth: crate::gpu::DepthBits,
+) -> String {
     format!("heatmap-{}-{}", pipeline_name(pipeline), depth_arg(depth))
 }
 
@@ -146,7 +149,8 @@ fn sweep_json(s: &Sweep) -> Result<String, ReportError> {
         .surfaces
         .iter()
         .map(|surface| {
-            let (pipeline, depth_bits) = (pipeline_name(surface.pipeline), depth_arg(surface.depth));
+            let (pipeline, depth_bits) =
+                (pipeline_name(surface.pipeline), depth_arg(surface.depth));
             match &surface.result {
                 SurfaceResult::Measured {
                     cells,

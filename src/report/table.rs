@@ -57,7 +57,13 @@ pub fn comparison_table(rows: &[ResultRow]) -> String {
         }
     }
     let widths: Vec<usize> = (0..HEADER.len())
-        .map(|c| lines.iter().map(|l| l[c].chars().count()).max().unwrap_or(0))
+        .map(|c| {
+            lines
+                .iter()
+                .map(|l| l[c].chars().count())
+                .max()
+                .unwrap_or(0)
+        })
         .collect();
     let mut out = String::new();
     for (i, l) in lines.iter().enumerate() {
@@ -149,7 +155,9 @@ mod tests {
             pipeline: PipelineKind::Native,
             backend: Backend::Egl,
             pareto: m.is_some(),
-            skipped: m.is_none().then(|| "register combiners are not supported".to_string()),
+            skipped: m
+                .is_none()
+                .then(|| "register combiners are not supported".to_string()),
             measured: m,
         };
         let text = comparison_table(&[row("dual8", Some(measured)), row("multidigit16", None)]);

@@ -163,7 +163,11 @@ pub fn compare(
             },
         };
         slots.push(slot);
-        step(format!("set up {} ({})", technique.name, pipeline_name(pipeline)));
+        step(format!(
+            "set up {} ({})",
+            technique.name,
+            pipeline_name(pipeline)
+        ));
     }
 
     for f in 1..=frames {
@@ -212,7 +216,11 @@ pub fn compare(
             backend: spec.backend,
             result,
         });
-        step(format!("judged {} ({})", technique.name, pipeline_name(pipeline)));
+        step(format!(
+            "judged {} ({})",
+            technique.name,
+            pipeline_name(pipeline)
+        ));
     }
 
     Ok(Comparison {

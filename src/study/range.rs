@@ -151,7 +151,10 @@ mod tests {
         assert_eq!(ok(" 1 .. 1 :1 "), vec![1.0]);
         let v = ok("0..1:11");
         assert_eq!((v.len(), v[0], v[10]), (11, 0.0, 1.0));
-        assert_eq!("0..4:5".parse::<SweepRange>().map(|r| r.to_string()), Ok("0..4:5".into()));
+        assert_eq!(
+            "0..4:5".parse::<SweepRange>().map(|r| r.to_string()),
+            Ok("0..4:5".into())
+        );
     }
 
     #[test]
@@ -162,9 +165,17 @@ mod tests {
         assert_eq!(problem("0..4:99999999999"), RangeProblem::TooManySteps);
         assert_eq!(problem("NaN..4"), RangeProblem::NotFinite("NaN".into()));
         assert_eq!(problem("0..inf:3"), RangeProblem::NotFinite("inf".into()));
-        assert_eq!(problem("0..4:1"), RangeProblem::OneStepOverSpan { a: 0.0, b: 4.0 });
-        assert_eq!(problem("2..2:3"), RangeProblem::RepeatedValue { a: 2.0, steps: 3 });
-        for s in ["", "a..b", "0..", "..4", "0..4:", "0..4:x", "0..4:-2", "0..4:2.5", "1,4", "0...4"] {
+        assert_eq!(
+            problem("0..4:1"),
+            RangeProblem::OneStepOverSpan { a: 0.0, b: 4.0 }
+        );
+        assert_eq!(
+            problem("2..2:3"),
+            RangeProblem::RepeatedValue { a: 2.0, steps: 3 }
+        );
+        for s in [
+            "", "a..b", "0..", "..4", "0..4:", "0..4:x", "0..4:-2", "0..4:2.5", "1,4", "0...4",
+        ] {
             assert_eq!(problem(s), RangeProblem::Format, "{s:?}");
         }
         for p in [problem("4..1"), problem("0..4:0"), problem("x")] {

@@ -101,7 +101,12 @@ pub fn sweep(
     let (factors, units) = (spec.factor.values(), spec.units.values());
     let offsets: Vec<PolygonOffset> = units
         .iter()
-        .flat_map(|&u| factors.iter().map(move |&f| PolygonOffset { factor: f, units: u }))
+        .flat_map(|&u| {
+            factors.iter().map(move |&f| PolygonOffset {
+                factor: f,
+                units: u,
+            })
+        })
         .collect();
     let surfaces_n = (spec.depths.len() * spec.pipelines.len()) as u64;
     let total = 1 + surfaces_n * (1 + offsets.len() as u64);
