@@ -9,11 +9,11 @@ mod info;
 mod pipelines;
 mod progress;
 mod render;
+mod shadow_args;
 mod replay;
 mod scene_arg;
 mod script_io;
 mod shaders;
-mod shadow_args;
 mod sweep_bias;
 mod truth;
 

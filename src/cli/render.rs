@@ -15,12 +15,8 @@ use super::shadow_args::ShadowArgs;
 
 /// `dir/map.png` + `big-digit` → `dir/map-big-digit.png`.
 fn map_file(path: &std::path::Path, label: &str) -> PathBuf {
-    let stem = path
-        .file_stem()
-        .map_or("map".into(), |s| s.to_string_lossy());
-    let ext = path
-        .extension()
-        .map_or("png".into(), |e| e.to_string_lossy());
+    let stem = path.file_stem().map_or("map".into(), |s| s.to_string_lossy());
+    let ext = path.extension().map_or("png".into(), |e| e.to_string_lossy());
     path.with_file_name(format!("{stem}-{label}.{ext}"))
 }
 use super::scene_arg;
@@ -91,10 +87,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             println!("light's map ({label}) {}", file.display());
         }
         if outcome.map_images.is_empty() {
-            println!(
-                "`{}` makes no light's map: --depth-map ignored",
-                outcome.technique
-            );
+            println!("`{}` makes no light's map: --depth-map ignored", outcome.technique);
         }
     }
     println!("{}", outcome.figures());

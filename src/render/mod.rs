@@ -39,11 +39,12 @@ use image::RgbaImage;
 
 use crate::bench::Summary;
 use crate::ff::GlError;
-use crate::ff::{Command, Precision};
 use crate::gpu::{
-    Backend, ContextRequest, GpuContext, GpuError, RenderTarget, TargetSpec, VirtualDisplay,
+    Backend, ContextRequest, GpuContext, GpuError, RenderTarget, TargetSpec,
+    VirtualDisplay,
 };
 use crate::metrics::{self, Mask, Metrics, MetricsError};
+use crate::ff::{Command, Precision};
 use crate::pipeline::{Counters, Pipeline, PipelineError, PipelineKind};
 use crate::scene::{Scene, ShadowSettings};
 use crate::techniques::{self, MapImageSource, Plan, Prepared, TechniqueError};
@@ -410,13 +411,7 @@ impl Session {
                 continue;
             }
             let pass_start = Instant::now();
-            run(
-                self.pipeline.as_mut(),
-                &self.ctx,
-                pass.name,
-                n,
-                &pass.commands,
-            )?;
+            run(self.pipeline.as_mut(), &self.ctx, pass.name, n, &pass.commands)?;
             if self.options.pass_times {
                 self.ctx.finish();
                 self.pass_ms[i].push(pass_start.elapsed().as_secs_f64() * 1e3);
@@ -583,10 +578,7 @@ fn map_pictures<'r>(
         MapImageSource::Digits { .. } => {
             let d = |t: &[u8]| u16::from_ne_bytes([t[0], t[1]]);
             vec![
-                (
-                    "big-digit".to_string(),
-                    picture(&|t| grey((d(t) >> 8) as u8)),
-                ),
+                ("big-digit".to_string(), picture(&|t| grey((d(t) >> 8) as u8))),
                 (
                     "little-digit".to_string(),
                     picture(&|t| pseudo_colour((d(t) & 0xff) as u8)),

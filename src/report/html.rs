@@ -250,14 +250,14 @@ fn swatch(rgb: [u8; 3], text: &str) -> String {
 
 fn plot_and_truth(h: &mut String, written: &Written) {
     let c = ERROR_COLOURS;
-    let _ = write!(
+    let _ = writeln!(
         h,
         "<section class=\"two\"><div><h2>Error against time</h2>{}\
          <p class=\"muted\">One point per run; the green staircase is the Pareto front. \
          Lower is more accurate (the error axis is logarithmic), further left is faster; filled circles ran on the emulated pipeline, hollow squares on the native one.</p></div>\
          <div><h2>Ground truth and error colours</h2>{}<ul class=\"legend\">{}{}{}{}{}{}</ul>\
          <p class=\"muted\">The truth mask: white lit, black shadowed (surfaces facing away \
-         from the light included), grey background.</p></div></section>\n",
+         from the light included), grey background.</p></div></section>",
         img(PLOT_SVG, "error against time per frame", written),
         img(TRUTH_MASK, "ground-truth shadow mask", written),
         swatch(c.lit, "lit, correct"),
@@ -337,9 +337,9 @@ fn scene_section(h: &mut String, facts: &[(String, String)], c: &Comparison) {
     for (k, v) in facts {
         let _ = write!(h, "<dt>{}</dt><dd>{}</dd>", escape(k), escape(v));
     }
-    let _ = write!(
+    let _ = writeln!(
         h,
-        "<dt>ground truth</dt><dd>{} triangles, {} primary and {} shadow rays</dd></dl>\n",
+        "<dt>ground truth</dt><dd>{} triangles, {} primary and {} shadow rays</dd></dl>",
         c.truth.triangles, c.truth.primary_rays, c.truth.shadow_rays
     );
 }

@@ -148,7 +148,7 @@ fn draw_labels(
 ) -> Result<(), ReportError> {
     let (w, h) = sheet.dimensions();
     let err = super::plot_error(path);
-    let root = BitMapBackend::with_buffer(&mut **sheet, (w, h)).into_drawing_area();
+    let root = BitMapBackend::with_buffer(sheet, (w, h)).into_drawing_area();
     let text = |s: &str, x: u32, y: u32, px: u32| {
         Text::new(
             s.to_string(),

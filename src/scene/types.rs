@@ -269,16 +269,7 @@ pub struct PolygonOffset {
 
 /// How a shadow map is sampled (GL_TEXTURE_MIN/MAG_FILTER of the map).
 #[derive(
-    Clone,
-    Copy,
-    Debug,
-    Default,
-    PartialEq,
-    Eq,
-    Hash,
-    serde::Deserialize,
-    serde::Serialize,
-    clap::ValueEnum,
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Deserialize, serde::Serialize, clap::ValueEnum,
 )]
 #[serde(rename_all = "lowercase")]
 pub enum MapFilter {

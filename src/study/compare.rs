@@ -139,7 +139,7 @@ pub fn compare(
     let fail = |t: &Technique, p: PipelineKind, source| StudyError::Render {
         technique: t.name.to_string(),
         pipeline: pipeline_name(p),
-        source,
+        source: Box::new(source),
     };
     let mut slots = Vec::with_capacity(combos.len());
     for &(technique, pipeline) in &combos {

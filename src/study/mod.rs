@@ -41,7 +41,7 @@ pub enum StudyError {
         technique: String,
         pipeline: &'static str,
         #[source]
-        source: RenderError,
+        source: Box<RenderError>,
     },
     #[error(transparent)]
     Truth(#[from] TruthError),

@@ -148,7 +148,7 @@ pub fn sweep(
                         return Err(StudyError::Render {
                             technique: spec.technique.name.to_string(),
                             pipeline: pipeline_name(pipeline),
-                            source: e,
+                            source: Box::new(e),
                         })
                     }
                 },

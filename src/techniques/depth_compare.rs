@@ -20,21 +20,21 @@
 //! r/q is clamped to [0, 1] before the compare (ARB_shadow), so surfaces beyond the light's
 //! far plane compare as 1 and stay lit only where the stored depth is 1.
 
-use crate::ff::{BlendFactor, Command as C};
 use crate::ff::{
     Capability, Command, CompareFunc, CompareMode, CopyTexImage, DepthTextureMode, PixelFormat,
     PixelType, ReadPixels, TexCoord, TexEnvMode, TexEnvParam, TexParam, TextureTarget,
 };
+use crate::ff::{BlendFactor, Command as C};
 use crate::scene::Scene;
 
 use super::map::{bind_map, map_parameters, MapSettings, MAP_IMAGE_SLOT};
 use super::parts::{
-    dim_pass, does_not_receive, eye_linear, light_pass, lighting, objects, receives, reset,
+    dim_pass, does_not_receive, eye_linear, lighting, light_pass, objects, receives, reset,
     LightSet, Look, ShadowLight,
 };
 use super::{
-    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared, Technique,
-    TechniqueError,
+    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared,
+    Technique, TechniqueError,
 };
 
 pub const NAME: &str = "depth-compare";

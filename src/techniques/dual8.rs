@@ -25,7 +25,7 @@
 use glam::Vec4;
 
 use crate::ff::{
-    Capability, CombineArg, CombineFunc, CombineOperand, CombineSource, Command, CompareFunc,
+    Capability, Command, CombineArg, CombineFunc, CombineOperand, CombineSource, CompareFunc,
     PixelFormat, PixelType, TexCoord, TexEnvMode, TexEnvParam, TexFormat, TextureTarget, Wrap,
 };
 use crate::scene::Scene;
@@ -34,12 +34,12 @@ use super::map::{
     bind_map, map_parameters, ramp, read_map, upload_map, MapSettings, MAP_SLOT, RAMP_TEXTURE,
 };
 use super::parts::{
-    dim_pass, does_not_receive, eye_linear, light_pass, lighting, objects, receives, reset,
+    dim_pass, does_not_receive, eye_linear, lighting, light_pass, objects, receives, reset,
     LightSet, Look, ShadowLight,
 };
 use super::{
-    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared, Technique,
-    TechniqueError,
+    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared,
+    Technique, TechniqueError,
 };
 
 pub const NAME: &str = "dual8";
@@ -54,7 +54,10 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
     check_light_count(scene)?;
     let light = ShadowLight::of(scene, NAME)?;
     let map = MapSettings::of(scene);
-    let ramp_planes = [(TexCoord::S, light.plane(2)), (TexCoord::Q, light.plane(3))];
+    let ramp_planes = [
+        (TexCoord::S, light.plane(2)),
+        (TexCoord::Q, light.plane(3)),
+    ];
     let eye = |look| {
         vec![
             dim_pass(scene, prepared, look, false),

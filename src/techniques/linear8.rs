@@ -31,10 +31,12 @@ use crate::scene::Scene;
 
 use super::dual8::{dual_texture_pass, setup, upload_pass};
 use super::map::{read_map, MapSettings, MAP_SLOT, RAMP_TEXTURE};
-use super::parts::{dim_pass, eye_linear, objects, texturing_off, Look, Paint, ShadowLight};
+use super::parts::{
+    dim_pass, eye_linear, objects, texturing_off, Look, Paint, ShadowLight,
+};
 use super::{
-    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared, Technique,
-    TechniqueError,
+    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared,
+    Technique, TechniqueError,
 };
 
 pub const NAME: &str = "linear8";
@@ -128,12 +130,7 @@ fn distance_pass(
     ]);
     // Set while the modelview holds the light's view: the plane is in world coordinates.
     c.extend(eye_linear(&[(TexCoord::S, plane)]));
-    c.extend(objects(
-        scene,
-        prepared,
-        |o| o.casts,
-        Paint::Flat(Vec4::ONE),
-    ));
+    c.extend(objects(scene, prepared, |o| o.casts, Paint::Flat(Vec4::ONE)));
     c.extend(texturing_off());
     Pass {
         name: "light",

@@ -13,8 +13,8 @@ use std::sync::Arc;
 use glam::Vec4;
 
 use crate::ff::{
-    Command, Filter, PixelFormat, PixelType, TexData, TexFormat, TexImage, TexParam, TextureTarget,
-    Wrap,
+    Command, Filter, PixelFormat, PixelType, TexData, TexFormat, TexImage, TexParam,
+    TextureTarget, Wrap,
 };
 use crate::gpu::DepthBits;
 use crate::scene::{MapFilter, PolygonOffset, Scene};

@@ -43,9 +43,9 @@
 //! pipeline only; `multidigit16-combine` is the same comparison with ARB combine.
 
 use crate::ff::{
-    Capability, CombinerBias, CombinerInput, CombinerOutput, CombinerParam, Command, CompareFunc,
-    ComponentUsage, FinalVariable, Mapping, PixelFormat, PixelType, Portion, Register, StencilOp,
-    SumOrMux, TexCoord, TexFormat, TextureTarget, Variable, Wrap,
+    Capability, CombinerBias, CombinerInput, CombinerOutput, CombinerParam, Command,
+    CompareFunc, ComponentUsage, FinalVariable, Mapping, PixelFormat, PixelType, Portion,
+    Register, StencilOp, SumOrMux, TexCoord, TexFormat, TextureTarget, Variable, Wrap,
 };
 use crate::scene::Scene;
 
@@ -54,12 +54,12 @@ use super::map::{
     REPEAT_RAMP_TEXTURE,
 };
 use super::parts::{
-    dim_pass, does_not_receive, eye_linear, light_pass, lighting, objects, receives, reset,
+    dim_pass, does_not_receive, eye_linear, lighting, light_pass, objects, receives, reset,
     LightSet, Look, ShadowLight,
 };
 use super::{
-    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared, Technique,
-    TechniqueError,
+    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared,
+    Technique, TechniqueError,
 };
 
 pub const NAME: &str = "multidigit16";
@@ -192,10 +192,7 @@ pub fn digit_unit(light: &ShadowLight, unit: u8, digit: Digit) -> Vec<Command> {
         },
         Command::Enable(Capability::Texture1D),
     ];
-    c.extend(eye_linear(&[
-        (TexCoord::S, s),
-        (TexCoord::Q, light.plane(3)),
-    ]));
+    c.extend(eye_linear(&[(TexCoord::S, s), (TexCoord::Q, light.plane(3))]));
     c
 }
 

@@ -33,7 +33,7 @@
 use glam::Vec4;
 
 use crate::ff::{
-    Capability, ColorMask, CombineArg, CombineFunc, CombineOperand, CombineSource, Command,
+    Capability, ColorMask, Command, CombineArg, CombineFunc, CombineOperand, CombineSource,
     CompareFunc, StencilOp, TexEnvMode, TexEnvParam, TextureTarget,
 };
 use crate::scene::Scene;
@@ -43,7 +43,8 @@ use super::multidigit16::{
     digit_map_image, digit_map_passes, digit_unit, filter_note, map_unit, setup, Digit,
 };
 use super::parts::{
-    dim_pass, lighting, objects, receives, reset, texturing_off, LightSet, Look, Paint, ShadowLight,
+    dim_pass, lighting, objects, receives, reset, texturing_off, LightSet, Look, Paint,
+    ShadowLight,
 };
 use super::{check_light_count, colour_mask, Pass, Plan, Prepared, Technique, TechniqueError};
 

@@ -35,8 +35,8 @@ use crate::gpu::DepthBits;
 use crate::scene::{Camera, Light, LightKind, Projection, Scene};
 
 use super::{
-    check_light_count, FramebufferNeeds, MaskPlan, MaskSource, Pass, Plan, Prepared, Technique,
-    TechniqueError, MASK_SLOT,
+    check_light_count, FramebufferNeeds, MaskPlan, MaskSource, Pass, Plan, Prepared, Technique, TechniqueError,
+    MASK_SLOT,
 };
 
 pub const TECHNIQUE: Technique = Technique {

@@ -353,12 +353,7 @@ pub fn light_pass(
             },
         ]);
     }
-    commands.extend(objects(
-        scene,
-        prepared,
-        |o| o.casts,
-        Paint::Flat(Vec4::ONE),
-    ));
+    commands.extend(objects(scene, prepared, |o| o.casts, Paint::Flat(Vec4::ONE)));
     if offset.is_some() {
         commands.push(Command::Disable(Capability::PolygonOffsetFill));
     }
@@ -435,9 +430,7 @@ mod tests {
             let p = m * (eye + d * dir).extend(1.0);
             assert!((p.z / p.w - r).abs() < 1e-4, "r/q at {d}: {}", p.z / p.w);
             // The linear plane agrees at both ends.
-            let s = light
-                .linear_distance_plane()
-                .dot((eye + d * dir).extend(1.0));
+            let s = light.linear_distance_plane().dot((eye + d * dir).extend(1.0));
             assert!((s - r).abs() < 1e-5, "linear s at {d}: {s}");
         }
     }
