@@ -5,7 +5,9 @@
 //! Layers, lowest first (a module uses those below it, never those above):
 //! `gpu` (contexts, render targets, readback) → `ff` (commands and the GL 1.x state model,
 //! no GL calls) → `mesh`, `scene`, `truth`, `metrics` (pure) → `pipeline` → `techniques` (plans of
-//! Commands) → `render` (a scene, judged against the truth) → `bench` → the `fixedfunc` CLI.
+//! Commands) → `render` (a scene, judged against the truth) → `bench`, `study` (many renders
+//! against one truth: compare, bias sweeps) → `report` (tables, plots, pages) → the
+//! `fixedfunc` CLI.
 
 pub mod bench;
 pub mod ff;
@@ -14,6 +16,8 @@ pub mod mesh;
 pub mod metrics;
 pub mod pipeline;
 pub mod render;
+pub mod report;
 pub mod scene;
+pub mod study;
 pub mod techniques;
 pub mod truth;

@@ -32,6 +32,10 @@ pub enum CliError {
     Render(#[from] RenderError),
     #[error(transparent)]
     Truth(#[from] TruthError),
+    #[error(transparent)]
+    Study(#[from] fixedfunc::study::StudyError),
+    #[error(transparent)]
+    Report(#[from] fixedfunc::report::ReportError),
     #[error("cannot write {path}: {source}")]
     WriteImage {
         path: PathBuf,

@@ -3,14 +3,18 @@
 //! below this module exits the process.
 
 mod bench;
+mod compare;
 mod error;
 mod info;
+mod pipelines;
+mod progress;
 mod render;
 mod replay;
 mod scene_arg;
 mod script_io;
 mod shaders;
 mod shadow_args;
+mod sweep_bias;
 mod truth;
 
 use std::path::PathBuf;
@@ -69,6 +73,14 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         depth_map: Option<PathBuf>,
     },
+    /// Every technique on both pipelines against one ground truth, frames interleaved: a
+    /// table, and a report folder (report.html, results.csv/json, accuracy_vs_time.svg/png,
+    /// contact_sheet.png).
+    Compare(compare::Args),
+    /// A polygon-offset grid (factor × units) for one technique per depth format: error
+    /// split into false shadow (acne) and missed shadow (peter-panning), heatmaps, CSV, best
+    /// cell.
+    SweepBias(sweep_bias::Args),
     /// The CPU ground truth of a scene (no GL): shadow mask and soft-shadow visibility.
     Truth {
         /// Scene file (TOML); the built-in default scene when omitted.
@@ -140,6 +152,8 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Info { backend, json } => info::run(backend, json),
+        Command::Compare(args) => compare::run(args),
+        Command::SweepBias(args) => sweep_bias::run(args),
         Command::Replay {
             file,
             pipeline,

@@ -1,0 +1,85 @@
+//! `fixedfunc compare`: every technique × pipeline on one scene, frames interleaved, one
+//! truth; prints the table and writes the report folder (HTML page, CSV, JSON, plot,
+//! contact sheet).
+
+use std::path::PathBuf;
+
+use fixedfunc::gpu::Backend;
+use fixedfunc::render::ImageSize;
+use fixedfunc::report;
+use fixedfunc::study::{self, CompareSpec};
+use fixedfunc::techniques::{self, REGISTRY};
+
+use super::error::CliError;
+use super::pipelines::{technique_names, PipelineChoice};
+use super::progress::StudyBar;
+use super::scene_arg;
+use super::shadow_args::ShadowArgs;
+
+/// Arguments of `compare`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Scene file (TOML); the built-in default scene when omitted.
+    pub scene: Option<PathBuf>,
+    /// Techniques to compare, comma-separated (default: every technique).
+    #[arg(long, value_delimiter = ',', value_parser = technique_names())]
+    pub techniques: Vec<String>,
+    /// The folder the report is written to (created when missing).
+    #[arg(long, default_value = "compare-report")]
+    pub out: PathBuf,
+    /// Frames per technique and pipeline; times are the median of frames 2…N.
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=10_000))]
+    pub frames: u32,
+    /// Which pipelines run (a combination a pipeline cannot execute is skipped and said so).
+    #[arg(long, value_enum, default_value_t = PipelineChoice::Both)]
+    pub pipeline: PipelineChoice,
+    #[arg(long, value_enum, default_value_t = Backend::Egl)]
+    pub backend: Backend,
+    /// Image size WxH (default: the scene's).
+    #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]
+    pub size: Option<ImageSize>,
+    #[command(flatten)]
+    pub shadow: ShadowArgs,
+}
+
+pub fn run(args: Args) -> Result<(), CliError> {
+    let mut scene = scene_arg::load(args.scene.as_deref())?;
+    args.shadow.apply(&mut scene);
+    let techniques = if args.techniques.is_empty() {
+        REGISTRY.iter().collect()
+    } else {
+        let mut chosen = Vec::new();
+        for name in &args.techniques {
+            let t = techniques::lookup(name).map_err(study::StudyError::from)?;
+            if !chosen
+                .iter()
+                .any(|c: &&techniques::Technique| c.name == t.name)
+            {
+                chosen.push(t);
+            }
+        }
+        chosen
+    };
+    let spec = CompareSpec {
+        techniques,
+        pipelines: args.pipeline.kinds(),
+        backend: args.backend,
+        frames: args.frames,
+        size: args.size,
+    };
+    let bar = StudyBar::new();
+    let comparison = study::compare(&scene, &spec, |p| bar.update(p));
+    bar.finish();
+    let comparison = comparison?;
+    let name = scene_arg::name(args.scene.as_deref());
+    let written = report::write_comparison(&comparison, &name, &args.out)?;
+    let rows = report::ResultRow::all(&comparison.rows);
+    print!("{}", report::comparison_table(&rows));
+    print!("{}", report::phase_lines(&comparison));
+    println!(
+        "report {} ({} files)",
+        args.out.join("report.html").display(),
+        written.files.len()
+    );
+    Ok(())
+}

@@ -1,0 +1,99 @@
+//! `fixedfunc sweep-bias`: a polygon-offset grid for one technique per depth format, scored
+//! against one truth; prints each format's best cell and writes heatmaps, CSV and JSON.
+
+use std::path::PathBuf;
+
+use fixedfunc::gpu::{Backend, DepthBits};
+use fixedfunc::render::ImageSize;
+use fixedfunc::report;
+use fixedfunc::scene::{MapFilter, Precision};
+use fixedfunc::study::{self, SweepRange, SweepSpec};
+use fixedfunc::techniques;
+
+use super::error::CliError;
+use super::pipelines::{technique_names, PipelineChoice};
+use super::progress::StudyBar;
+use super::scene_arg;
+use super::shadow_args::ShadowArgs;
+
+/// `A..B[:steps]` or a single number, with the range layer's message on failure.
+fn parse_range(text: &str) -> Result<SweepRange, String> {
+    text.parse::<SweepRange>()
+        .map_err(|e| format!("`{text}`: {e}"))
+}
+
+/// Arguments of `sweep-bias`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Scene file (TOML); the built-in default scene when omitted.
+    pub scene: Option<PathBuf>,
+    /// The technique whose bias is swept.
+    #[arg(long, value_parser = technique_names())]
+    pub technique: String,
+    /// glPolygonOffset factors: A..B[:STEPS] (5 steps when omitted) or one number.
+    #[arg(long, value_name = "A..B[:STEPS]", value_parser = parse_range, allow_hyphen_values = true)]
+    pub factor: SweepRange,
+    /// glPolygonOffset units: A..B[:STEPS] (5 steps when omitted) or one number.
+    #[arg(long, value_name = "A..B[:STEPS]", value_parser = parse_range, allow_hyphen_values = true)]
+    pub units: SweepRange,
+    /// Depth formats of the light pass, comma-separated; one heatmap each.
+    #[arg(long, value_enum, value_delimiter = ',', default_values = ["16", "24", "32f"])]
+    pub depth_bits: Vec<DepthBits>,
+    /// The folder the heatmaps, CSV and JSON are written to (created when missing).
+    #[arg(long, default_value = "sweep-bias")]
+    pub out: PathBuf,
+    #[arg(long, value_enum, default_value_t = PipelineChoice::Emulate)]
+    pub pipeline: PipelineChoice,
+    #[arg(long, value_enum, default_value_t = Backend::Egl)]
+    pub backend: Backend,
+    /// Image size WxH (default: the scene's).
+    #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]
+    pub size: Option<ImageSize>,
+    /// Shadow map edge in texels (default: the scene's `map_size`).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=8192))]
+    pub map_size: Option<u32>,
+    /// Arithmetic of the emulated texture and combiner stages (default: the scene's).
+    #[arg(long, value_enum)]
+    pub precision: Option<Precision>,
+    /// Shadow map filter (default: the scene's `filter`).
+    #[arg(long, value_enum)]
+    pub filter: Option<MapFilter>,
+}
+
+pub fn run(args: Args) -> Result<(), CliError> {
+    let mut scene = scene_arg::load(args.scene.as_deref())?;
+    ShadowArgs {
+        map_size: args.map_size,
+        precision: args.precision,
+        filter: args.filter,
+        ..ShadowArgs::default()
+    }
+    .apply(&mut scene);
+    let mut depths = Vec::new();
+    for d in args.depth_bits {
+        if !depths.contains(&d) {
+            depths.push(d);
+        }
+    }
+    let spec = SweepSpec {
+        technique: techniques::lookup(&args.technique).map_err(study::StudyError::from)?,
+        factor: args.factor,
+        units: args.units,
+        depths,
+        pipelines: args.pipeline.kinds(),
+        backend: args.backend,
+        size: args.size,
+    };
+    let bar = StudyBar::new();
+    let sweep = study::sweep(&scene, &spec, |p| bar.update(p));
+    bar.finish();
+    let sweep = sweep?;
+    let written = report::write_sweep(&sweep, &args.out)?;
+    print!("{}", report::sweep_summary(&sweep));
+    println!(
+        "wrote {} files to {}",
+        written.files.len(),
+        args.out.display()
+    );
+    Ok(())
+}

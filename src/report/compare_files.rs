@@ -1,0 +1,289 @@
+//! The files of a comparison, written into one folder: per measured row its image, mask
+//! and error image; the truth mask; `results.csv` and `results.json`;
+//! `accuracy_vs_time.svg`/`.png`; `contact_sheet.png`; and last `report.html`, built from
+//! the list of what was written.
+
+use std::path::Path;
+
+use serde::Serialize;
+
+use crate::scene::{LightKind, Scene};
+use crate::study::{Comparison, RowCost, RowResult};
+
+use super::csv::{line, opt};
+use super::pictures::{self, SheetLine};
+use super::{ensure_dir, html, plot, write_png, write_text, ReportError, ResultRow, Written};
+
+/// File names of a row's pictures.
+pub(super) struct RowFiles {
+    pub image: String,
+    pub mask: String,
+    pub error: String,
+}
+
+impl RowFiles {
+    pub fn of(slug: &str) -> RowFiles {
+        RowFiles {
+            image: format!("{slug}.png"),
+            mask: format!("{slug}-mask.png"),
+            error: format!("{slug}-error.png"),
+        }
+    }
+}
+
+pub(super) const TRUTH_MASK: &str = "truth-mask.png";
+pub(super) const PLOT_SVG: &str = "accuracy_vs_time.svg";
+pub(super) const PLOT_PNG: &str = "accuracy_vs_time.png";
+pub(super) const SHEET: &str = "contact_sheet.png";
+pub(super) const CSV: &str = "results.csv";
+pub(super) const JSON: &str = "results.json";
+pub(super) const HTML: &str = "report.html";
+
+/// Writes every file of the comparison into `dir` (created when missing). `scene_name`
+/// names the scene on the page.
+pub fn write_comparison(
+    c: &Comparison,
+    scene_name: &str,
+    dir: &Path,
+) -> Result<Written, ReportError> {
+    ensure_dir(dir)?;
+    let rows = ResultRow::all(&c.rows);
+    let mut written = Written::default();
+    let truth_rgb = pictures::mask_rgb(&c.truth.mask);
+    write_png(dir, TRUTH_MASK, &c.truth.mask.to_image(), &mut written)?;
+
+    let mut pictures_of = Vec::new();
+    for (row, result) in c.rows.iter().zip(&rows) {
+        let Some(outcome) = row.outcome() else {
+            continue;
+        };
+        let files = RowFiles::of(&row.slug());
+        let image = pictures::rgb(&outcome.image);
+        let mask = pictures::mask_rgb(&outcome.mask);
+        let error = pictures::error_image(&outcome.mask, &c.truth.mask);
+        write_png(dir, &files.image, &image, &mut written)?;
+        write_png(dir, &files.mask, &outcome.mask.to_image(), &mut written)?;
+        write_png(dir, &files.error, &error, &mut written)?;
+        pictures_of.push((pictures::row_label(result), [image, mask, error]));
+    }
+
+    write_text(dir, CSV, &results_csv(c, &rows), &mut written)?;
+    write_text(
+        dir,
+        JSON,
+        &results_json(c, &rows, scene_name)?,
+        &mut written,
+    )?;
+
+    let svg = dir.join(PLOT_SVG);
+    let png = plot::accuracy_vs_time(&rows, &svg)?;
+    written.push(svg);
+    write_png(dir, PLOT_PNG, &png, &mut written)?;
+
+    let mut lines = vec![SheetLine {
+        label: "ground truth (ray-cast): shadow mask, and the colours of the error images"
+            .to_string(),
+        tiles: [None, Some(&truth_rgb), None],
+    }];
+    lines.extend(pictures_of.iter().map(|(label, [a, b, e])| SheetLine {
+        label: label.clone(),
+        tiles: [Some(a), Some(b), Some(e)],
+    }));
+    let size = (c.truth.mask.width, c.truth.mask.height);
+    let title = format!(
+        "{scene_name} · {}×{} · columns: image, shadow mask, error against the truth",
+        size.0, size.1
+    );
+    let sheet = pictures::contact_sheet(&title, size, &lines, &dir.join(SHEET))?;
+    write_png(dir, SHEET, &sheet, &mut written)?;
+
+    let page = html::page(c, &rows, scene_name, &scene_facts(&c.scene), &written);
+    write_text(dir, HTML, &page, &mut written)?;
+    Ok(written)
+}
+
+const CSV_HEADER: [&str; 26] = [
+    "technique",
+    "pipeline",
+    "backend",
+    "status",
+    "skipped_because",
+    "error_percent",
+    "false_shadow",
+    "missed_shadow",
+    "coverage",
+    "geometry_pixels",
+    "band",
+    "outside_band_error_percent",
+    "outside_band_false_shadow",
+    "outside_band_missed_shadow",
+    "ms_median",
+    "ms_min",
+    "ms_max",
+    "steady_frames",
+    "cold_ms",
+    "passes",
+    "programs_compiled",
+    "maps_made",
+    "pareto",
+    "setup_ms",
+    "frames_total_ms",
+    "finish_ms",
+];
+
+fn cost(result: &RowResult) -> Option<RowCost> {
+    match result {
+        RowResult::Measured { cost, .. } => Some(*cost),
+        RowResult::Skipped { .. } => None,
+    }
+}
+
+/// One line per row; numbers at full precision, empty fields where a row has none.
+fn results_csv(c: &Comparison, rows: &[ResultRow]) -> String {
+    let mut out = line(&CSV_HEADER);
+    for (r, row) in rows.iter().zip(&c.rows) {
+        let m = r.measured.as_ref();
+        let k = cost(&row.result);
+        out.push_str(&line(&[
+            r.technique.to_string(),
+            crate::render::pipeline_name(r.pipeline).to_string(),
+            r.backend.name().to_string(),
+            if m.is_some() { "measured" } else { "skipped" }.to_string(),
+            r.skipped.clone().unwrap_or_default(),
+            opt(m.map(|m| m.error_percent)),
+            opt(m.map(|m| m.false_shadow)),
+            opt(m.map(|m| m.missed_shadow)),
+            opt(m.map(|m| m.coverage)),
+            opt(m.map(|m| m.geometry_pixels)),
+            opt(m.map(|m| m.band)),
+            opt(m.map(|m| m.outside_band_error_percent)),
+            opt(m.map(|m| m.outside_band_false_shadow)),
+            opt(m.map(|m| m.outside_band_missed_shadow)),
+            opt(m.and_then(|m| m.ms_median)),
+            opt(m.and_then(|m| m.ms_min)),
+            opt(m.and_then(|m| m.ms_max)),
+            opt(m.map(|m| m.steady_frames)),
+            opt(m.map(|m| m.cold_ms)),
+            opt(m.map(|m| m.passes)),
+            opt(m.map(|m| m.programs_compiled)),
+            opt(m.map(|m| m.maps_made)),
+            r.pareto.to_string(),
+            opt(k.map(|k| k.setup_ms)),
+            opt(k.map(|k| k.frames_ms)),
+            opt(k.map(|k| k.finish_ms)),
+        ]));
+    }
+    out
+}
+
+#[derive(Serialize)]
+struct JsonRow<'a> {
+    #[serde(flatten)]
+    row: &'a ResultRow,
+    cost: Option<RowCost>,
+}
+
+#[derive(Serialize)]
+struct JsonReport<'a> {
+    scene: &'a str,
+    facts: Vec<(String, String)>,
+    width: u32,
+    height: u32,
+    frames: u32,
+    truth_ms: f64,
+    total_ms: f64,
+    rows: Vec<JsonRow<'a>>,
+}
+
+fn results_json(c: &Comparison, rows: &[ResultRow], scene: &str) -> Result<String, ReportError> {
+    let report = JsonReport {
+        scene,
+        facts: scene_facts(&c.scene),
+        width: c.scene.image.width,
+        height: c.scene.image.height,
+        frames: c.frames,
+        truth_ms: c.truth_ms,
+        total_ms: c.total_ms,
+        rows: rows
+            .iter()
+            .zip(&c.rows)
+            .map(|(row, r)| JsonRow {
+                row,
+                cost: cost(&r.result),
+            })
+            .collect(),
+    };
+    Ok(serde_json::to_string_pretty(&report)? + "\n")
+}
+
+/// What the page says about the scene, as (what, value) lines.
+pub(super) fn scene_facts(scene: &Scene) -> Vec<(String, String)> {
+    let v = |p: glam::Vec3| format!("({}, {}, {})", p.x, p.y, p.z);
+    let mut facts = vec![
+        (
+            "image".to_string(),
+            format!("{}×{} pixels", scene.image.width, scene.image.height),
+        ),
+        (
+            "camera".to_string(),
+            format!(
+                "eye {} looking at {}",
+                v(scene.camera.eye),
+                v(scene.camera.at)
+            ),
+        ),
+    ];
+    for (i, light) in scene.lights.iter().enumerate() {
+        let kind = match light.kind {
+            LightKind::Point => "point light".to_string(),
+            LightKind::Spot { cutoff, .. } => format!("spot light, cutoff {cutoff}°"),
+            LightKind::Directional { direction } => {
+                format!("directional light along {}", v(direction))
+            }
+            LightKind::Area { .. } => "area light (hard mask from its centre)".to_string(),
+        };
+        facts.push((
+            format!("light {i}"),
+            format!(
+                "{kind} at {} aimed at {}",
+                v(light.view.eye),
+                v(light.view.at)
+            ),
+        ));
+    }
+    for (i, o) in scene.objects.iter().enumerate() {
+        let name = o.name.clone().unwrap_or_else(|| format!("object {i}"));
+        let shape = format!("{:?}", o.shape);
+        let shape = shape
+            .split([' ', '{', '('])
+            .next()
+            .unwrap_or("")
+            .to_lowercase();
+        facts.push((
+            name,
+            format!(
+                "{shape}, {} triangles at {}{}{}",
+                o.mesh.triangle_count(),
+                v(o.transform.translate),
+                if o.casts { "" } else { ", casts no shadow" },
+                if o.receives { "" } else { ", receives none" }
+            ),
+        ));
+    }
+    let s = &scene.shadow;
+    facts.push((
+        "shadow map".to_string(),
+        format!(
+            "{}² texels, {} depth, polygon offset {}, {:?} precision, {:?} filter",
+            s.map_size,
+            super::heatmap::depth_label(s.depth),
+            s.polygon_offset.map_or("none".to_string(), |o| format!(
+                "({}, {})",
+                o.factor, o.units
+            )),
+            s.precision,
+            s.filter
+        ),
+    ));
+    facts
+}

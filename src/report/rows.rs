@@ -1,0 +1,161 @@
+//! One flat, serialisable row per technique × pipeline, and the Pareto front.
+//!
+//! Pareto front over (time, error), both minimised: a row is on it when no other row is at
+//! least as fast and at least as accurate and strictly better in one of the two. The time
+//! is the typical frame (steady median; the cold frame when it is the only one).
+
+use serde::Serialize;
+
+use crate::gpu::Backend;
+use crate::pipeline::PipelineKind;
+use crate::render::RenderOutcome;
+use crate::study::{Row, RowResult};
+
+/// The figures of a measured row.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Measured {
+    /// 100 · wrong / truth geometry pixels (the `render` line's error %).
+    pub error_percent: f64,
+    /// Truth lit, technique shadowed (acne, too little bias).
+    pub false_shadow: u64,
+    /// Truth shadowed, technique lit (peter-panning, too much bias).
+    pub missed_shadow: u64,
+    /// Technique background where the truth has geometry.
+    pub coverage: u64,
+    pub geometry_pixels: u64,
+    /// Half-width of the edge band, pixels.
+    pub band: u32,
+    /// Error % outside the band around the truth's shadow edges.
+    pub outside_band_error_percent: f64,
+    pub outside_band_false_shadow: u64,
+    pub outside_band_missed_shadow: u64,
+    /// Steady frames (2…N): median, min, max; `None` with one frame.
+    pub ms_median: Option<f64>,
+    pub ms_min: Option<f64>,
+    pub ms_max: Option<f64>,
+    pub steady_frames: usize,
+    pub cold_ms: f64,
+    /// The time plotted and ranked: the steady median, or the cold frame alone.
+    pub typical_ms: f64,
+    pub passes: usize,
+    pub programs_compiled: u64,
+    pub maps_made: u32,
+    /// What the technique says about this scene.
+    pub notes: Vec<String>,
+}
+
+impl Measured {
+    /// From a render outcome, through the same `figures()` `render` prints.
+    pub fn of(outcome: &RenderOutcome) -> Measured {
+        let fig = outcome.figures();
+        let band = &outcome.metrics.outside_band;
+        let steady = fig.timings.steady;
+        Measured {
+            error_percent: fig.wrong_percent,
+            false_shadow: fig.false_shadow,
+            missed_shadow: fig.missed_shadow,
+            coverage: outcome.metrics.all.coverage,
+            geometry_pixels: outcome.metrics.all.pixels,
+            band: outcome.metrics.band,
+            outside_band_error_percent: band.wrong_percent,
+            outside_band_false_shadow: band.false_shadow,
+            outside_band_missed_shadow: band.missed_shadow,
+            ms_median: steady.map(|s| s.median),
+            ms_min: steady.map(|s| s.min),
+            ms_max: steady.map(|s| s.max),
+            steady_frames: steady.map_or(0, |s| s.samples),
+            cold_ms: fig.timings.cold_ms,
+            typical_ms: fig.timings.typical_ms(),
+            passes: fig.passes,
+            programs_compiled: fig.programs,
+            maps_made: fig.maps_made,
+            notes: outcome.notes.clone(),
+        }
+    }
+}
+
+/// One technique × pipeline of a comparison.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ResultRow {
+    pub technique: &'static str,
+    pub summary: &'static str,
+    pub pipeline: PipelineKind,
+    pub backend: Backend,
+    /// On the Pareto front of time and error.
+    pub pareto: bool,
+    /// Why the combination did not run, when it did not.
+    pub skipped: Option<String>,
+    pub measured: Option<Measured>,
+}
+
+impl ResultRow {
+    /// The study's row, not yet placed on the front.
+    pub fn of(row: &Row) -> ResultRow {
+        let (skipped, measured) = match &row.result {
+            RowResult::Measured { outcome, .. } => (None, Some(Measured::of(outcome))),
+            RowResult::Skipped { reason } => (Some(reason.clone()), None),
+        };
+        ResultRow {
+            technique: row.technique.name,
+            summary: row.technique.summary,
+            pipeline: row.pipeline,
+            backend: row.backend,
+            pareto: false,
+            skipped,
+            measured,
+        }
+    }
+
+    /// Every row of a study, with the Pareto front marked.
+    pub fn all(rows: &[Row]) -> Vec<ResultRow> {
+        let mut out: Vec<ResultRow> = rows.iter().map(ResultRow::of).collect();
+        let points: Vec<Option<(f64, f64)>> = out
+            .iter()
+            .map(|r| r.measured.as_ref().map(|m| (m.typical_ms, m.error_percent)))
+            .collect();
+        for i in pareto_front(&points) {
+            out[i].pareto = true;
+        }
+        out
+    }
+}
+
+/// Indices of the points (time, error) no other point dominates, ordered by time (then
+/// error); `None` points take no part.
+pub fn pareto_front(points: &[Option<(f64, f64)>]) -> Vec<usize> {
+    let dominates =
+        |a: (f64, f64), b: (f64, f64)| a.0 <= b.0 && a.1 <= b.1 && (a.0 < b.0 || a.1 < b.1);
+    let mut front: Vec<usize> = (0..points.len())
+        .filter(|&i| {
+            points[i].is_some_and(|p| !points.iter().any(|q| q.is_some_and(|q| dominates(q, p))))
+        })
+        .collect();
+    front.sort_by(|&a, &b| {
+        let (pa, pb) = (points[a].unwrap_or_default(), points[b].unwrap_or_default());
+        pa.0.total_cmp(&pb.0).then(pa.1.total_cmp(&pb.1))
+    });
+    front
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_front_keeps_only_undominated_points() {
+        let p = |t: f64, e: f64| Some((t, e));
+        // 0 fast and wrong, 1 slow and right, 2 dominated by 0 and 1, 3 equal to 0 (kept:
+        // equal points do not dominate each other), 4 skipped.
+        let pts = [
+            p(1.0, 10.0),
+            p(5.0, 0.5),
+            p(6.0, 12.0),
+            p(1.0, 10.0),
+            None,
+            p(3.0, 2.0),
+        ];
+        assert_eq!(pareto_front(&pts), vec![0, 3, 5, 1]);
+        assert_eq!(pareto_front(&[None, None]), Vec::<usize>::new());
+        assert_eq!(pareto_front(&[p(2.0, 2.0), p(2.0, 1.0)]), vec![1]);
+    }
+}

@@ -1,0 +1,79 @@
+//! Studies: many renders of one scene, measured in one run and judged against one truth.
+//! The library half of `fixedfunc compare` and `fixedfunc sweep-bias` (no printing, no
+//! files; `report` turns a study into tables, plots and pages).
+//!
+//! - [`compare`]: every chosen technique × pipeline held open as a `render::Session` at
+//!   once; their frames are interleaved round-robin (frame 1 of each, then frame 2 of
+//!   each, …) so that machine noise — another build, a frequency step — hits all of them
+//!   alike instead of whichever ran during it. The truth is ray-cast once and handed to
+//!   every `Session::finish`, so each row's figures are exactly `render`'s.
+//! - [`sweep`]: one session per depth format and pipeline (the depth format belongs to
+//!   the framebuffer); each cell of the polygon-offset grid is `Session::restage` with the
+//!   cell's offset, one frame (the maps are stale, so the map pass runs again with the new
+//!   offset; the eye passes run because the comparison happens there), the mask passes,
+//!   and `metrics::compare` against the truth computed once. Contexts, framebuffers and
+//!   compiled programs are made once per session, not once per cell.
+//!
+//! **Not applicable is not a failure.** A combination the pipeline refuses
+//! (`PipelineError::Unsupported`: register combiners on the native path) or the technique
+//! refuses for these settings (`TechniqueError::NeedsStencil` with a 16-bit depth buffer,
+//! `NoLight`) becomes a skipped entry carrying the reason, and the study goes on. Any other
+//! error is a real failure and ends the study.
+
+pub mod compare;
+pub mod range;
+pub mod sweep;
+
+pub use compare::{compare, CompareSpec, Comparison, Row, RowCost, RowResult};
+pub use range::{RangeProblem, SweepRange};
+pub use sweep::{sweep, Cell, Surface, SurfaceResult, Sweep, SweepSpec};
+
+use crate::pipeline::PipelineError;
+use crate::render::RenderError;
+use crate::techniques::TechniqueError;
+use crate::truth::TruthError;
+
+/// Failures of a study.
+#[derive(Debug, thiserror::Error)]
+pub enum StudyError {
+    #[error("`{technique}` on the {pipeline} pipeline: {source}")]
+    Render {
+        technique: String,
+        pipeline: &'static str,
+        #[source]
+        source: Box<RenderError>,
+    },
+    #[error(transparent)]
+    Truth(#[from] TruthError),
+    #[error(transparent)]
+    Technique(#[from] TechniqueError),
+    #[error("nothing to study: no technique or no pipeline was chosen")]
+    Empty,
+}
+
+/// Progress of a study, for progress bars.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Progress {
+    /// Steps done so far.
+    pub done: u64,
+    /// Steps in the whole study.
+    pub total: u64,
+    /// What the step just finished was.
+    pub what: String,
+}
+
+/// The reason to skip a combination that does not apply, or `None` for a real failure.
+pub fn not_applicable(error: &RenderError) -> Option<String> {
+    match error {
+        RenderError::Pipeline(e @ PipelineError::Unsupported { .. }) => Some(e.to_string()),
+        RenderError::Technique(
+            e @ (TechniqueError::NeedsStencil { .. } | TechniqueError::NoLight { .. }),
+        ) => Some(e.to_string()),
+        _ => None,
+    }
+}
+
+/// Milliseconds since `start`.
+fn ms_since(start: std::time::Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1e3
+}

@@ -1,0 +1,251 @@
+//! The polygon-offset grid of one technique: factor × units, per depth format and pipeline.
+//!
+//! A cell is scored by `metrics::compare` against the truth, so it splits into false
+//! shadow (truth lit, technique shadowed: acne, the bias too small) and missed shadow
+//! (truth shadowed, technique lit: peter-panning, the bias too large). The best cell of a
+//! surface is the one with the fewest wrong pixels; ties go to fewer wrong pixels outside
+//! the edge band, then to the first in grid order (units-major, as the heatmap's rows).
+
+use std::time::Instant;
+
+use crate::gpu::{Backend, DepthBits};
+use crate::metrics::{self, Metrics};
+use crate::pipeline::PipelineKind;
+use crate::render::{self, pipeline_name, ImageSize, RenderError, RenderOptions, Session};
+use crate::scene::{PolygonOffset, Scene, ShadowSettings};
+use crate::techniques::Technique;
+use crate::truth::{self, Truth};
+
+use super::{ms_since, not_applicable, Progress, StudyError, SweepRange};
+
+/// What to sweep.
+#[derive(Debug, Clone)]
+pub struct SweepSpec {
+    pub technique: &'static Technique,
+    pub factor: SweepRange,
+    pub units: SweepRange,
+    pub depths: Vec<DepthBits>,
+    pub pipelines: Vec<PipelineKind>,
+    pub backend: Backend,
+    pub size: Option<ImageSize>,
+}
+
+/// One cell of the grid.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cell {
+    pub factor: f32,
+    pub units: f32,
+    pub metrics: Metrics,
+    /// Restage, frame, mask passes and scoring (ms).
+    pub ms: f64,
+}
+
+impl Cell {
+    /// The order the best cell is chosen by (smaller is better).
+    pub fn score(&self) -> (u64, u64) {
+        (self.metrics.all.wrong, self.metrics.outside_band.wrong)
+    }
+}
+
+/// The grid of one depth format on one pipeline.
+#[derive(Debug, Clone)]
+pub struct Surface {
+    pub depth: DepthBits,
+    pub pipeline: PipelineKind,
+    pub result: SurfaceResult,
+}
+
+/// A measured grid, or why there is none.
+#[derive(Debug, Clone)]
+pub enum SurfaceResult {
+    Measured {
+        /// Row-major: `cells[u * factors.len() + f]` has `units[u]`, `factors[f]`.
+        cells: Vec<Cell>,
+        /// Index of the best cell.
+        best: usize,
+        /// `Session::new` (ms).
+        setup_ms: f64,
+    },
+    Skipped {
+        reason: String,
+    },
+}
+
+/// A finished sweep.
+#[derive(Debug, Clone)]
+pub struct Sweep {
+    pub technique: &'static Technique,
+    pub factors: Vec<f32>,
+    pub units: Vec<f32>,
+    pub surfaces: Vec<Surface>,
+    pub truth: Truth,
+    pub truth_ms: f64,
+    pub total_ms: f64,
+}
+
+/// Index of the best cell (see the module note); `None` for no cells.
+pub fn best(cells: &[Cell]) -> Option<usize> {
+    (0..cells.len()).min_by_key(|&i| cells[i].score())
+}
+
+/// Runs the grid; `progress` is called after each step.
+pub fn sweep(
+    scene: &Scene,
+    spec: &SweepSpec,
+    mut progress: impl FnMut(Progress),
+) -> Result<Sweep, StudyError> {
+    if spec.depths.is_empty() || spec.pipelines.is_empty() {
+        return Err(StudyError::Empty);
+    }
+    let start = Instant::now();
+    let (factors, units) = (spec.factor.values(), spec.units.values());
+    let offsets: Vec<PolygonOffset> = units
+        .iter()
+        .flat_map(|&u| {
+            factors.iter().map(move |&f| PolygonOffset {
+                factor: f,
+                units: u,
+            })
+        })
+        .collect();
+    let surfaces_n = (spec.depths.len() * spec.pipelines.len()) as u64;
+    let total = 1 + surfaces_n * (1 + offsets.len() as u64);
+    let mut done = 0;
+    let mut step = |what: String| {
+        done += 1;
+        progress(Progress { done, total, what });
+    };
+
+    let mut scene = render::apply_overrides(scene, spec.size, Some(spec.technique.name));
+    let base = RenderOptions {
+        backend: spec.backend,
+        size: spec.size,
+        frames: 1,
+        ..RenderOptions::default()
+    };
+    let truth_start = Instant::now();
+    let truth = truth::truth(&scene, &base.truth)?;
+    let truth_ms = ms_since(truth_start);
+    step("ground truth".to_string());
+
+    let mut surfaces = Vec::new();
+    for &depth in &spec.depths {
+        for &pipeline in &spec.pipelines {
+            scene.shadow.depth = depth;
+            scene.shadow.polygon_offset = offsets.first().copied();
+            let options = RenderOptions {
+                pipeline,
+                ..base.clone()
+            };
+            let label = format!("{} bits ({})", depth.bits(), pipeline_name(pipeline));
+            let result = match grid(&scene, &options, &offsets, &truth, |i| {
+                step(format!("cell {}/{} at {label}", i + 1, offsets.len()))
+            }) {
+                Ok(r) => r,
+                Err(e) => match not_applicable(&e) {
+                    Some(reason) => SurfaceResult::Skipped { reason },
+                    None => {
+                        return Err(StudyError::Render {
+                            technique: spec.technique.name.to_string(),
+                            pipeline: pipeline_name(pipeline),
+                            source: Box::new(e),
+                        })
+                    }
+                },
+            };
+            if matches!(result, SurfaceResult::Skipped { .. }) {
+                // Count the cells that will not run, so the bar still ends full.
+                for _ in 0..offsets.len() {
+                    step(format!("skipped {label}"));
+                }
+            }
+            step(format!("finished {label}"));
+            surfaces.push(Surface {
+                depth,
+                pipeline,
+                result,
+            });
+        }
+    }
+    Ok(Sweep {
+        technique: spec.technique,
+        factors,
+        units,
+        surfaces,
+        truth,
+        truth_ms,
+        total_ms: ms_since(start),
+    })
+}
+
+/// One session over every offset; `cell_done(i)` after cell i.
+fn grid(
+    scene: &Scene,
+    options: &RenderOptions,
+    offsets: &[PolygonOffset],
+    truth: &Truth,
+    mut cell_done: impl FnMut(usize),
+) -> Result<SurfaceResult, RenderError> {
+    let t0 = Instant::now();
+    let mut session = Session::new(scene, options)?;
+    let setup_ms = ms_since(t0);
+    let mut cells = Vec::with_capacity(offsets.len());
+    for (i, &offset) in offsets.iter().enumerate() {
+        let t = Instant::now();
+        if i > 0 {
+            session.restage(&ShadowSettings {
+                polygon_offset: Some(offset),
+                ..session.scene().shadow.clone()
+            })?;
+        }
+        session.frame()?;
+        let mask = session.mask()?;
+        let metrics = metrics::compare(&mask, &truth.mask, options.band)?;
+        cells.push(Cell {
+            factor: offset.factor,
+            units: offset.units,
+            metrics,
+            ms: ms_since(t),
+        });
+        cell_done(i);
+    }
+    let best = best(&cells).unwrap_or(0);
+    Ok(SurfaceResult::Measured {
+        cells,
+        best,
+        setup_ms,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::metrics::Counts;
+
+    fn cell(wrong: u64, outside: u64) -> Cell {
+        let counts = |w| Counts {
+            wrong: w,
+            ..Counts::default()
+        };
+        Cell {
+            factor: 0.0,
+            units: 0.0,
+            metrics: Metrics {
+                all: counts(wrong),
+                outside_band: counts(outside),
+                band: 1,
+                extra_coverage: 0,
+                visibility_rmse: None,
+            },
+            ms: 0.0,
+        }
+    }
+
+    #[test]
+    fn best_is_fewest_wrong_then_fewest_outside_the_band_then_first() {
+        assert_eq!(best(&[]), None);
+        assert_eq!(best(&[cell(5, 1), cell(3, 3), cell(4, 0)]), Some(1));
+        assert_eq!(best(&[cell(3, 3), cell(3, 2), cell(3, 2)]), Some(1));
+        assert_eq!(best(&[cell(0, 0), cell(0, 0)]), Some(0));
+    }
+}
