@@ -38,7 +38,11 @@ fn assert_floor_matches_truth(name: &str, scene: &Scene, floor: usize) -> Vec<pr
     for kind in KINDS {
         let out = run(scene, "planar", kind, SIZE);
         let s = score(&out.mask, &out.truth.mask, &pixels, 1);
-        assert!(s.pixels > 1000, "{name}: the floor covers {} pixels", s.pixels);
+        assert!(
+            s.pixels > 1000,
+            "{name}: the floor covers {} pixels",
+            s.pixels
+        );
         assert_eq!(s.wrong_outside_band, 0, "{name} {kind:?}: {s:?}");
         assert!(s.wrong * 50 <= s.pixels, "{name} {kind:?}: {s:?}");
         scores.push(s);
@@ -65,7 +69,10 @@ fn emulate_and_native_agree_on_the_default_scene() {
         let n = run(&scene, "planar", PipelineKind::Native, SIZE);
         let n_pixels = (SIZE.width * SIZE.height) as usize;
         let differ = mask_difference(&e.mask, &n.mask);
-        assert!(differ * 500 <= n_pixels, "{mode:?}: masks differ on {differ} pixels");
+        assert!(
+            differ * 500 <= n_pixels,
+            "{mode:?}: masks differ on {differ} pixels"
+        );
         let tolerance = Tolerance {
             per_channel: 3,
             max_bad_pixels: n_pixels / 100,
@@ -116,7 +123,10 @@ fn overlapping_projected_triangles_darken_a_floor_pixel_once() {
                 }
                 checked += 1;
             }
-            assert!(checked > 200, "{mode} {kind:?}: only {checked} shadow pixels");
+            assert!(
+                checked > 200,
+                "{mode} {kind:?}: only {checked} shadow pixels"
+            );
         }
     }
 }
@@ -170,14 +180,20 @@ receives = false
                 }
                 off_floor += 1;
                 let (x, y) = (i as u32 % SIZE.width, i as u32 / SIZE.width);
-                assert_eq!(out.mask.data[i], BACKGROUND, "{mode} {kind:?} mask ({x},{y})");
+                assert_eq!(
+                    out.mask.data[i], BACKGROUND,
+                    "{mode} {kind:?} mask ({x},{y})"
+                );
                 support::probe(&out.image, x, y, background, 0);
             }
             assert!(off_floor > SIZE.width * SIZE.height / 4);
             // The shadow does reach the floor's edge: it was clipped, not missing.
             let pixels = pixels_of(&scene, 0, SIZE);
             let s = score(&out.mask, &out.truth.mask, &pixels, 1);
-            assert!(s.shadowed_in_truth > 100 && s.wrong_outside_band == 0, "{s:?}");
+            assert!(
+                s.shadowed_in_truth > 100 && s.wrong_outside_band == 0,
+                "{s:?}"
+            );
         }
     }
 }
@@ -203,7 +219,10 @@ receives = false
     for mode in MODES {
         let scene = floor_scene(&point_light([5.0, 5.0, -2.0]), objects, mode);
         let scores = assert_floor_matches_truth(mode, &scene, 0);
-        assert!(scores.iter().all(|s| s.shadowed_in_truth > 100), "{scores:?}");
+        assert!(
+            scores.iter().all(|s| s.shadowed_in_truth > 100),
+            "{scores:?}"
+        );
     }
 }
 
@@ -249,7 +268,9 @@ fn light_on_the_receiver_plane() {
     assert_finite_plan(&scene);
     let plan = (lookup("planar").unwrap().plan)(&scene, &Prepared::new(&scene)).unwrap();
     assert!(
-        plan.notes.iter().any(|n| n.contains("`floor`") && n.contains("p·l ≤ 0")),
+        plan.notes
+            .iter()
+            .any(|n| n.contains("`floor`") && n.contains("p·l ≤ 0")),
         "{:?}",
         plan.notes
     );
@@ -284,7 +305,10 @@ fn caster_touching_the_plane() {
         assert!(matrix.is_finite());
         // The block's bottom face lies in the floor: only its sides and top are kept.
         let ys = casters[0].positions.iter().map(|p| p.y);
-        assert!(ys.clone().all(|y| y.is_finite() && y > 0.0), "bottom face kept");
+        assert!(
+            ys.clone().all(|y| y.is_finite() && y > 0.0),
+            "bottom face kept"
+        );
         assert_finite_plan(&scene);
         assert_floor_matches_truth(mode, &scene, 0);
     }
@@ -317,7 +341,11 @@ shape = "sphere"
 radius = 1.2
 translate = [0, 2.5, -5]
 "#;
-    let scene = floor_scene(&point_light([1.0, 6.0, 4.0]), objects, "planar_mode = \"stencil\"");
+    let scene = floor_scene(
+        &point_light([1.0, 6.0, 4.0]),
+        objects,
+        "planar_mode = \"stencil\"",
+    );
     let r = receivers(&scene).unwrap();
     let ids: Vec<u8> = r
         .iter()
@@ -365,6 +393,7 @@ fn planar_mode_is_checked_with_the_line_and_the_alternatives() {
         err.contains("t.toml:3") && err.contains("offset") && err.contains("stencil"),
         "{err}"
     );
-    let ok = projection::scene("[shadow]\nplanar_mode = \"stencil\"\nprojector = \"perspective\"\n");
+    let ok =
+        projection::scene("[shadow]\nplanar_mode = \"stencil\"\nprojector = \"perspective\"\n");
     assert_eq!(ok.shadow.planar_mode, PlanarMode::Stencil);
 }

@@ -65,8 +65,14 @@ fn ground_shadows_match_the_truth_when_casters_and_receivers_are_separated() {
             assert!(s.shadowed_in_truth > 500, "{projector:?} {kind:?}: {s:?}");
             // Measured: 120 (perspective) and 127 (pseudo-depth) of 26 761 floor pixels
             // wrong beyond the band, ~0.45 %, on both paths; not yet explained.
-            assert!(s.wrong_outside_band * 100 <= s.pixels, "{projector:?} {kind:?}: {s:?}");
-            assert!(s.wrong * 100 <= 3 * s.pixels, "{projector:?} {kind:?}: {s:?}");
+            assert!(
+                s.wrong_outside_band * 100 <= s.pixels,
+                "{projector:?} {kind:?}: {s:?}"
+            );
+            assert!(
+                s.wrong * 100 <= 3 * s.pixels,
+                "{projector:?} {kind:?}: {s:?}"
+            );
         }
     }
 }
@@ -83,7 +89,10 @@ fn emulate_and_native_agree() {
         let pixels = (SIZE.width * SIZE.height) as usize;
         let differ = mask_difference(&e.mask, &n.mask);
         let name = format!("projective-{:?}", scene.shadow.projector);
-        assert!(differ * 500 <= pixels, "{name}: masks differ on {differ} pixels");
+        assert!(
+            differ * 500 <= pixels,
+            "{name}: masks differ on {differ} pixels"
+        );
         let tolerance = Tolerance {
             per_channel: 3,
             max_bad_pixels: pixels / 100,
@@ -96,9 +105,14 @@ fn emulate_and_native_agree() {
 /// stands in front of it in the default view).
 fn sphere_pixels(scene: &Scene) -> Vec<bool> {
     let mut alone = apply_overrides(scene, Some(SIZE), None);
-    alone.objects.retain(|o| o.name.as_deref() == Some("sphere"));
+    alone
+        .objects
+        .retain(|o| o.name.as_deref() == Some("sphere"));
     let mask = truth(&alone, &TruthOptions::default()).unwrap().mask;
-    mask.data.iter().map(|&v| Class::of(v) != Class::Background).collect()
+    mask.data
+        .iter()
+        .map(|&v| Class::of(v) != Class::Background)
+        .collect()
 }
 
 /// Truth-lit pixels of the sphere that `mask` calls shadowed, and how many were lit.
@@ -121,24 +135,34 @@ fn self_shadowing_fails_visibly_and_the_notes_say_so() {
     let scene = Scene::default_scene();
     let notes = plan(&scene).unwrap().notes;
     assert!(
-        notes
-            .iter()
-            .any(|n| n.contains("`sphere`, `torus` are both caster and receiver")
-                && n.contains("self-shadowing fails")),
+        notes.iter().any(
+            |n| n.contains("`sphere`, `torus` are both caster and receiver")
+                && n.contains("self-shadowing fails")
+        ),
         "{notes:?}"
     );
     let pixels = sphere_pixels(&scene);
     let out = run(&scene, "projective", PipelineKind::Emulate, SIZE);
     let (wrong, lit) = falsely_shadowed(&out.mask, &out.truth.mask, &pixels);
     assert!(lit > 300, "the sphere has {lit} lit pixels");
-    assert!(wrong * 10 >= lit * 9, "only {wrong} of {lit} lit sphere pixels shadowed");
+    assert!(
+        wrong * 10 >= lit * 9,
+        "only {wrong} of {lit} lit sphere pixels shadowed"
+    );
 
     let mut apart = scene.clone();
     apart.objects[1].casts = false;
-    assert!(!plan(&apart).unwrap().notes.iter().any(|n| n.contains("`sphere`,")));
+    assert!(!plan(&apart)
+        .unwrap()
+        .notes
+        .iter()
+        .any(|n| n.contains("`sphere`,")));
     let out = run(&apart, "projective", PipelineKind::Emulate, SIZE);
     let (wrong, lit) = falsely_shadowed(&out.mask, &out.truth.mask, &pixels);
-    assert!(wrong * 50 <= lit, "{wrong} of {lit} lit sphere pixels shadowed");
+    assert!(
+        wrong * 50 <= lit,
+        "{wrong} of {lit} lit sphere pixels shadowed"
+    );
 }
 
 /// A box buried under the floor and a slab above the light: the pseudo-depth projector
@@ -180,7 +204,12 @@ receives = false
         assert!(s.shadowed_in_truth > 50, "{kind:?}: {s:?}");
         assert_eq!(s.wrong_outside_band, 0, "pseudo-depth {kind:?}: {s:?}");
     }
-    let out = run(&scene("perspective"), "projective", PipelineKind::Emulate, SIZE);
+    let out = run(
+        &scene("perspective"),
+        "projective",
+        PipelineKind::Emulate,
+        SIZE,
+    );
     let s = score(&out.mask, &out.truth.mask, &floor, 2);
     assert!(s.wrong_outside_band > 100, "perspective: {s:?}");
 }
@@ -204,7 +233,10 @@ fn pseudo_depth_without_a_flat_receiver_is_a_clear_error() {
             technique: "projective"
         }
     );
-    assert!(err.to_string().contains("projector = \"perspective\""), "{err}");
+    assert!(
+        err.to_string().contains("projector = \"perspective\""),
+        "{err}"
+    );
     scene.shadow.projector = Projector::Perspective;
     assert_finite_planes(&scene);
     assert!(plan(&scene).is_ok());
@@ -310,7 +342,10 @@ fn the_silhouette_pass_leaves_an_affine_modelview_and_the_paths_agree() {
         mask_of(&plan, PipelineKind::Native),
     );
     let differ = mask_difference(&e, &n);
-    assert!(differ * 500 <= e.data.len(), "masks differ on {differ} pixels");
+    assert!(
+        differ * 500 <= e.data.len(),
+        "masks differ on {differ} pixels"
+    );
 }
 
 /// Native-path bug (Mesa 22.3.6 llvmpipe, compatibility profile): draws under a projective
@@ -330,7 +365,10 @@ fn native_eye_planes_after_a_projective_modelview_follow_the_gl_rule() {
         mask_of(&plan, PipelineKind::Native),
     );
     let differ = mask_difference(&e, &n);
-    assert!(differ * 500 <= e.data.len(), "masks differ on {differ} pixels");
+    assert!(
+        differ * 500 <= e.data.len(),
+        "masks differ on {differ} pixels"
+    );
 }
 
 /// Pipeline/render bug: `RenderTarget::bind` calls glViewport(whole target) behind the
@@ -353,5 +391,8 @@ fn a_mask_after_the_target_is_rebound_keeps_the_plans_viewport() {
     let native = mask_with(&plan, PipelineKind::Native, true);
     let emulate = mask_with(&plan, PipelineKind::Emulate, true);
     let differ = mask_difference(&emulate, &native);
-    assert!(differ * 500 <= emulate.data.len(), "masks differ on {differ} pixels");
+    assert!(
+        differ * 500 <= emulate.data.len(),
+        "masks differ on {differ} pixels"
+    );
 }

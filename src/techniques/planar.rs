@@ -55,9 +55,7 @@ use std::sync::Arc;
 
 use glam::{Mat4, Vec4};
 
-use crate::ff::{
-    BlendFactor, Capability, Command, CompareFunc, Geometry, Primitive, StencilOp,
-};
+use crate::ff::{BlendFactor, Capability, Command, CompareFunc, Geometry, Primitive, StencilOp};
 use crate::scene::{PlanarMode, Scene};
 
 use super::map::MapSettings;
@@ -75,7 +73,8 @@ pub const NAME: &str = "planar";
 
 pub const TECHNIQUE: Technique = Technique {
     name: NAME,
-    summary: "projection shadows: casters through (p·l)I − l·pᵀ onto flat receivers, stencil, blend",
+    summary:
+        "projection shadows: casters through (p·l)I − l·pᵀ onto flat receivers, stencil, blend",
     plan,
 };
 

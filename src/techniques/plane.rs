@@ -267,12 +267,18 @@ mod tests {
         }
         // The eye below the floor sees the underside: a light above leaves it unlit.
         let above = Vec4::new(0.0, 8.0, 0.0, 1.0);
-        assert_eq!(facing(FLOOR, Vec3::new(0.0, -1.0, 3.0), above), Facing::Unlit);
+        assert_eq!(
+            facing(FLOOR, Vec3::new(0.0, -1.0, 3.0), above),
+            Facing::Unlit
+        );
         assert_eq!(
             facing(-FLOOR, Vec3::new(0.0, 2.0, 3.0), above),
             Facing::Lit { plane: FLOOR }
         );
-        assert_eq!(facing(FLOOR, Vec3::new(0.0, 0.0, 3.0), above), Facing::EdgeOnToEye);
+        assert_eq!(
+            facing(FLOOR, Vec3::new(0.0, 0.0, 3.0), above),
+            Facing::EdgeOnToEye
+        );
     }
 
     #[test]
@@ -289,11 +295,20 @@ mod tests {
         };
         let light = Vec4::new(0.0, 6.0, 5.0, 1.0);
         let slab = Slab::new(FLOOR, light, 0.01);
-        assert_eq!(slab, Slab { low: 0.01, high: Some(5.99) });
+        assert_eq!(
+            slab,
+            Slab {
+                low: 0.01,
+                high: Some(5.99)
+            }
+        );
         let kept = clip_to_slab(&tri, FLOOR, slab);
         assert!(!kept.is_empty() && kept.len() % 3 == 0);
         for p in &kept {
-            assert!(p.is_finite() && (0.01 - 1e-5..=5.99 + 1e-5).contains(&p.y), "{p}");
+            assert!(
+                p.is_finite() && (0.01 - 1e-5..=5.99 + 1e-5).contains(&p.y),
+                "{p}"
+            );
         }
         // The kept area is the band 0.01 ≤ y ≤ 5.99 of the triangle: width 2·(9 − y)/10.
         let band = |y: f32| 2.0 * (9.0 - y) / 10.0;
@@ -302,9 +317,16 @@ mod tests {
             .chunks(3)
             .map(|t| 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).length())
             .sum();
-        assert!((got - expected).abs() < 1e-3, "area {got}, expected {expected}");
+        assert!(
+            (got - expected).abs() < 1e-3,
+            "area {got}, expected {expected}"
+        );
         // A directional light keeps everything above the plane.
-        let up = clip_to_slab(&tri, FLOOR, Slab::new(FLOOR, Vec4::new(0.0, 1.0, 0.0, 0.0), 0.01));
+        let up = clip_to_slab(
+            &tri,
+            FLOOR,
+            Slab::new(FLOOR, Vec4::new(0.0, 1.0, 0.0, 0.0), 0.01),
+        );
         assert!(up.iter().all(|p| p.y >= 0.01 - 1e-5) && up.iter().any(|p| p.y == 9.0));
     }
 

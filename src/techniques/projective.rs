@@ -49,14 +49,14 @@ use crate::scene::{Projector, Scene};
 
 use super::map::{bind_map, map_parameters, MapSettings, MAP_IMAGE_SLOT};
 use super::parts::{
-    dim_pass, does_not_receive, eye_linear, lighting, objects, receives, reset, LightSet,
-    Look, Paint, ShadowLight, BIAS,
+    dim_pass, does_not_receive, eye_linear, lighting, objects, receives, reset, LightSet, Look,
+    Paint, ShadowLight, BIAS,
 };
 use super::planar::{list, object_name};
 use super::plane::{area, flat_plane, light_vector, scene_radius};
 use super::{
-    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared,
-    Technique, TechniqueError,
+    check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared, Technique,
+    TechniqueError,
 };
 
 pub const NAME: &str = "projective";
@@ -154,7 +154,8 @@ fn pseudo_depth(scene: &Scene, light: &ShadowLight) -> Result<Projection, Techni
     let origin = -plane.w * n;
     let (e_u, e_v) = n.any_orthonormal_pair();
     // u·W = e_u·(M·x)_xyz − (e_u·o)·W, with (M·x)_xyz rows (p·l)·e_j − l_j·p.
-    let axis_row = |e: Vec3| k * e.extend(0.0) - e.dot(l.truncate()) * plane - e.dot(origin) * w_row;
+    let axis_row =
+        |e: Vec3| k * e.extend(0.0) - e.dot(l.truncate()) * plane - e.dot(origin) * w_row;
     let (u_row, v_row) = (axis_row(e_u), axis_row(e_v));
     // Eye coordinates (u·W, v·W, −Z, W): glOrtho then sees −z_e / w_e = s.
     let modelview = Mat4::from_cols(u_row, v_row, -z_row, w_row).transpose();

@@ -18,7 +18,12 @@ pub fn scene(text: &str) -> Scene {
 }
 
 /// One frame of `technique` on the EGL backend at `size`.
-pub fn run(scene: &Scene, technique: &str, pipeline: PipelineKind, size: ImageSize) -> RenderOutcome {
+pub fn run(
+    scene: &Scene,
+    technique: &str,
+    pipeline: PipelineKind,
+    size: ImageSize,
+) -> RenderOutcome {
     let options = RenderOptions {
         pipeline,
         technique: Some(technique.into()),
