@@ -126,11 +126,11 @@ fn obj_files_resolve_relative_and_report_degenerate_faces() {
 
 #[test]
 fn techniques_come_from_the_list_passed_in() {
-    let text = "[shadow]\ntechnique = \"depth-compare\"\n";
+    let text = "[shadow]\ntechnique = \"shadow-volumes\"\n";
     assert!(parse(text).is_err());
-    let known = ["none", "depth-compare"];
+    let known = ["none", "shadow-volumes"];
     let scene = Scene::parse(text, Path::new("t.toml"), &known).expect("known");
-    assert_eq!(scene.shadow.technique, "depth-compare");
+    assert_eq!(scene.shadow.technique, "shadow-volumes");
 }
 
 #[test]
