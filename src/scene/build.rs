@@ -691,5 +691,7 @@ fn shadow(ctx: &Ctx, s: &RawShadow) -> Result<ShadowSettings> {
         precision: s.precision.unwrap_or(defaults.precision),
         readback: s.readback.unwrap_or(defaults.readback),
         filter: s.filter.unwrap_or(defaults.filter),
+        planar_mode: s.planar_mode.unwrap_or(defaults.planar_mode),
+        projector: s.projector.unwrap_or(defaults.projector),
     })
 }

@@ -39,6 +39,8 @@ pub const KNOWN_TECHNIQUES: &[&str] = &[
     "linear8",
     "multidigit16",
     "multidigit16-combine",
+    "planar",
+    "projective",
 ];
 
 impl Scene {

@@ -2,7 +2,7 @@
 //! validation may reject wrapped in `Spanned` so its error can name the line.
 //! Values stay optional here; `build` supplies defaults and checks what each kind needs.
 
-use super::types::{MapFilter, Precision, ReadbackRule};
+use super::types::{MapFilter, PlanarMode, Precision, Projector, ReadbackRule};
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -168,4 +168,6 @@ pub(super) struct RawShadow {
     pub precision: Option<Precision>,
     pub readback: Option<ReadbackRule>,
     pub filter: Option<MapFilter>,
+    pub planar_mode: Option<PlanarMode>,
+    pub projector: Option<Projector>,
 }

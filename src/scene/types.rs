@@ -290,6 +290,58 @@ pub enum MapFilter {
     Linear,
 }
 
+/// How planar projection shadows keep off the receiver's depth (`[shadow] planar_mode`).
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    Hash,
+    serde::Deserialize,
+    serde::Serialize,
+    clap::ValueEnum,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum PlanarMode {
+    /// Dinoshade's way: the projected shadow is depth-tested, pulled towards the eye by
+    /// glPolygonOffset so it wins against the coplanar receiver; the stencil marks
+    /// receivers and stops a second blend.
+    #[default]
+    Offset,
+    /// Stencil alone: every object writes its receiver number (0 for the rest) where it is
+    /// visible, and the shadow is drawn with the depth test off where the number matches —
+    /// the shadow lies in the receiver's plane, so the visible receiver is the right depth.
+    Stencil,
+}
+
+/// What the slide projector projects from (`[shadow] projector`).
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    Hash,
+    serde::Deserialize,
+    serde::Serialize,
+    clap::ValueEnum,
+)]
+#[serde(rename_all = "kebab-case")]
+pub enum Projector {
+    /// The light's own frustum (its `fovy`, `near`, `far`): casters below the receivers'
+    /// plane still cast.
+    Perspective,
+    /// The lecture notes' construction: the casters flattened onto the largest flat
+    /// receiver by the shadow matrix, with the pseudo-depth s = (p·l)/(p·l − p·x) kept in
+    /// [1, ∞) by an orthographic near 1, far "at infinity": casters below that plane or
+    /// beyond the light are clipped away.
+    #[default]
+    PseudoDepth,
+}
+
 /// The `[shadow]` table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShadowSettings {
@@ -308,6 +360,10 @@ pub struct ShadowSettings {
     pub readback: ReadbackRule,
     /// Default Nearest.
     pub filter: MapFilter,
+    /// `planar`'s depth handling. Default Offset.
+    pub planar_mode: PlanarMode,
+    /// `projective`'s projection. Default PseudoDepth.
+    pub projector: Projector,
 }
 
 impl Default for ShadowSettings {
@@ -320,6 +376,8 @@ impl Default for ShadowSettings {
             precision: Precision::Float,
             readback: ReadbackRule::Driver,
             filter: MapFilter::Nearest,
+            planar_mode: PlanarMode::Offset,
+            projector: Projector::PseudoDepth,
         }
     }
 }

@@ -29,6 +29,9 @@ pub mod multidigit16;
 pub mod multidigit16_combine;
 pub mod none;
 pub mod parts;
+pub mod planar;
+pub mod plane;
+pub mod projective;
 
 use std::sync::Arc;
 
@@ -52,6 +55,10 @@ pub enum TechniqueError {
     NoLight { technique: &'static str },
     #[error("`{technique}` needs a stencil buffer; a {bits}-bit depth buffer has none (use depth_bits 24 or \"32f\")")]
     NeedsStencil { technique: &'static str, bits: u32 },
+    #[error("`{technique}` numbers flat receivers in an 8-bit stencil buffer: at most {max} of them may face the light")]
+    TooManyFlatReceivers { technique: &'static str, max: usize },
+    #[error("`{technique}` with `projector = \"pseudo-depth\"` projects onto a flat receiver, and no flat receiver of this scene has the light strictly on one side of its plane (p·l ≠ 0); use `projector = \"perspective\"` or add a flat receiver")]
+    NoProjectionPlane { technique: &'static str },
     #[error("the mask readback (slot {slot}) is missing: the pipeline did not execute ReadPixels")]
     MissingReadback { slot: u32 },
     #[error("the mask readback is {got_w}×{got_h} {format:?}/{ty:?}; expected {w}×{h} {expected_format:?}/{expected_ty:?}", got_w = .got.0, got_h = .got.1, w = .expected.0, h = .expected.1)]
@@ -90,6 +97,8 @@ pub const REGISTRY: &[Technique] = &[
     linear8::TECHNIQUE,
     multidigit16::TECHNIQUE,
     multidigit16_combine::TECHNIQUE,
+    planar::TECHNIQUE,
+    projective::TECHNIQUE,
 ];
 
 // The registry's names are exactly the scene layer's names, in order (evaluated at build

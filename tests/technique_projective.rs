@@ -1,0 +1,398 @@
+//! `projective` (the slide projector) on real contexts (EGL, llvmpipe), emulate and native,
+//! against the CPU truth.
+//!
+//! Tolerances, stated per test:
+//! - against the truth on the floor's pixels: no wrong pixel farther than 2 pixels from a
+//!   truth shadow edge (the silhouette is a 256² NEAREST texture, about one texel per
+//!   image pixel here, so its staircase can put an edge one pixel further; 3 pixels for the
+//!   perspective light, whose 80° frustum spreads the texels wider), at most 3 % of the
+//!   floor's pixels wrong in all. On the default scene's floor up to 1 % may be wrong beyond
+//!   the band (measured ~0.45 % with both projectors, not yet explained);
+//! - emulate against native: masks differ on at most 0.2 % of the pixels, images by at
+//!   most 3/255 per channel on at most 1 % of the pixels.
+
+mod projection;
+mod support;
+
+use fixedfunc::ff::Command;
+use fixedfunc::gpu::{ContextRequest, GpuContext, RenderTarget, TargetSpec};
+use fixedfunc::metrics::{Class, Mask};
+use fixedfunc::pipeline::{self, PipelineKind};
+use fixedfunc::render::{apply_overrides, ImageSize};
+use fixedfunc::scene::{Projector, Scene};
+use fixedfunc::techniques::projective::projection as projector_of;
+use fixedfunc::techniques::{lookup, Plan, Prepared, TechniqueError};
+use fixedfunc::truth::{truth, TruthOptions};
+use projection::{floor_scene, mask_difference, pixels_of, point_light, run, score, KINDS};
+use support::{assert_images_match, Tolerance};
+
+/// At least the map's 256²: see `a_mask_after_the_target_is_rebound_keeps_the_plans_viewport`.
+const SIZE: ImageSize = ImageSize {
+    width: 256,
+    height: 256,
+};
+
+const PROJECTORS: [Projector; 2] = [Projector::Perspective, Projector::PseudoDepth];
+
+fn plan(scene: &Scene) -> Result<Plan, TechniqueError> {
+    (lookup("projective").unwrap().plan)(scene, &Prepared::new(scene))
+}
+
+/// The default scene with casters and receivers separated: the ground only receives, the
+/// sphere and the torus only cast.
+fn separated(projector: Projector) -> Scene {
+    let mut scene = Scene::default_scene();
+    scene.objects[0].casts = false;
+    scene.objects[1].receives = false;
+    scene.objects[2].receives = false;
+    scene.shadow.projector = projector;
+    scene
+}
+
+#[test]
+fn ground_shadows_match_the_truth_when_casters_and_receivers_are_separated() {
+    for projector in PROJECTORS {
+        let scene = separated(projector);
+        let ground = pixels_of(&scene, 0, SIZE);
+        // The light's 80° frustum spreads its 256 texels wider than the plane region.
+        let band = match projector {
+            Projector::Perspective => 3,
+            Projector::PseudoDepth => 2,
+        };
+        for kind in KINDS {
+            let out = run(&scene, "projective", kind, SIZE);
+            let s = score(&out.mask, &out.truth.mask, &ground, band);
+            assert!(s.shadowed_in_truth > 500, "{projector:?} {kind:?}: {s:?}");
+            // Measured: 120 (perspective) and 127 (pseudo-depth) of 26 761 floor pixels
+            // wrong beyond the band, ~0.45 %, on both paths; not yet explained.
+            assert!(
+                s.wrong_outside_band * 100 <= s.pixels,
+                "{projector:?} {kind:?}: {s:?}"
+            );
+            assert!(
+                s.wrong * 100 <= 3 * s.pixels,
+                "{projector:?} {kind:?}: {s:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn emulate_and_native_agree() {
+    for scene in [
+        Scene::default_scene(),
+        separated(Projector::Perspective),
+        separated(Projector::PseudoDepth),
+    ] {
+        let e = run(&scene, "projective", PipelineKind::Emulate, SIZE);
+        let n = run(&scene, "projective", PipelineKind::Native, SIZE);
+        let pixels = (SIZE.width * SIZE.height) as usize;
+        let differ = mask_difference(&e.mask, &n.mask);
+        let name = format!("projective-{:?}", scene.shadow.projector);
+        assert!(
+            differ * 500 <= pixels,
+            "{name}: masks differ on {differ} pixels"
+        );
+        let tolerance = Tolerance {
+            per_channel: 3,
+            max_bad_pixels: pixels / 100,
+        };
+        assert_images_match(&name, &e.image, &n.image, tolerance);
+    }
+}
+
+/// The sphere's pixels: geometry in the truth of a scene holding the sphere alone (nothing
+/// stands in front of it in the default view).
+fn sphere_pixels(scene: &Scene) -> Vec<bool> {
+    let mut alone = apply_overrides(scene, Some(SIZE), None);
+    alone
+        .objects
+        .retain(|o| o.name.as_deref() == Some("sphere"));
+    let mask = truth(&alone, &TruthOptions::default()).unwrap().mask;
+    mask.data
+        .iter()
+        .map(|&v| Class::of(v) != Class::Background)
+        .collect()
+}
+
+/// Truth-lit pixels of the sphere that `mask` calls shadowed, and how many were lit.
+fn falsely_shadowed(mask: &Mask, truth: &Mask, pixels: &[bool]) -> (usize, usize) {
+    let lit: Vec<usize> = (0..pixels.len())
+        .filter(|&i| pixels[i] && Class::of(truth.data[i]) == Class::Lit)
+        .collect();
+    let wrong = lit
+        .iter()
+        .filter(|&&i| Class::of(mask.data[i]) == Class::Shadowed)
+        .count();
+    (wrong, lit.len())
+}
+
+/// The default scene lets the sphere and the torus cast and receive: each covers its own
+/// silhouette, so its lit side is dark — and the notes say so. With `casts = false` the
+/// same sphere is lit where the truth says.
+#[test]
+fn self_shadowing_fails_visibly_and_the_notes_say_so() {
+    let scene = Scene::default_scene();
+    let notes = plan(&scene).unwrap().notes;
+    assert!(
+        notes.iter().any(
+            |n| n.contains("`sphere`, `torus` are both caster and receiver")
+                && n.contains("self-shadowing fails")
+        ),
+        "{notes:?}"
+    );
+    let pixels = sphere_pixels(&scene);
+    let out = run(&scene, "projective", PipelineKind::Emulate, SIZE);
+    let (wrong, lit) = falsely_shadowed(&out.mask, &out.truth.mask, &pixels);
+    assert!(lit > 300, "the sphere has {lit} lit pixels");
+    assert!(
+        wrong * 10 >= lit * 9,
+        "only {wrong} of {lit} lit sphere pixels shadowed"
+    );
+
+    let mut apart = scene.clone();
+    apart.objects[1].casts = false;
+    assert!(!plan(&apart)
+        .unwrap()
+        .notes
+        .iter()
+        .any(|n| n.contains("`sphere`,")));
+    let out = run(&apart, "projective", PipelineKind::Emulate, SIZE);
+    let (wrong, lit) = falsely_shadowed(&out.mask, &out.truth.mask, &pixels);
+    assert!(
+        wrong * 50 <= lit,
+        "{wrong} of {lit} lit sphere pixels shadowed"
+    );
+}
+
+/// A box buried under the floor and a slab above the light: the pseudo-depth projector
+/// clips both away and matches the truth; the perspective light prints the buried box.
+#[test]
+fn the_pseudo_depth_clips_false_shadows_the_perspective_light_prints() {
+    let objects = r#"
+[[object]]
+name = "buried"
+shape = "box"
+size = 2
+translate = [-4, -2, -3]
+receives = false
+[[object]]
+name = "above"
+shape = "box"
+size = [3, 0.5, 3]
+translate = [1, 11, 0]
+receives = false
+[[object]]
+name = "post"
+shape = "box"
+size = [0.6, 3, 0.6]
+translate = [3, 1.6, 2]
+receives = false
+"#;
+    let scene = |projector: &str| {
+        floor_scene(
+            &point_light([1.0, 8.0, -1.0]),
+            objects,
+            &format!("projector = \"{projector}\""),
+        )
+    };
+    let pseudo = scene("pseudo-depth");
+    let floor = pixels_of(&pseudo, 0, SIZE);
+    for kind in KINDS {
+        let out = run(&pseudo, "projective", kind, SIZE);
+        let s = score(&out.mask, &out.truth.mask, &floor, 2);
+        assert!(s.shadowed_in_truth > 50, "{kind:?}: {s:?}");
+        assert_eq!(s.wrong_outside_band, 0, "pseudo-depth {kind:?}: {s:?}");
+    }
+    let out = run(
+        &scene("perspective"),
+        "projective",
+        PipelineKind::Emulate,
+        SIZE,
+    );
+    let s = score(&out.mask, &out.truth.mask, &floor, 2);
+    assert!(s.wrong_outside_band > 100, "perspective: {s:?}");
+}
+
+fn assert_finite_planes(scene: &Scene) {
+    let p = projector_of(scene).expect("perspective always has a projector");
+    assert!(p.world_to_clip.is_finite() && p.modelview.is_finite());
+    for i in 0..4 {
+        assert!(p.plane(i).is_finite(), "plane {i}: {}", p.plane(i));
+    }
+}
+
+#[test]
+fn pseudo_depth_without_a_flat_receiver_is_a_clear_error() {
+    let mut scene = Scene::default_scene();
+    scene.objects[0].receives = false;
+    let err = plan(&scene).unwrap_err();
+    assert_eq!(
+        err,
+        TechniqueError::NoProjectionPlane {
+            technique: "projective"
+        }
+    );
+    assert!(
+        err.to_string().contains("projector = \"perspective\""),
+        "{err}"
+    );
+    scene.shadow.projector = Projector::Perspective;
+    assert_finite_planes(&scene);
+    assert!(plan(&scene).is_ok());
+}
+
+#[test]
+fn light_on_the_receiver_plane() {
+    let caster = "[[object]]\nshape = \"box\"\nsize = 1\ntranslate = [0, 2, 0]\nreceives = false\n";
+    let mut scene = floor_scene(&point_light([-10.0, 0.0, 0.0]), caster, "");
+    assert!(matches!(
+        plan(&scene),
+        Err(TechniqueError::NoProjectionPlane { .. })
+    ));
+    scene.shadow.projector = Projector::Perspective;
+    assert_finite_planes(&scene);
+}
+
+#[test]
+fn directional_light_parallel_to_the_plane() {
+    let light = "[[light]]\ntype = \"directional\"\ndirection = [1, 0, 0]\n";
+    let caster = "[[object]]\nshape = \"box\"\nsize = 1\ntranslate = [0, 2, 0]\nreceives = false\n";
+    let mut scene = floor_scene(light, caster, "");
+    assert!(matches!(
+        plan(&scene),
+        Err(TechniqueError::NoProjectionPlane { .. })
+    ));
+    scene.shadow.projector = Projector::Perspective;
+    assert_finite_planes(&scene);
+}
+
+#[test]
+fn caster_touching_the_plane() {
+    let caster = "[[object]]\nname = \"block\"\nshape = \"box\"\nsize = 2\ntranslate = [0, 1, 0]\nreceives = false\n";
+    let scene = floor_scene(&point_light([4.0, 7.0, 1.0]), caster, "");
+    assert_finite_planes(&scene);
+    let floor = pixels_of(&scene, 0, SIZE);
+    for kind in KINDS {
+        let out = run(&scene, "projective", kind, SIZE);
+        let s = score(&out.mask, &out.truth.mask, &floor, 2);
+        assert!(s.shadowed_in_truth > 100, "{kind:?}: {s:?}");
+        assert_eq!(s.wrong_outside_band, 0, "{kind:?}: {s:?}");
+    }
+}
+
+/// The plan's commands on one pipeline, in a fresh context; returns the decoded mask.
+fn mask_of(plan: &Plan, kind: PipelineKind) -> Mask {
+    mask_with(plan, kind, false)
+}
+
+/// As [`mask_of`]; with `rebind`, the target is bound again (glBindFramebuffer and a
+/// glViewport of the whole target, as `render` does before reading results) between the
+/// frame and the mask commands.
+fn mask_with(plan: &Plan, kind: PipelineKind, rebind: bool) -> Mask {
+    let ctx = GpuContext::new(&ContextRequest::new(
+        fixedfunc::gpu::Backend::Egl,
+        kind.profile(),
+    ))
+    .expect("context");
+    let fb = plan.framebuffer;
+    let target = RenderTarget::new(
+        &ctx,
+        TargetSpec {
+            width: fb.width,
+            height: fb.height,
+            depth: fb.depth,
+            stencil: fb.stencil,
+        },
+    )
+    .expect("target");
+    let mut p = pipeline::create(kind, &ctx).expect("pipeline");
+    let frame: Vec<Command> = plan.frame_commands().cloned().collect();
+    p.execute(&ctx, &plan.setup).expect("setup");
+    p.execute(&ctx, &frame).expect("frame");
+    if rebind {
+        target.bind(&ctx);
+    }
+    p.execute(&ctx, &plan.mask.commands).expect("mask");
+    assert_eq!(p.take_gl_error(), None);
+    let mask = plan.mask.decode(|slot| p.readback(slot)).expect("mask");
+    support::assert_no_gl_error(&ctx);
+    p.release(&ctx);
+    target.delete(&ctx);
+    mask
+}
+
+/// The plan without the glLoadIdentity that ends its silhouette pass: the pseudo-depth
+/// modelview (projective: its last row is not (0, 0, 0, 1)) is left current after draws.
+fn without_the_workaround(mut plan: Plan) -> Plan {
+    let silhouette = &mut plan.maps[0].commands;
+    assert_eq!(silhouette.last(), Some(&Command::LoadIdentity));
+    silhouette.pop();
+    plan
+}
+
+/// With the plan as written, both pipelines make the same mask.
+#[test]
+fn the_silhouette_pass_leaves_an_affine_modelview_and_the_paths_agree() {
+    let mut scene = apply_overrides(&Scene::default_scene(), Some(SIZE), None);
+    scene.shadow.projector = Projector::PseudoDepth;
+    let plan = plan(&scene).unwrap();
+    let (e, n) = (
+        mask_of(&plan, PipelineKind::Emulate),
+        mask_of(&plan, PipelineKind::Native),
+    );
+    let differ = mask_difference(&e, &n);
+    assert!(
+        differ * 500 <= e.data.len(),
+        "masks differ on {differ} pixels"
+    );
+}
+
+/// Native-path bug (Mesa 22.3.6 llvmpipe, compatibility profile): draws under a projective
+/// modelview, then glLoadMatrixf(camera view) and EYE_LINEAR planes set under that view,
+/// generate texture coordinates unlike the GL rule (and unlike the emulated path): the
+/// default scene's projective mask goes from 8.5 % wrong to 18 %, shadows displaced and
+/// enlarged. The emulated path is unaffected. `projective` avoids it with a glLoadIdentity
+/// after its silhouette pass; this test keeps the bug visible. Run with `--ignored`.
+#[test]
+#[ignore = "fails on Mesa 22.3 llvmpipe: native EYE_LINEAR texgen after a projective modelview"]
+fn native_eye_planes_after_a_projective_modelview_follow_the_gl_rule() {
+    let mut scene = apply_overrides(&Scene::default_scene(), Some(SIZE), None);
+    scene.shadow.projector = Projector::PseudoDepth;
+    let plan = without_the_workaround(plan(&scene).unwrap());
+    let (e, n) = (
+        mask_of(&plan, PipelineKind::Emulate),
+        mask_of(&plan, PipelineKind::Native),
+    );
+    let differ = mask_difference(&e, &n);
+    assert!(
+        differ * 500 <= e.data.len(),
+        "masks differ on {differ} pixels"
+    );
+}
+
+/// Pipeline/render bug: `RenderTarget::bind` calls glViewport(whole target) behind the
+/// emulated pipeline's shadow copy of the last viewport sent, and `render` binds the target
+/// again before executing the mask commands. When the image is smaller than the
+/// framebuffer (an image below the light map's size, e.g. `--size 192x192` with a 256²
+/// map), the mask's Viewport(image) equals the copy's and is skipped, so the emulated mask
+/// is drawn with the whole target's viewport: at 192² the default scene's projective mask
+/// goes from 8.5 % wrong to 23 % (every map technique is affected; the native path is
+/// not). The tests above render at 256² to stay clear of it. Run with `--ignored`.
+#[test]
+#[ignore = "fails: the emulated pipeline's viewport cache goes stale when the target is rebound"]
+fn a_mask_after_the_target_is_rebound_keeps_the_plans_viewport() {
+    let size = ImageSize {
+        width: 192,
+        height: 192,
+    };
+    let scene = apply_overrides(&Scene::default_scene(), Some(size), None);
+    let plan = plan(&scene).unwrap();
+    let native = mask_with(&plan, PipelineKind::Native, true);
+    let emulate = mask_with(&plan, PipelineKind::Emulate, true);
+    let differ = mask_difference(&emulate, &native);
+    assert!(
+        differ * 500 <= emulate.data.len(),
+        "masks differ on {differ} pixels"
+    );
+}
