@@ -1,10 +1,12 @@
 //! The shadow-map parameters every rendering command accepts, overriding the scene's
 //! `[shadow]` table: map size, light depth bits, polygon offset, precision, filter,
-//! readback rule.
+//! readback rule, and the projection techniques' modes.
 
 use clap::Args;
 use fixedfunc::gpu::DepthBits;
-use fixedfunc::scene::{MapFilter, PolygonOffset, Precision, ReadbackRule, Scene};
+use fixedfunc::scene::{
+    MapFilter, PlanarMode, PolygonOffset, Precision, Projector, ReadbackRule, Scene,
+};
 
 /// `--map-size`, `--depth-bits`, `--offset`, `--precision`, `--filter`.
 #[derive(Args, Debug, Clone, Default)]
@@ -29,6 +31,14 @@ pub struct ShadowArgs {
     /// on the CPU by truncation or rounding (default: the scene's `readback`).
     #[arg(long, value_enum)]
     pub readback: Option<ReadbackRule>,
+    /// How `planar` keeps its shadow off the receiver's depth: polygon offset or stencil
+    /// alone (default: the scene's `planar_mode`).
+    #[arg(long, value_enum)]
+    pub planar_mode: Option<PlanarMode>,
+    /// `projective`'s projector: the light's perspective frustum, or the pseudo-depth
+    /// projection that clips false shadows (default: the scene's `projector`).
+    #[arg(long, value_enum)]
+    pub projector: Option<Projector>,
 }
 
 /// A polygon offset on the command line, or none.
@@ -76,6 +86,12 @@ impl ShadowArgs {
         }
         if let Some(v) = self.readback {
             s.readback = v;
+        }
+        if let Some(v) = self.planar_mode {
+            s.planar_mode = v;
+        }
+        if let Some(v) = self.projector {
+            s.projector = v;
         }
     }
 }

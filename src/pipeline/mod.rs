@@ -163,7 +163,10 @@ pub struct Counters {
 }
 
 /// One way of executing Commands. The context must be current and stay the same for the
-/// life of the pipeline.
+/// life of the pipeline, and its GL state belongs to the pipeline: the emulated path keeps
+/// a copy of what it last sent and skips calls GL already has, so a caller that changes GL
+/// state behind it (`RenderTarget::bind` resets the viewport) must do so before creating
+/// the pipeline.
 pub trait Pipeline {
     fn kind(&self) -> PipelineKind;
 

@@ -242,6 +242,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
             source: MapImageSource::Bytes {
                 slot: MAP_IMAGE_SLOT,
                 size: map.size,
+                from_float: None,
             },
         }),
         notes: notes(scene, &projector),
