@@ -176,18 +176,20 @@ fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
         return Ok(());
     }
     println!(
-        "techniques: default scene, 512² image, 512² map, maps made every frame; {} steady frames, interleaved; ms median [min–max]",
+        "techniques: default scene, 512² image, 512² map; {} steady frames, interleaved; ms median [min–max]; the split from frames that make their maps; `static`: the steady frame when maps are made once",
         repeats.max(1)
     );
     println!(
-        "{:<22} {:<8} {:>9} {:>22} {:>8} {:>10} {:>8} {:>8} {:>7} {:>9}",
+        "{:<22} {:<8} {:>8} {:>22} {:>7} {:>9} {:>7} {:>7} {:>8} {:>7} {:>6} {:>8}",
         "technique",
         "path",
         "cold",
-        "frame",
+        "frame (maps each)",
         "light",
         "read+load",
         "eye",
+        "static",
+        "emu/nat",
         "×none",
         "passes",
         "programs"
@@ -195,9 +197,10 @@ fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
     let opt = |s: Option<fixedfunc::bench::Summary>| {
         s.map_or("—".to_string(), |s| format!("{:.2}", s.median))
     };
+    let ratio = |v: Option<f64>| v.map_or("—".to_string(), |v| format!("{v:.2}"));
     for r in &rows {
         println!(
-            "{:<22} {:<8} {:>9.2} {:>22} {:>8} {:>10} {:>8.2} {:>8} {:>7} {:>9}",
+            "{:<22} {:<8} {:>8.2} {:>22} {:>7} {:>9} {:>7.2} {:>7} {:>8} {:>7} {:>6} {:>8}",
             r.technique,
             fixedfunc::render::pipeline_name(r.pipeline),
             r.cold_ms,
@@ -208,7 +211,9 @@ fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
             opt(r.light),
             opt(r.readback_upload),
             r.eye.median,
-            r.vs_none.map_or("—".to_string(), |v| format!("{v:.2}")),
+            opt(r.static_frame),
+            ratio(r.emulate_vs_native),
+            ratio(r.vs_none),
             r.passes,
             r.programs
         );
