@@ -20,18 +20,15 @@
 //! r/q is clamped to [0, 1] before the compare (ARB_shadow), so surfaces beyond the light's
 //! far plane compare as 1 and stay lit only where the stored depth is 1.
 
-use crate::ff::{BlendFactor, Command as C};
+use crate::ff::Command as C;
 use crate::ff::{
-    Capability, Command, CompareFunc, CompareMode, CopyTexImage, DepthTextureMode, PixelFormat,
-    PixelType, ReadPixels, TexCoord, TexEnvMode, TexEnvParam, TexParam, TextureTarget,
+    Command, CompareFunc, CompareMode, CopyTexImage, DepthTextureMode, PixelFormat, PixelType,
+    ReadPixels, TexParam, TextureTarget,
 };
 use crate::scene::Scene;
 
 use super::map::{bind_map, map_parameters, MapSettings, MAP_IMAGE_SLOT};
-use super::parts::{
-    dim_pass, does_not_receive, eye_linear, light_pass, lighting, objects, receives, reset,
-    LightSet, Look, ShadowLight,
-};
+use super::parts::{light_pass, Look, ShadowLight};
 use super::{
     check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared, Technique,
     TechniqueError,
@@ -105,38 +102,5 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
 }
 
 fn eye_passes(scene: &Scene, prepared: &Prepared, light: &ShadowLight, look: Look) -> Vec<Pass> {
-    let mut lit = vec![
-        Command::DepthFunc(CompareFunc::Equal),
-        Command::DepthMask(false),
-        Command::Enable(Capability::Blend),
-        Command::BlendFunc {
-            src: BlendFactor::One,
-            dst: BlendFactor::One,
-        },
-    ];
-    lit.extend(lighting(scene, look, LightSet::ShadowingOnly));
-    lit.extend([
-        Command::ActiveTexture(0),
-        bind_map(),
-        Command::Enable(Capability::Texture2D),
-        Command::TexEnv(TexEnvParam::Mode(TexEnvMode::Modulate)),
-    ]);
-    lit.extend(eye_linear(&[
-        (TexCoord::S, light.plane(0)),
-        (TexCoord::T, light.plane(1)),
-        (TexCoord::R, light.plane(2)),
-        (TexCoord::Q, light.plane(3)),
-    ]));
-    let paint = look.paint(true);
-    lit.extend(objects(scene, prepared, receives, paint));
-    lit.push(Command::Disable(Capability::Texture2D));
-    lit.extend(objects(scene, prepared, does_not_receive, paint));
-    lit.extend(reset(&[0]));
-    vec![
-        dim_pass(scene, prepared, look, false),
-        Pass {
-            name: "lit",
-            commands: lit,
-        },
-    ]
+    super::parts::dim_then_added_light(scene, prepared, [0, 1, 2, 3].map(|i| light.plane(i)), look)
 }

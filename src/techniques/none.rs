@@ -97,11 +97,10 @@ pub fn frame_start(scene: &Scene) -> Vec<Command> {
     commands
 }
 
-/// Projection (glFrustum as gluPerspective writes it, or glOrtho) and the view as the
-/// modelview, left current.
-pub fn camera(camera: &Camera, width: u32, height: u32) -> Vec<Command> {
-    let aspect = width as f32 / height.max(1) as f32;
-    let volume = match camera.projection {
+/// glFrustum (as gluPerspective(fovy, aspect, near, far) writes it) or glOrtho of a
+/// projection.
+pub fn view_volume(projection: Projection, aspect: f32) -> Command {
+    match projection {
         // gluPerspective: top = near · tan(fovy / 2), right = top · aspect.
         Projection::Perspective { fovy, near, far } => {
             let top = near * (fovy.to_radians() / 2.0).tan();
@@ -129,7 +128,14 @@ pub fn camera(camera: &Camera, width: u32, height: u32) -> Vec<Command> {
             near,
             far,
         }),
-    };
+    }
+}
+
+/// Projection (glFrustum as gluPerspective writes it, or glOrtho) and the view as the
+/// modelview, left current.
+pub fn camera(camera: &Camera, width: u32, height: u32) -> Vec<Command> {
+    let aspect = width as f32 / height.max(1) as f32;
+    let volume = view_volume(camera.projection, aspect);
     vec![
         Command::MatrixMode(MatrixMode::Projection),
         Command::LoadIdentity,

@@ -25,9 +25,9 @@ use glam::{Mat4, Vec3, Vec4};
 
 use crate::ff::{
     self, Capability, ClearMask, ColorMask, Command, CompareFunc, Face, LightModelParam,
-    MaterialParam, TexCoord, TexGenMode, TexGenParam, ViewVolume, Viewport,
+    MaterialParam, TexCoord, TexGenMode, TexGenParam, Viewport,
 };
-use crate::scene::{Light, Object, PolygonOffset, Projection, Scene};
+use crate::scene::{Light, Object, PolygonOffset, Scene};
 
 use super::none::{camera, GLOBAL_AMBIENT};
 use super::{Pass, Prepared, TechniqueError, MASK_BACKGROUND};
@@ -95,41 +95,14 @@ impl ShadowLight {
             .lights
             .first()
             .ok_or(TechniqueError::NoLight { technique })?;
-        let (volume, projection, near, far) = match light.view.projection {
-            // gluPerspective(fovy, 1, near, far) as glFrustum: top = near · tan(fovy / 2).
-            Projection::Perspective { fovy, near, far } => {
-                let top = near * (fovy.to_radians() / 2.0).tan();
-                let v = ViewVolume {
-                    left: -top,
-                    right: top,
-                    bottom: -top,
-                    top,
-                    near,
-                    far,
-                };
-                let m = ff::matrix::frustum(v).unwrap_or(Mat4::IDENTITY);
-                (Command::Frustum(v), m, near, far)
-            }
-            Projection::Orthographic {
-                left,
-                right,
-                bottom,
-                top,
-                near,
-                far,
-            } => {
-                let v = ViewVolume {
-                    left,
-                    right,
-                    bottom,
-                    top,
-                    near,
-                    far,
-                };
-                let m = ff::matrix::ortho(v).unwrap_or(Mat4::IDENTITY);
-                (Command::Ortho(v), m, near, far)
-            }
+        // Square maps: aspect 1. The matrix is the one GL builds from the same volume.
+        let volume = super::none::view_volume(light.view.projection, 1.0);
+        let (projection, near, far) = match &volume {
+            Command::Frustum(v) => (ff::matrix::frustum(*v), v.near, v.far),
+            Command::Ortho(v) => (ff::matrix::ortho(*v), v.near, v.far),
+            _ => unreachable!("view_volume returns Frustum or Ortho"),
         };
+        let projection = projection.unwrap_or(Mat4::IDENTITY);
         Ok(ShadowLight {
             index: 0,
             light,
@@ -372,6 +345,53 @@ pub fn light_pass(
         name: "light",
         commands,
     }
+}
+
+/// The dim pass, then the shadowing light *added* (glBlendFunc(ONE, ONE), DepthFunc(EQUAL))
+/// on receivers through the map bound as [`super::map::MAP_TEXTURE`] on unit 0, projected
+/// by eye-linear S, T, R, Q = `planes` and applied with MODULATE: where the texel is 1 the
+/// light's contribution is added in full, where it is 0 nothing is — the picture of `none`
+/// in lit places, the ambient in shadow. Non-receivers get the light without the texture.
+pub fn dim_then_added_light(
+    scene: &Scene,
+    prepared: &Prepared,
+    planes: [Vec4; 4],
+    look: Look,
+) -> Vec<Pass> {
+    let mut lit = vec![
+        Command::DepthFunc(CompareFunc::Equal),
+        Command::DepthMask(false),
+        Command::Enable(Capability::Blend),
+        Command::BlendFunc {
+            src: ff::BlendFactor::One,
+            dst: ff::BlendFactor::One,
+        },
+    ];
+    lit.extend(lighting(scene, look, LightSet::ShadowingOnly));
+    lit.extend([
+        Command::ActiveTexture(0),
+        super::map::bind_map(),
+        Command::Enable(Capability::Texture2D),
+        Command::TexEnv(ff::TexEnvParam::Mode(ff::TexEnvMode::Modulate)),
+    ]);
+    lit.extend(eye_linear(&[
+        (TexCoord::S, planes[0]),
+        (TexCoord::T, planes[1]),
+        (TexCoord::R, planes[2]),
+        (TexCoord::Q, planes[3]),
+    ]));
+    let paint = look.paint(true);
+    lit.extend(objects(scene, prepared, receives, paint));
+    lit.push(Command::Disable(Capability::Texture2D));
+    lit.extend(objects(scene, prepared, does_not_receive, paint));
+    lit.extend(reset(&[0]));
+    vec![
+        dim_pass(scene, prepared, look, false),
+        Pass {
+            name: "lit",
+            commands: lit,
+        },
+    ]
 }
 
 /// Back to the state every pass assumes at its start: depth LESS with writes, no alpha,

@@ -42,16 +42,13 @@
 use glam::{Mat4, Vec3, Vec4};
 
 use crate::ff::{
-    BlendFactor, Capability, Command, CompareFunc, CopyTexImage, PixelFormat, PixelType,
-    ReadPixels, TexCoord, TexEnvMode, TexEnvParam, TexFormat, ViewVolume, Viewport,
+    Capability, Command, CopyTexImage, PixelFormat, PixelType, ReadPixels, TexFormat, ViewVolume,
+    Viewport,
 };
 use crate::scene::{Projector, Scene};
 
 use super::map::{bind_map, map_parameters, MapSettings, MAP_IMAGE_SLOT};
-use super::parts::{
-    dim_pass, does_not_receive, eye_linear, lighting, objects, receives, reset, LightSet, Look,
-    Paint, ShadowLight, BIAS,
-};
+use super::parts::{objects, Look, Paint, ShadowLight, BIAS};
 use super::planar::{list, object_name};
 use super::plane::{area, flat_plane, light_vector, scene_radius};
 use super::{
@@ -287,40 +284,7 @@ fn silhouette_pass(scene: &Scene, prepared: &Prepared, p: &Projection, size: u32
 
 /// Dim pass, then the shadowing light added through the silhouette on receivers.
 fn eye_passes(scene: &Scene, prepared: &Prepared, p: &Projection, look: Look) -> Vec<Pass> {
-    let mut lit = vec![
-        Command::DepthFunc(CompareFunc::Equal),
-        Command::DepthMask(false),
-        Command::Enable(Capability::Blend),
-        Command::BlendFunc {
-            src: BlendFactor::One,
-            dst: BlendFactor::One,
-        },
-    ];
-    lit.extend(lighting(scene, look, LightSet::ShadowingOnly));
-    lit.extend([
-        Command::ActiveTexture(0),
-        bind_map(),
-        Command::Enable(Capability::Texture2D),
-        Command::TexEnv(TexEnvParam::Mode(TexEnvMode::Modulate)),
-    ]);
-    lit.extend(eye_linear(&[
-        (TexCoord::S, p.plane(0)),
-        (TexCoord::T, p.plane(1)),
-        (TexCoord::R, p.plane(2)),
-        (TexCoord::Q, p.plane(3)),
-    ]));
-    let paint = look.paint(true);
-    lit.extend(objects(scene, prepared, receives, paint));
-    lit.push(Command::Disable(Capability::Texture2D));
-    lit.extend(objects(scene, prepared, does_not_receive, paint));
-    lit.extend(reset(&[0]));
-    vec![
-        dim_pass(scene, prepared, look, false),
-        Pass {
-            name: "lit",
-            commands: lit,
-        },
-    ]
+    super::parts::dim_then_added_light(scene, prepared, [0, 1, 2, 3].map(|i| p.plane(i)), look)
 }
 
 fn notes(scene: &Scene, p: &Projection) -> Vec<String> {

@@ -404,7 +404,13 @@ fn combiner_input(i: &CombinerInput) -> String {
 /// else GLubyte (both parse back to the same bytes).
 fn pixels(ty: PixelType, data: &[u8]) -> String {
     let size = ty.size();
-    if size == 1 || data.len() % size != 0 {
+    // C has no literal for a NaN with another payload: such floats go out as their bytes.
+    let odd_nan = ty == PixelType::Float
+        && data.chunks_exact(4).any(|c| {
+            let v = f32::from_le_bytes([c[0], c[1], c[2], c[3]]);
+            v.is_nan() && v.to_bits() != f32::NAN.to_bits()
+        });
+    if size == 1 || data.len() % size != 0 || odd_nan {
         let v: Vec<String> = data.iter().map(|b| b.to_string()).collect();
         return format!("(GLubyte[]){{{}}}", v.join(", "));
     }
