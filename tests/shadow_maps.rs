@@ -356,3 +356,46 @@ fn linear_filtering_of_the_depth_texture_is_percentage_closer() {
     let d = disagreement(&linear, &native);
     assert!(d <= 0.5, "LINEAR masks differ on {d:.3}% between paths");
 }
+
+#[test]
+fn maps_are_made_again_only_when_the_light_moves() {
+    // Four frames with the camera turning: the map passes are the same every frame, so the
+    // map is made once; with the light turning, every frame's map is stale. Either way the
+    // last frame's mask is judged against the truth of the last frame's scene.
+    use fixedfunc::render::{Orbit, OrbitTarget};
+    let orbit = |target| {
+        let mut scene = Scene::default_scene();
+        scene.shadow.polygon_offset = Some(PolygonOffset {
+            factor: 1.0,
+            units: 4.0,
+        });
+        render::render(
+            &scene,
+            &RenderOptions {
+                technique: Some("depth-compare".to_string()),
+                size: Some(SIZE),
+                frames: 4,
+                orbit: Some(Orbit {
+                    target,
+                    degrees_per_frame: 10.0,
+                }),
+                ..RenderOptions::default()
+            },
+        )
+        .expect("render")
+    };
+    let still = Run::new("depth-compare").offset(1.0, 4.0).render();
+    let camera = orbit(OrbitTarget::Camera);
+    let light = orbit(OrbitTarget::Light);
+    assert_eq!(camera.maps_made, 1);
+    assert_eq!(light.maps_made, 4);
+    assert_ne!(camera.image, still.image, "the camera moved");
+    assert_ne!(
+        light.truth.mask, still.truth.mask,
+        "the truth follows the light"
+    );
+    for o in [&camera, &light] {
+        let e = o.metrics.all.wrong_percent;
+        assert!(e <= 2.0, "{e:.2}% wrong after the motion");
+    }
+}

@@ -72,6 +72,11 @@ enum Command {
         /// NAME-big-digit.png and NAME-little-digit.png).
         #[arg(long, value_name = "FILE")]
         depth_map: Option<PathBuf>,
+        /// Move something each frame: camera:DEG or light:DEG turns the camera's or the
+        /// light's eye about the vertical through what it looks at. Maps are made again
+        /// only when the light moved (unless --remake-maps always).
+        #[arg(long, value_name = "WHAT:DEGREES")]
+        orbit: Option<fixedfunc::render::Orbit>,
     },
     /// Every technique on both pipelines against one ground truth, frames interleaved: a
     /// table, and a report folder (report.html, results.csv/json, accuracy_vs_time.svg/png,
@@ -183,6 +188,7 @@ pub fn run() -> ExitCode {
             shadow,
             remake_maps,
             depth_map,
+            orbit,
         } => render::run(render::Args {
             scene,
             technique,
@@ -195,6 +201,7 @@ pub fn run() -> ExitCode {
             shadow,
             remake_maps,
             depth_map,
+            orbit,
         }),
         Command::Truth {
             scene,

@@ -37,6 +37,7 @@ pub struct Args {
     pub shadow: ShadowArgs,
     pub remake_maps: RemakeMaps,
     pub depth_map: Option<PathBuf>,
+    pub orbit: Option<fixedfunc::render::Orbit>,
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
@@ -50,6 +51,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         frames: args.frames,
         remake_maps: args.remake_maps,
         depth_map: args.depth_map.is_some(),
+        orbit: args.orbit,
         ..RenderOptions::default()
     };
     let bar = ProgressBar::hidden();

@@ -109,6 +109,76 @@ pub struct RenderOptions {
     pub depth_map: bool,
     /// Arithmetic of the emulated pipeline's stages (the scene's `precision` when `None`).
     pub precision: Option<Precision>,
+    /// Something moving from frame to frame (`None`: a static scene).
+    pub orbit: Option<Orbit>,
+}
+
+/// A motion: the camera's or the light's eye turns about the vertical axis through the
+/// point it looks at, by `degrees_per_frame` (frame 1 is the scene as written).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Orbit {
+    pub target: OrbitTarget,
+    pub degrees_per_frame: f32,
+}
+
+impl std::str::FromStr for Orbit {
+    type Err = String;
+
+    /// `camera:DEG` or `light:DEG` (degrees per frame, finite).
+    fn from_str(text: &str) -> Result<Orbit, String> {
+        let bad = || format!("`{text}`: expected camera:DEGREES or light:DEGREES (e.g. light:5)");
+        let (what, deg) = text.split_once(':').ok_or_else(bad)?;
+        let target = match what {
+            "camera" => OrbitTarget::Camera,
+            "light" => OrbitTarget::Light,
+            _ => return Err(bad()),
+        };
+        let degrees_per_frame: f32 = deg.trim().parse().map_err(|_| bad())?;
+        if !degrees_per_frame.is_finite() {
+            return Err(bad());
+        }
+        Ok(Orbit {
+            target,
+            degrees_per_frame,
+        })
+    }
+}
+
+/// What an [`Orbit`] moves.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum OrbitTarget {
+    /// The eye: the maps stay valid.
+    Camera,
+    /// The shadowing light (the scene's first): the maps go stale every frame.
+    Light,
+}
+
+impl Orbit {
+    /// `scene` as it stands at frame `n` (1-based): the target's eye turned by
+    /// (n − 1)·degrees about +Y through its `at`; a directional light's direction turns too.
+    pub fn scene_at(&self, scene: &Scene, n: u32) -> Scene {
+        let turn = glam::Mat3::from_rotation_y(
+            (self.degrees_per_frame * n.saturating_sub(1) as f32).to_radians(),
+        );
+        let mut scene = scene.clone();
+        match self.target {
+            OrbitTarget::Camera => {
+                let c = &mut scene.camera;
+                c.eye = c.at + turn * (c.eye - c.at);
+            }
+            OrbitTarget::Light => {
+                if let Some(light) = scene.lights.first_mut() {
+                    let v = &mut light.view;
+                    v.eye = v.at + turn * (v.eye - v.at);
+                    if let crate::scene::LightKind::Directional { direction } = &mut light.kind {
+                        *direction = turn * *direction;
+                    }
+                }
+            }
+        }
+        scene
+    }
 }
 
 /// When a technique's maps are made again.
@@ -137,6 +207,7 @@ impl Default for RenderOptions {
             pass_times: false,
             depth_map: false,
             precision: None,
+            orbit: None,
         }
     }
 }
@@ -273,8 +344,14 @@ pub fn render_with_progress(
 /// One render held open: context, framebuffer, pipeline and plan, frames on demand.
 pub struct Session {
     scene: Scene,
+    /// The scene as given (frame 1), from which an orbit computes later frames.
+    base: Scene,
+    prepared: Prepared,
     technique: &'static str,
     plan: Plan,
+    /// The map passes that made the current maps: the maps are stale exactly when the next
+    /// frame's map passes differ from these (the light, a caster or a setting moved).
+    maps_from: Option<Vec<crate::techniques::Pass>>,
     options: RenderOptions,
     // Dropped in this order: the pipeline and target are released explicitly first.
     pipeline: Box<dyn Pipeline>,
@@ -330,9 +407,12 @@ impl Session {
         let setup = run(pipeline.as_mut(), &ctx, "setup", 0, &plan.setup);
         let pass_ms = vec![Vec::new(); plan.pass_count()];
         let mut session = Session {
+            base: scene.clone(),
             scene,
+            prepared,
             technique: technique.name,
             plan,
+            maps_from: None,
             options: options.clone(),
             pipeline,
             target: Some(target),
@@ -371,7 +451,7 @@ impl Session {
             ..shadow.clone()
         };
         let technique = techniques::lookup(&scene.shadow.technique)?;
-        let plan = (technique.plan)(&scene, &Prepared::new(&scene))?;
+        let plan = (technique.plan)(&scene, &self.prepared)?;
         let (old, new) = (self.plan.framebuffer, plan.framebuffer);
         if old.depth != new.depth
             || old.stencil != new.stencil
@@ -384,8 +464,10 @@ impl Session {
         run(self.pipeline.as_mut(), &self.ctx, "setup", 0, &plan.setup)?;
         self.pass_ms = vec![Vec::new(); plan.pass_count()];
         self.plan = plan;
+        self.base = scene.clone();
         self.scene = scene;
         self.maps_made = 0;
+        self.maps_from = None;
         Ok(())
     }
 
@@ -402,7 +484,15 @@ impl Session {
     pub fn frame(&mut self) -> Result<f64, RenderError> {
         self.ctx.make_current()?;
         let n = self.frames_ms.len() as u32 + 1;
-        let make_maps = self.maps_made == 0 || self.options.remake_maps == RemakeMaps::Always;
+        if let Some(orbit) = self.options.orbit {
+            // The scene moved: plan again (cheap: commands over the same geometry).
+            let scene = orbit.scene_at(&self.base, n);
+            let technique = techniques::lookup(&scene.shadow.technique)?;
+            self.plan = (technique.plan)(&scene, &self.prepared)?;
+            self.scene = scene;
+        }
+        let stale = self.maps_from.as_ref() != Some(&self.plan.maps);
+        let make_maps = stale || self.options.remake_maps == RemakeMaps::Always;
         let start = Instant::now();
         let maps = self.plan.maps.len();
         for (i, pass) in self.plan.maps.iter().chain(&self.plan.passes).enumerate() {
@@ -426,6 +516,7 @@ impl Session {
         let ms = start.elapsed().as_secs_f64() * 1e3;
         if make_maps && maps > 0 {
             self.maps_made += 1;
+            self.maps_from = Some(self.plan.maps.clone());
         }
         self.frames_ms.push(ms);
         Ok(ms)
