@@ -70,6 +70,8 @@ pub enum RenderError {
     Metrics(#[from] MetricsError),
     #[error("the light's map is {size}² texels; at most {max}² fit a framebuffer")]
     MapTooLarge { size: u32, max: u32 },
+    #[error("the session's framebuffer was already released")]
+    Released,
     #[error("the new shadow settings need another framebuffer (depth bits, stencil or size changed): start a new session")]
     Restage,
     #[error("the depth-map readback is missing or malformed (slot {slot})")]
@@ -484,14 +486,16 @@ impl Session {
     pub fn frame(&mut self) -> Result<f64, RenderError> {
         self.ctx.make_current()?;
         let n = self.frames_ms.len() as u32 + 1;
+        let mut stale = self.maps_from.is_none();
         if let Some(orbit) = self.options.orbit {
-            // The scene moved: plan again (cheap: commands over the same geometry).
+            // The scene moved: plan again (cheap: commands over the same geometry). Only a
+            // re-planned frame can change the map passes, so only it compares them.
             let scene = orbit.scene_at(&self.base, n);
             let technique = techniques::lookup(&scene.shadow.technique)?;
             self.plan = (technique.plan)(&scene, &self.prepared)?;
             self.scene = scene;
+            stale = stale || self.maps_from.as_ref() != Some(&self.plan.maps);
         }
-        let stale = self.maps_from.as_ref() != Some(&self.plan.maps);
         let make_maps = stale || self.options.remake_maps == RemakeMaps::Always;
         let start = Instant::now();
         let maps = self.plan.maps.len();
@@ -574,7 +578,7 @@ impl Session {
 
     fn read_results(&mut self) -> Result<GpuResults, RenderError> {
         self.ctx.make_current()?;
-        let target = self.target.as_ref().expect("target lives until release");
+        let target = self.target.as_ref().ok_or(RenderError::Released)?;
         let frames = self.frames_ms.len() as u32;
         let p = self.pipeline.as_mut();
         // The picture first: mask plans may draw over it.

@@ -20,10 +20,9 @@
 //! r/q is clamped to [0, 1] before the compare (ARB_shadow), so surfaces beyond the light's
 //! far plane compare as 1 and stay lit only where the stored depth is 1.
 
-use crate::ff::Command as C;
 use crate::ff::{
     Command, CompareFunc, CompareMode, CopyTexImage, DepthTextureMode, PixelFormat, PixelType,
-    ReadPixels, TexParam, TextureTarget,
+    TexParam, TextureTarget,
 };
 use crate::scene::Scene;
 
@@ -83,15 +82,12 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
         mask: colour_mask(scene, eye_passes(scene, prepared, &light, Look::Mask)),
         framebuffer: map.framebuffer(scene, false),
         map_image: Some(MapImagePlan {
-            commands: vec![C::ReadPixels(ReadPixels {
-                x: 0,
-                y: 0,
-                width: map.size as i32,
-                height: map.size as i32,
-                format: PixelFormat::DepthComponent,
-                ty: PixelType::Float,
-                slot: MAP_IMAGE_SLOT,
-            })],
+            commands: vec![super::map::read_corner(
+                map.size,
+                PixelFormat::DepthComponent,
+                PixelType::Float,
+                MAP_IMAGE_SLOT,
+            )],
             source: MapImageSource::DepthFloat {
                 slot: MAP_IMAGE_SLOT,
                 size: map.size,

@@ -27,14 +27,16 @@
 use glam::Vec4;
 
 use crate::ff::{
-    Capability, ClearMask, ColorMask, Command, PixelFormat, PixelType, TexCoord, TexData,
-    TexEnvMode, TexEnvParam, TextureTarget, Viewport,
+    Capability, Command, PixelFormat, PixelType, TexCoord, TexData, TexEnvMode, TexEnvParam,
+    TextureTarget,
 };
 use crate::scene::Scene;
 
 use super::dual8::{dual_texture_pass, setup, upload_pass};
 use super::map::{read_map, MapSettings, MAP_SLOT, RAMP_TEXTURE};
-use super::parts::{dim_pass, eye_linear, objects, texturing_off, Look, Paint, ShadowLight};
+use super::parts::{
+    dim_pass, eye_linear, map_pass_start, objects, texturing_off, Look, Paint, ShadowLight,
+};
 use super::{
     check_light_count, colour_mask, MapImagePlan, MapImageSource, Pass, Plan, Prepared, Technique,
     TechniqueError,
@@ -103,23 +105,7 @@ fn distance_pass(
     size: u32,
     plane: Vec4,
 ) -> Pass {
-    let mut c = vec![
-        Command::Viewport(Viewport {
-            x: 0,
-            y: 0,
-            width: size as i32,
-            height: size as i32,
-        }),
-        Command::Disable(Capability::Lighting),
-        Command::Enable(Capability::DepthTest),
-        Command::ColorMask(ColorMask::ALL),
-        Command::ClearColor(Vec4::ONE),
-        Command::Clear(ClearMask {
-            color: true,
-            depth: true,
-            stencil: false,
-        }),
-    ];
+    let mut c = map_pass_start(size, true);
     c.extend(light.view_commands());
     c.extend([
         Command::ActiveTexture(0),

@@ -144,6 +144,11 @@ pub fn ramp(name: u32, wrap: Wrap) -> Vec<Command> {
 
 /// glReadPixels of the map's `size`² corner into [`MAP_SLOT`].
 pub fn read_map(size: u32, format: PixelFormat, ty: PixelType) -> Command {
+    read_corner(size, format, ty, MAP_SLOT)
+}
+
+/// glReadPixels of the framebuffer's `size`² corner (where map passes draw) into `slot`.
+pub fn read_corner(size: u32, format: PixelFormat, ty: PixelType, slot: u32) -> Command {
     Command::ReadPixels(crate::ff::ReadPixels {
         x: 0,
         y: 0,
@@ -151,7 +156,7 @@ pub fn read_map(size: u32, format: PixelFormat, ty: PixelType) -> Command {
         height: size as i32,
         format,
         ty,
-        slot: MAP_SLOT,
+        slot,
     })
 }
 

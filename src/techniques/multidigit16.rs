@@ -75,16 +75,27 @@ pub const TECHNIQUE: Technique = Technique {
 };
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
+    digit_plan(NAME, scene, prepared, eye_passes)
+}
+
+/// The plan of a two-digit technique: its digit map (light pass, UNSIGNED_SHORT readback,
+/// LUMINANCE8_ALPHA8 upload), both ramps, stencil, and `eye` in both looks — what
+/// `multidigit16` and `multidigit16-combine` share; only their eye passes differ.
+pub fn digit_plan(
+    name: &'static str,
+    scene: &Scene,
+    prepared: &Prepared,
+    eye: fn(&Scene, &Prepared, &ShadowLight, Look) -> Vec<Pass>,
+) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
-    let light = ShadowLight::of(scene, NAME)?;
+    let light = ShadowLight::of(scene, name)?;
     let map = MapSettings::of(scene);
-    map.check_stencil(NAME)?;
-    let eye = |look| eye_passes(scene, prepared, &light, look);
+    map.check_stencil(name)?;
     Ok(Plan {
         setup: setup(),
         maps: digit_map_passes(scene, prepared, &light, &map),
-        passes: eye(Look::Shaded),
-        mask: colour_mask(scene, eye(Look::Mask)),
+        passes: eye(scene, prepared, &light, Look::Shaded),
+        mask: colour_mask(scene, eye(scene, prepared, &light, Look::Mask)),
         framebuffer: map.framebuffer(scene, true),
         map_image: Some(digit_map_image(&map)),
         notes: filter_note(&map),

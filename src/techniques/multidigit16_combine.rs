@@ -38,14 +38,12 @@ use crate::ff::{
 };
 use crate::scene::Scene;
 
-use super::map::{MapSettings, REPEAT_RAMP_TEXTURE};
-use super::multidigit16::{
-    digit_map_image, digit_map_passes, digit_unit, filter_note, map_unit, setup, Digit,
-};
+use super::map::REPEAT_RAMP_TEXTURE;
+use super::multidigit16::{digit_unit, map_unit, Digit};
 use super::parts::{
     dim_pass, lighting, objects, receives, reset, texturing_off, LightSet, Look, Paint, ShadowLight,
 };
-use super::{check_light_count, colour_mask, Pass, Plan, Prepared, Technique, TechniqueError};
+use super::{Pass, Plan, Prepared, Technique, TechniqueError};
 
 pub const NAME: &str = "multidigit16-combine";
 
@@ -56,20 +54,7 @@ pub const TECHNIQUE: Technique = Technique {
 };
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
-    check_light_count(scene)?;
-    let light = ShadowLight::of(scene, NAME)?;
-    let map = MapSettings::of(scene);
-    map.check_stencil(NAME)?;
-    let eye = |look| eye_passes(scene, prepared, &light, look);
-    Ok(Plan {
-        setup: setup(),
-        maps: digit_map_passes(scene, prepared, &light, &map),
-        passes: eye(Look::Shaded),
-        mask: colour_mask(scene, eye(Look::Mask)),
-        framebuffer: map.framebuffer(scene, true),
-        map_image: Some(digit_map_image(&map)),
-        notes: filter_note(&map),
-    })
+    super::multidigit16::digit_plan(NAME, scene, prepared, eye_passes)
 }
 
 fn env(params: &[TexEnvParam]) -> Vec<Command> {

@@ -28,8 +28,8 @@
 use glam::{Vec3, Vec4};
 
 use crate::ff::{
-    Capability, ClearMask, Command, LightModelParam, LightParam, MatrixMode, PixelFormat,
-    PixelType, ReadPixels, ViewVolume, Viewport,
+    Capability, Command, LightModelParam, LightParam, MatrixMode, PixelFormat, PixelType,
+    ReadPixels, ViewVolume,
 };
 use crate::gpu::DepthBits;
 use crate::scene::{Camera, Light, LightKind, Projection, Scene};
@@ -53,8 +53,7 @@ pub const GLOBAL_AMBIENT: f32 = 0.1;
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
     let (width, height) = (scene.image.width, scene.image.height);
-    let mut commands = frame_start(scene);
-    commands.extend(camera(&scene.camera, width, height));
+    let mut commands = super::parts::eye_start(scene, super::parts::Look::Shaded, false);
     commands.extend(lighting(&scene.lights));
     commands.extend(objects(scene, prepared));
     Ok(Plan::single(
@@ -70,31 +69,6 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
             stencil: false,
         },
     ))
-}
-
-/// Viewport, clear to the background, depth test on; NORMALIZE when some transform scales.
-pub fn frame_start(scene: &Scene) -> Vec<Command> {
-    let (w, h) = (scene.image.width, scene.image.height);
-    let mut commands = vec![
-        Command::Viewport(Viewport {
-            x: 0,
-            y: 0,
-            width: w as i32,
-            height: h as i32,
-        }),
-        Command::ClearColor(scene.image.background.extend(1.0)),
-        Command::Clear(ClearMask {
-            color: true,
-            depth: true,
-            stencil: false,
-        }),
-        Command::Enable(Capability::DepthTest),
-    ];
-    let scales = scene.objects.iter().any(|o| o.transform.scale != Vec3::ONE);
-    if scales {
-        commands.push(Command::Enable(Capability::Normalize));
-    }
-    commands
 }
 
 /// glFrustum (as gluPerspective(fovy, aspect, near, far) writes it) or glOrtho of a

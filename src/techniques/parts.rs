@@ -299,26 +299,7 @@ pub fn light_pass(
     offset: Option<PolygonOffset>,
     colour: bool,
 ) -> Pass {
-    let mut commands = vec![
-        Command::Viewport(Viewport {
-            x: 0,
-            y: 0,
-            width: size as i32,
-            height: size as i32,
-        }),
-        Command::Disable(Capability::Lighting),
-        Command::Enable(Capability::DepthTest),
-    ];
-    if colour {
-        commands.push(Command::ClearColor(Vec4::ONE));
-    } else {
-        commands.push(Command::ColorMask(ColorMask::NONE));
-    }
-    commands.push(Command::Clear(ClearMask {
-        color: colour,
-        depth: true,
-        stencil: false,
-    }));
+    let mut commands = map_pass_start(size, colour);
     commands.extend(light.view_commands());
     if let Some(o) = offset {
         commands.extend([
@@ -392,6 +373,37 @@ pub fn dim_then_added_light(
             commands: lit,
         },
     ]
+}
+
+/// The start of every pass that draws into the map's `size`² corner: that viewport,
+/// lighting off, the depth test on, and the clear — depth only with colour writes off, or
+/// colour (to white, the far distance and the unshadowed texel) and depth with every
+/// channel written.
+pub fn map_pass_start(size: u32, colour: bool) -> Vec<Command> {
+    let mut commands = vec![
+        Command::Viewport(Viewport {
+            x: 0,
+            y: 0,
+            width: size as i32,
+            height: size as i32,
+        }),
+        Command::Disable(Capability::Lighting),
+        Command::Enable(Capability::DepthTest),
+    ];
+    if colour {
+        commands.extend([
+            Command::ColorMask(ColorMask::ALL),
+            Command::ClearColor(Vec4::ONE),
+        ]);
+    } else {
+        commands.push(Command::ColorMask(ColorMask::NONE));
+    }
+    commands.push(Command::Clear(ClearMask {
+        color: colour,
+        depth: true,
+        stencil: false,
+    }));
+    commands
 }
 
 /// Back to the state every pass assumes at its start: depth LESS with writes, no alpha,

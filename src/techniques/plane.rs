@@ -34,7 +34,7 @@
 use glam::{Mat4, Vec3, Vec4};
 
 use crate::mesh::Mesh;
-use crate::scene::{Light, LightKind, Scene};
+use crate::scene::{Light, LightKind};
 
 /// Relative offset δ = `OFFSET` · R of the casting slab (the truth's rule).
 pub const OFFSET: f32 = 1e-4;
@@ -105,19 +105,9 @@ pub fn area(mesh: &Mesh) -> f32 {
         .sum()
 }
 
-/// R: half the diagonal of the world bounds of every object (1 for an empty scene).
-pub fn scene_radius(scene: &Scene) -> f32 {
-    let bounds = scene.objects.iter().filter_map(|o| o.world_mesh().bounds());
-    let (lo, hi) = bounds.fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), (a, b)| {
-        (lo.min(a), hi.max(b))
-    });
-    let r = 0.5 * (hi - lo).length();
-    if r.is_finite() && r > 0.0 {
-        r
-    } else {
-        1.0
-    }
-}
+/// R: half the diagonal of the world bounds of every object (1 for an empty scene) — the
+/// truth's own measure, so that δ = `truth::OFFSET`·R means the same here.
+pub use crate::truth::scene_radius;
 
 /// How a flat receiver stands towards the eye and the light.
 #[derive(Debug, Clone, Copy, PartialEq)]

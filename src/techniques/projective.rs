@@ -41,14 +41,11 @@
 
 use glam::{Mat4, Vec3, Vec4};
 
-use crate::ff::{
-    Capability, Command, CopyTexImage, PixelFormat, PixelType, ReadPixels, TexFormat, ViewVolume,
-    Viewport,
-};
+use crate::ff::{Command, CopyTexImage, PixelFormat, PixelType, TexFormat, ViewVolume};
 use crate::scene::{Projector, Scene};
 
-use super::map::{bind_map, map_parameters, MapSettings, MAP_IMAGE_SLOT};
-use super::parts::{objects, Look, Paint, ShadowLight, BIAS};
+use super::map::{bind_map, map_parameters, read_corner, MapSettings, MAP_IMAGE_SLOT};
+use super::parts::{map_pass_start, objects, Look, Paint, ShadowLight, BIAS};
 use super::planar::{list, object_name};
 use super::plane::{area, flat_plane, light_vector, scene_radius};
 use super::{
@@ -227,15 +224,12 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
         mask: colour_mask(scene, eye_passes(scene, prepared, &projector, Look::Mask)),
         framebuffer: map.framebuffer(scene, false),
         map_image: Some(MapImagePlan {
-            commands: vec![Command::ReadPixels(ReadPixels {
-                x: 0,
-                y: 0,
-                width: map.size as i32,
-                height: map.size as i32,
-                format: PixelFormat::Luminance,
-                ty: PixelType::UnsignedByte,
-                slot: MAP_IMAGE_SLOT,
-            })],
+            commands: vec![read_corner(
+                map.size,
+                PixelFormat::Luminance,
+                PixelType::UnsignedByte,
+                MAP_IMAGE_SLOT,
+            )],
             source: MapImageSource::Bytes {
                 slot: MAP_IMAGE_SLOT,
                 size: map.size,
@@ -248,27 +242,14 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
 
 /// The casters, black on white, from the projector into the map's corner.
 fn silhouette_pass(scene: &Scene, prepared: &Prepared, p: &Projection, size: u32) -> Pass {
-    let mut c = vec![
-        Command::Viewport(Viewport {
-            x: 0,
-            y: 0,
-            width: size as i32,
-            height: size as i32,
-        }),
-        Command::Disable(Capability::Lighting),
-        Command::Enable(Capability::DepthTest),
-        Command::ClearColor(Vec4::ONE),
-        Command::Clear(crate::ff::ClearMask {
-            color: true,
-            depth: true,
-            stencil: false,
-        }),
+    let mut c = map_pass_start(size, true);
+    c.extend([
         Command::MatrixMode(crate::ff::MatrixMode::Projection),
         Command::LoadIdentity,
         p.volume_command.clone(),
         Command::MatrixMode(crate::ff::MatrixMode::Modelview),
         Command::LoadMatrix(p.modelview),
-    ];
+    ]);
     let black = Paint::Flat(Vec4::new(0.0, 0.0, 0.0, 1.0));
     c.extend(objects(scene, prepared, |o| o.casts, black));
     // Leave an affine modelview behind. Measured on Mesa 22.3 llvmpipe (native path): after

@@ -236,8 +236,9 @@ pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError>
     })
 }
 
-/// Radius of the bounding sphere of the world-space scene (half its bounds' diagonal).
-fn scene_radius(scene: &Scene) -> f32 {
+/// Radius of the bounding sphere of the world-space scene (half its bounds' diagonal; 1
+/// for an empty scene).
+pub fn scene_radius(scene: &Scene) -> f32 {
     let bounds = scene.objects.iter().filter_map(|o| o.world_mesh().bounds());
     let (lo, hi) = bounds.fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), (a, b)| {
         (lo.min(a), hi.max(b))
