@@ -3,6 +3,7 @@
 //! headless and measurably.
 //!
 //! Layers, lowest first (a module uses those below it, never those above):
+//! `vocab` (the shared names: techniques, pipelines, depth formats, readback rules) →
 //! `gpu` (contexts, render targets, readback) → `ff` (commands and the GL 1.x state model,
 //! no GL calls) → `mesh`, `scene`, `truth`, `metrics` (pure) → `pipeline` → `techniques` (plans of
 //! Commands) → `render` (a scene, judged against the truth) → `bench`, `study` (many renders
@@ -21,3 +22,4 @@ pub mod scene;
 pub mod study;
 pub mod techniques;
 pub mod truth;
+pub mod vocab;

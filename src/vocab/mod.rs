@@ -1,0 +1,47 @@
+//! The project's shared vocabulary: the small named values every layer speaks of — which
+//! technique, which pipeline, how many depth bits, how a depth readback becomes integers,
+//! the polygon offset — defined once, here, at the bottom of the layer order. It depends
+//! on nothing of the crate and on no front end: the command line's value parsers and the
+//! scene reader both read the names through [`Named`], so the spelling a user types lives
+//! next to the value it means and nowhere else.
+
+mod technique;
+
+pub use technique::TechniqueId;
+
+/// A value with user-facing names: the first name of a value is the one printed, later
+/// ones are accepted aliases.
+pub trait Named: Copy + PartialEq + Sized + 'static {
+    /// Every value with its name, in the order help texts list them.
+    const NAMES: &'static [(&'static str, Self)];
+
+    /// The printed name.
+    fn name(self) -> &'static str {
+        Self::NAMES
+            .iter()
+            .find(|(_, v)| *v == self)
+            .map(|(n, _)| *n)
+            .expect("every value of a Named type has a name")
+    }
+
+    /// The value a name means, if any.
+    fn from_name(name: &str) -> Option<Self> {
+        Self::NAMES.iter().find(|(n, _)| *n == name).map(|(_, v)| *v)
+    }
+
+    /// Every value once, in order (aliases skipped).
+    fn all() -> Vec<Self> {
+        let mut out: Vec<Self> = Vec::new();
+        for (_, v) in Self::NAMES {
+            if !out.contains(v) {
+                out.push(*v);
+            }
+        }
+        out
+    }
+
+    /// The printed names, in order.
+    fn names() -> Vec<&'static str> {
+        Self::all().into_iter().map(Self::name).collect()
+    }
+}
