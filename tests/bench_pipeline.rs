@@ -3,7 +3,7 @@
 
 use fixedfunc::bench::pipeline::measure;
 use fixedfunc::gpu::Backend;
-use fixedfunc::pipeline::PipelineKind;
+use fixedfunc::vocab::PipelineKind;
 
 #[test]
 fn emulated_frames_after_the_first_compile_nothing() {

@@ -2,13 +2,13 @@
 //! its rows carry exactly `render`'s figures, its page refers only to files it wrote, and a
 //! combination a pipeline cannot run is skipped and reported instead of failing the run.
 
+use fixedfunc::vocab::{PipelineKind, PolygonOffset};
 use std::collections::HashMap;
 use std::path::Path;
 use std::process::{Command, Output};
 
-use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{render, ImageSize, RenderOptions};
-use fixedfunc::scene::{PolygonOffset, Scene};
+use fixedfunc::scene::Scene;
 use fixedfunc::study::{self, CompareSpec};
 use fixedfunc::techniques;
 

@@ -14,15 +14,15 @@
 
 mod support;
 
+use fixedfunc::vocab::{DepthBits, Precision};
 use std::sync::Arc;
 
 use fixedfunc::ff::combiner_model::{evaluate, CombinerInputs};
 use fixedfunc::ff::{
     Capability, ClearMask, Command, CompareFunc, Filter, FixedState, Geometry, PixelFormat,
-    PixelType, Precision, Primitive, TexData, TexFormat, TexImage, TexParam, TextureTarget,
-    MAX_TEXTURE_UNITS,
+    PixelType, Primitive, TexData, TexFormat, TexImage, TexParam, TextureTarget, MAX_TEXTURE_UNITS,
 };
-use fixedfunc::gpu::{DepthBits, GpuContext, Profile, RenderTarget};
+use fixedfunc::gpu::{GpuContext, Profile, RenderTarget};
 use fixedfunc::pipeline::emulate::EmulatedPipeline;
 use fixedfunc::pipeline::Pipeline;
 use fixedfunc::techniques::multidigit16::{big_digit_combiners, little_digit_combiners};

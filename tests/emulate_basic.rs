@@ -4,9 +4,10 @@
 mod support;
 
 use fixedfunc::ff::script;
-use fixedfunc::gpu::{DepthBits, Profile};
+use fixedfunc::gpu::Profile;
 use fixedfunc::pipeline::emulate::EmulatedPipeline;
 use fixedfunc::pipeline::Pipeline;
+use fixedfunc::vocab::DepthBits;
 use support::{assert_no_gl_error, context, probe, target};
 
 /// Runs `source` on a 16×16 D24S8 target of each headless backend; returns the images.

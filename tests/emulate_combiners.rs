@@ -5,17 +5,18 @@
 
 mod support;
 
+use fixedfunc::vocab::{DepthBits, Precision};
 use std::sync::Arc;
 
 use fixedfunc::ff::combiner_model::{evaluate, CombinerInputs};
+use fixedfunc::ff::TexData;
 use fixedfunc::ff::{
     Capability, CombinerBias, CombinerInput, CombinerOutput, CombinerParam, CombinerScale, Command,
     ComponentUsage, Filter, FinalVariable, FixedState, Geometry, Mapping, PixelFormat, PixelType,
     Portion, Primitive, Product, Register, SumOrMux, TexFormat, TexImage, TexParam, TextureTarget,
     Variable, MAX_TEXTURE_UNITS,
 };
-use fixedfunc::ff::{Precision, TexData};
-use fixedfunc::gpu::{DepthBits, Profile};
+use fixedfunc::gpu::Profile;
 use fixedfunc::pipeline::emulate::EmulatedPipeline;
 use fixedfunc::pipeline::Pipeline;
 use glam::Vec4;

@@ -16,8 +16,8 @@ mod support;
 
 use fidelity::{run_one, Frame};
 use fixedfunc::ff::precision::{combine_component, combine_rgb};
-use fixedfunc::ff::{CombineFunc, Precision};
-use fixedfunc::pipeline::PipelineKind;
+use fixedfunc::ff::CombineFunc;
+use fixedfunc::vocab::{PipelineKind, Precision};
 
 const VALUES: [u8; 9] = [0, 1, 64, 127, 128, 129, 191, 254, 255];
 const WIDTH: usize = 183;

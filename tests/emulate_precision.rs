@@ -5,10 +5,11 @@
 
 mod support;
 
-use fixedfunc::ff::{script, Precision};
-use fixedfunc::gpu::{DepthBits, Profile};
+use fixedfunc::ff::script;
+use fixedfunc::gpu::Profile;
 use fixedfunc::pipeline::emulate::EmulatedPipeline;
 use fixedfunc::pipeline::Pipeline;
+use fixedfunc::vocab::{DepthBits, Precision};
 
 /// The script: unit 0 holds map values x, unit 1 fragment values x − d, one column each.
 fn comparison(d: u8) -> String {

@@ -13,8 +13,7 @@ mod fidelity;
 mod support;
 
 use fidelity::{compare, ortho, run_one, script_file, Frame};
-use fixedfunc::ff::Precision;
-use fixedfunc::pipeline::PipelineKind;
+use fixedfunc::vocab::{PipelineKind, Precision};
 use support::Tolerance;
 
 /// A compare function: (r, d) → passes.

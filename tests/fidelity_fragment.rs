@@ -7,8 +7,7 @@ mod fidelity;
 mod support;
 
 use fidelity::{compare, ortho, parse, probe_gl, run_both, run_one, script_file, Frame};
-use fixedfunc::ff::Precision;
-use fixedfunc::pipeline::PipelineKind;
+use fixedfunc::vocab::{PipelineKind, Precision};
 use support::Tolerance;
 
 /// A unit quad at pixel (x, y) of an ortho(0, w, 0, h) window, at object depth z.

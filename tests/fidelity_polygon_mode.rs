@@ -9,8 +9,7 @@ mod fidelity;
 mod support;
 
 use fidelity::{compare, run_both, run_one, script_file, Frame};
-use fixedfunc::ff::Precision;
-use fixedfunc::pipeline::PipelineKind;
+use fixedfunc::vocab::{PipelineKind, Precision};
 use image::{GenericImageView, RgbaImage};
 use support::Tolerance;
 

@@ -10,6 +10,7 @@ mod fidelity;
 mod support;
 
 use fidelity::{compare, ortho, probe_rgb, unorm8, Frame};
+use fixedfunc::vocab::{PipelineKind, Precision};
 use support::Tolerance;
 
 /// piglit's 0.01 in 8-bit steps, as `piglit_set_tolerance_for_bits(8)` sets it: 3/255.
@@ -457,8 +458,7 @@ fn interpolate_order_stage_clamp_dot3_scale_and_crossbar() {
 /// (191·0.5 = 96) nor anything from DOT3. Exact (tol 0) on alpha.
 #[test]
 fn invalid_tex_env_value_keeps_the_previous_one() {
-    use fixedfunc::ff::{GlErrorKind, Precision};
-    use fixedfunc::pipeline::PipelineKind;
+    use fixedfunc::ff::GlErrorKind;
     let src = format!(
         "glClearColor(0, 0, 0, 0);
 glClear(GL_COLOR_BUFFER_BIT);
@@ -481,8 +481,8 @@ glEnd();
     let commands = fidelity::parse(&src);
     for backend in support::HEADLESS {
         for kind in [PipelineKind::Emulate, PipelineKind::Native] {
-            let ctx = support::context(backend, kind.profile());
-            let t = support::target(&ctx, 1, 1, fixedfunc::gpu::DepthBits::D24, false);
+            let ctx = support::context(backend, fixedfunc::pipeline::profile(kind));
+            let t = support::target(&ctx, 1, 1, fixedfunc::vocab::DepthBits::D24, false);
             let mut p: Box<dyn fixedfunc::pipeline::Pipeline> = match kind {
                 PipelineKind::Emulate => Box::new(
                     fixedfunc::pipeline::emulate::EmulatedPipeline::new(&ctx)

@@ -4,9 +4,8 @@
 
 mod support;
 
-use fixedfunc::gpu::{
-    Backend, ContextRequest, DepthBits, DepthRule, EglPlatform, FlatProgram, GpuContext, Profile,
-};
+use fixedfunc::gpu::{Backend, ContextRequest, EglPlatform, FlatProgram, GpuContext, Profile};
+use fixedfunc::vocab::{DepthBits, DepthRule, ReadbackRule};
 use glow::HasContext;
 use support::{assert_images_match, assert_no_gl_error, context, probe, target, Tolerance};
 
@@ -192,14 +191,18 @@ fn driver_depth_readback_follows_the_named_rules() {
             [-1.0, 1.0, -1.0],
         ];
         flat.draw(&ctx, &ramp, [1.0; 4]);
-        let bytes_driver = t.read_depth_u8(&ctx, DepthRule::Driver).unwrap();
-        let bytes_ours = t.read_depth_u8(&ctx, DepthRule::Truncate).unwrap();
+        let bytes_driver = t.read_depth_u8(&ctx, ReadbackRule::Driver).unwrap();
+        let bytes_ours = t
+            .read_depth_u8(&ctx, ReadbackRule::Cpu(DepthRule::Truncate))
+            .unwrap();
         assert_eq!(
             bytes_driver, bytes_ours,
             "{backend}: UNSIGNED_BYTE is ⌊255z⌋"
         );
-        let shorts_driver = t.read_depth_u16(&ctx, DepthRule::Driver).unwrap();
-        let shorts_ours = t.read_depth_u16(&ctx, DepthRule::Round).unwrap();
+        let shorts_driver = t.read_depth_u16(&ctx, ReadbackRule::Driver).unwrap();
+        let shorts_ours = t
+            .read_depth_u16(&ctx, ReadbackRule::Cpu(DepthRule::Round))
+            .unwrap();
         let same = shorts_driver
             .iter()
             .zip(&shorts_ours)
@@ -217,7 +220,7 @@ fn driver_depth_readback_follows_the_named_rules() {
             same >= 1014,
             "{backend}: only {same}/1024 shorts follow ⌊65535z + ½⌋"
         );
-        let ints = t.read_depth_u32(&ctx, DepthRule::Driver).unwrap();
+        let ints = t.read_depth_u32(&ctx, ReadbackRule::Driver).unwrap();
         let floats = t.read_depth_f32(&ctx).unwrap();
         for (i, z) in ints.iter().zip(&floats) {
             let from_int = *i as f64 / u32::MAX as f64;

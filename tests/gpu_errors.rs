@@ -4,8 +4,9 @@
 mod support;
 
 use fixedfunc::gpu::{
-    Backend, ContextRequest, DepthBits, GpuContext, GpuError, Profile, RenderTarget, TargetSpec,
+    Backend, ContextRequest, GpuContext, GpuError, Profile, RenderTarget, TargetSpec,
 };
+use fixedfunc::vocab::DepthBits;
 use glow::HasContext;
 
 fn error_of(request: ContextRequest) -> GpuError {

@@ -2,8 +2,9 @@
 
 mod support;
 
-use fixedfunc::gpu::{DepthBits, Profile};
+use fixedfunc::gpu::Profile;
 use fixedfunc::pipeline::native::{bindings as gl, NativeGl};
+use fixedfunc::vocab::DepthBits;
 use support::{assert_no_gl_error, context, probe, target};
 
 #[test]

@@ -4,6 +4,7 @@
 
 mod support;
 
+use fixedfunc::vocab::DepthBits;
 use std::sync::Arc;
 
 use fixedfunc::ff::{
@@ -13,7 +14,7 @@ use fixedfunc::ff::{
     TexImage, TexParam, TextureTarget, ViewVolume, Wrap,
 };
 use fixedfunc::ff::{Command, LightParam, MatrixMode, TexData, Viewport};
-use fixedfunc::gpu::{Backend, DepthBits, GpuContext, Profile, RenderTarget};
+use fixedfunc::gpu::{Backend, GpuContext, Profile, RenderTarget};
 use fixedfunc::pipeline::native::{bindings as gl, NativeGl, NativePipeline};
 use fixedfunc::pipeline::{Pipeline, PipelineError};
 use glam::{Mat4, Vec3, Vec4};

@@ -5,6 +5,7 @@
 
 mod support;
 
+use fixedfunc::vocab::DepthBits;
 use std::sync::Arc;
 
 use fixedfunc::ff::{
@@ -12,7 +13,7 @@ use fixedfunc::ff::{
     MatrixMode, PixelFormat, PixelType, Primitive, TexData, TexEnvMode, TexEnvParam, TexFormat,
     TexImage, TexParam, TextureTarget, ViewVolume, Wrap,
 };
-use fixedfunc::gpu::{DepthBits, Profile};
+use fixedfunc::gpu::Profile;
 use fixedfunc::pipeline::native::NativePipeline;
 use fixedfunc::pipeline::Pipeline;
 use glam::Vec4;

@@ -10,9 +10,9 @@ mod support;
 
 use fixedfunc::gpu::Backend;
 use fixedfunc::metrics::{Mask, BACKGROUND};
-use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{render, ImageSize, RenderOptions, RenderOutcome};
 use fixedfunc::scene::Scene;
+use fixedfunc::vocab::PipelineKind;
 use support::{assert_images_match, Tolerance, HEADLESS};
 
 const SIZE: ImageSize = ImageSize {

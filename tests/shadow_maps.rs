@@ -3,11 +3,11 @@
 //! each a named test with its numbers. Images are 192×144 with the default 256² map; error
 //! percentages are of the truth's geometry pixels (`metrics`).
 
-use fixedfunc::gpu::{Backend, DepthBits};
+use fixedfunc::gpu::Backend;
 use fixedfunc::metrics::Mask;
-use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{self, ImageSize, RemakeMaps, RenderError, RenderOptions, RenderOutcome};
-use fixedfunc::scene::{PolygonOffset, Scene};
+use fixedfunc::scene::Scene;
+use fixedfunc::vocab::{DepthBits, MapFilter, PipelineKind, PolygonOffset, ReadbackRule};
 
 const SIZE: ImageSize = ImageSize {
     width: 192,
@@ -298,7 +298,6 @@ fn maps_are_made_once_on_a_static_scene_unless_asked_every_frame() {
 fn the_readback_rule_is_the_drivers_or_the_programs_own() {
     // Mesa truncates UNSIGNED_BYTE depth (notes H4): reading FLOAT and truncating on the CPU
     // gives the same map, bit for bit; rounding lifts about half the texels by one step.
-    use fixedfunc::scene::ReadbackRule;
     let units = units_for_8bit_steps(3.0);
     let with = |rule| {
         let mut scene = Scene::default_scene();
@@ -308,8 +307,8 @@ fn the_readback_rule_is_the_drivers_or_the_programs_own() {
         run.render()
     };
     let driver = with(ReadbackRule::Driver);
-    let truncate = with(ReadbackRule::Truncate);
-    let round = with(ReadbackRule::Round);
+    let truncate = with(ReadbackRule::Cpu(fixedfunc::vocab::DepthRule::Truncate));
+    let round = with(ReadbackRule::Cpu(fixedfunc::vocab::DepthRule::Round));
     assert_eq!(driver.mask, truncate.mask, "Mesa's byte readback truncates");
     assert_eq!(driver.image, truncate.image);
     assert_ne!(driver.mask, round.mask, "rounding changes the 8-bit map");
@@ -320,7 +319,6 @@ fn linear_filtering_of_the_depth_texture_is_percentage_closer() {
     // LINEAR on a compared depth texture blends the four nearest compare results: the
     // shadow's edge gets partial values the NEAREST map never produces. Both paths agree,
     // and the mask (lit iff at least half lit) stays as accurate.
-    use fixedfunc::scene::MapFilter;
     let with = |filter, pipeline| {
         let mut scene = Scene::default_scene();
         scene.shadow.filter = filter;

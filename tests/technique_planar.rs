@@ -15,11 +15,11 @@ mod support;
 
 use fixedfunc::ff::Command;
 use fixedfunc::metrics::{Class, BACKGROUND};
-use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::ImageSize;
-use fixedfunc::scene::{PlanarMode, Scene};
+use fixedfunc::scene::Scene;
 use fixedfunc::techniques::planar::{receivers, Receiver};
 use fixedfunc::techniques::{lookup, Prepared, TechniqueError};
+use fixedfunc::vocab::{PipelineKind, PlanarMode};
 use projection::{floor_scene, mask_difference, pixels_of, point_light, run, score, KINDS};
 use support::{assert_images_match, Tolerance};
 
@@ -374,7 +374,7 @@ translate = [0, 2.5, -5]
 #[test]
 fn a_sixteen_bit_depth_buffer_has_no_stencil_for_planar() {
     let mut scene = Scene::default_scene();
-    scene.shadow.depth = fixedfunc::gpu::DepthBits::D16;
+    scene.shadow.depth = fixedfunc::vocab::DepthBits::D16;
     let err = (lookup("planar").unwrap().plan)(&scene, &Prepared::new(&scene)).unwrap_err();
     assert!(matches!(err, TechniqueError::NeedsStencil { .. }), "{err}");
 }

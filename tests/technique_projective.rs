@@ -17,12 +17,13 @@ mod support;
 use fixedfunc::ff::Command;
 use fixedfunc::gpu::{ContextRequest, GpuContext, RenderTarget, TargetSpec};
 use fixedfunc::metrics::{Class, Mask};
-use fixedfunc::pipeline::{self, PipelineKind};
+use fixedfunc::pipeline;
 use fixedfunc::render::{apply_overrides, ImageSize};
-use fixedfunc::scene::{Projector, Scene};
+use fixedfunc::scene::Scene;
 use fixedfunc::techniques::projective::projection as projector_of;
 use fixedfunc::techniques::{lookup, Plan, Prepared, TechniqueError};
 use fixedfunc::truth::{truth, TruthOptions};
+use fixedfunc::vocab::{PipelineKind, Projector};
 use projection::{floor_scene, mask_difference, pixels_of, point_light, run, score, KINDS};
 use support::{assert_images_match, Tolerance};
 
@@ -285,7 +286,7 @@ fn caster_touching_the_plane() {
 fn mask_of(plan: &Plan, kind: PipelineKind) -> Mask {
     let ctx = GpuContext::new(&ContextRequest::new(
         fixedfunc::gpu::Backend::Egl,
-        kind.profile(),
+        fixedfunc::pipeline::profile(kind),
     ))
     .expect("context");
     let fb = plan.framebuffer;

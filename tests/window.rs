@@ -3,9 +3,8 @@
 
 mod support;
 
-use fixedfunc::gpu::{
-    Backend, ContextRequest, DepthBits, FlatProgram, GpuContext, Profile, VirtualDisplay,
-};
+use fixedfunc::gpu::{Backend, ContextRequest, FlatProgram, GpuContext, Profile, VirtualDisplay};
+use fixedfunc::vocab::DepthBits;
 use glow::HasContext;
 use support::{assert_images_match, assert_no_gl_error, probe, target, Tolerance};
 

@@ -1,14 +1,14 @@
 //! How long a context takes to create, and to produce its first read-back frame (a 256×256
 //! D24 target, a clear, one triangle from a freshly compiled program, a colour readback).
 
+use crate::vocab::DepthBits;
 use std::time::Instant;
 
 use serde::Serialize;
 
 use super::Summary;
 use crate::gpu::{
-    Backend, ContextRequest, DepthBits, FlatProgram, GpuContext, GpuError, Profile, RenderTarget,
-    TargetSpec,
+    Backend, ContextRequest, FlatProgram, GpuContext, GpuError, Profile, RenderTarget, TargetSpec,
 };
 
 /// One backend × profile row.

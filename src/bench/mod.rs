@@ -13,7 +13,7 @@ pub mod techniques;
 pub use stats::Summary;
 
 /// Which measurements to run.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum BenchGroup {
     /// Context creation and the first read-back frame, per backend and profile.
@@ -24,6 +24,28 @@ pub enum BenchGroup {
     Truth,
     /// Every technique on the default scene, both paths, frame time split by pass kind.
     Techniques,
+}
+
+impl crate::vocab::Named for BenchGroup {
+    const NAMES: &'static [(&'static str, Self)] = &[
+        ("context", BenchGroup::Context),
+        ("pipeline", BenchGroup::Pipeline),
+        ("truth", BenchGroup::Truth),
+        ("techniques", BenchGroup::Techniques),
+    ];
+
+    fn help(self) -> &'static str {
+        match self {
+            BenchGroup::Context => {
+                "context creation and the first read-back frame, per backend and profile"
+            }
+            BenchGroup::Pipeline => "one frame of the default scene through both pipelines",
+            BenchGroup::Truth => "the CPU ground truth: rays per second",
+            BenchGroup::Techniques => {
+                "every technique on the default scene, both paths, split by pass kind"
+            }
+        }
+    }
 }
 
 impl BenchGroup {

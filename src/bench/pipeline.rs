@@ -4,14 +4,15 @@
 //! per draw (the CPU side: `execute` before glFinish, divided by the draws), programs
 //! compiled in all and after the first frame, state calls sent and skipped.
 
+use crate::vocab::{DepthBits, PipelineKind};
 use std::time::Instant;
 
 use serde::Serialize;
 
 use super::Summary;
 use crate::ff::Command;
-use crate::gpu::{Backend, ContextRequest, DepthBits, GpuContext, RenderTarget, TargetSpec};
-use crate::pipeline::{self, Counters, Pipeline, PipelineError, PipelineKind};
+use crate::gpu::{Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec};
+use crate::pipeline::{self, Counters, Pipeline, PipelineError};
 use crate::scene::Scene;
 use crate::techniques::{self, Prepared};
 
@@ -67,7 +68,10 @@ pub fn measure(
         .max(1) as f64;
     let mut paths = Vec::new();
     for kind in [PipelineKind::Emulate, PipelineKind::Native] {
-        let ctx = GpuContext::new(&ContextRequest::new(backend, kind.profile()))?;
+        let ctx = GpuContext::new(&ContextRequest::new(
+            backend,
+            crate::pipeline::profile(kind),
+        ))?;
         let spec = TargetSpec::new(scene.image.width, scene.image.height, DepthBits::D24);
         let target = RenderTarget::new(&ctx, spec.with_stencil())?;
         let pipeline = pipeline::create(kind, &ctx)?;

@@ -12,12 +12,12 @@
 //! (`RemakeMaps::WhenMoved`, the static scene), its steady frame — which should cost about
 //! the eye passes alone.
 
+use crate::vocab::{PipelineKind, PolygonOffset};
 use serde::Serialize;
 
 use crate::bench::Summary;
-use crate::pipeline::PipelineKind;
 use crate::render::{ImageSize, RemakeMaps, RenderError, RenderOptions, Session};
-use crate::scene::{PolygonOffset, Scene};
+use crate::scene::Scene;
 use crate::techniques::REGISTRY;
 
 /// One technique on one path.

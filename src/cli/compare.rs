@@ -33,7 +33,7 @@ pub struct Args {
     /// Which pipelines run (a combination a pipeline cannot execute is skipped and said so).
     #[arg(long, value_enum, default_value_t = PipelineChoice::Both)]
     pub pipeline: PipelineChoice,
-    #[arg(long, value_enum, default_value_t = Backend::Egl)]
+    #[arg(long, value_parser = super::named::named::<Backend>(), default_value = "egl")]
     pub backend: Backend,
     /// Image size WxH (default: the scene's).
     #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]

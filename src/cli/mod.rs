@@ -6,6 +6,7 @@ mod bench;
 mod compare;
 mod error;
 mod info;
+mod named;
 mod pipelines;
 mod progress;
 mod render;
@@ -17,6 +18,7 @@ mod shadow_args;
 mod sweep_bias;
 mod truth;
 
+use fixedfunc::vocab::PipelineKind;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -24,7 +26,6 @@ use clap::{Parser, Subcommand};
 
 use fixedfunc::bench::BenchGroup;
 use fixedfunc::gpu::Backend;
-use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{ImageSize, RemakeMaps};
 use fixedfunc::scene::KNOWN_TECHNIQUES;
 
@@ -47,9 +48,9 @@ enum Command {
         #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(KNOWN_TECHNIQUES))]
         technique: Option<String>,
         /// Which path executes the fixed-function commands.
-        #[arg(long, value_enum, default_value_t = PipelineKind::Emulate)]
+        #[arg(long, value_parser = named::named::<PipelineKind>(), default_value = "emulate")]
         pipeline: PipelineKind,
-        #[arg(long, value_enum, default_value_t = Backend::Egl)]
+        #[arg(long, value_parser = named::named::<Backend>(), default_value = "egl")]
         backend: Backend,
         /// Image size WxH (default: the scene's).
         #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]
@@ -106,7 +107,7 @@ enum Command {
     /// Which backends work here: GL strings, limits, depth/stencil bits, shadow extensions.
     Info {
         /// Only this backend (default: all three).
-        #[arg(long, value_enum)]
+        #[arg(long, value_parser = named::named::<Backend>())]
         backend: Option<Backend>,
         /// Print JSON instead of text.
         #[arg(long)]
@@ -116,9 +117,9 @@ enum Command {
     Replay {
         /// The script.
         file: PathBuf,
-        #[arg(long, value_enum, default_value = "emulate")]
+        #[arg(long, value_parser = named::named::<PipelineKind>(), default_value = "emulate")]
         pipeline: PipelineKind,
-        #[arg(long, value_enum, default_value = "egl")]
+        #[arg(long, value_parser = named::named::<Backend>(), default_value = "egl")]
         backend: Backend,
         /// Target size, WIDTHxHEIGHT.
         #[arg(long, value_name = "WxH", default_value = "256x256", value_parser = scene_arg::parse_size)]
@@ -142,7 +143,7 @@ enum Command {
     /// Repeated timings, reported as medians.
     Bench {
         /// Only this group (default: all).
-        #[arg(long, value_enum)]
+        #[arg(long, value_parser = named::named::<BenchGroup>())]
         only: Option<BenchGroup>,
         /// Repetitions per measurement.
         #[arg(long, default_value_t = 10)]

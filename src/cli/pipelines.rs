@@ -1,8 +1,8 @@
 //! `--pipeline emulate|native|both` for the commands that study several renders, and the
 //! technique names they accept (the registry's, in its order).
 
-use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::techniques::REGISTRY;
+use fixedfunc::vocab::PipelineKind;
 
 /// Which pipelines a study runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]

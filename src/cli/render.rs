@@ -2,11 +2,11 @@
 //! figures line. Progress bars for multiple frames and for the ground truth (stderr; hidden
 //! when stderr is not a terminal).
 
+use fixedfunc::vocab::PipelineKind;
 use std::path::PathBuf;
 use std::time::Duration;
 
 use fixedfunc::gpu::Backend;
-use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{self, ImageSize, Progress, RemakeMaps, RenderOptions};
 use indicatif::{ProgressBar, ProgressStyle};
 

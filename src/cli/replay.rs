@@ -1,12 +1,13 @@
 //! `fixedfunc replay FILE`: runs a script of GL 1.x calls on either pipeline and writes the
 //! image it leaves in the colour buffer.
 
+use fixedfunc::vocab::{DepthBits, PipelineKind};
 use std::path::Path;
 
 use fixedfunc::gpu::{
-    Backend, ContextRequest, DepthBits, GpuContext, RenderTarget, TargetSpec, VirtualDisplay,
+    Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay,
 };
-use fixedfunc::pipeline::{self, PipelineKind};
+use fixedfunc::pipeline;
 
 use super::error::CliError;
 use super::script_io;
@@ -25,7 +26,10 @@ pub fn run(
     } else {
         None
     };
-    let ctx = GpuContext::new(&ContextRequest::new(backend, kind.profile()))?;
+    let ctx = GpuContext::new(&ContextRequest::new(
+        backend,
+        fixedfunc::pipeline::profile(kind),
+    ))?;
     let target = RenderTarget::new(
         &ctx,
         TargetSpec::new(size.width, size.height, DepthBits::D24).with_stencil(),

@@ -16,7 +16,7 @@ pub fn distinct_keys(commands: &[Command]) -> Vec<ShaderKey> {
     let mut keys: Vec<ShaderKey> = Vec::new();
     for cmd in commands {
         if state.apply(cmd).is_ok() && matches!(cmd, Command::Draw(_)) {
-            let key = ShaderKey::from_state(&state, fixedfunc::ff::Precision::Float);
+            let key = ShaderKey::from_state(&state, fixedfunc::vocab::Precision::Float);
             if !keys.contains(&key) {
                 keys.push(key);
             }

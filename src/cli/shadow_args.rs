@@ -3,9 +3,9 @@
 //! readback rule, and the projection techniques' modes.
 
 use clap::Args;
-use fixedfunc::gpu::DepthBits;
-use fixedfunc::scene::{
-    MapFilter, PlanarMode, PolygonOffset, Precision, Projector, ReadbackRule, Scene,
+use fixedfunc::scene::Scene;
+use fixedfunc::vocab::{
+    DepthBits, MapFilter, PlanarMode, PolygonOffset, Precision, Projector, ReadbackRule,
 };
 
 /// `--map-size`, `--depth-bits`, `--offset`, `--precision`, `--filter`.
@@ -15,29 +15,29 @@ pub struct ShadowArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=8192))]
     pub map_size: Option<u32>,
     /// Depth buffer of the light pass (default: the scene's `depth_bits`).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = super::named::named::<DepthBits>())]
     pub depth_bits: Option<DepthBits>,
     /// glPolygonOffset(FACTOR, UNITS) for the light pass, as FACTOR,UNITS; `none` for no
     /// offset (default: the scene's `polygon_offset`).
     #[arg(long, value_name = "FACTOR,UNITS", value_parser = parse_offset)]
     pub offset: Option<OffsetArg>,
     /// Arithmetic of the emulated texture and combiner stages (default: the scene's).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = super::named::named::<Precision>())]
     pub precision: Option<Precision>,
     /// Shadow map filter (default: the scene's `filter`).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = super::named::named::<MapFilter>())]
     pub filter: Option<MapFilter>,
     /// How integer depth maps are read back: the driver's conversion, or FLOAT converted
     /// on the CPU by truncation or rounding (default: the scene's `readback`).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = super::named::named::<ReadbackRule>())]
     pub readback: Option<ReadbackRule>,
     /// How `planar` keeps its shadow off the receiver's depth: polygon offset or stencil
     /// alone (default: the scene's `planar_mode`).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = super::named::named::<PlanarMode>())]
     pub planar_mode: Option<PlanarMode>,
     /// `projective`'s projector: the light's perspective frustum, or the pseudo-depth
     /// projection that clips false shadows (default: the scene's `projector`).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = super::named::named::<Projector>())]
     pub projector: Option<Projector>,
 }
 

@@ -1,12 +1,12 @@
 //! `fixedfunc sweep-bias`: a polygon-offset grid for one technique per depth format, scored
 //! against one truth; prints each format's best cell and writes heatmaps, CSV and JSON.
 
+use fixedfunc::vocab::{DepthBits, MapFilter, Precision};
 use std::path::PathBuf;
 
-use fixedfunc::gpu::{Backend, DepthBits};
+use fixedfunc::gpu::Backend;
 use fixedfunc::render::ImageSize;
 use fixedfunc::report;
-use fixedfunc::scene::{MapFilter, Precision};
 use fixedfunc::study::{self, SweepRange, SweepSpec};
 use fixedfunc::techniques;
 
@@ -37,14 +37,14 @@ pub struct Args {
     #[arg(long, value_name = "A..B[:STEPS]", value_parser = parse_range, allow_hyphen_values = true)]
     pub units: SweepRange,
     /// Depth formats of the light pass, comma-separated; one heatmap each.
-    #[arg(long, value_enum, value_delimiter = ',', default_values = ["16", "24", "32f"])]
+    #[arg(long, value_parser = super::named::named::<DepthBits>(), value_delimiter = ',', default_values = ["16", "24", "32f"])]
     pub depth_bits: Vec<DepthBits>,
     /// The folder the heatmaps, CSV and JSON are written to (created when missing).
     #[arg(long, default_value = "sweep-bias")]
     pub out: PathBuf,
     #[arg(long, value_enum, default_value_t = PipelineChoice::Emulate)]
     pub pipeline: PipelineChoice,
-    #[arg(long, value_enum, default_value_t = Backend::Egl)]
+    #[arg(long, value_parser = super::named::named::<Backend>(), default_value = "egl")]
     pub backend: Backend,
     /// Image size WxH (default: the scene's).
     #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]
@@ -53,10 +53,10 @@ pub struct Args {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=8192))]
     pub map_size: Option<u32>,
     /// Arithmetic of the emulated texture and combiner stages (default: the scene's).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = super::named::named::<Precision>())]
     pub precision: Option<Precision>,
     /// Shadow map filter (default: the scene's `filter`).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = super::named::named::<MapFilter>())]
     pub filter: Option<MapFilter>,
 }
 

@@ -191,7 +191,7 @@ impl FixedState {
             }
             Command::ColorMask(m) => self.color_mask = *m,
             Command::PolygonOffset { factor, units } => {
-                self.polygon_offset = super::fragment::PolygonOffset {
+                self.polygon_offset = crate::vocab::PolygonOffset {
                     factor: *factor,
                     units: *units,
                 }

@@ -12,8 +12,9 @@ use super::combiners::{
     output, CombinerInput, ComponentUsage, Product, Register, RegisterCombiners, StagePortion,
     SumOrMux,
 };
-use super::precision::{quantise, quantise9, Precision};
+use super::precision::{quantise, quantise9};
 use super::state::MAX_TEXTURE_UNITS;
+use crate::vocab::Precision;
 
 /// Fixed8: q9 after every mapping, product and output (ff::precision); Float: identity.
 fn q(p: Precision, v: f32) -> f32 {

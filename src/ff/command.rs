@@ -12,6 +12,8 @@ use std::sync::Arc;
 
 use glam::{Mat4, Vec3, Vec4};
 
+use crate::vocab::DepthRule;
+
 use super::combiners::{
     CombinerInput, CombinerOutput, CombinerParam, FinalVariable, Portion, Variable,
 };
@@ -89,17 +91,8 @@ pub enum TexData {
     ConvertedDepth {
         slot: u32,
         ty: PixelType,
-        rule: DepthConversion,
+        rule: DepthRule,
     },
-}
-
-/// The CPU's float-to-integer depth rules (z clamped to [0, 1], M = 2ⁿ − 1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum DepthConversion {
-    /// ⌊z·M⌋.
-    Truncate,
-    /// ⌊z·M + ½⌋.
-    Round,
 }
 
 impl TexData {

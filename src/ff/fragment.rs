@@ -204,14 +204,6 @@ impl ColorMask {
     };
 }
 
-/// glPolygonOffset: o = m·factor + r·units, m = max(|∂z/∂x|, |∂z/∂y|) on llvmpipe (the spec
-/// allows up to the Euclidean norm), r the minimum resolvable difference. GL default: 0, 0.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PolygonOffset {
-    pub factor: f32,
-    pub units: f32,
-}
-
 /// Which rasterisation modes get the offset (POLYGON_OFFSET_FILL/LINE/POINT). GL default: none.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct OffsetEnables {

@@ -14,6 +14,7 @@
 //! set (GL 1.5 §2.11.4, §2.14.1), never at draw time. Depth readback conversions belong to
 //! the `gpu` layer.
 
+pub mod api;
 pub mod apply;
 pub mod combiner_model;
 pub mod combiners;
@@ -21,6 +22,7 @@ pub mod command;
 pub mod error;
 pub mod fragment;
 pub mod geometry;
+pub mod glenum;
 pub mod light;
 pub mod matrix;
 pub mod precision;
@@ -38,14 +40,12 @@ pub use combiners::{
     FinalVariable, GeneralStage, Mapping, Portion, Product, Register, RegisterCombiners,
     StagePortion, SumOrMux, Variable, MAX_GENERAL_COMBINERS,
 };
-pub use command::{
-    Capability, Command, CopyTexImage, DepthConversion, ReadPixels, TexData, TexImage, TexSubImage,
-};
+pub use command::{Capability, Command, CopyTexImage, ReadPixels, TexData, TexImage, TexSubImage};
 pub use error::{GlError, GlErrorKind, GlResult};
 pub use fragment::{
     AlphaTest, Blend, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc, DepthRange,
-    DepthTest, Face, FrontFace, OffsetEnables, PolygonMode, PolygonOffset, ShadeModel, StencilOp,
-    StencilTest, Toggle, Viewport,
+    DepthTest, Face, FrontFace, OffsetEnables, PolygonMode, ShadeModel, StencilOp, StencilTest,
+    Toggle, Viewport,
 };
 pub use geometry::{Geometry, Primitive};
 pub use light::{
@@ -53,7 +53,6 @@ pub use light::{
     Material, MaterialParam, Materials, MAX_LIGHTS,
 };
 pub use matrix::{MatrixMode, MatrixStack, ViewVolume};
-pub use precision::Precision;
 pub use state::{CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_TEXTURE_UNITS};
 pub use texenv::{
     Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,

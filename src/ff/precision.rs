@@ -25,20 +25,7 @@
 //! k/255, quantised after each mapping and each output with q9(v) = clamp(⌊255v + ½⌋,
 //! −256, 255); products are ⌊a·b/255 + ½⌋; the −½ bias is −128.
 
-use serde::Deserialize;
-
 use super::texenv::CombineFunc;
-
-/// How the texture and combiner stages compute.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Deserialize, clap::ValueEnum)]
-#[serde(rename_all = "lowercase")]
-pub enum Precision {
-    /// fp32, as Mesa's native fixed-function path does on llvmpipe.
-    #[default]
-    Float,
-    /// 8-bit integer stages, 9-bit signed register combiners.
-    Fixed8,
-}
 
 /// q(v) = ⌊255·clamp(v, 0, 1) + ½⌋.
 pub fn quantise(v: f32) -> u8 {

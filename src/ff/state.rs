@@ -12,7 +12,7 @@ use super::combiners::RegisterCombiners;
 use super::error::GlError;
 use super::fragment::{
     AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace,
-    OffsetEnables, PolygonMode, PolygonOffset, ShadeModel, StencilTest, Toggle, Viewport,
+    OffsetEnables, PolygonMode, ShadeModel, StencilTest, Toggle, Viewport,
 };
 use super::light::{ColorMaterial, Light, LightModel, Materials, MAX_LIGHTS};
 use super::matrix::{
@@ -21,6 +21,7 @@ use super::matrix::{
 use super::texenv::TexEnv;
 use super::texgen::{TexCoord, TexGen};
 use super::texture::{TextureObject, TextureTarget};
+use crate::vocab::PolygonOffset;
 
 /// GL_MAX_TEXTURE_UNITS modelled: texgen, env, matrices and coordinates for 8 units (the
 /// pipelines need at least 4 image units).

@@ -1,6 +1,6 @@
 //! Our gpu-layer enums lowered to GL constants, with exhaustive matches.
 
-use super::DepthBits;
+use crate::vocab::DepthBits;
 
 /// The renderbuffer format and the attachment point of a depth buffer.
 pub fn depth_storage(depth: DepthBits, stencil: bool) -> (u32, u32) {

@@ -2,7 +2,8 @@
 //! library that did not load and the Debian package that provides it, the EGL call and its
 //! error code, the limit a request exceeded.
 
-use super::{Backend, DepthBits};
+use super::Backend;
+use crate::vocab::DepthBits;
 
 /// Everything that can go wrong while creating a context, a target, or reading pixels back.
 #[derive(Debug, thiserror::Error)]

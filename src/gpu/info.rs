@@ -4,7 +4,8 @@
 use glow::HasContext;
 use serde::Serialize;
 
-use super::{Backend, DepthBits, GpuContext, GpuError, Profile, RenderTarget, TargetSpec};
+use super::{Backend, GpuContext, GpuError, Profile, RenderTarget, TargetSpec};
+use crate::vocab::DepthBits;
 
 /// The extensions the classic techniques rely on, and which technique uses each.
 pub const SHADOW_EXTENSIONS: [(&str, &str); 14] = [

@@ -31,22 +31,23 @@ use std::str::FromStr;
 
 use glow::HasContext;
 
+use crate::vocab::Named;
+
 pub use egl::EglPlatform;
 pub use error::GpuError;
 pub use info::{ContextInfo, DepthReport, ExtensionReport, Limits, SHADOW_EXTENSIONS};
-pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8, DepthRule};
-pub use target::{DepthBits, RenderTarget, TargetSpec};
+pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8};
+pub use target::{RenderTarget, TargetSpec};
 pub use trivial::FlatProgram;
 pub use xvfb::VirtualDisplay;
 
 /// Which library provides the context.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Backend {
     /// EGL, surfaceless platform (device platform as a fallback). The default.
     Egl,
     /// OSMesa (`libOSMesa.so.8`; removed from Mesa 25.1).
-    #[value(name = "osmesa")]
     OsMesa,
     /// A glutin window on X11 (needs a display, e.g. Xvfb).
     Window,
@@ -56,10 +57,22 @@ impl Backend {
     pub const ALL: [Backend; 3] = [Backend::Egl, Backend::OsMesa, Backend::Window];
 
     pub fn name(self) -> &'static str {
+        Named::name(self)
+    }
+}
+
+impl Named for Backend {
+    const NAMES: &'static [(&'static str, Self)] = &[
+        ("egl", Backend::Egl),
+        ("osmesa", Backend::OsMesa),
+        ("window", Backend::Window),
+    ];
+
+    fn help(self) -> &'static str {
         match self {
-            Backend::Egl => "egl",
-            Backend::OsMesa => "osmesa",
-            Backend::Window => "window",
+            Backend::Egl => "EGL, surfaceless platform (device platform as a fallback)",
+            Backend::OsMesa => "OSMesa (libOSMesa.so.8; removed from Mesa 25.1)",
+            Backend::Window => "a glutin window on X11 (needs a display, e.g. Xvfb)",
         }
     }
 }
@@ -73,7 +86,7 @@ impl fmt::Display for Backend {
 impl FromStr for Backend {
     type Err = GpuError;
     fn from_str(s: &str) -> Result<Self, GpuError> {
-        Backend::ALL
+        Backend::all()
             .into_iter()
             .find(|b| b.name().eq_ignore_ascii_case(s))
             .ok_or_else(|| GpuError::UnknownBackend {
@@ -84,14 +97,12 @@ impl FromStr for Backend {
 }
 
 /// Which GL profile a context exposes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Profile {
     /// OpenGL 3.3 core: no fixed function; the emulated pipeline runs here.
-    #[value(name = "core")]
     Core33,
     /// The highest compatibility profile the driver offers: Mesa's fixed-function path.
-    #[value(name = "compat")]
     Compatibility,
 }
 

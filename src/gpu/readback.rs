@@ -1,4 +1,4 @@
-//! Depth readback conversions, owned and named.
+//! Depth readback conversions, owned and named (the rules: `vocab::DepthRule`).
 //!
 //! A depth value z ∈ [0, 1] becomes an n-bit unsigned integer by one of two rules, with
 //! M = 2^n − 1 and z clamped to [0, 1] first:
@@ -6,43 +6,19 @@
 //!   z = 0.25 → 63, z = 0.5 → 127, z = 128.5/255 → 128.
 //! - `DepthRule::Round`: ⌊z·M + ½⌋ (round half up). Mesa does (almost) this for
 //!   GL_UNSIGNED_SHORT: z = 0.25 → 16384, z = 0.5 → 32768.
-//! - `DepthRule::Driver`: glReadPixels with the integer type; whatever the driver does.
+//!
+//! The driver's own conversion (`ReadbackRule::Driver`) is not a rule here: it is read
+//! from GL (`RenderTarget::read_depth_*`), never imitated on the CPU.
 //!
 //! The products are taken in f64, so z·M is exact for every f32 z and M < 2^32.
 
-use serde::{Deserialize, Serialize};
-
-/// How a depth value in [0, 1] becomes an integer on readback.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, clap::ValueEnum)]
-#[serde(rename_all = "lowercase")]
-pub enum DepthRule {
-    /// ⌊z·(2^n − 1)⌋.
-    Truncate,
-    /// ⌊z·(2^n − 1) + ½⌋.
-    Round,
-    /// The driver's own conversion (glReadPixels with the integer type).
-    Driver,
-}
-
-impl DepthRule {
-    /// The rule Mesa's native path follows for an n-bit readback (measured on llvmpipe):
-    /// truncation for bytes, rounding for shorts and ints.
-    pub fn mesa_native(bits: u32) -> DepthRule {
-        if bits <= 8 {
-            DepthRule::Truncate
-        } else {
-            DepthRule::Round
-        }
-    }
-}
+use crate::vocab::DepthRule;
 
 fn convert(z: f32, max: f64, rule: DepthRule) -> f64 {
     let scaled = f64::from(z.clamp(0.0, 1.0)) * max;
     match rule {
         DepthRule::Truncate => scaled.floor(),
-        // Driver is not computable on the CPU; callers read from GL instead. Round is the
-        // closest documented stand-in.
-        DepthRule::Round | DepthRule::Driver => (scaled + 0.5).floor(),
+        DepthRule::Round => (scaled + 0.5).floor(),
     }
     .min(max)
 }

@@ -7,42 +7,10 @@
 //! (`GL_FRAMEBUFFER_ATTACHMENT_{DEPTH,STENCIL}_SIZE`) and reported, never assumed.
 
 use glow::HasContext;
-use serde::Serialize;
 
-use super::readback::{depth_to_u16, depth_to_u32, depth_to_u8, DepthRule};
+use super::readback::{depth_to_u16, depth_to_u32, depth_to_u8};
 use super::{conv, GpuContext, GpuError};
-
-/// The depth buffer format of a target (and of a light's shadow-map pass).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, clap::ValueEnum)]
-pub enum DepthBits {
-    /// 16-bit unsigned normalised; no stencil.
-    #[value(name = "16")]
-    D16,
-    /// 24-bit unsigned normalised, always packed with 8 stencil bits (DEPTH24_STENCIL8).
-    #[value(name = "24")]
-    D24,
-    /// 32-bit float; packed with 8 stencil bits (DEPTH32F_STENCIL8) when stencil is asked for.
-    #[value(name = "32f")]
-    D32F,
-}
-
-impl DepthBits {
-    pub const ALL: [DepthBits; 3] = [DepthBits::D16, DepthBits::D24, DepthBits::D32F];
-
-    /// The number of depth bits the format names.
-    pub fn bits(self) -> u32 {
-        match self {
-            DepthBits::D16 => 16,
-            DepthBits::D24 => 24,
-            DepthBits::D32F => 32,
-        }
-    }
-
-    /// Whether the format stores depth as a float.
-    pub fn is_float(self) -> bool {
-        matches!(self, DepthBits::D32F)
-    }
-}
+use crate::vocab::{DepthBits, ReadbackRule};
 
 /// Size and buffers of a target.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -235,15 +203,15 @@ impl RenderTarget {
             .collect())
     }
 
-    /// Depth as u8, bottom row first, converted by `rule` (see [`DepthRule`]).
-    pub fn read_depth_u8(&self, ctx: &GpuContext, rule: DepthRule) -> Result<Vec<u8>, GpuError> {
+    /// Depth as u8, bottom row first, converted by `rule` (see [`ReadbackRule`]).
+    pub fn read_depth_u8(&self, ctx: &GpuContext, rule: ReadbackRule) -> Result<Vec<u8>, GpuError> {
         match rule {
-            DepthRule::Driver => {
+            ReadbackRule::Driver => {
                 let mut data = vec![0u8; self.pixel_count()];
                 self.read(ctx, glow::DEPTH_COMPONENT, glow::UNSIGNED_BYTE, &mut data)?;
                 Ok(data)
             }
-            _ => Ok(self
+            ReadbackRule::Cpu(rule) => Ok(self
                 .read_depth_f32(ctx)?
                 .into_iter()
                 .map(|z| depth_to_u8(z, rule))
@@ -252,9 +220,13 @@ impl RenderTarget {
     }
 
     /// Depth as u16, bottom row first, converted by `rule`.
-    pub fn read_depth_u16(&self, ctx: &GpuContext, rule: DepthRule) -> Result<Vec<u16>, GpuError> {
+    pub fn read_depth_u16(
+        &self,
+        ctx: &GpuContext,
+        rule: ReadbackRule,
+    ) -> Result<Vec<u16>, GpuError> {
         match rule {
-            DepthRule::Driver => {
+            ReadbackRule::Driver => {
                 let mut bytes = vec![0u8; self.pixel_count() * 2];
                 self.read(ctx, glow::DEPTH_COMPONENT, glow::UNSIGNED_SHORT, &mut bytes)?;
                 Ok(bytes
@@ -262,7 +234,7 @@ impl RenderTarget {
                     .map(|b| u16::from_ne_bytes([b[0], b[1]]))
                     .collect())
             }
-            _ => Ok(self
+            ReadbackRule::Cpu(rule) => Ok(self
                 .read_depth_f32(ctx)?
                 .into_iter()
                 .map(|z| depth_to_u16(z, rule))
@@ -271,9 +243,13 @@ impl RenderTarget {
     }
 
     /// Depth as u32, bottom row first, converted by `rule`.
-    pub fn read_depth_u32(&self, ctx: &GpuContext, rule: DepthRule) -> Result<Vec<u32>, GpuError> {
+    pub fn read_depth_u32(
+        &self,
+        ctx: &GpuContext,
+        rule: ReadbackRule,
+    ) -> Result<Vec<u32>, GpuError> {
         match rule {
-            DepthRule::Driver => {
+            ReadbackRule::Driver => {
                 let mut bytes = vec![0u8; self.pixel_count() * 4];
                 self.read(ctx, glow::DEPTH_COMPONENT, glow::UNSIGNED_INT, &mut bytes)?;
                 Ok(bytes
@@ -281,7 +257,7 @@ impl RenderTarget {
                     .map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
                     .collect())
             }
-            _ => Ok(self
+            ReadbackRule::Cpu(rule) => Ok(self
                 .read_depth_f32(ctx)?
                 .into_iter()
                 .map(|z| depth_to_u32(z, rule))

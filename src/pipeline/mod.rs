@@ -7,6 +7,7 @@
 //! `gpu::RenderTarget`), keep the bytes of each `ReadPixels` in its slot, and count what
 //! they did (`Counters`): the figures `render` and `bench` report.
 
+pub mod core;
 pub mod emulate;
 pub mod error;
 pub mod native;
@@ -16,35 +17,22 @@ use std::collections::HashMap;
 
 use serde::Serialize;
 
-use crate::ff::{
-    Command, DepthConversion, FixedState, GlError, PixelFormat, PixelType, TexData, TexImage,
-};
+use crate::ff::{Command, FixedState, GlError, PixelFormat, PixelType, TexData, TexImage};
 use crate::gpu::GpuContext;
-use crate::gpu::{depth_to_u16, depth_to_u8, DepthRule};
+use crate::gpu::{depth_to_u16, depth_to_u8};
+use crate::vocab::{DepthRule, PipelineKind};
 
 pub use error::{PipelineError, ShaderError, ShaderStage};
 
-/// Which path executes the Commands.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, clap::ValueEnum)]
-#[serde(rename_all = "lowercase")]
-pub enum PipelineKind {
-    /// Generated GLSL on a core 3.3 context.
-    Emulate,
-    /// Mesa's own fixed-function path on a compatibility context.
-    Native,
-}
-
-impl PipelineKind {
-    /// The context profile the path needs.
-    pub fn profile(self) -> crate::gpu::Profile {
-        match self {
-            PipelineKind::Emulate => crate::gpu::Profile::Core33,
-            PipelineKind::Native => crate::gpu::Profile::Compatibility,
-        }
+/// The context profile a path needs.
+pub fn profile(kind: PipelineKind) -> crate::gpu::Profile {
+    match kind {
+        PipelineKind::Emulate => crate::gpu::Profile::Core33,
+        PipelineKind::Native => crate::gpu::Profile::Compatibility,
     }
 }
 
-/// Creates the pipeline of `kind` on `ctx` (whose profile must be `kind.profile()`).
+/// Creates the pipeline of `kind` on `ctx` (whose profile must be `profile(kind)`).
 pub fn create(kind: PipelineKind, ctx: &GpuContext) -> Result<Box<dyn Pipeline>, PipelineError> {
     match kind {
         PipelineKind::Emulate => Ok(Box::new(emulate::EmulatedPipeline::new(ctx)?)),
@@ -57,7 +45,7 @@ pub fn create(kind: PipelineKind, ctx: &GpuContext) -> Result<Box<dyn Pipeline>,
 pub fn create_with(
     kind: PipelineKind,
     ctx: &GpuContext,
-    precision: crate::ff::Precision,
+    precision: crate::vocab::Precision,
 ) -> Result<Box<dyn Pipeline>, PipelineError> {
     match kind {
         PipelineKind::Emulate => Ok(Box::new(
@@ -122,14 +110,10 @@ pub(crate) fn resolve_readback<'c>(
 /// FLOAT depth bytes → one `ty` per value by `rule` (`gpu::readback`'s conversions, which
 /// state and test the boundaries); `None` when the readback is not FLOAT depth or `ty` is
 /// neither UNSIGNED_BYTE nor UNSIGNED_SHORT.
-pub fn convert_depth(r: &Readback, ty: PixelType, rule: DepthConversion) -> Option<Vec<u8>> {
+pub fn convert_depth(r: &Readback, ty: PixelType, rule: DepthRule) -> Option<Vec<u8>> {
     if (r.format, r.ty) != (PixelFormat::DepthComponent, PixelType::Float) {
         return None;
     }
-    let rule = match rule {
-        DepthConversion::Truncate => DepthRule::Truncate,
-        DepthConversion::Round => DepthRule::Round,
-    };
     let depths = r
         .bytes
         .chunks_exact(4)

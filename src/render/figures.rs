@@ -6,10 +6,10 @@
 //!
 //! Error % = 100 · (false + missed + coverage) / truth geometry pixels (see `metrics`).
 
+use crate::vocab::PipelineKind;
 use std::fmt;
 
 use crate::gpu::Backend;
-use crate::pipeline::PipelineKind;
 
 use super::{pipeline_name, FrameTimings};
 

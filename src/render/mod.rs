@@ -33,18 +33,19 @@ mod size;
 pub use figures::Figures;
 pub use size::{ImageSize, SizeProblem, MAX_IMAGE_SIZE};
 
+use crate::vocab::{PipelineKind, Precision};
 use std::time::Instant;
 
 use image::RgbaImage;
 
 use crate::bench::Summary;
+use crate::ff::Command;
 use crate::ff::GlError;
-use crate::ff::{Command, Precision};
 use crate::gpu::{
     Backend, ContextRequest, GpuContext, GpuError, RenderTarget, TargetSpec, VirtualDisplay,
 };
 use crate::metrics::{self, Mask, Metrics, MetricsError};
-use crate::pipeline::{Counters, Pipeline, PipelineError, PipelineKind};
+use crate::pipeline::{Counters, Pipeline, PipelineError};
 use crate::scene::{Scene, ShadowSettings};
 use crate::techniques::{self, MapImageSource, Plan, Prepared, TechniqueError};
 use crate::truth::{self, Truth, TruthError, TruthOptions};
@@ -393,7 +394,7 @@ impl Session {
         };
         let ctx = GpuContext::new(&ContextRequest::new(
             options.backend,
-            options.pipeline.profile(),
+            crate::pipeline::profile(options.pipeline),
         ))?;
         let mut spec = TargetSpec::new(fb.width, fb.height, fb.depth);
         if fb.stencil {

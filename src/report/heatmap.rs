@@ -6,6 +6,7 @@
 //! grids of at most 12 × 12 also print each value. The best cell is outlined in every
 //! panel.
 
+use crate::vocab::DepthBits;
 use std::path::Path;
 
 use image::RgbImage;
@@ -13,7 +14,6 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use crate::gpu::DepthBits;
 use crate::render::pipeline_name;
 use crate::study::{Cell, Surface, SurfaceResult, Sweep};
 

@@ -4,13 +4,13 @@
 //! below and left of which no measured row lies. Time starts at 0 so that distances
 //! read as ratios on the time axis; the error axis is logarithmic. Drawn once for SVG and once for PNG by the same function.
 
+use crate::vocab::PipelineKind;
 use std::path::Path;
 
 use image::RgbImage;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use crate::pipeline::PipelineKind;
 use crate::render::pipeline_name;
 
 use super::{font, ReportError, ResultRow};

@@ -4,10 +4,10 @@
 //! least as fast and at least as accurate and strictly better in one of the two. The time
 //! is the typical frame (steady median; the cold frame when it is the only one).
 
+use crate::vocab::PipelineKind;
 use serde::Serialize;
 
 use crate::gpu::Backend;
-use crate::pipeline::PipelineKind;
 use crate::render::RenderOutcome;
 use crate::study::{Row, RowResult};
 

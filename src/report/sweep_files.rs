@@ -16,8 +16,8 @@ use super::{ensure_dir, write_png, write_text, ReportError, Written};
 
 /// Stem of a surface's heatmap files.
 pub fn heatmap_stem(
-    pipeline: crate::pipeline::PipelineKind,
-    depth: crate::gpu::DepthBits,
+    pipeline: crate::vocab::PipelineKind,
+    depth: crate::vocab::DepthBits,
 ) -> String {
     format!("heatmap-{}-{}", pipeline_name(pipeline), depth_arg(depth))
 }

@@ -124,7 +124,6 @@ pub fn phase_lines(c: &Comparison) -> String {
 mod tests {
     use super::*;
     use crate::gpu::Backend;
-    use crate::pipeline::PipelineKind;
 
     #[test]
     fn skipped_rows_say_why_and_columns_align() {
@@ -152,7 +151,7 @@ mod tests {
         let row = |t: &'static str, m: Option<super::super::Measured>| ResultRow {
             technique: t,
             summary: "",
-            pipeline: PipelineKind::Native,
+            pipeline: crate::vocab::PipelineKind::Native,
             backend: Backend::Egl,
             pareto: m.is_some(),
             skipped: m

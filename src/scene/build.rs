@@ -11,6 +11,7 @@ use super::error::{Problem, SceneError, SceneWarning, WarningKind};
 use super::raw::*;
 use super::types::*;
 use crate::mesh;
+use crate::vocab::{DepthBits, PolygonOffset};
 use glam::Vec3;
 use std::ops::Range;
 use toml::Spanned;

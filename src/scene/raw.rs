@@ -2,7 +2,7 @@
 //! validation may reject wrapped in `Spanned` so its error can name the line.
 //! Values stay optional here; `build` supplies defaults and checks what each kind needs.
 
-use super::types::{MapFilter, PlanarMode, Precision, Projector, ReadbackRule};
+use crate::vocab::{MapFilter, PlanarMode, Precision, Projector, ReadbackRule};
 use serde::Deserialize;
 use toml::Spanned;
 

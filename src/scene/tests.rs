@@ -1,6 +1,7 @@
 //! Table tests of the scene errors: each bad input names its line, key and alternatives.
 
 use super::*;
+use crate::vocab::{DepthBits, PolygonOffset, Precision, ReadbackRule};
 use std::path::Path;
 
 fn parse(text: &str) -> Result<Scene, SceneError> {
@@ -148,7 +149,10 @@ fn shadow_table_values() {
     );
     assert_eq!(
         (s.precision, s.readback),
-        (Precision::Fixed8, ReadbackRule::Round)
+        (
+            Precision::Fixed8,
+            ReadbackRule::Cpu(crate::vocab::DepthRule::Round)
+        )
     );
     assert_eq!(
         parse("[shadow]\ndepth_bits = 16\n")

@@ -1,8 +1,9 @@
 //! The validated scene: every number finite and in range, every mesh loaded.
 
-pub use crate::ff::Precision;
-pub use crate::gpu::{DepthBits, DepthRule as ReadbackRule};
 use crate::mesh::{self, Mesh};
+use crate::vocab::{
+    DepthBits, MapFilter, PlanarMode, PolygonOffset, Precision, Projector, ReadbackRule,
+};
 use glam::{Mat4, Vec3};
 
 use std::path::PathBuf;
@@ -258,88 +259,6 @@ impl Object {
     pub fn world_mesh(&self) -> Mesh {
         self.mesh.transformed(&self.transform.matrix())
     }
-}
-
-/// glPolygonOffset(factor, units) for the light pass.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PolygonOffset {
-    pub factor: f32,
-    pub units: f32,
-}
-
-/// How a shadow map is sampled (GL_TEXTURE_MIN/MAG_FILTER of the map).
-#[derive(
-    Clone,
-    Copy,
-    Debug,
-    Default,
-    PartialEq,
-    Eq,
-    Hash,
-    serde::Deserialize,
-    serde::Serialize,
-    clap::ValueEnum,
-)]
-#[serde(rename_all = "lowercase")]
-pub enum MapFilter {
-    /// One texel per lookup: hard, blocky edges.
-    #[default]
-    Nearest,
-    /// LINEAR: on a depth texture with compare on, the era's hardware percentage-closer
-    /// filter (four compares blended bilinearly); on an 8-bit map, interpolated depths.
-    Linear,
-}
-
-/// How planar projection shadows keep off the receiver's depth (`[shadow] planar_mode`).
-#[derive(
-    Clone,
-    Copy,
-    Debug,
-    Default,
-    PartialEq,
-    Eq,
-    Hash,
-    serde::Deserialize,
-    serde::Serialize,
-    clap::ValueEnum,
-)]
-#[serde(rename_all = "lowercase")]
-pub enum PlanarMode {
-    /// Dinoshade's way: the projected shadow is depth-tested, pulled towards the eye by
-    /// glPolygonOffset so it wins against the coplanar receiver; the stencil marks
-    /// receivers and stops a second blend.
-    #[default]
-    Offset,
-    /// Stencil alone: every object writes its receiver number (0 for the rest) where it is
-    /// visible, and the shadow is drawn with the depth test off where the number matches —
-    /// the shadow lies in the receiver's plane, so the visible receiver is the right depth.
-    Stencil,
-}
-
-/// What the slide projector projects from (`[shadow] projector`).
-#[derive(
-    Clone,
-    Copy,
-    Debug,
-    Default,
-    PartialEq,
-    Eq,
-    Hash,
-    serde::Deserialize,
-    serde::Serialize,
-    clap::ValueEnum,
-)]
-#[serde(rename_all = "kebab-case")]
-pub enum Projector {
-    /// The light's own frustum (its `fovy`, `near`, `far`): casters below the receivers'
-    /// plane still cast.
-    Perspective,
-    /// The lecture notes' construction: the casters flattened onto the largest flat
-    /// receiver by the shadow matrix, with the pseudo-depth s = (p·l)/(p·l − p·x) kept in
-    /// [1, ∞) by an orthographic near 1, far "at infinity": casters below that plane or
-    /// beyond the light are clipped away.
-    #[default]
-    PseudoDepth,
 }
 
 /// The `[shadow]` table.

@@ -5,10 +5,10 @@
 //! each session's `finish` with the shared truth. A session that turns out not to apply
 //! (see [`super::not_applicable`]) at setup or at a frame is dropped and its row says why.
 
+use crate::vocab::PipelineKind;
 use std::time::Instant;
 
 use crate::gpu::Backend;
-use crate::pipeline::PipelineKind;
 use crate::render::{self, pipeline_name, ImageSize, RenderOptions, RenderOutcome, Session};
 use crate::scene::Scene;
 use crate::techniques::Technique;

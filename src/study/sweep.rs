@@ -6,13 +6,13 @@
 //! surface is the one with the fewest wrong pixels; ties go to fewer wrong pixels outside
 //! the edge band, then to the first in grid order (units-major, as the heatmap's rows).
 
+use crate::vocab::{DepthBits, PipelineKind, PolygonOffset};
 use std::time::Instant;
 
-use crate::gpu::{Backend, DepthBits};
+use crate::gpu::Backend;
 use crate::metrics::{self, Metrics};
-use crate::pipeline::PipelineKind;
 use crate::render::{self, pipeline_name, ImageSize, RenderError, RenderOptions, Session};
-use crate::scene::{PolygonOffset, Scene, ShadowSettings};
+use crate::scene::{Scene, ShadowSettings};
 use crate::techniques::Technique;
 use crate::truth::{self, Truth};
 

@@ -8,16 +8,16 @@
 //! not cover. The era's programs often left CLAMP and got streaks; the border is the
 //! documented fix of the time (GL 1.3) and keeps the comparison about precision and bias.
 
+use crate::vocab::{DepthBits, DepthRule, MapFilter, PolygonOffset, ReadbackRule};
 use std::sync::Arc;
 
 use glam::Vec4;
 
 use crate::ff::{
-    Command, DepthConversion, Filter, PixelFormat, PixelType, TexData, TexFormat, TexImage,
-    TexParam, TextureTarget, Wrap,
+    Command, Filter, PixelFormat, PixelType, TexData, TexFormat, TexImage, TexParam, TextureTarget,
+    Wrap,
 };
-use crate::gpu::DepthBits;
-use crate::scene::{MapFilter, PolygonOffset, ReadbackRule, Scene};
+use crate::scene::Scene;
 
 use super::{FramebufferNeeds, TechniqueError};
 
@@ -177,7 +177,7 @@ impl DepthTransfer {
     pub fn read(&self, size: u32) -> Command {
         let ty = match self.rule {
             ReadbackRule::Driver => self.ty,
-            ReadbackRule::Truncate | ReadbackRule::Round => PixelType::Float,
+            ReadbackRule::Cpu(_) => PixelType::Float,
         };
         read_map(size, PixelFormat::DepthComponent, ty)
     }
@@ -186,24 +186,19 @@ impl DepthTransfer {
     pub fn data(&self) -> TexData {
         match self.rule {
             ReadbackRule::Driver => TexData::Readback(MAP_SLOT),
-            ReadbackRule::Truncate => TexData::ConvertedDepth {
+            ReadbackRule::Cpu(rule) => TexData::ConvertedDepth {
                 slot: MAP_SLOT,
                 ty: self.ty,
-                rule: DepthConversion::Truncate,
-            },
-            ReadbackRule::Round => TexData::ConvertedDepth {
-                slot: MAP_SLOT,
-                ty: self.ty,
-                rule: DepthConversion::Round,
+                rule,
             },
         }
     }
 
     /// The CPU rule, when the program converts.
-    pub fn conversion(&self) -> Option<DepthConversion> {
-        match self.data() {
-            TexData::ConvertedDepth { rule, .. } => Some(rule),
-            _ => None,
+    pub fn conversion(&self) -> Option<DepthRule> {
+        match self.rule {
+            ReadbackRule::Cpu(rule) => Some(rule),
+            ReadbackRule::Driver => None,
         }
     }
 }

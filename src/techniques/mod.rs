@@ -33,10 +33,10 @@ pub mod planar;
 pub mod plane;
 pub mod projective;
 
+use crate::vocab::DepthBits;
 use std::sync::Arc;
 
 use crate::ff::{Command, Geometry, PixelFormat, PixelType, MAX_LIGHTS};
-use crate::gpu::DepthBits;
 use crate::metrics::{Mask, BACKGROUND, LIT, SHADOWED};
 use crate::pipeline::Readback;
 use crate::scene::{self, Scene};
@@ -247,7 +247,7 @@ pub enum MapImageSource {
     Bytes {
         slot: u32,
         size: u32,
-        from_float: Option<crate::ff::DepthConversion>,
+        from_float: Option<crate::vocab::DepthRule>,
     },
     /// Depth as UNSIGNED_SHORT: the big digit (high byte) grey, the little digit (low byte)
     /// pseudo-coloured, as on Kilgard's slide of where the information is. With
@@ -255,7 +255,7 @@ pub enum MapImageSource {
     Digits {
         slot: u32,
         size: u32,
-        from_float: Option<crate::ff::DepthConversion>,
+        from_float: Option<crate::vocab::DepthRule>,
     },
 }
 

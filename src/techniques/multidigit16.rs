@@ -105,8 +105,8 @@ pub fn digit_plan(
 /// A LINEAR filter would blend digits into meaningless numbers: digit maps are NEAREST.
 pub fn filter_note(map: &MapSettings) -> Vec<String> {
     match map.filter {
-        crate::scene::MapFilter::Nearest => Vec::new(),
-        crate::scene::MapFilter::Linear => vec![
+        crate::vocab::MapFilter::Nearest => Vec::new(),
+        crate::vocab::MapFilter::Linear => vec![
             "the digit map is sampled NEAREST: interpolating two 8-bit digits separately \
              does not interpolate the 16-bit depth"
                 .to_string(),

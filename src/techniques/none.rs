@@ -25,13 +25,13 @@
 //! buffer read back as FLOAT after the last frame (no extra pass), 255 where z < 1, 128 where
 //! the clear value 1 survived (see [`super::MaskSource::DepthCoverage`]).
 
+use crate::vocab::DepthBits;
 use glam::{Vec3, Vec4};
 
 use crate::ff::{
     Capability, Command, LightModelParam, LightParam, MatrixMode, PixelFormat, PixelType,
     ReadPixels, ViewVolume,
 };
-use crate::gpu::DepthBits;
 use crate::scene::{Camera, Light, LightKind, Projection, Scene};
 
 use super::parts::Paint;

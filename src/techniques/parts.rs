@@ -21,13 +21,14 @@
 //! Kilgard's "no need for the texture matrix". P_light is the matrix glFrustum/glOrtho build
 //! from the light's volume (`ff::matrix`), the same numbers the light pass loads.
 
+use crate::vocab::PolygonOffset;
 use glam::{Mat4, Vec3, Vec4};
 
 use crate::ff::{
     self, Capability, ClearMask, ColorMask, Command, CompareFunc, Face, LightModelParam,
     MaterialParam, TexCoord, TexGenMode, TexGenParam, Viewport,
 };
-use crate::scene::{Light, Object, PolygonOffset, Scene};
+use crate::scene::{Light, Object, Scene};
 
 use super::none::{camera, GLOBAL_AMBIENT};
 use super::{Pass, Prepared, TechniqueError, MASK_BACKGROUND};

@@ -51,12 +51,13 @@
 //! Curved objects are never shadowed by this technique, so it should be judged on its flat
 //! receivers' pixels.
 
+use crate::vocab::PlanarMode;
 use std::sync::Arc;
 
 use glam::{Mat4, Vec4};
 
 use crate::ff::{BlendFactor, Capability, Command, CompareFunc, Geometry, Primitive, StencilOp};
-use crate::scene::{PlanarMode, Scene};
+use crate::scene::Scene;
 
 use super::map::MapSettings;
 use super::parts::{eye_start, lighting, objects, reset, LightSet, Look, Paint, ShadowLight};

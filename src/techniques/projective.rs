@@ -39,10 +39,11 @@
 //! name those objects (the render line prints them). Fragments behind the projector
 //! (q ≤ 0) read the silhouette mirrored; the notes name receivers reaching there.
 
+use crate::vocab::Projector;
 use glam::{Mat4, Vec3, Vec4};
 
 use crate::ff::{Command, CopyTexImage, PixelFormat, PixelType, TexFormat, ViewVolume};
-use crate::scene::{Projector, Scene};
+use crate::scene::Scene;
 
 use super::map::{bind_map, map_parameters, read_corner, MapSettings, MAP_IMAGE_SLOT};
 use super::parts::{map_pass_start, objects, Look, Paint, ShadowLight, BIAS};

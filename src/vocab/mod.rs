@@ -5,8 +5,12 @@
 //! scene reader both read the names through [`Named`], so the spelling a user types lives
 //! next to the value it means and nowhere else.
 
+mod depth;
+mod settings;
 mod technique;
 
+pub use depth::{DepthBits, DepthRule, ReadbackRule};
+pub use settings::{MapFilter, PipelineKind, PlanarMode, PolygonOffset, Precision, Projector};
 pub use technique::TechniqueId;
 
 /// A value with user-facing names: the first name of a value is the one printed, later
@@ -14,6 +18,11 @@ pub use technique::TechniqueId;
 pub trait Named: Copy + PartialEq + Sized + 'static {
     /// Every value with its name, in the order help texts list them.
     const NAMES: &'static [(&'static str, Self)];
+
+    /// One line on what the value means, for help texts.
+    fn help(self) -> &'static str {
+        ""
+    }
 
     /// The printed name.
     fn name(self) -> &'static str {
@@ -26,7 +35,10 @@ pub trait Named: Copy + PartialEq + Sized + 'static {
 
     /// The value a name means, if any.
     fn from_name(name: &str) -> Option<Self> {
-        Self::NAMES.iter().find(|(n, _)| *n == name).map(|(_, v)| *v)
+        Self::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, v)| *v)
     }
 
     /// Every value once, in order (aliases skipped).
@@ -43,5 +55,47 @@ pub trait Named: Copy + PartialEq + Sized + 'static {
     /// The printed names, in order.
     fn names() -> Vec<&'static str> {
         Self::all().into_iter().map(Self::name).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each spelling a scene file reads (serde) is the name the command line reads (Named).
+    fn serde_agrees<T: Named + serde::de::DeserializeOwned + std::fmt::Debug>() {
+        for v in T::all() {
+            let parsed: T = serde_json::from_str(&format!("\"{}\"", v.name()))
+                .unwrap_or_else(|e| panic!("{} does not deserialize: {e}", v.name()));
+            assert_eq!(parsed, v);
+        }
+    }
+
+    #[test]
+    fn scene_spellings_are_the_named_ones() {
+        serde_agrees::<Precision>();
+        serde_agrees::<MapFilter>();
+        serde_agrees::<PlanarMode>();
+        serde_agrees::<Projector>();
+        serde_agrees::<ReadbackRule>();
+    }
+
+    #[test]
+    fn names_round_trip() {
+        fn check<T: Named + std::fmt::Debug>() {
+            for v in T::all() {
+                assert_eq!(T::from_name(v.name()), Some(v));
+            }
+        }
+        check::<TechniqueId>();
+        check::<PipelineKind>();
+        check::<DepthBits>();
+        check::<ReadbackRule>();
+        check::<Precision>();
+        check::<MapFilter>();
+        check::<PlanarMode>();
+        check::<Projector>();
+        assert_eq!(DepthBits::from_name("32f"), Some(DepthBits::D32F));
+        assert_eq!(TechniqueId::from_name("dual9"), None);
     }
 }

@@ -4,13 +4,14 @@
 //! compare the paths against each other and against piglit's numbers.
 #![allow(dead_code)]
 
+use fixedfunc::vocab::{DepthBits, PipelineKind, Precision};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
-use fixedfunc::ff::{script, Command, Precision};
-use fixedfunc::gpu::{Backend, DepthBits};
+use fixedfunc::ff::{script, Command};
+use fixedfunc::gpu::Backend;
 use fixedfunc::pipeline::emulate::EmulatedPipeline;
-use fixedfunc::pipeline::{self, Pipeline, PipelineKind, Readback};
+use fixedfunc::pipeline::{self, Pipeline, Readback};
 use image::RgbaImage;
 
 use crate::support::{self, Tolerance};
@@ -75,7 +76,7 @@ pub fn run_one(
     frame: Frame,
     commands: &[Command],
 ) -> Output {
-    let ctx = support::context(backend, kind.profile());
+    let ctx = support::context(backend, fixedfunc::pipeline::profile(kind));
     let t = support::target(
         &ctx,
         frame.width,

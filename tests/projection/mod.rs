@@ -2,10 +2,10 @@
 //! and scoring a mask against the truth on one receiver's pixels.
 #![allow(dead_code)]
 
+use fixedfunc::vocab::PipelineKind;
 use std::path::Path;
 
 use fixedfunc::metrics::{edge_band, Class, Mask};
-use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{apply_overrides, render, ImageSize, RenderOptions, RenderOutcome};
 use fixedfunc::scene::{Scene, KNOWN_TECHNIQUES};
 use fixedfunc::truth::{truth, TruthOptions};

@@ -2,11 +2,10 @@
 //! tolerance, and image comparison that leaves `-actual.png` / `-diff.png` on failure.
 #![allow(dead_code)]
 
+use fixedfunc::vocab::DepthBits;
 use std::path::PathBuf;
 
-use fixedfunc::gpu::{
-    Backend, ContextRequest, DepthBits, GpuContext, Profile, RenderTarget, TargetSpec,
-};
+use fixedfunc::gpu::{Backend, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec};
 use glow::HasContext;
 use image::{Rgba, RgbaImage};
 

@@ -4,6 +4,7 @@
 use super::names::Family;
 use super::parse::Call;
 use super::ScriptError;
+use crate::ff::api::Entry;
 use crate::ff::*;
 
 type Res<T> = Result<T, ScriptError>;
@@ -77,25 +78,25 @@ fn capability(c: &Call) -> Res<Capability> {
 /// Matrices, viewport, enables, per-fragment operations, clears and readback.
 pub(super) fn transform_and_fragment(c: &Call) -> Res<Option<Command>> {
     let n = |k: usize| c.count(k);
-    Ok(Some(match c.name {
-        "glMatrixMode" => n(1).and(c.enm(0)).map(Command::MatrixMode)?,
-        "glLoadIdentity" => n(0).map(|_| Command::LoadIdentity)?,
-        "glLoadMatrixf" => n(1).and(c.mat4(0)).map(Command::LoadMatrix)?,
-        "glMultMatrixf" => n(1).and(c.mat4(0)).map(Command::MultMatrix)?,
-        "glPushMatrix" => n(0).map(|_| Command::PushMatrix)?,
-        "glPopMatrix" => n(0).map(|_| Command::PopMatrix)?,
-        "glTranslatef" => n(3).and(c.vec3_args(0)).map(Command::Translate)?,
-        "glScalef" => n(3).and(c.vec3_args(0)).map(Command::Scale)?,
-        "glRotatef" => {
+    Ok(Some(match c.entry {
+        Entry::MatrixMode => n(1).and(c.enm(0)).map(Command::MatrixMode)?,
+        Entry::LoadIdentity => n(0).map(|_| Command::LoadIdentity)?,
+        Entry::LoadMatrixf => n(1).and(c.mat4(0)).map(Command::LoadMatrix)?,
+        Entry::MultMatrixf => n(1).and(c.mat4(0)).map(Command::MultMatrix)?,
+        Entry::PushMatrix => n(0).map(|_| Command::PushMatrix)?,
+        Entry::PopMatrix => n(0).map(|_| Command::PopMatrix)?,
+        Entry::Translatef => n(3).and(c.vec3_args(0)).map(Command::Translate)?,
+        Entry::Scalef => n(3).and(c.vec3_args(0)).map(Command::Scale)?,
+        Entry::Rotatef => {
             n(4)?;
             Command::Rotate {
                 angle_deg: c.f32(0)?,
                 axis: c.vec3_args(1)?,
             }
         }
-        "glFrustum" => Command::Frustum(volume(c)?),
-        "glOrtho" => Command::Ortho(volume(c)?),
-        "glViewport" => {
+        Entry::Frustum => Command::Frustum(volume(c)?),
+        Entry::Ortho => Command::Ortho(volume(c)?),
+        Entry::Viewport => {
             n(4)?;
             Command::Viewport(Viewport {
                 x: c.i32(0)?,
@@ -104,24 +105,24 @@ pub(super) fn transform_and_fragment(c: &Call) -> Res<Option<Command>> {
                 height: c.i32(3)?,
             })
         }
-        "glDepthRange" => n(2).map(|_| ()).and_then(|_| {
+        Entry::DepthRange => n(2).map(|_| ()).and_then(|_| {
             Ok(Command::DepthRange {
                 near: c.f32(0)?,
                 far: c.f32(1)?,
             })
         })?,
-        "glEnable" => n(1).and(capability(c)).map(Command::Enable)?,
-        "glDisable" => n(1).and(capability(c)).map(Command::Disable)?,
-        "glAlphaFunc" => {
+        Entry::Enable => n(1).and(capability(c)).map(Command::Enable)?,
+        Entry::Disable => n(1).and(capability(c)).map(Command::Disable)?,
+        Entry::AlphaFunc => {
             n(2)?;
             Command::AlphaFunc {
                 func: c.enm(0)?,
                 reference: c.f32(1)?,
             }
         }
-        "glDepthFunc" => n(1).and(c.enm(0)).map(Command::DepthFunc)?,
-        "glDepthMask" => n(1).and(c.boolean(0)).map(Command::DepthMask)?,
-        "glStencilFunc" => {
+        Entry::DepthFunc => n(1).and(c.enm(0)).map(Command::DepthFunc)?,
+        Entry::DepthMask => n(1).and(c.boolean(0)).map(Command::DepthMask)?,
+        Entry::StencilFunc => {
             n(3)?;
             Command::StencilFunc {
                 func: c.enm(0)?,
@@ -129,7 +130,7 @@ pub(super) fn transform_and_fragment(c: &Call) -> Res<Option<Command>> {
                 mask: c.u32(2)?,
             }
         }
-        "glStencilOp" => {
+        Entry::StencilOp => {
             n(3)?;
             Command::StencilOp {
                 fail: c.enm(0)?,
@@ -137,15 +138,15 @@ pub(super) fn transform_and_fragment(c: &Call) -> Res<Option<Command>> {
                 depth_pass: c.enm(2)?,
             }
         }
-        "glStencilMask" => n(1).and(c.u32(0)).map(Command::StencilMask)?,
-        "glBlendFunc" => {
+        Entry::StencilMask => n(1).and(c.u32(0)).map(Command::StencilMask)?,
+        Entry::BlendFunc => {
             n(2)?;
             Command::BlendFunc {
                 src: c.enm(0)?,
                 dst: c.enm(1)?,
             }
         }
-        "glColorMask" => {
+        Entry::ColorMask => {
             n(4)?;
             Command::ColorMask(ColorMask {
                 r: c.boolean(0)?,
@@ -154,29 +155,29 @@ pub(super) fn transform_and_fragment(c: &Call) -> Res<Option<Command>> {
                 a: c.boolean(3)?,
             })
         }
-        "glPolygonOffset" => {
+        Entry::PolygonOffset => {
             n(2)?;
             Command::PolygonOffset {
                 factor: c.f32(0)?,
                 units: c.f32(1)?,
             }
         }
-        "glPolygonMode" => {
+        Entry::PolygonMode => {
             n(2)?;
             Command::PolygonMode {
                 face: c.enm(0)?,
                 mode: c.enm(1)?,
             }
         }
-        "glCullFace" => n(1).and(c.enm(0)).map(Command::CullFace)?,
-        "glFrontFace" => n(1).and(c.enm(0)).map(Command::FrontFace)?,
-        "glLineWidth" => n(1).and(c.f32(0)).map(Command::LineWidth)?,
-        "glPointSize" => n(1).and(c.f32(0)).map(Command::PointSize)?,
-        "glClear" => n(1).and(clear_mask(c)).map(Command::Clear)?,
-        "glClearColor" => n(4).and(c.vec4_args(0)).map(Command::ClearColor)?,
-        "glClearDepth" => n(1).and(c.f32(0)).map(Command::ClearDepth)?,
-        "glClearStencil" => n(1).and(c.i32(0)).map(Command::ClearStencil)?,
-        "glReadPixels" => {
+        Entry::CullFace => n(1).and(c.enm(0)).map(Command::CullFace)?,
+        Entry::FrontFace => n(1).and(c.enm(0)).map(Command::FrontFace)?,
+        Entry::LineWidth => n(1).and(c.f32(0)).map(Command::LineWidth)?,
+        Entry::PointSize => n(1).and(c.f32(0)).map(Command::PointSize)?,
+        Entry::Clear => n(1).and(clear_mask(c)).map(Command::Clear)?,
+        Entry::ClearColor => n(4).and(c.vec4_args(0)).map(Command::ClearColor)?,
+        Entry::ClearDepth => n(1).and(c.f32(0)).map(Command::ClearDepth)?,
+        Entry::ClearStencil => n(1).and(c.i32(0)).map(Command::ClearStencil)?,
+        Entry::ReadPixels => {
             n(7)?;
             Command::ReadPixels(ReadPixels {
                 x: c.i32(0)?,
@@ -216,8 +217,8 @@ const MATERIAL_VECTORS: &[&str] = &[
 
 /// Lighting and materials.
 pub(super) fn lighting(c: &Call) -> Res<Option<Command>> {
-    Ok(Some(match c.name {
-        "glLightfv" => {
+    Ok(Some(match c.entry {
+        Entry::Lightfv => {
             c.count(3)?;
             let light = c.family(0, Family::Light)?;
             let param = match c.pname(1, &[LIGHT_VECTORS, LIGHT_SCALARS].concat())? {
@@ -230,7 +231,7 @@ pub(super) fn lighting(c: &Call) -> Res<Option<Command>> {
             };
             Command::Light { light, param }
         }
-        "glLightf" | "glLighti" => {
+        Entry::Lightf | Entry::Lighti => {
             c.count(3)?;
             let light = c.family(0, Family::Light)?;
             Command::Light {
@@ -238,12 +239,12 @@ pub(super) fn lighting(c: &Call) -> Res<Option<Command>> {
                 param: light_scalar(c.pname(1, LIGHT_SCALARS)?, c.f32(2)?),
             }
         }
-        "glLightModelfv" => {
+        Entry::LightModelfv => {
             c.count(2)?;
             c.pname(0, &["GL_LIGHT_MODEL_AMBIENT"])?;
             Command::LightModel(LightModelParam::Ambient(c.vec4_array(1)?))
         }
-        "glLightModeli" | "glLightModelf" => {
+        Entry::LightModeli | Entry::LightModelf => {
             c.count(2)?;
             let names = [
                 "GL_LIGHT_MODEL_LOCAL_VIEWER",
@@ -256,7 +257,7 @@ pub(super) fn lighting(c: &Call) -> Res<Option<Command>> {
                 _ => LightModelParam::ColorControl(c.enm(1)?),
             })
         }
-        "glMaterialfv" => {
+        Entry::Materialfv => {
             c.count(3)?;
             let face = c.enm(0)?;
             let all = [MATERIAL_VECTORS, &["GL_SHININESS"]].concat();
@@ -266,7 +267,7 @@ pub(super) fn lighting(c: &Call) -> Res<Option<Command>> {
             };
             Command::Material { face, param }
         }
-        "glMaterialf" => {
+        Entry::Materialf => {
             c.count(3)?;
             let face = c.enm(0)?;
             c.pname(1, &["GL_SHININESS"])?;
@@ -275,14 +276,14 @@ pub(super) fn lighting(c: &Call) -> Res<Option<Command>> {
                 param: MaterialParam::Shininess(c.f32(2)?),
             }
         }
-        "glColorMaterial" => {
+        Entry::ColorMaterial => {
             c.count(2)?;
             Command::ColorMaterial {
                 face: c.enm(0)?,
                 mode: c.enm(1)?,
             }
         }
-        "glShadeModel" => c.count(1).and(c.enm(0)).map(Command::ShadeModel)?,
+        Entry::ShadeModel => c.count(1).and(c.enm(0)).map(Command::ShadeModel)?,
         _ => return Ok(None),
     }))
 }
@@ -348,19 +349,19 @@ const ENV_PARAMS: &[&str] = &[
 
 /// Texture units, objects, images, parameters, texgen and texenv.
 pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
-    Ok(Some(match c.name {
-        "glActiveTexture" => c
+    Ok(Some(match c.entry {
+        Entry::ActiveTexture => c
             .count(1)
             .and(c.family(0, Family::Texture))
             .map(Command::ActiveTexture)?,
-        "glBindTexture" => {
+        Entry::BindTexture => {
             c.count(2)?;
             Command::BindTexture {
                 target: c.enm(0)?,
                 name: c.u32(1)?,
             }
         }
-        "glTexImage1D" => {
+        Entry::TexImage1D => {
             c.count(8)?;
             target_is(c, TextureTarget::Texture1D)?;
             Command::TexImage(TexImage {
@@ -375,7 +376,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 data: c.tex_data(7)?,
             })
         }
-        "glTexImage2D" => {
+        Entry::TexImage2D => {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
             Command::TexImage(TexImage {
@@ -390,7 +391,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 data: c.tex_data(8)?,
             })
         }
-        "glTexSubImage2D" => {
+        Entry::TexSubImage2D => {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
             Command::TexSubImage2D(TexSubImage {
@@ -404,7 +405,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 data: c.pixels(8)?.ok_or_else(|| c.bad(8, "a pixel array"))?,
             })
         }
-        "glCopyTexImage2D" => {
+        Entry::CopyTexImage2D => {
             c.count(8)?;
             target_is(c, TextureTarget::Texture2D)?;
             Command::CopyTexImage2D(CopyTexImage {
@@ -417,14 +418,14 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 border: c.i32(7)?,
             })
         }
-        "glTexParameteri" | "glTexParameterf" => {
+        Entry::TexParameteri | Entry::TexParameterf => {
             c.count(3)?;
             Command::TexParameter {
                 target: c.enm(0)?,
                 param: tex_param(c)?,
             }
         }
-        "glTexParameterfv" => {
+        Entry::TexParameterfv => {
             c.count(3)?;
             c.pname(1, &["GL_TEXTURE_BORDER_COLOR"])?;
             Command::TexParameter {
@@ -432,7 +433,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 param: TexParam::BorderColor(c.vec4_array(2)?),
             }
         }
-        "glTexGeni" => {
+        Entry::TexGeni => {
             c.count(3)?;
             c.pname(1, &["GL_TEXTURE_GEN_MODE"])?;
             Command::TexGen {
@@ -440,7 +441,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 param: TexGenParam::Mode(c.enm(2)?),
             }
         }
-        "glTexGenfv" => {
+        Entry::TexGenfv => {
             c.count(3)?;
             let coord = c.enm(0)?;
             let plane = c.vec4_array(2)?;
@@ -450,12 +451,12 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
             };
             Command::TexGen { coord, param }
         }
-        "glTexEnvi" | "glTexEnvf" => {
+        Entry::TexEnvi | Entry::TexEnvf => {
             c.count(3)?;
             env_target(c)?;
             Command::TexEnv(tex_env(c)?)
         }
-        "glTexEnvfv" => {
+        Entry::TexEnvfv => {
             c.count(3)?;
             env_target(c)?;
             c.pname(1, &["GL_TEXTURE_ENV_COLOR"])?;
@@ -548,8 +549,8 @@ fn input(c: &Call, from: usize) -> Res<CombinerInput> {
 
 /// NV_register_combiners.
 pub(super) fn combiners(c: &Call) -> Res<Option<Command>> {
-    Ok(Some(match c.name {
-        "glCombinerParameteriNV" => {
+    Ok(Some(match c.entry {
+        Entry::CombinerParameteriNV => {
             c.count(2)?;
             Command::CombinerParameter(
                 match c.pname(0, &["GL_NUM_GENERAL_COMBINERS_NV", "GL_COLOR_SUM_CLAMP_NV"])? {
@@ -558,7 +559,7 @@ pub(super) fn combiners(c: &Call) -> Res<Option<Command>> {
                 },
             )
         }
-        "glCombinerParameterfvNV" => {
+        Entry::CombinerParameterfvNV => {
             c.count(2)?;
             let v = c.vec4_array(1)?;
             Command::CombinerParameter(
@@ -568,7 +569,7 @@ pub(super) fn combiners(c: &Call) -> Res<Option<Command>> {
                 },
             )
         }
-        "glCombinerInputNV" => {
+        Entry::CombinerInputNV => {
             c.count(6)?;
             Command::CombinerInput {
                 stage: c.family(0, Family::Combiner)?,
@@ -577,7 +578,7 @@ pub(super) fn combiners(c: &Call) -> Res<Option<Command>> {
                 input: input(c, 3)?,
             }
         }
-        "glCombinerOutputNV" => {
+        Entry::CombinerOutputNV => {
             c.count(10)?;
             Command::CombinerOutput {
                 stage: c.family(0, Family::Combiner)?,
@@ -594,7 +595,7 @@ pub(super) fn combiners(c: &Call) -> Res<Option<Command>> {
                 },
             }
         }
-        "glFinalCombinerInputNV" => {
+        Entry::FinalCombinerInputNV => {
             c.count(4)?;
             Command::FinalCombinerInput {
                 variable: c.enm(0)?,

@@ -6,9 +6,11 @@ use std::sync::Arc;
 use glam::{Mat4, Vec3, Vec4};
 
 use super::lexer::{lex, Tok, Token};
-use super::names::{ranked, Family, GlName, CALLS};
+use super::names::{ranked, Family, GlEnum};
 use super::ScriptError;
+use crate::ff::api::{Entry, Form};
 use crate::ff::*;
+use crate::vocab::DepthRule;
 
 type Res<T> = Result<T, ScriptError>;
 
@@ -213,6 +215,7 @@ fn float_literal(text: &str) -> Option<f32> {
 pub(super) struct Call<'s, 'a> {
     pub(super) line: usize,
     pub(super) name: &'static str,
+    pub(super) entry: Entry,
     args: &'s [Arg<'a>],
 }
 
@@ -288,7 +291,7 @@ impl Call<'_, '_> {
             expected,
         }
     }
-    pub(super) fn enm<T: GlName>(&self, i: usize) -> Res<T> {
+    pub(super) fn enm<T: GlEnum>(&self, i: usize) -> Res<T> {
         self.name(i)
             .filter(|(_, off)| *off == 0)
             .and_then(|(n, _)| T::from_gl_name(n))
@@ -422,18 +425,17 @@ pub fn parse(src: &str) -> Result<Vec<Command>, ScriptError> {
     let mut out = Folder::default();
     while cur.peek().is_some() {
         let stmt = cur.statement()?;
-        let name = CALLS
-            .iter()
-            .find(|c| **c == stmt.name)
-            .copied()
+        let entry = Entry::from_name(stmt.name)
+            .filter(|e| e.form() == Form::Script)
             .ok_or_else(|| ScriptError::UnknownCall {
                 line: stmt.line,
                 name: stmt.name.to_string(),
-                expected: ranked(stmt.name, CALLS),
+                expected: ranked(stmt.name, &Entry::script_names()),
             })?;
         out.call(&Call {
             line: stmt.line,
-            name,
+            name: entry.name(),
+            entry,
             args: &stmt.args,
         })?;
     }
@@ -481,8 +483,8 @@ impl Folder {
             self.attribute(attr);
             return Ok(());
         }
-        match c.name {
-            "glBegin" => {
+        match c.entry {
+            Entry::Begin => {
                 c.count(1)?;
                 if self.open.is_some() {
                     return Err(immediate(c, "glBegin inside glBegin/glEnd"));
@@ -494,7 +496,7 @@ impl Folder {
                     called: [false; 2 + MAX_TEXTURE_UNITS],
                 });
             }
-            "glEnd" => {
+            Entry::End => {
                 c.count(0)?;
                 let open = self
                     .open
@@ -502,13 +504,13 @@ impl Folder {
                     .ok_or_else(|| immediate(c, "glEnd without glBegin"))?;
                 self.end(open.geometry, open.begin);
             }
-            "glVertex2f" | "glVertex3f" | "glVertex4f" => {
-                let p = match c.name {
-                    "glVertex2f" => {
+            Entry::Vertex2f | Entry::Vertex3f | Entry::Vertex4f => {
+                let p = match c.entry {
+                    Entry::Vertex2f => {
                         c.count(2)?;
                         Vec4::new(c.f32(0)?, c.f32(1)?, 0.0, 1.0)
                     }
-                    "glVertex3f" => {
+                    Entry::Vertex3f => {
                         c.count(3)?;
                         c.vec3_args(0)?.extend(1.0)
                     }
@@ -670,18 +672,18 @@ fn attribute(c: &Call) -> Res<Option<Attr>> {
         }
         Ok(v)
     };
-    Ok(Some(match c.name {
-        "glColor3f" => Attr::Color(tc(0, 3)?.truncate().extend(1.0)),
-        "glColor4f" => Attr::Color(tc(0, 4)?),
-        "glNormal3f" => Attr::Normal(tc(0, 3)?.truncate()),
-        "glTexCoord1f" => Attr::TexCoord(0, tc(0, 1)?),
-        "glTexCoord2f" => Attr::TexCoord(0, tc(0, 2)?),
-        "glTexCoord3f" => Attr::TexCoord(0, tc(0, 3)?),
-        "glTexCoord4f" => Attr::TexCoord(0, tc(0, 4)?),
-        "glMultiTexCoord1f" => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 1)?),
-        "glMultiTexCoord2f" => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 2)?),
-        "glMultiTexCoord3f" => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 3)?),
-        "glMultiTexCoord4f" => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 4)?),
+    Ok(Some(match c.entry {
+        Entry::Color3f => Attr::Color(tc(0, 3)?.truncate().extend(1.0)),
+        Entry::Color4f => Attr::Color(tc(0, 4)?),
+        Entry::Normal3f => Attr::Normal(tc(0, 3)?.truncate()),
+        Entry::TexCoord1f => Attr::TexCoord(0, tc(0, 1)?),
+        Entry::TexCoord2f => Attr::TexCoord(0, tc(0, 2)?),
+        Entry::TexCoord3f => Attr::TexCoord(0, tc(0, 3)?),
+        Entry::TexCoord4f => Attr::TexCoord(0, tc(0, 4)?),
+        Entry::MultiTexCoord1f => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 1)?),
+        Entry::MultiTexCoord2f => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 2)?),
+        Entry::MultiTexCoord3f => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 3)?),
+        Entry::MultiTexCoord4f => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 4)?),
         _ => return Ok(None),
     }))
 }
@@ -701,7 +703,7 @@ fn command(c: &Call) -> Res<Command> {
     Err(ScriptError::UnknownCall {
         line: c.line,
         name: c.name.to_string(),
-        expected: ranked(c.name, CALLS),
+        expected: ranked(c.name, &Entry::script_names()),
     })
 }
 
@@ -728,30 +730,30 @@ impl Call<'_, '_> {
 }
 
 /// The client helpers a script may apply to a depth readback, by name.
-pub(super) const DEPTH_HELPERS: [(&str, PixelType, DepthConversion); 4] = [
+pub(super) const DEPTH_HELPERS: [(&str, PixelType, DepthRule); 4] = [
     (
         "fixedfunc_depth_ubyte_truncate",
         PixelType::UnsignedByte,
-        DepthConversion::Truncate,
+        DepthRule::Truncate,
     ),
     (
         "fixedfunc_depth_ubyte_round",
         PixelType::UnsignedByte,
-        DepthConversion::Round,
+        DepthRule::Round,
     ),
     (
         "fixedfunc_depth_ushort_truncate",
         PixelType::UnsignedShort,
-        DepthConversion::Truncate,
+        DepthRule::Truncate,
     ),
     (
         "fixedfunc_depth_ushort_round",
         PixelType::UnsignedShort,
-        DepthConversion::Round,
+        DepthRule::Round,
     ),
 ];
 
-fn depth_helper(name: &str) -> Option<(PixelType, DepthConversion)> {
+fn depth_helper(name: &str) -> Option<(PixelType, DepthRule)> {
     DEPTH_HELPERS
         .iter()
         .find(|(n, _, _)| *n == name)

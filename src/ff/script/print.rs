@@ -8,7 +8,8 @@ use std::fmt::Write;
 
 use glam::Vec4;
 
-use super::names::{Family, GlName};
+use super::names::{Family, GlEnum};
+use crate::ff::api::Entry;
 use crate::ff::*;
 
 /// Prints commands as a script.
@@ -43,7 +44,7 @@ fn v4(v: Vec4) -> String {
 }
 
 /// The token of a value; every table covers its enum, so the fallback is never printed.
-fn n<T: GlName>(v: T) -> &'static str {
+fn n<T: GlEnum>(v: T) -> &'static str {
     v.gl_name().unwrap_or("GL_NONE")
 }
 
@@ -84,7 +85,8 @@ fn command(out: &mut String, c: &Command) {
         Command::TexSubImage2D(t) => line(
             out,
             format_args!(
-                "glTexSubImage2D(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {}, {})",
+                "{}(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {}, {})",
+                Entry::TexSubImage2D,
                 t.level,
                 t.x,
                 t.y,
@@ -102,54 +104,86 @@ fn command(out: &mut String, c: &Command) {
 /// Every command but Draw, TexImage and TexSubImage2D, as one call without the ';'.
 fn call(c: &Command) -> String {
     match c {
-        Command::MatrixMode(m) => format!("glMatrixMode({})", n(*m)),
-        Command::LoadIdentity => "glLoadIdentity()".into(),
-        Command::LoadMatrix(m) => format!("glLoadMatrixf({})", arr(&m.to_cols_array())),
-        Command::MultMatrix(m) => format!("glMultMatrixf({})", arr(&m.to_cols_array())),
-        Command::PushMatrix => "glPushMatrix()".into(),
-        Command::PopMatrix => "glPopMatrix()".into(),
-        Command::Translate(v) => format!("glTranslatef({})", fs(&v.to_array())),
+        Command::MatrixMode(m) => format!("{}({})", Entry::MatrixMode, n(*m)),
+        Command::LoadIdentity => format!("{}()", Entry::LoadIdentity),
+        Command::LoadMatrix(m) => format!("{}({})", Entry::LoadMatrixf, arr(&m.to_cols_array())),
+        Command::MultMatrix(m) => format!("{}({})", Entry::MultMatrixf, arr(&m.to_cols_array())),
+        Command::PushMatrix => format!("{}()", Entry::PushMatrix),
+        Command::PopMatrix => format!("{}()", Entry::PopMatrix),
+        Command::Translate(v) => format!("{}({})", Entry::Translatef, fs(&v.to_array())),
         Command::Rotate { angle_deg, axis } => {
-            format!("glRotatef({}, {})", f(*angle_deg), fs(&axis.to_array()))
+            format!(
+                "{}({}, {})",
+                Entry::Rotatef,
+                f(*angle_deg),
+                fs(&axis.to_array())
+            )
         }
-        Command::Scale(v) => format!("glScalef({})", fs(&v.to_array())),
-        Command::Frustum(v) => format!("glFrustum({})", volume(v)),
-        Command::Ortho(v) => format!("glOrtho({})", volume(v)),
-        Command::Viewport(v) => format!("glViewport({}, {}, {}, {})", v.x, v.y, v.width, v.height),
-        Command::DepthRange { near, far } => format!("glDepthRange({}, {})", f(*near), f(*far)),
-        Command::Enable(cap) => format!("glEnable({})", capability(*cap)),
-        Command::Disable(cap) => format!("glDisable({})", capability(*cap)),
-        Command::Color(c) => format!("glColor4f({})", fs(&c.to_array())),
-        Command::Normal(v) => format!("glNormal3f({})", fs(&v.to_array())),
+        Command::Scale(v) => format!("{}({})", Entry::Scalef, fs(&v.to_array())),
+        Command::Frustum(v) => format!("{}({})", Entry::Frustum, volume(v)),
+        Command::Ortho(v) => format!("{}({})", Entry::Ortho, volume(v)),
+        Command::Viewport(v) => format!(
+            "{}({}, {}, {}, {})",
+            Entry::Viewport,
+            v.x,
+            v.y,
+            v.width,
+            v.height
+        ),
+        Command::DepthRange { near, far } => {
+            format!("{}({}, {})", Entry::DepthRange, f(*near), f(*far))
+        }
+        Command::Enable(cap) => format!("{}({})", Entry::Enable, capability(*cap)),
+        Command::Disable(cap) => format!("{}({})", Entry::Disable, capability(*cap)),
+        Command::Color(c) => format!("{}({})", Entry::Color4f, fs(&c.to_array())),
+        Command::Normal(v) => format!("{}({})", Entry::Normal3f, fs(&v.to_array())),
         Command::TexCoord { unit, coord } => format!(
-            "glMultiTexCoord4f({}, {})",
+            "{}({}, {})",
+            Entry::MultiTexCoord4f,
             Family::Texture.print(*unit),
             fs(&coord.to_array())
         ),
         Command::Light { light, param } => light_call(Family::Light.print(*light), param),
         Command::LightModel(p) => match p {
             LightModelParam::Ambient(c) => {
-                format!("glLightModelfv(GL_LIGHT_MODEL_AMBIENT, {})", v4(*c))
+                format!(
+                    "{}(GL_LIGHT_MODEL_AMBIENT, {})",
+                    Entry::LightModelfv,
+                    v4(*c)
+                )
             }
             LightModelParam::LocalViewer(v) => {
-                format!("glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, {})", b(*v))
+                format!(
+                    "{}(GL_LIGHT_MODEL_LOCAL_VIEWER, {})",
+                    Entry::LightModeli,
+                    b(*v)
+                )
             }
             LightModelParam::TwoSide(v) => {
-                format!("glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, {})", b(*v))
+                format!("{}(GL_LIGHT_MODEL_TWO_SIDE, {})", Entry::LightModeli, b(*v))
             }
             LightModelParam::ColorControl(v) => {
-                format!("glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, {})", n(*v))
+                format!(
+                    "{}(GL_LIGHT_MODEL_COLOR_CONTROL, {})",
+                    Entry::LightModeli,
+                    n(*v)
+                )
             }
         },
         Command::Material { face, param } => material(n(*face), param),
         Command::ColorMaterial { face, mode } => {
-            format!("glColorMaterial({}, {})", n(*face), n(*mode))
+            format!("{}({}, {})", Entry::ColorMaterial, n(*face), n(*mode))
         }
-        Command::ShadeModel(m) => format!("glShadeModel({})", n(*m)),
-        Command::ActiveTexture(u) => format!("glActiveTexture({})", Family::Texture.print(*u)),
-        Command::BindTexture { target, name } => format!("glBindTexture({}, {name})", n(*target)),
+        Command::ShadeModel(m) => format!("{}({})", Entry::ShadeModel, n(*m)),
+        Command::ActiveTexture(u) => {
+            format!("{}({})", Entry::ActiveTexture, Family::Texture.print(*u))
+        }
+        Command::BindTexture { target, name } => {
+            format!("{}({}, {name})", Entry::BindTexture, n(*target))
+        }
         Command::CopyTexImage2D(t) => format!(
-            "glCopyTexImage2D(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {})",
+            "{}(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {})",
+            Entry::CopyTexImage2D,
             t.level,
             n(t.internal_format),
             t.x,
@@ -161,28 +195,58 @@ fn call(c: &Command) -> String {
         Command::TexParameter { target, param } => tex_param(n(*target), param),
         Command::TexGen { coord, param } => match param {
             TexGenParam::Mode(m) => {
-                format!("glTexGeni({}, GL_TEXTURE_GEN_MODE, {})", n(*coord), n(*m))
+                format!(
+                    "{}({}, GL_TEXTURE_GEN_MODE, {})",
+                    Entry::TexGeni,
+                    n(*coord),
+                    n(*m)
+                )
             }
             TexGenParam::ObjectPlane(p) => {
-                format!("glTexGenfv({}, GL_OBJECT_PLANE, {})", n(*coord), v4(*p))
+                format!(
+                    "{}({}, GL_OBJECT_PLANE, {})",
+                    Entry::TexGenfv,
+                    n(*coord),
+                    v4(*p)
+                )
             }
             TexGenParam::EyePlane(p) => {
-                format!("glTexGenfv({}, GL_EYE_PLANE, {})", n(*coord), v4(*p))
+                format!(
+                    "{}({}, GL_EYE_PLANE, {})",
+                    Entry::TexGenfv,
+                    n(*coord),
+                    v4(*p)
+                )
             }
         },
         Command::TexEnv(p) => tex_env(p),
         Command::CombinerParameter(p) => match p {
             CombinerParam::NumGeneralCombiners(k) => {
-                format!("glCombinerParameteriNV(GL_NUM_GENERAL_COMBINERS_NV, {k})")
+                format!(
+                    "{}(GL_NUM_GENERAL_COMBINERS_NV, {k})",
+                    Entry::CombinerParameteriNV
+                )
             }
             CombinerParam::ColorSumClamp(v) => {
-                format!("glCombinerParameteriNV(GL_COLOR_SUM_CLAMP_NV, {})", b(*v))
+                format!(
+                    "{}(GL_COLOR_SUM_CLAMP_NV, {})",
+                    Entry::CombinerParameteriNV,
+                    b(*v)
+                )
             }
             CombinerParam::ConstantColor0(c) => {
-                format!("glCombinerParameterfvNV(GL_CONSTANT_COLOR0_NV, {})", v4(*c))
+                format!(
+                    "{}(GL_CONSTANT_COLOR0_NV, {})",
+                    Entry::CombinerParameterfvNV,
+                    v4(*c)
+                )
             }
             CombinerParam::ConstantColor1(c) => {
-                format!("glCombinerParameterfvNV(GL_CONSTANT_COLOR1_NV, {})", v4(*c))
+                format!(
+                    "{}(GL_CONSTANT_COLOR1_NV, {})",
+                    Entry::CombinerParameterfvNV,
+                    v4(*c)
+                )
             }
         },
         Command::CombinerInput {
@@ -191,7 +255,8 @@ fn call(c: &Command) -> String {
             variable,
             input,
         } => format!(
-            "glCombinerInputNV({}, {}, {}, {})",
+            "{}({}, {}, {}, {})",
+            Entry::CombinerInputNV,
             Family::Combiner.print(*stage),
             n(*portion),
             n(*variable),
@@ -202,7 +267,8 @@ fn call(c: &Command) -> String {
             portion,
             output: o,
         } => format!(
-            "glCombinerOutputNV({}, {}, {}, {}, {}, {}, {}, {}, {}, {})",
+            "{}({}, {}, {}, {}, {}, {}, {}, {}, {}, {})",
+            Entry::CombinerOutputNV,
             Family::Combiner.print(*stage),
             n(*portion),
             register(o.ab),
@@ -216,22 +282,27 @@ fn call(c: &Command) -> String {
         ),
         Command::FinalCombinerInput { variable, input } => {
             format!(
-                "glFinalCombinerInputNV({}, {})",
+                "{}({}, {})",
+                Entry::FinalCombinerInputNV,
                 n(*variable),
                 combiner_input(input)
             )
         }
         Command::AlphaFunc { func, reference } => {
-            format!("glAlphaFunc({}, {})", n(*func), f(*reference))
+            format!("{}({}, {})", Entry::AlphaFunc, n(*func), f(*reference))
         }
-        Command::DepthFunc(func) => format!("glDepthFunc({})", n(*func)),
-        Command::DepthMask(v) => format!("glDepthMask({})", b(*v)),
+        Command::DepthFunc(func) => format!("{}({})", Entry::DepthFunc, n(*func)),
+        Command::DepthMask(v) => format!("{}({})", Entry::DepthMask, b(*v)),
         Command::StencilFunc {
             func,
             reference,
             mask,
         } => {
-            format!("glStencilFunc({}, {reference}, 0x{mask:X})", n(*func))
+            format!(
+                "{}({}, {reference}, 0x{mask:X})",
+                Entry::StencilFunc,
+                n(*func)
+            )
         }
         Command::StencilOp {
             fail,
@@ -239,35 +310,42 @@ fn call(c: &Command) -> String {
             depth_pass,
         } => {
             format!(
-                "glStencilOp({}, {}, {})",
+                "{}({}, {}, {})",
+                Entry::StencilOp,
                 n(*fail),
                 n(*depth_fail),
                 n(*depth_pass)
             )
         }
-        Command::StencilMask(m) => format!("glStencilMask(0x{m:X})"),
-        Command::BlendFunc { src, dst } => format!("glBlendFunc({}, {})", n(*src), n(*dst)),
+        Command::StencilMask(m) => format!("{}(0x{m:X})", Entry::StencilMask),
+        Command::BlendFunc { src, dst } => {
+            format!("{}({}, {})", Entry::BlendFunc, n(*src), n(*dst))
+        }
         Command::ColorMask(m) => format!(
-            "glColorMask({}, {}, {}, {})",
+            "{}({}, {}, {}, {})",
+            Entry::ColorMask,
             b(m.r),
             b(m.g),
             b(m.b),
             b(m.a)
         ),
         Command::PolygonOffset { factor, units } => {
-            format!("glPolygonOffset({}, {})", f(*factor), f(*units))
+            format!("{}({}, {})", Entry::PolygonOffset, f(*factor), f(*units))
         }
-        Command::PolygonMode { face, mode } => format!("glPolygonMode({}, {})", n(*face), n(*mode)),
-        Command::CullFace(face) => format!("glCullFace({})", n(*face)),
-        Command::FrontFace(face) => format!("glFrontFace({})", n(*face)),
-        Command::LineWidth(w) => format!("glLineWidth({})", f(*w)),
-        Command::PointSize(s) => format!("glPointSize({})", f(*s)),
-        Command::Clear(m) => format!("glClear({})", clear_mask(*m)),
-        Command::ClearColor(c) => format!("glClearColor({})", fs(&c.to_array())),
-        Command::ClearDepth(d) => format!("glClearDepth({})", f(*d)),
-        Command::ClearStencil(s) => format!("glClearStencil({s})"),
+        Command::PolygonMode { face, mode } => {
+            format!("{}({}, {})", Entry::PolygonMode, n(*face), n(*mode))
+        }
+        Command::CullFace(face) => format!("{}({})", Entry::CullFace, n(*face)),
+        Command::FrontFace(face) => format!("{}({})", Entry::FrontFace, n(*face)),
+        Command::LineWidth(w) => format!("{}({})", Entry::LineWidth, f(*w)),
+        Command::PointSize(s) => format!("{}({})", Entry::PointSize, f(*s)),
+        Command::Clear(m) => format!("{}({})", Entry::Clear, clear_mask(*m)),
+        Command::ClearColor(c) => format!("{}({})", Entry::ClearColor, fs(&c.to_array())),
+        Command::ClearDepth(d) => format!("{}({})", Entry::ClearDepth, f(*d)),
+        Command::ClearStencil(s) => format!("{}({s})", Entry::ClearStencil),
         Command::ReadPixels(r) => format!(
-            "glReadPixels({}, {}, {}, {}, {}, {}, readback_{})",
+            "{}({}, {}, {}, {}, {}, {}, readback_{})",
+            Entry::ReadPixels,
             r.x,
             r.y,
             r.width,
@@ -304,23 +382,33 @@ fn clear_mask(m: ClearMask) -> String {
 
 fn light_call(l: String, p: &LightParam) -> String {
     match p {
-        LightParam::Ambient(c) => format!("glLightfv({l}, GL_AMBIENT, {})", v4(*c)),
-        LightParam::Diffuse(c) => format!("glLightfv({l}, GL_DIFFUSE, {})", v4(*c)),
-        LightParam::Specular(c) => format!("glLightfv({l}, GL_SPECULAR, {})", v4(*c)),
-        LightParam::Position(c) => format!("glLightfv({l}, GL_POSITION, {})", v4(*c)),
+        LightParam::Ambient(c) => format!("{}({l}, GL_AMBIENT, {})", Entry::Lightfv, v4(*c)),
+        LightParam::Diffuse(c) => format!("{}({l}, GL_DIFFUSE, {})", Entry::Lightfv, v4(*c)),
+        LightParam::Specular(c) => format!("{}({l}, GL_SPECULAR, {})", Entry::Lightfv, v4(*c)),
+        LightParam::Position(c) => format!("{}({l}, GL_POSITION, {})", Entry::Lightfv, v4(*c)),
         LightParam::SpotDirection(d) => {
-            format!("glLightfv({l}, GL_SPOT_DIRECTION, {})", arr(&d.to_array()))
+            format!(
+                "{}({l}, GL_SPOT_DIRECTION, {})",
+                Entry::Lightfv,
+                arr(&d.to_array())
+            )
         }
-        LightParam::SpotExponent(v) => format!("glLightf({l}, GL_SPOT_EXPONENT, {})", f(*v)),
-        LightParam::SpotCutoff(v) => format!("glLightf({l}, GL_SPOT_CUTOFF, {})", f(*v)),
+        LightParam::SpotExponent(v) => {
+            format!("{}({l}, GL_SPOT_EXPONENT, {})", Entry::Lightf, f(*v))
+        }
+        LightParam::SpotCutoff(v) => format!("{}({l}, GL_SPOT_CUTOFF, {})", Entry::Lightf, f(*v)),
         LightParam::ConstantAttenuation(v) => {
-            format!("glLightf({l}, GL_CONSTANT_ATTENUATION, {})", f(*v))
+            format!("{}({l}, GL_CONSTANT_ATTENUATION, {})", Entry::Lightf, f(*v))
         }
         LightParam::LinearAttenuation(v) => {
-            format!("glLightf({l}, GL_LINEAR_ATTENUATION, {})", f(*v))
+            format!("{}({l}, GL_LINEAR_ATTENUATION, {})", Entry::Lightf, f(*v))
         }
         LightParam::QuadraticAttenuation(v) => {
-            format!("glLightf({l}, GL_QUADRATIC_ATTENUATION, {})", f(*v))
+            format!(
+                "{}({l}, GL_QUADRATIC_ATTENUATION, {})",
+                Entry::Lightf,
+                f(*v)
+            )
         }
     }
 }
@@ -328,7 +416,7 @@ fn light_call(l: String, p: &LightParam) -> String {
 fn material(face: &str, p: &MaterialParam) -> String {
     let (pname, v) = match p {
         MaterialParam::Shininess(s) => {
-            return format!("glMaterialf({face}, GL_SHININESS, {})", f(*s))
+            return format!("{}({face}, GL_SHININESS, {})", Entry::Materialf, f(*s))
         }
         MaterialParam::Ambient(v) => ("GL_AMBIENT", v),
         MaterialParam::Diffuse(v) => ("GL_DIFFUSE", v),
@@ -336,20 +424,22 @@ fn material(face: &str, p: &MaterialParam) -> String {
         MaterialParam::Specular(v) => ("GL_SPECULAR", v),
         MaterialParam::Emission(v) => ("GL_EMISSION", v),
     };
-    format!("glMaterialfv({face}, {pname}, {})", v4(*v))
+    format!("{}({face}, {pname}, {})", Entry::Materialfv, v4(*v))
 }
 
 fn tex_param(target: &str, p: &TexParam) -> String {
     let (pname, value) = match p {
         TexParam::BorderColor(c) => {
             return format!(
-                "glTexParameterfv({target}, GL_TEXTURE_BORDER_COLOR, {})",
+                "{}({target}, GL_TEXTURE_BORDER_COLOR, {})",
+                Entry::TexParameterfv,
                 v4(*c)
             )
         }
         TexParam::CompareFailValue(v) => {
             return format!(
-                "glTexParameterf({target}, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, {})",
+                "{}({target}, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, {})",
+                Entry::TexParameterf,
                 f(*v)
             )
         }
@@ -362,7 +452,7 @@ fn tex_param(target: &str, p: &TexParam) -> String {
         TexParam::DepthTextureMode(v) => ("GL_DEPTH_TEXTURE_MODE", n(*v)),
         TexParam::GenerateMipmap(v) => ("GL_GENERATE_MIPMAP", b(*v)),
     };
-    format!("glTexParameteri({target}, {pname}, {value})")
+    format!("{}({target}, {pname}, {value})", Entry::TexParameteri)
 }
 
 fn arg_digit(a: CombineArg) -> usize {
@@ -370,11 +460,12 @@ fn arg_digit(a: CombineArg) -> usize {
 }
 
 fn tex_env(p: &TexEnvParam) -> String {
-    let e = |pname: String, v: String| format!("glTexEnvi(GL_TEXTURE_ENV, {pname}, {v})");
+    let e = |pname: String, v: String| format!("{}(GL_TEXTURE_ENV, {pname}, {v})", Entry::TexEnvi);
     match p {
         TexEnvParam::Mode(m) => e("GL_TEXTURE_ENV_MODE".into(), n(*m).into()),
         TexEnvParam::Color(c) => format!(
-            "glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, {})",
+            "{}(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, {})",
+            Entry::TexEnvfv,
             v4(*c)
         ),
         TexEnvParam::CombineRgb(v) => e("GL_COMBINE_RGB".into(), n(*v).into()),
@@ -389,9 +480,17 @@ fn tex_env(p: &TexEnvParam) -> String {
         TexEnvParam::OperandAlpha(a, o) => {
             e(format!("GL_OPERAND{}_ALPHA", arg_digit(*a)), n(*o).into())
         }
-        TexEnvParam::RgbScale(s) => format!("glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, {})", f(*s)),
+        TexEnvParam::RgbScale(s) => format!(
+            "{}(GL_TEXTURE_ENV, GL_RGB_SCALE, {})",
+            Entry::TexEnvf,
+            f(*s)
+        ),
         TexEnvParam::AlphaScale(s) => {
-            format!("glTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, {})", f(*s))
+            format!(
+                "{}(GL_TEXTURE_ENV, GL_ALPHA_SCALE, {})",
+                Entry::TexEnvf,
+                f(*s)
+            )
         }
     }
 }
@@ -452,8 +551,11 @@ fn tex_image(out: &mut String, t: &TexImage) {
         }
     };
     let (name, size) = match t.target {
-        TextureTarget::Texture1D => ("glTexImage1D", format!("{}", t.width)),
-        TextureTarget::Texture2D => ("glTexImage2D", format!("{}, {}", t.width, t.height)),
+        TextureTarget::Texture1D => (Entry::TexImage1D.name(), format!("{}", t.width)),
+        TextureTarget::Texture2D => (
+            Entry::TexImage2D.name(),
+            format!("{}, {}", t.width, t.height),
+        ),
     };
     line(
         out,
@@ -471,7 +573,7 @@ fn tex_image(out: &mut String, t: &TexImage) {
 
 /// glBegin/glEnd; indexed geometry is printed de-indexed.
 fn draw(out: &mut String, g: &Geometry) {
-    line(out, format_args!("glBegin({})", n(g.primitive)));
+    line(out, format_args!("{}({})", Entry::Begin, n(g.primitive)));
     let order: Vec<usize> = match &g.indices {
         Some(idx) => idx.iter().map(|&i| i as usize).collect(),
         None => (0..g.positions.len()).collect(),
@@ -481,28 +583,41 @@ fn draw(out: &mut String, g: &Geometry) {
             continue;
         };
         if let Some(c) = g.colors.as_ref().and_then(|v| v.get(i)) {
-            line(out, format_args!("  glColor4f({})", fs(&c.to_array())));
+            line(
+                out,
+                format_args!("  {}({})", Entry::Color4f, fs(&c.to_array())),
+            );
         }
         if let Some(nrm) = g.normals.as_ref().and_then(|v| v.get(i)) {
-            line(out, format_args!("  glNormal3f({})", fs(&nrm.to_array())));
+            line(
+                out,
+                format_args!("  {}({})", Entry::Normal3f, fs(&nrm.to_array())),
+            );
         }
         for (u, t) in g.texcoords.iter().enumerate() {
             if let Some(t) = t.as_ref().and_then(|v| v.get(i)) {
                 let unit = Family::Texture.print(u as u8);
                 line(
                     out,
-                    format_args!("  glMultiTexCoord4f({unit}, {})", fs(&t.to_array())),
+                    format_args!(
+                        "  {}({unit}, {})",
+                        Entry::MultiTexCoord4f,
+                        fs(&t.to_array())
+                    ),
                 );
             }
         }
         if p.w == 1.0 {
             line(
                 out,
-                format_args!("  glVertex3f({})", fs(&p.truncate().to_array())),
+                format_args!("  {}({})", Entry::Vertex3f, fs(&p.truncate().to_array())),
             );
         } else {
-            line(out, format_args!("  glVertex4f({})", fs(&p.to_array())));
+            line(
+                out,
+                format_args!("  {}({})", Entry::Vertex4f, fs(&p.to_array())),
+            );
         }
     }
-    line(out, format_args!("glEnd()"));
+    line(out, format_args!("{}()", Entry::End));
 }

@@ -6,9 +6,10 @@ use std::sync::Arc;
 use glam::{Mat4, Vec3, Vec4};
 use proptest::prelude::*;
 
-use super::names::GlName;
+use super::names::GlEnum;
 use super::*;
 use crate::ff::*;
+use crate::vocab::DepthRule;
 
 fn err(src: &str) -> ScriptError {
     parse(src).unwrap_err()
@@ -476,7 +477,7 @@ fn sample_commands() -> Vec<Command> {
             data: TexData::ConvertedDepth {
                 slot: 3,
                 ty: PixelType::UnsignedShort,
-                rule: DepthConversion::Round,
+                rule: DepthRule::Round,
             },
         }),
         Command::Draw(Arc::new(g)),
@@ -556,8 +557,8 @@ fn vec4() -> impl Strategy<Value = Vec4> {
     prop::array::uniform4(finite()).prop_map(Vec4::from_array)
 }
 
-fn token<T: GlName + std::fmt::Debug>() -> impl Strategy<Value = T> {
-    prop::sample::select(T::TABLE.iter().map(|(_, v)| *v).collect::<Vec<_>>())
+fn token<T: GlEnum + std::fmt::Debug>() -> impl Strategy<Value = T> {
+    prop::sample::select(T::TABLE.iter().map(|(_, _, v)| *v).collect::<Vec<_>>())
 }
 
 fn geometry() -> impl Strategy<Value = Geometry> {
@@ -663,7 +664,7 @@ proptest! {
 
     #[test]
     fn parse_never_panics_on_gl_like_text(
-        calls in prop::collection::vec(prop::sample::select(super::names::CALLS.to_vec()), 0..6),
+        calls in prop::collection::vec(prop::sample::select(crate::ff::api::Entry::script_names()), 0..6),
         args in prop::collection::vec("(GL_[A-Z0-9_]{1,12}|-?[0-9]{1,3}(\\.[0-9])?|\\(GLfloat\\[\\]\\)\\{[0-9, ]{0,9}\\}|readback_[0-9])", 0..6),
     ) {
         let src: String = calls.iter().map(|c| format!("{c}({});\n", args.join(", "))).collect();

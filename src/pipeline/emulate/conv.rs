@@ -1,86 +1,12 @@
-//! The emulated path's ff enums → core-profile GL constants, exhaustive matches. Legacy
-//! formats map to the R8/RG8 storage plus the swizzle that makes the sampled texel GL 1.x's.
+//! The emulated path's GL values: the model's enums through `ff::glenum`'s one table, except
+//! where a core 3.3 context lacks the legacy value and the path substitutes its own —
+//! CLAMP, the legacy texture formats (R8/RG8 storage plus the swizzle that makes the
+//! sampled texel GL 1.x's) and the legacy client pixel formats. Those substitutions, and
+//! only those, are written out here, with exhaustive matches.
 
-use crate::ff::{
-    BlendFactor, CompareFunc, Face, Filter, FrontFace, PixelFormat, PixelType, PolygonMode,
-    StencilOp, TexFormat, Wrap,
-};
+use crate::ff::{PixelFormat, TexFormat, Wrap};
 
-pub fn compare_func(f: CompareFunc) -> u32 {
-    match f {
-        CompareFunc::Never => glow::NEVER,
-        CompareFunc::Less => glow::LESS,
-        CompareFunc::Equal => glow::EQUAL,
-        CompareFunc::Lequal => glow::LEQUAL,
-        CompareFunc::Greater => glow::GREATER,
-        CompareFunc::Notequal => glow::NOTEQUAL,
-        CompareFunc::Gequal => glow::GEQUAL,
-        CompareFunc::Always => glow::ALWAYS,
-    }
-}
-
-pub fn stencil_op(op: StencilOp) -> u32 {
-    match op {
-        StencilOp::Keep => glow::KEEP,
-        StencilOp::Zero => glow::ZERO,
-        StencilOp::Replace => glow::REPLACE,
-        StencilOp::Incr => glow::INCR,
-        StencilOp::Decr => glow::DECR,
-        StencilOp::Invert => glow::INVERT,
-        StencilOp::IncrWrap => glow::INCR_WRAP,
-        StencilOp::DecrWrap => glow::DECR_WRAP,
-    }
-}
-
-pub fn blend_factor(f: BlendFactor) -> u32 {
-    match f {
-        BlendFactor::Zero => glow::ZERO,
-        BlendFactor::One => glow::ONE,
-        BlendFactor::SrcColor => glow::SRC_COLOR,
-        BlendFactor::OneMinusSrcColor => glow::ONE_MINUS_SRC_COLOR,
-        BlendFactor::DstColor => glow::DST_COLOR,
-        BlendFactor::OneMinusDstColor => glow::ONE_MINUS_DST_COLOR,
-        BlendFactor::SrcAlpha => glow::SRC_ALPHA,
-        BlendFactor::OneMinusSrcAlpha => glow::ONE_MINUS_SRC_ALPHA,
-        BlendFactor::DstAlpha => glow::DST_ALPHA,
-        BlendFactor::OneMinusDstAlpha => glow::ONE_MINUS_DST_ALPHA,
-        BlendFactor::SrcAlphaSaturate => glow::SRC_ALPHA_SATURATE,
-    }
-}
-
-pub fn face(f: Face) -> u32 {
-    match f {
-        Face::Front => glow::FRONT,
-        Face::Back => glow::BACK,
-        Face::FrontAndBack => glow::FRONT_AND_BACK,
-    }
-}
-
-pub fn front_face(f: FrontFace) -> u32 {
-    match f {
-        FrontFace::Ccw => glow::CCW,
-        FrontFace::Cw => glow::CW,
-    }
-}
-
-pub fn polygon_mode(m: PolygonMode) -> u32 {
-    match m {
-        PolygonMode::Point => glow::POINT,
-        PolygonMode::Line => glow::LINE,
-        PolygonMode::Fill => glow::FILL,
-    }
-}
-
-pub fn filter(f: Filter) -> u32 {
-    match f {
-        Filter::Nearest => glow::NEAREST,
-        Filter::Linear => glow::LINEAR,
-        Filter::NearestMipmapNearest => glow::NEAREST_MIPMAP_NEAREST,
-        Filter::LinearMipmapNearest => glow::LINEAR_MIPMAP_NEAREST,
-        Filter::NearestMipmapLinear => glow::NEAREST_MIPMAP_LINEAR,
-        Filter::LinearMipmapLinear => glow::LINEAR_MIPMAP_LINEAR,
-    }
-}
+pub use crate::ff::glenum::gl as value;
 
 /// CLAMP (GL 1.x: clamp s to [0,1], so LINEAR mixes in the border colour) has no core
 /// equivalent; CLAMP_TO_BORDER reproduces it exactly for LINEAR and is CLAMP_TO_EDGE-like
@@ -121,14 +47,5 @@ pub fn pixel_format(f: PixelFormat) -> u32 {
         PixelFormat::LuminanceAlpha => glow::RG,
         PixelFormat::DepthComponent => glow::DEPTH_COMPONENT,
         PixelFormat::StencilIndex => glow::STENCIL_INDEX,
-    }
-}
-
-pub fn pixel_type(t: PixelType) -> u32 {
-    match t {
-        PixelType::UnsignedByte => glow::UNSIGNED_BYTE,
-        PixelType::UnsignedShort => glow::UNSIGNED_SHORT,
-        PixelType::UnsignedInt => glow::UNSIGNED_INT,
-        PixelType::Float => glow::FLOAT,
     }
 }

@@ -6,9 +6,10 @@
 use super::polygon::EdgeRule;
 use crate::ff::{
     AlphaTest, BaseFormat, ColorMaterialMode, Combine, CombinerInput, CompareFunc, CompareMode,
-    DepthTextureMode, Face, FixedState, GeneralStage, Precision, ShadeModel, TexCoord, TexEnvMode,
-    TexFormat, TexGenMode, TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
+    DepthTextureMode, Face, FixedState, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat,
+    TexGenMode, TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
 };
+use crate::vocab::Precision;
 
 /// Where a vertex colour comes from when lighting is on (COLOR_MATERIAL).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

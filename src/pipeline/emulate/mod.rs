@@ -21,7 +21,6 @@ pub mod sync;
 pub mod textures;
 pub mod uniforms;
 
-use std::collections::HashMap;
 use std::sync::Arc;
 
 use glow::HasContext;
@@ -32,22 +31,24 @@ use self::key::ShaderKey;
 use self::program::Program;
 use self::sync::RasterSync;
 use self::textures::Textures;
-use super::{Counters, Pipeline, PipelineError, PipelineKind, Readback};
-use crate::ff::{
-    Command, FixedState, Geometry, GlError, PixelFormat, PixelType, Precision, ReadPixels, Viewport,
-};
+use super::core::{Core, Issue, PathPipeline};
+use super::{Counters, PipelineError, Readback};
+use crate::ff::{Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels, Viewport};
 use crate::gpu::{GpuContext, Profile};
+use crate::vocab::{PipelineKind, Precision};
 
-pub struct EmulatedPipeline {
-    state: FixedState,
+/// The emulated path's half of execution: programs, uploaded geometry and textures, and
+/// the shadow copy of the raster state GL has.
+pub struct Emulate {
     programs: ProgramCache<ShaderKey, Program>,
     geometry: GeometryCache,
     textures: Textures,
     raster: RasterSync,
-    readbacks: HashMap<u32, Readback>,
-    counters: Counters,
     precision: Precision,
 }
+
+/// Commands executed by generated programs on a core 3.3 context.
+pub type EmulatedPipeline = PathPipeline<Emulate>;
 
 impl EmulatedPipeline {
     /// A pipeline on a core-profile context. The model's viewport starts as the GL viewport
@@ -60,47 +61,51 @@ impl EmulatedPipeline {
                 got: ctx.profile().name(),
             });
         }
-        let mut state = FixedState::new();
+        let mut core = Core::default();
         let mut v = [0i32; 4];
         unsafe { ctx.gl().get_parameter_i32_slice(glow::VIEWPORT, &mut v) };
-        let _ = state.apply(&Command::Viewport(Viewport {
+        let _ = core.state.apply(&Command::Viewport(Viewport {
             x: v[0],
             y: v[1],
             width: v[2],
             height: v[3],
         }));
-        Ok(EmulatedPipeline {
-            state,
+        let path = Emulate {
             programs: ProgramCache::default(),
             geometry: GeometryCache::default(),
             textures: Textures::default(),
             raster: RasterSync::default(),
-            readbacks: HashMap::new(),
-            counters: Counters::default(),
             precision: Precision::Float,
-        })
+        };
+        Ok(PathPipeline::from_parts(core, path))
     }
 
     /// The same pipeline computing its stages in `precision` (`ff::precision`).
     pub fn with_precision(mut self, precision: Precision) -> Self {
-        self.precision = precision;
+        self.path.precision = precision;
         self
     }
 
     /// The key the next draw would use (for `fixedfunc shaders` and tests).
     pub fn current_key(&self) -> ShaderKey {
-        ShaderKey::from_state(&self.state, self.precision)
+        ShaderKey::from_state(&self.core.state, self.path.precision)
     }
+}
 
+impl Emulate {
     /// One draw: one pass, or two when the faces have different polygon modes
     /// (`polygon`); each pass's edge rule is part of its key.
-    fn draw(&mut self, gl: &glow::Context, geometry: &Arc<Geometry>) -> Result<(), PipelineError> {
-        let base = ShaderKey::from_state(&self.state, self.precision);
-        let s = &self.state;
+    fn draw(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        geometry: &Arc<Geometry>,
+    ) -> Result<(), PipelineError> {
+        let base = ShaderKey::from_state(state, self.precision);
         let passes = polygon::passes(
-            s.polygon_mode,
-            s.cull_face.get(),
-            s.offset_enables,
+            state.polygon_mode,
+            state.cull_face.get(),
+            state.offset_enables,
             geometry.primitive,
         );
         for pass in passes {
@@ -109,24 +114,23 @@ impl EmulatedPipeline {
             let program = self
                 .programs
                 .get_or_build(&key, |k| Program::build(gl, k))?;
-            program.bind(gl, &self.state);
+            program.bind(gl, state);
             let units: Vec<_> = key
                 .fragment
                 .units
                 .iter()
                 .map(|u| (u.unit, u.target))
                 .collect();
-            self.textures.bind_units(gl, &self.state, &units)?;
-            self.raster.sync(gl, &self.state, Some(&pass));
-            self.geometry.get(gl, geometry)?.draw(gl, &self.state);
+            self.textures.bind_units(gl, state, &units)?;
+            self.raster.sync(gl, state, Some(&pass));
+            self.geometry.get(gl, geometry)?.draw(gl, state);
         }
-        self.counters.draws += 1;
         Ok(())
     }
 
-    fn clear(&mut self, gl: &glow::Context, mask: crate::ff::ClearMask) {
-        self.raster.sync(gl, &self.state, None);
-        let c = self.state.clear;
+    fn clear(&mut self, gl: &glow::Context, state: &FixedState, mask: crate::ff::ClearMask) {
+        self.raster.sync(gl, state, None);
+        let c = state.clear;
         let mut bits = 0;
         unsafe {
             if mask.color {
@@ -145,45 +149,71 @@ impl EmulatedPipeline {
             gl.clear(bits);
         }
     }
+}
 
-    fn read_pixels(&mut self, gl: &glow::Context, r: &ReadPixels) {
-        let (w, h) = (r.width.max(0) as u32, r.height.max(0) as u32);
-        let bytes = read(gl, r);
-        self.readbacks.insert(
-            r.slot,
-            Readback {
-                width: w,
-                height: h,
-                format: r.format,
-                ty: r.ty,
-                bytes,
-            },
-        );
-    }
+impl Issue for Emulate {
+    const KIND: PipelineKind = PipelineKind::Emulate;
 
-    fn execute_one(&mut self, gl: &glow::Context, cmd: &Command) -> Result<(), PipelineError> {
-        self.counters.commands += 1;
-        if self.state.apply(cmd).is_err() {
-            // The model recorded the error and kept its state; GL is not touched (§2.5).
-            return Ok(());
-        }
+    /// Draws, clears, texture images and readbacks reach GL now; everything else lives in
+    /// the model and reaches GL at the next draw.
+    fn issue(
+        &mut self,
+        ctx: &GpuContext,
+        core: &mut Core,
+        cmd: &Command,
+    ) -> Result<(), PipelineError> {
+        let gl = ctx.gl();
+        let state = &core.state;
         match cmd {
-            Command::Draw(g) => self.draw(gl, g)?,
-            Command::Clear(mask) => self.clear(gl, *mask),
-            Command::TexImage(t) => {
-                self.textures
-                    .upload_level(gl, &self.state, t.target, t.level)?
+            Command::Draw(g) => {
+                self.draw(gl, state, g)?;
+                core.counters.draws += 1;
             }
-            Command::TexSubImage2D(t) => self.textures.sub_image(gl, &self.state, t)?,
-            Command::CopyTexImage2D(c) => self.textures.copy_level(gl, &self.state, c)?,
+            Command::Clear(mask) => self.clear(gl, state, *mask),
+            Command::TexImage(t) => self.textures.upload_level(gl, state, t.target, t.level)?,
+            Command::TexSubImage2D(t) => self.textures.sub_image(gl, state, t)?,
+            Command::CopyTexImage2D(c) => self.textures.copy_level(gl, state, c)?,
             Command::TexParameter { target, .. } => {
-                self.textures.sync_params(gl, &self.state, *target)?
+                self.textures.sync_params(gl, state, *target)?
             }
-            Command::ReadPixels(r) => self.read_pixels(gl, r),
-            // Everything else lives in the model and reaches GL at the next draw.
+            Command::ReadPixels(r) => {
+                core.readbacks.insert(r.slot, read_pixels(gl, r));
+            }
             _ => {}
         }
         Ok(())
+    }
+
+    fn counters(&self, core: &Counters) -> Counters {
+        let (sent, skipped) = self.raster.counts();
+        Counters {
+            programs_compiled: self.programs.compiles() as u64,
+            state_calls_sent: sent,
+            state_calls_skipped: skipped + self.textures.binds_skipped,
+            texture_uploads: self.textures.uploads,
+            ..*core
+        }
+    }
+
+    fn release(&mut self, ctx: &GpuContext) {
+        let gl = ctx.gl();
+        for p in self.programs.drain() {
+            p.delete(gl);
+        }
+        self.geometry.release(gl);
+        self.textures.release(gl);
+        self.raster.invalidate();
+    }
+}
+
+/// The bytes of one ReadPixels, packed with PACK_ALIGNMENT 1, bottom row first.
+fn read_pixels(gl: &glow::Context, r: &ReadPixels) -> Readback {
+    Readback {
+        width: r.width.max(0) as u32,
+        height: r.height.max(0) as u32,
+        format: r.format,
+        ty: r.ty,
+        bytes: read(gl, r),
     }
 }
 
@@ -202,7 +232,7 @@ fn read(gl: &glow::Context, r: &ReadPixels) -> Vec<u8> {
                 r.width,
                 r.height,
                 format,
-                conv::pixel_type(ty),
+                conv::value(ty),
                 glow::PixelPackData::Slice(Some(&mut out)),
             );
         }
@@ -259,53 +289,5 @@ fn encode(v: f32, ty: PixelType) -> Vec<u8> {
             .to_ne_bytes()
             .to_vec(),
         PixelType::Float => v.to_ne_bytes().to_vec(),
-    }
-}
-
-impl Pipeline for EmulatedPipeline {
-    fn kind(&self) -> PipelineKind {
-        PipelineKind::Emulate
-    }
-
-    fn execute(&mut self, ctx: &GpuContext, commands: &[Command]) -> Result<(), PipelineError> {
-        let gl = ctx.gl();
-        for cmd in commands {
-            let cmd = super::resolve_readback(cmd, &self.readbacks)?;
-            self.execute_one(gl, &cmd)?;
-        }
-        Ok(())
-    }
-
-    fn readback(&self, slot: u32) -> Option<&Readback> {
-        self.readbacks.get(&slot)
-    }
-
-    fn state(&self) -> &FixedState {
-        &self.state
-    }
-
-    fn take_gl_error(&mut self) -> Option<GlError> {
-        self.state.take_error()
-    }
-
-    fn counters(&self) -> Counters {
-        let (sent, skipped) = self.raster.counts();
-        Counters {
-            programs_compiled: self.programs.compiles() as u64,
-            state_calls_sent: sent,
-            state_calls_skipped: skipped + self.textures.binds_skipped,
-            texture_uploads: self.textures.uploads,
-            ..self.counters
-        }
-    }
-
-    fn release(&mut self, ctx: &GpuContext) {
-        let gl = ctx.gl();
-        for p in self.programs.drain() {
-            p.delete(gl);
-        }
-        self.geometry.release(gl);
-        self.textures.release(gl);
-        self.raster.invalidate();
     }
 }

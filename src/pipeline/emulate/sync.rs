@@ -4,13 +4,14 @@
 //! through a shadow copy of what was last sent: an unchanged value is not sent again, and
 //! both outcomes are counted.
 
+use crate::vocab::PolygonOffset;
 use glow::HasContext;
 
 use super::conv;
 use super::polygon::PolygonPass;
 use crate::ff::{
     Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, OffsetEnables,
-    PolygonMode, PolygonOffset, StencilTest, Viewport,
+    PolygonMode, StencilTest, Viewport,
 };
 
 /// One piece of state as last sent (`None` = never sent).
@@ -101,24 +102,24 @@ impl RasterSync {
         self.depth.sync(s.depth_test.get(), c, |d| unsafe {
             toggle(gl, glow::DEPTH_TEST, d.is_some());
             let d = d.unwrap_or(s.depth_test.value);
-            gl.depth_func(conv::compare_func(d.func));
+            gl.depth_func(conv::value(d.func));
             gl.depth_mask(s.depth_test.value.write);
         });
         self.stencil.sync(s.stencil_test.get(), c, |t| unsafe {
             toggle(gl, glow::STENCIL_TEST, t.is_some());
             let t = t.unwrap_or(s.stencil_test.value);
-            gl.stencil_func(conv::compare_func(t.func), t.reference, t.value_mask);
+            gl.stencil_func(conv::value(t.func), t.reference, t.value_mask);
             gl.stencil_op(
-                conv::stencil_op(t.fail),
-                conv::stencil_op(t.depth_fail),
-                conv::stencil_op(t.depth_pass),
+                conv::value(t.fail),
+                conv::value(t.depth_fail),
+                conv::value(t.depth_pass),
             );
             gl.stencil_mask(t.write_mask);
         });
         self.blend.sync(s.blend.get(), c, |b| unsafe {
             toggle(gl, glow::BLEND, b.is_some());
             if let Some(b) = b {
-                gl.blend_func(conv::blend_factor(b.src), conv::blend_factor(b.dst));
+                gl.blend_func(conv::value(b.src), conv::value(b.dst));
             }
         });
         // A pass offsets in its own mode only (`polygon`); a clear sends the state's enables.
@@ -152,12 +153,12 @@ impl RasterSync {
         self.cull.sync((cull, s.front_face), c, |(f, ff)| unsafe {
             toggle(gl, glow::CULL_FACE, f.is_some());
             if let Some(f) = f {
-                gl.cull_face(conv::face(f));
+                gl.cull_face(conv::value(f));
             }
-            gl.front_face(conv::front_face(ff));
+            gl.front_face(conv::value(ff));
         });
         self.polygon_mode.sync(mode, c, |m| unsafe {
-            gl.polygon_mode(glow::FRONT_AND_BACK, conv::polygon_mode(m))
+            gl.polygon_mode(glow::FRONT_AND_BACK, conv::value(m))
         });
     }
 

@@ -98,7 +98,7 @@ impl Textures {
                 t.width,
                 t.height,
                 conv::pixel_format(t.format),
-                conv::pixel_type(t.ty),
+                conv::value(t.ty),
                 glow::PixelUnpackData::Slice(Some(&t.data[..])),
             );
         }
@@ -190,7 +190,7 @@ fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel) {
     let (format, ty, bytes) = match &l.data {
         Some(d) => (
             conv::pixel_format(d.format),
-            conv::pixel_type(d.ty),
+            conv::value(d.ty),
             Some(&d.bytes[..]),
         ),
         // Storage only: any matching client format will do.
@@ -241,12 +241,12 @@ fn apply_params(gl: &glow::Context, target: u32, object: &TextureObject) {
         gl.tex_parameter_i32(
             target,
             glow::TEXTURE_MIN_FILTER,
-            conv::filter(p.min_filter) as i32,
+            conv::value(p.min_filter) as i32,
         );
         gl.tex_parameter_i32(
             target,
             glow::TEXTURE_MAG_FILTER,
-            conv::filter(p.mag_filter) as i32,
+            conv::value(p.mag_filter) as i32,
         );
         gl.tex_parameter_i32(target, glow::TEXTURE_WRAP_S, conv::wrap(p.wrap_s) as i32);
         gl.tex_parameter_i32(target, glow::TEXTURE_WRAP_T, conv::wrap(p.wrap_t) as i32);
@@ -267,7 +267,7 @@ fn apply_params(gl: &glow::Context, target: u32, object: &TextureObject) {
             gl.tex_parameter_i32(
                 target,
                 glow::TEXTURE_COMPARE_FUNC,
-                conv::compare_func(p.compare_func) as i32,
+                conv::value(p.compare_func) as i32,
             );
         }
     }

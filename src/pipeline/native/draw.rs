@@ -54,7 +54,7 @@ impl Arrays {
 /// Draws `g` (already validated by the model: arrays of equal length, indices in range).
 pub fn draw(g: &gl::Gl, geometry: &Geometry) {
     let arrays = Arrays::of(geometry);
-    let mode = conv::primitive(geometry.primitive);
+    let mode = conv::value(geometry.primitive);
     // SAFETY: every pointer names a live Vec of the right length for the vertex count; the
     // model checked that indices stay inside the arrays. No buffer object is bound to
     // ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER (the pipeline unbinds them), so the pointers are

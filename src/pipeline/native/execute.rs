@@ -20,23 +20,28 @@ use crate::pipeline::PipelineError;
 
 use super::bindings as gl;
 use super::bindings::types::GLbitfield;
-use super::{conv, draw, lighting, readback, texenv, textures, NativePipeline};
+use super::{conv, draw, lighting, readback, texenv, textures, Native};
+use crate::pipeline::core::Core;
 
-impl NativePipeline {
+impl Native {
     /// Issues the GL calls of `cmd`, which the model accepted.
-    pub(super) fn issue(&mut self, cmd: &Command) -> Result<(), PipelineError> {
+    pub(super) fn issue_calls(
+        &mut self,
+        core: &mut Core,
+        cmd: &Command,
+    ) -> Result<(), PipelineError> {
         let g = self.gl.raw();
         // SAFETY (all unsafe blocks of this match): plain GL calls on the current context;
         // pointer arguments point at local arrays of the size the entry point reads.
         match cmd {
-            Command::MatrixMode(m) => unsafe { g.MatrixMode(conv::matrix_mode(*m)) },
+            Command::MatrixMode(m) => unsafe { g.MatrixMode(conv::value(*m)) },
             Command::LoadIdentity => unsafe { g.LoadIdentity() },
             Command::LoadMatrix(m) => unsafe { g.LoadMatrixf(m.to_cols_array().as_ptr()) },
             Command::MultMatrix(m) => unsafe { g.MultMatrixf(m.to_cols_array().as_ptr()) },
             Command::PushMatrix => unsafe { g.PushMatrix() },
             Command::PopMatrix => {
                 unsafe { g.PopMatrix() };
-                if self.state.matrix_mode == MatrixMode::Texture {
+                if core.state.matrix_mode == MatrixMode::Texture {
                     reload_texture_matrix(g);
                 }
             }
@@ -88,22 +93,22 @@ impl NativePipeline {
             Command::LightModel(p) => lighting::light_model(g, *p),
             Command::Material { face, param } => lighting::material(g, *face, *param),
             Command::ColorMaterial { face, mode } => unsafe {
-                g.ColorMaterial(conv::face(*face), conv::color_material_mode(*mode))
+                g.ColorMaterial(conv::value(*face), conv::value(*mode))
             },
-            Command::ShadeModel(m) => unsafe { g.ShadeModel(conv::shade_model(*m)) },
+            Command::ShadeModel(m) => unsafe { g.ShadeModel(conv::value(*m)) },
             Command::ActiveTexture(u) => unsafe { g.ActiveTexture(conv::texture_unit(*u)) },
             Command::BindTexture { target, name } => self.textures.bind(g, *target, *name),
             Command::TexImage(t) => {
                 textures::tex_image(g, t);
-                self.counters.texture_uploads += 1;
+                core.counters.texture_uploads += 1;
             }
             Command::TexSubImage2D(t) => {
                 textures::tex_sub_image(g, t);
-                self.counters.texture_uploads += 1;
+                core.counters.texture_uploads += 1;
             }
             Command::CopyTexImage2D(c) => {
                 textures::copy_tex_image(g, c);
-                self.counters.texture_uploads += 1;
+                core.counters.texture_uploads += 1;
             }
             Command::TexParameter { target, param } => {
                 textures::tex_parameter(g, *target, *param);
@@ -116,39 +121,39 @@ impl NativePipeline {
             | Command::CombinerOutput { .. }
             | Command::FinalCombinerInput { .. } => {}
             Command::AlphaFunc { func, reference } => unsafe {
-                g.AlphaFunc(conv::compare_func(*func), *reference)
+                g.AlphaFunc(conv::value(*func), *reference)
             },
-            Command::DepthFunc(f) => unsafe { g.DepthFunc(conv::compare_func(*f)) },
+            Command::DepthFunc(f) => unsafe { g.DepthFunc(conv::value(*f)) },
             Command::DepthMask(b) => unsafe { g.DepthMask(u8::from(*b)) },
             Command::StencilFunc {
                 func,
                 reference,
                 mask,
-            } => unsafe { g.StencilFunc(conv::compare_func(*func), *reference, *mask) },
+            } => unsafe { g.StencilFunc(conv::value(*func), *reference, *mask) },
             Command::StencilOp {
                 fail,
                 depth_fail,
                 depth_pass,
             } => unsafe {
                 g.StencilOp(
-                    conv::stencil_op(*fail),
-                    conv::stencil_op(*depth_fail),
-                    conv::stencil_op(*depth_pass),
+                    conv::value(*fail),
+                    conv::value(*depth_fail),
+                    conv::value(*depth_pass),
                 )
             },
             Command::StencilMask(m) => unsafe { g.StencilMask(*m) },
             Command::BlendFunc { src, dst } => unsafe {
-                g.BlendFunc(conv::blend_factor(*src), conv::blend_factor(*dst))
+                g.BlendFunc(conv::value(*src), conv::value(*dst))
             },
             Command::ColorMask(m) => unsafe {
                 g.ColorMask(u8::from(m.r), u8::from(m.g), u8::from(m.b), u8::from(m.a))
             },
             Command::PolygonOffset { factor, units } => unsafe { g.PolygonOffset(*factor, *units) },
             Command::PolygonMode { face, mode } => unsafe {
-                g.PolygonMode(conv::face(*face), conv::polygon_mode(*mode))
+                g.PolygonMode(conv::value(*face), conv::value(*mode))
             },
-            Command::CullFace(f) => unsafe { g.CullFace(conv::face(*f)) },
-            Command::FrontFace(f) => unsafe { g.FrontFace(conv::front_face(*f)) },
+            Command::CullFace(f) => unsafe { g.CullFace(conv::value(*f)) },
+            Command::FrontFace(f) => unsafe { g.FrontFace(conv::value(*f)) },
             Command::LineWidth(w) => unsafe { g.LineWidth(*w) },
             Command::PointSize(s) => unsafe { g.PointSize(*s) },
             Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
@@ -157,18 +162,18 @@ impl NativePipeline {
             Command::ClearStencil(s) => unsafe { g.ClearStencil(*s) },
             Command::ReadPixels(r) => {
                 let bytes = readback::read_pixels(g, r);
-                self.readbacks.insert(r.slot, bytes);
+                core.readbacks.insert(r.slot, bytes);
             }
             Command::Draw(geometry) => {
-                if self.state.register_combiners.enabled {
+                if core.state.register_combiners.enabled {
                     return Err(PipelineError::Unsupported {
                         what: "NV_register_combiners (REGISTER_COMBINERS_NV enabled at a draw)",
                         path: "native",
                     });
                 }
                 draw::draw(g, geometry);
-                draw::restore_current(g, &self.state, geometry);
-                self.counters.draws += 1;
+                draw::restore_current(g, &core.state, geometry);
+                core.counters.draws += 1;
             }
         }
         Ok(())
@@ -202,61 +207,5 @@ fn clear_bits(mask: ClearMask) -> GLbitfield {
 
 /// The GL entry point a command becomes, named in errors GL raises for it.
 pub(super) fn gl_call(cmd: &Command) -> &'static str {
-    match cmd {
-        Command::MatrixMode(_) => "glMatrixMode",
-        Command::LoadIdentity => "glLoadIdentity",
-        Command::LoadMatrix(_) => "glLoadMatrixf",
-        Command::MultMatrix(_) => "glMultMatrixf",
-        Command::PushMatrix => "glPushMatrix",
-        Command::PopMatrix => "glPopMatrix",
-        Command::Translate(_) => "glTranslatef",
-        Command::Rotate { .. } => "glRotatef",
-        Command::Scale(_) => "glScalef",
-        Command::Frustum(_) => "glFrustum",
-        Command::Ortho(_) => "glOrtho",
-        Command::Viewport(_) => "glViewport",
-        Command::DepthRange { .. } => "glDepthRange",
-        Command::Enable(_) => "glEnable",
-        Command::Disable(_) => "glDisable",
-        Command::Color(_) => "glColor4f",
-        Command::Normal(_) => "glNormal3f",
-        Command::TexCoord { .. } => "glMultiTexCoord4f",
-        Command::Light { .. } => "glLight",
-        Command::LightModel(_) => "glLightModel",
-        Command::Material { .. } => "glMaterial",
-        Command::ColorMaterial { .. } => "glColorMaterial",
-        Command::ShadeModel(_) => "glShadeModel",
-        Command::ActiveTexture(_) => "glActiveTexture",
-        Command::BindTexture { .. } => "glBindTexture",
-        Command::TexImage(_) => "glTexImage",
-        Command::TexSubImage2D(_) => "glTexSubImage2D",
-        Command::CopyTexImage2D(_) => "glCopyTexImage2D",
-        Command::TexParameter { .. } => "glTexParameter",
-        Command::TexGen { .. } => "glTexGen",
-        Command::TexEnv(_) => "glTexEnv",
-        Command::CombinerParameter(_) => "glCombinerParameterNV",
-        Command::CombinerInput { .. } => "glCombinerInputNV",
-        Command::CombinerOutput { .. } => "glCombinerOutputNV",
-        Command::FinalCombinerInput { .. } => "glFinalCombinerInputNV",
-        Command::AlphaFunc { .. } => "glAlphaFunc",
-        Command::DepthFunc(_) => "glDepthFunc",
-        Command::DepthMask(_) => "glDepthMask",
-        Command::StencilFunc { .. } => "glStencilFunc",
-        Command::StencilOp { .. } => "glStencilOp",
-        Command::StencilMask(_) => "glStencilMask",
-        Command::BlendFunc { .. } => "glBlendFunc",
-        Command::ColorMask(_) => "glColorMask",
-        Command::PolygonOffset { .. } => "glPolygonOffset",
-        Command::PolygonMode { .. } => "glPolygonMode",
-        Command::CullFace(_) => "glCullFace",
-        Command::FrontFace(_) => "glFrontFace",
-        Command::LineWidth(_) => "glLineWidth",
-        Command::PointSize(_) => "glPointSize",
-        Command::Clear(_) => "glClear",
-        Command::ClearColor(_) => "glClearColor",
-        Command::ClearDepth(_) => "glClearDepth",
-        Command::ClearStencil(_) => "glClearStencil",
-        Command::ReadPixels(_) => "glReadPixels",
-        Command::Draw(_) => "glDrawArrays/glDrawElements",
-    }
+    cmd.entry().name()
 }

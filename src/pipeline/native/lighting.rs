@@ -53,17 +53,16 @@ pub fn light_model(g: &gl::Gl, param: LightModelParam) {
                 g.LightModeli(gl::LIGHT_MODEL_LOCAL_VIEWER, i32::from(b))
             }
             LightModelParam::TwoSide(b) => g.LightModeli(gl::LIGHT_MODEL_TWO_SIDE, i32::from(b)),
-            LightModelParam::ColorControl(c) => g.LightModeli(
-                gl::LIGHT_MODEL_COLOR_CONTROL,
-                conv::int(conv::color_control(c)),
-            ),
+            LightModelParam::ColorControl(c) => {
+                g.LightModeli(gl::LIGHT_MODEL_COLOR_CONTROL, conv::int(conv::value(c)))
+            }
         }
     }
 }
 
 /// glMaterial.
 pub fn material(g: &gl::Gl, face: Face, param: MaterialParam) {
-    let face = conv::face(face);
+    let face = conv::value(face);
     let (pname, v) = match param {
         MaterialParam::Ambient(c) => (gl::AMBIENT, c),
         MaterialParam::Diffuse(c) => (gl::DIFFUSE, c),

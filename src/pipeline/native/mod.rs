@@ -21,14 +21,14 @@ mod readback;
 mod texenv;
 mod textures;
 
-use std::collections::HashMap;
-
 use glow::HasContext;
 
-use crate::ff::{Command, FixedState, GlError};
+use crate::ff::Command;
 use crate::gpu::{GpuContext, Profile};
+use crate::vocab::PipelineKind;
 
-use super::{Counters, Pipeline, PipelineError, PipelineKind, Readback};
+use super::core::{Core, Issue, PathPipeline};
+use super::PipelineError;
 
 /// The legacy entry points of one compatibility context.
 pub struct NativeGl {
@@ -52,14 +52,15 @@ impl NativeGl {
     }
 }
 
-/// Commands executed by Mesa's fixed-function pipeline.
-pub struct NativePipeline {
+/// The native path's half of execution: the legacy entry points and the texture objects
+/// made through them.
+pub struct Native {
     gl: NativeGl,
-    state: FixedState,
     textures: textures::Textures,
-    readbacks: HashMap<u32, Readback>,
-    counters: Counters,
 }
+
+/// Commands executed by Mesa's fixed-function pipeline.
+pub type NativePipeline = PathPipeline<Native>;
 
 impl NativePipeline {
     /// A pipeline on `ctx`, which must be a current compatibility context.
@@ -69,24 +70,26 @@ impl NativePipeline {
             needs: Profile::Compatibility.name(),
             got: ctx.profile().name(),
         })?;
-        Ok(NativePipeline {
+        let path = Native {
             gl,
-            state: FixedState::new(),
             textures: textures::Textures::default(),
-            readbacks: HashMap::new(),
-            counters: Counters::default(),
-        })
+        };
+        Ok(PathPipeline::from_parts(Core::default(), path))
     }
 
     /// How many GL texture objects the pipeline holds.
     pub fn texture_objects(&self) -> usize {
-        self.textures.len()
+        self.path.textures.len()
     }
+}
+
+impl Issue for Native {
+    const KIND: PipelineKind = PipelineKind::Native;
 
     /// Unbinds what would redirect the legacy calls: a program (the fixed function runs only
     /// with program 0), a vertex array object and buffers (client arrays and pixel pointers
     /// must be client memory). Errors raised before this call are not ours: drained.
-    fn prepare(ctx: &GpuContext) {
+    fn begin(&mut self, ctx: &GpuContext) {
         let gl = ctx.gl();
         // SAFETY: plain GL calls on the current context.
         unsafe {
@@ -99,42 +102,18 @@ impl NativePipeline {
             gl.bind_buffer(glow::PIXEL_UNPACK_BUFFER, None);
         }
     }
-}
 
-impl Pipeline for NativePipeline {
-    fn kind(&self) -> PipelineKind {
-        PipelineKind::Native
-    }
-
-    fn execute(&mut self, ctx: &GpuContext, commands: &[Command]) -> Result<(), PipelineError> {
-        Self::prepare(ctx);
-        for cmd in commands {
-            self.counters.commands += 1;
-            let cmd = super::resolve_readback(cmd, &self.readbacks)?;
-            // A rejected command has no effect on GL (GL 1.5 §2.5): nothing is sent.
-            if self.state.apply(&cmd).is_err() {
-                continue;
-            }
-            self.issue(&cmd)?;
-            ctx.check_error(execute::gl_call(&cmd))?;
-        }
+    /// The legacy calls of `cmd`; a GL error the model did not raise means the two disagree,
+    /// and stops execution naming the call.
+    fn issue(
+        &mut self,
+        ctx: &GpuContext,
+        core: &mut Core,
+        cmd: &Command,
+    ) -> Result<(), PipelineError> {
+        self.issue_calls(core, cmd)?;
+        ctx.check_error(execute::gl_call(cmd))?;
         Ok(())
-    }
-
-    fn readback(&self, slot: u32) -> Option<&Readback> {
-        self.readbacks.get(&slot)
-    }
-
-    fn state(&self) -> &FixedState {
-        &self.state
-    }
-
-    fn take_gl_error(&mut self) -> Option<GlError> {
-        self.state.take_error()
-    }
-
-    fn counters(&self) -> Counters {
-        self.counters
     }
 
     fn release(&mut self, _ctx: &GpuContext) {

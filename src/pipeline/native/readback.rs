@@ -24,8 +24,8 @@ pub fn read_pixels(g: &gl::Gl, r: &ReadPixels) -> Readback {
             r.y,
             r.width,
             r.height,
-            conv::pixel_format(r.format),
-            conv::pixel_type(r.ty),
+            conv::value(r.format),
+            conv::value(r.ty),
             bytes.as_mut_ptr().cast::<c_void>(),
         );
     }

@@ -12,13 +12,11 @@ use super::conv;
 
 /// glTexGen for one coordinate of the active unit.
 pub fn texgen(g: &gl::Gl, coord: TexCoord, param: TexGenParam) {
-    let c = conv::tex_coord(coord);
+    let c = conv::value(coord);
     // SAFETY: plain GL calls; plane forms get four floats.
     unsafe {
         match param {
-            TexGenParam::Mode(m) => {
-                g.TexGeni(c, gl::TEXTURE_GEN_MODE, conv::int(conv::texgen_mode(m)))
-            }
+            TexGenParam::Mode(m) => g.TexGeni(c, gl::TEXTURE_GEN_MODE, conv::int(conv::value(m))),
             TexGenParam::ObjectPlane(p) => {
                 let a = p.to_array();
                 g.TexGenfv(c, gl::OBJECT_PLANE, a.as_ptr());
@@ -40,20 +38,18 @@ pub fn texenv(g: &gl::Gl, param: TexEnvParam) {
     };
     let arg = CombineArg::index;
     match param {
-        TexEnvParam::Mode(m) => int(gl::TEXTURE_ENV_MODE, conv::texenv_mode(m)),
+        TexEnvParam::Mode(m) => int(gl::TEXTURE_ENV_MODE, conv::value(m)),
         TexEnvParam::Color(c) => {
             let a = c.to_array();
             // SAFETY: four floats.
             unsafe { g.TexEnvfv(t, gl::TEXTURE_ENV_COLOR, a.as_ptr()) }
         }
-        TexEnvParam::CombineRgb(f) => int(gl::COMBINE_RGB, conv::combine_func(f)),
-        TexEnvParam::CombineAlpha(f) => int(gl::COMBINE_ALPHA, conv::combine_func(f)),
+        TexEnvParam::CombineRgb(f) => int(gl::COMBINE_RGB, conv::value(f)),
+        TexEnvParam::CombineAlpha(f) => int(gl::COMBINE_ALPHA, conv::value(f)),
         TexEnvParam::SourceRgb(a, s) => int(conv::source_rgb(arg(a)), conv::combine_source(s)),
         TexEnvParam::SourceAlpha(a, s) => int(conv::source_alpha(arg(a)), conv::combine_source(s)),
-        TexEnvParam::OperandRgb(a, o) => int(conv::operand_rgb(arg(a)), conv::combine_operand(o)),
-        TexEnvParam::OperandAlpha(a, o) => {
-            int(conv::operand_alpha(arg(a)), conv::combine_operand(o))
-        }
+        TexEnvParam::OperandRgb(a, o) => int(conv::operand_rgb(arg(a)), conv::value(o)),
+        TexEnvParam::OperandAlpha(a, o) => int(conv::operand_alpha(arg(a)), conv::value(o)),
         // SAFETY (both): plain GL calls on the current context.
         TexEnvParam::RgbScale(s) => unsafe { g.TexEnvf(t, gl::RGB_SCALE, s) },
         TexEnvParam::AlphaScale(s) => unsafe { g.TexEnvf(t, gl::ALPHA_SCALE, s) },

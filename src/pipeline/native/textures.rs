@@ -36,7 +36,7 @@ impl Textures {
             })
         };
         // SAFETY: plain GL call on the current context.
-        unsafe { g.BindTexture(conv::texture_target(target), object) };
+        unsafe { g.BindTexture(conv::value(target), object) };
     }
 
     /// How many GL objects exist.
@@ -61,9 +61,9 @@ pub fn tex_image(g: &gl::Gl, t: &TexImage) {
         .data
         .bytes()
         .map_or(std::ptr::null(), |d| d.as_ptr().cast::<c_void>());
-    let internal = conv::int(conv::tex_format(t.internal_format));
-    let format = conv::pixel_format(t.format);
-    let ty = conv::pixel_type(t.ty);
+    let internal = conv::int(conv::value(t.internal_format));
+    let format = conv::value(t.format);
+    let ty = conv::value(t.ty);
     // SAFETY: `pixels` is NULL or holds width·height·components·size bytes (model-checked);
     // UNPACK_ALIGNMENT is 1.
     unsafe {
@@ -106,8 +106,8 @@ pub fn tex_sub_image(g: &gl::Gl, t: &TexSubImage) {
             t.y,
             t.width,
             t.height,
-            conv::pixel_format(t.format),
-            conv::pixel_type(t.ty),
+            conv::value(t.format),
+            conv::value(t.ty),
             t.data.as_ptr().cast::<c_void>(),
         );
     }
@@ -120,7 +120,7 @@ pub fn copy_tex_image(g: &gl::Gl, c: &CopyTexImage) {
         g.CopyTexImage2D(
             gl::TEXTURE_2D,
             c.level,
-            conv::tex_format(c.internal_format),
+            conv::value(c.internal_format),
             c.x,
             c.y,
             c.width,
@@ -133,24 +133,24 @@ pub fn copy_tex_image(g: &gl::Gl, c: &CopyTexImage) {
 /// glTexParameter on the bound texture of `target`. Returns `false` for the one parameter
 /// with no native counterpart (the ARB_shadow_ambient fail value), which is not sent.
 pub fn tex_parameter(g: &gl::Gl, target: TextureTarget, param: TexParam) -> bool {
-    let t = conv::texture_target(target);
+    let t = conv::value(target);
     let int = |pname, value| {
         // SAFETY: plain GL call on the current context.
         unsafe { g.TexParameteri(t, pname, conv::int(value)) }
     };
     match param {
-        TexParam::MinFilter(f) => int(gl::TEXTURE_MIN_FILTER, conv::filter(f)),
-        TexParam::MagFilter(f) => int(gl::TEXTURE_MAG_FILTER, conv::filter(f)),
-        TexParam::WrapS(w) => int(gl::TEXTURE_WRAP_S, conv::wrap(w)),
-        TexParam::WrapT(w) => int(gl::TEXTURE_WRAP_T, conv::wrap(w)),
+        TexParam::MinFilter(f) => int(gl::TEXTURE_MIN_FILTER, conv::value(f)),
+        TexParam::MagFilter(f) => int(gl::TEXTURE_MAG_FILTER, conv::value(f)),
+        TexParam::WrapS(w) => int(gl::TEXTURE_WRAP_S, conv::value(w)),
+        TexParam::WrapT(w) => int(gl::TEXTURE_WRAP_T, conv::value(w)),
         TexParam::BorderColor(c) => {
             let c = c.to_array();
             // SAFETY: four floats.
             unsafe { g.TexParameterfv(t, gl::TEXTURE_BORDER_COLOR, c.as_ptr()) }
         }
-        TexParam::CompareMode(m) => int(gl::TEXTURE_COMPARE_MODE, conv::compare_mode(m)),
-        TexParam::CompareFunc(f) => int(gl::TEXTURE_COMPARE_FUNC, conv::compare_func(f)),
-        TexParam::DepthTextureMode(m) => int(gl::DEPTH_TEXTURE_MODE, conv::depth_texture_mode(m)),
+        TexParam::CompareMode(m) => int(gl::TEXTURE_COMPARE_MODE, conv::value(m)),
+        TexParam::CompareFunc(f) => int(gl::TEXTURE_COMPARE_FUNC, conv::value(f)),
+        TexParam::DepthTextureMode(m) => int(gl::DEPTH_TEXTURE_MODE, conv::value(m)),
         // ARB_shadow_ambient is absent from Mesa: the model keeps the value, GL never sees it.
         TexParam::CompareFailValue(_) => return false,
         TexParam::GenerateMipmap(b) => int(gl::GENERATE_MIPMAP, u32::from(b)),

@@ -4,11 +4,12 @@
 //! when it began, then writes its outputs through clamp((r + bias)·scale, −1, 1).
 
 use crate::ff::{
-    CombinerInput, CombinerOutput, ComponentUsage, Mapping, Precision, Product, Register, SumOrMux,
+    CombinerInput, CombinerOutput, ComponentUsage, Mapping, Product, Register, SumOrMux,
 };
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{CombinersKey, FragmentKey};
 use crate::pipeline::emulate::uniforms::UniformSource;
+use crate::vocab::Precision;
 
 /// Fixed8: q9(v) = clamp(⌊255v + ½⌋, −256, 255)/255 after every mapping, product and
 /// output (ff::precision); Float: the value itself.

@@ -4,12 +4,13 @@
 
 use crate::ff::{
     BaseFormat, Combine, CombineFunc, CombineOperand, CombineSource, CompareFunc, DepthTextureMode,
-    Precision, TextureTarget,
+    TextureTarget,
 };
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{EnvKey, FragmentKey, FragmentUnitKey, TexelKey};
 use crate::pipeline::emulate::polygon::EdgeRule;
 use crate::pipeline::emulate::uniforms::UniformSource;
+use crate::vocab::Precision;
 
 pub fn generate(key: &FragmentKey) -> GlslWriter {
     let mut w = GlslWriter::new();

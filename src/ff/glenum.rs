@@ -1,0 +1,454 @@
+//! The model's enums as GL enumerants: one table per enum giving each value its token
+//! name and its GLenum value. The values come from the Khronos registry (`build.rs` writes
+//! every enumerant as a constant; an entry names the constant, and its string is made from
+//! the same identifier), so neither a name nor a number is typed twice. The script reader
+//! and printer use the names; both pipelines use the values (the emulated path's core
+//! substitutions — legacy formats as R8/RG8 storage, CLAMP as CLAMP_TO_BORDER — are the
+//! documented exceptions in `pipeline::emulate::conv`).
+//!
+//! A value may appear again under an alias (accepted when parsing, never printed or sent:
+//! the first entry is the canonical one). Indexed families (GL_LIGHTi, GL_TEXTUREi,
+//! GL_COMBINERi_NV) are not tables: `LIGHT0 + i`.
+
+use super::*;
+
+/// Every enumerant of the registry, as `pub const NAME: u32`.
+#[allow(dead_code, non_upper_case_globals, clippy::unreadable_literal)]
+pub mod registry {
+    include!(concat!(env!("OUT_DIR"), "/gl_enums.rs"));
+}
+
+/// An enum of the model with GL token names and values.
+pub trait GlEnum: Copy + PartialEq + 'static {
+    /// (token name, value, model value); the first entry of a model value is canonical.
+    const TABLE: &'static [(&'static str, u32, Self)];
+
+    /// The printed name, if the value has one.
+    fn gl_name(self) -> Option<&'static str> {
+        Self::TABLE
+            .iter()
+            .find(|(_, _, v)| *v == self)
+            .map(|(n, _, _)| *n)
+    }
+
+    /// The GLenum value (of the canonical entry).
+    fn gl_value(self) -> Option<u32> {
+        Self::TABLE
+            .iter()
+            .find(|(_, _, v)| *v == self)
+            .map(|(_, e, _)| *e)
+    }
+
+    fn from_gl_name(name: &str) -> Option<Self> {
+        Self::TABLE
+            .iter()
+            .find(|(n, _, _)| *n == name)
+            .map(|(_, _, v)| *v)
+    }
+
+    fn from_gl_value(value: u32) -> Option<Self> {
+        Self::TABLE
+            .iter()
+            .find(|(_, e, _)| *e == value)
+            .map(|(_, _, v)| *v)
+    }
+
+    fn names() -> Vec<&'static str> {
+        Self::TABLE.iter().map(|(n, _, _)| *n).collect()
+    }
+}
+
+/// The GLenum of a model value that every table lists (a test checks each table covers its
+/// enum; a value without an entry is a bug, reported as 0 = GL_NONE / GL_ZERO / GL_FALSE).
+pub fn gl<T: GlEnum>(v: T) -> u32 {
+    v.gl_value().unwrap_or(0)
+}
+
+/// GL_LIGHTi.
+pub fn light(i: u8) -> u32 {
+    registry::LIGHT0 + u32::from(i)
+}
+
+/// GL_TEXTUREi.
+pub fn texture_unit(i: u8) -> u32 {
+    registry::TEXTURE0 + u32::from(i)
+}
+
+/// GL_COMBINERi_NV.
+pub fn combiner(i: u8) -> u32 {
+    registry::COMBINER0_NV + u32::from(i)
+}
+
+macro_rules! gl_enums {
+    ($ty:ty { $($name:ident => $val:expr),* $(,)? }) => {
+        impl GlEnum for $ty {
+            const TABLE: &'static [(&'static str, u32, Self)] =
+                &[$((concat!("GL_", stringify!($name)), registry::$name, $val)),*];
+        }
+    };
+}
+
+gl_enums!(MatrixMode {
+    MODELVIEW => MatrixMode::Modelview,
+    PROJECTION => MatrixMode::Projection,
+    TEXTURE => MatrixMode::Texture,
+});
+
+gl_enums!(Capability {
+    LIGHTING => Capability::Lighting,
+    COLOR_MATERIAL => Capability::ColorMaterial,
+    NORMALIZE => Capability::Normalize,
+    RESCALE_NORMAL => Capability::RescaleNormal,
+    TEXTURE_1D => Capability::Texture1D,
+    TEXTURE_2D => Capability::Texture2D,
+    TEXTURE_GEN_S => Capability::TextureGen(TexCoord::S),
+    TEXTURE_GEN_T => Capability::TextureGen(TexCoord::T),
+    TEXTURE_GEN_R => Capability::TextureGen(TexCoord::R),
+    TEXTURE_GEN_Q => Capability::TextureGen(TexCoord::Q),
+    ALPHA_TEST => Capability::AlphaTest,
+    DEPTH_TEST => Capability::DepthTest,
+    STENCIL_TEST => Capability::StencilTest,
+    BLEND => Capability::Blend,
+    CULL_FACE => Capability::CullFace,
+    POLYGON_OFFSET_FILL => Capability::PolygonOffsetFill,
+    POLYGON_OFFSET_LINE => Capability::PolygonOffsetLine,
+    POLYGON_OFFSET_POINT => Capability::PolygonOffsetPoint,
+    REGISTER_COMBINERS_NV => Capability::RegisterCombiners,
+});
+
+gl_enums!(CompareFunc {
+    NEVER => CompareFunc::Never,
+    LESS => CompareFunc::Less,
+    EQUAL => CompareFunc::Equal,
+    LEQUAL => CompareFunc::Lequal,
+    GREATER => CompareFunc::Greater,
+    NOTEQUAL => CompareFunc::Notequal,
+    GEQUAL => CompareFunc::Gequal,
+    ALWAYS => CompareFunc::Always,
+});
+
+gl_enums!(StencilOp {
+    KEEP => StencilOp::Keep,
+    ZERO => StencilOp::Zero,
+    REPLACE => StencilOp::Replace,
+    INCR => StencilOp::Incr,
+    DECR => StencilOp::Decr,
+    INVERT => StencilOp::Invert,
+    INCR_WRAP => StencilOp::IncrWrap,
+    DECR_WRAP => StencilOp::DecrWrap,
+});
+
+gl_enums!(BlendFactor {
+    ZERO => BlendFactor::Zero,
+    ONE => BlendFactor::One,
+    SRC_COLOR => BlendFactor::SrcColor,
+    ONE_MINUS_SRC_COLOR => BlendFactor::OneMinusSrcColor,
+    DST_COLOR => BlendFactor::DstColor,
+    ONE_MINUS_DST_COLOR => BlendFactor::OneMinusDstColor,
+    SRC_ALPHA => BlendFactor::SrcAlpha,
+    ONE_MINUS_SRC_ALPHA => BlendFactor::OneMinusSrcAlpha,
+    DST_ALPHA => BlendFactor::DstAlpha,
+    ONE_MINUS_DST_ALPHA => BlendFactor::OneMinusDstAlpha,
+    SRC_ALPHA_SATURATE => BlendFactor::SrcAlphaSaturate,
+});
+
+gl_enums!(Face {
+    FRONT => Face::Front,
+    BACK => Face::Back,
+    FRONT_AND_BACK => Face::FrontAndBack,
+});
+
+gl_enums!(FrontFace { CW => FrontFace::Cw, CCW => FrontFace::Ccw });
+
+gl_enums!(PolygonMode {
+    POINT => PolygonMode::Point,
+    LINE => PolygonMode::Line,
+    FILL => PolygonMode::Fill,
+});
+
+gl_enums!(ShadeModel { FLAT => ShadeModel::Flat, SMOOTH => ShadeModel::Smooth });
+
+gl_enums!(Primitive {
+    POINTS => Primitive::Points,
+    LINES => Primitive::Lines,
+    LINE_STRIP => Primitive::LineStrip,
+    TRIANGLES => Primitive::Triangles,
+    TRIANGLE_STRIP => Primitive::TriangleStrip,
+    TRIANGLE_FAN => Primitive::TriangleFan,
+    QUADS => Primitive::Quads,
+    QUAD_STRIP => Primitive::QuadStrip,
+    POLYGON => Primitive::Polygon,
+});
+
+gl_enums!(ColorMaterialMode {
+    AMBIENT => ColorMaterialMode::Ambient,
+    DIFFUSE => ColorMaterialMode::Diffuse,
+    SPECULAR => ColorMaterialMode::Specular,
+    EMISSION => ColorMaterialMode::Emission,
+    AMBIENT_AND_DIFFUSE => ColorMaterialMode::AmbientAndDiffuse,
+});
+
+gl_enums!(ColorControl {
+    SINGLE_COLOR => ColorControl::SingleColor,
+    SEPARATE_SPECULAR_COLOR => ColorControl::SeparateSpecularColor,
+});
+
+gl_enums!(TextureTarget {
+    TEXTURE_1D => TextureTarget::Texture1D,
+    TEXTURE_2D => TextureTarget::Texture2D,
+});
+
+// Unsized names of the era are accepted as aliases of the sized formats they give.
+gl_enums!(TexFormat {
+    RGBA8 => TexFormat::Rgba8,
+    RGB8 => TexFormat::Rgb8,
+    LUMINANCE8 => TexFormat::Luminance8,
+    INTENSITY8 => TexFormat::Intensity8,
+    ALPHA8 => TexFormat::Alpha8,
+    LUMINANCE8_ALPHA8 => TexFormat::Luminance8Alpha8,
+    DEPTH_COMPONENT16 => TexFormat::DepthComponent16,
+    DEPTH_COMPONENT24 => TexFormat::DepthComponent24,
+    DEPTH_COMPONENT32F => TexFormat::DepthComponent32F,
+    RGBA => TexFormat::Rgba8,
+    RGB => TexFormat::Rgb8,
+    LUMINANCE => TexFormat::Luminance8,
+    INTENSITY => TexFormat::Intensity8,
+    ALPHA => TexFormat::Alpha8,
+    LUMINANCE_ALPHA => TexFormat::Luminance8Alpha8,
+    DEPTH_COMPONENT => TexFormat::DepthComponent24,
+});
+
+gl_enums!(PixelFormat {
+    RGBA => PixelFormat::Rgba,
+    RGB => PixelFormat::Rgb,
+    LUMINANCE => PixelFormat::Luminance,
+    LUMINANCE_ALPHA => PixelFormat::LuminanceAlpha,
+    ALPHA => PixelFormat::Alpha,
+    DEPTH_COMPONENT => PixelFormat::DepthComponent,
+    STENCIL_INDEX => PixelFormat::StencilIndex,
+});
+
+gl_enums!(PixelType {
+    UNSIGNED_BYTE => PixelType::UnsignedByte,
+    UNSIGNED_SHORT => PixelType::UnsignedShort,
+    UNSIGNED_INT => PixelType::UnsignedInt,
+    FLOAT => PixelType::Float,
+});
+
+gl_enums!(Filter {
+    NEAREST => Filter::Nearest,
+    LINEAR => Filter::Linear,
+    NEAREST_MIPMAP_NEAREST => Filter::NearestMipmapNearest,
+    LINEAR_MIPMAP_NEAREST => Filter::LinearMipmapNearest,
+    NEAREST_MIPMAP_LINEAR => Filter::NearestMipmapLinear,
+    LINEAR_MIPMAP_LINEAR => Filter::LinearMipmapLinear,
+});
+
+gl_enums!(Wrap {
+    REPEAT => Wrap::Repeat,
+    CLAMP => Wrap::Clamp,
+    CLAMP_TO_EDGE => Wrap::ClampToEdge,
+    CLAMP_TO_BORDER => Wrap::ClampToBorder,
+});
+
+gl_enums!(CompareMode {
+    NONE => CompareMode::None,
+    COMPARE_R_TO_TEXTURE => CompareMode::CompareRToTexture,
+    COMPARE_R_TO_TEXTURE_ARB => CompareMode::CompareRToTexture,
+});
+
+gl_enums!(DepthTextureMode {
+    LUMINANCE => DepthTextureMode::Luminance,
+    INTENSITY => DepthTextureMode::Intensity,
+    ALPHA => DepthTextureMode::Alpha,
+});
+
+gl_enums!(TexCoord {
+    S => TexCoord::S,
+    T => TexCoord::T,
+    R => TexCoord::R,
+    Q => TexCoord::Q,
+});
+
+gl_enums!(TexGenMode {
+    OBJECT_LINEAR => TexGenMode::ObjectLinear,
+    EYE_LINEAR => TexGenMode::EyeLinear,
+    SPHERE_MAP => TexGenMode::SphereMap,
+});
+
+gl_enums!(TexEnvMode {
+    MODULATE => TexEnvMode::Modulate,
+    REPLACE => TexEnvMode::Replace,
+    DECAL => TexEnvMode::Decal,
+    BLEND => TexEnvMode::Blend,
+    ADD => TexEnvMode::Add,
+    COMBINE => TexEnvMode::Combine,
+});
+
+gl_enums!(CombineFunc {
+    REPLACE => CombineFunc::Replace,
+    MODULATE => CombineFunc::Modulate,
+    ADD => CombineFunc::Add,
+    ADD_SIGNED => CombineFunc::AddSigned,
+    INTERPOLATE => CombineFunc::Interpolate,
+    SUBTRACT => CombineFunc::Subtract,
+    DOT3_RGB => CombineFunc::Dot3Rgb,
+    DOT3_RGBA => CombineFunc::Dot3Rgba,
+});
+
+// Without TEXTUREi (a `Family`).
+gl_enums!(CombineSource {
+    TEXTURE => CombineSource::Texture,
+    CONSTANT => CombineSource::Constant,
+    PRIMARY_COLOR => CombineSource::PrimaryColor,
+    PREVIOUS => CombineSource::Previous,
+});
+
+gl_enums!(CombineOperand {
+    SRC_COLOR => CombineOperand::SrcColor,
+    ONE_MINUS_SRC_COLOR => CombineOperand::OneMinusSrcColor,
+    SRC_ALPHA => CombineOperand::SrcAlpha,
+    ONE_MINUS_SRC_ALPHA => CombineOperand::OneMinusSrcAlpha,
+});
+
+// Without TEXTUREi_ARB (a `Family`).
+gl_enums!(Register {
+    ZERO => Register::Zero,
+    CONSTANT_COLOR0_NV => Register::ConstantColor0,
+    CONSTANT_COLOR1_NV => Register::ConstantColor1,
+    FOG => Register::Fog,
+    PRIMARY_COLOR_NV => Register::PrimaryColor,
+    SECONDARY_COLOR_NV => Register::SecondaryColor,
+    SPARE0_NV => Register::Spare0,
+    SPARE1_NV => Register::Spare1,
+    DISCARD_NV => Register::Discard,
+    E_TIMES_F_NV => Register::ETimesF,
+    SPARE0_PLUS_SECONDARY_COLOR_NV => Register::Spare0PlusSecondaryColor,
+});
+
+gl_enums!(Portion { RGB => Portion::Rgb, ALPHA => Portion::Alpha });
+
+gl_enums!(ComponentUsage {
+    RGB => ComponentUsage::Rgb,
+    ALPHA => ComponentUsage::Alpha,
+    BLUE => ComponentUsage::Blue,
+});
+
+gl_enums!(Variable {
+    VARIABLE_A_NV => Variable::A,
+    VARIABLE_B_NV => Variable::B,
+    VARIABLE_C_NV => Variable::C,
+    VARIABLE_D_NV => Variable::D,
+});
+
+gl_enums!(FinalVariable {
+    VARIABLE_A_NV => FinalVariable::A,
+    VARIABLE_B_NV => FinalVariable::B,
+    VARIABLE_C_NV => FinalVariable::C,
+    VARIABLE_D_NV => FinalVariable::D,
+    VARIABLE_E_NV => FinalVariable::E,
+    VARIABLE_F_NV => FinalVariable::F,
+    VARIABLE_G_NV => FinalVariable::G,
+});
+
+gl_enums!(Mapping {
+    UNSIGNED_IDENTITY_NV => Mapping::UnsignedIdentity,
+    UNSIGNED_INVERT_NV => Mapping::UnsignedInvert,
+    EXPAND_NORMAL_NV => Mapping::ExpandNormal,
+    EXPAND_NEGATE_NV => Mapping::ExpandNegate,
+    HALF_BIAS_NORMAL_NV => Mapping::HalfBiasNormal,
+    HALF_BIAS_NEGATE_NV => Mapping::HalfBiasNegate,
+    SIGNED_IDENTITY_NV => Mapping::SignedIdentity,
+    SIGNED_NEGATE_NV => Mapping::SignedNegate,
+});
+
+gl_enums!(CombinerScale {
+    NONE => CombinerScale::None,
+    SCALE_BY_TWO_NV => CombinerScale::ByTwo,
+    SCALE_BY_FOUR_NV => CombinerScale::ByFour,
+    SCALE_BY_ONE_HALF_NV => CombinerScale::ByOneHalf,
+});
+
+gl_enums!(CombinerBias {
+    NONE => CombinerBias::None,
+    BIAS_BY_NEGATIVE_ONE_HALF_NV => CombinerBias::ByNegativeOneHalf,
+});
+
+gl_enums!(Product { FALSE => Product::Componentwise, TRUE => Product::Dot });
+
+gl_enums!(SumOrMux { FALSE => SumOrMux::Sum, TRUE => SumOrMux::Mux });
+
+gl_enums!(bool { FALSE => false, TRUE => true });
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each value's canonical name and number are the registry's pair.
+    #[test]
+    fn names_and_values_agree_with_the_registry() {
+        assert_eq!(MatrixMode::Modelview.gl_value(), Some(0x1700));
+        assert_eq!(MatrixMode::Modelview.gl_name(), Some("GL_MODELVIEW"));
+        assert_eq!(TexFormat::DepthComponent32F.gl_value(), Some(0x8CAC));
+        assert_eq!(Register::Spare0.gl_value(), Some(0x852E));
+        assert_eq!(CompareMode::CompareRToTexture.gl_value(), Some(0x884E));
+        assert_eq!(TexFormat::from_gl_value(0x1908), Some(TexFormat::Rgba8)); // GL_RGBA alias
+        assert_eq!(light(3), 0x4003);
+        assert_eq!(texture_unit(2), 0x84C2);
+        assert_eq!(combiner(1), 0x8551);
+    }
+
+    /// Every variant of each table's enum has an entry (`gl` never falls back to 0 for a
+    /// value the model can hold).
+    #[test]
+    fn tables_cover_their_enums() {
+        fn covers<T: GlEnum + std::fmt::Debug>(values: &[T]) {
+            for v in values {
+                assert!(v.gl_value().is_some(), "{v:?} has no GL enumerant");
+            }
+        }
+        covers(&[
+            MatrixMode::Modelview,
+            MatrixMode::Projection,
+            MatrixMode::Texture,
+        ]);
+        covers(&[
+            CompareFunc::Never,
+            CompareFunc::Less,
+            CompareFunc::Equal,
+            CompareFunc::Lequal,
+            CompareFunc::Greater,
+            CompareFunc::Notequal,
+            CompareFunc::Gequal,
+            CompareFunc::Always,
+        ]);
+        covers(&[
+            Primitive::Points,
+            Primitive::Lines,
+            Primitive::LineStrip,
+            Primitive::Triangles,
+            Primitive::TriangleStrip,
+            Primitive::TriangleFan,
+            Primitive::Quads,
+            Primitive::QuadStrip,
+            Primitive::Polygon,
+        ]);
+        covers(&[
+            TexFormat::Rgba8,
+            TexFormat::Rgb8,
+            TexFormat::Luminance8,
+            TexFormat::Intensity8,
+            TexFormat::Alpha8,
+            TexFormat::Luminance8Alpha8,
+            TexFormat::DepthComponent16,
+            TexFormat::DepthComponent24,
+            TexFormat::DepthComponent32F,
+        ]);
+        covers(&[
+            Wrap::Repeat,
+            Wrap::Clamp,
+            Wrap::ClampToEdge,
+            Wrap::ClampToBorder,
+        ]);
+    }
+}

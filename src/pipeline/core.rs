@@ -1,0 +1,100 @@
+//! The front end both paths share. A Command reaches GL in the same four steps on either
+//! path: it is counted; a `TexData::Readback` is replaced by the bytes of its slot; it is
+//! folded into the model (`FixedState::apply`), and a command the model rejects — an invalid
+//! enum or value, a stack overflow — records the GL error and sends nothing (GL 1.5 §2.5);
+//! an accepted command is then *issued* by the path: real legacy calls (`native`) or the
+//! state sync and draws of generated programs (`emulate`). Only that last step differs, so
+//! it is the only thing a path implements ([`Issue`]).
+
+use std::collections::HashMap;
+
+use super::{Counters, Pipeline, PipelineError, Readback};
+use crate::ff::{Command, FixedState, GlError};
+use crate::gpu::GpuContext;
+use crate::vocab::PipelineKind;
+
+/// What every path keeps: the model state, the bytes of each ReadPixels by slot, and the
+/// counts both paths report the same way.
+#[derive(Default)]
+pub struct Core {
+    pub state: FixedState,
+    pub readbacks: HashMap<u32, Readback>,
+    pub counters: Counters,
+}
+
+/// One path's half of execution.
+pub trait Issue {
+    /// Which path this is.
+    const KIND: PipelineKind;
+
+    /// Before a list of commands runs (the native path unbinds what would redirect legacy
+    /// calls).
+    fn begin(&mut self, _ctx: &GpuContext) {}
+
+    /// The GL work of `cmd`, which the model in `core.state` has just accepted.
+    fn issue(
+        &mut self,
+        ctx: &GpuContext,
+        core: &mut Core,
+        cmd: &Command,
+    ) -> Result<(), PipelineError>;
+
+    /// The core's counters with what only this path counts added.
+    fn counters(&self, core: &Counters) -> Counters {
+        *core
+    }
+
+    /// Deletes every GL object the path made.
+    fn release(&mut self, ctx: &GpuContext);
+}
+
+/// A [`Pipeline`] made of the shared front end and one path's [`Issue`].
+pub struct PathPipeline<P: Issue> {
+    pub(crate) core: Core,
+    pub(crate) path: P,
+}
+
+impl<P: Issue> PathPipeline<P> {
+    pub(crate) fn from_parts(core: Core, path: P) -> Self {
+        PathPipeline { core, path }
+    }
+}
+
+impl<P: Issue> Pipeline for PathPipeline<P> {
+    fn kind(&self) -> PipelineKind {
+        P::KIND
+    }
+
+    fn execute(&mut self, ctx: &GpuContext, commands: &[Command]) -> Result<(), PipelineError> {
+        self.path.begin(ctx);
+        for cmd in commands {
+            self.core.counters.commands += 1;
+            let cmd = super::resolve_readback(cmd, &self.core.readbacks)?;
+            if self.core.state.apply(&cmd).is_err() {
+                continue;
+            }
+            self.path.issue(ctx, &mut self.core, &cmd)?;
+        }
+        Ok(())
+    }
+
+    fn readback(&self, slot: u32) -> Option<&Readback> {
+        self.core.readbacks.get(&slot)
+    }
+
+    fn state(&self) -> &FixedState {
+        &self.core.state
+    }
+
+    fn take_gl_error(&mut self) -> Option<GlError> {
+        self.core.state.take_error()
+    }
+
+    fn counters(&self) -> Counters {
+        self.path.counters(&self.core.counters)
+    }
+
+    fn release(&mut self, ctx: &GpuContext) {
+        self.path.release(ctx);
+    }
+}
