@@ -93,3 +93,29 @@ fn shaders_of_the_default_scene_frame_light_without_texturing() {
     assert!(out.contains("u_light0_diffuse"), "{out}");
     assert!(!out.contains("sampler") && !out.contains("v_tc"), "{out}");
 }
+
+/// A GL error met while replaying goes to stderr with the script line that raised it, for
+/// every error, not only the first.
+#[test]
+fn replay_names_the_line_of_each_gl_error() {
+    let dir = support::output_dir();
+    let script = dir.join("replay-errors.c");
+    std::fs::write(
+        &script,
+        "#include <GL/gl.h>\nglLoadIdentity();\nglPopMatrix();\nglClearColor(0, 0, 0, 1);\nglLineWidth(-1);\n",
+    )
+    .expect("write script");
+    let out_png = dir.join("replay-errors.png");
+    let (ok, stdout, err) = fixedfunc(&[
+        "replay",
+        script.to_str().expect("utf-8"),
+        "--size",
+        "2x2",
+        "--out",
+        out_png.to_str().expect("utf-8"),
+    ]);
+    assert!(ok, "{err}");
+    assert!(err.contains("replay-errors.c:3: glPopMatrix:"), "{err}");
+    assert!(err.contains("replay-errors.c:5: glLineWidth:"), "{err}");
+    assert!(!stdout.contains("GL error"), "{stdout}");
+}

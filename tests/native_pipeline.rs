@@ -7,6 +7,7 @@ mod support;
 use fixedfunc::vocab::DepthBits;
 use std::sync::Arc;
 
+use fixedfunc::ff::matrix::{MODELVIEW_STACK_DEPTH, PROJECTION_STACK_DEPTH, TEXTURE_STACK_DEPTH};
 use fixedfunc::ff::{
     Capability, ClearMask, CombineArg, CombineFunc, CombineOperand, CombineSource, CompareFunc,
     Face, Filter, Geometry, GlErrorKind, MaterialParam, PixelFormat, PixelType, Primitive,
@@ -672,15 +673,15 @@ fn register_combiners_are_unsupported_natively() {
 
 /// A command the model rejects sends nothing to GL: GL raises no error of its own, its state
 /// is unchanged, and `take_gl_error` reports the model's error once. The texture stack is
-/// the sharp case: Mesa's is deeper than the model's GL minimum of 2, so GL would have
-/// accepted the third push.
+/// the sharp case: the push beyond the model's depth (Mesa's, 10) is rejected before GL
+/// sees it.
 #[test]
 fn rejected_commands_leave_gl_untouched() {
     for backend in support::HEADLESS {
         let (ctx, _t, mut pipe) = setup(backend, 4, 4, false);
         let native = NativeGl::load(&ctx).expect("compatibility");
         let g = native.raw();
-        let cmds = [
+        let mut cmds = vec![
             Command::Viewport(Viewport {
                 x: 0,
                 y: 0,
@@ -695,10 +696,12 @@ fn rejected_commands_leave_gl_untouched() {
             }),
             Command::LineWidth(-1.0),
             Command::MatrixMode(MatrixMode::Texture),
-            Command::PushMatrix,
-            Command::PushMatrix,
-            Command::MatrixMode(MatrixMode::Modelview),
         ];
+        cmds.extend(std::iter::repeat_n(
+            Command::PushMatrix,
+            TEXTURE_STACK_DEPTH,
+        ));
+        cmds.push(Command::MatrixMode(MatrixMode::Modelview));
         pipe.execute(&ctx, &cmds).expect("execute");
         assert_no_gl_error(&ctx);
         let first = pipe.take_gl_error().expect("the model's error");
@@ -719,9 +722,15 @@ fn rejected_commands_leave_gl_untouched() {
             [0, 0, 3, 3],
             "{backend}: the accepted viewport only"
         );
-        assert_eq!(depth, 2, "{backend}: the rejected push never reached GL");
+        assert_eq!(
+            depth, TEXTURE_STACK_DEPTH as i32,
+            "{backend}: the rejected push never reached GL"
+        );
         assert_eq!(line, 1.0);
-        assert_eq!(pipe.state().texture_matrices[0].depth(), 2);
+        assert_eq!(
+            pipe.state().texture_matrices[0].depth(),
+            TEXTURE_STACK_DEPTH
+        );
         assert_eq!(pipe.counters().commands, cmds.len() as u64);
         assert_no_gl_error(&ctx);
     }
@@ -735,4 +744,31 @@ fn a_core_context_is_the_wrong_profile() {
         .err()
         .expect("core context refused");
     assert!(matches!(err, PipelineError::WrongProfile { .. }), "{err}");
+}
+
+/// The model's matrix stacks are as deep as Mesa's (GL_MAX_*_STACK_DEPTH), so a program
+/// overflows on the emulated path exactly where it overflows natively.
+#[test]
+fn matrix_stack_depths_are_mesas() {
+    for backend in support::HEADLESS {
+        let (ctx, _t, _pipe) = setup(backend, 4, 4, false);
+        let native = NativeGl::load(&ctx).expect("compatibility");
+        let g = native.raw();
+        let mut depths = [0i32; 3];
+        unsafe {
+            g.GetIntegerv(gl::MAX_MODELVIEW_STACK_DEPTH, &mut depths[0]);
+            g.GetIntegerv(gl::MAX_PROJECTION_STACK_DEPTH, &mut depths[1]);
+            g.GetIntegerv(gl::MAX_TEXTURE_STACK_DEPTH, &mut depths[2]);
+        }
+        assert_eq!(
+            depths.map(|d| d as usize),
+            [
+                MODELVIEW_STACK_DEPTH,
+                PROJECTION_STACK_DEPTH,
+                TEXTURE_STACK_DEPTH
+            ],
+            "{backend}"
+        );
+        assert_no_gl_error(&ctx);
+    }
 }

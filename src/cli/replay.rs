@@ -20,7 +20,7 @@ pub fn run(
     size: ImageSize,
     out: &Path,
 ) -> Result<(), CliError> {
-    let commands = script_io::load(file)?;
+    let commands = script_io::load_lines(file)?;
     let _display = if backend == Backend::Window {
         VirtualDisplay::start_if_needed()?
     } else {
@@ -35,7 +35,17 @@ pub fn run(
         TargetSpec::new(size.width, size.height, DepthBits::D24).with_stencil(),
     )?;
     let mut p = pipeline::create(kind, &ctx)?;
-    p.execute(&ctx, &commands)?;
+    // One command at a time, so a GL error names the script line that raised it (GL keeps
+    // only the first error until glGetError; a script has no glGetError, so each is read
+    // and reported as it happens).
+    let mut errors = 0usize;
+    for (line, cmd) in &commands {
+        p.execute(&ctx, std::slice::from_ref(cmd))?;
+        if let Some(e) = p.take_gl_error() {
+            errors += 1;
+            eprintln!("{}:{line}: {}: {e}", file.display(), cmd.entry().name());
+        }
+    }
     let image = target.read_color(&ctx)?;
     super::scene_arg::save(&image, &out.to_path_buf())?;
     let c = p.counters();
@@ -49,8 +59,8 @@ pub fn run(
         c.state_calls_skipped,
         out.display()
     );
-    if let Some(e) = p.take_gl_error() {
-        println!("first GL error recorded: {e}");
+    if errors > 0 {
+        eprintln!("{errors} GL error(s) recorded (each named above with its line)");
     }
     p.release(&ctx);
     Ok(())

@@ -4,20 +4,21 @@
 //! (§2.11.2), so the last command issued is the first applied to a vertex. Matrices are
 //! column-major, as `glLoadMatrixf` reads them and as glam stores them.
 //!
-//! Stack depths are the GL minimums (modelview 32, projection 2, texture 2, Table 6.43):
-//! a script that runs here runs on every conforming implementation. Mesa allows deeper
-//! projection and texture stacks, so a script that overflows here may still run natively.
+//! Stack depths are Mesa's (modelview 32, projection 32, texture 10; the GL minimums of
+//! Table 6.43 are 32, 2 and 2): a program that runs on Mesa's native path runs here, and
+//! overflows where Mesa overflows (a test reads the native GL_MAX_*_STACK_DEPTH).
 
 use glam::{Mat4, Vec3, Vec4};
 
 use super::error::{GlError, GlResult};
 
-/// GL_MAX_MODELVIEW_STACK_DEPTH (GL minimum).
+/// GL_MAX_MODELVIEW_STACK_DEPTH (Mesa's MAX_MODELVIEW_STACK_DEPTH).
 pub const MODELVIEW_STACK_DEPTH: usize = 32;
-/// GL_MAX_PROJECTION_STACK_DEPTH (GL minimum).
-pub const PROJECTION_STACK_DEPTH: usize = 2;
-/// GL_MAX_TEXTURE_STACK_DEPTH (GL minimum), per texture unit.
-pub const TEXTURE_STACK_DEPTH: usize = 2;
+/// GL_MAX_PROJECTION_STACK_DEPTH (Mesa's MAX_PROJECTION_STACK_DEPTH; GL's minimum is 2).
+pub const PROJECTION_STACK_DEPTH: usize = 32;
+/// GL_MAX_TEXTURE_STACK_DEPTH per texture unit (Mesa's MAX_TEXTURE_STACK_DEPTH; GL's
+/// minimum is 2).
+pub const TEXTURE_STACK_DEPTH: usize = 10;
 
 /// The stack that matrix commands act on (glMatrixMode). `Texture` means the texture matrix
 /// of the texture unit active when each matrix command runs (GL 1.5 §2.11.2).

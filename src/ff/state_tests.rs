@@ -18,8 +18,8 @@ fn initial_values() {
     assert_eq!(s.matrix_mode, MatrixMode::Modelview);
     assert_eq!(s.modelview_matrix(), Mat4::IDENTITY);
     assert_eq!(s.modelview.max_depth(), 32);
-    assert_eq!(s.projection.max_depth(), 2);
-    assert_eq!(s.texture_matrices[7].max_depth(), 2);
+    assert_eq!(s.projection.max_depth(), 32);
+    assert_eq!(s.texture_matrices[7].max_depth(), 10);
     assert_eq!(s.current.color, Vec4::ONE);
     assert_eq!(s.current.normal, Vec3::Z);
     assert_eq!(s.current.texcoords[3], Vec4::W);
@@ -168,10 +168,14 @@ fn first_error_sticks_until_read() {
 
 #[test]
 fn stack_overflow_per_stack() {
-    let mut s = run(&[
-        Command::MatrixMode(MatrixMode::Projection),
+    // Mesa's depths: projection 32 (31 pushes fit), texture 10 per unit.
+    let mut cmds = vec![Command::MatrixMode(MatrixMode::Projection)];
+    cmds.extend(std::iter::repeat_n(
         Command::PushMatrix,
-    ]);
+        crate::ff::matrix::PROJECTION_STACK_DEPTH - 1,
+    ));
+    let mut s = run(&cmds);
+    assert_eq!(s.take_error(), None);
     assert_eq!(
         s.apply(&Command::PushMatrix).unwrap_err().kind,
         GlErrorKind::StackOverflow

@@ -20,7 +20,7 @@ pub mod names;
 mod parse;
 mod print;
 
-pub use parse::parse;
+pub use parse::{parse, parse_lines};
 pub use print::print;
 
 /// A script error, with the line and the valid alternatives where there are any.
@@ -30,6 +30,8 @@ pub enum ScriptError {
     UnexpectedChar { line: usize, ch: char },
     #[error("line {line}: unterminated /* comment")]
     UnterminatedComment { line: usize },
+    #[error("line {line}: {problem}")]
+    Preprocessor { line: usize, problem: String },
     #[error("line {line}: expected {expected}, found {found}")]
     Syntax {
         line: usize,

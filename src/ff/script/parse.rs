@@ -19,8 +19,13 @@ type Res<T> = Result<T, ScriptError>;
 enum Arg<'a> {
     /// `f(name)`: a client helper applied to a buffer (converted depth readbacks).
     Call { func: &'a str, arg: &'a str },
-    /// A number literal, `INFINITY` or `NAN`, optionally negated.
-    Num { neg: bool, text: &'a str },
+    /// A number literal, `INFINITY` or `NAN`, optionally negated; `int_cast` when a cast
+    /// to an integer type applies (C converts by truncation towards zero).
+    Num {
+        neg: bool,
+        text: &'a str,
+        int_cast: bool,
+    },
     /// An identifier, optionally `+ n`.
     Name { name: &'a str, offset: u32 },
     /// `A | B | …`
@@ -119,10 +124,14 @@ impl<'a> Cursor<'_, 'a> {
 
     fn arg(&mut self) -> Res<Arg<'a>> {
         match self.peek() {
-            Some(Tok::LParen) => self.array(),
+            Some(Tok::LParen) => self.parenthesised(),
             Some(Tok::Num(_) | Tok::Minus | Tok::Ident("INFINITY" | "NAN")) => {
                 let (neg, text) = self.number(false)?;
-                Ok(Arg::Num { neg, text })
+                Ok(Arg::Num {
+                    neg,
+                    text,
+                    int_cast: false,
+                })
             }
             Some(Tok::Ident(name)) => {
                 self.pos += 1;
@@ -156,8 +165,57 @@ impl<'a> Cursor<'_, 'a> {
         }
     }
 
+    /// After '(': a compound literal `(T[]){…}`, a cast `(T)x` or `(T *)x`, or redundant
+    /// parentheses `(x)`. A cast to an integer type truncates a number towards zero, as C
+    /// converts; every other cast leaves the value as it is (the dialect's values already
+    /// have the parameter's type).
+    fn parenthesised(&mut self) -> Res<Arg<'a>> {
+        let at = |k: usize| self.toks.get(self.pos + k).map(|t| t.tok);
+        let mut k = 1;
+        while at(k) == Some(Tok::Ident("const")) {
+            k += 1;
+        }
+        let ty = match at(k) {
+            Some(Tok::Ident(t)) if C_TYPES.contains(&t) => Some(t),
+            _ => None,
+        };
+        let Some(ty) = ty else {
+            self.eat(Tok::LParen, "'('")?;
+            let inner = self.arg()?;
+            self.eat(Tok::RParen, "')'")?;
+            return Ok(inner);
+        };
+        if at(k + 1) == Some(Tok::LBracket) {
+            return self.array();
+        }
+        self.pos += k + 1;
+        let mut pointer = false;
+        while self.peek() == Some(Tok::Star) || self.peek() == Some(Tok::Ident("const")) {
+            pointer |= self.peek() == Some(Tok::Star);
+            self.pos += 1;
+        }
+        self.eat(Tok::RParen, "')' closing the cast")?;
+        let inner = self.arg()?;
+        Ok(match inner {
+            // (void *)0 and (const GLvoid *)NULL are the null pointer.
+            Arg::Num { text, .. } if pointer && int_literal(text) == Some(0) => Arg::Name {
+                name: "NULL",
+                offset: 0,
+            },
+            Arg::Num { neg, text, .. } if !pointer && INTEGER_TYPES.contains(&ty) => Arg::Num {
+                neg,
+                text,
+                int_cast: true,
+            },
+            other => other,
+        })
+    }
+
     fn array(&mut self) -> Res<Arg<'a>> {
         self.eat(Tok::LParen, "'('")?;
+        while self.peek() == Some(Tok::Ident("const")) {
+            self.pos += 1;
+        }
         let ty = self.ident("an array type such as GLfloat")?;
         self.eat(Tok::LBracket, "'['")?;
         self.eat(Tok::RBracket, "']'")?;
@@ -177,11 +235,56 @@ impl<'a> Cursor<'_, 'a> {
     }
 }
 
+/// Type names a cast or a compound literal may use.
+const C_TYPES: &[&str] = &[
+    "GLfloat",
+    "GLdouble",
+    "GLclampf",
+    "GLclampd",
+    "GLint",
+    "GLuint",
+    "GLsizei",
+    "GLenum",
+    "GLboolean",
+    "GLbitfield",
+    "GLbyte",
+    "GLubyte",
+    "GLshort",
+    "GLushort",
+    "GLvoid",
+    "void",
+    "float",
+    "double",
+    "int",
+    "unsigned",
+    "short",
+    "char",
+    "long",
+    "size_t",
+];
+
+/// The cast types that make a number an integer (truncated towards zero).
+const INTEGER_TYPES: &[&str] = &[
+    "GLint",
+    "GLuint",
+    "GLsizei",
+    "GLenum",
+    "GLboolean",
+    "GLbitfield",
+    "GLbyte",
+    "GLubyte",
+    "GLshort",
+    "GLushort",
+    "int",
+    "unsigned",
+    "short",
+    "char",
+    "long",
+    "size_t",
+];
+
 fn describe(t: Tok<'_>) -> String {
-    match t {
-        Tok::Ident(s) | Tok::Num(s) => s.to_string(),
-        other => format!("{other:?}"),
-    }
+    t.describe()
 }
 
 /// C integer literal: decimal or hex, optional u/U/l/L suffixes.
@@ -200,7 +303,7 @@ fn float_literal(text: &str) -> Option<f32> {
         "INFINITY" => Some(f32::INFINITY),
         "NAN" => Some(f32::NAN),
         _ if text.starts_with("0x") || text.starts_with("0X") => {
-            int_literal(text).map(|v| v as f32)
+            hex_float(&text[2..]).or_else(|| int_literal(text).map(|v| v as f32))
         }
         _ => {
             let t = text.strip_suffix(['f', 'F']).unwrap_or(text);
@@ -209,6 +312,26 @@ fn float_literal(text: &str) -> Option<f32> {
                 .or_else(|| int_literal(text).map(|v| v as f32))
         }
     }
+}
+
+/// A C99 hexadecimal floating literal after its `0x`: hex digits with an optional point,
+/// then a binary exponent `p±n` (required: without it the literal is an integer), then an
+/// optional `f`/`l` suffix. The value is mantissa·2ⁿ, computed in f64 and rounded once to
+/// f32 (exact for every mantissa of up to 53 bits).
+fn hex_float(text: &str) -> Option<f32> {
+    let (mantissa, exponent) = text.split_once(['p', 'P'])?;
+    let exponent = exponent.trim_end_matches(['f', 'F', 'l', 'L']);
+    let exponent: i32 = exponent.parse().ok()?;
+    let (whole, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    if whole.is_empty() && frac.is_empty() {
+        return None;
+    }
+    let mut value = 0.0f64;
+    for c in whole.chars().chain(frac.chars()) {
+        value = value * 16.0 + f64::from(c.to_digit(16)?);
+    }
+    let scale = exponent.checked_sub(4 * i32::try_from(frac.len()).ok()?)?;
+    Some((value * 2f64.powi(scale)) as f32)
 }
 
 /// A statement with its call name resolved, and typed argument readers.
@@ -234,7 +357,7 @@ impl Call<'_, '_> {
     }
     pub(super) fn bad(&self, i: usize, expected: &'static str) -> ScriptError {
         let found = self.args.get(i).map_or("nothing".to_string(), |a| match a {
-            Arg::Num { neg, text } => format!("{}{text}", if *neg { "-" } else { "" }),
+            Arg::Num { neg, text, .. } => format!("{}{text}", if *neg { "-" } else { "" }),
             Arg::Name { name, offset: 0 } => name.to_string(),
             Arg::Name { name, offset } => format!("{name} + {offset}"),
             Arg::Or(names) => names.join(" | "),
@@ -251,18 +374,29 @@ impl Call<'_, '_> {
     }
     fn num(&self, i: usize) -> Option<(bool, &str)> {
         match self.args.get(i) {
-            Some(Arg::Num { neg, text }) => Some((*neg, text)),
+            Some(Arg::Num { neg, text, .. }) => Some((*neg, text)),
             _ => None,
         }
+    }
+    fn int_cast(&self, i: usize) -> bool {
+        matches!(self.args.get(i), Some(Arg::Num { int_cast: true, .. }))
     }
     pub(super) fn f32(&self, i: usize) -> Res<f32> {
         let (neg, text) = self.num(i).ok_or_else(|| self.bad(i, "a number"))?;
         let v = float_literal(text).ok_or_else(|| self.bad(i, "a number"))?;
+        let v = if self.int_cast(i) { v.trunc() } else { v };
         Ok(if neg { -v } else { v })
     }
     pub(super) fn int(&self, i: usize) -> Res<i64> {
         let (neg, text) = self.num(i).ok_or_else(|| self.bad(i, "an integer"))?;
-        let v = int_literal(text).ok_or_else(|| self.bad(i, "an integer"))?;
+        let v = int_literal(text)
+            .or_else(|| {
+                // (GLint)2.7 is 2: a cast to an integer type truncates towards zero.
+                float_literal(text)
+                    .filter(|f| self.int_cast(i) && f.is_finite() && f.abs() < 9.0e18)
+                    .map(|f| f.trunc() as i64)
+            })
+            .ok_or_else(|| self.bad(i, "an integer"))?;
         Ok(if neg { -v } else { v })
     }
     pub(super) fn i32(&self, i: usize) -> Res<i32> {
@@ -389,6 +523,12 @@ impl Call<'_, '_> {
         if let Some(("NULL", 0)) = self.name(i) {
             return Ok(None);
         }
+        // A null pointer constant: the integer literal 0 (C99 6.3.2.3).
+        if let Some((false, text)) = self.num(i) {
+            if int_literal(text) == Some(0) {
+                return Ok(None);
+            }
+        }
         let (ty, values) = self
             .array(i)
             .ok_or_else(|| self.bad(i, "NULL or a pixel array"))?;
@@ -417,6 +557,12 @@ impl Call<'_, '_> {
 
 /// Parses a script into Commands.
 pub fn parse(src: &str) -> Result<Vec<Command>, ScriptError> {
+    parse_lines(src).map(|cmds| cmds.into_iter().map(|(_, c)| c).collect())
+}
+
+/// Parses a script into Commands, each with the script line that made it (a Draw: its
+/// glEnd), so that a GL error met while executing can name the line.
+pub fn parse_lines(src: &str) -> Result<Vec<(usize, Command)>, ScriptError> {
     let toks = lex(src)?;
     let mut cur = Cursor {
         toks: &toks,
@@ -424,6 +570,11 @@ pub fn parse(src: &str) -> Result<Vec<Command>, ScriptError> {
     };
     let mut out = Folder::default();
     while cur.peek().is_some() {
+        // An empty statement is valid C and does nothing.
+        if cur.peek() == Some(Tok::Semi) {
+            cur.pos += 1;
+            continue;
+        }
         let stmt = cur.statement()?;
         let entry = Entry::from_name(stmt.name)
             .filter(|e| e.form() == Form::Script)
@@ -438,6 +589,7 @@ pub fn parse(src: &str) -> Result<Vec<Command>, ScriptError> {
             entry,
             args: &stmt.args,
         })?;
+        out.lines.resize(out.cmds.len(), stmt.line);
     }
     out.finish()
 }
@@ -447,6 +599,8 @@ pub fn parse(src: &str) -> Result<Vec<Command>, ScriptError> {
 #[derive(Default)]
 struct Folder {
     cmds: Vec<Command>,
+    /// The script line of each command in `cmds`.
+    lines: Vec<usize>,
     current: Option<CurrentValues>,
     open: Option<Open>,
 }
@@ -610,7 +764,7 @@ impl Folder {
         }
     }
 
-    fn finish(self) -> Res<Vec<Command>> {
+    fn finish(self) -> Res<Vec<(usize, Command)>> {
         if let Some(Open { line, .. }) = self.open {
             return Err(ScriptError::Immediate {
                 line,
@@ -618,7 +772,7 @@ impl Folder {
                 rule: "glBegin without glEnd",
             });
         }
-        Ok(self.cmds)
+        Ok(self.lines.into_iter().zip(self.cmds).collect())
     }
 }
 
@@ -715,6 +869,7 @@ impl Call<'_, '_> {
             Some(Arg::Num {
                 neg: false,
                 text: "0",
+                ..
             }) => Some(vec![]),
             _ => None,
         }

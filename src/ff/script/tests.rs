@@ -94,6 +94,7 @@ fn error_table() {
         let (line, kind) = match &e {
             ScriptError::UnexpectedChar { line, .. } => (*line, "UnexpectedChar"),
             ScriptError::UnterminatedComment { line } => (*line, "UnterminatedComment"),
+            ScriptError::Preprocessor { line, .. } => (*line, "Preprocessor"),
             ScriptError::Syntax { line, .. } => (*line, "Syntax"),
             ScriptError::UnknownCall { line, .. } => (*line, "UnknownCall"),
             ScriptError::UnknownEnum { line, .. } => (*line, "UnknownEnum"),
@@ -669,5 +670,112 @@ proptest! {
     ) {
         let src: String = calls.iter().map(|c| format!("{c}({});\n", args.join(", "))).collect();
         let _ = parse(&src);
+    }
+}
+
+/// What a C compiler accepts of the dialect, the reader accepts too (each case is the same
+/// commands as its plain spelling).
+mod c_as_written {
+    use super::*;
+
+    fn same(written: &str, plain: &str) {
+        assert_eq!(
+            parse(written).unwrap_or_else(|e| panic!("{written:?}: {e}")),
+            parse(plain).unwrap(),
+            "{written:?}"
+        );
+    }
+
+    #[test]
+    fn preprocessor_includes_and_defines() {
+        same(
+            "#include <GL/gl.h>\n#include <GL/glext.h>\n#define SIZE 0.5f\n#define RED 1, 0, 0\nglColor4f(RED, SIZE);",
+            "glColor4f(1, 0, 0, 0.5f);",
+        );
+        same(
+            "#ifndef GL_GLEXT_PROTOTYPES\n#define GL_GLEXT_PROTOTYPES 1\n#endif\nglLoadIdentity();",
+            "glLoadIdentity();",
+        );
+        let e = parse("glLoadIdentity();\n#define SQ(x) ((x)*(x))").unwrap_err();
+        assert!(
+            matches!(e, ScriptError::Preprocessor { line: 2, .. }),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn null_pointer_spellings() {
+        let plain =
+            "glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);";
+        for null in [
+            "0",
+            "(void *)0",
+            "((void*)0)",
+            "(const GLvoid *)NULL",
+            "(NULL)",
+        ] {
+            same(&plain.replace("NULL);", &format!("{null});")), plain);
+        }
+    }
+
+    #[test]
+    fn hex_float_literals() {
+        same(
+            "glColor4f(0x1p-1f, 0x1.8p1, 0X.8P0, 0x1p0);",
+            "glColor4f(0.5f, 3, 0.5f, 1);",
+        );
+    }
+
+    #[test]
+    fn casts_convert_as_c_does() {
+        same(
+            "glColor4f((GLfloat)1, (float)0.25, (GLclampf)0, (const GLfloat)1);",
+            "glColor4f(1, 0.25f, 0, 1);",
+        );
+        // A cast to an integer type truncates towards zero.
+        same("glClearStencil((GLint)2.7);", "glClearStencil(2);");
+        same("glClearStencil((int)-2.7);", "glClearStencil(-2);");
+        same(
+            "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)GL_LINEAR);",
+            "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);",
+        );
+        same(
+            "glLightfv(GL_LIGHT0, GL_POSITION, (const GLfloat[]){0, 1, 0, 0});",
+            "glLightfv(GL_LIGHT0, GL_POSITION, (GLfloat[]){0, 1, 0, 0});",
+        );
+    }
+
+    #[test]
+    fn redundant_parentheses_and_empty_statements() {
+        same(
+            ";glColor4f((1.0f), ((0)), (0), 1);;",
+            "glColor4f(1, 0, 0, 1);",
+        )
+    }
+
+    #[test]
+    fn a_byte_order_mark() {
+        same("\u{FEFF}glLoadIdentity();", "glLoadIdentity();");
+    }
+
+    #[test]
+    fn tokens_are_named_as_in_c() {
+        let e = parse("glDepthFunc(;").unwrap_err().to_string();
+        assert!(e.contains("found ';'"), "{e}");
+        assert!(!e.contains("Semi"), "{e}");
+        let e = parse("glLoadIdentity() glLoadIdentity();")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("expected ';', found glLoadIdentity"), "{e}");
+    }
+
+    #[test]
+    fn commands_keep_their_lines() {
+        let cmds = parse_lines(
+            "glLoadIdentity();\n\nglBegin(GL_POINTS);\nglVertex2f(0, 0);\nglEnd();\nglPopMatrix();",
+        )
+        .unwrap();
+        let lines: Vec<usize> = cmds.iter().map(|(l, _)| *l).collect();
+        assert_eq!(lines, vec![1, 5, 6]);
     }
 }
