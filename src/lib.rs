@@ -3,7 +3,8 @@
 //! headless and measurably.
 //!
 //! Layers, lowest first (a module uses those below it, never those above):
-//! `vocab` (the shared names: techniques, pipelines, depth formats, readback rules) →
+//! `vocab` (the shared names: techniques, pipelines, depth formats, readback rules) and
+//! `stats` (medians of timings) →
 //! `gpu` (contexts, render targets, readback) → `ff` (commands and the GL 1.x state model,
 //! no GL calls) → `mesh`, `scene`, `truth`, `metrics` (pure) → `pipeline` → `techniques` (plans of
 //! Commands) → `render` (a scene, judged against the truth) → `bench`, `study` (many renders
@@ -19,6 +20,7 @@ pub mod pipeline;
 pub mod render;
 pub mod report;
 pub mod scene;
+pub mod stats;
 pub mod study;
 pub mod techniques;
 pub mod truth;

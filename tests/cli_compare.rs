@@ -10,7 +10,7 @@ use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{render, ImageSize, RenderOptions};
 use fixedfunc::scene::{PolygonOffset, Scene};
 use fixedfunc::study::{self, CompareSpec};
-use fixedfunc::techniques;
+use fixedfunc::vocab::TechniqueId;
 
 fn fixedfunc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
@@ -171,7 +171,7 @@ fn library_compare_rows_equal_library_renders() {
         height: 64,
     });
     let spec = CompareSpec {
-        techniques: vec![techniques::lookup("dual8").expect("dual8")],
+        techniques: vec![TechniqueId::Dual8],
         pipelines: vec![PipelineKind::Emulate, PipelineKind::Native],
         backend: fixedfunc::gpu::Backend::Egl,
         frames: 2,
@@ -185,7 +185,7 @@ fn library_compare_rows_equal_library_renders() {
             &scene,
             &RenderOptions {
                 pipeline: row.pipeline,
-                technique: Some("dual8".into()),
+                technique: Some(TechniqueId::Dual8),
                 size,
                 frames: 2,
                 ..RenderOptions::default()

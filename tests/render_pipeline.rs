@@ -13,6 +13,7 @@ use fixedfunc::metrics::{Mask, BACKGROUND};
 use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{render, ImageSize, RenderOptions, RenderOutcome};
 use fixedfunc::scene::Scene;
+use fixedfunc::vocab::TechniqueId;
 use support::{assert_images_match, Tolerance, HEADLESS};
 
 const SIZE: ImageSize = ImageSize {
@@ -26,7 +27,7 @@ fn run(backend: Backend, pipeline: PipelineKind) -> RenderOutcome {
     let options = RenderOptions {
         backend,
         pipeline,
-        technique: Some("none".into()),
+        technique: Some(TechniqueId::None),
         size: Some(SIZE),
         frames: FRAMES,
         ..RenderOptions::default()

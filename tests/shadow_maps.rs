@@ -8,6 +8,8 @@ use fixedfunc::metrics::Mask;
 use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{self, ImageSize, RemakeMaps, RenderError, RenderOptions, RenderOutcome};
 use fixedfunc::scene::{PolygonOffset, Scene};
+use fixedfunc::techniques;
+use fixedfunc::vocab::TechniqueId;
 
 const SIZE: ImageSize = ImageSize {
     width: 192,
@@ -66,7 +68,7 @@ impl<'a> Run<'a> {
         let options = RenderOptions {
             backend: Backend::Egl,
             pipeline: self.pipeline,
-            technique: Some(self.technique.to_string()),
+            technique: Some(techniques::parse_name(self.technique).expect("a technique")),
             size: Some(SIZE),
             frames: self.frames,
             remake_maps: self.remake,
@@ -372,7 +374,7 @@ fn maps_are_made_again_only_when_the_light_moves() {
         render::render(
             &scene,
             &RenderOptions {
-                technique: Some("depth-compare".to_string()),
+                technique: Some(TechniqueId::DepthCompare),
                 size: Some(SIZE),
                 frames: 4,
                 orbit: Some(Orbit {

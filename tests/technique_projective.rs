@@ -375,7 +375,7 @@ fn an_image_smaller_than_the_map_renders_alike_on_both_paths() {
             &Scene::default_scene(),
             &fixedfunc::render::RenderOptions {
                 pipeline,
-                technique: Some("projective".to_string()),
+                technique: Some(fixedfunc::vocab::TechniqueId::Projective),
                 size: Some(size),
                 ..Default::default()
             },

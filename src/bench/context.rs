@@ -5,11 +5,11 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::Summary;
 use crate::gpu::{
     Backend, ContextRequest, DepthBits, FlatProgram, GpuContext, GpuError, Profile, RenderTarget,
     TargetSpec,
 };
+use crate::stats::Summary;
 
 /// One backend × profile row.
 #[derive(Clone, Debug, Serialize)]

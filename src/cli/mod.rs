@@ -26,7 +26,7 @@ use fixedfunc::bench::BenchGroup;
 use fixedfunc::gpu::Backend;
 use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{ImageSize, RemakeMaps};
-use fixedfunc::scene::KNOWN_TECHNIQUES;
+use fixedfunc::vocab::TechniqueId;
 
 /// An emulator of the OpenGL 1.x fixed-function pipeline for the classic shadow techniques.
 #[derive(Parser)]
@@ -44,8 +44,8 @@ enum Command {
         /// Scene file (TOML); the built-in default scene when omitted.
         scene: Option<PathBuf>,
         /// Technique (default: the scene's `[shadow] technique`).
-        #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(KNOWN_TECHNIQUES))]
-        technique: Option<String>,
+        #[arg(long, value_parser = pipelines::technique_parser())]
+        technique: Option<TechniqueId>,
         /// Which path executes the fixed-function commands.
         #[arg(long, value_enum, default_value_t = PipelineKind::Emulate)]
         pipeline: PipelineKind,

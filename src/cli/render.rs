@@ -8,6 +8,8 @@ use std::time::Duration;
 use fixedfunc::gpu::Backend;
 use fixedfunc::pipeline::PipelineKind;
 use fixedfunc::render::{self, ImageSize, Progress, RemakeMaps, RenderOptions};
+use fixedfunc::report;
+use fixedfunc::vocab::TechniqueId;
 use indicatif::{ProgressBar, ProgressStyle};
 
 use super::error::CliError;
@@ -27,7 +29,7 @@ use super::scene_arg;
 
 pub struct Args {
     pub scene: Option<PathBuf>,
-    pub technique: Option<String>,
+    pub technique: Option<TechniqueId>,
     pub pipeline: PipelineKind,
     pub backend: Backend,
     pub size: Option<ImageSize>,
@@ -83,8 +85,13 @@ pub fn run(args: Args) -> Result<(), CliError> {
     scene_arg::save(&outcome.image, &args.out)?;
     scene_arg::save(&outcome.mask.to_image(), &args.mask)?;
     if let Some(path) = &args.depth_map {
-        for (label, picture) in &outcome.map_images {
-            let file = if outcome.map_images.len() == 1 {
+        let pictures = outcome
+            .light_map
+            .as_ref()
+            .map(report::light_map_pictures)
+            .unwrap_or_default();
+        for (label, picture) in &pictures {
+            let file = if pictures.len() == 1 {
                 path.clone()
             } else {
                 map_file(path, label)
@@ -92,7 +99,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             scene_arg::save(picture, &file)?;
             println!("light's map ({label}) {}", file.display());
         }
-        if outcome.map_images.is_empty() {
+        if pictures.is_empty() {
             println!(
                 "`{}` makes no light's map: --depth-map ignored",
                 outcome.technique

@@ -8,10 +8,10 @@ use fixedfunc::render::ImageSize;
 use fixedfunc::report;
 use fixedfunc::scene::{MapFilter, Precision};
 use fixedfunc::study::{self, SweepRange, SweepSpec};
-use fixedfunc::techniques;
+use fixedfunc::vocab::TechniqueId;
 
 use super::error::CliError;
-use super::pipelines::{technique_names, PipelineChoice};
+use super::pipelines::{technique_parser, PipelineChoice};
 use super::progress::StudyBar;
 use super::scene_arg;
 use super::shadow_args::ShadowArgs;
@@ -28,8 +28,8 @@ pub struct Args {
     /// Scene file (TOML); the built-in default scene when omitted.
     pub scene: Option<PathBuf>,
     /// The technique whose bias is swept.
-    #[arg(long, value_parser = technique_names())]
-    pub technique: String,
+    #[arg(long, value_parser = technique_parser())]
+    pub technique: TechniqueId,
     /// glPolygonOffset factors: A..B[:STEPS] (5 steps when omitted) or one number.
     #[arg(long, value_name = "A..B[:STEPS]", value_parser = parse_range, allow_hyphen_values = true)]
     pub factor: SweepRange,
@@ -76,7 +76,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         }
     }
     let spec = SweepSpec {
-        technique: techniques::lookup(&args.technique).map_err(study::StudyError::from)?,
+        technique: args.technique,
         factor: args.factor,
         units: args.units,
         depths,

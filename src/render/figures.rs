@@ -10,13 +10,14 @@ use std::fmt;
 
 use crate::gpu::Backend;
 use crate::pipeline::PipelineKind;
+use crate::vocab::TechniqueId;
 
 use super::{pipeline_name, FrameTimings};
 
 /// The figures of one render.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figures {
-    pub technique: &'static str,
+    pub technique: TechniqueId,
     pub pipeline: PipelineKind,
     pub backend: Backend,
     pub wrong_percent: f64,
@@ -76,7 +77,7 @@ mod tests {
 
     fn figures(steady: Vec<f64>) -> Figures {
         Figures {
-            technique: "none",
+            technique: TechniqueId::None,
             pipeline: PipelineKind::Emulate,
             backend: Backend::Egl,
             wrong_percent: 1.234,

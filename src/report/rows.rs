@@ -10,6 +10,8 @@ use crate::gpu::Backend;
 use crate::pipeline::PipelineKind;
 use crate::render::RenderOutcome;
 use crate::study::{Row, RowResult};
+use crate::techniques;
+use crate::vocab::TechniqueId;
 
 /// The figures of a measured row.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -77,7 +79,7 @@ impl Measured {
 /// One technique × pipeline of a comparison.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ResultRow {
-    pub technique: &'static str,
+    pub technique: TechniqueId,
     pub summary: &'static str,
     pub pipeline: PipelineKind,
     pub backend: Backend,
@@ -96,8 +98,8 @@ impl ResultRow {
             RowResult::Skipped { reason } => (Some(reason.clone()), None),
         };
         ResultRow {
-            technique: row.technique.name,
-            summary: row.technique.summary,
+            technique: row.technique,
+            summary: techniques::technique(row.technique).summary,
             pipeline: row.pipeline,
             backend: row.backend,
             pareto: false,

@@ -36,7 +36,6 @@ use super::{
 pub const NAME: &str = "depth-compare";
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "ARB_shadow: the depth buffer copied into a depth texture that compares r/q",
     plan,
 };

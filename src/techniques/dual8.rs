@@ -47,7 +47,6 @@ use super::{
 pub const NAME: &str = "dual8";
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "Heidrich/Kilgard dual texture: 8-bit depth map, 1D ramp, ADD_SIGNED, alpha test",
     plan,
 };

@@ -45,7 +45,6 @@ use super::{
 pub const NAME: &str = "linear8";
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "Heidrich's linear depth: the light's distance through a ramp into alpha, 8 bits",
     plan,
 };

@@ -69,7 +69,6 @@ use super::{
 pub const NAME: &str = "multidigit16";
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "Kilgard's 16-bit multi-digit map: two 8-bit digits, stencil, register combiners",
     plan,
 };

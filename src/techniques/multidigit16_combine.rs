@@ -48,7 +48,6 @@ use super::{Pass, Plan, Prepared, Technique, TechniqueError};
 pub const NAME: &str = "multidigit16-combine";
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "the 16-bit two-digit comparison with ARB combine, DOT3 and stencil (runs natively)",
     plan,
 };

@@ -72,7 +72,6 @@ use super::{
 pub const NAME: &str = "planar";
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary:
         "projection shadows: casters through (p·l)I − l·pᵀ onto flat receivers, stencil, blend",
     plan,

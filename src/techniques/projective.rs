@@ -56,7 +56,6 @@ use super::{
 pub const NAME: &str = "projective";
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "slide projector: the casters' silhouette from the light, projected by texgen",
     plan,
 };

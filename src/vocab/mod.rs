@@ -26,7 +26,10 @@ pub trait Named: Copy + PartialEq + Sized + 'static {
 
     /// The value a name means, if any.
     fn from_name(name: &str) -> Option<Self> {
-        Self::NAMES.iter().find(|(n, _)| *n == name).map(|(_, v)| *v)
+        Self::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, v)| *v)
     }
 
     /// Every value once, in order (aliases skipped).
