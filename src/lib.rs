@@ -4,12 +4,12 @@
 //!
 //! Layers, lowest first (a module uses those below it, never those above):
 //! `vocab` (the shared names: techniques, pipelines, depth formats, readback rules) and
-//! `stats` (medians of timings) →
-//! `gpu` (contexts, render targets, readback) → `ff` (commands and the GL 1.x state model,
-//! no GL calls) → `mesh`, `scene`, `truth`, `metrics` (pure) → `pipeline` → `techniques` (plans of
-//! Commands) → `render` (a scene, judged against the truth) → `bench`, `study` (many renders
-//! against one truth: compare, bias sweeps) → `report` (tables, plots, pages) → the
-//! `fixedfunc` CLI.
+//! `stats` (medians of timings) → `gpu` (contexts, render targets, readback) → `ff`
+//! (commands and the GL 1.x state model, no GL calls) → `mesh`, `scene`, `truth`, `metrics`
+//! (pure) → `pipeline` → `techniques` (plans of Commands) → `render` (a scene, judged
+//! against the truth; open sessions interleaved in rounds) → `bench`, `study` (many
+//! renders against one truth: compare, bias sweeps) → `report` (tables, plots, pages) →
+//! the `fixedfunc` CLI.
 
 pub mod bench;
 pub mod ff;

@@ -230,7 +230,7 @@ fn pseudo_depth_without_a_flat_receiver_is_a_clear_error() {
     assert_eq!(
         err,
         TechniqueError::NoProjectionPlane {
-            technique: "projective"
+            technique: fixedfunc::vocab::TechniqueId::Projective
         }
     );
     assert!(

@@ -66,9 +66,8 @@ impl Drop for Session {
 
 /// The plan of the scene's technique.
 fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, RenderError> {
-    Ok((techniques::technique(scene.shadow.technique).plan)(
-        scene, prepared,
-    )?)
+    let technique = techniques::technique(scene.shadow.technique);
+    Ok((technique.plan)(scene, prepared)?)
 }
 
 impl Session {

@@ -214,17 +214,13 @@ pub fn compare(
     }
 
     let mut rows = Vec::with_capacity(lanes.len());
-    for Lane {
-        tag: entry,
-        session,
-    } in lanes
-    {
+    for lane in lanes {
         let Entry {
             technique,
             pipeline,
             mut cost,
-        } = entry;
-        let finished = session.and_then(|session| {
+        } = lane.tag;
+        let finished = lane.session.and_then(|session| {
             let t0 = Instant::now();
             let outcome = session.finish(Some(&truth));
             cost.finish_ms = ms_since(t0);

@@ -18,6 +18,7 @@ use crate::ff::{
 };
 use crate::gpu::DepthBits;
 use crate::scene::{MapFilter, PolygonOffset, ReadbackRule, Scene};
+use crate::vocab::TechniqueId;
 
 use super::{FramebufferNeeds, TechniqueError};
 
@@ -67,7 +68,7 @@ impl MapSettings {
     }
 
     /// Fails when a stencil technique is asked for a depth buffer without stencil (D16).
-    pub fn check_stencil(&self, technique: &'static str) -> Result<(), TechniqueError> {
+    pub fn check_stencil(&self, technique: TechniqueId) -> Result<(), TechniqueError> {
         match self.depth {
             DepthBits::D16 => Err(TechniqueError::NeedsStencil {
                 technique,

@@ -52,13 +52,13 @@ pub enum TechniqueError {
     #[error("the scene has {count} lights; the fixed-function pipeline has {max} (GL_MAX_LIGHTS)")]
     TooManyLights { count: usize, max: usize },
     #[error("`{technique}` needs a light to cast shadows; the scene has none (add a [[light]])")]
-    NoLight { technique: &'static str },
+    NoLight { technique: TechniqueId },
     #[error("`{technique}` needs a stencil buffer; a {bits}-bit depth buffer has none (use depth_bits 24 or \"32f\")")]
-    NeedsStencil { technique: &'static str, bits: u32 },
+    NeedsStencil { technique: TechniqueId, bits: u32 },
     #[error("`{technique}` numbers flat receivers in an 8-bit stencil buffer: at most {max} of them may face the light")]
-    TooManyFlatReceivers { technique: &'static str, max: usize },
+    TooManyFlatReceivers { technique: TechniqueId, max: usize },
     #[error("`{technique}` with `projector = \"pseudo-depth\"` projects onto a flat receiver, and no flat receiver of this scene has the light strictly on one side of its plane (p·l ≠ 0); use `projector = \"perspective\"` or add a flat receiver")]
-    NoProjectionPlane { technique: &'static str },
+    NoProjectionPlane { technique: TechniqueId },
     #[error("the mask readback (slot {slot}) is missing: the pipeline did not execute ReadPixels")]
     MissingReadback { slot: u32 },
     #[error("the mask readback is {got_w}×{got_h} {format:?}/{ty:?}; expected {w}×{h} {expected_format:?}/{expected_ty:?}", got_w = .got.0, got_h = .got.1, w = .expected.0, h = .expected.1)]

@@ -57,6 +57,7 @@ use glam::{Mat4, Vec4};
 
 use crate::ff::{BlendFactor, Capability, Command, CompareFunc, Geometry, Primitive, StencilOp};
 use crate::scene::{PlanarMode, Scene};
+use crate::vocab::TechniqueId;
 
 use super::map::MapSettings;
 use super::parts::{eye_start, lighting, objects, reset, LightSet, Look, Paint, ShadowLight};
@@ -69,7 +70,7 @@ use super::{
     TechniqueError,
 };
 
-pub const NAME: &str = "planar";
+pub const ID: TechniqueId = TechniqueId::Planar;
 
 pub const TECHNIQUE: Technique = Technique {
     summary:
@@ -121,7 +122,7 @@ impl Receiver {
 
 /// Every receiving object, classified, in scene order.
 pub fn receivers(scene: &Scene) -> Result<Vec<Receiver>, TechniqueError> {
-    let light = ShadowLight::of(scene, NAME)?;
+    let light = ShadowLight::of(scene, ID)?;
     let l = light_vector(&light.light);
     let delta = OFFSET * scene_radius(scene);
     let worlds: Vec<_> = scene.objects.iter().map(|o| o.world_mesh()).collect();
@@ -148,7 +149,7 @@ pub fn receivers(scene: &Scene) -> Result<Vec<Receiver>, TechniqueError> {
         };
         if next_id > MAX_RECEIVERS {
             return Err(TechniqueError::TooManyFlatReceivers {
-                technique: NAME,
+                technique: ID,
                 max: MAX_RECEIVERS,
             });
         }
@@ -180,7 +181,7 @@ pub fn receivers(scene: &Scene) -> Result<Vec<Receiver>, TechniqueError> {
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
     let settings = MapSettings::of(scene);
-    settings.check_stencil(NAME)?;
+    settings.check_stencil(ID)?;
     let receivers = receivers(scene)?;
     let mode = scene.shadow.planar_mode;
     let eye = |look| {

@@ -43,6 +43,7 @@ use glam::{Mat4, Vec3, Vec4};
 
 use crate::ff::{Command, CopyTexImage, PixelFormat, PixelType, TexFormat, ViewVolume};
 use crate::scene::{Projector, Scene};
+use crate::vocab::TechniqueId;
 
 use super::map::{bind_map, map_parameters, read_corner, MapSettings, MAP_IMAGE_SLOT};
 use super::parts::{map_pass_start, objects, Look, Paint, ShadowLight, BIAS};
@@ -53,7 +54,7 @@ use super::{
     TechniqueError,
 };
 
-pub const NAME: &str = "projective";
+pub const ID: TechniqueId = TechniqueId::Projective;
 
 pub const TECHNIQUE: Technique = Technique {
     summary: "slide projector: the casters' silhouette from the light, projected by texgen",
@@ -88,7 +89,7 @@ impl Projection {
 
 /// The scene's projector.
 pub fn projection(scene: &Scene) -> Result<Projection, TechniqueError> {
-    let light = ShadowLight::of(scene, NAME)?;
+    let light = ShadowLight::of(scene, ID)?;
     match scene.shadow.projector {
         Projector::Perspective => {
             let volume = match light.volume {
@@ -131,7 +132,7 @@ fn pseudo_depth(scene: &Scene, light: &ShadowLight) -> Result<Projection, Techni
             clear.then_some((i, p))
         })
         .max_by(|a, b| area(&worlds[a.0]).total_cmp(&area(&worlds[b.0])))
-        .ok_or(TechniqueError::NoProjectionPlane { technique: NAME })?;
+        .ok_or(TechniqueError::NoProjectionPlane { technique: ID })?;
     let k = plane.dot(l);
     let w_row = Vec4::new(0.0, 0.0, 0.0, k) - l.w * plane;
     let (z_row, near) = if l.w != 0.0 {
