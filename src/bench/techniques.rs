@@ -2,10 +2,10 @@
 //! map, its well-chosen bias), on the emulated and the native path, frames interleaved
 //! round-robin across all of them (`render::rounds`) so machine noise hits each alike; a
 //! session whose frame fails (no path for a feature) leaves the rounds and, for the rows
-//! that remake their maps, is listed with its reason. Maps are re-made every
-//! frame (`RemakeMaps::Always`) so that each frame's split is comparable; with
-//! `pass_times` every pass ends in glFinish, so the split adds a little synchronisation to
-//! the frame time it explains.
+//! that remake their maps, is listed with its reason. Maps are re-made every frame
+//! (`RemakeMaps::Always`) so that each frame's split is comparable; with `pass_times`
+//! every pass ends in glFinish, so the split adds a little synchronisation to the frame
+//! time it explains.
 //!
 //! Per row: the frame (cold, and steady median/min/max over the repeats), split into the
 //! light pass, readback + upload (every other map pass) and the eye passes, the frame time
