@@ -3,12 +3,14 @@
 //! headless and measurably.
 //!
 //! Layers, lowest first (a module uses those below it, never those above):
-//! `vocab` (the shared names: techniques, pipelines, depth formats, readback rules) →
-//! `gpu` (contexts, render targets, readback) → `ff` (commands and the GL 1.x state model,
-//! no GL calls) → `mesh`, `scene`, `truth`, `metrics` (pure) → `pipeline` → `techniques` (plans of
-//! Commands) → `render` (a scene, judged against the truth) → `bench`, `study` (many renders
-//! against one truth: compare, bias sweeps) → `report` (tables, plots, pages) → the
-//! `fixedfunc` CLI.
+//! `vocab` (the shared names: techniques, pipelines, depth formats, readback rules) and
+//! `stats` (medians of timings) → `gpu` (contexts, render targets, readback) → `ff`
+//! (commands and the GL 1.x state model, no GL calls) → `mesh` → `scene` → `metrics` →
+//! `truth` (pure) → `pipeline` → `techniques` (plans of Commands) → `render` (a scene, judged
+//! against the truth; open sessions interleaved in rounds) → `bench`, `study` (many
+//! renders against one truth: compare, bias sweeps) → `report` (tables, plots, pages) →
+//! the `fixedfunc` CLI. `tests/layers.rs` reads the sources and fails on an import that
+//! runs up this order.
 
 pub mod bench;
 pub mod ff;
@@ -19,6 +21,7 @@ pub mod pipeline;
 pub mod render;
 pub mod report;
 pub mod scene;
+pub mod stats;
 pub mod study;
 pub mod techniques;
 pub mod truth;

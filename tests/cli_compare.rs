@@ -2,7 +2,7 @@
 //! its rows carry exactly `render`'s figures, its page refers only to files it wrote, and a
 //! combination a pipeline cannot run is skipped and reported instead of failing the run.
 
-use fixedfunc::vocab::{PipelineKind, PolygonOffset};
+use fixedfunc::vocab::{PipelineKind, PolygonOffset, TechniqueId};
 use std::collections::HashMap;
 use std::path::Path;
 use std::process::{Command, Output};
@@ -10,7 +10,6 @@ use std::process::{Command, Output};
 use fixedfunc::render::{render, ImageSize, RenderOptions};
 use fixedfunc::scene::Scene;
 use fixedfunc::study::{self, CompareSpec};
-use fixedfunc::techniques;
 
 fn fixedfunc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
@@ -171,7 +170,7 @@ fn library_compare_rows_equal_library_renders() {
         height: 64,
     });
     let spec = CompareSpec {
-        techniques: vec![techniques::lookup("dual8").expect("dual8")],
+        techniques: vec![TechniqueId::Dual8],
         pipelines: vec![PipelineKind::Emulate, PipelineKind::Native],
         backend: fixedfunc::gpu::Backend::Egl,
         frames: 2,
@@ -185,7 +184,7 @@ fn library_compare_rows_equal_library_renders() {
             &scene,
             &RenderOptions {
                 pipeline: row.pipeline,
-                technique: Some("dual8".into()),
+                technique: Some(TechniqueId::Dual8),
                 size,
                 frames: 2,
                 ..RenderOptions::default()

@@ -12,7 +12,7 @@ use fixedfunc::gpu::Backend;
 use fixedfunc::metrics::{Mask, BACKGROUND};
 use fixedfunc::render::{render, ImageSize, RenderOptions, RenderOutcome};
 use fixedfunc::scene::Scene;
-use fixedfunc::vocab::PipelineKind;
+use fixedfunc::vocab::{PipelineKind, TechniqueId};
 use support::{assert_images_match, Tolerance, HEADLESS};
 
 const SIZE: ImageSize = ImageSize {
@@ -26,7 +26,7 @@ fn run(backend: Backend, pipeline: PipelineKind) -> RenderOutcome {
     let options = RenderOptions {
         backend,
         pipeline,
-        technique: Some("none".into()),
+        technique: Some(TechniqueId::None),
         size: Some(SIZE),
         frames: FRAMES,
         ..RenderOptions::default()

@@ -7,7 +7,10 @@ use fixedfunc::gpu::Backend;
 use fixedfunc::metrics::Mask;
 use fixedfunc::render::{self, ImageSize, RemakeMaps, RenderError, RenderOptions, RenderOutcome};
 use fixedfunc::scene::Scene;
-use fixedfunc::vocab::{DepthBits, MapFilter, PipelineKind, PolygonOffset, ReadbackRule};
+use fixedfunc::techniques;
+use fixedfunc::vocab::{
+    DepthBits, MapFilter, PipelineKind, PolygonOffset, ReadbackRule, TechniqueId,
+};
 
 const SIZE: ImageSize = ImageSize {
     width: 192,
@@ -66,7 +69,7 @@ impl<'a> Run<'a> {
         let options = RenderOptions {
             backend: Backend::Egl,
             pipeline: self.pipeline,
-            technique: Some(self.technique.to_string()),
+            technique: Some(techniques::parse_name(self.technique).expect("a technique")),
             size: Some(SIZE),
             frames: self.frames,
             remake_maps: self.remake,
@@ -370,7 +373,7 @@ fn maps_are_made_again_only_when_the_light_moves() {
         render::render(
             &scene,
             &RenderOptions {
-                technique: Some("depth-compare".to_string()),
+                technique: Some(TechniqueId::DepthCompare),
                 size: Some(SIZE),
                 frames: 4,
                 orbit: Some(Orbit {

@@ -382,13 +382,9 @@ fn a_sixteen_bit_depth_buffer_has_no_stencil_for_planar() {
 #[test]
 fn planar_mode_is_checked_with_the_line_and_the_alternatives() {
     let text = "[shadow]\ntechnique = \"planar\"\nplanar_mode = \"sideways\"\n";
-    let err = fixedfunc::scene::Scene::parse(
-        text,
-        std::path::Path::new("t.toml"),
-        fixedfunc::scene::KNOWN_TECHNIQUES,
-    )
-    .unwrap_err()
-    .to_string();
+    let err = fixedfunc::scene::Scene::parse(text, std::path::Path::new("t.toml"))
+        .unwrap_err()
+        .to_string();
     assert!(
         err.contains("t.toml:3") && err.contains("offset") && err.contains("stencil"),
         "{err}"

@@ -231,7 +231,7 @@ fn pseudo_depth_without_a_flat_receiver_is_a_clear_error() {
     assert_eq!(
         err,
         TechniqueError::NoProjectionPlane {
-            technique: "projective"
+            technique: fixedfunc::vocab::TechniqueId::Projective
         }
     );
     assert!(
@@ -376,7 +376,7 @@ fn an_image_smaller_than_the_map_renders_alike_on_both_paths() {
             &Scene::default_scene(),
             &fixedfunc::render::RenderOptions {
                 pipeline,
-                technique: Some("projective".to_string()),
+                technique: Some(fixedfunc::vocab::TechniqueId::Projective),
                 size: Some(size),
                 ..Default::default()
             },

@@ -6,10 +6,10 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::Summary;
 use crate::gpu::{
     Backend, ContextRequest, FlatProgram, GpuContext, GpuError, Profile, RenderTarget, TargetSpec,
 };
+use crate::stats::Summary;
 
 /// One backend × profile row.
 #[derive(Clone, Debug, Serialize)]

@@ -7,10 +7,7 @@
 
 pub mod context;
 pub mod pipeline;
-mod stats;
 pub mod techniques;
-
-pub use stats::Summary;
 
 /// Which measurements to run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]

@@ -9,11 +9,11 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::Summary;
 use crate::ff::Command;
 use crate::gpu::{Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec};
 use crate::pipeline::{self, Counters, Pipeline, PipelineError};
 use crate::scene::Scene;
+use crate::stats::Summary;
 use crate::techniques::{self, Prepared};
 
 /// One path's figures.

@@ -1,9 +1,11 @@
 //! `bench --only techniques`: every shadow technique on the default scene (512² image, 512²
 //! map, its well-chosen bias), on the emulated and the native path, frames interleaved
-//! round-robin across all of them so machine noise hits each alike. Maps are re-made every
-//! frame (`RemakeMaps::Always`) so that each frame's split is comparable; with
-//! `pass_times` every pass ends in glFinish, so the split adds a little synchronisation to
-//! the frame time it explains.
+//! round-robin across all of them (`render::rounds`) so machine noise hits each alike; a
+//! session whose frame fails (no path for a feature) leaves the rounds and, for the rows
+//! that remake their maps, is listed with its reason. Maps are re-made every frame
+//! (`RemakeMaps::Always`) so that each frame's split is comparable; with `pass_times`
+//! every pass ends in glFinish, so the split adds a little synchronisation to the frame
+//! time it explains.
 //!
 //! Per row: the frame (cold, and steady median/min/max over the repeats), split into the
 //! light pass, readback + upload (every other map pass) and the eye passes, the frame time
@@ -12,18 +14,18 @@
 //! (`RemakeMaps::WhenMoved`, the static scene), its steady frame — which should cost about
 //! the eye passes alone.
 
-use crate::vocab::{PipelineKind, PolygonOffset};
+use crate::vocab::{Named, PipelineKind, PolygonOffset, TechniqueId};
 use serde::Serialize;
 
-use crate::bench::Summary;
-use crate::render::{ImageSize, RemakeMaps, RenderError, RenderOptions, Session};
+use crate::render::rounds::{self, Lane, Rules, Verdict};
+use crate::render::{ImageSize, PassTime, RemakeMaps, RenderError, RenderOptions, Session};
 use crate::scene::Scene;
-use crate::techniques::REGISTRY;
+use crate::stats::Summary;
 
 /// One technique on one path.
 #[derive(Debug, Clone, Serialize)]
 pub struct TechniqueRow {
-    pub technique: &'static str,
+    pub technique: TechniqueId,
     pub pipeline: PipelineKind,
     pub cold_ms: f64,
     pub frame: Summary,
@@ -47,39 +49,69 @@ pub struct TechniqueRow {
 /// A technique or path that could not run (e.g. register combiners on the native path).
 #[derive(Debug, Clone, Serialize)]
 pub struct Skipped {
-    pub technique: &'static str,
+    pub technique: TechniqueId,
     pub pipeline: PipelineKind,
     pub reason: String,
 }
 
 /// The bias each technique is benchmarked with (the one its tests judge it at).
-pub fn bench_offset(technique: &str) -> Option<PolygonOffset> {
+pub fn bench_offset(technique: TechniqueId) -> Option<PolygonOffset> {
     let units = match technique {
-        "none" => return None,
+        TechniqueId::None => return None,
         // Three 8-bit steps in a 24-bit buffer (two clear steps between map and ramp).
-        "dual8" => 3.0 * 16_777_215.0 / 255.0 / 2.0,
-        "multidigit16" | "multidigit16-combine" => 256.0,
-        _ => 4.0,
+        TechniqueId::Dual8 => 3.0 * 16_777_215.0 / 255.0 / 2.0,
+        TechniqueId::Multidigit16 | TechniqueId::Multidigit16Combine => 256.0,
+        TechniqueId::DepthCompare
+        | TechniqueId::Linear8
+        | TechniqueId::Planar
+        | TechniqueId::Projective => 4.0,
     };
     Some(PolygonOffset { factor: 1.0, units })
+}
+
+/// What the group keeps beside each session in the rounds.
+type Tag = (TechniqueId, PipelineKind, RemakeMaps);
+
+/// The group's rules for the rounds: a failed session leaves them (listed with its reason
+/// when it is a row's own), and each round ticks the progress.
+struct BenchRules<'a, F> {
+    skipped: &'a mut Vec<Skipped>,
+    tick: F,
+}
+
+impl<F: FnMut()> Rules<Tag> for BenchRules<'_, F> {
+    fn failed(&mut self, &(technique, pipeline, remake): &Tag, error: &RenderError) -> Verdict {
+        if remake == RemakeMaps::Always {
+            self.skipped.push(Skipped {
+                technique,
+                pipeline,
+                reason: error.to_string(),
+            });
+        }
+        Verdict::Retire
+    }
+
+    fn round_done(&mut self, _round: u32) {
+        (self.tick)();
+    }
 }
 
 /// Runs the group: `repeats` steady frames after the cold one, per row.
 pub fn measure(
     repeats: usize,
-    mut tick: impl FnMut(),
+    tick: impl FnMut(),
 ) -> Result<(Vec<TechniqueRow>, Vec<Skipped>), RenderError> {
-    let mut sessions = Vec::new();
+    let mut lanes = Vec::new();
     let mut skipped = Vec::new();
-    for technique in REGISTRY {
+    for technique in TechniqueId::all() {
         for pipeline in [PipelineKind::Emulate, PipelineKind::Native] {
             for remake in [RemakeMaps::Always, RemakeMaps::WhenMoved] {
                 let mut scene = Scene::default_scene();
                 scene.shadow.map_size = 512;
-                scene.shadow.polygon_offset = bench_offset(technique.name);
+                scene.shadow.polygon_offset = bench_offset(technique);
                 let options = RenderOptions {
                     pipeline,
-                    technique: Some(technique.name.to_string()),
+                    technique: Some(technique),
                     size: Some(ImageSize {
                         width: 512,
                         height: 512,
@@ -89,9 +121,12 @@ pub fn measure(
                     ..RenderOptions::default()
                 };
                 match Session::new(&scene, &options) {
-                    Ok(s) => sessions.push((technique.name, pipeline, remake, s)),
+                    Ok(s) => lanes.push(Lane {
+                        tag: (technique, pipeline, remake),
+                        session: Ok(s),
+                    }),
                     Err(e) if remake == RemakeMaps::Always => skipped.push(Skipped {
-                        technique: technique.name,
+                        technique,
                         pipeline,
                         reason: e.to_string(),
                     }),
@@ -100,38 +135,28 @@ pub fn measure(
             }
         }
     }
-    // Round-robin: frame k of every session before frame k + 1 of any. A session whose
-    // frame fails (no path for a feature) is dropped with its reason.
-    for _ in 0..=repeats.max(1) {
-        let mut i = 0;
-        while i < sessions.len() {
-            match sessions[i].3.frame() {
-                Ok(_) => i += 1,
-                Err(e) => {
-                    let (technique, pipeline, remake, _) = sessions.remove(i);
-                    if remake == RemakeMaps::Always {
-                        skipped.push(Skipped {
-                            technique,
-                            pipeline,
-                            reason: e.to_string(),
-                        });
-                    }
-                }
-            }
-        }
-        tick();
-    }
+    let rounds = u32::try_from(repeats.max(1))
+        .unwrap_or(u32::MAX)
+        .saturating_add(1);
+    let mut rules = BenchRules {
+        skipped: &mut skipped,
+        tick,
+    };
+    rounds::run(&mut lanes, rounds, &mut rules).map_err(|stop| stop.error)?;
     let truth = crate::truth::truth(&Scene::default_scene(), &Default::default())?;
     let mut rows: Vec<TechniqueRow> = Vec::new();
     let mut statics = Vec::new();
-    for (technique, pipeline, remake, session) in sessions {
+    for lane in lanes {
+        let ((technique, pipeline, remake), Ok(session)) = (lane.tag, lane.session) else {
+            continue;
+        };
         let outcome = session.finish(Some(&truth))?;
         if remake == RemakeMaps::WhenMoved {
             statics.push((technique, pipeline, outcome.timings.steady));
             continue;
         }
         let steady = |ms: &[f64]| Summary::of(ms.get(1..).unwrap_or(&[]));
-        let sum_by = |pick: &dyn Fn(&crate::render::PassTime) -> bool| -> Option<Summary> {
+        let sum_by = |pick: &dyn Fn(&PassTime) -> bool| -> Option<Summary> {
             let chosen: Vec<_> = outcome.pass_times.iter().filter(|p| pick(p)).collect();
             if chosen.is_empty() {
                 return None;
@@ -167,10 +192,10 @@ pub fn measure(
     }
     let none: Vec<(PipelineKind, f64)> = rows
         .iter()
-        .filter(|r| r.technique == "none")
+        .filter(|r| r.technique == TechniqueId::None)
         .map(|r| (r.pipeline, r.frame.median))
         .collect();
-    let medians: Vec<(&str, PipelineKind, f64)> = rows
+    let medians: Vec<(TechniqueId, PipelineKind, f64)> = rows
         .iter()
         .map(|r| (r.technique, r.pipeline, r.frame.median))
         .collect();

@@ -56,7 +56,7 @@ fn run_context(repeats: usize, json: bool) -> Result<(), CliError> {
     );
     for r in &rows {
         let fmt =
-            |s: &fixedfunc::bench::Summary| format!("{:.2} [{:.2}–{:.2}]", s.median, s.min, s.max);
+            |s: &fixedfunc::stats::Summary| format!("{:.2} [{:.2}–{:.2}]", s.median, s.min, s.max);
         println!(
             "{:<8} {:<14} {:>26} {:>26}",
             r.backend.name(),
@@ -90,7 +90,7 @@ fn run_pipeline(frames: usize, json: bool) -> Result<(), CliError> {
         "path", "frame ms", "submit µs per draw", "programs", "after frame1", "sent/skipped"
     );
     for r in &rows {
-        let fmt = |s: &fixedfunc::bench::Summary, d: usize| {
+        let fmt = |s: &fixedfunc::stats::Summary, d: usize| {
             format!("{:.d$} [{:.d$}–{:.d$}]", s.median, s.min, s.max)
         };
         println!(
@@ -194,7 +194,7 @@ fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
         "passes",
         "programs"
     );
-    let opt = |s: Option<fixedfunc::bench::Summary>| {
+    let opt = |s: Option<fixedfunc::stats::Summary>| {
         s.map_or("—".to_string(), |s| format!("{:.2}", s.median))
     };
     let ratio = |v: Option<f64>| v.map_or("—".to_string(), |v| format!("{v:.2}"));

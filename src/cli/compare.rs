@@ -8,10 +8,10 @@ use fixedfunc::gpu::Backend;
 use fixedfunc::render::ImageSize;
 use fixedfunc::report;
 use fixedfunc::study::{self, CompareSpec};
-use fixedfunc::techniques::{self, REGISTRY};
+use fixedfunc::vocab::{Named, TechniqueId};
 
 use super::error::CliError;
-use super::pipelines::{technique_names, PipelineChoice};
+use super::pipelines::{technique_parser, PipelineChoice};
 use super::progress::StudyBar;
 use super::scene_arg;
 use super::shadow_args::ShadowArgs;
@@ -22,8 +22,8 @@ pub struct Args {
     /// Scene file (TOML); the built-in default scene when omitted.
     pub scene: Option<PathBuf>,
     /// Techniques to compare, comma-separated (default: every technique).
-    #[arg(long, value_delimiter = ',', value_parser = technique_names())]
-    pub techniques: Vec<String>,
+    #[arg(long, value_delimiter = ',', value_parser = technique_parser())]
+    pub techniques: Vec<TechniqueId>,
     /// The folder the report is written to (created when missing).
     #[arg(long, default_value = "compare-report")]
     pub out: PathBuf,
@@ -46,16 +46,12 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let mut scene = scene_arg::load(args.scene.as_deref())?;
     args.shadow.apply(&mut scene);
     let techniques = if args.techniques.is_empty() {
-        REGISTRY.iter().collect()
+        TechniqueId::all()
     } else {
         let mut chosen = Vec::new();
-        for name in &args.techniques {
-            let t = techniques::lookup(name).map_err(study::StudyError::from)?;
-            if !chosen
-                .iter()
-                .any(|c: &&techniques::Technique| c.name == t.name)
-            {
-                chosen.push(t);
+        for id in args.techniques {
+            if !chosen.contains(&id) {
+                chosen.push(id);
             }
         }
         chosen

@@ -18,7 +18,7 @@ mod shadow_args;
 mod sweep_bias;
 mod truth;
 
-use fixedfunc::vocab::PipelineKind;
+use fixedfunc::vocab::{PipelineKind, TechniqueId};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -27,7 +27,6 @@ use clap::{Parser, Subcommand};
 use fixedfunc::bench::BenchGroup;
 use fixedfunc::gpu::Backend;
 use fixedfunc::render::{ImageSize, RemakeMaps};
-use fixedfunc::scene::KNOWN_TECHNIQUES;
 
 /// An emulator of the OpenGL 1.x fixed-function pipeline for the classic shadow techniques.
 #[derive(Parser)]
@@ -45,8 +44,8 @@ enum Command {
         /// Scene file (TOML); the built-in default scene when omitted.
         scene: Option<PathBuf>,
         /// Technique (default: the scene's `[shadow] technique`).
-        #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(KNOWN_TECHNIQUES))]
-        technique: Option<String>,
+        #[arg(long, value_parser = pipelines::technique_parser())]
+        technique: Option<TechniqueId>,
         /// Which path executes the fixed-function commands.
         #[arg(long, value_parser = named::named::<PipelineKind>(), default_value = "emulate")]
         pipeline: PipelineKind,
@@ -67,7 +66,7 @@ enum Command {
         #[command(flatten)]
         shadow: shadow_args::ShadowArgs,
         /// When shadow maps are made again after the first frame.
-        #[arg(long, value_enum, default_value_t = RemakeMaps::WhenMoved)]
+        #[arg(long, value_parser = named::named::<RemakeMaps>(), default_value = "when-moved")]
         remake_maps: RemakeMaps,
         /// Also write the light's map (PNG; for multidigit16 the two digits, as
         /// NAME-big-digit.png and NAME-little-digit.png).

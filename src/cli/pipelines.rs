@@ -1,8 +1,9 @@
 //! `--pipeline emulate|native|both` for the commands that study several renders, and the
-//! technique names they accept (the registry's, in its order).
+//! parser of `--technique`/`--techniques` (every technique's name, in `TechniqueId`'s
+//! order, parsed into the id).
 
-use fixedfunc::techniques::REGISTRY;
-use fixedfunc::vocab::PipelineKind;
+use clap::builder::TypedValueParser;
+use fixedfunc::vocab::{Named, PipelineKind, TechniqueId};
 
 /// Which pipelines a study runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -22,7 +23,8 @@ impl PipelineChoice {
     }
 }
 
-/// Every registered technique's name, for clap's possible values.
-pub fn technique_names() -> clap::builder::PossibleValuesParser {
-    clap::builder::PossibleValuesParser::new(REGISTRY.iter().map(|t| t.name))
+/// A technique's name into its id; clap lists the names as possible values.
+pub fn technique_parser() -> impl TypedValueParser<Value = TechniqueId> {
+    clap::builder::PossibleValuesParser::new(TechniqueId::names())
+        .map(|name| TechniqueId::from_name(&name).expect("clap accepts only the possible values"))
 }

@@ -2,12 +2,13 @@
 //! figures line. Progress bars for multiple frames and for the ground truth (stderr; hidden
 //! when stderr is not a terminal).
 
-use fixedfunc::vocab::PipelineKind;
+use fixedfunc::vocab::{PipelineKind, TechniqueId};
 use std::path::PathBuf;
 use std::time::Duration;
 
 use fixedfunc::gpu::Backend;
 use fixedfunc::render::{self, ImageSize, Progress, RemakeMaps, RenderOptions};
+use fixedfunc::report;
 use indicatif::{ProgressBar, ProgressStyle};
 
 use super::error::CliError;
@@ -27,7 +28,7 @@ use super::scene_arg;
 
 pub struct Args {
     pub scene: Option<PathBuf>,
-    pub technique: Option<String>,
+    pub technique: Option<TechniqueId>,
     pub pipeline: PipelineKind,
     pub backend: Backend,
     pub size: Option<ImageSize>,
@@ -83,8 +84,13 @@ pub fn run(args: Args) -> Result<(), CliError> {
     scene_arg::save(&outcome.image, &args.out)?;
     scene_arg::save(&outcome.mask.to_image(), &args.mask)?;
     if let Some(path) = &args.depth_map {
-        for (label, picture) in &outcome.map_images {
-            let file = if outcome.map_images.len() == 1 {
+        let pictures = outcome
+            .light_map
+            .as_ref()
+            .map(report::light_map_pictures)
+            .unwrap_or_default();
+        for (label, picture) in &pictures {
+            let file = if pictures.len() == 1 {
                 path.clone()
             } else {
                 map_file(path, label)
@@ -92,7 +98,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             scene_arg::save(picture, &file)?;
             println!("light's map ({label}) {}", file.display());
         }
-        if outcome.map_images.is_empty() {
+        if pictures.is_empty() {
             println!(
                 "`{}` makes no light's map: --depth-map ignored",
                 outcome.technique

@@ -6,6 +6,8 @@ use std::path::Path;
 use fixedfunc::ff::{Command, FixedState};
 use fixedfunc::pipeline::emulate::key::ShaderKey;
 use fixedfunc::pipeline::emulate::shadergen;
+use fixedfunc::render::RenderError;
+use fixedfunc::techniques;
 
 use super::error::CliError;
 use super::script_io;
@@ -31,13 +33,14 @@ fn scene_frame(
     technique: Option<&str>,
 ) -> Result<(String, Vec<Command>), CliError> {
     let scene_value = super::scene_arg::load(scene)?;
-    let name = technique
-        .unwrap_or(&scene_value.shadow.technique)
-        .to_string();
-    let t = fixedfunc::techniques::lookup(&name).map_err(fixedfunc::render::RenderError::from)?;
-    let prepared = fixedfunc::techniques::Prepared::new(&scene_value);
-    let plan = (t.plan)(&scene_value, &prepared).map_err(fixedfunc::render::RenderError::from)?;
-    let label = format!("{} ({name})", super::scene_arg::name(scene));
+    let id = match technique {
+        Some(name) => techniques::parse_name(name).map_err(RenderError::from)?,
+        None => scene_value.shadow.technique,
+    };
+    let t = techniques::technique(id);
+    let prepared = techniques::Prepared::new(&scene_value);
+    let plan = (t.plan)(&scene_value, &prepared).map_err(RenderError::from)?;
+    let label = format!("{} ({id})", super::scene_arg::name(scene));
     let commands = plan.setup.iter().chain(plan.frame_commands()).cloned();
     Ok((label, commands.collect()))
 }

@@ -1,17 +1,16 @@
 //! `fixedfunc sweep-bias`: a polygon-offset grid for one technique per depth format, scored
 //! against one truth; prints each format's best cell and writes heatmaps, CSV and JSON.
 
-use fixedfunc::vocab::{DepthBits, MapFilter, Precision};
+use fixedfunc::vocab::{DepthBits, MapFilter, Precision, TechniqueId};
 use std::path::PathBuf;
 
 use fixedfunc::gpu::Backend;
 use fixedfunc::render::ImageSize;
 use fixedfunc::report;
 use fixedfunc::study::{self, SweepRange, SweepSpec};
-use fixedfunc::techniques;
 
 use super::error::CliError;
-use super::pipelines::{technique_names, PipelineChoice};
+use super::pipelines::{technique_parser, PipelineChoice};
 use super::progress::StudyBar;
 use super::scene_arg;
 use super::shadow_args::ShadowArgs;
@@ -28,8 +27,8 @@ pub struct Args {
     /// Scene file (TOML); the built-in default scene when omitted.
     pub scene: Option<PathBuf>,
     /// The technique whose bias is swept.
-    #[arg(long, value_parser = technique_names())]
-    pub technique: String,
+    #[arg(long, value_parser = technique_parser())]
+    pub technique: TechniqueId,
     /// glPolygonOffset factors: A..B[:STEPS] (5 steps when omitted) or one number.
     #[arg(long, value_name = "A..B[:STEPS]", value_parser = parse_range, allow_hyphen_values = true)]
     pub factor: SweepRange,
@@ -76,7 +75,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         }
     }
     let spec = SweepSpec {
-        technique: techniques::lookup(&args.technique).map_err(study::StudyError::from)?,
+        technique: args.technique,
         factor: args.factor,
         units: args.units,
         depths,

@@ -6,7 +6,7 @@
 //!
 //! Error % = 100 · (false + missed + coverage) / truth geometry pixels (see `metrics`).
 
-use crate::vocab::PipelineKind;
+use crate::vocab::{PipelineKind, TechniqueId};
 use std::fmt;
 
 use crate::gpu::Backend;
@@ -16,7 +16,7 @@ use super::{pipeline_name, FrameTimings};
 /// The figures of one render.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figures {
-    pub technique: &'static str,
+    pub technique: TechniqueId,
     pub pipeline: PipelineKind,
     pub backend: Backend,
     pub wrong_percent: f64,
@@ -76,7 +76,7 @@ mod tests {
 
     fn figures(steady: Vec<f64>) -> Figures {
         Figures {
-            technique: "none",
+            technique: TechniqueId::None,
             pipeline: PipelineKind::Emulate,
             backend: Backend::Egl,
             wrong_percent: 1.234,

@@ -96,7 +96,7 @@ fn ramp(to: [u8; 3], t: f64) -> RGBColor {
 pub fn title(sweep: &Sweep, surface: &Surface) -> String {
     let head = format!(
         "{} · {} depth · {} pipeline",
-        sweep.technique.name,
+        sweep.technique,
         depth_label(surface.depth),
         pipeline_name(surface.pipeline)
     );

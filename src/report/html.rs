@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 
 use crate::render::pipeline_name;
 use crate::study::{Comparison, RowResult};
+use crate::vocab::Named;
 
 use super::compare_files::{RowFiles, CSV, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
 use super::table::ms_cell;
@@ -179,7 +180,7 @@ fn table(h: &mut String, rows: &[ResultRow]) {
         let name = format!(
             "<td class=\"name\" title=\"{}\">{}{}</td><td class=\"name\">{}</td>",
             escape(r.summary),
-            escape(r.technique),
+            escape(r.technique.name()),
             if r.pareto {
                 "<span class=\"tag\">Pareto</span>"
             } else {
@@ -364,7 +365,7 @@ fn footer(h: &mut String, c: &Comparison, written: &Written) {
             let _ = write!(
                 h,
                 "; {} ({}) {:.0} ms",
-                escape(row.technique.name),
+                escape(row.technique.name()),
                 pipeline_name(row.pipeline),
                 cost.total_ms()
             );

@@ -1,6 +1,6 @@
 //! Reports: a study (`study::Comparison`, `study::Sweep`) written out as files a person
 //! reads — tables (terminal, CSV, JSON), plots (plotters, SVG and PNG), pictures (error
-//! images, a labelled contact sheet) and one HTML page.
+//! images, a labelled contact sheet, the light's map of a render) and one HTML page.
 //!
 //! **One source of numbers.** Every figure of a compare row comes from
 //! `RenderOutcome::figures()` — the function behind `fixedfunc render`'s line — or from the
@@ -20,6 +20,7 @@ mod csv;
 pub mod font;
 mod heatmap;
 mod html;
+mod light_map;
 mod pictures;
 mod plot;
 mod rows;
@@ -27,6 +28,7 @@ mod sweep_files;
 mod table;
 
 pub use compare_files::write_comparison;
+pub use light_map::{light_map_pictures, pseudo_colour};
 pub use pictures::{error_image, ErrorColours, ERROR_COLOURS};
 pub use rows::{pareto_front, Measured, ResultRow};
 pub use sweep_files::{sweep_summary, write_sweep};

@@ -4,12 +4,13 @@
 //! least as fast and at least as accurate and strictly better in one of the two. The time
 //! is the typical frame (steady median; the cold frame when it is the only one).
 
-use crate::vocab::PipelineKind;
+use crate::vocab::{PipelineKind, TechniqueId};
 use serde::Serialize;
 
 use crate::gpu::Backend;
 use crate::render::RenderOutcome;
 use crate::study::{Row, RowResult};
+use crate::techniques;
 
 /// The figures of a measured row.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -77,7 +78,7 @@ impl Measured {
 /// One technique × pipeline of a comparison.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ResultRow {
-    pub technique: &'static str,
+    pub technique: TechniqueId,
     pub summary: &'static str,
     pub pipeline: PipelineKind,
     pub backend: Backend,
@@ -96,8 +97,8 @@ impl ResultRow {
             RowResult::Skipped { reason } => (Some(reason.clone()), None),
         };
         ResultRow {
-            technique: row.technique.name,
-            summary: row.technique.summary,
+            technique: row.technique,
+            summary: techniques::technique(row.technique).summary,
             pipeline: row.pipeline,
             backend: row.backend,
             pareto: false,

@@ -6,9 +6,10 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use crate::bench::Summary;
 use crate::render::pipeline_name;
+use crate::stats::Summary;
 use crate::study::{Cell, SurfaceResult, Sweep};
+use crate::vocab::TechniqueId;
 
 use super::csv::line;
 use super::heatmap::{self, depth_arg, depth_label};
@@ -72,7 +73,7 @@ fn sweep_csv(s: &Sweep) -> String {
         for (i, c) in cells.iter().enumerate() {
             let a = &c.metrics.all;
             out.push_str(&line(&[
-                s.technique.name.to_string(),
+                s.technique.to_string(),
                 pipeline_name(surface.pipeline).to_string(),
                 depth_arg(surface.depth).to_string(),
                 c.factor.to_string(),
@@ -136,7 +137,7 @@ struct JsonSurface {
 
 #[derive(Serialize)]
 struct JsonSweep {
-    technique: &'static str,
+    technique: TechniqueId,
     factors: Vec<f32>,
     units: Vec<f32>,
     truth_ms: f64,
@@ -178,7 +179,7 @@ fn sweep_json(s: &Sweep) -> Result<String, ReportError> {
         })
         .collect();
     let json = JsonSweep {
-        technique: s.technique.name,
+        technique: s.technique,
         factors: s.factors.clone(),
         units: s.units.clone(),
         truth_ms: s.truth_ms,
@@ -200,7 +201,7 @@ fn cell_times(cells: &[Cell]) -> Option<Summary> {
 pub fn sweep_summary(s: &Sweep) -> String {
     let mut out = format!(
         "{}: {} factors × {} units per depth format\n",
-        s.technique.name,
+        s.technique,
         s.factors.len(),
         s.units.len()
     );

@@ -107,7 +107,7 @@ pub fn phase_lines(c: &Comparison) -> String {
         if let RowResult::Measured { cost, .. } = &row.result {
             out.push_str(&format!(
                 "  {:<22} {:<8} {:>8.0} ms = setup {:.0} + {} frames {:.0} + mask and scoring {:.0}\n",
-                row.technique.name,
+                row.technique,
                 pipeline_name(row.pipeline),
                 cost.total_ms(),
                 cost.setup_ms,
@@ -124,6 +124,7 @@ pub fn phase_lines(c: &Comparison) -> String {
 mod tests {
     use super::*;
     use crate::gpu::Backend;
+    use crate::vocab::TechniqueId;
 
     #[test]
     fn skipped_rows_say_why_and_columns_align() {
@@ -148,7 +149,7 @@ mod tests {
             maps_made: 1,
             notes: Vec::new(),
         };
-        let row = |t: &'static str, m: Option<super::super::Measured>| ResultRow {
+        let row = |t: TechniqueId, m: Option<super::super::Measured>| ResultRow {
             technique: t,
             summary: "",
             pipeline: crate::vocab::PipelineKind::Native,
@@ -159,7 +160,10 @@ mod tests {
                 .then(|| "register combiners are not supported".to_string()),
             measured: m,
         };
-        let text = comparison_table(&[row("dual8", Some(measured)), row("multidigit16", None)]);
+        let text = comparison_table(&[
+            row(TechniqueId::Dual8, Some(measured)),
+            row(TechniqueId::Multidigit16, None),
+        ]);
         assert!(text.contains("dual8 *"), "{text}");
         assert!(text.contains("2.00 [1.50–3.00]"), "{text}");
         assert!(

@@ -11,7 +11,7 @@ use super::error::{Problem, SceneError, SceneWarning, WarningKind};
 use super::raw::*;
 use super::types::*;
 use crate::mesh;
-use crate::vocab::{DepthBits, PolygonOffset};
+use crate::vocab::{DepthBits, Named, PolygonOffset, TechniqueId};
 use glam::Vec3;
 use std::ops::Range;
 use toml::Spanned;
@@ -622,7 +622,7 @@ fn object(ctx: &mut Ctx, table: &Spanned<RawObject>, prefix: &str) -> Result<Obj
     Ok(Object {
         name: o.name.clone(),
         shape,
-        mesh,
+        mesh: std::sync::Arc::new(mesh),
         transform,
         material: Material {
             colour: ctx.opt_vec3(&o.colour, &key("colour"), defaults.colour)?,
@@ -638,17 +638,16 @@ fn shadow(ctx: &Ctx, s: &RawShadow) -> Result<ShadowSettings> {
     let defaults = ShadowSettings::default();
     let technique = match &s.technique {
         None => defaults.technique,
-        Some(t) if ctx.techniques.contains(&t.get_ref().as_str()) => t.get_ref().clone(),
-        Some(t) => {
-            return Err(ctx.invalid(
+        Some(t) => TechniqueId::from_name(t.get_ref()).ok_or_else(|| {
+            ctx.invalid(
                 t.span(),
                 "shadow.technique",
                 Problem::UnknownTechnique {
                     name: t.get_ref().clone(),
-                    known: ctx.techniques.iter().map(|s| s.to_string()).collect(),
+                    known: TechniqueId::names(),
                 },
-            ))
-        }
+            )
+        })?,
     };
     let depth = match &s.depth_bits {
         None => defaults.depth,

@@ -14,19 +14,17 @@ pub(super) struct Ctx<'a> {
     pub file: String,
     /// OBJ paths are resolved against this folder.
     pub base_dir: PathBuf,
-    pub techniques: &'a [&'a str],
     pub warnings: Vec<SceneWarning>,
 }
 
 pub(super) type Result<T> = std::result::Result<T, SceneError>;
 
 impl<'a> Ctx<'a> {
-    pub fn new(text: &'a str, file: &Path, techniques: &'a [&'a str]) -> Ctx<'a> {
+    pub fn new(text: &'a str, file: &Path) -> Ctx<'a> {
         Ctx {
             text,
             file: file.display().to_string(),
             base_dir: file.parent().map(Path::to_path_buf).unwrap_or_default(),
-            techniques,
             warnings: Vec::new(),
         }
     }

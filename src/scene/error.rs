@@ -69,7 +69,10 @@ pub enum Problem {
     #[error("must not be the zero vector")]
     ZeroVector,
     #[error("`{name}` is not a known technique; known techniques: {}", .known.join(", "))]
-    UnknownTechnique { name: String, known: Vec<String> },
+    UnknownTechnique {
+        name: String,
+        known: Vec<&'static str>,
+    },
     #[error("is not used by a {what}; a {what} takes: {}", .valid.join(", "))]
     NotUsedBy {
         what: String,

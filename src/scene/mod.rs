@@ -10,8 +10,8 @@
 //! shape or light type, known technique names — and loads OBJ files relative to the scene
 //! file. Degenerate OBJ faces are dropped and counted in [`Scene::warnings`], not rejected.
 //!
-//! Technique names are checked against [`KNOWN_TECHNIQUES`] (or a list the caller passes):
-//! the one place later techniques register their names.
+//! `[shadow] technique` is parsed into a `vocab::TechniqueId`; an unknown name is an error
+//! at its line that lists every known name.
 //!
 //! The built-in [`Scene::default_scene`] is `assets/default.toml` written in Rust (a test
 //! keeps them equal): mesa-demos shadowtex's layout — a tessellated ground, a sphere and a
@@ -30,38 +30,22 @@ pub use types::*;
 
 use glam::Vec3;
 use std::path::Path;
-
-/// Every technique name a scene may ask for. Later techniques add their names here.
-pub const KNOWN_TECHNIQUES: &[&str] = &[
-    "none",
-    "depth-compare",
-    "dual8",
-    "linear8",
-    "multidigit16",
-    "multidigit16-combine",
-    "planar",
-    "projective",
-];
+use std::sync::Arc;
 
 impl Scene {
-    /// Reads and validates the scene file at `path` against [`KNOWN_TECHNIQUES`].
+    /// Reads and validates the scene file at `path`.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        Scene::load_with(path, KNOWN_TECHNIQUES)
-    }
-
-    /// Reads and validates the scene file at `path` against the technique names `techniques`.
-    pub fn load_with(path: &Path, techniques: &[&str]) -> Result<Scene, SceneError> {
         let text = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
             file: path.to_path_buf(),
             source,
         })?;
-        Scene::parse(&text, path, techniques)
+        Scene::parse(&text, path)
     }
 
     /// Validates scene text as if read from `origin` (named in errors; OBJ paths are
     /// relative to its folder).
-    pub fn parse(text: &str, origin: &Path, techniques: &[&str]) -> Result<Scene, SceneError> {
-        let mut ctx = check::Ctx::new(text, origin, techniques);
+    pub fn parse(text: &str, origin: &Path) -> Result<Scene, SceneError> {
+        let mut ctx = check::Ctx::new(text, origin);
         let raw: raw::RawScene = toml::from_str(text).map_err(|e| {
             let span = e.span().unwrap_or(0..0);
             SceneError::Parse {
@@ -77,7 +61,7 @@ impl Scene {
     pub fn default_scene() -> Scene {
         let object = |name: &str, shape: Shape, transform: Transform, material: Material| Object {
             name: Some(name.to_string()),
-            mesh: shape.procedural_mesh().unwrap_or_default(),
+            mesh: Arc::new(shape.procedural_mesh().unwrap_or_default()),
             shape,
             transform,
             material,

@@ -5,7 +5,7 @@ use crate::vocab::{DepthBits, PolygonOffset, Precision, ReadbackRule};
 use std::path::Path;
 
 fn parse(text: &str) -> Result<Scene, SceneError> {
-    Scene::parse(text, Path::new("test.toml"), KNOWN_TECHNIQUES)
+    Scene::parse(text, Path::new("test.toml"))
 }
 
 const CAMERA: &str = "[camera]\neye = [0, 0, 5]\nat = [0, 0, 0]\nfovy = 45\nnear = 1\nfar = 10\n";
@@ -108,7 +108,7 @@ fn obj_files_resolve_relative_and_report_degenerate_faces() {
     std::fs::write(dir.path().join("empty.obj"), "v 0 0 0\n").expect("write obj");
     let origin = dir.path().join("scene.toml");
     let text = "[[object]]\nmesh = \"tri.obj\"\n";
-    let scene = Scene::parse(text, &origin, KNOWN_TECHNIQUES).expect("loads");
+    let scene = Scene::parse(text, &origin).expect("loads");
     assert_eq!(scene.objects[0].mesh.triangle_count(), 1);
     assert_eq!(scene.warnings.len(), 1);
     assert_eq!(
@@ -116,22 +116,25 @@ fn obj_files_resolve_relative_and_report_degenerate_faces() {
         WarningKind::DegenerateFaces { count: 1 }
     );
     assert_eq!(scene.warnings[0].at.line, 2);
-    let err = Scene::parse(
-        "[[object]]\nmesh = \"empty.obj\"\n",
-        &origin,
-        KNOWN_TECHNIQUES,
-    )
-    .expect_err("no faces");
+    let err = Scene::parse("[[object]]\nmesh = \"empty.obj\"\n", &origin).expect_err("no faces");
     assert!(err.to_string().contains("no faces"), "{err}");
 }
 
 #[test]
-fn techniques_come_from_the_list_passed_in() {
-    let text = "[shadow]\ntechnique = \"shadow-volumes\"\n";
-    assert!(parse(text).is_err());
-    let known = ["none", "shadow-volumes"];
-    let scene = Scene::parse(text, Path::new("t.toml"), &known).expect("known");
-    assert_eq!(scene.shadow.technique, "shadow-volumes");
+fn technique_names_parse_into_ids_and_unknown_ones_list_every_name() {
+    use crate::vocab::{Named, TechniqueId};
+    for id in TechniqueId::all() {
+        let text = format!("[shadow]\ntechnique = \"{}\"\n", id.name());
+        assert_eq!(parse(&text).expect("known").shadow.technique, id);
+    }
+    let err = parse("[shadow]\ntechnique = \"shadow-volumes\"\n").unwrap_err();
+    assert!(
+        err.to_string().ends_with(&format!(
+            "known techniques: {}",
+            TechniqueId::names().join(", ")
+        )),
+        "{err}"
+    );
 }
 
 #[test]

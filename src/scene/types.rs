@@ -3,10 +3,12 @@
 use crate::mesh::{self, Mesh};
 use crate::vocab::{
     DepthBits, MapFilter, PlanarMode, PolygonOffset, Precision, Projector, ReadbackRule,
+    TechniqueId,
 };
 use glam::{Mat4, Vec3};
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use super::error::SceneWarning;
 
@@ -244,8 +246,9 @@ impl Default for Material {
 pub struct Object {
     pub name: Option<String>,
     pub shape: Shape,
-    /// The shape's mesh in object space.
-    pub mesh: Mesh,
+    /// The shape's mesh in object space, shared by every copy of the scene (a moved or
+    /// re-sized copy holds the same vertices).
+    pub mesh: Arc<Mesh>,
     pub transform: Transform,
     pub material: Material,
     /// Whether it casts shadows (is drawn into shadow maps and occludes in the truth).
@@ -264,8 +267,8 @@ impl Object {
 /// The `[shadow]` table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShadowSettings {
-    /// One of the names the scene was validated against (`KNOWN_TECHNIQUES` by default).
-    pub technique: String,
+    /// Default None.
+    pub technique: TechniqueId,
     /// Shadow map edge in texels. Default 256 (mesa-demos shadowtex).
     pub map_size: u32,
     /// Default D24.
@@ -288,7 +291,7 @@ pub struct ShadowSettings {
 impl Default for ShadowSettings {
     fn default() -> Self {
         ShadowSettings {
-            technique: "none".to_string(),
+            technique: TechniqueId::None,
             map_size: 256,
             depth: DepthBits::D24,
             polygon_offset: None,

@@ -2,16 +2,19 @@
 //!
 //! Order of work: the truth (CPU, timed), every session's setup (context, framebuffer,
 //! programs of the setup commands), `frames` rounds of one frame per live session, then
-//! each session's `finish` with the shared truth. A session that turns out not to apply
-//! (see [`super::not_applicable`]) at setup or at a frame is dropped and its row says why.
+//! each session's `finish` with the shared truth. The rounds are `render::rounds`; their
+//! rule here: a session that turns out not to apply (see [`super::not_applicable`]) at
+//! setup or at a frame leaves them and its row says why, any other failure ends the study.
 
-use crate::vocab::PipelineKind;
+use crate::vocab::{PipelineKind, TechniqueId};
 use std::time::Instant;
 
 use crate::gpu::Backend;
-use crate::render::{self, pipeline_name, ImageSize, RenderOptions, RenderOutcome, Session};
+use crate::render::rounds::{self, Lane, Rules, Verdict};
+use crate::render::{
+    self, pipeline_name, ImageSize, RenderError, RenderOptions, RenderOutcome, Session,
+};
 use crate::scene::Scene;
-use crate::techniques::Technique;
 use crate::truth::{self, Truth};
 
 use super::{ms_since, not_applicable, Progress, StudyError};
@@ -19,7 +22,7 @@ use super::{ms_since, not_applicable, Progress, StudyError};
 /// What to compare.
 #[derive(Debug, Clone)]
 pub struct CompareSpec {
-    pub techniques: Vec<&'static Technique>,
+    pub techniques: Vec<TechniqueId>,
     pub pipelines: Vec<PipelineKind>,
     pub backend: Backend,
     /// Frames per session (frame 1 cold, 2…N steady), at least 1.
@@ -59,7 +62,7 @@ pub enum RowResult {
 /// One technique on one pipeline.
 #[derive(Debug, Clone)]
 pub struct Row {
-    pub technique: &'static Technique,
+    pub technique: TechniqueId,
     pub pipeline: PipelineKind,
     pub backend: Backend,
     pub result: RowResult,
@@ -76,7 +79,7 @@ impl Row {
 
     /// `technique-pipeline`, the stem of the row's files.
     pub fn slug(&self) -> String {
-        format!("{}-{}", self.technique.name, pipeline_name(self.pipeline))
+        format!("{}-{}", self.technique, pipeline_name(self.pipeline))
     }
 }
 
@@ -95,9 +98,46 @@ pub struct Comparison {
     pub total_ms: f64,
 }
 
-enum Slot {
-    Open(Box<Session>, RowCost),
-    Done(RowResult),
+/// What the study keeps beside each session in the rounds.
+struct Entry {
+    technique: TechniqueId,
+    pipeline: PipelineKind,
+    cost: RowCost,
+}
+
+/// The study's rules for the rounds: a combination that does not apply leaves them, any
+/// other failure stops them; every turn is a progress step and adds to the row's cost.
+struct CompareRules<F> {
+    frames: u32,
+    step: F,
+}
+
+impl<F: FnMut(String)> Rules<Entry> for CompareRules<F> {
+    fn failed(&mut self, _: &Entry, error: &RenderError) -> Verdict {
+        match not_applicable(error) {
+            Some(_) => Verdict::Retire,
+            None => Verdict::Stop,
+        }
+    }
+
+    fn turn(&mut self, round: u32, entry: &mut Entry, ms: Option<f64>) {
+        entry.cost.frames_ms += ms.unwrap_or(0.0);
+        (self.step)(format!(
+            "frame {round}/{} of {} ({})",
+            self.frames,
+            entry.technique,
+            pipeline_name(entry.pipeline)
+        ));
+    }
+}
+
+/// The study's error for a combination that failed for real.
+fn failure(technique: TechniqueId, pipeline: PipelineKind, source: RenderError) -> StudyError {
+    StudyError::Render {
+        technique,
+        pipeline: pipeline_name(pipeline),
+        source: Box::new(source),
+    }
 }
 
 /// Runs the comparison; `progress` is called after each step.
@@ -111,7 +151,7 @@ pub fn compare(
     }
     let start = Instant::now();
     let frames = spec.frames.max(1);
-    let combos: Vec<(&'static Technique, PipelineKind)> = spec
+    let combos: Vec<(TechniqueId, PipelineKind)> = spec
         .techniques
         .iter()
         .flat_map(|t| spec.pipelines.iter().map(move |p| (*t, *p)))
@@ -136,79 +176,64 @@ pub fn compare(
     let truth_ms = ms_since(truth_start);
     step("ground truth".to_string());
 
-    let fail = |t: &Technique, p: PipelineKind, source| StudyError::Render {
-        technique: t.name.to_string(),
-        pipeline: pipeline_name(p),
-        source: Box::new(source),
-    };
-    let mut slots = Vec::with_capacity(combos.len());
+    let mut lanes = Vec::with_capacity(combos.len());
     for &(technique, pipeline) in &combos {
         let options = RenderOptions {
             pipeline,
-            technique: Some(technique.name.to_string()),
+            technique: Some(technique),
             ..base.clone()
         };
         let t0 = Instant::now();
-        let slot = match Session::new(&scene, &options) {
-            Ok(s) => Slot::Open(
-                Box::new(s),
-                RowCost {
-                    setup_ms: ms_since(t0),
+        let session = match Session::new(&scene, &options) {
+            Err(e) if not_applicable(&e).is_none() => return Err(failure(technique, pipeline, e)),
+            result => result,
+        };
+        let setup_ms = ms_since(t0);
+        lanes.push(Lane {
+            tag: Entry {
+                technique,
+                pipeline,
+                cost: RowCost {
+                    setup_ms,
                     ..RowCost::default()
                 },
-            ),
-            Err(e) => match not_applicable(&e) {
-                Some(reason) => Slot::Done(RowResult::Skipped { reason }),
-                None => return Err(fail(technique, pipeline, e)),
             },
-        };
-        slots.push(slot);
-        step(format!(
-            "set up {} ({})",
-            technique.name,
-            pipeline_name(pipeline)
-        ));
+            session,
+        });
+        step(format!("set up {technique} ({})", pipeline_name(pipeline)));
     }
 
-    for f in 1..=frames {
-        for (slot, &(technique, pipeline)) in slots.iter_mut().zip(&combos) {
-            if let Slot::Open(session, cost) = slot {
-                match session.frame() {
-                    Ok(ms) => cost.frames_ms += ms,
-                    Err(e) => match not_applicable(&e) {
-                        Some(reason) => *slot = Slot::Done(RowResult::Skipped { reason }),
-                        None => return Err(fail(technique, pipeline, e)),
-                    },
-                }
-            }
-            step(format!(
-                "frame {f}/{frames} of {} ({})",
-                technique.name,
-                pipeline_name(pipeline)
-            ));
-        }
+    let mut rules = CompareRules {
+        frames,
+        step: &mut step,
+    };
+    if let Err(stop) = rounds::run(&mut lanes, frames, &mut rules) {
+        let entry = &lanes[stop.lane].tag;
+        return Err(failure(entry.technique, entry.pipeline, stop.error));
     }
 
-    let mut rows = Vec::with_capacity(slots.len());
-    for (slot, &(technique, pipeline)) in slots.into_iter().zip(&combos) {
-        let result = match slot {
-            Slot::Done(result) => result,
-            Slot::Open(session, mut cost) => {
-                let t0 = Instant::now();
-                match session.finish(Some(&truth)) {
-                    Ok(outcome) => {
-                        cost.finish_ms = ms_since(t0);
-                        RowResult::Measured {
-                            outcome: Box::new(outcome),
-                            cost,
-                        }
-                    }
-                    Err(e) => match not_applicable(&e) {
-                        Some(reason) => RowResult::Skipped { reason },
-                        None => return Err(fail(technique, pipeline, e)),
-                    },
-                }
-            }
+    let mut rows = Vec::with_capacity(lanes.len());
+    for lane in lanes {
+        let Entry {
+            technique,
+            pipeline,
+            mut cost,
+        } = lane.tag;
+        let finished = lane.session.and_then(|session| {
+            let t0 = Instant::now();
+            let outcome = session.finish(Some(&truth));
+            cost.finish_ms = ms_since(t0);
+            outcome
+        });
+        let result = match finished {
+            Ok(outcome) => RowResult::Measured {
+                outcome: Box::new(outcome),
+                cost,
+            },
+            Err(e) => match not_applicable(&e) {
+                Some(reason) => RowResult::Skipped { reason },
+                None => return Err(failure(technique, pipeline, e)),
+            },
         };
         rows.push(Row {
             technique,
@@ -216,11 +241,7 @@ pub fn compare(
             backend: spec.backend,
             result,
         });
-        step(format!(
-            "judged {} ({})",
-            technique.name,
-            pipeline_name(pipeline)
-        ));
+        step(format!("judged {technique} ({})", pipeline_name(pipeline)));
     }
 
     Ok(Comparison {

@@ -3,9 +3,9 @@
 //! files; `report` turns a study into tables, plots and pages).
 //!
 //! - [`compare`]: every chosen technique × pipeline held open as a `render::Session` at
-//!   once; their frames are interleaved round-robin (frame 1 of each, then frame 2 of
-//!   each, …) so that machine noise — another build, a frequency step — hits all of them
-//!   alike instead of whichever ran during it. The truth is ray-cast once and handed to
+//!   once; their frames are interleaved round-robin by `render::rounds` (frame 1 of each,
+//!   then frame 2 of each, …) so that machine noise — another build, a frequency step —
+//!   hits all of them alike instead of whichever ran during it. The truth is ray-cast once and handed to
 //!   every `Session::finish`, so each row's figures are exactly `render`'s.
 //! - [`sweep`]: one session per depth format and pipeline (the depth format belongs to
 //!   the framebuffer); each cell of the polygon-offset grid is `Session::restage` with the
@@ -32,13 +32,14 @@ use crate::pipeline::PipelineError;
 use crate::render::RenderError;
 use crate::techniques::TechniqueError;
 use crate::truth::TruthError;
+use crate::vocab::TechniqueId;
 
 /// Failures of a study.
 #[derive(Debug, thiserror::Error)]
 pub enum StudyError {
     #[error("`{technique}` on the {pipeline} pipeline: {source}")]
     Render {
-        technique: String,
+        technique: TechniqueId,
         pipeline: &'static str,
         #[source]
         source: Box<RenderError>,

@@ -6,14 +6,13 @@
 //! surface is the one with the fewest wrong pixels; ties go to fewer wrong pixels outside
 //! the edge band, then to the first in grid order (units-major, as the heatmap's rows).
 
-use crate::vocab::{DepthBits, PipelineKind, PolygonOffset};
+use crate::vocab::{DepthBits, PipelineKind, PolygonOffset, TechniqueId};
 use std::time::Instant;
 
 use crate::gpu::Backend;
 use crate::metrics::{self, Metrics};
 use crate::render::{self, pipeline_name, ImageSize, RenderError, RenderOptions, Session};
 use crate::scene::{Scene, ShadowSettings};
-use crate::techniques::Technique;
 use crate::truth::{self, Truth};
 
 use super::{ms_since, not_applicable, Progress, StudyError, SweepRange};
@@ -21,7 +20,7 @@ use super::{ms_since, not_applicable, Progress, StudyError, SweepRange};
 /// What to sweep.
 #[derive(Debug, Clone)]
 pub struct SweepSpec {
-    pub technique: &'static Technique,
+    pub technique: TechniqueId,
     pub factor: SweepRange,
     pub units: SweepRange,
     pub depths: Vec<DepthBits>,
@@ -74,7 +73,7 @@ pub enum SurfaceResult {
 /// A finished sweep.
 #[derive(Debug, Clone)]
 pub struct Sweep {
-    pub technique: &'static Technique,
+    pub technique: TechniqueId,
     pub factors: Vec<f32>,
     pub units: Vec<f32>,
     pub surfaces: Vec<Surface>,
@@ -116,7 +115,7 @@ pub fn sweep(
         progress(Progress { done, total, what });
     };
 
-    let mut scene = render::apply_overrides(scene, spec.size, Some(spec.technique.name));
+    let mut scene = render::apply_overrides(scene, spec.size, Some(spec.technique));
     let base = RenderOptions {
         backend: spec.backend,
         size: spec.size,
@@ -146,7 +145,7 @@ pub fn sweep(
                     Some(reason) => SurfaceResult::Skipped { reason },
                     None => {
                         return Err(StudyError::Render {
-                            technique: spec.technique.name.to_string(),
+                            technique: spec.technique,
                             pipeline: pipeline_name(pipeline),
                             source: Box::new(e),
                         })

@@ -25,6 +25,7 @@ use crate::ff::{
     TexParam, TextureTarget,
 };
 use crate::scene::Scene;
+use crate::vocab::TechniqueId;
 
 use super::map::{bind_map, map_parameters, MapSettings, MAP_IMAGE_SLOT};
 use super::parts::{light_pass, Look, ShadowLight};
@@ -33,17 +34,16 @@ use super::{
     TechniqueError,
 };
 
-pub const NAME: &str = "depth-compare";
+pub const ID: TechniqueId = TechniqueId::DepthCompare;
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "ARB_shadow: the depth buffer copied into a depth texture that compares r/q",
     plan,
 };
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
-    let light = ShadowLight::of(scene, NAME)?;
+    let light = ShadowLight::of(scene, ID)?;
     let map = MapSettings::of(scene);
     let param = |param| Command::TexParameter {
         target: TextureTarget::Texture2D,

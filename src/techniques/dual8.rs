@@ -31,6 +31,7 @@ use crate::ff::{
     Wrap,
 };
 use crate::scene::Scene;
+use crate::vocab::TechniqueId;
 
 use super::map::{
     bind_map, map_parameters, ramp, upload_map, DepthTransfer, MapSettings, MAP_SLOT, RAMP_TEXTURE,
@@ -44,17 +45,16 @@ use super::{
     TechniqueError,
 };
 
-pub const NAME: &str = "dual8";
+pub const ID: TechniqueId = TechniqueId::Dual8;
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "Heidrich/Kilgard dual texture: 8-bit depth map, 1D ramp, ADD_SIGNED, alpha test",
     plan,
 };
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
-    let light = ShadowLight::of(scene, NAME)?;
+    let light = ShadowLight::of(scene, ID)?;
     let map = MapSettings::of(scene);
     let ramp_planes = [(TexCoord::S, light.plane(2)), (TexCoord::Q, light.plane(3))];
     let eye = |look| {

@@ -31,6 +31,7 @@ use crate::ff::{
     TextureTarget,
 };
 use crate::scene::Scene;
+use crate::vocab::TechniqueId;
 
 use super::dual8::{dual_texture_pass, setup, upload_pass};
 use super::map::{read_map, MapSettings, MAP_SLOT, RAMP_TEXTURE};
@@ -42,10 +43,9 @@ use super::{
     TechniqueError,
 };
 
-pub const NAME: &str = "linear8";
+pub const ID: TechniqueId = TechniqueId::Linear8;
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "Heidrich's linear depth: the light's distance through a ramp into alpha, 8 bits",
     plan,
 };
@@ -57,7 +57,7 @@ pub fn bias(scene: &Scene) -> f32 {
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
-    let light = ShadowLight::of(scene, NAME)?;
+    let light = ShadowLight::of(scene, ID)?;
     let map = MapSettings::of(scene);
     let distance = light.linear_distance_plane();
     let ramp_planes = [(TexCoord::S, distance)];

@@ -8,7 +8,7 @@
 //! not cover. The era's programs often left CLAMP and got streaks; the border is the
 //! documented fix of the time (GL 1.3) and keeps the comparison about precision and bias.
 
-use crate::vocab::{DepthBits, DepthRule, MapFilter, PolygonOffset, ReadbackRule};
+use crate::vocab::{DepthBits, DepthRule, MapFilter, PolygonOffset, ReadbackRule, TechniqueId};
 use std::sync::Arc;
 
 use glam::Vec4;
@@ -67,7 +67,7 @@ impl MapSettings {
     }
 
     /// Fails when a stencil technique is asked for a depth buffer without stencil (D16).
-    pub fn check_stencil(&self, technique: &'static str) -> Result<(), TechniqueError> {
+    pub fn check_stencil(&self, technique: TechniqueId) -> Result<(), TechniqueError> {
         match self.depth {
             DepthBits::D16 => Err(TechniqueError::NeedsStencil {
                 technique,

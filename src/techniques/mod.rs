@@ -2,11 +2,10 @@
 //! program of the era would have made. A technique sets state and draws; it never touches
 //! GL, so a plan can be printed, asserted on in pure tests, and executed by either pipeline.
 //!
-//! **One list of names.** The scene layer validates `[shadow] technique` against
-//! [`scene::KNOWN_TECHNIQUES`] (it sits below this layer and cannot see it); [`REGISTRY`]
-//! holds the technique behind each of those names, in the same order, and a compile-time
-//! assertion refuses to build when the two differ. Adding a technique means
-//! adding its name there and its entry here; forgetting either one is a build error.
+//! **One list of names.** The names live with [`TechniqueId`] in `vocab`, below the scene
+//! reader that parses them; [`technique`] maps each id to its entry with an exhaustive
+//! match. Adding a technique means adding its variant and name there and its arm here;
+//! forgetting the arm does not compile.
 //!
 //! **Preparation once, plans once, frames many.** [`Prepared::new`] converts every object's
 //! mesh into one shared `Arc<Geometry>`; [`Technique::plan`] builds the passes from the scene
@@ -33,13 +32,13 @@ pub mod planar;
 pub mod plane;
 pub mod projective;
 
-use crate::vocab::DepthBits;
+use crate::vocab::{DepthBits, Named, TechniqueId};
 use std::sync::Arc;
 
 use crate::ff::{Command, Geometry, PixelFormat, PixelType, MAX_LIGHTS};
 use crate::metrics::{Mask, BACKGROUND, LIT, SHADOWED};
 use crate::pipeline::Readback;
-use crate::scene::{self, Scene};
+use crate::scene::Scene;
 
 /// Failures of the techniques layer.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -52,13 +51,13 @@ pub enum TechniqueError {
     #[error("the scene has {count} lights; the fixed-function pipeline has {max} (GL_MAX_LIGHTS)")]
     TooManyLights { count: usize, max: usize },
     #[error("`{technique}` needs a light to cast shadows; the scene has none (add a [[light]])")]
-    NoLight { technique: &'static str },
+    NoLight { technique: TechniqueId },
     #[error("`{technique}` needs a stencil buffer; a {bits}-bit depth buffer has none (use depth_bits 24 or \"32f\")")]
-    NeedsStencil { technique: &'static str, bits: u32 },
+    NeedsStencil { technique: TechniqueId, bits: u32 },
     #[error("`{technique}` numbers flat receivers in an 8-bit stencil buffer: at most {max} of them may face the light")]
-    TooManyFlatReceivers { technique: &'static str, max: usize },
+    TooManyFlatReceivers { technique: TechniqueId, max: usize },
     #[error("`{technique}` with `projector = \"pseudo-depth\"` projects onto a flat receiver, and no flat receiver of this scene has the light strictly on one side of its plane (p·l ≠ 0); use `projector = \"perspective\"` or add a flat receiver")]
-    NoProjectionPlane { technique: &'static str },
+    NoProjectionPlane { technique: TechniqueId },
     #[error("the mask readback (slot {slot}) is missing: the pipeline did not execute ReadPixels")]
     MissingReadback { slot: u32 },
     #[error("the mask readback is {got_w}×{got_h} {format:?}/{ty:?}; expected {w}×{h} {expected_format:?}/{expected_ty:?}", got_w = .got.0, got_h = .got.1, w = .expected.0, h = .expected.1)]
@@ -72,11 +71,9 @@ pub enum TechniqueError {
     },
 }
 
-/// A technique's entry in the registry.
+/// A technique's entry in the registry (its name is its [`TechniqueId`]'s).
 #[derive(Clone, Copy)]
 pub struct Technique {
-    /// The name scene files and `--technique` use.
-    pub name: &'static str,
     /// One line for `--help` and reports.
     pub summary: &'static str,
     /// Builds the passes and the mask plan for a scene and its prepared geometry.
@@ -85,60 +82,35 @@ pub struct Technique {
 
 impl std::fmt::Debug for Technique {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name)
+        f.write_str(self.summary)
     }
 }
 
-/// Every technique, in the order of [`scene::KNOWN_TECHNIQUES`].
-pub const REGISTRY: &[Technique] = &[
-    none::TECHNIQUE,
-    depth_compare::TECHNIQUE,
-    dual8::TECHNIQUE,
-    linear8::TECHNIQUE,
-    multidigit16::TECHNIQUE,
-    multidigit16_combine::TECHNIQUE,
-    planar::TECHNIQUE,
-    projective::TECHNIQUE,
-];
-
-// The registry's names are exactly the scene layer's names, in order (evaluated at build
-// time: a mismatch does not compile).
-const _: () = assert!(
-    same_names(REGISTRY, scene::KNOWN_TECHNIQUES),
-    "techniques::REGISTRY and scene::KNOWN_TECHNIQUES list different names"
-);
-
-const fn same_names(registry: &[Technique], names: &[&str]) -> bool {
-    if registry.len() != names.len() {
-        return false;
+/// The technique behind an id.
+pub fn technique(id: TechniqueId) -> &'static Technique {
+    match id {
+        TechniqueId::None => &none::TECHNIQUE,
+        TechniqueId::DepthCompare => &depth_compare::TECHNIQUE,
+        TechniqueId::Dual8 => &dual8::TECHNIQUE,
+        TechniqueId::Linear8 => &linear8::TECHNIQUE,
+        TechniqueId::Multidigit16 => &multidigit16::TECHNIQUE,
+        TechniqueId::Multidigit16Combine => &multidigit16_combine::TECHNIQUE,
+        TechniqueId::Planar => &planar::TECHNIQUE,
+        TechniqueId::Projective => &projective::TECHNIQUE,
     }
-    let mut i = 0;
-    while i < names.len() {
-        let (a, b) = (registry[i].name.as_bytes(), names[i].as_bytes());
-        if a.len() != b.len() {
-            return false;
-        }
-        let mut j = 0;
-        while j < a.len() {
-            if a[j] != b[j] {
-                return false;
-            }
-            j += 1;
-        }
-        i += 1;
-    }
-    true
+}
+
+/// The id a technique name means, or [`TechniqueError::Unknown`] listing every name.
+pub fn parse_name(name: &str) -> Result<TechniqueId, TechniqueError> {
+    TechniqueId::from_name(name).ok_or_else(|| TechniqueError::Unknown {
+        name: name.to_string(),
+        known: TechniqueId::names(),
+    })
 }
 
 /// The technique called `name`.
 pub fn lookup(name: &str) -> Result<&'static Technique, TechniqueError> {
-    REGISTRY
-        .iter()
-        .find(|t| t.name == name)
-        .ok_or_else(|| TechniqueError::Unknown {
-            name: name.to_string(),
-            known: scene::KNOWN_TECHNIQUES.to_vec(),
-        })
+    parse_name(name).map(technique)
 }
 
 /// The scene's meshes as draw-ready geometry, made once per scene and shared (Arc) by every
@@ -409,9 +381,10 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_scene_name_has_a_technique() {
-        for name in scene::KNOWN_TECHNIQUES {
-            assert_eq!(lookup(name).map(|t| t.name), Ok(*name));
+    fn every_name_has_a_technique() {
+        for id in TechniqueId::all() {
+            assert_eq!(parse_name(id.name()), Ok(id));
+            assert!(std::ptr::eq(lookup(id.name()).unwrap(), technique(id)));
         }
         let err = lookup("shadow-volumes").unwrap_err();
         assert!(err.to_string().contains("known techniques: none"), "{err}");

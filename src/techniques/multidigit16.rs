@@ -52,6 +52,7 @@ use crate::ff::{
     TexCoord, TexFormat, TextureTarget, Variable, Wrap,
 };
 use crate::scene::Scene;
+use crate::vocab::TechniqueId;
 
 use super::map::{
     bind_map, map_parameters, ramp, upload_map, DepthTransfer, MapSettings, MAP_SLOT, RAMP_TEXTURE,
@@ -66,31 +67,30 @@ use super::{
     TechniqueError,
 };
 
-pub const NAME: &str = "multidigit16";
+pub const ID: TechniqueId = TechniqueId::Multidigit16;
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "Kilgard's 16-bit multi-digit map: two 8-bit digits, stencil, register combiners",
     plan,
 };
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
-    digit_plan(NAME, scene, prepared, eye_passes)
+    digit_plan(ID, scene, prepared, eye_passes)
 }
 
 /// The plan of a two-digit technique: its digit map (light pass, UNSIGNED_SHORT readback,
 /// LUMINANCE8_ALPHA8 upload), both ramps, stencil, and `eye` in both looks — what
 /// `multidigit16` and `multidigit16-combine` share; only their eye passes differ.
 pub fn digit_plan(
-    name: &'static str,
+    id: TechniqueId,
     scene: &Scene,
     prepared: &Prepared,
     eye: fn(&Scene, &Prepared, &ShadowLight, Look) -> Vec<Pass>,
 ) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
-    let light = ShadowLight::of(scene, name)?;
+    let light = ShadowLight::of(scene, id)?;
     let map = MapSettings::of(scene);
-    map.check_stencil(name)?;
+    map.check_stencil(id)?;
     Ok(Plan {
         setup: setup(),
         maps: digit_map_passes(scene, prepared, &light, &map),

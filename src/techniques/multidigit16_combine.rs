@@ -37,6 +37,7 @@ use crate::ff::{
     CompareFunc, StencilOp, TexEnvMode, TexEnvParam, TextureTarget,
 };
 use crate::scene::Scene;
+use crate::vocab::TechniqueId;
 
 use super::map::REPEAT_RAMP_TEXTURE;
 use super::multidigit16::{digit_unit, map_unit, Digit};
@@ -45,16 +46,15 @@ use super::parts::{
 };
 use super::{Pass, Plan, Prepared, Technique, TechniqueError};
 
-pub const NAME: &str = "multidigit16-combine";
+pub const ID: TechniqueId = TechniqueId::Multidigit16Combine;
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "the 16-bit two-digit comparison with ARB combine, DOT3 and stencil (runs natively)",
     plan,
 };
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
-    super::multidigit16::digit_plan(NAME, scene, prepared, eye_passes)
+    super::multidigit16::digit_plan(ID, scene, prepared, eye_passes)
 }
 
 fn env(params: &[TexEnvParam]) -> Vec<Command> {

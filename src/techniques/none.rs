@@ -41,7 +41,6 @@ use super::{
 };
 
 pub const TECHNIQUE: Technique = Technique {
-    name: "none",
     summary: "the lit scene alone, one pass, no shadows",
     plan,
 };

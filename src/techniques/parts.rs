@@ -21,7 +21,7 @@
 //! Kilgard's "no need for the texture matrix". P_light is the matrix glFrustum/glOrtho build
 //! from the light's volume (`ff::matrix`), the same numbers the light pass loads.
 
-use crate::vocab::PolygonOffset;
+use crate::vocab::{PolygonOffset, TechniqueId};
 use glam::{Mat4, Vec3, Vec4};
 
 use crate::ff::{
@@ -91,7 +91,7 @@ pub const BIAS: Mat4 = Mat4::from_cols(
 
 impl ShadowLight {
     /// The scene's first light, or [`TechniqueError::NoLight`].
-    pub fn of(scene: &Scene, technique: &'static str) -> Result<ShadowLight, TechniqueError> {
+    pub fn of(scene: &Scene, technique: TechniqueId) -> Result<ShadowLight, TechniqueError> {
         let light = *scene
             .lights
             .first()
@@ -459,7 +459,7 @@ mod tests {
     #[test]
     fn the_texture_matrix_maps_the_light_volume_into_the_unit_cube() {
         let scene = Scene::default_scene();
-        let light = ShadowLight::of(&scene, "test").unwrap();
+        let light = ShadowLight::of(&scene, TechniqueId::None).unwrap();
         let m = light.texture_matrix();
         // The point the light looks at, on its axis: s = t = ½.
         let at = m * light.light.view.at.extend(1.0);
@@ -482,7 +482,7 @@ mod tests {
     fn no_light_is_a_clear_error() {
         let mut scene = Scene::default_scene();
         scene.lights.clear();
-        let err = ShadowLight::of(&scene, "dual8").unwrap_err();
+        let err = ShadowLight::of(&scene, TechniqueId::Dual8).unwrap_err();
         assert!(err.to_string().contains("needs a light"), "{err}");
     }
 }

@@ -51,7 +51,7 @@
 //! Curved objects are never shadowed by this technique, so it should be judged on its flat
 //! receivers' pixels.
 
-use crate::vocab::PlanarMode;
+use crate::vocab::{PlanarMode, TechniqueId};
 use std::sync::Arc;
 
 use glam::{Mat4, Vec4};
@@ -70,10 +70,9 @@ use super::{
     TechniqueError,
 };
 
-pub const NAME: &str = "planar";
+pub const ID: TechniqueId = TechniqueId::Planar;
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary:
         "projection shadows: casters through (p·l)I − l·pᵀ onto flat receivers, stencil, blend",
     plan,
@@ -123,7 +122,7 @@ impl Receiver {
 
 /// Every receiving object, classified, in scene order.
 pub fn receivers(scene: &Scene) -> Result<Vec<Receiver>, TechniqueError> {
-    let light = ShadowLight::of(scene, NAME)?;
+    let light = ShadowLight::of(scene, ID)?;
     let l = light_vector(&light.light);
     let delta = OFFSET * scene_radius(scene);
     let worlds: Vec<_> = scene.objects.iter().map(|o| o.world_mesh()).collect();
@@ -150,7 +149,7 @@ pub fn receivers(scene: &Scene) -> Result<Vec<Receiver>, TechniqueError> {
         };
         if next_id > MAX_RECEIVERS {
             return Err(TechniqueError::TooManyFlatReceivers {
-                technique: NAME,
+                technique: ID,
                 max: MAX_RECEIVERS,
             });
         }
@@ -182,7 +181,7 @@ pub fn receivers(scene: &Scene) -> Result<Vec<Receiver>, TechniqueError> {
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
     let settings = MapSettings::of(scene);
-    settings.check_stencil(NAME)?;
+    settings.check_stencil(ID)?;
     let receivers = receivers(scene)?;
     let mode = scene.shadow.planar_mode;
     let eye = |look| {

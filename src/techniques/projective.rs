@@ -39,7 +39,7 @@
 //! name those objects (the render line prints them). Fragments behind the projector
 //! (q ≤ 0) read the silhouette mirrored; the notes name receivers reaching there.
 
-use crate::vocab::Projector;
+use crate::vocab::{Projector, TechniqueId};
 use glam::{Mat4, Vec3, Vec4};
 
 use crate::ff::{Command, CopyTexImage, PixelFormat, PixelType, TexFormat, ViewVolume};
@@ -54,10 +54,9 @@ use super::{
     TechniqueError,
 };
 
-pub const NAME: &str = "projective";
+pub const ID: TechniqueId = TechniqueId::Projective;
 
 pub const TECHNIQUE: Technique = Technique {
-    name: NAME,
     summary: "slide projector: the casters' silhouette from the light, projected by texgen",
     plan,
 };
@@ -90,7 +89,7 @@ impl Projection {
 
 /// The scene's projector.
 pub fn projection(scene: &Scene) -> Result<Projection, TechniqueError> {
-    let light = ShadowLight::of(scene, NAME)?;
+    let light = ShadowLight::of(scene, ID)?;
     match scene.shadow.projector {
         Projector::Perspective => {
             let volume = match light.volume {
@@ -133,7 +132,7 @@ fn pseudo_depth(scene: &Scene, light: &ShadowLight) -> Result<Projection, Techni
             clear.then_some((i, p))
         })
         .max_by(|a, b| area(&worlds[a.0]).total_cmp(&area(&worlds[b.0])))
-        .ok_or(TechniqueError::NoProjectionPlane { technique: NAME })?;
+        .ok_or(TechniqueError::NoProjectionPlane { technique: ID })?;
     let k = plane.dot(l);
     let w_row = Vec4::new(0.0, 0.0, 0.0, k) - l.w * plane;
     let (z_row, near) = if l.w != 0.0 {

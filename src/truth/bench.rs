@@ -66,7 +66,7 @@ pub fn million_triangle_scene() -> Scene {
                 stacks: 500,
             };
             *object = Object {
-                mesh: shape.procedural_mesh().unwrap_or_default(),
+                mesh: std::sync::Arc::new(shape.procedural_mesh().unwrap_or_default()),
                 shape,
                 ..object.clone()
             };

@@ -9,7 +9,7 @@ use crate::scene::{
 fn object(shape: Shape, translate: Vec3, casts: bool) -> Object {
     Object {
         name: None,
-        mesh: shape.procedural_mesh().unwrap_or_default(),
+        mesh: std::sync::Arc::new(shape.procedural_mesh().unwrap_or_default()),
         shape,
         transform: Transform {
             translate,

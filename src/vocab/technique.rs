@@ -1,8 +1,11 @@
-//! Which shadow technique: the names scene files and `--technique` use.
+//! Which shadow technique: the names scene files and `--technique` use. The scene reader
+//! parses `[shadow] technique` into a [`TechniqueId`], and `techniques::technique` maps each
+//! id to its plan with an exhaustive match, so a new technique is one variant here, one
+//! name below and one arm there — the compiler finds a missing arm.
 
 use super::Named;
 
-/// A shadow technique of `techniques::REGISTRY`.
+/// A shadow technique (its plan: `techniques::technique`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum TechniqueId {
     None,
@@ -30,6 +33,14 @@ impl Named for TechniqueId {
 
 impl std::fmt::Display for TechniqueId {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
+        // `pad`, so that widths and alignment (`{:<22}`) apply as they do to the name.
+        f.pad(self.name())
+    }
+}
+
+/// Serialised as its name (`"depth-compare"`), as tables and JSON print it.
+impl serde::Serialize for TechniqueId {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.name())
     }
 }

@@ -7,14 +7,15 @@ use std::path::Path;
 
 use fixedfunc::metrics::{edge_band, Class, Mask};
 use fixedfunc::render::{apply_overrides, render, ImageSize, RenderOptions, RenderOutcome};
-use fixedfunc::scene::{Scene, KNOWN_TECHNIQUES};
+use fixedfunc::scene::Scene;
+use fixedfunc::techniques::parse_name;
 use fixedfunc::truth::{truth, TruthOptions};
 
 pub const KINDS: [PipelineKind; 2] = [PipelineKind::Emulate, PipelineKind::Native];
 
 /// A scene from TOML text; a bad scene fails the test with its error.
 pub fn scene(text: &str) -> Scene {
-    Scene::parse(text, Path::new("test.toml"), KNOWN_TECHNIQUES).unwrap_or_else(|e| panic!("{e}"))
+    Scene::parse(text, Path::new("test.toml")).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// One frame of `technique` on the EGL backend at `size`.
@@ -26,7 +27,7 @@ pub fn run(
 ) -> RenderOutcome {
     let options = RenderOptions {
         pipeline,
-        technique: Some(technique.into()),
+        technique: Some(parse_name(technique).expect("a technique")),
         size: Some(size),
         frames: 2,
         ..RenderOptions::default()

@@ -1,4 +1,7 @@
-//! Order statistics of repeated timings.
+//! Order statistics of repeated timings: the median, minimum and maximum every timed figure
+//! is reported with (render's steady frames, bench's groups, a sweep's cells). Pure code at
+//! the bottom of the layer order, so that the layers that time things share it without
+//! reaching up to one another.
 
 use serde::Serialize;
 

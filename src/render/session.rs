@@ -1,0 +1,316 @@
+//! One render held open: context, framebuffer, pipeline and plan, frames on demand.
+//!
+//! [`Session::new`] applies the options' overrides to a copy of the scene, prepares the
+//! geometry once (`techniques::Prepared`), builds the technique's plan, creates a context of
+//! the pipeline's profile on the backend (a private Xvfb for the window backend when no
+//! display is set), the framebuffer the plan asks for (RGBA8, the light's depth bits,
+//! stencil when a technique uses it; large enough for the image and the light's map, which
+//! share it as on the era's hardware) and the pipeline (`pipeline::create_with`, the only
+//! code naming a concrete path), then executes the plan's setup once.
+//!
+//! [`Session::frame`] is timed from its first command to glFinish returning, so the
+//! driver's work is inside the figure. Frame 1 is *cold* (programs compiled, buffers
+//! uploaded, maps made); later frames are *steady*. The map passes run on frame 1 and then
+//! only when the maps are stale: under an [`Orbit`](super::Orbit) each frame is re-planned
+//! over the same geometry, and the maps are stale exactly when the new map passes differ
+//! from those that made them — or every frame with [`RemakeMaps::Always`].
+//!
+//! [`Session::finish`] executes the mask plan, decodes the mask, reads the colour image
+//! (the image's corner of the framebuffer) and the light's map when asked, takes the
+//! counters, releases the GL objects, and judges the mask against the truth.
+
+use std::time::Instant;
+
+use image::RgbaImage;
+
+use crate::gpu::{Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay};
+use crate::metrics::{self, Mask};
+use crate::pipeline::Pipeline;
+use crate::scene::{Scene, ShadowSettings};
+use crate::techniques::{self, Pass, Plan, Prepared};
+use crate::truth::{self, Truth};
+use crate::vocab::TechniqueId;
+
+use super::{
+    apply_overrides, run, FrameTimings, LightMap, PassTime, RemakeMaps, RenderError, RenderOptions,
+    RenderOutcome, MAX_IMAGE_SIZE,
+};
+
+/// One render held open: context, framebuffer, pipeline and plan, frames on demand.
+pub struct Session {
+    scene: Scene,
+    /// The scene as given (frame 1), from which an orbit computes later frames.
+    base: Scene,
+    prepared: Prepared,
+    plan: Plan,
+    /// The map passes that made the current maps: the maps are stale exactly when the next
+    /// frame's map passes differ from these (the light, a caster or a setting moved).
+    maps_from: Option<Vec<Pass>>,
+    options: RenderOptions,
+    // Dropped in this order: the pipeline and target are released explicitly first.
+    pipeline: Box<dyn Pipeline>,
+    target: Option<RenderTarget>,
+    ctx: GpuContext,
+    _display: Option<VirtualDisplay>,
+    frames_ms: Vec<f64>,
+    pass_ms: Vec<Vec<f64>>,
+    maps_made: u32,
+    released: bool,
+}
+
+impl Drop for Session {
+    fn drop(&mut self) {
+        self.release();
+    }
+}
+
+/// The plan of the scene's technique.
+fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, RenderError> {
+    let technique = techniques::technique(scene.shadow.technique);
+    Ok((technique.plan)(scene, prepared)?)
+}
+
+impl Session {
+    /// Plans the technique, creates the context, framebuffer and pipeline, and executes
+    /// the plan's setup.
+    pub fn new(scene: &Scene, options: &RenderOptions) -> Result<Session, RenderError> {
+        let scene = apply_overrides(scene, options.size, options.technique);
+        let prepared = Prepared::new(&scene);
+        let plan = plan(&scene, &prepared)?;
+        let fb = plan.framebuffer;
+        if fb.width > MAX_IMAGE_SIZE || fb.height > MAX_IMAGE_SIZE {
+            return Err(RenderError::MapTooLarge {
+                size: scene.shadow.map_size,
+                max: MAX_IMAGE_SIZE,
+            });
+        }
+        let display = match options.backend {
+            Backend::Window => VirtualDisplay::start_if_needed()?,
+            Backend::Egl | Backend::OsMesa => None,
+        };
+        let ctx = GpuContext::new(&ContextRequest::new(
+            options.backend,
+            crate::pipeline::profile(options.pipeline),
+        ))?;
+        let mut spec = TargetSpec::new(fb.width, fb.height, fb.depth);
+        if fb.stencil {
+            spec = spec.with_stencil();
+        }
+        let target = RenderTarget::new(&ctx, spec)?;
+        // Bound once: the binding is the context's state, and a later bind would reset the
+        // viewport behind the emulated pipeline's shadow copy. The pipeline starts from the
+        // target's viewport, as GL starts from the window's.
+        target.bind(&ctx);
+        let mut pipeline =
+            crate::pipeline::create_with(options.pipeline, &ctx, scene.shadow.precision)?;
+        let setup = run(pipeline.as_mut(), &ctx, "setup", 0, &plan.setup);
+        let pass_ms = vec![Vec::new(); plan.pass_count()];
+        let mut session = Session {
+            base: scene.clone(),
+            scene,
+            prepared,
+            plan,
+            maps_from: None,
+            options: options.clone(),
+            pipeline,
+            target: Some(target),
+            ctx,
+            _display: display,
+            frames_ms: Vec::new(),
+            pass_ms,
+            maps_made: 0,
+            released: false,
+        };
+        if let Err(e) = setup {
+            session.release();
+            return Err(e);
+        }
+        Ok(session)
+    }
+
+    /// The scene as rendered (overrides applied).
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// The technique.
+    pub fn technique(&self) -> TechniqueId {
+        self.scene.shadow.technique
+    }
+
+    /// Replaces the scene's `[shadow]` settings (bias, map size, filter…) but its technique,
+    /// and re-plans: the context, framebuffer, pipeline and compiled programs stay; the
+    /// maps are stale, so the next frame makes them again. The framebuffer must suit the
+    /// new plan (same depth bits and stencil, large enough), else [`RenderError::Restage`].
+    pub fn restage(&mut self, shadow: &ShadowSettings) -> Result<(), RenderError> {
+        let mut scene = self.scene.clone();
+        scene.shadow = ShadowSettings {
+            technique: scene.shadow.technique,
+            ..shadow.clone()
+        };
+        let plan = plan(&scene, &self.prepared)?;
+        let (old, new) = (self.plan.framebuffer, plan.framebuffer);
+        if old.depth != new.depth
+            || old.stencil != new.stencil
+            || new.width > old.width
+            || new.height > old.height
+        {
+            return Err(RenderError::Restage);
+        }
+        self.ctx.make_current()?;
+        run(self.pipeline.as_mut(), &self.ctx, "setup", 0, &plan.setup)?;
+        self.pass_ms = vec![Vec::new(); plan.pass_count()];
+        self.plan = plan;
+        self.base = scene.clone();
+        self.scene = scene;
+        self.maps_made = 0;
+        self.maps_from = None;
+        Ok(())
+    }
+
+    /// Executes the mask plan now and decodes the technique's mask of the last frame.
+    pub fn mask(&mut self) -> Result<Mask, RenderError> {
+        self.ctx.make_current()?;
+        let frames = self.frames_ms.len() as u32;
+        let p = self.pipeline.as_mut();
+        run(p, &self.ctx, "mask", frames, &self.plan.mask.commands)?;
+        Ok(self.plan.mask.decode(|slot| p.readback(slot))?)
+    }
+
+    /// Renders one frame and returns its time in milliseconds.
+    pub fn frame(&mut self) -> Result<f64, RenderError> {
+        self.ctx.make_current()?;
+        let n = self.frames_ms.len() as u32 + 1;
+        let mut stale = self.maps_from.is_none();
+        if let Some(orbit) = self.options.orbit {
+            // The scene moved: plan again (cheap: commands over the same geometry). Only a
+            // re-planned frame can change the map passes, so only it compares them.
+            let scene = orbit.scene_at(&self.base, n);
+            self.plan = plan(&scene, &self.prepared)?;
+            self.scene = scene;
+            stale = stale || self.maps_from.as_ref() != Some(&self.plan.maps);
+        }
+        let make_maps = stale || self.options.remake_maps == RemakeMaps::Always;
+        let start = Instant::now();
+        let maps = self.plan.maps.len();
+        for (i, pass) in self.plan.maps.iter().chain(&self.plan.passes).enumerate() {
+            if i < maps && !make_maps {
+                continue;
+            }
+            let pass_start = Instant::now();
+            run(
+                self.pipeline.as_mut(),
+                &self.ctx,
+                pass.name,
+                n,
+                &pass.commands,
+            )?;
+            if self.options.pass_times {
+                self.ctx.finish();
+                self.pass_ms[i].push(pass_start.elapsed().as_secs_f64() * 1e3);
+            }
+        }
+        self.ctx.finish();
+        let ms = start.elapsed().as_secs_f64() * 1e3;
+        if make_maps && maps > 0 {
+            self.maps_made += 1;
+            self.maps_from = Some(self.plan.maps.clone());
+        }
+        self.frames_ms.push(ms);
+        Ok(ms)
+    }
+
+    /// Executes the mask plan, reads the image (and the map when asked), releases the GL
+    /// objects, and judges the mask against `truth` (ray-cast now when `None`).
+    pub fn finish(mut self, truth: Option<&Truth>) -> Result<RenderOutcome, RenderError> {
+        let gpu = self.read_results();
+        self.release();
+        let (image, mask, light_map) = gpu?;
+        let truth = match truth {
+            Some(t) => t.clone(),
+            None => truth::truth(&self.scene, &self.options.truth)?,
+        };
+        let metrics = metrics::compare(&mask, &truth.mask, self.options.band)?;
+        let cold_ms = self.frames_ms.first().copied().unwrap_or(0.0);
+        let steady = self.frames_ms.get(1..).unwrap_or(&[]).to_vec();
+        let names = self
+            .plan
+            .maps
+            .iter()
+            .map(|p| (p.name, true))
+            .chain(self.plan.passes.iter().map(|p| (p.name, false)));
+        let pass_times = if self.options.pass_times {
+            names
+                .zip(&self.pass_ms)
+                .map(|((name, map), ms)| PassTime {
+                    name,
+                    map,
+                    ms: ms.clone(),
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Ok(RenderOutcome {
+            technique: self.technique(),
+            pipeline: self.options.pipeline,
+            backend: self.options.backend,
+            context_path: self.ctx.path().to_string(),
+            image,
+            mask,
+            truth,
+            metrics,
+            timings: FrameTimings::new(cold_ms, steady),
+            passes: self.plan.pass_count(),
+            counters: self.pipeline.counters(),
+            maps_made: self.maps_made,
+            pass_times,
+            light_map,
+            notes: self.plan.notes.clone(),
+        })
+    }
+
+    fn read_results(&mut self) -> Result<GpuResults, RenderError> {
+        self.ctx.make_current()?;
+        let target = self.target.as_ref().ok_or(RenderError::Released)?;
+        let frames = self.frames_ms.len() as u32;
+        let p = self.pipeline.as_mut();
+        // The picture first: mask plans may draw over it.
+        let (w, h) = (self.scene.image.width, self.scene.image.height);
+        let full = target.read_color(&self.ctx)?;
+        // The image is the framebuffer's lower-left w×h: the last h rows, top row first.
+        let mut image = image::imageops::crop_imm(&full, 0, full.height() - h, w, h).to_image();
+        // What a screen shows: destination alpha holds whatever the passes computed there
+        // (alpha-tested comparisons leave their values behind); the picture is opaque.
+        for px in image.pixels_mut() {
+            px.0[3] = 255;
+        }
+        run(p, &self.ctx, "mask", frames, &self.plan.mask.commands)?;
+        let mask = self.plan.mask.decode(|slot| p.readback(slot))?;
+        let mut light_map = None;
+        if self.options.depth_map {
+            if let Some(m) = &self.plan.map_image {
+                for pass in &self.plan.maps {
+                    run(p, &self.ctx, pass.name, frames, &pass.commands)?;
+                }
+                run(p, &self.ctx, "depth-map", frames, &m.commands)?;
+                light_map = Some(LightMap::read(m.source, |slot| p.readback(slot))?);
+            }
+        }
+        Ok((image, mask, light_map))
+    }
+
+    fn release(&mut self) {
+        if std::mem::replace(&mut self.released, true) {
+            return;
+        }
+        if self.ctx.make_current().is_ok() {
+            self.pipeline.release(&self.ctx);
+            if let Some(t) = self.target.take() {
+                t.delete(&self.ctx);
+            }
+        }
+    }
+}
+
+type GpuResults = (RgbaImage, Mask, Option<LightMap>);
