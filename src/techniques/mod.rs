@@ -32,6 +32,7 @@ pub mod parts;
 pub mod planar;
 pub mod plane;
 pub mod projective;
+pub mod setup;
 
 use std::sync::Arc;
 
