@@ -9,7 +9,7 @@ use std::fmt::Write as _;
 use crate::render::pipeline_name;
 use crate::study::{Comparison, RowResult};
 
-use super::compare_files::{RowFiles, CSV, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
+use super::file_names::{RowFiles, CSV, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
 use super::table::ms_cell;
 use super::{ResultRow, Written, ERROR_COLOURS};
 
