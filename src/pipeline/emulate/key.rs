@@ -9,9 +9,9 @@
 
 use super::polygon::EdgeRule;
 use crate::ff::{
-    AlphaTest, BaseFormat, ColorMaterialMode, Combine, CombineFunc, CombineOperand, CombineScale,
-    CombineSource, CombinerInput, CompareFunc, CompareMode, DepthTextureMode, Face, FixedState,
-    GeneralStage, Precision, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode,
+    AlphaTest, BaseFormat, ColorControl, ColorMaterialMode, Combine, CombineFunc, CombineOperand,
+    CombineScale, CombineSource, CombinerInput, CompareFunc, CompareMode, DepthTextureMode, Face,
+    FixedState, GeneralStage, Precision, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode,
     TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
 };
 
@@ -40,6 +40,9 @@ pub struct LightingKey {
     pub local_viewer: bool,
     pub two_side: bool,
     pub color_material: Option<ColorMaterialKey>,
+    /// LIGHT_MODEL_COLOR_CONTROL = SEPARATE_SPECULAR_COLOR: the specular terms go to the
+    /// secondary colour instead of the primary (GL 1.2 §2.13.1).
+    pub separate_specular: bool,
 }
 
 /// How one texture coordinate is produced.
@@ -141,6 +144,10 @@ pub struct FragmentKey {
     pub combiners: Option<CombinersKey>,
     /// Two-sided lighting: the fragment picks the back colour on back faces.
     pub two_side: bool,
+    /// Colour sum (GL 1.2 §3.9): the secondary colour (the separate specular of lighting)
+    /// is added to the RGB after texturing; under register combiners it is their
+    /// SECONDARY_COLOR register instead.
+    pub color_sum: bool,
     pub flat: bool,
     /// `None` when the alpha test is off or ALWAYS (no code at all).
     pub alpha_test: Option<CompareFunc>,
@@ -161,6 +168,7 @@ impl ShaderKey {
         let units = enabled_units(state);
         let lighting = lighting_key(state);
         let two_side = lighting.as_ref().is_some_and(|l| l.two_side);
+        let color_sum = lighting.as_ref().is_some_and(|l| l.separate_specular);
         let vertex_units: Vec<VertexUnitKey> = units
             .iter()
             .map(|&(unit, _, _)| VertexUnitKey {
@@ -215,6 +223,7 @@ impl ShaderKey {
             precision,
             combiners,
             two_side,
+            color_sum,
             flat: state.shade_model == ShadeModel::Flat,
             alpha_test: state
                 .alpha_test
@@ -336,6 +345,7 @@ fn lighting_key(state: &FixedState) -> Option<LightingKey> {
         local_viewer: state.light_model.local_viewer,
         two_side,
         color_material,
+        separate_specular: state.light_model.color_control == ColorControl::SeparateSpecularColor,
     })
 }
 

@@ -9,11 +9,13 @@
 //!    a key that splits identical code (a needless program) or merges different code (a
 //!    wrong program) fails here, whatever the case's author believed.
 //!
-//! Run against the key as it was, seven cases failed, all state the code does not read that
+//! Run against the key as it was, eight cases failed. In seven, state the code does not read
 //! still split the key: NORMALIZE / RESCALE_NORMAL with no normal in use; COLOR_MATERIAL on
 //! the back face without two-sided lighting (with the front face, and alone); an argument
 //! the combine function ignores; COMBINE_ALPHA under DOT3_RGBA; the env and the
-//! DEPTH_TEXTURE_MODE of a unit under register combiners.
+//! DEPTH_TEXTURE_MODE of a unit under register combiners. In one, SEPARATE_SPECULAR_COLOR,
+//! state that changes the picture changed neither the key nor the code: it is generated now,
+//! and replayed against Mesa in `tests/scripts/fidelity/separate_specular.c`.
 //!
 //! Fog is not in the table: the state model has no fog (techniques never enable it).
 
@@ -23,12 +25,12 @@ use glam::{Mat4, Vec3, Vec4};
 
 use super::ShaderKey;
 use crate::ff::{
-    Capability, ClearMask, ColorMask, ColorMaterialMode, CombineArg, CombineFunc, CombineOperand,
-    CombineSource, CombinerParam, Command, CompareFunc, CompareMode, DepthTextureMode, Face,
-    Filter, FixedState, FrontFace, LightModelParam, LightParam, MaterialParam, MatrixMode,
-    PixelFormat, PixelType, PolygonMode, Precision, ShadeModel, StencilOp, TexCoord, TexData,
-    TexEnvMode, TexEnvParam, TexFormat, TexGenMode, TexGenParam, TexImage, TexParam, TexSubImage,
-    TextureTarget, ViewVolume, Viewport, Wrap,
+    Capability, ClearMask, ColorControl, ColorMask, ColorMaterialMode, CombineArg, CombineFunc,
+    CombineOperand, CombineSource, CombinerParam, Command, CompareFunc, CompareMode,
+    DepthTextureMode, Face, Filter, FixedState, FrontFace, LightModelParam, LightParam,
+    MaterialParam, MatrixMode, PixelFormat, PixelType, PolygonMode, Precision, ShadeModel,
+    StencilOp, TexCoord, TexData, TexEnvMode, TexEnvParam, TexFormat, TexGenMode, TexGenParam,
+    TexImage, TexParam, TexSubImage, TextureTarget, ViewVolume, Viewport, Wrap,
 };
 use crate::pipeline::emulate::shadergen;
 
@@ -370,6 +372,13 @@ fn same_code() -> Vec<Case> {
                 Command::LightModel(LightModelParam::LocalViewer(true)),
                 Command::Enable(Capability::ColorMaterial),
             ],
+        ),
+        same(
+            "SEPARATE_SPECULAR_COLOR while lighting is off",
+            textured(),
+            vec![Command::LightModel(LightModelParam::ColorControl(
+                ColorControl::SeparateSpecularColor,
+            ))],
         ),
         same(
             "NORMALIZE and RESCALE_NORMAL with no lighting and no sphere map",
@@ -799,6 +808,20 @@ fn changed_code() -> Vec<Case> {
             "NORMALIZE with SPHERE_MAP",
             sphere_mapped(),
             vec![Command::Enable(Capability::Normalize)],
+        ),
+        changes(
+            "SEPARATE_SPECULAR_COLOR",
+            plus(textured(), lit()),
+            vec![Command::LightModel(LightModelParam::ColorControl(
+                ColorControl::SeparateSpecularColor,
+            ))],
+        ),
+        changes(
+            "SEPARATE_SPECULAR_COLOR under register combiners (their SECONDARY_COLOR)",
+            with_combiners(plus(textured(), lit())),
+            vec![Command::LightModel(LightModelParam::ColorControl(
+                ColorControl::SeparateSpecularColor,
+            ))],
         ),
         changes(
             "flat shading",
