@@ -9,8 +9,11 @@
 //!   floor's pixels wrong in all. Beyond the band the only wrong pixels allowed are the
 //!   floor's far edge, one image row that the truth covers and the rasteriser does not
 //!   (see [`FAR_EDGE_ROW`]): no shadow error beyond the band;
-//! - emulate against native: masks differ on at most 0.2 % of the pixels, images by at
-//!   most 3/255 per channel on at most 1 % of the pixels.
+//! - emulate against native: the same masks, pixel for pixel, and images within 1/255 per
+//!   channel (measured, Mesa 22.3.6 llvmpipe: 0 mask pixels differ in every scene here; the
+//!   images of the separated scenes differ on one pixel of the lit sphere, green 66 against
+//!   65 — fp32 vertex lighting evaluated in another order — and the default scene's not at
+//!   all).
 
 mod projection;
 mod support;
@@ -130,16 +133,12 @@ fn emulate_and_native_agree() {
     ] {
         let e = run(&scene, "projective", PipelineKind::Emulate, SIZE);
         let n = run(&scene, "projective", PipelineKind::Native, SIZE);
-        let pixels = (SIZE.width * SIZE.height) as usize;
         let differ = mask_difference(&e.mask, &n.mask);
         let name = format!("projective-{:?}", scene.shadow.projector);
-        assert!(
-            differ * 500 <= pixels,
-            "{name}: masks differ on {differ} pixels"
-        );
+        assert_eq!(differ, 0, "{name}: masks differ on {differ} pixels");
         let tolerance = Tolerance {
-            per_channel: 3,
-            max_bad_pixels: pixels / 100,
+            per_channel: 1,
+            max_bad_pixels: 0,
         };
         assert_images_match(&name, &e.image, &n.image, tolerance);
     }
@@ -376,10 +375,8 @@ fn the_silhouette_pass_leaves_an_affine_modelview_and_the_paths_agree() {
         mask_of(&plan, PipelineKind::Native),
     );
     let differ = mask_difference(&e, &n);
-    assert!(
-        differ * 500 <= e.data.len(),
-        "masks differ on {differ} pixels"
-    );
+    // Exact: measured 0 pixels differ.
+    assert_eq!(differ, 0, "masks differ on {differ} pixels");
 }
 
 /// Mesa deviation, pinned (Mesa 22.3.6 llvmpipe, compatibility profile): draws under a
@@ -427,10 +424,8 @@ fn an_image_smaller_than_the_map_renders_alike_on_both_paths() {
         .expect("render")
     };
     let (e, n) = (render(PipelineKind::Emulate), render(PipelineKind::Native));
+    // Exact: measured 0 mask pixels differ, and the error is 8.508 % on both paths.
     let differ = mask_difference(&e.mask, &n.mask);
-    assert!(
-        differ * 500 <= e.mask.data.len(),
-        "masks differ on {differ} pixels"
-    );
-    assert!((e.metrics.all.wrong_percent - n.metrics.all.wrong_percent).abs() < 0.5);
+    assert_eq!(differ, 0, "masks differ on {differ} pixels");
+    assert_eq!(e.metrics.all, n.metrics.all);
 }
