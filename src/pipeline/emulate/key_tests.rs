@@ -76,6 +76,7 @@ fn state_of(commands: &[Command], name: &str) -> FixedState {
     state
 }
 
+/// The key in `Precision::Float`.
 fn key(state: &FixedState) -> ShaderKey {
     ShaderKey::from_state(state, Precision::Float)
 }
@@ -857,8 +858,8 @@ fn changed_code() -> Vec<Case> {
     ]
 }
 
-/// Runs one case; returns a line describing a failure.
-fn check(case: &Case) -> Option<String> {
+/// Runs one case in one precision; returns a line describing a failure.
+fn check(case: &Case, precision: Precision) -> Option<String> {
     let before = state_of(&case.base, case.name);
     let mut after = before.clone();
     for c in &case.change {
@@ -866,22 +867,24 @@ fn check(case: &Case) -> Option<String> {
             .apply(c)
             .unwrap_or_else(|e| panic!("{}: {c:?} is a GL error: {e:?}", case.name));
     }
-    let (k0, k1) = (key(&before), key(&after));
+    let (k0, k1) = (
+        ShaderKey::from_state(&before, precision),
+        ShaderKey::from_state(&after, precision),
+    );
     let key_changed = k0 != k1;
     let code_changed = shadergen::generate(&k0) != shadergen::generate(&k1);
     let expected = case.code == Code::Changes;
+    let name = format!("{} ({precision:?})", case.name);
     if key_changed != expected {
         return Some(format!(
-            "{}: the key {} but should {}\n  before {k0:?}\n  after  {k1:?}",
-            case.name,
+            "{name}: the key {} but should {}\n  before {k0:?}\n  after  {k1:?}",
             if key_changed { "changed" } else { "stayed" },
             if expected { "change" } else { "stay" },
         ));
     }
     if key_changed != code_changed {
         return Some(format!(
-            "{}: the key {} but the code {}",
-            case.name,
+            "{name}: the key {} but the code {}",
             if key_changed { "changed" } else { "stayed" },
             if code_changed { "changed" } else { "stayed" },
         ));
@@ -892,12 +895,16 @@ fn check(case: &Case) -> Option<String> {
 #[test]
 fn equal_code_has_an_equal_key_and_different_code_a_different_key() {
     let cases: Vec<Case> = same_code().into_iter().chain(changed_code()).collect();
-    let failures: Vec<String> = cases.iter().filter_map(check).collect();
+    // Both precisions: Fixed8 generates other code for the same key shape.
+    let failures: Vec<String> = [Precision::Float, Precision::Fixed8]
+        .into_iter()
+        .flat_map(|p| cases.iter().filter_map(move |c| check(c, p)))
+        .collect();
     assert!(
         failures.is_empty(),
         "{} of {} cases fail:\n{}",
         failures.len(),
-        cases.len(),
+        2 * cases.len(),
         failures.join("\n")
     );
 }
