@@ -32,7 +32,7 @@ const fn case(name: &'static str, w: u32, h: u32, per_channel: u8, max_bad: usiz
 }
 
 /// The table. Tolerances are per channel (of 255) and a count of pixels allowed beyond it.
-const CASES: [Case; 16] = [
+const CASES: [Case; 17] = [
     case("alpha_test_boundaries", 8, 1, 0, 0),
     // Fixed-point vs fp32 combine arithmetic: 1/255.
     case("combine_bugs_crossbar", 8, 1, 1, 0),
@@ -41,6 +41,7 @@ const CASES: [Case; 16] = [
     // their outlines, 4 × 61 pixels each, are blue there and white on the emulated path.
     case("polygon_mode_offset", 448, 64, 0, 2 * 4 * 61),
     case("polygon_offset_modes", 600, 150, 0, 0),
+    case("separate_specular", 64, 32, 0, 0),
     Case {
         frame: Frame::new(4, 1).with_stencil(),
         ..case("stencil_wrap", 4, 1, 0, 0)

@@ -6,17 +6,21 @@
 //!   truth shadow edge (the silhouette is a 256² NEAREST texture, about one texel per
 //!   image pixel here, so its staircase can put an edge one pixel further; 3 pixels for the
 //!   perspective light, whose 80° frustum spreads the texels wider), at most 3 % of the
-//!   floor's pixels wrong in all. On the default scene's floor up to 1 % may be wrong beyond
-//!   the band (measured ~0.45 % with both projectors, not yet explained);
-//! - emulate against native: masks differ on at most 0.2 % of the pixels, images by at
-//!   most 3/255 per channel on at most 1 % of the pixels.
+//!   floor's pixels wrong in all. Beyond the band the only wrong pixels allowed are the
+//!   floor's far edge, one image row that the truth covers and the rasteriser does not
+//!   (see [`FAR_EDGE_ROW`]): no shadow error beyond the band;
+//! - emulate against native: the same masks, pixel for pixel, and images within 1/255 per
+//!   channel (measured, Mesa 22.3.6 llvmpipe: 0 mask pixels differ in every scene here; the
+//!   images of the separated scenes differ on one pixel of the lit sphere, green 66 against
+//!   65 — fp32 vertex lighting evaluated in another order — and the default scene's not at
+//!   all).
 
 mod projection;
 mod support;
 
 use fixedfunc::ff::Command;
 use fixedfunc::gpu::{ContextRequest, GpuContext, RenderTarget, TargetSpec};
-use fixedfunc::metrics::{Class, Mask};
+use fixedfunc::metrics::{edge_band, Class, Mask};
 use fixedfunc::pipeline;
 use fixedfunc::render::{apply_overrides, ImageSize};
 use fixedfunc::scene::Scene;
@@ -34,6 +38,21 @@ const SIZE: ImageSize = ImageSize {
 };
 
 const PROJECTORS: [Projector; 2] = [Projector::Perspective, Projector::PseudoDepth];
+
+/// The image row (top row 0) of the default floor's far edge at `SIZE`, where the truth and
+/// the rasteriser disagree about coverage — not about shadows.
+///
+/// The edge (z = −8, y = 0) seen from the eye (0, 9, 20) looking at the origin with fovy 40°
+/// projects to window y = 167.502 on a 256-pixel-high image: 0.002 px above the centres
+/// of row 167 from the bottom, row 88 from the top. The ray cast through those centres hits
+/// the floor (exact arithmetic, 0.002 px inside). The rasteriser works to 1/256 px (llvmpipe's
+/// 8 sub-pixel bits; 0.002 px is half a step), so the centres lie on the edge, and GL's tie
+/// rule leaves a centre on a polygon's top edge uncovered: the pixels are background.
+/// Measured (Mesa 22.3.6 llvmpipe, both paths alike): every floor pixel wrong beyond the band
+/// is in this row, truth lit, mask background — 120 with the perspective projector, 127
+/// with the pseudo-depth one (its narrower band leaves 7 more of the row outside it), of
+/// 26 761 floor pixels (0.45 %). They were the "not yet explained" 0.45 %.
+const FAR_EDGE_ROW: usize = 88;
 
 fn plan(scene: &Scene) -> Result<Plan, TechniqueError> {
     (lookup("projective").unwrap().plan)(scene, &Prepared::new(scene))
@@ -62,16 +81,44 @@ fn ground_shadows_match_the_truth_when_casters_and_receivers_are_separated() {
         };
         for kind in KINDS {
             let out = run(&scene, "projective", kind, SIZE);
+            let near_edge = edge_band(&out.truth.mask, band);
             let s = score(&out.mask, &out.truth.mask, &ground, band);
             assert!(s.shadowed_in_truth > 500, "{projector:?} {kind:?}: {s:?}");
-            // Measured: 120 (perspective) and 127 (pseudo-depth) of 26 761 floor pixels
-            // wrong beyond the band, ~0.45 %, on both paths; not yet explained.
-            assert!(
-                s.wrong_outside_band * 100 <= s.pixels,
-                "{projector:?} {kind:?}: {s:?}"
+            // Beyond the band: the far edge's coverage row only, never a shadow error.
+            let width = SIZE.width as usize;
+            let beyond: Vec<(usize, Class, Class)> = (0..ground.len())
+                .filter(|&i| ground[i] && !near_edge[i])
+                .map(|i| {
+                    let truth = Class::of(out.truth.mask.data[i]);
+                    (i, truth, Class::of(out.mask.data[i]))
+                })
+                .filter(|(_, truth, mask)| truth != mask)
+                .collect();
+            let row = beyond
+                .iter()
+                .filter(|(i, truth, mask)| {
+                    i / width == FAR_EDGE_ROW
+                        && *truth != Class::Background
+                        && *mask == Class::Background
+                })
+                .count();
+            assert_eq!(
+                row,
+                beyond.len(),
+                "{projector:?} {kind:?}: {} wrong pixels beyond the band are not the far edge's row: {:?}",
+                beyond.len() - row,
+                beyond
+                    .iter()
+                    .filter(|(i, _, _)| i / width != FAR_EDGE_ROW)
+                    .take(8)
+                    .map(|(i, t, m)| format!("({}, {}) truth {t:?} mask {m:?}", i % width, i / width))
+                    .collect::<Vec<_>>()
             );
+            assert_eq!(s.wrong_outside_band, row, "{projector:?} {kind:?}: {s:?}");
+            // In the band: the silhouette's staircase. Measured 78 (perspective) and 42
+            // (pseudo-depth) pixels besides the row, 0.3 % and 0.2 % of the floor.
             assert!(
-                s.wrong * 100 <= 3 * s.pixels,
+                (s.wrong - row) * 100 <= s.pixels,
                 "{projector:?} {kind:?}: {s:?}"
             );
         }
@@ -87,16 +134,12 @@ fn emulate_and_native_agree() {
     ] {
         let e = run(&scene, "projective", PipelineKind::Emulate, SIZE);
         let n = run(&scene, "projective", PipelineKind::Native, SIZE);
-        let pixels = (SIZE.width * SIZE.height) as usize;
         let differ = mask_difference(&e.mask, &n.mask);
         let name = format!("projective-{:?}", scene.shadow.projector);
-        assert!(
-            differ * 500 <= pixels,
-            "{name}: masks differ on {differ} pixels"
-        );
+        assert_eq!(differ, 0, "{name}: masks differ on {differ} pixels");
         let tolerance = Tolerance {
-            per_channel: 3,
-            max_bad_pixels: pixels / 100,
+            per_channel: 1,
+            max_bad_pixels: 0,
         };
         assert_images_match(&name, &e.image, &n.image, tolerance);
     }
@@ -333,10 +376,8 @@ fn the_silhouette_pass_leaves_an_affine_modelview_and_the_paths_agree() {
         mask_of(&plan, PipelineKind::Native),
     );
     let differ = mask_difference(&e, &n);
-    assert!(
-        differ * 500 <= e.data.len(),
-        "masks differ on {differ} pixels"
-    );
+    // Exact: measured 0 pixels differ.
+    assert_eq!(differ, 0, "masks differ on {differ} pixels");
 }
 
 /// Mesa deviation, pinned (Mesa 22.3.6 llvmpipe, compatibility profile): draws under a
@@ -384,10 +425,8 @@ fn an_image_smaller_than_the_map_renders_alike_on_both_paths() {
         .expect("render")
     };
     let (e, n) = (render(PipelineKind::Emulate), render(PipelineKind::Native));
+    // Exact: measured 0 mask pixels differ, and the error is 8.508 % on both paths.
     let differ = mask_difference(&e.mask, &n.mask);
-    assert!(
-        differ * 500 <= e.mask.data.len(),
-        "masks differ on {differ} pixels"
-    );
-    assert!((e.metrics.all.wrong_percent - n.metrics.all.wrong_percent).abs() < 0.5);
+    assert_eq!(differ, 0, "masks differ on {differ} pixels");
+    assert_eq!(e.metrics.all, n.metrics.all);
 }

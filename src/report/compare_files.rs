@@ -11,33 +11,9 @@ use crate::scene::{LightKind, Scene};
 use crate::study::{Comparison, RowCost, RowResult};
 
 use super::csv::{line, opt};
+use super::file_names::{RowFiles, CSV, HTML, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
 use super::pictures::{self, SheetLine};
 use super::{ensure_dir, html, plot, write_png, write_text, ReportError, ResultRow, Written};
-
-/// File names of a row's pictures.
-pub(super) struct RowFiles {
-    pub image: String,
-    pub mask: String,
-    pub error: String,
-}
-
-impl RowFiles {
-    pub fn of(slug: &str) -> RowFiles {
-        RowFiles {
-            image: format!("{slug}.png"),
-            mask: format!("{slug}-mask.png"),
-            error: format!("{slug}-error.png"),
-        }
-    }
-}
-
-pub(super) const TRUTH_MASK: &str = "truth-mask.png";
-pub(super) const PLOT_SVG: &str = "accuracy_vs_time.svg";
-pub(super) const PLOT_PNG: &str = "accuracy_vs_time.png";
-pub(super) const SHEET: &str = "contact_sheet.png";
-pub(super) const CSV: &str = "results.csv";
-pub(super) const JSON: &str = "results.json";
-pub(super) const HTML: &str = "report.html";
 
 /// Writes every file of the comparison into `dir` (created when missing). `scene_name`
 /// names the scene on the page.

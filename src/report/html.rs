@@ -10,7 +10,7 @@ use crate::render::pipeline_name;
 use crate::study::{Comparison, RowResult};
 use crate::vocab::Named;
 
-use super::compare_files::{RowFiles, CSV, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
+use super::file_names::{RowFiles, CSV, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
 use super::table::ms_cell;
 use super::{ResultRow, Written, ERROR_COLOURS};
 

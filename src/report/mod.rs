@@ -17,6 +17,7 @@
 
 mod compare_files;
 mod csv;
+mod file_names;
 pub mod font;
 mod heatmap;
 mod html;

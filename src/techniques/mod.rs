@@ -31,6 +31,7 @@ pub mod parts;
 pub mod planar;
 pub mod plane;
 pub mod projective;
+pub mod setup;
 
 use crate::vocab::{DepthBits, Named, TechniqueId};
 use std::sync::Arc;

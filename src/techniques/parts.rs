@@ -30,7 +30,7 @@ use crate::ff::{
 };
 use crate::scene::{Light, Object, Scene};
 
-use super::none::{camera, GLOBAL_AMBIENT};
+use super::setup::{camera, light_commands, view_volume, GLOBAL_AMBIENT};
 use super::{Pass, Prepared, TechniqueError, MASK_BACKGROUND};
 
 /// Which picture a pass draws.
@@ -97,7 +97,7 @@ impl ShadowLight {
             .first()
             .ok_or(TechniqueError::NoLight { technique })?;
         // Square maps: aspect 1. The matrix is the one GL builds from the same volume.
-        let volume = super::none::view_volume(light.view.projection, 1.0);
+        let volume = view_volume(light.view.projection, 1.0);
         let (projection, near, far) = match &volume {
             Command::Frustum(v) => (ff::matrix::frustum(*v), v.near, v.far),
             Command::Ortho(v) => (ff::matrix::ortho(*v), v.near, v.far),
@@ -236,7 +236,7 @@ pub fn lighting(scene: &Scene, look: Look, set: LightSet) -> Vec<Command> {
             LightSet::ShadowingOnly => i == 0,
         };
         if on {
-            commands.extend(super::none::light_commands(i, light));
+            commands.extend(light_commands(i, light));
         } else {
             commands.push(Command::Disable(Capability::Light(i)));
         }

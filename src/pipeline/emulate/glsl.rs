@@ -1,32 +1,10 @@
 //! A GLSL source writer that records every uniform as it declares it (by its
 //! `UniformSource`), so that uploading walks the same list the generator wrote — the two
-//! cannot drift apart.
+//! cannot drift apart. It uses `uniforms` (the sources and their types), never the reverse.
 
 use std::fmt::Write;
 
 use super::uniforms::UniformSource;
-
-/// The GLSL type of a uniform.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum UniformType {
-    Float,
-    Vec4,
-    Mat3,
-    Mat4,
-    Int,
-}
-
-impl UniformType {
-    pub fn glsl(self) -> &'static str {
-        match self {
-            UniformType::Float => "float",
-            UniformType::Vec4 => "vec4",
-            UniformType::Mat3 => "mat3",
-            UniformType::Mat4 => "mat4",
-            UniformType::Int => "int",
-        }
-    }
-}
 
 /// Builds one shader's source: declarations first, then `main`'s body.
 #[derive(Default, Debug)]

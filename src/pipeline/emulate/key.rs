@@ -2,12 +2,17 @@
 //! of the generated code, and nothing else. Values (matrices, planes, colours, the alpha
 //! reference, the env colour) are uniforms; disabled units, lights and tests are absent
 //! from the key, so toggling them off can never cause a recompile of an unrelated program.
+//! State that is set but not read — the arguments a combine function ignores, the env of a
+//! unit under register combiners, NORMALIZE without lighting or sphere mapping, a back-face
+//! COLOR_MATERIAL without two-sided lighting — enters the key as one fixed value, so the
+//! rule holds both ways: equal code ⇔ equal key (`key_tests` checks it case by case).
 
 use super::polygon::EdgeRule;
 use crate::ff::{
-    AlphaTest, BaseFormat, ColorMaterialMode, Combine, CombinerInput, CompareFunc, CompareMode,
-    DepthTextureMode, Face, FixedState, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat,
-    TexGenMode, TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
+    AlphaTest, BaseFormat, ColorControl, ColorMaterialMode, Combine, CombineFunc, CombineOperand,
+    CombineScale, CombineSource, CombinerInput, CompareFunc, CompareMode, DepthTextureMode, Face,
+    FixedState, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode,
+    TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
 };
 use crate::vocab::Precision;
 
@@ -36,6 +41,9 @@ pub struct LightingKey {
     pub local_viewer: bool,
     pub two_side: bool,
     pub color_material: Option<ColorMaterialKey>,
+    /// LIGHT_MODEL_COLOR_CONTROL = SEPARATE_SPECULAR_COLOR: the specular terms go to the
+    /// secondary colour instead of the primary (GL 1.2 §2.13.1).
+    pub separate_specular: bool,
 }
 
 /// How one texture coordinate is produced.
@@ -74,6 +82,17 @@ pub enum TexelKey {
 }
 
 impl TexelKey {
+    /// The texel as register combiners read it: a depth texture's DEPTH_TEXTURE_MODE is
+    /// ignored there (depth arrives as (0,0,0,D), a compare result as (c,c,c,c)), so it
+    /// is fixed to one value.
+    fn under_combiners(self) -> TexelKey {
+        match self {
+            TexelKey::Color(b) => TexelKey::Color(b),
+            TexelKey::Depth(_) => TexelKey::Depth(DepthTextureMode::Intensity),
+            TexelKey::Compare(_) => TexelKey::Compare(DepthTextureMode::Intensity),
+        }
+    }
+
     /// The base format the texture environment sees (ARB_depth_texture: depth acts as
     /// LUMINANCE, INTENSITY or ALPHA by DEPTH_TEXTURE_MODE).
     pub fn env_base(self) -> BaseFormat {
@@ -126,6 +145,10 @@ pub struct FragmentKey {
     pub combiners: Option<CombinersKey>,
     /// Two-sided lighting: the fragment picks the back colour on back faces.
     pub two_side: bool,
+    /// Colour sum (GL 1.2 §3.9): the secondary colour (the separate specular of lighting)
+    /// is added to the RGB after texturing; under register combiners it is their
+    /// SECONDARY_COLOR register instead.
+    pub color_sum: bool,
     pub flat: bool,
     /// `None` when the alpha test is off or ALWAYS (no code at all).
     pub alpha_test: Option<CompareFunc>,
@@ -146,40 +169,62 @@ impl ShaderKey {
         let units = enabled_units(state);
         let lighting = lighting_key(state);
         let two_side = lighting.as_ref().is_some_and(|l| l.two_side);
+        let color_sum = lighting.as_ref().is_some_and(|l| l.separate_specular);
+        let vertex_units: Vec<VertexUnitKey> = units
+            .iter()
+            .map(|&(unit, _, _)| VertexUnitKey {
+                unit: unit as u8,
+                coords: TexCoord::ALL.map(|c| match state.units[unit].texgen(c) {
+                    Some(g) if !(g.mode == TexGenMode::SphereMap && c.index() >= 2) => {
+                        CoordSource::Generated(g.mode)
+                    }
+                    _ => CoordSource::Attribute,
+                }),
+            })
+            .collect();
+        // The eye-space normal exists only for lighting and SPHERE_MAP; without them
+        // NORMALIZE and RESCALE_NORMAL change no code, so they are not in the key.
+        let normal_used = lighting.is_some()
+            || vertex_units.iter().any(|u| {
+                u.coords
+                    .contains(&CoordSource::Generated(TexGenMode::SphereMap))
+            });
         let vertex = VertexKey {
-            normalize: state.normalize,
-            rescale_normal: state.rescale_normal && !state.normalize,
-            units: units
-                .iter()
-                .map(|&(unit, _, _)| VertexUnitKey {
-                    unit: unit as u8,
-                    coords: TexCoord::ALL.map(|c| match state.units[unit].texgen(c) {
-                        Some(g) if !(g.mode == TexGenMode::SphereMap && c.index() >= 2) => {
-                            CoordSource::Generated(g.mode)
-                        }
-                        _ => CoordSource::Attribute,
-                    }),
-                })
-                .collect(),
+            normalize: normal_used && state.normalize,
+            rescale_normal: normal_used && state.rescale_normal && !state.normalize,
+            units: vertex_units,
             lighting,
         };
+        let combiners = state.register_combiners.get().map(|rc| CombinersKey {
+            stages: rc.active_stages().to_vec(),
+            final_inputs: rc.final_inputs,
+            color_sum_clamp: rc.color_sum_clamp,
+        });
         let fragment = FragmentKey {
             units: units
                 .iter()
-                .map(|&(unit, target, texel)| FragmentUnitKey {
-                    unit: unit as u8,
-                    target,
-                    texel,
-                    env: env_key(state, unit),
+                .map(|&(unit, target, texel)| match combiners {
+                    // Register combiners replace the environments and read a depth texel
+                    // in one fixed layout (`shadergen::fragment::emit_texel`): neither the
+                    // env nor DEPTH_TEXTURE_MODE changes the code.
+                    Some(_) => FragmentUnitKey {
+                        unit: unit as u8,
+                        target,
+                        texel: texel.under_combiners(),
+                        env: EnvKey::Modulate,
+                    },
+                    None => FragmentUnitKey {
+                        unit: unit as u8,
+                        target,
+                        texel,
+                        env: env_key(state, unit),
+                    },
                 })
                 .collect(),
             precision,
-            combiners: state.register_combiners.get().map(|rc| CombinersKey {
-                stages: rc.active_stages().to_vec(),
-                final_inputs: rc.final_inputs,
-                color_sum_clamp: rc.color_sum_clamp,
-            }),
+            combiners,
             two_side,
+            color_sum,
             flat: state.shade_model == ShadeModel::Flat,
             alpha_test: state
                 .alpha_test
@@ -226,11 +271,48 @@ fn env_key(state: &FixedState, unit: usize) -> EnvKey {
         TexEnvMode::Decal => EnvKey::Decal,
         TexEnvMode::Blend => EnvKey::Blend,
         TexEnvMode::Add => EnvKey::Add,
-        TexEnvMode::Combine => EnvKey::Combine {
-            rgb: env.rgb,
-            alpha: env.alpha,
-        },
+        TexEnvMode::Combine => {
+            let rgb = used_arguments(env.rgb, CombineOperand::SrcColor);
+            // DOT3_RGBA writes the dot product to alpha too: COMBINE_ALPHA is ignored.
+            let alpha = if env.rgb.func == CombineFunc::Dot3Rgba {
+                IGNORED_ALPHA
+            } else {
+                used_arguments(env.alpha, CombineOperand::SrcAlpha)
+            };
+            EnvKey::Combine { rgb, alpha }
+        }
     }
+}
+
+/// The COMBINE_ALPHA of the key when DOT3_RGBA makes it unused.
+const IGNORED_ALPHA: Combine = Combine {
+    func: CombineFunc::Replace,
+    sources: [CombineSource::Previous; 3],
+    operands: [CombineOperand::SrcAlpha; 3],
+    scale: CombineScale::One,
+};
+
+/// A combine with the arguments its function does not read set to (PREVIOUS, `operand`),
+/// as Mesa keeps only `_NumArgs` arguments in its key: REPLACE reads a0; MODULATE, ADD,
+/// ADD_SIGNED, SUBTRACT and DOT3 read a0, a1; INTERPOLATE reads all three. An unread
+/// CONSTANT would otherwise declare the env colour for nothing, and a technique that
+/// leaves SOURCE2 at its default would get a second program for the same code.
+fn used_arguments(mut combine: Combine, operand: CombineOperand) -> Combine {
+    let used = match combine.func {
+        CombineFunc::Replace => 1,
+        CombineFunc::Interpolate => 3,
+        CombineFunc::Modulate
+        | CombineFunc::Add
+        | CombineFunc::AddSigned
+        | CombineFunc::Subtract
+        | CombineFunc::Dot3Rgb
+        | CombineFunc::Dot3Rgba => 2,
+    };
+    for i in used..3 {
+        combine.sources[i] = CombineSource::Previous;
+        combine.operands[i] = operand;
+    }
+    combine
 }
 
 fn lighting_key(state: &FixedState) -> Option<LightingKey> {
@@ -247,15 +329,27 @@ fn lighting_key(state: &FixedState) -> Option<LightingKey> {
             })
         })
         .collect();
-    let color_material = state.color_material.get().map(|cm| ColorMaterialKey {
-        front: matches!(cm.face, Face::Front | Face::FrontAndBack),
-        back: matches!(cm.face, Face::Back | Face::FrontAndBack),
-        mode: cm.mode,
-    });
+    // Back-face colours exist only with two-sided lighting: without it COLOR_MATERIAL on
+    // the back face tracks nothing, and BACK alone is no COLOR_MATERIAL at all.
+    let two_side = state.light_model.two_side;
+    let color_material = state
+        .color_material
+        .get()
+        .map(|cm| ColorMaterialKey {
+            front: matches!(cm.face, Face::Front | Face::FrontAndBack),
+            back: two_side && matches!(cm.face, Face::Back | Face::FrontAndBack),
+            mode: cm.mode,
+        })
+        .filter(|cm| cm.front || cm.back);
     Some(LightingKey {
         lights,
         local_viewer: state.light_model.local_viewer,
-        two_side: state.light_model.two_side,
+        two_side,
         color_material,
+        separate_specular: state.light_model.color_control == ColorControl::SeparateSpecularColor,
     })
 }
+
+#[cfg(test)]
+#[path = "key_tests.rs"]
+mod key_tests;

@@ -1,11 +1,33 @@
 //! Where every uniform's value comes from. The generator declares a uniform by naming its
 //! `UniformSource`; the GLSL writer records the list; upload walks that same list and asks
-//! `value` for each — so the code and the uploads cannot disagree.
+//! `value` for each — so the code and the uploads cannot disagree. A source names its GLSL
+//! type here too; the writer (`glsl`) uses this module, never the reverse.
 
 use glam::{Mat3, Mat4, Vec4};
 
-use super::glsl::UniformType;
 use crate::ff::{FixedState, Material, TexCoord};
+
+/// The GLSL type of a uniform.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum UniformType {
+    Float,
+    Vec4,
+    Mat3,
+    Mat4,
+    Int,
+}
+
+impl UniformType {
+    pub fn glsl(self) -> &'static str {
+        match self {
+            UniformType::Float => "float",
+            UniformType::Vec4 => "vec4",
+            UniformType::Mat3 => "mat3",
+            UniformType::Mat4 => "mat4",
+            UniformType::Int => "int",
+        }
+    }
+}
 
 /// A light parameter, in eye space where GL stores it so.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -83,7 +105,8 @@ impl UniformSource {
         }
     }
 
-    /// The GLSL type; samplers are typed by the generator (`glsl::sampler_type`).
+    /// The GLSL type; samplers are typed by the fragment generator (`sampler2D`,
+    /// `sampler2DShadow`, …, through `GlslWriter::uniform_typed`).
     pub fn ty(self) -> UniformType {
         match self {
             UniformSource::Modelview

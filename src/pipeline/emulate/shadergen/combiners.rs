@@ -127,7 +127,12 @@ pub fn emit(w: &mut GlslWriter, fragment: &FragmentKey, key: &CombinersKey) {
     }
     w.line("// NV_register_combiners");
     w.line(format!("vec4 rc_primary = primary{unit};"));
-    w.line("vec4 rc_secondary = vec4(0.0);");
+    // SECONDARY_COLOR: the separate specular when lighting makes one, else 0.
+    if fragment.color_sum {
+        w.line(format!("vec4 rc_secondary = secondary{unit};"));
+    } else {
+        w.line("vec4 rc_secondary = vec4(0.0);");
+    }
     // Fog is off: FOG = (fog colour, 1); SPARE0.a starts as texture 0's alpha.
     w.line("vec4 rc_fog = vec4(0.0, 0.0, 0.0, 1.0);");
     w.line(format!(

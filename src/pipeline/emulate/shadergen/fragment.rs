@@ -27,10 +27,16 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
         w.line("vec4 primary = v_color;");
     }
     w.line("primary = clamp(primary, 0.0, 1.0);");
+    if key.color_sum {
+        emit_secondary(&mut w, key, flat);
+    }
     if key.precision == Precision::Fixed8 {
         // Fixed8: the stages work on integers 0..=255 (ff::precision).
         w.declare(FIXED8_HELPERS);
         w.line("primary = q8(primary);");
+        if key.color_sum {
+            w.line("secondary = q8(secondary);");
+        }
     }
     for unit in &key.units {
         emit_texel(&mut w, unit, key.combiners.is_some());
@@ -45,6 +51,14 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
             for unit in &key.units {
                 emit_env(&mut w, key, unit);
             }
+            if key.color_sum {
+                // Colour sum (GL 1.2 §3.9): C = clamp(C_tex + C_sec) on RGB; alpha as is.
+                let m = Arith(key.precision);
+                w.line(format!(
+                    "previous.rgb = {};",
+                    m.clamp("previous.rgb + secondary.rgb")
+                ));
+            }
         }
     }
     if let Some(func) = key.alpha_test {
@@ -55,6 +69,18 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
         Precision::Fixed8 => w.line("frag_color = previous / 255.0;"),
     }
     w
+}
+
+/// `secondary`: the secondary colour of the face (the separate specular), clamped.
+fn emit_secondary(w: &mut GlslWriter, key: &FragmentKey, flat: &str) {
+    w.declare(&format!("{flat}in vec4 v_secondary;"));
+    if key.two_side {
+        w.declare(&format!("{flat}in vec4 v_back_secondary;"));
+        w.line("vec4 secondary = gl_FrontFacing ? v_secondary : v_back_secondary;");
+    } else {
+        w.line("vec4 secondary = v_secondary;");
+    }
+    w.line("secondary = clamp(secondary, 0.0, 1.0);");
 }
 
 /// LINE mode keeps the fragments of boundary edges (a component of e.xyz exactly 0);

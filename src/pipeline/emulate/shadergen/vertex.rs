@@ -104,11 +104,23 @@ fn emit_lighting(
             "vec3(0.0, 0.0, 1.0)".to_string()
         }
     ));
-    emit_face(w, lighting, 0, n, "v_color");
+    if lighting.separate_specular {
+        w.declare(&format!("{flat}out vec4 v_secondary;"));
+    }
+    emit_face(w, lighting, 0, n, ["v_color", "v_secondary"]);
     if lighting.two_side {
         w.declare(&format!("{flat}out vec4 v_back_color;"));
+        if lighting.separate_specular {
+            w.declare(&format!("{flat}out vec4 v_back_secondary;"));
+        }
         w.line(format!("vec3 back_normal = -{n};"));
-        emit_face(w, lighting, 1, "back_normal", "v_back_color");
+        emit_face(
+            w,
+            lighting,
+            1,
+            "back_normal",
+            ["v_back_color", "v_back_secondary"],
+        );
     }
 }
 
@@ -139,8 +151,10 @@ fn material(
 }
 
 /// c = e_m + a_m·a_cs + Σ att·spot·(a_m·a_l + max(n·L,0)·d_m·d_l + f·max(n·h,0)^s·s_m·s_l),
-/// alpha = d_m.a, clamped to [0, 1] (GL 1.5 §2.14.1).
-fn emit_face(w: &mut GlslWriter, lighting: &LightingKey, face: u8, n: &str, out: &str) {
+/// alpha = d_m.a, clamped to [0, 1] (GL 1.5 §2.14.1). With SEPARATE_SPECULAR_COLOR the
+/// specular sum Σ att·spot·f·max(n·h,0)^s·s_m·s_l is the secondary colour instead, its
+/// alpha 0, clamped alike (GL 1.2 §2.13.1). `out` names the primary and secondary outputs.
+fn emit_face(w: &mut GlslWriter, lighting: &LightingKey, face: u8, n: &str, out: [&str; 2]) {
     let cm = lighting.color_material;
     let emission = material(w, cm, face, MaterialValue::Emission);
     let ambient = material(w, cm, face, MaterialValue::Ambient);
@@ -150,13 +164,36 @@ fn emit_face(w: &mut GlslWriter, lighting: &LightingKey, face: u8, n: &str, out:
     w.line(format!(
         "vec3 {c} = {emission}.rgb + {ambient}.rgb * {scene}.rgb;"
     ));
-    for light in &lighting.lights {
-        emit_light(w, lighting, *light, face, n, &c);
+    let secondary = format!("s{face}");
+    if lighting.separate_specular {
+        w.line(format!("vec3 {secondary} = vec3(0.0);"));
     }
-    w.line(format!("{out} = clamp(vec4({c}, {diffuse}.a), 0.0, 1.0);"));
+    for light in &lighting.lights {
+        emit_light(w, lighting, *light, face, n, [&c, &secondary]);
+    }
+    w.line(format!(
+        "{} = clamp(vec4({c}, {diffuse}.a), 0.0, 1.0);",
+        out[0]
+    ));
+    if lighting.separate_specular {
+        w.line(format!(
+            "{} = vec4(clamp({secondary}, 0.0, 1.0), 0.0);",
+            out[1]
+        ));
+    }
 }
 
-fn emit_light(w: &mut GlslWriter, lighting: &LightingKey, l: LightKey, face: u8, n: &str, c: &str) {
+/// One light's term added to the face's sums `sums` = [primary, secondary] (the secondary
+/// only with SEPARATE_SPECULAR_COLOR).
+fn emit_light(
+    w: &mut GlslWriter,
+    lighting: &LightingKey,
+    l: LightKey,
+    face: u8,
+    n: &str,
+    sums: [&str; 2],
+) {
+    let [c, secondary] = sums;
     let i = l.index;
     let u = |w: &mut GlslWriter, v| w.uniform(UniformSource::Light(i, v));
     let pos = u(w, LightValue::Position);
@@ -202,15 +239,25 @@ fn emit_light(w: &mut GlslWriter, lighting: &LightingKey, l: LightKey, face: u8,
     w.line(format!(
         "vec3 {v}_c = {ma}.rgb * {la}.rgb + max({v}_ndl, 0.0) * {md}.rgb * {ld}.rgb;"
     ));
+    // The specular term joins the primary sum, or its own for SEPARATE_SPECULAR_COLOR.
+    let specular = if lighting.separate_specular {
+        w.line(format!("vec3 {v}_s = vec3(0.0);"));
+        format!("{v}_s")
+    } else {
+        format!("{v}_c")
+    };
     w.line(format!("if ({v}_ndl > 0.0) {{"));
     w.line(format!(
         "    float {v}_ndh = max(dot({n}, normalize({v}_dir + view_dir)), 0.0);"
     ));
     w.line(format!(
-        "    {v}_c += (({shin} == 0.0) ? 1.0 : pow({v}_ndh, {shin})) * {ms}.rgb * {ls}.rgb;"
+        "    {specular} += (({shin} == 0.0) ? 1.0 : pow({v}_ndh, {shin})) * {ms}.rgb * {ls}.rgb;"
     ));
     w.line("}");
     w.line(format!("{c} += {v}_att * {v}_c;"));
+    if lighting.separate_specular {
+        w.line(format!("{secondary} += {v}_att * {specular};"));
+    }
 }
 
 /// Each coordinate from its source, then the texture matrix: tc = T·(s, t, r, q).
