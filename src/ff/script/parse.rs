@@ -176,7 +176,7 @@ impl<'a> Cursor<'_, 'a> {
             k += 1;
         }
         let ty = match at(k) {
-            Some(Tok::Ident(t)) if C_TYPES.contains(&t) => Some(t),
+            Some(Tok::Ident(t)) if is_c_type(t) => Some(t),
             _ => None,
         };
         let Some(ty) = ty else {
@@ -235,33 +235,15 @@ impl<'a> Cursor<'_, 'a> {
     }
 }
 
-/// Type names a cast or a compound literal may use.
-const C_TYPES: &[&str] = &[
-    "GLfloat",
-    "GLdouble",
-    "GLclampf",
-    "GLclampd",
-    "GLint",
-    "GLuint",
-    "GLsizei",
-    "GLenum",
-    "GLboolean",
-    "GLbitfield",
-    "GLbyte",
-    "GLubyte",
-    "GLshort",
-    "GLushort",
-    "GLvoid",
-    "void",
-    "float",
-    "double",
-    "int",
-    "unsigned",
-    "short",
-    "char",
-    "long",
-    "size_t",
+/// The non-integer type names a cast or a compound literal may use (with
+/// [`INTEGER_TYPES`], every type the dialect knows).
+const OTHER_TYPES: &[&str] = &[
+    "GLfloat", "GLdouble", "GLclampf", "GLclampd", "GLvoid", "void", "float", "double",
 ];
+
+fn is_c_type(name: &str) -> bool {
+    OTHER_TYPES.contains(&name) || INTEGER_TYPES.contains(&name)
+}
 
 /// The cast types that make a number an integer (truncated towards zero).
 const INTEGER_TYPES: &[&str] = &[
