@@ -123,6 +123,7 @@ gl_names!(Primitive {
     "GL_POINTS" => Primitive::Points,
     "GL_LINES" => Primitive::Lines,
     "GL_LINE_STRIP" => Primitive::LineStrip,
+    "GL_LINE_LOOP" => Primitive::LineLoop,
     "GL_TRIANGLES" => Primitive::Triangles,
     "GL_TRIANGLE_STRIP" => Primitive::TriangleStrip,
     "GL_TRIANGLE_FAN" => Primitive::TriangleFan,

@@ -35,6 +35,7 @@ pub fn core_indices(primitive: Primitive, indices: &[u32]) -> (u32, Vec<u32>) {
         Primitive::Points => (glow::POINTS, indices.to_vec()),
         Primitive::Lines => (glow::LINES, indices.to_vec()),
         Primitive::LineStrip => (glow::LINE_STRIP, indices.to_vec()),
+        Primitive::LineLoop => (glow::LINE_LOOP, indices.to_vec()),
         Primitive::Triangles => (glow::TRIANGLES, indices.to_vec()),
         Primitive::TriangleStrip => (glow::TRIANGLE_STRIP, indices.to_vec()),
         Primitive::TriangleFan => (glow::TRIANGLE_FAN, indices.to_vec()),

@@ -58,7 +58,7 @@ pub struct PolygonPass {
 fn is_polygonal(p: Primitive) -> bool {
     !matches!(
         p,
-        Primitive::Points | Primitive::Lines | Primitive::LineStrip
+        Primitive::Points | Primitive::Lines | Primitive::LineStrip | Primitive::LineLoop
     )
 }
 

@@ -137,6 +137,7 @@ pub fn primitive(p: Primitive) -> GLenum {
         Primitive::Points => gl::POINTS,
         Primitive::Lines => gl::LINES,
         Primitive::LineStrip => gl::LINE_STRIP,
+        Primitive::LineLoop => gl::LINE_LOOP,
         Primitive::Triangles => gl::TRIANGLES,
         Primitive::TriangleStrip => gl::TRIANGLE_STRIP,
         Primitive::TriangleFan => gl::TRIANGLE_FAN,
