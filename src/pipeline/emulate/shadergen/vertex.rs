@@ -1,5 +1,12 @@
 //! The vertex stage: transform (GL 1.5 §2.10), lighting (§2.14.1), texture coordinate
 //! generation (§2.11.4) and the texture matrix.
+//!
+//! Under flat shading the colour is lit from the *shade* attributes — the position, normal and
+//! colour of the provoking vertex of the primitive the vertex belongs to (`assembly`) — and
+//! passed `flat`; texture coordinates still come from the vertex's own values. For the types
+//! core GL draws, the shade attributes are the vertex's own and core GL's provoking vertex
+//! picks the corner; for split polygons every corner carries its polygon's provoking vertex,
+//! so the whole polygon has one colour whichever way it was split.
 
 use crate::ff::{ColorMaterialMode, TexCoord, TexGenMode};
 use crate::pipeline::emulate::glsl::GlslWriter;
@@ -8,7 +15,10 @@ use crate::pipeline::emulate::key::{
 };
 use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
 
-use super::{ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_TEXCOORD0};
+use super::{
+    ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR,
+    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0,
+};
 
 pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     let mut w = GlslWriter::new();
@@ -29,9 +39,28 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     let size = w.uniform(UniformSource::PointSize);
     w.line(format!("gl_PointSize = {size};"));
     let mut eye = EyeTerms::default();
+    let color = if fragment.flat {
+        w.declare(&format!(
+            "layout(location = {ATTRIB_SHADE_COLOR}) in vec4 a_shade_color;"
+        ));
+        "a_shade_color"
+    } else {
+        "a_color"
+    };
     match &key.lighting {
-        Some(lighting) => emit_lighting(&mut w, &mut eye, key, lighting, flat),
-        None => w.line("v_color = a_color;"),
+        Some(lighting) => {
+            let inputs = if fragment.flat {
+                shade_inputs(&mut w, key)
+            } else {
+                Inputs {
+                    eye: eye.position(&mut w),
+                    normal: eye.normal(&mut w, key),
+                    color,
+                }
+            };
+            emit_lighting(&mut w, lighting, &inputs, flat);
+        }
+        None => w.line(format!("v_color = {color};")),
     }
     for unit in &key.units {
         emit_texcoords(&mut w, &mut eye, key, unit);
@@ -48,6 +77,40 @@ fn emit_edge(w: &mut GlslWriter) {
     w.declare(&format!("layout(location = {ATTRIB_EDGE}) in vec4 a_edge;"));
     w.declare("noperspective out vec4 v_edge;");
     w.line("v_edge = a_edge;");
+}
+
+/// What lighting reads: the eye-space position and normal, and the colour attribute that
+/// COLOR_MATERIAL tracks.
+struct Inputs {
+    eye: &'static str,
+    normal: &'static str,
+    color: &'static str,
+}
+
+/// The provoking vertex's eye-space position and normal, from the shade attributes, with
+/// the same normal rules as the vertex's own (§2.11.3).
+fn shade_inputs(w: &mut GlslWriter, key: &VertexKey) -> Inputs {
+    w.declare(&format!(
+        "layout(location = {ATTRIB_SHADE_POSITION}) in vec4 a_shade_position;"
+    ));
+    w.declare(&format!(
+        "layout(location = {ATTRIB_SHADE_NORMAL}) in vec3 a_shade_normal;"
+    ));
+    let mv = w.uniform(UniformSource::Modelview);
+    w.line(format!("vec4 shade_eye = {mv} * a_shade_position;"));
+    let nm = w.uniform(UniformSource::NormalMatrix);
+    w.line(format!("vec3 shade_normal = {nm} * a_shade_normal;"));
+    if key.normalize {
+        w.line("shade_normal = normalize(shade_normal);");
+    } else if key.rescale_normal {
+        let f = w.uniform(UniformSource::RescaleFactor);
+        w.line(format!("shade_normal *= {f};"));
+    }
+    Inputs {
+        eye: "shade_eye",
+        normal: "shade_normal",
+        color: "a_shade_color",
+    }
 }
 
 /// Eye-space position and normal, emitted on first use only.
@@ -87,15 +150,8 @@ impl EyeTerms {
     }
 }
 
-fn emit_lighting(
-    w: &mut GlslWriter,
-    eye: &mut EyeTerms,
-    key: &VertexKey,
-    lighting: &LightingKey,
-    flat: &str,
-) {
-    let e = eye.position(w);
-    let n = eye.normal(w, key);
+fn emit_lighting(w: &mut GlslWriter, lighting: &LightingKey, inputs: &Inputs, flat: &str) {
+    let (e, n) = (inputs.eye, inputs.normal);
     w.line(format!(
         "vec3 view_dir = {};",
         if lighting.local_viewer {
@@ -104,11 +160,11 @@ fn emit_lighting(
             "vec3(0.0, 0.0, 1.0)".to_string()
         }
     ));
-    emit_face(w, lighting, 0, n, "v_color");
+    emit_face(w, lighting, inputs, 0, n, "v_color");
     if lighting.two_side {
         w.declare(&format!("{flat}out vec4 v_back_color;"));
         w.line(format!("vec3 back_normal = -{n};"));
-        emit_face(w, lighting, 1, "back_normal", "v_back_color");
+        emit_face(w, lighting, inputs, 1, "back_normal", "v_back_color");
     }
 }
 
@@ -116,6 +172,7 @@ fn emit_lighting(
 fn material(
     w: &mut GlslWriter,
     cm: Option<ColorMaterialKey>,
+    color: &str,
     face: u8,
     value: MaterialValue,
 ) -> String {
@@ -132,7 +189,7 @@ fn material(
             )
     });
     if tracks {
-        "a_color".to_string()
+        color.to_string()
     } else {
         w.uniform(UniformSource::Material(face, value))
     }
@@ -140,23 +197,40 @@ fn material(
 
 /// c = e_m + a_m·a_cs + Σ att·spot·(a_m·a_l + max(n·L,0)·d_m·d_l + f·max(n·h,0)^s·s_m·s_l),
 /// alpha = d_m.a, clamped to [0, 1] (GL 1.5 §2.14.1).
-fn emit_face(w: &mut GlslWriter, lighting: &LightingKey, face: u8, n: &str, out: &str) {
+fn emit_face(
+    w: &mut GlslWriter,
+    lighting: &LightingKey,
+    inputs: &Inputs,
+    face: u8,
+    n: &str,
+    out: &str,
+) {
     let cm = lighting.color_material;
-    let emission = material(w, cm, face, MaterialValue::Emission);
-    let ambient = material(w, cm, face, MaterialValue::Ambient);
-    let diffuse = material(w, cm, face, MaterialValue::Diffuse);
+    let color = inputs.color;
+    let emission = material(w, cm, color, face, MaterialValue::Emission);
+    let ambient = material(w, cm, color, face, MaterialValue::Ambient);
+    let diffuse = material(w, cm, color, face, MaterialValue::Diffuse);
     let scene = w.uniform(UniformSource::LightModelAmbient);
     let c = format!("c{face}");
     w.line(format!(
         "vec3 {c} = {emission}.rgb + {ambient}.rgb * {scene}.rgb;"
     ));
     for light in &lighting.lights {
-        emit_light(w, lighting, *light, face, n, &c);
+        emit_light(w, lighting, inputs, *light, face, n, &c);
     }
     w.line(format!("{out} = clamp(vec4({c}, {diffuse}.a), 0.0, 1.0);"));
 }
 
-fn emit_light(w: &mut GlslWriter, lighting: &LightingKey, l: LightKey, face: u8, n: &str, c: &str) {
+fn emit_light(
+    w: &mut GlslWriter,
+    lighting: &LightingKey,
+    inputs: &Inputs,
+    l: LightKey,
+    face: u8,
+    n: &str,
+    c: &str,
+) {
+    let (e, color) = (inputs.eye, inputs.color);
     let i = l.index;
     let u = |w: &mut GlslWriter, v| w.uniform(UniformSource::Light(i, v));
     let pos = u(w, LightValue::Position);
@@ -164,9 +238,9 @@ fn emit_light(w: &mut GlslWriter, lighting: &LightingKey, l: LightKey, face: u8,
     let ld = u(w, LightValue::Diffuse);
     let ls = u(w, LightValue::Specular);
     let cm = lighting.color_material;
-    let ma = material(w, cm, face, MaterialValue::Ambient);
-    let md = material(w, cm, face, MaterialValue::Diffuse);
-    let ms = material(w, cm, face, MaterialValue::Specular);
+    let ma = material(w, cm, color, face, MaterialValue::Ambient);
+    let md = material(w, cm, color, face, MaterialValue::Diffuse);
+    let ms = material(w, cm, color, face, MaterialValue::Specular);
     let shin = w.uniform(UniformSource::Material(face, MaterialValue::Shininess));
     let v = format!("l{i}_{face}");
     w.line(format!(
@@ -179,7 +253,7 @@ fn emit_light(w: &mut GlslWriter, lighting: &LightingKey, l: LightKey, face: u8,
     } else {
         let k = u(w, LightValue::Attenuation);
         w.line(format!(
-            "vec3 {v}_d = {pos}.xyz / {pos}.w - eye.xyz / eye.w;"
+            "vec3 {v}_d = {pos}.xyz / {pos}.w - {e}.xyz / {e}.w;"
         ));
         w.line(format!("float {v}_dist = length({v}_d);"));
         w.line(format!("vec3 {v}_dir = {v}_d / max({v}_dist, 1e-30);"));
