@@ -56,7 +56,10 @@ fn compare(name: &str, commands: &[Command], tol: Tolerance) {
             .filter(|p| p.0 != [0, 0, 0, 255])
             .count();
         println!("{name} {backend}: {covered} pixels covered");
-        assert!(covered >= 50, "{name} {backend}: only {covered} pixels drawn");
+        assert!(
+            covered >= 50,
+            "{name} {backend}: only {covered} pixels drawn"
+        );
         support::assert_images_match(
             &format!("primitives-{name}-{backend}"),
             &emulated.image,

@@ -12,9 +12,9 @@
 use std::sync::Arc;
 
 use fixedfunc::ff::{
-    Capability, ClearMask, Command, CompareFunc, Face, Filter, Geometry, LightParam,
-    MaterialParam, MatrixMode, PixelFormat, PixelType, Primitive, ShadeModel, TexData,
-    TexEnvMode, TexEnvParam, TexFormat, TexImage, TexParam, TextureTarget, ViewVolume, Wrap,
+    Capability, ClearMask, Command, CompareFunc, Face, Filter, Geometry, LightParam, MaterialParam,
+    MatrixMode, PixelFormat, PixelType, Primitive, ShadeModel, TexData, TexEnvMode, TexEnvParam,
+    TexFormat, TexImage, TexParam, TextureTarget, ViewVolume, Wrap,
 };
 use glam::{Vec3, Vec4};
 
@@ -126,7 +126,13 @@ pub fn layout(p: Primitive) -> &'static [[f32; 2]] {
             [0.3, 0.95],
             [0.9, 0.9],
         ],
-        Primitive::LineStrip => &[[-1.0, -0.8], [0.6, -0.9], [0.9, 0.4], [-0.3, 0.9], [-0.7, 0.0]],
+        Primitive::LineStrip => &[
+            [-1.0, -0.8],
+            [0.6, -0.9],
+            [0.9, 0.4],
+            [-0.3, 0.9],
+            [-0.7, 0.0],
+        ],
         Primitive::LineLoop => &[[-0.9, -0.7], [0.8, -0.9], [0.6, 0.8], [-0.5, 0.6]],
         // Two triangles and a partial third.
         Primitive::Triangles => &[
@@ -231,7 +237,9 @@ pub fn geometry(case: &Case) -> Geometry {
     }
     if case.indexed {
         fn reversed<T: Copy>(v: &[T], unused: T) -> Vec<T> {
-            std::iter::once(unused).chain(v.iter().rev().copied()).collect()
+            std::iter::once(unused)
+                .chain(v.iter().rev().copied())
+                .collect()
         }
         g.positions = reversed(&g.positions, Vec4::new(5.0, 5.0, 0.0, 1.0));
         g.colors = g.colors.map(|c| reversed(&c, Vec4::ONE));

@@ -88,7 +88,9 @@ pub fn triangles(primitive: Primitive, n: usize, diagonal: Diagonal) -> Vec<[usi
     match (primitive, diagonal) {
         (Primitive::Quads, Diagonal::V1V3) => vec![[0, 1, 3], [1, 2, 3]],
         // QUAD_STRIP along 2i–(2i+3) is polygon positions 0–2: the fan from position 0.
-        _ => (0..n.saturating_sub(2)).map(|i| [0, i + 1, i + 2]).collect(),
+        _ => (0..n.saturating_sub(2))
+            .map(|i| [0, i + 1, i + 2])
+            .collect(),
     }
 }
 
@@ -112,10 +114,7 @@ pub fn quad_diagonals(g: &Geometry, mvp: Mat4) -> Vec<(Range<usize>, Diagonal)> 
         return vec![(0..quads, Diagonal::V1V3)];
     }
     let mut out: Vec<(Range<usize>, Diagonal)> = Vec::new();
-    for (c, chunk) in g.positions[..4 * quads]
-        .chunks(4 * QUAD_CHUNK)
-        .enumerate()
-    {
+    for (c, chunk) in g.positions[..4 * quads].chunks(4 * QUAD_CHUNK).enumerate() {
         let diagonal = if chunk.iter().any(|&p| clipped(mvp, p)) {
             Diagonal::V1V3
         } else {
@@ -142,9 +141,15 @@ mod tests {
         let s = polygons(Primitive::QuadStrip, &[0, 1, 2, 3, 4, 5, 6]);
         assert_eq!(s.len(), 2, "the odd trailing vertex is dropped");
         assert_eq!(s[1].vertices, [2, 3, 5, 4]);
-        assert_eq!(s[1].vertices[s[1].provoking], 5, "quad strip: 2i+2 (1-based)");
+        assert_eq!(
+            s[1].vertices[s[1].provoking], 5,
+            "quad strip: 2i+2 (1-based)"
+        );
         let p = polygons(Primitive::Polygon, &[4, 5, 6, 7]);
-        assert_eq!(p[0].vertices[p[0].provoking], 4, "polygon: its first vertex");
+        assert_eq!(
+            p[0].vertices[p[0].provoking], 4,
+            "polygon: its first vertex"
+        );
         assert!(polygons(Primitive::Polygon, &[0, 1]).is_empty());
         assert!(polygons(Primitive::TriangleFan, &[0, 1, 2]).is_empty());
     }

@@ -45,7 +45,10 @@ enum Shape {
     Elements { mode: u32, count: i32 },
     /// Triangle corners of split polygons, drawn as TRIANGLES: one block of `count` corners
     /// per uploaded split, starting at `first`.
-    Corners { blocks: Vec<(Diagonal, i32)>, count: i32 },
+    Corners {
+        blocks: Vec<(Diagonal, i32)>,
+        count: i32,
+    },
 }
 
 /// The core mode of the primitives core GL draws itself; `None` for the split ones.
@@ -185,7 +188,10 @@ impl GpuGeometry {
                 }
             }
             if split {
-                let edges = corners.iter().flat_map(|c| c.edge).flat_map(f32::to_ne_bytes);
+                let edges = corners
+                    .iter()
+                    .flat_map(|c| c.edge)
+                    .flat_map(f32::to_ne_bytes);
                 let b = buffer(edges.collect())?;
                 point(b, ATTRIB_EDGE, 4);
             }
@@ -270,7 +276,11 @@ impl GpuGeometry {
         state: &FixedState,
     ) -> Vec<(i32, i32)> {
         if self.source.primitive != Primitive::Quads {
-            return blocks.first().map(|&(_, f)| (f, count)).into_iter().collect();
+            return blocks
+                .first()
+                .map(|&(_, f)| (f, count))
+                .into_iter()
+                .collect();
         }
         let mvp = state.projection_matrix() * state.modelview_matrix();
         assembly::quad_diagonals(&self.source, mvp)

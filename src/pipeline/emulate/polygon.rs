@@ -263,7 +263,16 @@ mod tests {
         assert_eq!(provoking, [3, 3, 3, 3, 3, 3, 5, 5, 5, 5, 5, 5]);
         assert_eq!(
             boundary_edges(&strip),
-            [(0, 1), (0, 2), (1, 3), (2, 3), (2, 3), (2, 4), (3, 5), (4, 5)]
+            [
+                (0, 1),
+                (0, 2),
+                (1, 3),
+                (2, 3),
+                (2, 3),
+                (2, 4),
+                (3, 5),
+                (4, 5)
+            ]
         );
         assert_eq!(
             split_corners(Primitive::TriangleFan, &[0, 1, 2], Diagonal::V0V2),
