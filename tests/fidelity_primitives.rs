@@ -18,8 +18,8 @@ use std::sync::Arc;
 
 use fidelity::{run_one, Frame, Output};
 use fixedfunc::ff::{
-    Capability, Command, Geometry, Precision, Primitive, ShadeModel, TexCoord, TexGenMode,
-    TexGenParam,
+    Capability, ColorMaterialMode, Command, Face, Geometry, LightModelParam, PolygonMode,
+    Precision, Primitive, ShadeModel, TexCoord, TexGenMode, TexGenParam,
 };
 use fixedfunc::gpu::Backend;
 use fixedfunc::pipeline::PipelineKind;
@@ -57,7 +57,7 @@ fn compare(name: &str, commands: &[Command], tol: Tolerance) {
             .count();
         println!("{name} {backend}: {covered} pixels covered");
         assert!(
-            covered >= 50,
+            covered >= 40,
             "{name} {backend}: only {covered} pixels drawn"
         );
         support::assert_images_match(
@@ -203,5 +203,57 @@ fn lit_textured_quad_of_the_filed_case() {
             max_bad_pixels: (SIZE * SIZE) as usize / 100,
         };
         compare(&format!("filed-case-{name}"), &c, tol);
+    }
+}
+
+/// Flat split polygons under the other state that reads their provoking vertex: lit with
+/// COLOR_MATERIAL (a colour and a normal per vertex), two-sided lighting seen from behind,
+/// and LINE and POINT polygon modes (the outline only, one colour per polygon).
+#[test]
+fn flat_polygons_under_color_material_two_side_and_polygon_modes() {
+    let rear = [
+        Command::LightModel(LightModelParam::TwoSide(true)),
+        Command::Rotate {
+            angle_deg: 180.0,
+            axis: Vec3::Y,
+        },
+    ];
+    let material = [
+        Command::ColorMaterial {
+            face: Face::FrontAndBack,
+            mode: ColorMaterialMode::AmbientAndDiffuse,
+        },
+        Command::Enable(Capability::ColorMaterial),
+    ];
+    let mode = |mode| Command::PolygonMode {
+        face: Face::FrontAndBack,
+        mode,
+    };
+    let variants: [(&str, Vec<Command>); 4] = [
+        ("color-material", material.to_vec()),
+        ("two-side-rear", rear.to_vec()),
+        ("line-mode", vec![mode(PolygonMode::Line)]),
+        ("point-mode", vec![mode(PolygonMode::Point)]),
+    ];
+    for primitive in [Primitive::Quads, Primitive::QuadStrip, Primitive::Polygon] {
+        for case in Case::all_of(primitive) {
+            if case.lighting == Lighting::Unlit || case.shade == ShadeModel::Smooth {
+                continue;
+            }
+            // A colour per vertex beside the normals, for COLOR_MATERIAL to track.
+            let mut g = primitives::geometry(&case);
+            g.colors = primitives::geometry(&Case {
+                lighting: Lighting::Unlit,
+                ..case
+            })
+            .colors;
+            let g = Arc::new(g);
+            for (name, extra) in &variants {
+                let mut c = primitives::setup(&case);
+                c.extend_from_slice(extra);
+                c.push(Command::Draw(g.clone()));
+                compare(&format!("{}-{name}", case.name()), &c, TOLERANCE);
+            }
+        }
     }
 }
