@@ -43,8 +43,8 @@ pub struct GpuGeometry {
 enum Shape {
     /// A core mode over the element buffer.
     Elements { mode: u32, count: i32 },
-    /// Triangle corners of split polygons, drawn as TRIANGLES: one block of `count` corners
-    /// per uploaded split, starting at `first`.
+    /// Triangle corners of split polygons, drawn as TRIANGLES: each uploaded split with its
+    /// first corner; every split has `count` corners.
     Corners {
         blocks: Vec<(Diagonal, i32)>,
         count: i32,
@@ -73,6 +73,18 @@ fn uploaded_splits(g: &Geometry) -> Vec<Diagonal> {
         (Primitive::Quads, Some(_)) => vec![Diagonal::V1V3],
         _ => vec![Diagonal::V0V2],
     }
+}
+
+/// The corners of every split uploaded for `g` (vertices `base` in submission order), one
+/// split after the other, and each split with its first corner.
+fn corners_of(g: &Geometry, base: &[u32]) -> (Vec<Corner>, Vec<(Diagonal, i32)>) {
+    let mut corners = Vec::new();
+    let mut blocks = Vec::new();
+    for diagonal in uploaded_splits(g) {
+        blocks.push((diagonal, count(corners.len())));
+        corners.extend(split_corners(g.primitive, base, diagonal).unwrap_or_default());
+    }
+    (corners, blocks)
 }
 
 /// One attribute array as floats, `size` per vertex.
@@ -121,15 +133,11 @@ impl GpuGeometry {
             .clone()
             .unwrap_or_else(|| (0..g.positions.len() as u32).collect());
         let split = core_mode(g.primitive).is_none();
-        let mut corners: Vec<Corner> = Vec::new();
-        let mut blocks = Vec::new();
-        if split {
-            for diagonal in uploaded_splits(g) {
-                let c = split_corners(g.primitive, &base, diagonal).unwrap_or_default();
-                blocks.push((diagonal, corners.len() as i32));
-                corners.extend(c);
-            }
-        }
+        let (corners, blocks) = if split {
+            corners_of(g, &base)
+        } else {
+            (Vec::new(), Vec::new())
+        };
         let order: Vec<u32> = corners.iter().map(|c| c.vertex).collect();
         let provoking: Vec<u32> = corners.iter().map(|c| c.provoking).collect();
         let (order, provoking) = if split {
