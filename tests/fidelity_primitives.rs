@@ -97,6 +97,14 @@ fn line_strip() {
 #[test]
 fn line_loop() {
     check(Primitive::LineLoop);
+    // Scripts name it too.
+    let c = fidelity::parse(
+        "glBegin(GL_LINE_LOOP);\nglVertex2f(0, 0); glVertex2f(1, 0); glVertex2f(0, 1);\nglEnd();\n",
+    );
+    assert!(
+        matches!(&c[..], [Command::Draw(g)] if g.primitive == Primitive::LineLoop),
+        "{c:?}"
+    );
 }
 
 /// Flat: triangle i takes vertex 3i (1-based).

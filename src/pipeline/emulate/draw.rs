@@ -297,7 +297,8 @@ impl GpuGeometry {
                 let &(_, first) = blocks.iter().find(|(d, _)| *d == diagonal)?;
                 let start = i32::try_from(quads.start).ok()?;
                 let len = i32::try_from(quads.len()).ok()?;
-                Some((first + QUAD_CORNERS * start, QUAD_CORNERS * len))
+                let offset = QUAD_CORNERS.checked_mul(start)?.checked_add(first)?;
+                Some((offset, QUAD_CORNERS.checked_mul(len)?))
             })
             .collect()
     }
