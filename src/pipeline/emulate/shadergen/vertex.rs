@@ -87,8 +87,7 @@ struct Inputs {
     color: &'static str,
 }
 
-/// The provoking vertex's eye-space position and normal, from the shade attributes, with
-/// the same normal rules as the vertex's own (§2.11.3).
+/// The provoking vertex's eye-space position and normal, from the shade attributes.
 fn shade_inputs(w: &mut GlslWriter, key: &VertexKey) -> Inputs {
     w.declare(&format!(
         "layout(location = {ATTRIB_SHADE_POSITION}) in vec4 a_shade_position;"
@@ -98,18 +97,23 @@ fn shade_inputs(w: &mut GlslWriter, key: &VertexKey) -> Inputs {
     ));
     let mv = w.uniform(UniformSource::Modelview);
     w.line(format!("vec4 shade_eye = {mv} * a_shade_position;"));
-    let nm = w.uniform(UniformSource::NormalMatrix);
-    w.line(format!("vec3 shade_normal = {nm} * a_shade_normal;"));
-    if key.normalize {
-        w.line("shade_normal = normalize(shade_normal);");
-    } else if key.rescale_normal {
-        let f = w.uniform(UniformSource::RescaleFactor);
-        w.line(format!("shade_normal *= {f};"));
-    }
+    emit_normal(w, key, "shade_normal", "a_shade_normal");
     Inputs {
         eye: "shade_eye",
         normal: "shade_normal",
         color: "a_shade_color",
+    }
+}
+
+/// `out` = (M⁻¹)ᵀ·`attribute`, then NORMALIZE (n/|n|) or RESCALE_NORMAL (f·n) (§2.11.3).
+fn emit_normal(w: &mut GlslWriter, key: &VertexKey, out: &str, attribute: &str) {
+    let nm = w.uniform(UniformSource::NormalMatrix);
+    w.line(format!("vec3 {out} = {nm} * {attribute};"));
+    if key.normalize {
+        w.line(format!("{out} = normalize({out});"));
+    } else if key.rescale_normal {
+        let f = w.uniform(UniformSource::RescaleFactor);
+        w.line(format!("{out} *= {f};"));
     }
 }
 
@@ -130,20 +134,13 @@ impl EyeTerms {
         "eye"
     }
 
-    /// n = (M⁻¹)ᵀ·normal, then NORMALIZE (n/|n|) or RESCALE_NORMAL (f·n) (§2.11.3).
+    /// The vertex's own eye-space normal (`emit_normal`).
     fn normal(&mut self, w: &mut GlslWriter, key: &VertexKey) -> &'static str {
         if !self.normal {
             w.declare(&format!(
                 "layout(location = {ATTRIB_NORMAL}) in vec3 a_normal;"
             ));
-            let nm = w.uniform(UniformSource::NormalMatrix);
-            w.line(format!("vec3 normal = {nm} * a_normal;"));
-            if key.normalize {
-                w.line("normal = normalize(normal);");
-            } else if key.rescale_normal {
-                let f = w.uniform(UniformSource::RescaleFactor);
-                w.line(format!("normal *= {f};"));
-            }
+            emit_normal(w, key, "normal", "a_normal");
             self.normal = true;
         }
         "normal"
@@ -331,4 +328,43 @@ fn emit_texcoords(w: &mut GlslWriter, eye: &mut EyeTerms, key: &VertexKey, unit:
     }
     let m = w.uniform(UniformSource::TextureMatrix(u));
     w.line(format!("v_tc{u} = {m} * vec4({});", parts.join(", ")));
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::ff::{Capability, Command, FixedState, Precision, ShadeModel};
+    use crate::pipeline::emulate::key::ShaderKey;
+
+    fn vertex_source(commands: &[Command]) -> String {
+        let mut state = FixedState::new();
+        for c in commands {
+            assert!(state.apply(c).is_ok(), "{c:?}");
+        }
+        super::super::generate(&ShaderKey::from_state(&state, Precision::Float)).vertex
+    }
+
+    #[test]
+    fn flat_shading_lights_the_provoking_vertex() {
+        let lit = [
+            Command::Enable(Capability::Lighting),
+            Command::Enable(Capability::Light(0)),
+        ];
+        let smooth = vertex_source(&lit);
+        assert!(smooth.contains("in vec3 a_normal;"));
+        assert!(!smooth.contains("a_shade"));
+        let flat = vertex_source(&[
+            lit[0].clone(),
+            lit[1].clone(),
+            Command::ShadeModel(ShadeModel::Flat),
+        ]);
+        assert!(flat.contains("flat out vec4 v_color;"));
+        assert!(flat.contains("vec3 shade_normal = "));
+        assert!(flat.contains("vec4 shade_eye = "));
+        assert!(
+            !flat.contains("in vec3 a_normal;"),
+            "nothing else reads the vertex's own normal"
+        );
+        let unlit = vertex_source(&[Command::ShadeModel(ShadeModel::Flat)]);
+        assert!(unlit.contains("v_color = a_shade_color;"));
+    }
 }
