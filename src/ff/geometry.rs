@@ -12,11 +12,12 @@ pub enum Primitive {
     Points,
     Lines,
     LineStrip,
+    /// A strip closed by a segment from the last vertex back to the first.
+    LineLoop,
     #[default]
     Triangles,
     TriangleStrip,
     TriangleFan,
-    /// Split along v0–v2 (as Mesa does).
     Quads,
     QuadStrip,
     Polygon,

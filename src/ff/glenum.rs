@@ -171,6 +171,7 @@ gl_enums!(ShadeModel { FLAT => ShadeModel::Flat, SMOOTH => ShadeModel::Smooth })
 gl_enums!(Primitive {
     POINTS => Primitive::Points,
     LINES => Primitive::Lines,
+    LINE_LOOP => Primitive::LineLoop,
     LINE_STRIP => Primitive::LineStrip,
     TRIANGLES => Primitive::Triangles,
     TRIANGLE_STRIP => Primitive::TriangleStrip,
@@ -426,6 +427,7 @@ mod tests {
             Primitive::Points,
             Primitive::Lines,
             Primitive::LineStrip,
+            Primitive::LineLoop,
             Primitive::Triangles,
             Primitive::TriangleStrip,
             Primitive::TriangleFan,

@@ -1,78 +1,128 @@
 //! Geometry on the GPU: one vertex array object per `Geometry` (kept while the `Arc` lives,
-//! so meshes are uploaded once per context), with the primitives core GL lacks rewritten
-//! as triangles: QUADS split along v0–v2 as Mesa does ((0,1,2), (0,2,3)), QUAD_STRIP as
-//! pairs of triangles, POLYGON as a fan from v0 (GL polygons are convex). Those three are
-//! uploaded as unshared triangle corners carrying the edge attribute of `polygon`, so LINE
-//! and POINT modes can drop what the split added.
+//! so meshes are uploaded once per context). The types core GL has are drawn as they are,
+//! indexed; the three it lacks — QUADS, QUAD_STRIP, POLYGON — become triangles split as
+//! Mesa's native path splits them (`assembly`, where the measurements are), uploaded as
+//! unshared triangle corners carrying the edge attribute of `polygon` (so LINE and POINT
+//! modes can drop what the split added) and their polygon's provoking vertex as the shade
+//! attributes (so a flat polygon has one colour, whichever triangle a fragment is in).
+//!
+//! Mesa's QUADS split depends on the draw: indexed quads are split v1–v3; non-indexed ones
+//! v0–v2, except each chunk of 1024 quads that has a vertex outside the clip volume, split
+//! v1–v3. Non-indexed QUADS are therefore uploaded in both splits, and each draw picks per
+//! chunk from the current matrices; everything else has one split.
 
 use std::collections::HashMap;
 use std::sync::Arc;
 
+use glam::{Vec3, Vec4};
 use glow::HasContext;
 
-use super::polygon::split_corners;
+use super::assembly::{self, Diagonal};
+use super::polygon::{split_corners, Corner};
 use super::shadergen::{
-    ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_TEXCOORD0,
+    ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR,
+    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0,
 };
 use crate::ff::{FixedState, Geometry, Primitive, MAX_TEXTURE_UNITS};
 use crate::pipeline::PipelineError;
 
+/// Triangle corners per quad.
+const QUAD_CORNERS: i32 = 6;
+
 pub struct GpuGeometry {
-    _source: Arc<Geometry>,
+    source: Arc<Geometry>,
     vao: glow::VertexArray,
     buffers: Vec<glow::Buffer>,
-    mode: u32,
-    count: i32,
+    shape: Shape,
     has_normals: bool,
     has_colors: bool,
     has_texcoords: [bool; MAX_TEXTURE_UNITS],
 }
 
-/// Element indices for `primitive` in core GL terms, and the core mode.
-pub fn core_indices(primitive: Primitive, indices: &[u32]) -> (u32, Vec<u32>) {
-    let n = indices.len();
+/// How the uploaded vertices are drawn.
+enum Shape {
+    /// A core mode over the element buffer.
+    Elements { mode: u32, count: i32 },
+    /// Triangle corners of split polygons, drawn as TRIANGLES: each uploaded split with its
+    /// first corner; every split has `count` corners.
+    Corners {
+        blocks: Vec<(Diagonal, i32)>,
+        count: i32,
+    },
+}
+
+/// The core mode of the primitives core GL draws itself; `None` for the split ones.
+pub fn core_mode(primitive: Primitive) -> Option<u32> {
     match primitive {
-        Primitive::Points => (glow::POINTS, indices.to_vec()),
-        Primitive::Lines => (glow::LINES, indices.to_vec()),
-        Primitive::LineStrip => (glow::LINE_STRIP, indices.to_vec()),
-        Primitive::Triangles => (glow::TRIANGLES, indices.to_vec()),
-        Primitive::TriangleStrip => (glow::TRIANGLE_STRIP, indices.to_vec()),
-        Primitive::TriangleFan => (glow::TRIANGLE_FAN, indices.to_vec()),
-        Primitive::Polygon => (glow::TRIANGLE_FAN, indices.to_vec()),
-        Primitive::Quads => {
-            let tris = indices
-                .chunks_exact(4)
-                .flat_map(|q| [q[0], q[1], q[2], q[0], q[2], q[3]])
-                .collect();
-            (glow::TRIANGLES, tris)
-        }
-        Primitive::QuadStrip => {
-            // Quad i has vertices 2i, 2i+1, 2i+3, 2i+2 in polygon order (GL 1.5 §2.6.1).
-            let tris = (0..n.saturating_sub(2) / 2)
-                .flat_map(|i| {
-                    let v = |k: usize| indices[2 * i + k];
-                    [v(0), v(1), v(3), v(0), v(3), v(2)]
-                })
-                .collect();
-            (glow::TRIANGLES, tris)
-        }
+        Primitive::Points => Some(glow::POINTS),
+        Primitive::Lines => Some(glow::LINES),
+        Primitive::LineStrip => Some(glow::LINE_STRIP),
+        Primitive::LineLoop => Some(glow::LINE_LOOP),
+        Primitive::Triangles => Some(glow::TRIANGLES),
+        Primitive::TriangleStrip => Some(glow::TRIANGLE_STRIP),
+        Primitive::TriangleFan => Some(glow::TRIANGLE_FAN),
+        Primitive::Quads | Primitive::QuadStrip | Primitive::Polygon => None,
     }
 }
 
-/// The arrays' bytes in `order` (the corners of split polygons) or as they are.
-fn bytes_of<T: Copy>(values: &[T], order: Option<&[u32]>, to: impl Fn(&T) -> Vec<f32>) -> Vec<u8> {
-    let pick = |i: &u32| values.get(*i as usize).map(&to).unwrap_or_default();
-    match order {
-        Some(order) => order
-            .iter()
-            .flat_map(pick)
-            .flat_map(f32::to_ne_bytes)
-            .collect(),
-        None => values
-            .iter()
-            .flat_map(to)
-            .flat_map(f32::to_ne_bytes)
-            .collect(),
+/// The splits uploaded for `g`: both diagonals for non-indexed QUADS (the draw chooses),
+/// v1–v3 for indexed QUADS, one (diagonal-free) split for QUAD_STRIP and POLYGON.
+fn uploaded_splits(g: &Geometry) -> Vec<Diagonal> {
+    match (g.primitive, &g.indices) {
+        (Primitive::Quads, None) => vec![Diagonal::V0V2, Diagonal::V1V3],
+        (Primitive::Quads, Some(_)) => vec![Diagonal::V1V3],
+        _ => vec![Diagonal::V0V2],
+    }
+}
+
+/// The corners of every split uploaded for `g` (vertices `base` in submission order), one
+/// split after the other, and each split with its first corner.
+fn corners_of(g: &Geometry, base: &[u32]) -> (Vec<Corner>, Vec<(Diagonal, i32)>) {
+    let mut corners = Vec::new();
+    let mut blocks = Vec::new();
+    for diagonal in uploaded_splits(g) {
+        blocks.push((diagonal, count(corners.len())));
+        corners.extend(split_corners(g.primitive, base, diagonal).unwrap_or_default());
+    }
+    (corners, blocks)
+}
+
+/// One attribute array as floats, `size` per vertex.
+struct Floats {
+    size: usize,
+    data: Vec<f32>,
+}
+
+impl Floats {
+    fn of4(v: &[Vec4]) -> Floats {
+        Floats {
+            size: 4,
+            data: v.iter().flat_map(|p| p.to_array()).collect(),
+        }
+    }
+
+    fn of3(v: &[Vec3]) -> Floats {
+        Floats {
+            size: 3,
+            data: v.iter().flat_map(|p| p.to_array()).collect(),
+        }
+    }
+
+    /// The bytes of the vertices in `order` (vertex indices; out of range gives nothing),
+    /// or of all of them.
+    fn bytes(&self, order: Option<&[u32]>) -> Vec<u8> {
+        let floats: Vec<f32> = match order {
+            Some(order) => order
+                .iter()
+                .flat_map(|&i| {
+                    let i = i as usize * self.size;
+                    self.data.get(i..i + self.size).unwrap_or_default()
+                })
+                .copied()
+                .collect(),
+            None => self.data.clone(),
+        };
+        floats.iter().flat_map(|f| f.to_ne_bytes()).collect()
     }
 }
 
@@ -82,74 +132,100 @@ impl GpuGeometry {
             .indices
             .clone()
             .unwrap_or_else(|| (0..g.positions.len() as u32).collect());
-        let corners = split_corners(g.primitive, &base);
-        let order: Option<Vec<u32>> = corners
-            .as_ref()
-            .map(|c| c.iter().map(|(v, _)| *v).collect());
-        let order = order.as_deref();
-        let (mode, indices) = match order {
-            Some(o) => (glow::TRIANGLES, (0..o.len() as u32).collect()),
-            None => core_indices(g.primitive, &base),
+        let split = core_mode(g.primitive).is_none();
+        let (corners, blocks) = if split {
+            corners_of(g, &base)
+        } else {
+            (Vec::new(), Vec::new())
+        };
+        let order: Vec<u32> = corners.iter().map(|c| c.vertex).collect();
+        let provoking: Vec<u32> = corners.iter().map(|c| c.provoking).collect();
+        let (order, provoking) = if split {
+            (Some(order.as_slice()), Some(provoking.as_slice()))
+        } else {
+            (None, None)
         };
         let mut buffers = Vec::new();
+        // SAFETY: plain GL calls on the current context; every buffer is sized by its data.
         unsafe {
             let vao = gl.create_vertex_array().map_err(PipelineError::Object)?;
             gl.bind_vertex_array(Some(vao));
-            let mut array =
-                |location: u32, size: i32, data: Vec<u8>| -> Result<(), PipelineError> {
-                    let b = gl.create_buffer().map_err(PipelineError::Object)?;
-                    gl.bind_buffer(glow::ARRAY_BUFFER, Some(b));
-                    gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &data, glow::STATIC_DRAW);
-                    gl.vertex_attrib_pointer_f32(location, size, glow::FLOAT, false, 0, 0);
-                    gl.enable_vertex_attrib_array(location);
-                    buffers.push(b);
-                    Ok(())
-                };
-            array(
+            let mut buffer = |data: Vec<u8>| -> Result<glow::Buffer, PipelineError> {
+                let b = gl.create_buffer().map_err(PipelineError::Object)?;
+                gl.bind_buffer(glow::ARRAY_BUFFER, Some(b));
+                gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &data, glow::STATIC_DRAW);
+                buffers.push(b);
+                Ok(b)
+            };
+            let point = |b: glow::Buffer, location: u32, size: i32| {
+                gl.bind_buffer(glow::ARRAY_BUFFER, Some(b));
+                gl.vertex_attrib_pointer_f32(location, size, glow::FLOAT, false, 0, 0);
+                gl.enable_vertex_attrib_array(location);
+            };
+            // Own values per corner; shade values from the provoking vertex, or — for the
+            // types core GL draws — the same buffer (core GL's provoking vertex is GL 1.x's).
+            let mut upload = |a: Floats, location: u32, shade: Option<u32>| {
+                let size = a.size as i32;
+                let own = buffer(a.bytes(order))?;
+                point(own, location, size);
+                if let Some(shade) = shade {
+                    let b = match provoking {
+                        Some(p) => buffer(a.bytes(Some(p)))?,
+                        None => own,
+                    };
+                    point(b, shade, size);
+                }
+                Ok::<(), PipelineError>(())
+            };
+            upload(
+                Floats::of4(&g.positions),
                 ATTRIB_POSITION,
-                4,
-                bytes_of(&g.positions, order, |v| v.to_array().to_vec()),
+                Some(ATTRIB_SHADE_POSITION),
             )?;
             if let Some(n) = &g.normals {
-                array(
-                    ATTRIB_NORMAL,
-                    3,
-                    bytes_of(n, order, |v| v.to_array().to_vec()),
-                )?;
+                upload(Floats::of3(n), ATTRIB_NORMAL, Some(ATTRIB_SHADE_NORMAL))?;
             }
             if let Some(c) = &g.colors {
-                array(
-                    ATTRIB_COLOR,
-                    4,
-                    bytes_of(c, order, |v| v.to_array().to_vec()),
-                )?;
+                upload(Floats::of4(c), ATTRIB_COLOR, Some(ATTRIB_SHADE_COLOR))?;
             }
             let mut has_texcoords = [false; MAX_TEXTURE_UNITS];
             for (u, tc) in g.texcoords.iter().enumerate() {
                 if let Some(tc) = tc {
-                    array(
-                        ATTRIB_TEXCOORD0 + u as u32,
-                        4,
-                        bytes_of(tc, order, |v| v.to_array().to_vec()),
-                    )?;
+                    upload(Floats::of4(tc), ATTRIB_TEXCOORD0 + u as u32, None)?;
                     has_texcoords[u] = true;
                 }
             }
-            if let Some(c) = &corners {
-                array(ATTRIB_EDGE, 4, bytes_of(c, None, |(_, e)| e.to_vec()))?;
+            if split {
+                let edges = corners
+                    .iter()
+                    .flat_map(|c| c.edge)
+                    .flat_map(f32::to_ne_bytes);
+                let b = buffer(edges.collect())?;
+                point(b, ATTRIB_EDGE, 4);
             }
-            let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
-            gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
-            let index_bytes: Vec<u8> = indices.iter().flat_map(|i| i.to_ne_bytes()).collect();
-            gl.buffer_data_u8_slice(glow::ELEMENT_ARRAY_BUFFER, &index_bytes, glow::STATIC_DRAW);
-            buffers.push(ebo);
+            let shape = match core_mode(g.primitive) {
+                Some(mode) => {
+                    let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
+                    gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
+                    let bytes: Vec<u8> = base.iter().flat_map(|i| i.to_ne_bytes()).collect();
+                    gl.buffer_data_u8_slice(glow::ELEMENT_ARRAY_BUFFER, &bytes, glow::STATIC_DRAW);
+                    buffers.push(ebo);
+                    Shape::Elements {
+                        mode,
+                        count: count(base.len()),
+                    }
+                }
+                None => Shape::Corners {
+                    count: count(corners.len() / blocks.len().max(1)),
+                    blocks,
+                },
+            };
             gl.bind_vertex_array(None);
             Ok(GpuGeometry {
-                _source: g.clone(),
+                source: g.clone(),
                 vao,
                 buffers,
-                mode,
-                count: indices.len() as i32,
+                shape,
                 has_normals: g.normals.is_some(),
                 has_colors: g.colors.is_some(),
                 has_texcoords,
@@ -157,23 +233,25 @@ impl GpuGeometry {
         }
     }
 
-    /// Draws with the current values standing in for the missing arrays.
+    /// Draws with the current values standing in for the missing arrays; non-indexed QUADS
+    /// take the diagonal Mesa would take under the current matrices (`assembly`).
     pub fn draw(&self, gl: &glow::Context, state: &FixedState) {
+        // SAFETY: plain GL calls on the current context; every range lies in the uploaded
+        // buffers (counts come from the upload).
         unsafe {
             gl.bind_vertex_array(Some(self.vao));
             let cur = &state.current;
             if !self.has_normals {
-                gl.vertex_attrib_4_f32(
-                    ATTRIB_NORMAL,
-                    cur.normal.x,
-                    cur.normal.y,
-                    cur.normal.z,
-                    0.0,
-                );
+                let n = cur.normal;
+                for location in [ATTRIB_NORMAL, ATTRIB_SHADE_NORMAL] {
+                    gl.vertex_attrib_4_f32(location, n.x, n.y, n.z, 0.0);
+                }
             }
             if !self.has_colors {
                 let c = cur.color;
-                gl.vertex_attrib_4_f32(ATTRIB_COLOR, c.x, c.y, c.z, c.w);
+                for location in [ATTRIB_COLOR, ATTRIB_SHADE_COLOR] {
+                    gl.vertex_attrib_4_f32(location, c.x, c.y, c.z, c.w);
+                }
             }
             for u in 0..MAX_TEXTURE_UNITS {
                 if !self.has_texcoords[u] {
@@ -181,14 +259,52 @@ impl GpuGeometry {
                     gl.vertex_attrib_4_f32(ATTRIB_TEXCOORD0 + u as u32, t.x, t.y, t.z, t.w);
                 }
             }
-            if self.count > 0 {
-                gl.draw_elements(self.mode, self.count, glow::UNSIGNED_INT, 0);
+            match &self.shape {
+                Shape::Elements { mode, count } if *count > 0 => {
+                    gl.draw_elements(*mode, *count, glow::UNSIGNED_INT, 0);
+                }
+                Shape::Elements { .. } => {}
+                Shape::Corners { blocks, count } => {
+                    for (first, n) in self.corner_ranges(blocks, *count, state) {
+                        if n > 0 {
+                            gl.draw_arrays(glow::TRIANGLES, first, n);
+                        }
+                    }
+                }
             }
             gl.bind_vertex_array(None);
         }
     }
 
+    /// The (first corner, corner count) ranges one draw sends.
+    fn corner_ranges(
+        &self,
+        blocks: &[(Diagonal, i32)],
+        count: i32,
+        state: &FixedState,
+    ) -> Vec<(i32, i32)> {
+        if self.source.primitive != Primitive::Quads {
+            return blocks
+                .first()
+                .map(|&(_, f)| (f, count))
+                .into_iter()
+                .collect();
+        }
+        let mvp = state.projection_matrix() * state.modelview_matrix();
+        assembly::quad_diagonals(&self.source, mvp)
+            .into_iter()
+            .filter_map(|(quads, diagonal)| {
+                let &(_, first) = blocks.iter().find(|(d, _)| *d == diagonal)?;
+                let start = i32::try_from(quads.start).ok()?;
+                let len = i32::try_from(quads.len()).ok()?;
+                let offset = QUAD_CORNERS.checked_mul(start)?.checked_add(first)?;
+                Some((offset, QUAD_CORNERS.checked_mul(len)?))
+            })
+            .collect()
+    }
+
     pub fn delete(self, gl: &glow::Context) {
+        // SAFETY: the objects were created on this context and are deleted once.
         unsafe {
             gl.delete_vertex_array(self.vao);
             for b in self.buffers {
@@ -196,6 +312,11 @@ impl GpuGeometry {
             }
         }
     }
+}
+
+/// A count as GLsizei; beyond i32 it is clamped (GL could not draw it anyway).
+fn count(n: usize) -> i32 {
+    i32::try_from(n).unwrap_or(i32::MAX)
 }
 
 /// Uploaded geometries by the address of their `Arc` (kept alive by the entry, so the
@@ -232,16 +353,17 @@ mod tests {
     use super::*;
 
     #[test]
-    fn legacy_primitives_become_triangles() {
-        let quad = core_indices(Primitive::Quads, &[0, 1, 2, 3]);
-        assert_eq!(quad, (glow::TRIANGLES, vec![0, 1, 2, 0, 2, 3]));
-        let strip = core_indices(Primitive::QuadStrip, &[0, 1, 2, 3, 4, 5]);
-        assert_eq!(strip.1, vec![0, 1, 3, 0, 3, 2, 2, 3, 5, 2, 5, 4]);
-        assert_eq!(
-            core_indices(Primitive::Polygon, &[0, 1, 2, 3]).0,
-            glow::TRIANGLE_FAN
-        );
-        // A trailing partial quad is dropped, as glBegin(GL_QUADS) does.
-        assert_eq!(core_indices(Primitive::Quads, &[0, 1, 2, 3, 4]).1.len(), 6);
+    fn core_types_are_drawn_as_they_are_and_the_legacy_ones_split() {
+        assert_eq!(core_mode(Primitive::LineLoop), Some(glow::LINE_LOOP));
+        assert_eq!(core_mode(Primitive::TriangleFan), Some(glow::TRIANGLE_FAN));
+        for p in [Primitive::Quads, Primitive::QuadStrip, Primitive::Polygon] {
+            assert_eq!(core_mode(p), None);
+        }
+        let mut g = Geometry::new(Primitive::Quads, Vec::new());
+        assert_eq!(uploaded_splits(&g), [Diagonal::V0V2, Diagonal::V1V3]);
+        g.indices = Some(Vec::new());
+        assert_eq!(uploaded_splits(&g), [Diagonal::V1V3]);
+        g.primitive = Primitive::QuadStrip;
+        assert_eq!(uploaded_splits(&g).len(), 1);
     }
 }

@@ -9,6 +9,7 @@
 //! `Fixed8` computes the stages on 8-bit integers and the register combiners on 9-bit
 //! signed values, as the era's hardware did.
 
+pub mod assembly;
 pub mod cache;
 pub mod conv;
 pub mod draw;

@@ -11,7 +11,7 @@
 //!   order-dependent operation (blending, stencil ops, LEQUAL/EQUAL ties) between a front
 //!   and a back face of the *same* draw that overlap can differ from GL's polygon order.
 //! - **Split polygons keep their outline.** QUADS, QUAD_STRIP and POLYGON are uploaded as
-//!   unshared triangle corners, each with an edge attribute e (vec4): for the edge opposite
+//!   unshared triangle corners (split as Mesa splits them: `assembly`), each with an edge attribute e (vec4): for the edge opposite
 //!   corner m, e[m] is 1 at corner m and 0 at the other two when that edge is a boundary
 //!   edge, and 1 at all three corners when it is a split edge. A boundary edge rasterised
 //!   as a line therefore interpolates e[m] between two zeros — exactly 0 — while a split
@@ -31,6 +31,7 @@
 //! POLYGON_OFFSET_LINE/POINT, and a context that is not forward-compatible accepts wide
 //! lines).
 
+use super::assembly::{self, Diagonal};
 use crate::ff::{Face, OffsetEnables, PolygonMode, PolygonModes, Primitive};
 
 /// Which rasterised fragments of split polygons are kept (`None` in the key: all).
@@ -58,7 +59,7 @@ pub struct PolygonPass {
 fn is_polygonal(p: Primitive) -> bool {
     !matches!(
         p,
-        Primitive::Points | Primitive::Lines | Primitive::LineStrip
+        Primitive::Points | Primitive::Lines | Primitive::LineStrip | Primitive::LineLoop
     )
 }
 
@@ -113,47 +114,48 @@ pub fn passes(
     }
 }
 
-/// The polygons of a split primitive, each as its vertex indices in polygon order
-/// (QUAD_STRIP quad i is 2i, 2i+1, 2i+3, 2i+2: GL 1.5 §2.6.1).
-fn polygons(primitive: Primitive, indices: &[u32]) -> Vec<Vec<u32>> {
-    match primitive {
-        Primitive::Quads => indices.chunks_exact(4).map(<[u32]>::to_vec).collect(),
-        Primitive::QuadStrip => (0..indices.len().saturating_sub(2) / 2)
-            .map(|i| [0, 1, 3, 2].iter().map(|k| indices[2 * i + k]).collect())
-            .collect(),
-        Primitive::Polygon if indices.len() >= 3 => vec![indices.to_vec()],
-        _ => Vec::new(),
-    }
+/// One triangle corner of a split primitive: the vertex it is, the provoking vertex of its
+/// polygon (`assembly`), and its edge attribute.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Corner {
+    pub vertex: u32,
+    pub provoking: u32,
+    pub edge: [f32; 4],
 }
 
-/// The triangle corners of a split primitive — each polygon fanned from its first vertex,
-/// as Mesa splits it ((p0, p1, p2), (p0, p2, p3), …) — as (vertex index, edge attribute).
-/// `None` for primitives that are not split.
-pub fn split_corners(primitive: Primitive, indices: &[u32]) -> Option<Vec<(u32, [f32; 4])>> {
+/// The triangle corners of the polygons of a split primitive, split as `assembly` says
+/// (`diagonal` for QUADS), with their edge attributes; `None` for primitives that are not
+/// split. An edge of a triangle is a boundary edge iff its two vertices are neighbours in
+/// the polygon (positions k and k+1 mod n); a vertex is owned by the first corner it has.
+pub fn split_corners(
+    primitive: Primitive,
+    indices: &[u32],
+    diagonal: Diagonal,
+) -> Option<Vec<Corner>> {
     if !is_split(primitive) {
         return None;
     }
     let mut out = Vec::new();
-    for poly in polygons(primitive, indices) {
-        let n = poly.len();
-        for i in 0..n - 2 {
-            // Corners p0, p(i+1), p(i+2). Edge opposite corner 0 (p(i+1)–p(i+2)) is always
-            // a boundary; opposite corner 1 (p(i+2)–p0) only in the last triangle;
-            // opposite corner 2 (p0–p(i+1)) only in the first.
-            let boundary = [true, i == n - 3, i == 0];
-            for (c, &v) in [poly[0], poly[i + 1], poly[i + 2]].iter().enumerate() {
+    for poly in assembly::polygons(primitive, indices) {
+        let n = poly.vertices.len();
+        let mut owned = vec![false; n];
+        let provoking = poly.vertices[poly.provoking];
+        for tri in assembly::triangles(primitive, n, diagonal) {
+            for (c, &k) in tri.iter().enumerate() {
                 let mut e = [0.0; 4];
                 for m in 0..3 {
-                    e[m] = if !boundary[m] || m == c { 1.0 } else { 0.0 };
+                    // The edge opposite corner m joins the other two corners.
+                    let (a, b) = (tri[(m + 1) % 3], tri[(m + 2) % 3]);
+                    let boundary = (a + 1) % n == b || (b + 1) % n == a;
+                    e[m] = if !boundary || m == c { 1.0 } else { 0.0 };
                 }
-                // p0 is owned by the first triangle, p1 too; every later vertex by the
-                // triangle it first appears in as corner 2.
-                let owns = match c {
-                    0 | 1 => i == 0,
-                    _ => true,
-                };
-                e[3] = if owns { 1.0 } else { 0.0 };
-                out.push((v, e));
+                e[3] = if owned[k] { 0.0 } else { 1.0 };
+                owned[k] = true;
+                out.push(Corner {
+                    vertex: poly.vertices[k],
+                    provoking,
+                    edge: e,
+                });
             }
         }
     }
@@ -203,45 +205,78 @@ mod tests {
         assert_eq!(passes(FILL_LINE, None, OFFSETS, Primitive::Lines).len(), 1);
     }
 
+    /// The edges of each triangle whose attribute component is 0 at both ends (drawn in
+    /// LINE mode), as vertex pairs.
+    fn boundary_edges(c: &[Corner]) -> Vec<(u32, u32)> {
+        let mut out = Vec::new();
+        for tri in c.chunks_exact(3) {
+            for m in 0..3 {
+                let (a, b) = (tri[(m + 1) % 3], tri[(m + 2) % 3]);
+                if a.edge[m] == 0.0 && b.edge[m] == 0.0 {
+                    out.push((a.vertex.min(b.vertex), a.vertex.max(b.vertex)));
+                }
+            }
+        }
+        out.sort_unstable();
+        out
+    }
+
+    fn owned(c: &[Corner]) -> Vec<u32> {
+        c.iter()
+            .filter(|c| c.edge[3] != 0.0)
+            .map(|c| c.vertex)
+            .collect()
+    }
+
     #[test]
     fn a_quad_marks_its_diagonal_and_owns_each_vertex_once() {
-        let c = split_corners(Primitive::Quads, &[0, 1, 2, 3]).unwrap();
-        let order: Vec<u32> = c.iter().map(|(v, _)| *v).collect();
-        assert_eq!(order, [0, 1, 2, 0, 2, 3]);
-        // Triangle (0,1,2): the split edge 2–0 is opposite corner 1, so e.y = 1 throughout.
-        assert!(c[..3].iter().all(|(_, e)| e[1] == 1.0));
-        // Triangle (0,2,3): the split edge 0–2 is opposite corner 2, so e.z = 1 throughout.
-        assert!(c[3..].iter().all(|(_, e)| e[2] == 1.0));
-        // Boundary edge 0–1 (opposite corner 2 of the first triangle): zero at both ends.
-        assert_eq!((c[0].1[2], c[1].1[2]), (0.0, 0.0));
-        let owned: Vec<u32> = c
-            .iter()
-            .filter(|(_, e)| e[3] != 0.0)
-            .map(|(v, _)| *v)
-            .collect();
-        assert_eq!(owned, [0, 1, 2, 3]);
+        for (diagonal, order, split) in [
+            (Diagonal::V0V2, [0, 1, 2, 0, 2, 3], (0, 2)),
+            (Diagonal::V1V3, [0, 1, 3, 1, 2, 3], (1, 3)),
+        ] {
+            let c = split_corners(Primitive::Quads, &[0, 1, 2, 3], diagonal).unwrap();
+            let got: Vec<u32> = c.iter().map(|c| c.vertex).collect();
+            assert_eq!(got, order);
+            assert_eq!(boundary_edges(&c), [(0, 1), (0, 3), (1, 2), (2, 3)]);
+            // The split edge has no component that is 0 at both of its ends.
+            assert!(!boundary_edges(&c).contains(&split));
+            let mut o = owned(&c);
+            o.sort_unstable();
+            assert_eq!(o, [0, 1, 2, 3]);
+            // Every corner carries the quad's provoking vertex, v3.
+            assert!(c.iter().all(|c| c.provoking == 3));
+        }
     }
 
     #[test]
     fn a_polygon_fan_has_boundary_only_on_its_outline() {
-        let c = split_corners(Primitive::Polygon, &[0, 1, 2, 3, 4]).unwrap();
+        let c = split_corners(Primitive::Polygon, &[0, 1, 2, 3, 4], Diagonal::V0V2).unwrap();
         assert_eq!(c.len(), 9);
-        // Count, per triangle, which edges have a component that is 0 at both ends.
-        let mut boundary_edges = 0;
-        for tri in c.chunks_exact(3) {
-            for m in 0..3 {
-                let ends: Vec<f32> = (0..3).filter(|&k| k != m).map(|k| tri[k].1[m]).collect();
-                if ends.iter().all(|&x| x == 0.0) {
-                    boundary_edges += 1;
-                }
-            }
-        }
-        assert_eq!(boundary_edges, 5, "a pentagon has five edges");
-        let owned = c.iter().filter(|(_, e)| e[3] != 0.0).count();
-        assert_eq!(owned, 5);
-        let strip = split_corners(Primitive::QuadStrip, &[0, 1, 2, 3, 4, 5]).unwrap();
-        let order: Vec<u32> = strip.iter().map(|(v, _)| *v).collect();
+        assert_eq!(boundary_edges(&c).len(), 5, "a pentagon has five edges");
+        assert_eq!(owned(&c).len(), 5);
+        assert!(c.iter().all(|c| c.provoking == 0));
+        let strip =
+            split_corners(Primitive::QuadStrip, &[0, 1, 2, 3, 4, 5], Diagonal::V0V2).unwrap();
+        let order: Vec<u32> = strip.iter().map(|c| c.vertex).collect();
         assert_eq!(order, [0, 1, 3, 0, 3, 2, 2, 3, 5, 2, 5, 4]);
-        assert_eq!(split_corners(Primitive::TriangleFan, &[0, 1, 2]), None);
+        let provoking: Vec<u32> = strip.iter().map(|c| c.provoking).collect();
+        assert_eq!(provoking, [3, 3, 3, 3, 3, 3, 5, 5, 5, 5, 5, 5]);
+        assert_eq!(
+            boundary_edges(&strip),
+            [
+                (0, 1),
+                (0, 2),
+                (1, 3),
+                (2, 3),
+                (2, 3),
+                (2, 4),
+                (3, 5),
+                (4, 5)
+            ]
+        );
+        assert_eq!(
+            split_corners(Primitive::TriangleFan, &[0, 1, 2], Diagonal::V0V2),
+            None
+        );
     }
 }

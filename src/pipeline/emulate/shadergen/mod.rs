@@ -3,8 +3,10 @@
 //! texture unit has no code for any other unit, a key without lighting has no lighting code.
 //!
 //! Attribute locations are fixed: 0 position (vec4), 1 normal, 2 colour, 3 + u texture
-//! coordinate of unit u, then the edge attribute of split polygons. A vertex array that a draw lacks is disabled and its current value
-//! is set as a constant attribute, so "per vertex or per draw" never changes the key.
+//! coordinate of unit u, then the edge attribute of split polygons, then the shade position,
+//! normal and colour (the provoking vertex's, read under flat shading). A vertex array that a
+//! draw lacks is disabled and its current value is set as a constant attribute, so "per
+//! vertex or per draw" never changes the key.
 
 mod combiners;
 mod fragment;
@@ -19,6 +21,11 @@ pub const ATTRIB_COLOR: u32 = 2;
 pub const ATTRIB_TEXCOORD0: u32 = 3;
 /// The edge attribute of split polygons (`polygon`), after the last texture unit's.
 pub const ATTRIB_EDGE: u32 = ATTRIB_TEXCOORD0 + crate::ff::MAX_TEXTURE_UNITS as u32;
+/// The shade attributes: the position, normal and colour of the provoking vertex of the
+/// primitive a vertex belongs to (`assembly`), what flat shading lights.
+pub const ATTRIB_SHADE_POSITION: u32 = ATTRIB_EDGE + 1;
+pub const ATTRIB_SHADE_NORMAL: u32 = ATTRIB_EDGE + 2;
+pub const ATTRIB_SHADE_COLOR: u32 = ATTRIB_EDGE + 3;
 
 /// A generated program: both sources and the uniforms each declared.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -1,5 +1,12 @@
 //! The vertex stage: transform (GL 1.5 §2.10), lighting (§2.14.1), texture coordinate
 //! generation (§2.11.4) and the texture matrix.
+//!
+//! Under flat shading the colour is lit from the *shade* attributes — the position, normal and
+//! colour of the provoking vertex of the primitive the vertex belongs to (`assembly`) — and
+//! passed `flat`; texture coordinates still come from the vertex's own values. For the types
+//! core GL draws, the shade attributes are the vertex's own and core GL's provoking vertex
+//! picks the corner; for split polygons every corner carries its polygon's provoking vertex,
+//! so the whole polygon has one colour whichever way it was split.
 
 use crate::ff::{ColorMaterialMode, TexCoord, TexGenMode};
 use crate::pipeline::emulate::glsl::GlslWriter;
@@ -8,7 +15,10 @@ use crate::pipeline::emulate::key::{
 };
 use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
 
-use super::{ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_TEXCOORD0};
+use super::{
+    ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR,
+    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0,
+};
 
 pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     let mut w = GlslWriter::new();
@@ -29,9 +39,28 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     let size = w.uniform(UniformSource::PointSize);
     w.line(format!("gl_PointSize = {size};"));
     let mut eye = EyeTerms::default();
+    let color = if fragment.flat {
+        w.declare(&format!(
+            "layout(location = {ATTRIB_SHADE_COLOR}) in vec4 a_shade_color;"
+        ));
+        "a_shade_color"
+    } else {
+        "a_color"
+    };
     match &key.lighting {
-        Some(lighting) => emit_lighting(&mut w, &mut eye, key, lighting, flat),
-        None => w.line("v_color = a_color;"),
+        Some(lighting) => {
+            let inputs = if fragment.flat {
+                shade_inputs(&mut w, key)
+            } else {
+                Inputs {
+                    eye: eye.position(&mut w),
+                    normal: eye.normal(&mut w, key),
+                    color,
+                }
+            };
+            emit_lighting(&mut w, lighting, &inputs, flat);
+        }
+        None => w.line(format!("v_color = {color};")),
     }
     for unit in &key.units {
         emit_texcoords(&mut w, &mut eye, key, unit);
@@ -48,6 +77,44 @@ fn emit_edge(w: &mut GlslWriter) {
     w.declare(&format!("layout(location = {ATTRIB_EDGE}) in vec4 a_edge;"));
     w.declare("noperspective out vec4 v_edge;");
     w.line("v_edge = a_edge;");
+}
+
+/// What lighting reads: the eye-space position and normal, and the colour attribute that
+/// COLOR_MATERIAL tracks.
+struct Inputs {
+    eye: &'static str,
+    normal: &'static str,
+    color: &'static str,
+}
+
+/// The provoking vertex's eye-space position and normal, from the shade attributes.
+fn shade_inputs(w: &mut GlslWriter, key: &VertexKey) -> Inputs {
+    w.declare(&format!(
+        "layout(location = {ATTRIB_SHADE_POSITION}) in vec4 a_shade_position;"
+    ));
+    w.declare(&format!(
+        "layout(location = {ATTRIB_SHADE_NORMAL}) in vec3 a_shade_normal;"
+    ));
+    let mv = w.uniform(UniformSource::Modelview);
+    w.line(format!("vec4 shade_eye = {mv} * a_shade_position;"));
+    emit_normal(w, key, "shade_normal", "a_shade_normal");
+    Inputs {
+        eye: "shade_eye",
+        normal: "shade_normal",
+        color: "a_shade_color",
+    }
+}
+
+/// `out` = (M⁻¹)ᵀ·`attribute`, then NORMALIZE (n/|n|) or RESCALE_NORMAL (f·n) (§2.11.3).
+fn emit_normal(w: &mut GlslWriter, key: &VertexKey, out: &str, attribute: &str) {
+    let nm = w.uniform(UniformSource::NormalMatrix);
+    w.line(format!("vec3 {out} = {nm} * {attribute};"));
+    if key.normalize {
+        w.line(format!("{out} = normalize({out});"));
+    } else if key.rescale_normal {
+        let f = w.uniform(UniformSource::RescaleFactor);
+        w.line(format!("{out} *= {f};"));
+    }
 }
 
 /// Eye-space position and normal, emitted on first use only.
@@ -67,35 +134,21 @@ impl EyeTerms {
         "eye"
     }
 
-    /// n = (M⁻¹)ᵀ·normal, then NORMALIZE (n/|n|) or RESCALE_NORMAL (f·n) (§2.11.3).
+    /// The vertex's own eye-space normal (`emit_normal`).
     fn normal(&mut self, w: &mut GlslWriter, key: &VertexKey) -> &'static str {
         if !self.normal {
             w.declare(&format!(
                 "layout(location = {ATTRIB_NORMAL}) in vec3 a_normal;"
             ));
-            let nm = w.uniform(UniformSource::NormalMatrix);
-            w.line(format!("vec3 normal = {nm} * a_normal;"));
-            if key.normalize {
-                w.line("normal = normalize(normal);");
-            } else if key.rescale_normal {
-                let f = w.uniform(UniformSource::RescaleFactor);
-                w.line(format!("normal *= {f};"));
-            }
+            emit_normal(w, key, "normal", "a_normal");
             self.normal = true;
         }
         "normal"
     }
 }
 
-fn emit_lighting(
-    w: &mut GlslWriter,
-    eye: &mut EyeTerms,
-    key: &VertexKey,
-    lighting: &LightingKey,
-    flat: &str,
-) {
-    let e = eye.position(w);
-    let n = eye.normal(w, key);
+fn emit_lighting(w: &mut GlslWriter, lighting: &LightingKey, inputs: &Inputs, flat: &str) {
+    let (e, n) = (inputs.eye, inputs.normal);
     w.line(format!(
         "vec3 view_dir = {};",
         if lighting.local_viewer {
@@ -107,7 +160,7 @@ fn emit_lighting(
     if lighting.separate_specular {
         w.declare(&format!("{flat}out vec4 v_secondary;"));
     }
-    emit_face(w, lighting, 0, n, ["v_color", "v_secondary"]);
+    emit_face(w, lighting, inputs, 0, n, ["v_color", "v_secondary"]);
     if lighting.two_side {
         w.declare(&format!("{flat}out vec4 v_back_color;"));
         if lighting.separate_specular {
@@ -117,6 +170,7 @@ fn emit_lighting(
         emit_face(
             w,
             lighting,
+            inputs,
             1,
             "back_normal",
             ["v_back_color", "v_back_secondary"],
@@ -128,6 +182,7 @@ fn emit_lighting(
 fn material(
     w: &mut GlslWriter,
     cm: Option<ColorMaterialKey>,
+    color: &str,
     face: u8,
     value: MaterialValue,
 ) -> String {
@@ -144,7 +199,7 @@ fn material(
             )
     });
     if tracks {
-        "a_color".to_string()
+        color.to_string()
     } else {
         w.uniform(UniformSource::Material(face, value))
     }
@@ -154,11 +209,19 @@ fn material(
 /// alpha = d_m.a, clamped to [0, 1] (GL 1.5 §2.14.1). With SEPARATE_SPECULAR_COLOR the
 /// specular sum Σ att·spot·f·max(n·h,0)^s·s_m·s_l is the secondary colour instead, its
 /// alpha 0, clamped alike (GL 1.2 §2.13.1). `out` names the primary and secondary outputs.
-fn emit_face(w: &mut GlslWriter, lighting: &LightingKey, face: u8, n: &str, out: [&str; 2]) {
+fn emit_face(
+    w: &mut GlslWriter,
+    lighting: &LightingKey,
+    inputs: &Inputs,
+    face: u8,
+    n: &str,
+    out: [&str; 2],
+) {
     let cm = lighting.color_material;
-    let emission = material(w, cm, face, MaterialValue::Emission);
-    let ambient = material(w, cm, face, MaterialValue::Ambient);
-    let diffuse = material(w, cm, face, MaterialValue::Diffuse);
+    let color = inputs.color;
+    let emission = material(w, cm, color, face, MaterialValue::Emission);
+    let ambient = material(w, cm, color, face, MaterialValue::Ambient);
+    let diffuse = material(w, cm, color, face, MaterialValue::Diffuse);
     let scene = w.uniform(UniformSource::LightModelAmbient);
     let c = format!("c{face}");
     w.line(format!(
@@ -169,7 +232,7 @@ fn emit_face(w: &mut GlslWriter, lighting: &LightingKey, face: u8, n: &str, out:
         w.line(format!("vec3 {secondary} = vec3(0.0);"));
     }
     for light in &lighting.lights {
-        emit_light(w, lighting, *light, face, n, [&c, &secondary]);
+        emit_light(w, lighting, inputs, *light, face, n, [&c, &secondary]);
     }
     w.line(format!(
         "{} = clamp(vec4({c}, {diffuse}.a), 0.0, 1.0);",
@@ -188,12 +251,14 @@ fn emit_face(w: &mut GlslWriter, lighting: &LightingKey, face: u8, n: &str, out:
 fn emit_light(
     w: &mut GlslWriter,
     lighting: &LightingKey,
+    inputs: &Inputs,
     l: LightKey,
     face: u8,
     n: &str,
     sums: [&str; 2],
 ) {
     let [c, secondary] = sums;
+    let (e, color) = (inputs.eye, inputs.color);
     let i = l.index;
     let u = |w: &mut GlslWriter, v| w.uniform(UniformSource::Light(i, v));
     let pos = u(w, LightValue::Position);
@@ -201,9 +266,9 @@ fn emit_light(
     let ld = u(w, LightValue::Diffuse);
     let ls = u(w, LightValue::Specular);
     let cm = lighting.color_material;
-    let ma = material(w, cm, face, MaterialValue::Ambient);
-    let md = material(w, cm, face, MaterialValue::Diffuse);
-    let ms = material(w, cm, face, MaterialValue::Specular);
+    let ma = material(w, cm, color, face, MaterialValue::Ambient);
+    let md = material(w, cm, color, face, MaterialValue::Diffuse);
+    let ms = material(w, cm, color, face, MaterialValue::Specular);
     let shin = w.uniform(UniformSource::Material(face, MaterialValue::Shininess));
     let v = format!("l{i}_{face}");
     w.line(format!(
@@ -216,7 +281,7 @@ fn emit_light(
     } else {
         let k = u(w, LightValue::Attenuation);
         w.line(format!(
-            "vec3 {v}_d = {pos}.xyz / {pos}.w - eye.xyz / eye.w;"
+            "vec3 {v}_d = {pos}.xyz / {pos}.w - {e}.xyz / {e}.w;"
         ));
         w.line(format!("float {v}_dist = length({v}_d);"));
         w.line(format!("vec3 {v}_dir = {v}_d / max({v}_dist, 1e-30);"));
@@ -304,4 +369,44 @@ fn emit_texcoords(w: &mut GlslWriter, eye: &mut EyeTerms, key: &VertexKey, unit:
     }
     let m = w.uniform(UniformSource::TextureMatrix(u));
     w.line(format!("v_tc{u} = {m} * vec4({});", parts.join(", ")));
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::ff::{Capability, Command, FixedState, ShadeModel};
+    use crate::pipeline::emulate::key::ShaderKey;
+    use crate::vocab::Precision;
+
+    fn vertex_source(commands: &[Command]) -> String {
+        let mut state = FixedState::new();
+        for c in commands {
+            assert!(state.apply(c).is_ok(), "{c:?}");
+        }
+        super::super::generate(&ShaderKey::from_state(&state, Precision::Float)).vertex
+    }
+
+    #[test]
+    fn flat_shading_lights_the_provoking_vertex() {
+        let lit = [
+            Command::Enable(Capability::Lighting),
+            Command::Enable(Capability::Light(0)),
+        ];
+        let smooth = vertex_source(&lit);
+        assert!(smooth.contains("in vec3 a_normal;"));
+        assert!(!smooth.contains("a_shade"));
+        let flat = vertex_source(&[
+            lit[0].clone(),
+            lit[1].clone(),
+            Command::ShadeModel(ShadeModel::Flat),
+        ]);
+        assert!(flat.contains("flat out vec4 v_color;"));
+        assert!(flat.contains("vec3 shade_normal = "));
+        assert!(flat.contains("vec4 shade_eye = "));
+        assert!(
+            !flat.contains("in vec3 a_normal;"),
+            "nothing else reads the vertex's own normal"
+        );
+        let unlit = vertex_source(&[Command::ShadeModel(ShadeModel::Flat)]);
+        assert!(unlit.contains("v_color = a_shade_color;"));
+    }
 }
