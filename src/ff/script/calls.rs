@@ -81,13 +81,15 @@ pub(super) fn transform_and_fragment(c: &Call) -> Res<Option<Command>> {
     Ok(Some(match c.entry {
         Entry::MatrixMode => n(1).and(c.enm(0)).map(Command::MatrixMode)?,
         Entry::LoadIdentity => n(0).map(|_| Command::LoadIdentity)?,
-        Entry::LoadMatrixf => n(1).and(c.mat4(0)).map(Command::LoadMatrix)?,
-        Entry::MultMatrixf => n(1).and(c.mat4(0)).map(Command::MultMatrix)?,
+        Entry::LoadMatrixf | Entry::LoadMatrixd => n(1).and(c.mat4(0)).map(Command::LoadMatrix)?,
+        Entry::MultMatrixf | Entry::MultMatrixd => n(1).and(c.mat4(0)).map(Command::MultMatrix)?,
         Entry::PushMatrix => n(0).map(|_| Command::PushMatrix)?,
         Entry::PopMatrix => n(0).map(|_| Command::PopMatrix)?,
-        Entry::Translatef => n(3).and(c.vec3_args(0)).map(Command::Translate)?,
-        Entry::Scalef => n(3).and(c.vec3_args(0)).map(Command::Scale)?,
-        Entry::Rotatef => {
+        Entry::Translatef | Entry::Translated => {
+            n(3).and(c.vec3_args(0)).map(Command::Translate)?
+        }
+        Entry::Scalef | Entry::Scaled => n(3).and(c.vec3_args(0)).map(Command::Scale)?,
+        Entry::Rotatef | Entry::Rotated => {
             n(4)?;
             Command::Rotate {
                 angle_deg: c.f32(0)?,
@@ -350,7 +352,7 @@ const ENV_PARAMS: &[&str] = &[
 /// Texture units, objects, images, parameters, texgen and texenv.
 pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
     Ok(Some(match c.entry {
-        Entry::ActiveTexture => c
+        Entry::ActiveTexture | Entry::ActiveTextureARB => c
             .count(1)
             .and(c.family(0, Family::Texture))
             .map(Command::ActiveTexture)?,
@@ -433,7 +435,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 param: TexParam::BorderColor(c.vec4_array(2)?),
             }
         }
-        Entry::TexGeni => {
+        Entry::TexGeni | Entry::TexGenf | Entry::TexGend => {
             c.count(3)?;
             c.pname(1, &["GL_TEXTURE_GEN_MODE"])?;
             Command::TexGen {
@@ -441,7 +443,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
                 param: TexGenParam::Mode(c.enm(2)?),
             }
         }
-        Entry::TexGenfv => {
+        Entry::TexGenfv | Entry::TexGendv | Entry::TexGeniv => {
             c.count(3)?;
             let coord = c.enm(0)?;
             let plane = c.vec4_array(2)?;

@@ -8,7 +8,7 @@ use glam::{Mat4, Vec3, Vec4};
 use super::lexer::{lex, Tok, Token};
 use super::names::{ranked, Family, GlEnum};
 use super::ScriptError;
-use crate::ff::api::{Entry, Form};
+use crate::ff::api::{Attrib, AttribCall, Entry, Form};
 use crate::ff::*;
 use crate::vocab::DepthRule;
 
@@ -296,11 +296,34 @@ fn float_literal(text: &str) -> Option<f32> {
     }
 }
 
+/// A C literal's value: `f`-suffixed literals are floats (rounded to f32), other floating
+/// literals doubles, integer literals exact; INFINITY and NAN from <math.h>.
+fn c_number(text: &str) -> Option<f64> {
+    let is_hex = text.starts_with("0x") || text.starts_with("0X");
+    let float_suffix = !is_hex && text.ends_with(['f', 'F'])
+        || is_hex && text.contains(['p', 'P']) && text.ends_with(['f', 'F']);
+    if float_suffix || matches!(text, "INFINITY" | "NAN") {
+        return float_literal(text).map(f64::from);
+    }
+    if let Some(v) = int_literal(text) {
+        return Some(v as f64);
+    }
+    if is_hex {
+        return hex_float_f64(&text[2..]);
+    }
+    text.trim_end_matches(['l', 'L']).parse().ok()
+}
+
 /// A C99 hexadecimal floating literal after its `0x`: hex digits with an optional point,
 /// then a binary exponent `p±n` (required: without it the literal is an integer), then an
 /// optional `f`/`l` suffix. The value is mantissa·2ⁿ, computed in f64 and rounded once to
 /// f32 (exact for every mantissa of up to 53 bits).
 fn hex_float(text: &str) -> Option<f32> {
+    hex_float_f64(text).map(|v| v as f32)
+}
+
+/// [`hex_float`] in f64.
+fn hex_float_f64(text: &str) -> Option<f64> {
     let (mantissa, exponent) = text.split_once(['p', 'P'])?;
     let exponent = exponent.trim_end_matches(['f', 'F', 'l', 'L']);
     let exponent: i32 = exponent.parse().ok()?;
@@ -313,7 +336,7 @@ fn hex_float(text: &str) -> Option<f32> {
         value = value * 16.0 + f64::from(c.to_digit(16)?);
     }
     let scale = exponent.checked_sub(4 * i32::try_from(frac.len()).ok()?)?;
-    Some((value * 2f64.powi(scale)) as f32)
+    Some(value * 2f64.powi(scale))
 }
 
 /// A statement with its call name resolved, and typed argument readers.
@@ -362,6 +385,27 @@ impl Call<'_, '_> {
     }
     fn int_cast(&self, i: usize) -> bool {
         matches!(self.args.get(i), Some(Arg::Num { int_cast: true, .. }))
+    }
+    /// A number as C passes it before the parameter's conversion: a literal with an `f`
+    /// suffix is a float, any other floating literal a double, an integer literal exact.
+    pub(super) fn f64(&self, i: usize) -> Res<f64> {
+        let (neg, text) = self.num(i).ok_or_else(|| self.bad(i, "a number"))?;
+        let v = c_number(text).ok_or_else(|| self.bad(i, "a number"))?;
+        let v = if self.int_cast(i) { v.trunc() } else { v };
+        Ok(if neg { -v } else { v })
+    }
+    /// The numbers of a compound literal, as [`Call::f64`] reads each.
+    fn array_f64(&self, i: usize) -> Res<Vec<f64>> {
+        let (_, values) = self
+            .array(i)
+            .ok_or_else(|| self.bad(i, "a compound-literal array such as (GLfloat[]){…}"))?;
+        values
+            .iter()
+            .map(|(neg, text)| {
+                let v = c_number(text).ok_or_else(|| self.bad(i, "numbers in the array"))?;
+                Ok(if *neg { -v } else { v })
+            })
+            .collect()
     }
     pub(super) fn f32(&self, i: usize) -> Res<f32> {
         let (neg, text) = self.num(i).ok_or_else(|| self.bad(i, "a number"))?;
@@ -610,70 +654,17 @@ impl Folder {
     }
 
     fn call(&mut self, c: &Call) -> Res<()> {
-        if let Some(attr) = attribute(c)? {
-            if let (Some(_), Attr::TexCoord(unit, _)) = (&self.open, &attr) {
-                if usize::from(*unit) >= MAX_TEXTURE_UNITS {
-                    return Err(immediate(c, "texture unit beyond MAX_TEXTURE_UNITS"));
-                }
-            }
-            self.attribute(attr);
-            return Ok(());
+        if let Some(form) = c.entry.attrib_call() {
+            return self.family(c, form);
         }
         match c.entry {
             Entry::Begin => {
                 c.count(1)?;
-                if self.open.is_some() {
-                    return Err(immediate(c, "glBegin inside glBegin/glEnd"));
-                }
-                self.open = Some(Open {
-                    line: c.line,
-                    geometry: Geometry::new(c.enm(0)?, Vec::new()),
-                    begin: self.current(),
-                    called: [false; 2 + MAX_TEXTURE_UNITS],
-                });
+                self.begin(c, c.enm(0)?)
             }
             Entry::End => {
                 c.count(0)?;
-                let open = self
-                    .open
-                    .take()
-                    .ok_or_else(|| immediate(c, "glEnd without glBegin"))?;
-                self.end(open.geometry, open.begin);
-            }
-            Entry::Vertex2f | Entry::Vertex3f | Entry::Vertex4f => {
-                let p = match c.entry {
-                    Entry::Vertex2f => {
-                        c.count(2)?;
-                        Vec4::new(c.f32(0)?, c.f32(1)?, 0.0, 1.0)
-                    }
-                    Entry::Vertex3f => {
-                        c.count(3)?;
-                        c.vec3_args(0)?.extend(1.0)
-                    }
-                    _ => {
-                        c.count(4)?;
-                        c.vec4_args(0)?
-                    }
-                };
-                let cur = self.current();
-                let open = self
-                    .open
-                    .as_mut()
-                    .ok_or_else(|| immediate(c, "glVertex outside glBegin/glEnd"))?;
-                open.arrays_for_called();
-                let g = &mut open.geometry;
-                g.positions.push(p);
-                if let Some(v) = &mut g.colors {
-                    v.push(cur.color);
-                }
-                if let Some(v) = &mut g.normals {
-                    v.push(cur.normal);
-                }
-                for (u, t) in g.texcoords.iter_mut().enumerate() {
-                    if let Some(v) = t {
-                        v.push(cur.texcoords[u]);
-                    }
-                }
+                self.end_pair(c)
             }
             _ => {
                 if self.open.is_some() {
@@ -683,6 +674,103 @@ impl Folder {
                     ));
                 }
                 self.cmds.push(command(c)?);
+                Ok(())
+            }
+        }
+    }
+
+    /// One call of the vertex-attribute families (glVertex, glColor, glNormal, glTexCoord,
+    /// glMultiTexCoord, glRect) in any of its variants: the values are converted to the
+    /// parameter type as C does, then colours and normals of integer types are normalised
+    /// (GL 1.5 Table 2.9); missing components take GL's defaults (z = 0, w = 1, q = 1,
+    /// alpha = 1).
+    fn family(&mut self, c: &Call, form: AttribCall) -> Res<()> {
+        let from = usize::from(form.attrib == Attrib::MultiTexCoord);
+        let v = attrib_values(c, form, from)?;
+        let f = |k: usize, default: f32| v.get(k).map_or(default, |x| *x as f32);
+        let n = |k: usize, default: f32| v.get(k).map_or(default, |x| form.ty.normalized(*x));
+        let coords = Vec4::new(f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 1.0));
+        match form.attrib {
+            Attrib::Vertex => self.vertex(c, coords),
+            Attrib::Rect => {
+                if self.open.is_some() {
+                    return Err(immediate(c, "glRect inside glBegin/glEnd"));
+                }
+                // Mesa draws glRect as one GL_QUADS: (x1,y1) (x2,y1) (x2,y2) (x1,y2).
+                let (x1, y1, x2, y2) = (f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 0.0));
+                self.begin(c, Primitive::Quads)?;
+                for (x, y) in [(x1, y1), (x2, y1), (x2, y2), (x1, y2)] {
+                    self.vertex(c, Vec4::new(x, y, 0.0, 1.0))?;
+                }
+                self.end_pair(c)
+            }
+            Attrib::Color => {
+                let color = Vec4::new(n(0, 0.0), n(1, 0.0), n(2, 0.0), n(3, 1.0));
+                self.attribute_call(c, Attr::Color(color))
+            }
+            Attrib::Normal => {
+                let normal = Vec3::new(n(0, 0.0), n(1, 0.0), n(2, 1.0));
+                self.attribute_call(c, Attr::Normal(normal))
+            }
+            Attrib::TexCoord => self.attribute_call(c, Attr::TexCoord(0, coords)),
+            Attrib::MultiTexCoord => {
+                let unit = c.family(0, Family::Texture)?;
+                self.attribute_call(c, Attr::TexCoord(unit, coords))
+            }
+        }
+    }
+
+    fn attribute_call(&mut self, c: &Call, attr: Attr) -> Res<()> {
+        if let (Some(_), Attr::TexCoord(unit, _)) = (&self.open, &attr) {
+            if usize::from(*unit) >= MAX_TEXTURE_UNITS {
+                return Err(immediate(c, "texture unit beyond MAX_TEXTURE_UNITS"));
+            }
+        }
+        self.attribute(attr);
+        Ok(())
+    }
+
+    fn begin(&mut self, c: &Call, primitive: Primitive) -> Res<()> {
+        if self.open.is_some() {
+            return Err(immediate(c, "glBegin inside glBegin/glEnd"));
+        }
+        self.open = Some(Open {
+            line: c.line,
+            geometry: Geometry::new(primitive, Vec::new()),
+            begin: self.current(),
+            called: [false; 2 + MAX_TEXTURE_UNITS],
+        });
+        Ok(())
+    }
+
+    fn end_pair(&mut self, c: &Call) -> Res<()> {
+        let open = self
+            .open
+            .take()
+            .ok_or_else(|| immediate(c, "glEnd without glBegin"))?;
+        self.end(open.geometry, open.begin);
+        Ok(())
+    }
+
+    /// glVertex: a vertex with the current values of every attribute with an array.
+    fn vertex(&mut self, c: &Call, p: Vec4) -> Res<()> {
+        let cur = self.current();
+        let open = self
+            .open
+            .as_mut()
+            .ok_or_else(|| immediate(c, "glVertex outside glBegin/glEnd"))?;
+        open.arrays_for_called();
+        let g = &mut open.geometry;
+        g.positions.push(p);
+        if let Some(v) = &mut g.colors {
+            v.push(cur.color);
+        }
+        if let Some(v) = &mut g.normals {
+            v.push(cur.normal);
+        }
+        for (u, t) in g.texcoords.iter_mut().enumerate() {
+            if let Some(v) = t {
+                v.push(cur.texcoords[u]);
             }
         }
         Ok(())
@@ -798,30 +886,33 @@ fn immediate(c: &Call, rule: &'static str) -> ScriptError {
     }
 }
 
-/// glColor/glNormal/glTexCoord/glMultiTexCoord, inside or outside glBegin.
-fn attribute(c: &Call) -> Res<Option<Attr>> {
-    let tc = |from: usize, n: usize| -> Res<Vec4> {
-        c.count(from + n)?;
-        let mut v = Vec4::W;
-        for k in 0..n {
-            v[k] = c.f32(from + k)?;
+/// The values of an attribute-family call from argument `from` on: `count` scalars, or
+/// one array (two for glRect's corners) of at least that many, each converted to the
+/// parameter type as C converts an argument.
+fn attrib_values(c: &Call, form: AttribCall, from: usize) -> Res<Vec<f64>> {
+    if !form.vector {
+        c.count(from + form.count)?;
+        return (0..form.count)
+            .map(|k| c.f64(from + k).map(|v| form.ty.convert(v)))
+            .collect();
+    }
+    let arrays = if form.attrib == Attrib::Rect { 2 } else { 1 };
+    c.count(from + arrays)?;
+    let per = form.count / arrays;
+    let mut out = Vec::with_capacity(form.count);
+    for k in 0..arrays {
+        let values = c.array_f64(from + k)?;
+        if values.len() < per {
+            return Err(ScriptError::ArrayLength {
+                line: c.line,
+                call: c.name,
+                expected: per,
+                found: values.len(),
+            });
         }
-        Ok(v)
-    };
-    Ok(Some(match c.entry {
-        Entry::Color3f => Attr::Color(tc(0, 3)?.truncate().extend(1.0)),
-        Entry::Color4f => Attr::Color(tc(0, 4)?),
-        Entry::Normal3f => Attr::Normal(tc(0, 3)?.truncate()),
-        Entry::TexCoord1f => Attr::TexCoord(0, tc(0, 1)?),
-        Entry::TexCoord2f => Attr::TexCoord(0, tc(0, 2)?),
-        Entry::TexCoord3f => Attr::TexCoord(0, tc(0, 3)?),
-        Entry::TexCoord4f => Attr::TexCoord(0, tc(0, 4)?),
-        Entry::MultiTexCoord1f => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 1)?),
-        Entry::MultiTexCoord2f => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 2)?),
-        Entry::MultiTexCoord3f => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 3)?),
-        Entry::MultiTexCoord4f => Attr::TexCoord(c.family(0, Family::Texture)?, tc(1, 4)?),
-        _ => return Ok(None),
-    }))
+        out.extend(values[..per].iter().map(|v| form.ty.convert(*v)));
+    }
+    Ok(out)
 }
 
 /// Every call that is not immediate mode.

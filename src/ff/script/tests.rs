@@ -779,3 +779,79 @@ mod c_as_written {
         assert_eq!(lines, vec![1, 5, 6]);
     }
 }
+
+/// Every variant of the vertex-attribute families and the double-precision matrix calls
+/// reads as its float spelling with GL's conversion applied.
+mod variants {
+    use super::*;
+
+    fn same(written: &str, plain: &str) {
+        assert_eq!(
+            parse(written).unwrap_or_else(|e| panic!("{written:?}: {e}")),
+            parse(plain).unwrap(),
+            "{written:?}"
+        );
+    }
+
+    #[test]
+    fn integer_colours_are_normalised() {
+        // Unsigned c/(2ⁿ − 1); signed (2c + 1)/(2ⁿ − 1) (GL 1.5 Table 2.9).
+        let cmds = parse("glColor3ub(255, 0, 51);").unwrap();
+        assert_eq!(cmds, vec![Command::Color(Vec4::new(1.0, 0.0, 0.2, 1.0))]);
+        let cmds = parse("glColor4bv((GLbyte[]){127, -128, 0, 127});").unwrap();
+        assert_eq!(
+            cmds,
+            vec![Command::Color(Vec4::new(1.0, -1.0, 1.0 / 255.0, 1.0))]
+        );
+        let cmds = parse("glColor3us(65535, 0, 0);").unwrap();
+        assert_eq!(cmds, vec![Command::Color(Vec4::new(1.0, 0.0, 0.0, 1.0))]);
+        // C converts 256 to GLubyte as 0 before GL sees it.
+        same("glColor3ub(256, 0, 0);", "glColor3f(0, 0, 0);");
+        same("glColor3d(0.5, 0.25, 1.0);", "glColor3f(0.5f, 0.25f, 1);");
+        same(
+            "glColor4fv((GLfloat[]){1, 0, 0, 0.5f});",
+            "glColor4f(1, 0, 0, 0.5f);",
+        );
+    }
+
+    #[test]
+    fn vertices_normals_and_texcoords_in_every_type() {
+        let plain = "glBegin(GL_TRIANGLES);\nglNormal3f(0, 0, 1);\nglTexCoord2f(1, 2);\nglMultiTexCoord2f(GL_TEXTURE1, 3, 4);\nglVertex3f(1, 2, 0);\nglVertex4f(1, 2, 3, 1);\nglVertex3f(-1, 0.5f, 2);\nglEnd();";
+        same(
+            "glBegin(GL_TRIANGLES);\nglNormal3d(0, 0, 1);\nglTexCoord2s(1, 2);\nglMultiTexCoord2fARB(GL_TEXTURE1_ARB, 3, 4);\nglVertex2i(1, 2);\nglVertex3dv((GLdouble[]){1, 2, 3});\nglVertex3fv((GLfloat[]){-1, 0.5f, 2});\nglEnd();",
+            plain,
+        );
+        let b = 1.0 / 255.0;
+        assert_eq!(
+            parse("glNormal3b(0, 0, 127);").unwrap(),
+            vec![Command::Normal(Vec3::new(b, b, 1.0))]
+        );
+    }
+
+    #[test]
+    fn double_matrix_calls() {
+        same(
+            "glTranslated(1, 2, 3);\nglRotated(90, 0, 0, 1);\nglScaled(2, 2, 2);\nglLoadMatrixd((GLdouble[]){1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1});",
+            "glTranslatef(1, 2, 3);\nglRotatef(90, 0, 0, 1);\nglScalef(2, 2, 2);\nglLoadMatrixf((GLfloat[]){1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1});",
+        );
+        same(
+            "glActiveTextureARB(GL_TEXTURE1_ARB);\nglTexGenf(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);\nglTexGendv(GL_S, GL_EYE_PLANE, (GLdouble[]){1, 0, 0, 0});",
+            "glActiveTexture(GL_TEXTURE1);\nglTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);\nglTexGenfv(GL_S, GL_EYE_PLANE, (GLfloat[]){1, 0, 0, 0});",
+        );
+    }
+
+    #[test]
+    fn rect_is_one_quad() {
+        let quad = "glBegin(GL_QUADS);\nglVertex2f(0, 1);\nglVertex2f(2, 1);\nglVertex2f(2, 3);\nglVertex2f(0, 3);\nglEnd();";
+        same("glRectf(0, 1, 2, 3);", quad);
+        same("glRectiv((GLint[]){0, 1}, (GLint[]){2, 3});", quad);
+        let e = parse("glBegin(GL_QUADS);\nglRectf(0, 0, 1, 1);").unwrap_err();
+        assert!(matches!(e, ScriptError::Immediate { line: 2, .. }), "{e}");
+    }
+
+    #[test]
+    fn short_arrays_are_refused() {
+        let e = parse("glColor4fv((GLfloat[]){1, 0, 0});").unwrap_err();
+        assert!(matches!(e, ScriptError::ArrayLength { .. }), "{e}");
+    }
+}
