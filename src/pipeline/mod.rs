@@ -34,10 +34,7 @@ pub fn profile(kind: PipelineKind) -> crate::gpu::Profile {
 
 /// Creates the pipeline of `kind` on `ctx` (whose profile must be `profile(kind)`).
 pub fn create(kind: PipelineKind, ctx: &GpuContext) -> Result<Box<dyn Pipeline>, PipelineError> {
-    match kind {
-        PipelineKind::Emulate => Ok(Box::new(emulate::EmulatedPipeline::new(ctx)?)),
-        PipelineKind::Native => Ok(Box::new(native::NativePipeline::new(ctx)?)),
-    }
+    create_with(kind, ctx, crate::vocab::Precision::Float)
 }
 
 /// [`create`] with the emulated path computing in `precision` (the native path has only
