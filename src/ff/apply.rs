@@ -331,7 +331,11 @@ impl FixedState {
                 bytes: bytes.clone(),
             }),
         };
-        self.bound_mut(t.target)?.set_level(t.level, level);
+        let tex = self.bound_mut(t.target)?;
+        tex.set_level(t.level, level);
+        if t.level == 0 {
+            tex.base_level_changed();
+        }
         Ok(())
     }
 
@@ -377,6 +381,9 @@ impl FixedState {
             // Mixed formats or unknown texels: only the GPU copy is authoritative.
             _ => None,
         };
+        if t.level == 0 {
+            tex.base_level_changed();
+        }
         Ok(())
     }
 
@@ -388,8 +395,11 @@ impl FixedState {
             height: c.height,
             data: None,
         };
-        self.bound_mut(TextureTarget::Texture2D)?
-            .set_level(c.level, level);
+        let tex = self.bound_mut(TextureTarget::Texture2D)?;
+        tex.set_level(c.level, level);
+        if c.level == 0 {
+            tex.base_level_changed();
+        }
         Ok(())
     }
 
