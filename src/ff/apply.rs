@@ -64,8 +64,8 @@ impl FixedState {
             Command::Viewport(v) => self.viewport = check_viewport(*v)?,
             Command::DepthRange { near, far } => {
                 self.depth_range = DepthRange {
-                    near: near.clamp(0.0, 1.0),
-                    far: far.clamp(0.0, 1.0),
+                    near: unit_clamp(*near),
+                    far: unit_clamp(*far),
                 }
             }
             Command::Enable(c) => self.set_capability(*c, true)?,
@@ -212,8 +212,10 @@ impl FixedState {
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
             Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
             Command::Clear(_) => {}
+            // Clamped to [0, 1]: ±∞ → 1, 0; NaN → 0 (glam's clamp is max then min, and
+            // Rust's max drops a NaN). Mesa measured alike (`tests/fidelity_nonfinite.rs`).
             Command::ClearColor(c) => self.clear.color = c.clamp(Vec4::ZERO, Vec4::ONE),
-            Command::ClearDepth(d) => self.clear.depth = d.clamp(0.0, 1.0),
+            Command::ClearDepth(d) => self.clear.depth = unit_clamp(*d),
             Command::ClearStencil(s) => self.clear.stencil = *s,
             Command::ReadPixels(r) => check_read_pixels(r)?,
             Command::Draw(g) => self.draw(g)?,
@@ -420,6 +422,14 @@ impl FixedState {
         }
         Ok(())
     }
+}
+
+/// A depth value clamped to [0, 1] as glDepthRange and glClearDepth do (GL 1.5 §2.11.1,
+/// §4.2.3); NaN → 0, like the colour clamps (glam's `clamp` is `max` then `min`, and Rust's
+/// `max` drops a NaN operand). Mesa 22.3.6 llvmpipe measured alike: glDepthRange(NaN, 1)
+/// puts z = 0 at window depth 0.5, as near 0 does (`tests/fidelity_nonfinite.rs`).
+fn unit_clamp(v: f32) -> f32 {
+    v.max(0.0).min(1.0)
 }
 
 fn check_unit(unit: u8) -> GlResult<usize> {
