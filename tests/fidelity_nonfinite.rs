@@ -227,7 +227,7 @@ glEnd();
     },
     // glTexGen. A NaN or infinite plane makes s NaN (∞·0 in the dot product, or the eye
     // plane's ∞ times the inverse modelview's zeros): measured native, the REPEAT lookup
-    // reads texel 0 (red). The emulated path clamps the projected coordinate to ±1e6
+    // reads texel 0 (red). The emulated path makes a NaN coordinate 0
     // (`shadergen::fragment::projected`) and agrees.
     Case {
         name: "texgen_object_plane_nan",
@@ -245,6 +245,27 @@ glEnd();
             format!(
                 "{TEXTURE}glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);\nglTexGenfv(GL_S, GL_EYE_PLANE, (GLfloat[]){{INFINITY, 0, 0, 0}});\nglEnable(GL_TEXTURE_GEN_S);\n{}",
                 quad(0.0)
+            )
+        },
+        pixel: Some([255, 0, 0, 255]),
+    },
+    // The same NaN coordinate under CLAMP_TO_EDGE, and a NaN given by glTexCoord itself:
+    // measured native, texel 0 (red) in both.
+    Case {
+        name: "texgen_object_plane_nan_clamp_to_edge",
+        script: || {
+            format!(
+                "{TEXTURE}glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);\nglTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);\nglTexGenfv(GL_S, GL_OBJECT_PLANE, (GLfloat[]){{NAN, 0, 0, 0}});\nglEnable(GL_TEXTURE_GEN_S);\n{}",
+                quad(0.0)
+            )
+        },
+        pixel: Some([255, 0, 0, 255]),
+    },
+    Case {
+        name: "tex_coord_nan",
+        script: || {
+            format!(
+                "{TEXTURE}glBegin(GL_QUADS);\nglTexCoord2f(NAN, 0); glVertex2f(0, 0);\nglTexCoord2f(NAN, 0); glVertex2f({W}, 0);\nglTexCoord2f(NAN, 1); glVertex2f({W}, {H});\nglTexCoord2f(NAN, 1); glVertex2f(0, {H});\nglEnd();\n"
             )
         },
         pixel: Some([255, 0, 0, 255]),
@@ -477,6 +498,8 @@ named_cases!(
     material_emission_negative_infinity,
     texgen_object_plane_nan,
     texgen_eye_plane_infinity,
+    texgen_object_plane_nan_clamp_to_edge,
+    tex_coord_nan,
     translate_nan,
     scale_infinity,
     clear_color_nonfinite,
