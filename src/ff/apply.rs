@@ -426,10 +426,15 @@ impl FixedState {
 
 /// A depth value clamped to [0, 1] as glDepthRange and glClearDepth do (GL 1.5 §2.11.1,
 /// §4.2.3); NaN → 0, like the colour clamps (glam's `clamp` is `max` then `min`, and Rust's
-/// `max` drops a NaN operand). Mesa 22.3.6 llvmpipe measured alike: glDepthRange(NaN, 1)
-/// puts z = 0 at window depth 0.5, as near 0 does (`tests/fidelity_nonfinite.rs`).
+/// `max` drops a NaN operand; `f32::clamp` would keep the NaN). Mesa 22.3.6 llvmpipe
+/// measured alike: glDepthRange(NaN, 1) puts z = 0 at window depth 0.5, as near 0 does
+/// (`tests/fidelity_nonfinite.rs`).
 fn unit_clamp(v: f32) -> f32 {
-    v.max(0.0).min(1.0)
+    if v.is_nan() {
+        0.0
+    } else {
+        v.clamp(0.0, 1.0)
+    }
 }
 
 fn check_unit(unit: u8) -> GlResult<usize> {

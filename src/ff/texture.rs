@@ -563,12 +563,9 @@ mod tests {
         truncated.pop();
         let mut extra = chain(4, 4);
         extra.extend([None, level(Luminance8, 5, 5)]);
-        let cases: Vec<(
-            &str,
-            Filter,
-            Vec<Option<TexLevel>>,
-            Result<TexFormat, Incomplete>,
-        )> = vec![
+        type Case = (&'static str, Filter, Vec<Option<TexLevel>>, Verdict);
+        type Verdict = Result<TexFormat, Incomplete>;
+        let cases: Vec<Case> = vec![
             ("no image", Nearest, vec![], Err(Incomplete::NoBaseLevel)),
             (
                 "no image, mipmaps",
