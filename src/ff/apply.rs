@@ -64,8 +64,8 @@ impl FixedState {
             Command::Viewport(v) => self.viewport = check_viewport(*v)?,
             Command::DepthRange { near, far } => {
                 self.depth_range = DepthRange {
-                    near: near.clamp(0.0, 1.0),
-                    far: far.clamp(0.0, 1.0),
+                    near: unit_clamp(*near),
+                    far: unit_clamp(*far),
                 }
             }
             Command::Enable(c) => self.set_capability(*c, true)?,
@@ -212,8 +212,10 @@ impl FixedState {
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
             Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
             Command::Clear(_) => {}
+            // Clamped to [0, 1]: ±∞ → 1, 0; NaN → 0 (glam's clamp is max then min, and
+            // Rust's max drops a NaN). Mesa measured alike (`tests/fidelity_nonfinite.rs`).
             Command::ClearColor(c) => self.clear.color = c.clamp(Vec4::ZERO, Vec4::ONE),
-            Command::ClearDepth(d) => self.clear.depth = d.clamp(0.0, 1.0),
+            Command::ClearDepth(d) => self.clear.depth = unit_clamp(*d),
             Command::ClearStencil(s) => self.clear.stencil = *s,
             Command::ReadPixels(r) => check_read_pixels(r)?,
             Command::Draw(g) => self.draw(g)?,
@@ -331,7 +333,11 @@ impl FixedState {
                 bytes: bytes.clone(),
             }),
         };
-        self.bound_mut(t.target)?.set_level(t.level, level);
+        let tex = self.bound_mut(t.target)?;
+        tex.set_level(t.level, level);
+        if t.level == 0 {
+            tex.base_level_changed();
+        }
         Ok(())
     }
 
@@ -377,6 +383,9 @@ impl FixedState {
             // Mixed formats or unknown texels: only the GPU copy is authoritative.
             _ => None,
         };
+        if t.level == 0 {
+            tex.base_level_changed();
+        }
         Ok(())
     }
 
@@ -388,8 +397,11 @@ impl FixedState {
             height: c.height,
             data: None,
         };
-        self.bound_mut(TextureTarget::Texture2D)?
-            .set_level(c.level, level);
+        let tex = self.bound_mut(TextureTarget::Texture2D)?;
+        tex.set_level(c.level, level);
+        if c.level == 0 {
+            tex.base_level_changed();
+        }
         Ok(())
     }
 
@@ -409,6 +421,19 @@ impl FixedState {
             self.set_color(c)?;
         }
         Ok(())
+    }
+}
+
+/// A depth value clamped to [0, 1] as glDepthRange and glClearDepth do (GL 1.5 §2.11.1,
+/// §4.2.3); NaN → 0, like the colour clamps (glam's `clamp` is `max` then `min`, and Rust's
+/// `max` drops a NaN operand; `f32::clamp` would keep the NaN). Mesa 22.3.6 llvmpipe
+/// measured alike: glDepthRange(NaN, 1) puts z = 0 at window depth 0.5, as near 0 does
+/// (`tests/fidelity_nonfinite.rs`).
+fn unit_clamp(v: f32) -> f32 {
+    if v.is_nan() {
+        0.0
+    } else {
+        v.clamp(0.0, 1.0)
     }
 }
 

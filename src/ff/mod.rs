@@ -60,6 +60,6 @@ pub use texenv::{
 };
 pub use texgen::{TexCoord, TexGen, TexGenMode, TexGenParam};
 pub use texture::{
-    BaseFormat, CompareMode, DepthTextureMode, Filter, PixelData, PixelFormat, PixelType,
-    TexFormat, TexLevel, TexParam, TexParams, TextureObject, TextureTarget, Wrap,
+    BaseFormat, CompareMode, DepthTextureMode, Filter, Incomplete, PixelData, PixelFormat,
+    PixelType, TexFormat, TexLevel, TexParam, TexParams, TextureObject, TextureTarget, Wrap,
 };

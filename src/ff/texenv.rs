@@ -232,6 +232,8 @@ impl TexEnv {
         };
         match param {
             TexEnvParam::Mode(m) => self.mode = m,
+            // ±∞ → 1, 0; NaN → 0 (glam's clamp is max then min, and Rust's max drops a NaN);
+            // Mesa's native path draws the same (`tests/fidelity_nonfinite.rs`).
             TexEnvParam::Color(c) => self.color = c.clamp(Vec4::ZERO, Vec4::ONE),
             TexEnvParam::CombineRgb(f) => self.rgb.func = f,
             TexEnvParam::CombineAlpha(CombineFunc::Dot3Rgb | CombineFunc::Dot3Rgba) => {

@@ -275,6 +275,25 @@ pub struct TexLevel {
     pub data: Option<PixelData>,
 }
 
+/// Why a texture is incomplete (GL 1.5 §3.8.10): the first rule it breaks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Incomplete {
+    /// Level 0 was never specified.
+    NoBaseLevel,
+    /// Level 0 has a zero width or height.
+    EmptyBaseLevel,
+    /// A mipmap filter, and this level of the chain is not specified.
+    MissingLevel(i32),
+    /// A mipmap filter, and this level is not half the previous one (rounded down, min 1).
+    WrongSize {
+        level: i32,
+        expected: (i32, i32),
+        found: (i32, i32),
+    },
+    /// A mipmap filter, and this level's internal format is not the base level's.
+    FormatDiffers(i32),
+}
+
 /// A texture object: what glBindTexture names.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TextureObject {
@@ -303,6 +322,90 @@ impl TextureObject {
     /// The base level's internal format, if specified.
     pub fn format(&self) -> Option<TexFormat> {
         self.level(0).map(|l| l.internal_format)
+    }
+
+    /// Texture completeness (GL 1.5 §3.8.10), with BASE_LEVEL 0 and MAX_LEVEL 1000 (the
+    /// model has neither parameter, so both keep their GL defaults):
+    /// - the base level (0) is specified with a non-zero width and height (Mesa:
+    ///   "texture width or height = 0"); a default object never given an image is
+    ///   incomplete;
+    /// - with a non-mipmap MIN_FILTER (NEAREST, LINEAR) that is all;
+    /// - with a mipmap MIN_FILTER, levels 1..=p are specified too, p = log2 of the larger
+    ///   base dimension, each level max(1, ⌊previous / 2⌋) in each dimension (so the last is
+    ///   1×1; a 1D texture halves its width only, its height stays 1), all in the base
+    ///   level's internal format and border. Levels after p are ignored.
+    ///
+    /// Borders: the model accepts border 0 only (`check_image_size`), so they always agree.
+    /// Cube maps are not in the model, so cube completeness is not either.
+    ///
+    /// An incomplete texture disables its unit: the fragment gets the colour the unit
+    /// receives, as if texturing were off for it (§3.8.15) — Mesa's native path does so,
+    /// and the emulated path drops the unit from the `ShaderKey`.
+    pub fn completeness(&self) -> Result<TexFormat, Incomplete> {
+        let base = self.level(0).ok_or(Incomplete::NoBaseLevel)?;
+        if base.width <= 0 || base.height <= 0 {
+            return Err(Incomplete::EmptyBaseLevel);
+        }
+        if !self.params.min_filter.uses_mipmaps() {
+            return Ok(base.internal_format);
+        }
+        let (mut w, mut h) = (base.width, base.height);
+        let mut level = 0;
+        while w > 1 || h > 1 {
+            level += 1;
+            w = (w / 2).max(1);
+            h = (h / 2).max(1);
+            let l = self.level(level).ok_or(Incomplete::MissingLevel(level))?;
+            if (l.width, l.height) != (w, h) {
+                return Err(Incomplete::WrongSize {
+                    level,
+                    expected: (w, h),
+                    found: (l.width, l.height),
+                });
+            }
+            if l.internal_format != base.internal_format {
+                return Err(Incomplete::FormatDiffers(level));
+            }
+        }
+        Ok(base.internal_format)
+    }
+
+    /// Whether the texture is complete (see [`TextureObject::completeness`]).
+    pub fn is_complete(&self) -> bool {
+        self.completeness().is_ok()
+    }
+
+    /// GENERATE_MIPMAP (GL 1.4 §3.8.8): after the base level changes (TexImage,
+    /// CopyTexImage, TexSubImage) while the parameter is TRUE, levels 1..=p are replaced by
+    /// images derived from it — halved sizes down to 1×1, the base internal format. The
+    /// texels are the GL's to compute (a box filter is typical), so the model records the
+    /// levels with unknown texels.
+    pub(crate) fn base_level_changed(&mut self) {
+        if !self.params.generate_mipmap {
+            return;
+        }
+        let Some(base) = self.level(0) else {
+            return;
+        };
+        let (format, mut w, mut h) = (base.internal_format, base.width, base.height);
+        if w <= 0 || h <= 0 {
+            return;
+        }
+        let mut level = 0;
+        while w > 1 || h > 1 {
+            level += 1;
+            w = (w / 2).max(1);
+            h = (h / 2).max(1);
+            self.set_level(
+                level,
+                TexLevel {
+                    internal_format: format,
+                    width: w,
+                    height: h,
+                    data: None,
+                },
+            );
+        }
     }
 
     pub(crate) fn set_level(&mut self, level: i32, image: TexLevel) {
@@ -417,6 +520,174 @@ mod tests {
         assert!(
             check_format_pair(TexFormat::Luminance8Alpha8, PixelFormat::LuminanceAlpha).is_ok()
         );
+    }
+
+    fn level(format: TexFormat, width: i32, height: i32) -> Option<TexLevel> {
+        Some(TexLevel {
+            internal_format: format,
+            width,
+            height,
+            data: None,
+        })
+    }
+
+    fn object(filter: Filter, levels: Vec<Option<TexLevel>>) -> TextureObject {
+        let mut t = TextureObject::new(TextureTarget::Texture2D);
+        t.params.min_filter = filter;
+        t.levels = levels;
+        t
+    }
+
+    /// GL 1.5 §3.8.10, case by case: (name, MIN_FILTER, levels, verdict).
+    #[test]
+    fn completeness_rules() {
+        use Filter::*;
+        use TexFormat::{Luminance8, Rgba8};
+        let chain = |w: i32, h: i32| {
+            let mut v = vec![level(Rgba8, w, h)];
+            let (mut w, mut h) = (w, h);
+            while w > 1 || h > 1 {
+                w = (w / 2).max(1);
+                h = (h / 2).max(1);
+                v.push(level(Rgba8, w, h));
+            }
+            v
+        };
+        let mut wrong_size = chain(8, 8);
+        wrong_size[2] = level(Rgba8, 3, 2);
+        let mut missing = chain(8, 8);
+        missing[1] = None;
+        let mut other_format = chain(8, 8);
+        other_format[3] = level(Luminance8, 1, 1);
+        let mut truncated = chain(8, 8);
+        truncated.pop();
+        let mut extra = chain(4, 4);
+        extra.extend([None, level(Luminance8, 5, 5)]);
+        type Case = (&'static str, Filter, Vec<Option<TexLevel>>, Verdict);
+        type Verdict = Result<TexFormat, Incomplete>;
+        let cases: Vec<Case> = vec![
+            ("no image", Nearest, vec![], Err(Incomplete::NoBaseLevel)),
+            (
+                "no image, mipmaps",
+                NearestMipmapLinear,
+                vec![],
+                Err(Incomplete::NoBaseLevel),
+            ),
+            (
+                "zero width",
+                Linear,
+                vec![level(Rgba8, 0, 4)],
+                Err(Incomplete::EmptyBaseLevel),
+            ),
+            (
+                "level 0, default filter",
+                NearestMipmapLinear,
+                vec![level(Rgba8, 8, 8)],
+                Err(Incomplete::MissingLevel(1)),
+            ),
+            (
+                "level 0, LINEAR",
+                Linear,
+                vec![level(Rgba8, 8, 8)],
+                Ok(Rgba8),
+            ),
+            (
+                "level 0, NEAREST, holes after",
+                Nearest,
+                vec![level(Rgba8, 8, 8), None, level(Luminance8, 9, 9)],
+                Ok(Rgba8),
+            ),
+            (
+                "1×1 alone is a full chain",
+                LinearMipmapLinear,
+                vec![level(Rgba8, 1, 1)],
+                Ok(Rgba8),
+            ),
+            (
+                "full chain 8×8",
+                NearestMipmapLinear,
+                chain(8, 8),
+                Ok(Rgba8),
+            ),
+            (
+                "full chain 8×2 (height stops at 1)",
+                LinearMipmapNearest,
+                chain(8, 2),
+                Ok(Rgba8),
+            ),
+            (
+                "full chain 5×3 (rounded down)",
+                NearestMipmapNearest,
+                chain(5, 3),
+                Ok(Rgba8),
+            ),
+            (
+                "wrong size",
+                NearestMipmapLinear,
+                wrong_size,
+                Err(Incomplete::WrongSize {
+                    level: 2,
+                    expected: (2, 2),
+                    found: (3, 2),
+                }),
+            ),
+            (
+                "missing level",
+                NearestMipmapLinear,
+                missing,
+                Err(Incomplete::MissingLevel(1)),
+            ),
+            (
+                "format differs",
+                NearestMipmapLinear,
+                other_format,
+                Err(Incomplete::FormatDiffers(3)),
+            ),
+            (
+                "stops before 1×1",
+                NearestMipmapLinear,
+                truncated,
+                Err(Incomplete::MissingLevel(3)),
+            ),
+            (
+                "levels after p are ignored",
+                NearestMipmapLinear,
+                extra,
+                Ok(Rgba8),
+            ),
+        ];
+        for (name, filter, levels, verdict) in cases {
+            assert_eq!(object(filter, levels).completeness(), verdict, "{name}");
+        }
+    }
+
+    /// A 1D texture halves its width only: 8×1, 4×1, 2×1, 1×1.
+    #[test]
+    fn one_d_chain() {
+        let mut t = TextureObject::new(TextureTarget::Texture1D);
+        t.levels = [8, 4, 2, 1].map(|w| level(TexFormat::Rgb8, w, 1)).to_vec();
+        assert!(t.is_complete());
+        t.levels[2] = level(TexFormat::Rgb8, 2, 2);
+        assert!(!t.is_complete());
+    }
+
+    /// GENERATE_MIPMAP: a base level set while it is TRUE brings the whole chain.
+    #[test]
+    fn generated_mipmaps_complete_the_chain() {
+        let mut t = object(Filter::LinearMipmapLinear, vec![]);
+        t.set_level(0, level(TexFormat::Rgba8, 6, 3).unwrap());
+        t.base_level_changed();
+        assert_eq!(t.completeness(), Err(Incomplete::MissingLevel(1)));
+        t.params.generate_mipmap = true;
+        t.base_level_changed();
+        assert_eq!(t.completeness(), Ok(TexFormat::Rgba8));
+        let sizes: Vec<_> = t
+            .levels
+            .iter()
+            .flatten()
+            .map(|l| (l.width, l.height))
+            .collect();
+        assert_eq!(sizes, [(6, 3), (3, 1), (1, 1)]);
     }
 
     #[test]

@@ -237,14 +237,17 @@ impl ShaderKey {
     }
 }
 
-/// Units that texture: enabled, with a complete level-0 image (GL 1.5 §3.8.10: an incomplete
-/// texture disables the unit).
+/// Units that texture: enabled, with a complete texture (GL 1.5 §3.8.10, the rules in
+/// `TextureObject::completeness`). An incomplete texture disables its unit (§3.8.15): the
+/// unit leaves the key, so the program is the one with the unit off — what Mesa's native
+/// path does (measured: level 0 alone under the default NEAREST_MIPMAP_LINEAR draws the
+/// untextured colour, `tests/fidelity_completeness.rs`).
 fn enabled_units(state: &FixedState) -> Vec<(usize, TextureTarget, TexelKey)> {
     (0..MAX_TEXTURE_UNITS)
         .filter_map(|unit| {
             let target = state.units[unit].enabled_target()?;
             let texture = state.enabled_texture(unit)?;
-            let format = texture.level(0).map(|l| l.internal_format)?;
+            let format = texture.completeness().ok()?;
             let texel = texel_key(
                 format,
                 texture.params.compare_mode,

@@ -107,7 +107,8 @@ fn image(target: TextureTarget, format: TexFormat, pixels: PixelFormat, size: i3
     })
 }
 
-/// Texture `name` bound to TEXTURE_2D of the active unit with a 2×2 level 0, enabled.
+/// Texture `name` bound to TEXTURE_2D of the active unit with a 2×2 level 0 and MIN_FILTER
+/// NEAREST (so it is complete without mipmaps), enabled.
 fn texture(name: u32, format: TexFormat, pixels: PixelFormat) -> Vec<Command> {
     vec![
         Command::BindTexture {
@@ -115,6 +116,7 @@ fn texture(name: u32, format: TexFormat, pixels: PixelFormat) -> Vec<Command> {
             name,
         },
         image(TextureTarget::Texture2D, format, pixels, 2),
+        tex_param(TexParam::MinFilter(Filter::Nearest)),
         Command::Enable(Capability::Texture2D),
     ]
 }
@@ -508,6 +510,24 @@ fn same_code() -> Vec<Case> {
             ],
         ),
         same(
+            "a unit with level 0 alone under the default mipmap filter (incomplete: off)",
+            none(),
+            vec![
+                Command::ActiveTexture(3),
+                Command::BindTexture {
+                    target: TextureTarget::Texture2D,
+                    name: 9,
+                },
+                image(
+                    TextureTarget::Texture2D,
+                    TexFormat::Rgba8,
+                    PixelFormat::Rgba,
+                    4,
+                ),
+                Command::Enable(Capability::Texture2D),
+            ],
+        ),
+        same(
             "texture filters, wraps, border and image size",
             textured(),
             vec![
@@ -653,6 +673,10 @@ fn changed_code() -> Vec<Case> {
                     PixelFormat::Rgb,
                     2,
                 ),
+                Command::TexParameter {
+                    target: TextureTarget::Texture1D,
+                    param: TexParam::MinFilter(Filter::Nearest),
+                },
                 Command::Enable(Capability::Texture1D),
             ],
         ),

@@ -74,6 +74,7 @@ impl Textures {
         let gl_t = self.edit(gl, (target, name))?;
         upload(gl, gl_t, level, l);
         apply_params(gl, gl_t, object);
+        generate_mipmap(gl, gl_t, object, level);
         self.uploads += 1;
         Ok(())
     }
@@ -101,6 +102,9 @@ impl Textures {
                 conv::value(t.ty),
                 glow::PixelUnpackData::Slice(Some(&t.data[..])),
             );
+        }
+        if let Some(object) = state.texture(target, name) {
+            generate_mipmap(gl, gl_t, object, t.level);
         }
         self.uploads += 1;
         Ok(())
@@ -131,6 +135,7 @@ impl Textures {
         }
         if let Some(object) = state.texture(target, name) {
             apply_params(gl, gl_t, object);
+            generate_mipmap(gl, gl_t, object, copy.level);
         }
         self.uploads += 1;
         Ok(())
@@ -225,10 +230,19 @@ fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel) {
     }
 }
 
-/// Every parameter, plus the swizzle of the level-0 format and the mipmap range: a texture
-/// with only level 0 is complete whatever its filter (GL 1.x would call a mipmap filter
-/// without mipmaps incomplete; MAX_LEVEL is set to the highest level the model holds so
-/// both agree).
+/// GENERATE_MIPMAP (GL 1.4): a change to the base level rebuilds levels 1..=p. The model
+/// has recorded those levels (`TextureObject::base_level_changed`); glGenerateMipmap makes
+/// their texels, with MAX_LEVEL already covering them.
+fn generate_mipmap(gl: &glow::Context, target: u32, object: &TextureObject, level: i32) {
+    if level == 0 && object.params.generate_mipmap && object.level(0).is_some() {
+        unsafe { gl.generate_mipmap(target) };
+    }
+}
+
+/// Every parameter, plus the swizzle of the level-0 format and the mipmap range. MAX_LEVEL
+/// is the highest level the model holds: a texture the model calls complete
+/// (`TextureObject::completeness`) is complete for GL too; one it calls incomplete is
+/// never sampled (its unit leaves the key), whatever GL would make of it.
 fn apply_params(gl: &glow::Context, target: u32, object: &TextureObject) {
     let p = &object.params;
     let max_level = object.levels.iter().rposition(Option::is_some).unwrap_or(0) as i32;

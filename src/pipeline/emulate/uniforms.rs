@@ -207,11 +207,25 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
                 .enabled_texture(u as usize)
                 .map_or(0.0, |t| t.params.compare_fail_value),
         ),
-        UniformSource::AlphaRef => Float(state.alpha_test.value.reference),
+        UniformSource::AlphaRef => Float(alpha_reference(state.alpha_test.value.reference)),
         UniformSource::CombinerConstant(i) => {
             Vec4(state.register_combiners.value.constant_color[usize::from(i & 1)])
         }
         UniformSource::Sampler(u) => Int(i32::from(u)),
         UniformSource::PointSize => Float(state.point_size),
+    }
+}
+
+/// glAlphaFunc's reference as the shader compares it. GL clamps it to [0, 1] (the model does
+/// when it is set, so ±∞ are 1 and 0 already); a NaN reference survives that clamp and GLSL
+/// would leave its conversion undefined. Rule: NaN compares as 1 — what Mesa 22.3.6
+/// llvmpipe's native path does (measured with alpha 0.25 and 1 under all eight functions,
+/// `tests/fidelity_nonfinite.rs`: GREATER passes nothing, LESS and NOTEQUAL pass 0.25,
+/// EQUAL passes 1, exactly as with the reference 1).
+fn alpha_reference(reference: f32) -> f32 {
+    if reference.is_nan() {
+        1.0
+    } else {
+        reference
     }
 }

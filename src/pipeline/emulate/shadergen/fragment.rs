@@ -107,11 +107,14 @@ fn has_alpha(base: BaseFormat) -> bool {
 }
 
 /// The projected coordinates divide by q. Rule for q ≈ 0: |q| is raised to 1e-20 (keeping
-/// its sign) and the quotient clamped to ±1e6, so no NaN or Inf reaches a lookup; the
-/// wrap mode then decides the texel, as hardware of the era did with huge coordinates.
+/// its sign) and the quotient clamped to ±1e6, so no Inf reaches a lookup; the wrap mode
+/// then decides the texel, as hardware of the era did with huge coordinates. A NaN
+/// coordinate (a NaN or infinite texgen plane, matrix or glTexCoord) becomes 0, explicitly
+/// (GLSL's clamp of NaN is undefined): Mesa 22.3.6 llvmpipe's native path reads texel 0
+/// under REPEAT for it (measured, `tests/fidelity_nonfinite.rs`).
 fn projected(w: &mut GlslWriter) {
     w.declare(
-        "vec4 project(vec4 tc) {\n    float q = (abs(tc.w) < 1e-20) ? ((tc.w < 0.0) ? -1e-20 : 1e-20) : tc.w;\n    return vec4(clamp(tc.xyz / q, -1e6, 1e6), q);\n}",
+        "vec4 project(vec4 tc) {\n    float q = (abs(tc.w) < 1e-20) ? ((tc.w < 0.0) ? -1e-20 : 1e-20) : tc.w;\n    vec3 c = tc.xyz / q;\n    return vec4(mix(clamp(c, -1e6, 1e6), vec3(0.0), isnan(c)), q);\n}",
     );
 }
 

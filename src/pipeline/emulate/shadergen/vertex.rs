@@ -60,7 +60,10 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
             };
             emit_lighting(&mut w, lighting, &inputs, flat);
         }
-        None => w.line(format!("v_color = {color};")),
+        None => {
+            w.declare(SATURATE);
+            w.line(format!("v_color = saturate({color});"));
+        }
     }
     for unit in &key.units {
         emit_texcoords(&mut w, &mut eye, key, unit);
@@ -70,6 +73,21 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     }
     w
 }
+
+/// The vertex colour clamp of GL 1.x (§2.13.6): every colour leaving the vertex stage is
+/// clamped to [0, 1] before rasterisation, so +∞ (and 1e39, +∞ as a GLfloat) becomes 1 and
+/// −∞ becomes 0. NaN, which the spec leaves undefined, follows Mesa 22.3.6 llvmpipe's native
+/// path (measured, `tests/fidelity_nonfinite.rs`): an unlit colour's NaN becomes 0
+/// (glColor4f(NaN, 0, 1, 1) draws blue), a lit colour's NaN becomes 1 (a NaN diffuse
+/// material draws full red, as if the lighting sum were clamped min-then-max by a min and
+/// a max that drop a NaN operand). GLSL leaves clamp() of NaN undefined, hence the explicit
+/// isnan. Clamping after interpolation instead would not do: ∞ interpolated across a
+/// triangle is NaN.
+const SATURATE: &str =
+    "vec4 saturate(vec4 v) { return mix(clamp(v, 0.0, 1.0), vec4(0.0), isnan(v)); }";
+/// The lit-colour clamp: NaN → 1 (see [`SATURATE`]).
+const SATURATE_LIT: &str =
+    "vec4 saturate_lit(vec4 v) { return mix(clamp(v, 0.0, 1.0), vec4(1.0), isnan(v)); }";
 
 /// The edge attribute of split polygons, passed on without perspective so a component
 /// that is 0 at both ends of an edge stays exactly 0 along it (`polygon`).
@@ -234,13 +252,14 @@ fn emit_face(
     for light in &lighting.lights {
         emit_light(w, lighting, inputs, *light, face, n, [&c, &secondary]);
     }
+    w.declare(SATURATE_LIT);
     w.line(format!(
-        "{} = clamp(vec4({c}, {diffuse}.a), 0.0, 1.0);",
+        "{} = saturate_lit(vec4({c}, {diffuse}.a));",
         out[0]
     ));
     if lighting.separate_specular {
         w.line(format!(
-            "{} = vec4(clamp({secondary}, 0.0, 1.0), 0.0);",
+            "{} = vec4(saturate_lit(vec4({secondary}, 0.0)).rgb, 0.0);",
             out[1]
         ));
     }
@@ -285,8 +304,11 @@ fn emit_light(
         ));
         w.line(format!("float {v}_dist = length({v}_d);"));
         w.line(format!("vec3 {v}_dir = {v}_d / max({v}_dist, 1e-30);"));
+        // Attenuation (1, 0, 0) is exactly 1, whatever the distance — even a NaN one (a NaN
+        // light position): Mesa's key leaves the term out for (1, 0, 0) (measured: a light
+        // at (0, 0, 1, NaN) adds nothing but its ambient term).
         w.line(format!(
-            "float {v}_att = 1.0 / ({k}.x + {k}.y * {v}_dist + {k}.z * {v}_dist * {v}_dist);"
+            "float {v}_att = ({k}.xyz == vec3(1.0, 0.0, 0.0)) ? 1.0 : 1.0 / ({k}.x + {k}.y * {v}_dist + {k}.z * {v}_dist * {v}_dist);"
         ));
     }
     if l.spot {
@@ -300,7 +322,11 @@ fn emit_light(
             "{v}_att *= ({v}_sd < {spot}.y) ? 0.0 : (({spot}.x == 0.0) ? 1.0 : pow(max({v}_sd, 0.0), {spot}.x));"
         ));
     }
+    // n·L of NaN (a NaN light position or direction) counts as facing away: no diffuse or
+    // specular term, the ambient one stays — Mesa's LIT takes max(n·L, 0) with a max that
+    // drops the NaN (measured: the light at (NaN, 0, 1, 0) leaves the ambient colour).
     w.line(format!("float {v}_ndl = dot({n}, {v}_dir);"));
+    w.line(format!("if (isnan({v}_ndl)) {v}_ndl = 0.0;"));
     w.line(format!(
         "vec3 {v}_c = {ma}.rgb * {la}.rgb + max({v}_ndl, 0.0) * {md}.rgb * {ld}.rgb;"
     ));
@@ -407,6 +433,6 @@ mod tests {
             "nothing else reads the vertex's own normal"
         );
         let unlit = vertex_source(&[Command::ShadeModel(ShadeModel::Flat)]);
-        assert!(unlit.contains("v_color = a_shade_color;"));
+        assert!(unlit.contains("v_color = saturate(a_shade_color);"));
     }
 }
