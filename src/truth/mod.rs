@@ -71,8 +71,20 @@ impl Default for TruthOptions {
 /// Failures of the truth layer.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum TruthError {
-    #[error("light {index} asked for, the scene has {count} lights")]
+    /// `--light I` past the scene's lights. Light 0 of a scene without lights is not this
+    /// error: that truth is "nothing casts", every visible surface lit (what `none` draws).
+    #[error("light {index} asked for, but {}", lights_phrase(*.count))]
     NoSuchLight { index: usize, count: usize },
+}
+
+/// "the scene has no lights" / "the scene has 1 light (index 0)" / "… 3 lights (indices
+/// 0 to 2)".
+fn lights_phrase(count: usize) -> String {
+    match count {
+        0 => "the scene has no lights".to_string(),
+        1 => "the scene has 1 light (index 0)".to_string(),
+        n => format!("the scene has {n} lights (indices 0 to {})", n - 1),
+    }
 }
 
 /// Time spent, by phase.
@@ -139,7 +151,7 @@ struct Hit {
 /// Computes the truth mask and visibility of `scene` for `options.light`.
 pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError> {
     let emitter = match scene.lights.get(options.light) {
-        None if scene.lights.is_empty() => Emitter::None,
+        None if scene.lights.is_empty() && options.light == 0 => Emitter::None,
         None => {
             return Err(TruthError::NoSuchLight {
                 index: options.light,
@@ -192,8 +204,8 @@ pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError>
             .enumerate()
             .for_each(|(y, row)| {
                 for (x, hit) in row.iter_mut().enumerate() {
-                    let (o, d) = rays.ray(x as u32, y as u32);
-                    *hit = all.closest(o, d, 0.0, 1.0).map(|(t, id)| {
+                    let (o, d, t_max) = rays.ray(x as u32, y as u32);
+                    *hit = all.closest(o, d, 0.0, t_max).map(|(t, id)| {
                         let n = all.normals[id];
                         Hit {
                             p: o + t * d,

@@ -1,0 +1,141 @@
+//! What a run will need in memory, estimated from the scene before any context is made,
+//! and refused over the scene's [`Limits::memory_bytes`].
+//!
+//! A run is the truth plus `sessions` renders held open at once (`render`: 1; `compare`:
+//! every technique × pipeline; `sweep-bias`: one per depth format and pipeline; `truth`:
+//! 0). Its bytes, with W×H the image and F×G = max(W, map) × max(H, map) the shared
+//! framebuffer (image and light map side by side, see `techniques::map`):
+//!
+//! - the scene: triangles × `BYTES_PER_TRIANGLE` (meshes, draw-ready geometry, the truth's
+//!   BVH), once;
+//! - per session: triangles × `GPU_BYTES_PER_TRIANGLE` (llvmpipe's vertex and index
+//!   buffers) + F·G · (4 colour + depth bytes) for the framebuffer + F·G · 4 for the colour
+//!   readback + W·H · 6 for the image and the mask + map² · 8 for the map's readbacks;
+//! - the truth: W·H · [`TRUTH_BYTES_PER_PIXEL`] (each pixel's primary hit, its shade, the
+//!   mask and the visibility).
+//!
+//! Measured: `compare --size 8192x8192` used to climb to 6.9 GiB holding 14 framebuffers
+//! of 512 MiB before llvmpipe gave up with an incomplete framebuffer; its estimate here is
+//! 13.7 GiB and it is refused with the figures before the first context.
+
+use crate::scene::{
+    grouped, human_bytes, Limits, Scene, BYTES_PER_TRIANGLE, GPU_BYTES_PER_TRIANGLE,
+};
+use crate::vocab::DepthBits;
+
+/// Bytes per pixel of the truth: the primary hit (`Option<Hit>`, 32), the shade
+/// (value, visibility, rays: 12), the mask (1), the visibility (4), rounded up.
+pub const TRUTH_BYTES_PER_PIXEL: u64 = 52;
+
+/// A run's estimated needs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Footprint {
+    /// Triangles of the scene's meshes (as loaded).
+    pub triangles: u64,
+    /// Renders held open at once.
+    pub sessions: u64,
+    /// The meshes and the truth's BVH, once.
+    pub scene_bytes: u64,
+    /// One session: its copy of the geometry, framebuffer and readbacks.
+    pub session_bytes: u64,
+    /// The truth's per-pixel buffers.
+    pub truth_bytes: u64,
+}
+
+impl Footprint {
+    /// The needs of the truth of `scene` and `sessions` renders of it held open at once.
+    pub fn of(scene: &Scene, sessions: usize) -> Footprint {
+        let triangles: u64 = scene
+            .objects
+            .iter()
+            .map(|o| o.mesh.triangle_count() as u64)
+            .sum();
+        let (w, h) = (u64::from(scene.image.width), u64::from(scene.image.height));
+        let map = u64::from(scene.shadow.map_size);
+        let (fw, fh) = (w.max(map), h.max(map));
+        let depth_bytes = match scene.shadow.depth {
+            DepthBits::D16 => 2,
+            // D24 always has 8 stencil bits; D32F may have them.
+            DepthBits::D24 => 4,
+            DepthBits::D32F => 8,
+        };
+        let framebuffer = fw * fh * (4 + depth_bytes + 4);
+        let session_bytes = triangles.saturating_mul(GPU_BYTES_PER_TRIANGLE)
+            + framebuffer
+            + w * h * 6
+            + map * map * 8;
+        Footprint {
+            triangles,
+            sessions: sessions as u64,
+            scene_bytes: triangles.saturating_mul(BYTES_PER_TRIANGLE),
+            session_bytes,
+            truth_bytes: w * h * TRUTH_BYTES_PER_PIXEL,
+        }
+    }
+
+    /// Everything together.
+    pub fn total_bytes(&self) -> u64 {
+        self.scene_bytes
+            .saturating_add(self.sessions.saturating_mul(self.session_bytes))
+            .saturating_add(self.truth_bytes)
+    }
+
+    /// `Err` naming the figures when the total is over `limits.memory_bytes`.
+    pub fn check(&self, limits: &Limits) -> Result<(), OverBudget> {
+        if self.total_bytes() <= limits.memory_bytes {
+            Ok(())
+        } else {
+            Err(OverBudget {
+                footprint: *self,
+                memory_bytes: limits.memory_bytes,
+            })
+        }
+    }
+}
+
+/// A run refused before it started: what it would need and the budget.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "the run would need ≈ {} ({} for {} triangles, {} × {} per render held open \
+     (geometry, framebuffer, readbacks), {} for the truth's pixels); the memory budget is {}; \
+     raise it with --memory-budget GIB, or ask for a smaller --size or fewer techniques",
+    human_bytes(self.footprint.total_bytes()),
+    human_bytes(self.footprint.scene_bytes),
+    grouped(self.footprint.triangles),
+    self.footprint.sessions,
+    human_bytes(self.footprint.session_bytes),
+    human_bytes(self.footprint.truth_bytes),
+    human_bytes(self.memory_bytes)
+)]
+pub struct OverBudget {
+    pub footprint: Footprint,
+    pub memory_bytes: u64,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_scene_fits_and_a_huge_comparison_does_not() {
+        let scene = Scene::default_scene();
+        let one = Footprint::of(&scene, 1);
+        assert!(one.total_bytes() < 64 << 20, "{one:?}");
+        assert!(one.check(&scene.limits).is_ok());
+        let mut big = scene.clone();
+        big.image.width = 8192;
+        big.image.height = 8192;
+        let compare = Footprint::of(&big, 14);
+        let err = compare.check(&big.limits).expect_err("over budget");
+        let text = err.to_string();
+        assert!(
+            text.contains("8.0 GiB") && text.contains("--memory-budget"),
+            "{text}"
+        );
+        let raised = Limits {
+            memory_bytes: 64 << 30,
+            ..big.limits
+        };
+        assert!(compare.check(&raised).is_ok());
+    }
+}
