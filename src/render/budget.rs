@@ -8,15 +8,19 @@
 //!
 //! - the scene: triangles × `BYTES_PER_TRIANGLE` (meshes, draw-ready geometry, the truth's
 //!   BVH), once;
-//! - per session: triangles × `GPU_BYTES_PER_TRIANGLE` (llvmpipe's vertex and index
-//!   buffers) + F·G · (4 colour + depth bytes) for the framebuffer + F·G · 4 for the colour
-//!   readback + W·H · 6 for the image and the mask + map² · 8 for the map's readbacks;
+//! - per session: [`SESSION_BYTES`] for the context, [`OBJECT_BYTES`] per object (its
+//!   buffers and commands), triangles × `GPU_BYTES_PER_TRIANGLE` (llvmpipe's vertex and
+//!   index buffers), F·G · (4 colour + depth bytes) for the framebuffer, F·G · 4 for the
+//!   colour readback, W·H · 6 for the image and the mask, map² · 8 for the map's readbacks;
 //! - the truth: W·H · [`TRUTH_BYTES_PER_PIXEL`] (each pixel's primary hit, its shade, the
 //!   mask and the visibility).
 //!
-//! Measured: `compare --size 8192x8192` used to climb to 6.9 GiB holding 14 framebuffers
-//! of 512 MiB before llvmpipe gave up with an incomplete framebuffer; its estimate here is
-//! 13.7 GiB and it is refused with the figures before the first context.
+//! Measured (peak resident memory, `/usr/bin/time -f %M`, llvmpipe on EGL): `compare
+//! --size 2048x2048` of the default scene peaks at 1.44 GiB, estimated 1.6 GiB; `render`
+//! of 2000 spheres (1.92 million triangles) at 0.80 GiB, estimated 0.85 GiB; `truth` of a
+//! 2-million-triangle plane at 0.57 GiB, estimated 0.58 GiB. `compare --size 8192x8192`
+//! used to climb to 6.9 GiB before llvmpipe gave up with an incomplete framebuffer; its
+//! estimate is over 20 GiB and it is refused with the figures before the first context.
 
 use crate::scene::{
     grouped, human_bytes, Limits, Scene, BYTES_PER_TRIANGLE, GPU_BYTES_PER_TRIANGLE,
@@ -26,6 +30,14 @@ use crate::vocab::DepthBits;
 /// Bytes per pixel of the truth: the primary hit (`Option<Hit>`, 32), the shade
 /// (value, visibility, rays: 12), the mask (1), the visibility (4), rounded up.
 pub const TRUTH_BYTES_PER_PIXEL: u64 = 52;
+
+/// A GL context held open: 16 MiB (measured: 13.5 MB per session added to a comparison of
+/// the default scene at 64×64).
+pub const SESSION_BYTES: u64 = 16 << 20;
+
+/// An object in a session: 96 KiB (its vertex and index buffers' allocation granules and
+/// its commands; measured 84 KB per object over the per-triangle share, 2000 spheres).
+pub const OBJECT_BYTES: u64 = 96 << 10;
 
 /// A run's estimated needs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -60,7 +72,10 @@ impl Footprint {
             DepthBits::D32F => 8,
         };
         let framebuffer = fw * fh * (4 + depth_bytes + 4);
-        let session_bytes = triangles.saturating_mul(GPU_BYTES_PER_TRIANGLE)
+        let objects = scene.objects.len() as u64;
+        let session_bytes = SESSION_BYTES
+            + objects.saturating_mul(OBJECT_BYTES)
+            + triangles.saturating_mul(GPU_BYTES_PER_TRIANGLE)
             + framebuffer
             + w * h * 6
             + map * map * 8;
@@ -80,36 +95,52 @@ impl Footprint {
             .saturating_add(self.truth_bytes)
     }
 
-    /// `Err` naming the figures when the total is over `limits.memory_bytes`.
+    /// `Err` naming the figures when the triangles are over `limits.max_triangles` (a
+    /// scene built in code, not loaded, meets the budget here first) or the total is over
+    /// `limits.memory_bytes`.
     pub fn check(&self, limits: &Limits) -> Result<(), OverBudget> {
-        if self.total_bytes() <= limits.memory_bytes {
-            Ok(())
-        } else {
-            Err(OverBudget {
+        if self.triangles > limits.max_triangles {
+            Err(OverBudget::Triangles {
+                triangles: self.triangles,
+                max_triangles: limits.max_triangles,
+            })
+        } else if self.total_bytes() > limits.memory_bytes {
+            Err(OverBudget::Memory {
                 footprint: *self,
                 memory_bytes: limits.memory_bytes,
             })
+        } else {
+            Ok(())
         }
     }
 }
 
 /// A run refused before it started: what it would need and the budget.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
-#[error(
-    "the run would need ≈ {} ({} for {} triangles, {} × {} per render held open \
-     (geometry, framebuffer, readbacks), {} for the truth's pixels); the memory budget is {}; \
-     raise it with --memory-budget GIB, or ask for a smaller --size or fewer techniques",
-    human_bytes(self.footprint.total_bytes()),
-    human_bytes(self.footprint.scene_bytes),
-    grouped(self.footprint.triangles),
-    self.footprint.sessions,
-    human_bytes(self.footprint.session_bytes),
-    human_bytes(self.footprint.truth_bytes),
-    human_bytes(self.memory_bytes)
-)]
-pub struct OverBudget {
-    pub footprint: Footprint,
-    pub memory_bytes: u64,
+pub enum OverBudget {
+    #[error(
+        "the scene has {} triangles; the budget is {} triangles; raise it with --max-triangles N",
+        grouped(*.triangles),
+        grouped(*.max_triangles)
+    )]
+    Triangles { triangles: u64, max_triangles: u64 },
+    #[error(
+        "the run would need ≈ {} ({} for {} triangles, {} × {} per render held open \
+         (geometry, framebuffer, readbacks), {} for the truth's pixels); the memory budget \
+         is {}; raise it with --memory-budget GIB, or ask for a smaller --size or fewer \
+         techniques",
+        human_bytes(.footprint.total_bytes()),
+        human_bytes(.footprint.scene_bytes),
+        grouped(.footprint.triangles),
+        .footprint.sessions,
+        human_bytes(.footprint.session_bytes),
+        human_bytes(.footprint.truth_bytes),
+        human_bytes(*.memory_bytes)
+    )]
+    Memory {
+        footprint: Footprint,
+        memory_bytes: u64,
+    },
 }
 
 #[cfg(test)]

@@ -41,7 +41,7 @@ pub mod rounds;
 mod session;
 mod size;
 
-pub use budget::{Footprint, OverBudget, TRUTH_BYTES_PER_PIXEL};
+pub use budget::{Footprint, OverBudget, OBJECT_BYTES, SESSION_BYTES, TRUTH_BYTES_PER_PIXEL};
 pub use figures::Figures;
 pub use light_map::{LightMap, MapTexels};
 pub use motion::{Orbit, OrbitTarget};

@@ -14,11 +14,12 @@
 //! and test processes; a third, 8 GiB, is the default memory budget, leaving the rest for
 //! the operating system, the processes next to us and what an estimate leaves out (driver
 //! allocations, allocator slack). The triangle budget, 20 million, is what fits that
-//! memory in the costliest single run measured (`render` with its truth: about
-//! [`BYTES_PER_TRIANGLE`] per triangle) with room for the framebuffers, and is also about
-//! where the BVH build and llvmpipe's draws stop taking seconds and start taking minutes.
-//! Both are raised per run with `--max-triangles N` and `--memory-budget GIB`, or per scene
-//! with `[limits] max_triangles` and `memory_budget_gib`.
+//! memory in one `render` with its truth ([`BYTES_PER_TRIANGLE`] +
+//! [`GPU_BYTES_PER_TRIANGLE`] each: 6.7 GiB) with room for the framebuffers; it is also
+//! where waiting stops being reasonable (2 million triangles take 10 s to ray-cast and 14 s
+//! to render once, measured). Both are raised per run with `--max-triangles N` and
+//! `--memory-budget GIB` (every command takes them; the library takes a [`Limits`] in
+//! `Scene::parse_with` / `load_with`, and the scene carries it to the run).
 
 use super::types::Shape;
 
@@ -34,14 +35,17 @@ pub const DEFAULT_MAX_TRIANGLES: u64 = 20_000_000;
 /// Default memory budget: 8 GiB, a third of a 24 GiB machine (see the module note).
 pub const DEFAULT_MEMORY_BYTES: u64 = 8 << 30;
 
-/// Bytes a triangle costs in one `render` with its truth, measured (peak resident memory
-/// over triangle count, large tessellated planes, `none` on EGL): the object-space mesh,
-/// the draw-ready geometry, the truth's world-space copy, its BVH and leaf arrays.
-/// `render::Footprint` adds [`GPU_BYTES_PER_TRIANGLE`] per GL context.
+/// Bytes a triangle costs a run once, whatever renders it holds: the object-space mesh,
+/// the truth's world-space copy, its BVH and leaf arrays. Measured: peak resident memory
+/// of `fixedfunc truth` on tessellated planes of 0.5 and 2 million triangles grows by
+/// 304 B per triangle (2000 spheres: 305 B). `render::Footprint` adds
+/// [`GPU_BYTES_PER_TRIANGLE`] per GL context.
 pub const BYTES_PER_TRIANGLE: u64 = 300;
 
 /// Bytes a triangle costs inside one GL context (llvmpipe keeps vertex and index buffers
-/// in host memory; each session of a comparison has its own copy), measured as above.
+/// in host memory; each session of a comparison has its own copy) and in the draw-ready
+/// geometry. Measured as above with `render --technique none`: 47 B per triangle over
+/// `truth`'s.
 pub const GPU_BYTES_PER_TRIANGLE: u64 = 60;
 
 /// The budgets a scene is loaded and run under.
