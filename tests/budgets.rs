@@ -250,7 +250,7 @@ fn a_raised_budget_is_accepted() {
     let out = fixedfunc(&["truth", scene, "--mask", mask, "--max-triangles", "400000"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
 
-    // The memory budget: 0.01 GiB refuses a 1024² truth (≈ 52 MiB), 1 GiB admits it.
+    // The memory budget: 0.01 GiB refuses a 1024² truth (≈ 60 MiB), 1 GiB admits it.
     let out = fixedfunc(&[
         "truth",
         "--size",

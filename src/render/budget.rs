@@ -17,19 +17,20 @@
 //!
 //! Measured (peak resident memory, `/usr/bin/time -f %M`, llvmpipe on EGL): `compare
 //! --size 2048x2048` of the default scene peaks at 1.44 GiB, estimated 1.6 GiB; `render`
-//! of 2000 spheres (1.92 million triangles) at 0.80 GiB, estimated 0.85 GiB; `truth` of a
-//! 2-million-triangle plane at 0.57 GiB, estimated 0.58 GiB. `compare --size 8192x8192`
+//! of 2000 spheres (1.92 million triangles) at 0.80 GiB, estimated 0.84 GiB; `truth` of a
+//! 2-million-triangle plane at 0.57 GiB, estimated 0.56 GiB. `compare --size 8192x8192`
 //! used to climb to 6.9 GiB before llvmpipe gave up with an incomplete framebuffer; its
-//! estimate is over 20 GiB and it is refused with the figures before the first context.
+//! estimate is 22.0 GiB and it is refused with the figures before the first context.
 
 use crate::scene::{
     grouped, human_bytes, Limits, Scene, BYTES_PER_TRIANGLE, GPU_BYTES_PER_TRIANGLE,
 };
 use crate::vocab::DepthBits;
 
-/// Bytes per pixel of the truth: the primary hit (`Option<Hit>`, 32), the shade
-/// (value, visibility, rays: 12), the mask (1), the visibility (4), rounded up.
-pub const TRUTH_BYTES_PER_PIXEL: u64 = 52;
+/// Bytes per pixel of the truth: the primary hit (`Option<Hit>`: point, normal, a vertex
+/// and a flag, 40), the shade (value, visibility, rays: 12), the mask (1), the visibility
+/// (4), rounded up.
+pub const TRUTH_BYTES_PER_PIXEL: u64 = 60;
 
 /// A GL context held open: 16 MiB (measured: 13.5 MB per session added to a comparison of
 /// the default scene at 64×64).
