@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use fixedfunc::gpu::Backend;
 use fixedfunc::render::ImageSize;
 use fixedfunc::report;
+use fixedfunc::scene::Limits;
 use fixedfunc::study::{self, CompareSpec};
 use fixedfunc::vocab::{Named, TechniqueId};
 
@@ -42,8 +43,8 @@ pub struct Args {
     pub shadow: ShadowArgs,
 }
 
-pub fn run(args: Args) -> Result<(), CliError> {
-    let mut scene = scene_arg::load(args.scene.as_deref())?;
+pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
+    let mut scene = scene_arg::load(args.scene.as_deref(), limits)?;
     args.shadow.apply(&mut scene);
     let techniques = if args.techniques.is_empty() {
         TechniqueId::all()

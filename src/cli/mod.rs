@@ -34,6 +34,8 @@ use fixedfunc::render::{ImageSize, RemakeMaps};
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    #[command(flatten)]
+    limits: scene_arg::LimitArgs,
 }
 
 #[derive(Subcommand)]
@@ -155,10 +157,11 @@ enum Command {
 
 pub fn run() -> ExitCode {
     let cli = Cli::parse();
+    let limits = cli.limits.limits();
     let result = match cli.command {
         Command::Info { backend, json } => info::run(backend, json),
-        Command::Compare(args) => compare::run(args),
-        Command::SweepBias(args) => sweep_bias::run(args),
+        Command::Compare(args) => compare::run(args, limits),
+        Command::SweepBias(args) => sweep_bias::run(args, limits),
         Command::Replay {
             file,
             pipeline,
@@ -170,7 +173,12 @@ pub fn run() -> ExitCode {
             file,
             scene,
             technique,
-        } => shaders::run(file.as_deref(), scene.as_deref(), technique.as_deref()),
+        } => shaders::run(
+            file.as_deref(),
+            scene.as_deref(),
+            technique.as_deref(),
+            limits,
+        ),
         Command::Bench {
             only,
             repeats,
@@ -189,33 +197,39 @@ pub fn run() -> ExitCode {
             remake_maps,
             depth_map,
             orbit,
-        } => render::run(render::Args {
-            scene,
-            technique,
-            pipeline,
-            backend,
-            size,
-            out,
-            mask,
-            frames,
-            shadow,
-            remake_maps,
-            depth_map,
-            orbit,
-        }),
+        } => render::run(
+            render::Args {
+                scene,
+                technique,
+                pipeline,
+                backend,
+                size,
+                out,
+                mask,
+                frames,
+                shadow,
+                remake_maps,
+                depth_map,
+                orbit,
+            },
+            limits,
+        ),
         Command::Truth {
             scene,
             mask,
             visibility,
             size,
             light,
-        } => truth::run(truth::Args {
-            scene,
-            mask,
-            visibility,
-            size,
-            light,
-        }),
+        } => truth::run(
+            truth::Args {
+                scene,
+                mask,
+                visibility,
+                size,
+                light,
+            },
+            limits,
+        ),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

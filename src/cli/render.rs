@@ -9,6 +9,7 @@ use std::time::Duration;
 use fixedfunc::gpu::Backend;
 use fixedfunc::render::{self, ImageSize, Progress, RemakeMaps, RenderOptions};
 use fixedfunc::report;
+use fixedfunc::scene::Limits;
 use indicatif::{ProgressBar, ProgressStyle};
 
 use super::error::CliError;
@@ -41,8 +42,8 @@ pub struct Args {
     pub orbit: Option<fixedfunc::render::Orbit>,
 }
 
-pub fn run(args: Args) -> Result<(), CliError> {
-    let mut scene = scene_arg::load(args.scene.as_deref())?;
+pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
+    let mut scene = scene_arg::load(args.scene.as_deref(), limits)?;
     args.shadow.apply(&mut scene);
     let options = RenderOptions {
         backend: args.backend,

@@ -7,6 +7,7 @@ use fixedfunc::ff::{Command, FixedState};
 use fixedfunc::pipeline::emulate::key::ShaderKey;
 use fixedfunc::pipeline::emulate::shadergen;
 use fixedfunc::render::RenderError;
+use fixedfunc::scene::Limits;
 use fixedfunc::techniques;
 
 use super::error::CliError;
@@ -31,8 +32,9 @@ pub fn distinct_keys(commands: &[Command]) -> Vec<ShaderKey> {
 fn scene_frame(
     scene: Option<&Path>,
     technique: Option<&str>,
+    limits: Limits,
 ) -> Result<(String, Vec<Command>), CliError> {
-    let scene_value = super::scene_arg::load(scene)?;
+    let scene_value = super::scene_arg::load(scene, limits)?;
     let id = match technique {
         Some(name) => techniques::parse_name(name).map_err(RenderError::from)?,
         None => scene_value.shadow.technique,
@@ -49,10 +51,11 @@ pub fn run(
     file: Option<&Path>,
     scene: Option<&Path>,
     technique: Option<&str>,
+    limits: Limits,
 ) -> Result<(), CliError> {
     let (label, commands) = match file {
         Some(file) => (file.display().to_string(), script_io::load(file)?),
-        None => scene_frame(scene, technique)?,
+        None => scene_frame(scene, technique, limits)?,
     };
     let keys = distinct_keys(&commands);
     println!("{label}: {} distinct program(s)", keys.len());

@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use fixedfunc::gpu::Backend;
 use fixedfunc::render::ImageSize;
 use fixedfunc::report;
+use fixedfunc::scene::Limits;
 use fixedfunc::study::{self, SweepRange, SweepSpec};
 
 use super::error::CliError;
@@ -59,8 +60,8 @@ pub struct Args {
     pub filter: Option<MapFilter>,
 }
 
-pub fn run(args: Args) -> Result<(), CliError> {
-    let mut scene = scene_arg::load(args.scene.as_deref())?;
+pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
+    let mut scene = scene_arg::load(args.scene.as_deref(), limits)?;
     ShadowArgs {
         map_size: args.map_size,
         precision: args.precision,

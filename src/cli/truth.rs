@@ -4,7 +4,8 @@
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use fixedfunc::render::{self, ImageSize};
+use fixedfunc::render::{self, ImageSize, RenderError};
+use fixedfunc::scene::Limits;
 use fixedfunc::truth::{self, TruthOptions};
 use indicatif::{ProgressBar, ProgressStyle};
 
@@ -19,9 +20,12 @@ pub struct Args {
     pub light: usize,
 }
 
-pub fn run(args: Args) -> Result<(), CliError> {
-    let scene = scene_arg::load(args.scene.as_deref())?;
+pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
+    let scene = scene_arg::load(args.scene.as_deref(), limits)?;
     let scene = render::apply_overrides(&scene, args.size, None);
+    render::Footprint::of(&scene, 0)
+        .check(&scene.limits)
+        .map_err(RenderError::from)?;
     let options = TruthOptions {
         light: args.light,
         ..TruthOptions::default()

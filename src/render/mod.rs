@@ -17,9 +17,21 @@
 //! the counters, the truth ray-cast on the CPU and the mask compared with it
 //! (`metrics::compare` with an edge band of `band` pixels).
 //!
+//! **A truth that cannot judge is an error, not a score.** Before scoring, the geometry the
+//! truth saw is checked against the render's: the pixels each marks as background (no
+//! geometry) must agree but for at most [`COVERAGE_TOLERANCE`] of the pixels (samples on a
+//! silhouette, which GL's rasteriser and the ray cast may tip either way). A truth whose
+//! camera went wrong (an empty mask while the render shows the scene) used to score every
+//! technique 0.00% and put it on the Pareto front; now it stops the run with both counts
+//! ([`RenderError::CoverageMismatch`]).
+//!
+//! **Budgets.** [`Session::new`] refuses a run whose [`Footprint`] is over the scene's
+//! memory budget, and an image larger than [`MAX_IMAGE_SIZE`], before it makes a context.
+//!
 //! A command the GL model rejects is a bug in the technique, not a driver problem: the
 //! frame stops with [`RenderError::Gl`] naming the pass.
 
+mod budget;
 mod figures;
 mod light_map;
 mod motion;
@@ -29,6 +41,7 @@ pub mod rounds;
 mod session;
 mod size;
 
+pub use budget::{Footprint, OverBudget, OBJECT_BYTES, SESSION_BYTES, TRUTH_BYTES_PER_PIXEL};
 pub use figures::Figures;
 pub use light_map::{LightMap, MapTexels};
 pub use motion::{Orbit, OrbitTarget};
@@ -39,11 +52,11 @@ pub use size::{ImageSize, SizeProblem, MAX_IMAGE_SIZE};
 
 use crate::ff::{Command, GlError};
 use crate::gpu::{GpuContext, GpuError};
-use crate::metrics::MetricsError;
+use crate::metrics::{self, Mask, Metrics, MetricsError, BACKGROUND};
 use crate::pipeline::{Pipeline, PipelineError};
 use crate::scene::Scene;
 use crate::techniques::TechniqueError;
-use crate::truth::TruthError;
+use crate::truth::{Truth, TruthError};
 use crate::vocab::PipelineKind;
 
 /// Failures of the render layer.
@@ -67,6 +80,23 @@ pub enum RenderError {
     Metrics(#[from] MetricsError),
     #[error("the light's map is {size}² texels; at most {max}² fit a framebuffer")]
     MapTooLarge { size: u32, max: u32 },
+    #[error("the image is {width}x{height}; width and height must be at most {max}")]
+    ImageTooLarge { width: u32, height: u32, max: u32 },
+    #[error(transparent)]
+    OverBudget(#[from] OverBudget),
+    #[error(
+        "the ground truth cannot judge this render: their geometry differs on {differ} of \
+         {pixels} pixels (at most {allowed} edge pixels may): the technique's mask has \
+         {mask_background} background pixels, the truth's {truth_background}; the truth's \
+         camera or scene does not match the render's"
+    )]
+    CoverageMismatch {
+        mask_background: usize,
+        truth_background: usize,
+        differ: usize,
+        allowed: usize,
+        pixels: usize,
+    },
     #[error("the session's framebuffer was already released")]
     Released,
     #[error("the new shadow settings need another framebuffer (depth bits, stencil or size changed): start a new session")]
@@ -113,6 +143,36 @@ pub fn render_with_progress(
     }
     progress(Progress::Truth);
     session.finish(None)
+}
+
+/// The share of pixels on which a mask's and the truth's background may differ: 1%
+/// (edge samples; `tests/render_pipeline.rs` measures the `none` technique's at well under
+/// it on both paths and backends).
+pub const COVERAGE_TOLERANCE: f64 = 0.01;
+
+/// Scores `mask` against `truth` (`metrics::compare` with an edge band of `band`) once the
+/// two agree on where the geometry is, else [`RenderError::CoverageMismatch`].
+pub fn judge(mask: &Mask, truth: &Truth, band: u32) -> Result<Metrics, RenderError> {
+    let metrics = metrics::compare(mask, &truth.mask, band)?;
+    let background = |m: &Mask| m.data.iter().filter(|&&v| v == BACKGROUND).count();
+    let differ = mask
+        .data
+        .iter()
+        .zip(&truth.mask.data)
+        .filter(|(m, t)| (**m == BACKGROUND) != (**t == BACKGROUND))
+        .count();
+    let pixels = mask.data.len();
+    let allowed = (pixels as f64 * COVERAGE_TOLERANCE).floor() as usize;
+    if differ > allowed {
+        return Err(RenderError::CoverageMismatch {
+            mask_background: background(mask),
+            truth_background: background(&truth.mask),
+            differ,
+            allowed,
+            pixels,
+        });
+    }
+    Ok(metrics)
 }
 
 /// Executes one pass's commands; a command the model rejected is a technique bug.

@@ -24,7 +24,7 @@ use std::time::Instant;
 use image::RgbaImage;
 
 use crate::gpu::{Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay};
-use crate::metrics::{self, Mask};
+use crate::metrics::Mask;
 use crate::pipeline::Pipeline;
 use crate::scene::{Scene, ShadowSettings};
 use crate::techniques::{self, Pass, Plan, Prepared};
@@ -32,8 +32,8 @@ use crate::truth::{self, Truth};
 use crate::vocab::TechniqueId;
 
 use super::{
-    apply_overrides, run, FrameTimings, LightMap, PassTime, RemakeMaps, RenderError, RenderOptions,
-    RenderOutcome, MAX_IMAGE_SIZE,
+    apply_overrides, run, Footprint, FrameTimings, LightMap, PassTime, RemakeMaps, RenderError,
+    RenderOptions, RenderOutcome, MAX_IMAGE_SIZE,
 };
 
 /// One render held open: context, framebuffer, pipeline and plan, frames on demand.
@@ -75,6 +75,15 @@ impl Session {
     /// the plan's setup.
     pub fn new(scene: &Scene, options: &RenderOptions) -> Result<Session, RenderError> {
         let scene = apply_overrides(scene, options.size, options.technique);
+        let (width, height) = (scene.image.width, scene.image.height);
+        if width > MAX_IMAGE_SIZE || height > MAX_IMAGE_SIZE {
+            return Err(RenderError::ImageTooLarge {
+                width,
+                height,
+                max: MAX_IMAGE_SIZE,
+            });
+        }
+        Footprint::of(&scene, 1).check(&scene.limits)?;
         let prepared = Prepared::new(&scene);
         let plan = plan(&scene, &prepared)?;
         let fb = plan.framebuffer;
@@ -230,7 +239,7 @@ impl Session {
             Some(t) => t.clone(),
             None => truth::truth(&self.scene, &self.options.truth)?,
         };
-        let metrics = metrics::compare(&mask, &truth.mask, self.options.band)?;
+        let metrics = super::judge(&mask, &truth, self.options.band)?;
         let cold_ms = self.frames_ms.first().copied().unwrap_or(0.0);
         let steady = self.frames_ms.get(1..).unwrap_or(&[]).to_vec();
         let names = self

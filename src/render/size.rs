@@ -6,9 +6,7 @@ use std::str::FromStr;
 
 use super::RenderError;
 
-/// The largest width or height accepted: 8192. A larger frame's colour target alone is
-/// ≥ 256 MiB and its truth ≥ 67 million primary rays; llvmpipe's renderbuffer limit is 16384.
-pub const MAX_IMAGE_SIZE: u32 = 8192;
+pub use crate::scene::MAX_IMAGE_SIZE;
 
 /// Width and height of the rendered image, in pixels.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -8,6 +8,7 @@
 
 use super::check::{span_of, Ctx, Result};
 use super::error::{Problem, SceneError, SceneWarning, WarningKind};
+use super::limits::MAX_IMAGE_SIZE;
 use super::raw::*;
 use super::types::*;
 use crate::mesh;
@@ -32,9 +33,25 @@ pub(super) fn scene(ctx: &mut Ctx, raw: RawScene) -> Result<Scene> {
         .enumerate()
         .map(|(i, l)| light(ctx, l, &format!("light[{i}].")))
         .collect::<Result<Vec<_>>>()?;
-    let mut objects = Vec::with_capacity(raw.object.len());
+    // Shapes first: their triangles are counted from the parameters, and refused over
+    // the budget, before the first mesh is built.
+    let mut shapes = Vec::with_capacity(raw.object.len());
+    let mut triangles = 0u64;
     for (i, o) in raw.object.iter().enumerate() {
-        objects.push(object(ctx, o, &format!("object[{i}]."))?);
+        let shape = shape(ctx, o.get_ref(), o.span(), &format!("object[{i}]."))?;
+        triangles = triangles.saturating_add(shape.0.triangle_estimate());
+        ctx.within_budget(triangles, o.span(), &format!("object[{i}]"))?;
+        shapes.push(shape);
+    }
+    let mut objects = Vec::with_capacity(raw.object.len());
+    for (i, (o, shape)) in raw.object.iter().zip(shapes).enumerate() {
+        let object = object(ctx, o, shape, &format!("object[{i}]."))?;
+        if let Shape::Obj { .. } = object.shape {
+            // An OBJ's count is known once it is read.
+            triangles = triangles.saturating_add(object.mesh.triangle_count() as u64);
+            ctx.within_budget(triangles, o.span(), &format!("object[{i}]"))?;
+        }
+        objects.push(object);
     }
     let shadow = match &raw.shadow {
         Some(s) => shadow(ctx, s.get_ref())?,
@@ -47,13 +64,15 @@ pub(super) fn scene(ctx: &mut Ctx, raw: RawScene) -> Result<Scene> {
         objects,
         shadow,
         warnings: std::mem::take(&mut ctx.warnings),
+        limits: ctx.limits,
     })
 }
 
 /// gluLookAt's inputs: the view direction must be non-zero and not parallel to up.
+/// `eye_key` names what the eye was written as (`camera.eye`, `light[0].position`…).
 fn look_at(
     ctx: &Ctx,
-    eye: Vec3,
+    (eye, eye_key): (Vec3, &str),
     at: Vec3,
     up: Vec3,
     spans: [Range<usize>; 2],
@@ -64,7 +83,10 @@ fn look_at(
         return Err(ctx.invalid(
             spans[0].clone(),
             &format!("{prefix}at"),
-            Problem::ZeroVector,
+            Problem::Coincides {
+                other: eye_key.to_string(),
+                point: eye,
+            },
         ));
     }
     if up.length_squared() == 0.0 || view.normalize().cross(up.normalize()).length() < 1e-6 {
@@ -151,7 +173,7 @@ fn camera(ctx: &Ctx, table: &Spanned<RawCamera>) -> Result<Camera> {
     let up = ctx.opt_vec3(&c.up, "camera.up", Vec3::Y)?;
     let mut cam = look_at(
         ctx,
-        eye,
+        (eye, "camera.eye"),
         ctx.vec3(at, "camera.at")?,
         up,
         [at.span(), up_span],
@@ -163,15 +185,23 @@ fn camera(ctx: &Ctx, table: &Spanned<RawCamera>) -> Result<Camera> {
         (Some(fovy), None) => perspective(ctx, fovy, near, far, p)?,
         (None, Some(o)) => {
             let b = o.get_ref();
-            let [l, r, bo, t] =
-                [&b.left, &b.right, &b.bottom, &b.top].map(|v| ctx.finite(v, "camera.ortho"));
-            let (l, r, bo, t) = (l?, r?, bo?, t?);
-            for (low, high, s) in [(l, r, &b.right), (bo, t, &b.top)] {
+            let l = ctx.finite(&b.left, "camera.ortho.left")?;
+            let r = ctx.finite(&b.right, "camera.ortho.right")?;
+            let bo = ctx.finite(&b.bottom, "camera.ortho.bottom")?;
+            let t = ctx.finite(&b.top, "camera.ortho.top")?;
+            for (low, high, s, low_key, high_key) in [
+                (l, r, &b.right, "left", "right"),
+                (bo, t, &b.top, "bottom", "top"),
+            ] {
                 if low >= high {
                     return Err(ctx.invalid(
                         s.span(),
-                        "camera.ortho",
-                        Problem::EmptyRange { low, high },
+                        &format!("camera.ortho.{high_key}"),
+                        Problem::NotAbove {
+                            low_key: format!("camera.ortho.{low_key}"),
+                            low,
+                            high,
+                        },
                     ));
                 }
             }
@@ -206,6 +236,8 @@ fn camera(ctx: &Ctx, table: &Spanned<RawCamera>) -> Result<Camera> {
 }
 
 fn image(ctx: &Ctx, i: &RawImage, default: ImageSpec) -> Result<ImageSpec> {
+    ctx.at_most(&i.width, "image.width", MAX_IMAGE_SIZE)?;
+    ctx.at_most(&i.height, "image.height", MAX_IMAGE_SIZE)?;
     Ok(ImageSpec {
         width: ctx.count(&i.width, "image.width", default.width, 1)?,
         height: ctx.count(&i.height, "image.height", default.height, 1)?,
@@ -288,7 +320,8 @@ fn light(ctx: &Ctx, table: &Spanned<RawLight>, prefix: &str) -> Result<Light> {
             let at = ctx.required(&l.at, &key("at"), what, span.clone())?;
             let at_v = ctx.vec3(at, &key("at"))?;
             let up = light_up(ctx, l, at_v - position, prefix)?;
-            let mut view = look_at(ctx, position, at_v, up, [at.span(), up_span], prefix)?;
+            let eye = (position, key("position"));
+            let mut view = look_at(ctx, (eye.0, &eye.1), at_v, up, [at.span(), up_span], prefix)?;
             view.projection = frustum(ctx)?;
             let kind = if kind == LightType::Point {
                 LightKind::Point
@@ -342,7 +375,9 @@ fn light(ctx: &Ctx, table: &Spanned<RawLight>, prefix: &str) -> Result<Light> {
             )?;
             let eye = at - d.normalize() * distance;
             let up = light_up(ctx, l, d, prefix)?;
-            let mut view = look_at(ctx, eye, at, up, [direction.span(), up_span], prefix)?;
+            let eye = (eye, key("direction"));
+            let spans = [direction.span(), up_span];
+            let mut view = look_at(ctx, (eye.0, &eye.1), at, up, spans, prefix)?;
             view.projection = Projection::Orthographic {
                 left: -extent,
                 right: extent,
@@ -384,7 +419,14 @@ fn area_light(
             let ev = ctx.direction(ev_raw, &key("edge_v"))?;
             let normal = eu.cross(ev);
             if normal.length_squared() == 0.0 {
-                return Err(ctx.invalid(ev_raw.span(), &key("edge_v"), Problem::ZeroVector));
+                return Err(ctx.invalid(
+                    ev_raw.span(),
+                    &key("edge_v"),
+                    Problem::ParallelEdges {
+                        other: key("edge_u"),
+                        edge: eu,
+                    },
+                ));
             }
             let centre = corner + 0.5 * (eu + ev);
             let at = ctx.opt_vec3(&l.at, &key("at"), centre + normal.normalize())?;
@@ -393,7 +435,7 @@ fn area_light(
         (None, Some(centre)) => {
             let centre = ctx.vec3(centre, &key("centre"))?;
             let size = ctx.required(&l.size, &key("size"), what, span.clone())?;
-            let [w, h] = *size.get_ref();
+            let [w, h] = size.get_ref().0;
             for v in [w, h] {
                 if !(v.is_finite() && v > 0.0) {
                     return Err(ctx.invalid(size.span(), &key("size"), Problem::NotPositive(v)));
@@ -403,7 +445,14 @@ fn area_light(
             let at = ctx.vec3(at_raw, &key("at"))?;
             let n = (at - centre).normalize_or_zero();
             if n == Vec3::ZERO {
-                return Err(ctx.invalid(at_raw.span(), &key("at"), Problem::ZeroVector));
+                return Err(ctx.invalid(
+                    at_raw.span(),
+                    &key("at"),
+                    Problem::Coincides {
+                        other: key("centre"),
+                        point: centre,
+                    },
+                ));
             }
             // An orthonormal frame (u, v, n): u ⟂ the hint (y, or z when n ∥ y).
             let hint = if n.cross(Vec3::Y).length() < 1e-6 {
@@ -430,7 +479,12 @@ fn area_light(
     let centre = corner + 0.5 * (edge_u + edge_v);
     let up = light_up(ctx, l, at - centre, prefix)?;
     let at_span = span_of(&l.at).unwrap_or(span.clone());
-    let mut view = look_at(ctx, centre, at, up, [at_span, up_span], prefix)?;
+    // The light's view starts at the rectangle's centre.
+    let eye_key = match l.centre {
+        Some(_) => key("centre"),
+        None => format!("{prefix}corner + (edge_u + edge_v) / 2"),
+    };
+    let mut view = look_at(ctx, (centre, &eye_key), at, up, [at_span, up_span], prefix)?;
     view.projection = frustum(ctx)?;
     Ok((
         LightKind::Area {
@@ -445,7 +499,7 @@ fn area_light(
 fn extent(ctx: &Ctx, v: &Spanned<Extent>, key: &str) -> Result<Vec3> {
     let e = match *v.get_ref() {
         Extent::Uniform(x) => Vec3::splat(x),
-        Extent::PerAxis(a) => Vec3::from_array(a),
+        Extent::PerAxis(a) => Vec3::from_array(a.0),
     };
     if !e.is_finite() {
         return Err(ctx.invalid(v.span(), key, Problem::NotFinite));
@@ -547,10 +601,15 @@ fn shape(
     Ok((shape, None))
 }
 
-fn object(ctx: &mut Ctx, table: &Spanned<RawObject>, prefix: &str) -> Result<Object> {
+/// The object of `table`, whose `shape` (and the OBJ path's span) is already read.
+fn object(
+    ctx: &mut Ctx,
+    table: &Spanned<RawObject>,
+    (shape, mesh_span): (Shape, Option<Range<usize>>),
+    prefix: &str,
+) -> Result<Object> {
     let (o, span) = (table.get_ref(), table.span());
     let key = |k: &str| format!("{prefix}{k}");
-    let (shape, mesh_span) = shape(ctx, o, span.clone(), prefix)?;
     let mesh = match (&shape, shape.procedural_mesh()) {
         (_, Some(m)) => m,
         (Shape::Obj { path }, None) => {
@@ -582,7 +641,7 @@ fn object(ctx: &mut Ctx, table: &Spanned<RawObject>, prefix: &str) -> Result<Obj
             };
             let mut out = Vec::with_capacity(list.len());
             for raw in list {
-                let axis = Vec3::from_array(raw.axis);
+                let axis = Vec3::from_array(raw.axis.0);
                 if !axis.is_finite() || !raw.degrees.is_finite() {
                     return Err(ctx.invalid(r.span(), &key("rotate"), Problem::NotFinite));
                 }
@@ -685,7 +744,10 @@ fn shadow(ctx: &Ctx, s: &RawShadow) -> Result<ShadowSettings> {
     };
     Ok(ShadowSettings {
         technique,
-        map_size: ctx.count(&s.map_size, "shadow.map_size", defaults.map_size, 1)?,
+        map_size: {
+            ctx.at_most(&s.map_size, "shadow.map_size", MAX_IMAGE_SIZE)?;
+            ctx.count(&s.map_size, "shadow.map_size", defaults.map_size, 1)?
+        },
         depth,
         polygon_offset,
         precision: s.precision.unwrap_or(defaults.precision),

@@ -2,7 +2,8 @@
 //! validated one or a `SceneError::Invalid` naming the key and its line.
 
 use super::error::{Location, Problem, SceneError, SceneWarning};
-use super::raw::S;
+use super::limits::{Limits, BYTES_PER_TRIANGLE};
+use super::raw::{Numbers, S};
 use glam::Vec3;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -15,17 +16,20 @@ pub(super) struct Ctx<'a> {
     /// OBJ paths are resolved against this folder.
     pub base_dir: PathBuf,
     pub warnings: Vec<SceneWarning>,
+    /// The budgets the scene is read under.
+    pub limits: Limits,
 }
 
 pub(super) type Result<T> = std::result::Result<T, SceneError>;
 
 impl<'a> Ctx<'a> {
-    pub fn new(text: &'a str, file: &Path) -> Ctx<'a> {
+    pub fn new(text: &'a str, file: &Path, limits: Limits) -> Ctx<'a> {
         Ctx {
             text,
             file: file.display().to_string(),
             base_dir: file.parent().map(Path::to_path_buf).unwrap_or_default(),
             warnings: Vec::new(),
+            limits,
         }
     }
 
@@ -85,8 +89,23 @@ impl<'a> Ctx<'a> {
         }
     }
 
-    pub fn vec3(&self, v: &Spanned<[f32; 3]>, key: &str) -> Result<Vec3> {
-        let x = Vec3::from_array(*v.get_ref());
+    /// Refuses an optional count above `max`.
+    pub fn at_most(&self, v: &S<u32>, key: &str, max: u32) -> Result<()> {
+        match v {
+            Some(v) if *v.get_ref() > max => Err(self.invalid(
+                v.span(),
+                key,
+                Problem::TooLarge {
+                    max,
+                    value: *v.get_ref(),
+                },
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    pub fn vec3(&self, v: &Spanned<Numbers<3>>, key: &str) -> Result<Vec3> {
+        let x = Vec3::from_array(v.get_ref().0);
         if x.is_finite() {
             Ok(x)
         } else {
@@ -94,18 +113,38 @@ impl<'a> Ctx<'a> {
         }
     }
 
-    pub fn opt_vec3(&self, v: &S<[f32; 3]>, key: &str, default: Vec3) -> Result<Vec3> {
+    pub fn opt_vec3(&self, v: &S<Numbers<3>>, key: &str, default: Vec3) -> Result<Vec3> {
         v.as_ref().map_or(Ok(default), |v| self.vec3(v, key))
     }
 
     /// A vector that must not be zero (a direction or an axis).
-    pub fn direction(&self, v: &Spanned<[f32; 3]>, key: &str) -> Result<Vec3> {
+    pub fn direction(&self, v: &Spanned<Numbers<3>>, key: &str) -> Result<Vec3> {
         let x = self.vec3(v, key)?;
         if x.length_squared() > 0.0 {
             Ok(x)
         } else {
             Err(self.invalid(v.span(), key, Problem::ZeroVector))
         }
+    }
+
+    /// Refuses `triangles` (the scene's running total, at the object `key` spanning
+    /// `span`) when over the triangle budget or over the memory budget at
+    /// `BYTES_PER_TRIANGLE` each.
+    pub fn within_budget(&self, triangles: u64, span: Range<usize>, key: &str) -> Result<()> {
+        let bytes = triangles.saturating_mul(BYTES_PER_TRIANGLE);
+        if triangles <= self.limits.max_triangles && bytes <= self.limits.memory_bytes {
+            return Ok(());
+        }
+        Err(self.invalid(
+            span,
+            key,
+            Problem::OverBudget {
+                triangles,
+                bytes,
+                max_triangles: self.limits.max_triangles,
+                memory_bytes: self.limits.memory_bytes,
+            },
+        ))
     }
 
     /// A value `what` needs; its absence is reported at the enclosing table's span.

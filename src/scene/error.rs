@@ -1,6 +1,7 @@
 //! The scene layer's one error type. Every variant says where (file, line, column) and,
 //! for validation failures, which key and what would have been accepted.
 
+use super::limits::{grouped, human_bytes};
 use crate::mesh::MeshError;
 use glam::Vec3;
 use std::fmt;
@@ -58,8 +59,14 @@ pub enum Problem {
     TooSmall { min: u32, value: u32 },
     #[error("near ({near}) must be less than far ({far})")]
     NearNotBeforeFar { near: f32, far: f32 },
-    #[error("({low}) must be less than ({high})")]
-    EmptyRange { low: f32, high: f32 },
+    #[error("({high}) must be greater than `{low_key}` ({low})")]
+    NotAbove {
+        low_key: String,
+        low: f32,
+        high: f32,
+    },
+    #[error("must be at most {max}, not {value}")]
+    TooLarge { max: u32, value: u32 },
     #[error("must be in [{low}, {high}], not {value}")]
     OutOfRange { low: f32, high: f32, value: f32 },
     #[error("must be in (0, 180) degrees, not {0}")]
@@ -68,6 +75,22 @@ pub enum Problem {
     UpAlongView { view: Vec3 },
     #[error("must not be the zero vector")]
     ZeroVector,
+    #[error("coincides with `{other}` (both {point}): they must differ, the view looks from one to the other")]
+    Coincides { other: String, point: Vec3 },
+    #[error("is parallel to `{other}` ({edge}): an area light's two edges must span a rectangle")]
+    ParallelEdges { other: String, edge: Vec3 },
+    #[error(
+        "would make the scene {} triangles (≈ {}); the budget is {} triangles and {}; \
+         raise it with --max-triangles / --memory-budget",
+        grouped(*.triangles), human_bytes(*.bytes), grouped(*.max_triangles),
+        human_bytes(*.memory_bytes)
+    )]
+    OverBudget {
+        triangles: u64,
+        bytes: u64,
+        max_triangles: u64,
+        memory_bytes: u64,
+    },
     #[error("`{name}` is not a known technique; known techniques: {}", .known.join(", "))]
     UnknownTechnique {
         name: String,

@@ -20,12 +20,17 @@
 mod build;
 mod check;
 mod error;
+mod limits;
 mod raw;
 #[cfg(test)]
 mod tests;
 mod types;
 
 pub use error::{Location, Problem, SceneError, SceneWarning, WarningKind};
+pub use limits::{
+    grouped, human_bytes, Limits, BYTES_PER_TRIANGLE, DEFAULT_MAX_TRIANGLES, DEFAULT_MEMORY_BYTES,
+    GPU_BYTES_PER_TRIANGLE, MAX_IMAGE_SIZE,
+};
 pub use types::*;
 
 use glam::Vec3;
@@ -35,17 +40,28 @@ use std::sync::Arc;
 impl Scene {
     /// Reads and validates the scene file at `path`.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        Scene::load_with(path, Limits::default())
+    }
+
+    /// [`Scene::load`] under other budgets (`--max-triangles`, `--memory-budget`).
+    pub fn load_with(path: &Path, limits: Limits) -> Result<Scene, SceneError> {
         let text = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
             file: path.to_path_buf(),
             source,
         })?;
-        Scene::parse(&text, path)
+        Scene::parse_with(&text, path, limits)
     }
 
     /// Validates scene text as if read from `origin` (named in errors; OBJ paths are
     /// relative to its folder).
     pub fn parse(text: &str, origin: &Path) -> Result<Scene, SceneError> {
-        let mut ctx = check::Ctx::new(text, origin);
+        Scene::parse_with(text, origin, Limits::default())
+    }
+
+    /// [`Scene::parse`] under other budgets: the triangles of the objects are counted
+    /// from their parameters, and refused over `limits`, before any mesh is built.
+    pub fn parse_with(text: &str, origin: &Path, limits: Limits) -> Result<Scene, SceneError> {
+        let mut ctx = check::Ctx::new(text, origin, limits);
         let raw: raw::RawScene = toml::from_str(text).map_err(|e| {
             let span = e.span().unwrap_or(0..0);
             SceneError::Parse {
@@ -157,6 +173,7 @@ impl Scene {
             ],
             shadow: ShadowSettings::default(),
             warnings: Vec::new(),
+            limits: Limits::default(),
         }
     }
 }

@@ -8,6 +8,58 @@ use toml::Spanned;
 
 pub(super) type S<T> = Option<Spanned<T>>;
 
+/// Exactly `N` numbers, written as a TOML array. serde's `[f32; N]` takes the first N
+/// values of a longer array and drops the rest without a word (`eye = [0, 9, 20, 1]`
+/// loaded as [0, 9, 20]); this reads them all and refuses any other count, so the error
+/// names the key and its line.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Numbers<const N: usize>(pub [f32; N]);
+
+impl<'de, const N: usize> Deserialize<'de> for Numbers<N> {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Visitor<const N: usize>;
+        impl<'de, const N: usize> serde::de::Visitor<'de> for Visitor<N> {
+            type Value = Numbers<N>;
+
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                write!(f, "an array of {N} numbers ({})", components(N))
+            }
+
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<Self::Value, A::Error> {
+                let mut values = [0.0f32; N];
+                let mut count = 0usize;
+                while let Some(v) = seq.next_element::<f32>()? {
+                    if let Some(slot) = values.get_mut(count) {
+                        *slot = v;
+                    }
+                    count += 1;
+                }
+                if count == N {
+                    Ok(Numbers(values))
+                } else {
+                    Err(serde::de::Error::custom(format!(
+                        "expected {N} values ({}), found {count}",
+                        components(N)
+                    )))
+                }
+            }
+        }
+        deserializer.deserialize_seq(Visitor::<N>)
+    }
+}
+
+/// What the numbers of a `Numbers<N>` are.
+fn components(n: usize) -> &'static str {
+    match n {
+        2 => "width, height",
+        3 => "x, y, z",
+        _ => "numbers",
+    }
+}
+
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawScene {
@@ -23,9 +75,9 @@ pub(super) struct RawScene {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawCamera {
-    pub eye: S<[f32; 3]>,
-    pub at: S<[f32; 3]>,
-    pub up: S<[f32; 3]>,
+    pub eye: S<Numbers<3>>,
+    pub at: S<Numbers<3>>,
+    pub up: S<Numbers<3>>,
     pub fovy: S<f32>,
     pub near: S<f32>,
     pub far: S<f32>,
@@ -46,7 +98,7 @@ pub(super) struct RawOrtho {
 pub(super) struct RawImage {
     pub width: S<u32>,
     pub height: S<u32>,
-    pub background: S<[f32; 3]>,
+    pub background: S<Numbers<3>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -63,23 +115,23 @@ pub(super) enum LightType {
 pub(super) struct RawLight {
     #[serde(rename = "type")]
     pub kind: Spanned<LightType>,
-    pub position: S<[f32; 3]>,
-    pub at: S<[f32; 3]>,
-    pub up: S<[f32; 3]>,
+    pub position: S<Numbers<3>>,
+    pub at: S<Numbers<3>>,
+    pub up: S<Numbers<3>>,
     pub fovy: S<f32>,
     pub near: S<f32>,
     pub far: S<f32>,
     pub cutoff: S<f32>,
     pub exponent: S<f32>,
-    pub direction: S<[f32; 3]>,
+    pub direction: S<Numbers<3>>,
     pub extent: S<f32>,
     pub distance: S<f32>,
-    pub corner: S<[f32; 3]>,
-    pub edge_u: S<[f32; 3]>,
-    pub edge_v: S<[f32; 3]>,
-    pub centre: S<[f32; 3]>,
-    pub size: S<[f32; 2]>,
-    pub colour: S<[f32; 3]>,
+    pub corner: S<Numbers<3>>,
+    pub edge_u: S<Numbers<3>>,
+    pub edge_v: S<Numbers<3>>,
+    pub centre: S<Numbers<3>>,
+    pub size: S<Numbers<2>>,
+    pub colour: S<Numbers<3>>,
     pub intensity: S<f32>,
 }
 
@@ -99,13 +151,13 @@ pub(super) enum ShapeType {
 #[serde(untagged)]
 pub(super) enum Extent {
     Uniform(f32),
-    PerAxis([f32; 3]),
+    PerAxis(Numbers<3>),
 }
 
 #[derive(Debug, Clone, Copy, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawRotation {
-    pub axis: [f32; 3],
+    pub axis: Numbers<3>,
     pub degrees: f32,
 }
 
@@ -133,11 +185,11 @@ pub(super) struct RawObject {
     pub rings: S<u32>,
     pub sides: S<u32>,
     pub length: S<f32>,
-    pub translate: S<[f32; 3]>,
+    pub translate: S<Numbers<3>>,
     pub rotate: S<Rotations>,
     pub scale: S<Extent>,
-    pub colour: S<[f32; 3]>,
-    pub specular: S<[f32; 3]>,
+    pub colour: S<Numbers<3>>,
+    pub specular: S<Numbers<3>>,
     pub shininess: S<f32>,
     pub casts: Option<bool>,
     pub receives: Option<bool>,

@@ -65,9 +65,9 @@ const BAD: &[(&str, &str, usize, &[&str])] = &[
     ("fovy 180", "[camera]\neye = [0,0,5]\nat = [0,0,0]\nfovy = 180\nnear = 1\nfar = 10\n", 4, &["camera.fovy", "(0, 180)"]),
     ("fovy 0", "[camera]\neye = [0,0,5]\nat = [0,0,0]\nfovy = 0\nnear = 1\nfar = 10\n", 4, &["camera.fovy"]),
     ("up along view", "[camera]\neye = [0,5,0]\nat = [0,0,0]\nup = [0,1,0]\nfovy = 45\nnear = 1\nfar = 10\n", 4, &["camera.up", "parallel"]),
-    ("eye at target", "[camera]\neye = [0,0,0]\nat = [0,0,0]\nfovy = 45\nnear = 1\nfar = 10\n", 3, &["camera.at", "zero"]),
+    ("eye at target", "[camera]\neye = [0,0,0]\nat = [0,0,0]\nfovy = 45\nnear = 1\nfar = 10\n", 3, &["camera.at", "camera.eye", "coincides"]),
     ("fovy and ortho", "[camera]\neye = [0,0,5]\nat = [0,0,0]\nfovy = 45\northo = { left = -1, right = 1, bottom = -1, top = 1 }\nnear = 1\nfar = 10\n", 4, &["ortho"]),
-    ("empty ortho", "[camera]\neye = [0,0,5]\nat = [0,0,0]\northo = { left = 1, right = 1, bottom = -1, top = 1 }\nnear = 1\nfar = 10\n", 4, &["camera.ortho"]),
+    ("empty ortho", "[camera]\neye = [0,0,5]\nat = [0,0,0]\northo = { left = 1, right = 1, bottom = -1, top = 1 }\nnear = 1\nfar = 10\n", 4, &["camera.ortho.right", "camera.ortho.left"]),
     ("light near >= far", "[[light]]\ntype = \"spot\"\nposition = [0,5,1]\nat = [0,0,0]\nnear = 30\nfar = 24\n", 6, &["light[0].far"]),
     ("light missing position", "[[light]]\ntype = \"point\"\nat = [0,0,0]\n", 1, &["light[0].position", "point light"]),
     ("light key not for type", "[[light]]\ntype = \"point\"\nposition = [0,5,1]\nat = [0,0,0]\ncutoff = 30\n", 5, &["light[0].cutoff", "point light", "position"]),
@@ -219,4 +219,183 @@ fn no_input_panics() {
     for end in (0..text.len()).filter(|&i| text.is_char_boundary(i)) {
         let _ = parse(&text[..end]);
     }
+}
+
+/// The message of the error `text` gives, which must be at `line` of test.toml.
+fn error_at(text: &str, line: usize) -> String {
+    let err = parse(text).expect_err("refused");
+    let msg = err.to_string();
+    assert_eq!(
+        err.location().map(|at| (at.file.as_str(), at.line)),
+        Some(("test.toml", line)),
+        "{msg}"
+    );
+    assert!(msg.starts_with(&format!("test.toml:{line}:")), "{msg}");
+    msg
+}
+
+/// Item: `eye = [0, 9, 20, 1]` used to load as [0, 9, 20], the fourth value dropped.
+#[test]
+fn a_vector_with_four_values_is_refused_naming_the_field() {
+    let msg = error_at(
+        "[camera]\nat = [0, 0, 0]\neye = [0, 9, 20, 1]\nfovy = 40\nnear = 4\nfar = 50\n",
+        3,
+    );
+    assert!(
+        msg.contains("`eye`") && msg.contains("expected 3 values (x, y, z), found 4"),
+        "{msg}"
+    );
+    let msg = error_at("[[object]]\nshape = \"box\"\ntranslate = [1, 2]\n", 3);
+    assert!(
+        msg.contains("`translate`") && msg.contains("found 2"),
+        "{msg}"
+    );
+    let msg = error_at(
+        "[[light]]\ntype = \"area\"\ncentre = [0, 5, 0]\nsize = [1, 2, 3]\nat = [0, 0, 0]\n",
+        4,
+    );
+    assert!(
+        msg.contains("`size`") && msg.contains("expected 2 values (width, height)"),
+        "{msg}"
+    );
+    // Inside `rotate` (one table or a list of them) serde reports which form failed.
+    error_at(
+        "[[object]]\nshape = \"box\"\nrotate = { axis = [0, 1, 0, 0], degrees = 30 }\n",
+        3,
+    );
+}
+
+/// Item: `eye == at` used to say "`camera.at` must not be the zero vector".
+#[test]
+fn eye_equal_to_at_says_they_coincide() {
+    let msg = error_at(
+        "[camera]\neye = [1, 2, 3]\nat = [1, 2, 3]\nfovy = 40\nnear = 4\nfar = 50\n",
+        3,
+    );
+    assert!(
+        msg.contains("`camera.at` coincides with `camera.eye`") && !msg.contains("zero vector"),
+        "{msg}"
+    );
+    let msg = error_at(
+        "[[light]]\ntype = \"spot\"\nposition = [0, 5, 0]\nat = [0, 5, 0]\n",
+        4,
+    );
+    assert!(
+        msg.contains("`light[0].at` coincides with `light[0].position`"),
+        "{msg}"
+    );
+    let msg = error_at(
+        "[[light]]\ntype = \"area\"\ncentre = [0, 5, 0]\nsize = [1, 1]\nat = [0, 5, 0]\n",
+        5,
+    );
+    assert!(msg.contains("coincides with `light[0].centre`"), "{msg}");
+}
+
+/// Item: parallel area-light edges used to be "the zero vector".
+#[test]
+fn parallel_area_light_edges_are_called_parallel() {
+    let msg = error_at(
+        "[[light]]\ntype = \"area\"\ncorner = [0, 5, 0]\nedge_u = [1, 0, 0]\nedge_v = [-2, 0, 0]\n",
+        5,
+    );
+    assert!(
+        msg.contains("`light[0].edge_v` is parallel to `light[0].edge_u`")
+            && !msg.contains("zero vector"),
+        "{msg}"
+    );
+}
+
+/// Item: `right <= left` used to say "`camera.ortho` (1) must be less than (1)".
+#[test]
+fn orthographic_bounds_errors_name_the_fields() {
+    let text = |bounds: &str| {
+        format!("[camera]\neye = [0, 0, 5]\nat = [0, 0, 0]\nnear = 1\nfar = 10\northo = {{ {bounds} }}\n")
+    };
+    let msg = error_at(&text("left = 2, right = 1, bottom = -1, top = 1"), 6);
+    assert!(
+        msg.contains("`camera.ortho.right` (1) must be greater than `camera.ortho.left` (2)"),
+        "{msg}"
+    );
+    let msg = error_at(&text("left = -1, right = 1, bottom = 3, top = 3"), 6);
+    assert!(
+        msg.contains("`camera.ortho.top` (3) must be greater than `camera.ortho.bottom` (3)"),
+        "{msg}"
+    );
+    let msg = error_at(&text("left = nan, right = 1, bottom = -1, top = 1"), 6);
+    assert!(
+        msg.contains("`camera.ortho.left` must be a finite number"),
+        "{msg}"
+    );
+}
+
+/// Item: an image or a map larger than 8192 used to be blamed on "the light's map" when
+/// rendered (and was accepted by the scene).
+#[test]
+fn an_image_larger_than_8192_is_refused_as_the_image() {
+    let msg = error_at("[image]\nwidth = 512\nheight = 9000\n", 3);
+    assert!(
+        msg.contains("`image.height` must be at most 8192, not 9000"),
+        "{msg}"
+    );
+    let msg = error_at("[shadow]\nmap_size = 16384\n", 2);
+    assert!(
+        msg.contains("`shadow.map_size` must be at most 8192"),
+        "{msg}"
+    );
+}
+
+/// Item: a tessellation of 5000 used to build 50 million triangles and abort at 6.5 GiB.
+/// Refused from the parameters, at the object's line, with the figures and the flags.
+#[test]
+fn a_huge_tessellation_is_refused_with_the_figures() {
+    let msg = error_at(
+        "[[object]]\nshape = \"box\"\n[[object]]\nshape = \"plane\"\ntessellation = 5000\n",
+        3,
+    );
+    assert!(
+        msg.contains("`object[1]` would make the scene 50,000,012 triangles (≈ 14.0 GiB)")
+            && msg.contains("the budget is 20,000,000 triangles and 8.0 GiB")
+            && msg.contains("--max-triangles / --memory-budget"),
+        "{msg}"
+    );
+    // Raised, the same scene's budget check passes (a smaller scene keeps the test light).
+    let text = "[[object]]\nshape = \"plane\"\ntessellation = 300\n";
+    let tight = Limits {
+        max_triangles: 100_000,
+        ..Limits::default()
+    };
+    let err = Scene::parse_with(text, Path::new("test.toml"), tight).expect_err("180,000");
+    assert!(err.to_string().contains("180,000 triangles"), "{err}");
+    let raised = Limits {
+        max_triangles: 200_000,
+        ..Limits::default()
+    };
+    let scene = Scene::parse_with(text, Path::new("test.toml"), raised).expect("raised");
+    assert_eq!(scene.objects[0].mesh.triangle_count(), 180_000);
+    assert_eq!(scene.limits, raised);
+}
+
+/// An OBJ's triangles count against the budget once read.
+#[test]
+fn obj_triangles_count_against_the_budget() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
+    std::fs::write(dir.path().join("two.obj"), obj).expect("write obj");
+    let origin = dir.path().join("scene.toml");
+    let text = "[[object]]\nshape = \"box\"\n[[object]]\nmesh = \"two.obj\"\n";
+    let limits = Limits {
+        max_triangles: 13,
+        ..Limits::default()
+    };
+    let err = Scene::parse_with(text, &origin, limits).expect_err("14 > 13");
+    assert!(err.to_string().contains("14 triangles"), "{err}");
+    assert!(Scene::parse_with(
+        text,
+        &origin,
+        Limits {
+            max_triangles: 14,
+            ..limits
+        }
+    )
+    .is_ok());
 }

@@ -11,6 +11,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use super::error::SceneWarning;
+use super::limits::Limits;
 
 /// A parsed, validated scene.
 #[derive(Debug, Clone, PartialEq)]
@@ -22,6 +23,8 @@ pub struct Scene {
     pub shadow: ShadowSettings,
     /// What loading accepted but dropped (e.g. degenerate OBJ faces).
     pub warnings: Vec<SceneWarning>,
+    /// The budgets it was loaded under; a run checks its own needs against them too.
+    pub limits: Limits,
 }
 
 /// A gluLookAt view with a gluPerspective or glOrtho projection. Also a light's

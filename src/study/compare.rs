@@ -171,6 +171,8 @@ pub fn compare(
         ..RenderOptions::default()
     };
     let scene = render::apply_overrides(scene, spec.size, None);
+    // Every session is held open at once: refuse what will not fit before the first.
+    render::Footprint::of(&scene, combos.len()).check(&scene.limits)?;
     let truth_start = Instant::now();
     let truth = truth::truth(&scene, &base.truth)?;
     let truth_ms = ms_since(truth_start);

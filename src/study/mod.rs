@@ -47,6 +47,8 @@ pub enum StudyError {
     #[error(transparent)]
     Truth(#[from] TruthError),
     #[error(transparent)]
+    OverBudget(#[from] crate::render::OverBudget),
+    #[error(transparent)]
     Technique(#[from] TechniqueError),
     #[error("nothing to study: no technique or no pipeline was chosen")]
     Empty,

@@ -10,7 +10,7 @@ use crate::vocab::{DepthBits, PipelineKind, PolygonOffset, TechniqueId};
 use std::time::Instant;
 
 use crate::gpu::Backend;
-use crate::metrics::{self, Metrics};
+use crate::metrics::Metrics;
 use crate::render::{self, pipeline_name, ImageSize, RenderError, RenderOptions, Session};
 use crate::scene::{Scene, ShadowSettings};
 use crate::truth::{self, Truth};
@@ -122,6 +122,8 @@ pub fn sweep(
         frames: 1,
         ..RenderOptions::default()
     };
+    // One session at a time: each surface's is released before the next is made.
+    render::Footprint::of(&scene, 1).check(&scene.limits)?;
     let truth_start = Instant::now();
     let truth = truth::truth(&scene, &base.truth)?;
     let truth_ms = ms_since(truth_start);
@@ -199,7 +201,7 @@ fn grid(
         }
         session.frame()?;
         let mask = session.mask()?;
-        let metrics = metrics::compare(&mask, &truth.mask, options.band)?;
+        let metrics = render::judge(&mask, truth, options.band)?;
         cells.push(Cell {
             factor: offset.factor,
             units: offset.units,

@@ -70,6 +70,11 @@ impl Accel {
         })
     }
 
+    /// The first vertex of leaf-order triangle `id`.
+    pub fn corner(&self, id: usize) -> Vec3 {
+        from_bvh(self.tris[id].v0)
+    }
+
     pub fn triangle_count(&self) -> usize {
         self.tris.len()
     }

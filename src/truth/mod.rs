@@ -9,7 +9,10 @@
 //! **Rays.** One primary ray per pixel through GL's sample point (see `camera`), then for
 //! the hit point p with geometric normal n (flipped to face the viewer — we see the side we
 //! see, as with two-sided lighting):
-//! - if n · L ≤ 0 the surface faces away from the light: shadowed (0);
+//! - if n · L ≤ 0 the surface faces away from the light: shadowed (0). For a light at a
+//!   point q, n · L is taken as n · (q − v₀), v₀ a vertex of the hit triangle — the same
+//!   number as n · (q − p) for p in the triangle's plane, without p's rounding, so a light
+//!   exactly in a receiver's plane gives 0 everywhere instead of scattered ±10⁻⁷;
 //! - else a shadow ray from p + ε n towards the light decides lit (255) or shadowed (0);
 //!   only objects with `casts` occlude, only objects with `receives` are shadowed (the
 //!   others are 255 when they face the light);
@@ -71,8 +74,20 @@ impl Default for TruthOptions {
 /// Failures of the truth layer.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum TruthError {
-    #[error("light {index} asked for, the scene has {count} lights")]
+    /// `--light I` past the scene's lights. Light 0 of a scene without lights is not this
+    /// error: that truth is "nothing casts", every visible surface lit (what `none` draws).
+    #[error("light {index} asked for, but {}", lights_phrase(*.count))]
     NoSuchLight { index: usize, count: usize },
+}
+
+/// "the scene has no lights" / "the scene has 1 light (index 0)" / "… 3 lights (indices
+/// 0 to 2)".
+fn lights_phrase(count: usize) -> String {
+    match count {
+        0 => "the scene has no lights".to_string(),
+        1 => "the scene has 1 light (index 0)".to_string(),
+        n => format!("the scene has {n} lights (indices 0 to {})", n - 1),
+    }
 }
 
 /// Time spent, by phase.
@@ -133,13 +148,23 @@ enum Emitter {
 struct Hit {
     p: Vec3,
     n: Vec3,
+    /// A vertex of the hit triangle: n · (light − corner) decides facing exactly where
+    /// n · (light − p) would carry p's rounding (a light in the receiver's plane).
+    corner: Vec3,
     receives: bool,
+}
+
+/// Where a shadow ray goes: to a point (tmax = 1 along light − p) or along a direction.
+#[derive(Debug, Clone, Copy)]
+enum Toward {
+    Point(Vec3),
+    Direction(Vec3),
 }
 
 /// Computes the truth mask and visibility of `scene` for `options.light`.
 pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError> {
     let emitter = match scene.lights.get(options.light) {
-        None if scene.lights.is_empty() => Emitter::None,
+        None if scene.lights.is_empty() && options.light == 0 => Emitter::None,
         None => {
             return Err(TruthError::NoSuchLight {
                 index: options.light,
@@ -192,12 +217,13 @@ pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError>
             .enumerate()
             .for_each(|(y, row)| {
                 for (x, hit) in row.iter_mut().enumerate() {
-                    let (o, d) = rays.ray(x as u32, y as u32);
-                    *hit = all.closest(o, d, 0.0, 1.0).map(|(t, id)| {
+                    let (o, d, t_max) = rays.ray(x as u32, y as u32);
+                    *hit = all.closest(o, d, 0.0, t_max).map(|(t, id)| {
                         let n = all.normals[id];
                         Hit {
                             p: o + t * d,
                             n: if n.dot(d) > 0.0 { -n } else { n },
+                            corner: all.corner(id),
                             receives: all.receives[id],
                         }
                     });
@@ -251,16 +277,15 @@ pub fn scene_radius(scene: &Scene) -> f32 {
     }
 }
 
-/// Whether `hit` sees the light through `to_light` (a vector to the light for tmax = 1, or a
-/// direction for tmax = ∞): facing it, and, on a receiver, nothing in between.
-fn sees(
-    hit: &Hit,
-    to_light: Vec3,
-    tmax: f32,
-    casters: Option<&Accel>,
-    epsilon: f32,
-) -> (bool, u32) {
-    if hit.n.dot(to_light) <= 0.0 {
+/// Whether `hit` sees the light `toward` a point or along a direction: facing it (n · L
+/// from the triangle's plane, exact for a light in that plane), and, on a receiver,
+/// nothing in between.
+fn sees(hit: &Hit, toward: Toward, casters: Option<&Accel>, epsilon: f32) -> (bool, u32) {
+    let (facing, to_light, tmax) = match toward {
+        Toward::Point(q) => (hit.n.dot(q - hit.corner), q - hit.p, 1.0),
+        Toward::Direction(d) => (hit.n.dot(d), d, f32::INFINITY),
+    };
+    if facing <= 0.0 {
         return (false, 0);
     }
     match casters {
@@ -290,16 +315,16 @@ fn shade(
     match emitter {
         Emitter::None => (LIT, 1.0, 0),
         Emitter::Point(p) => {
-            let (lit, rays) = sees(hit, p - hit.p, 1.0, casters, epsilon);
+            let (lit, rays) = sees(hit, Toward::Point(p), casters, epsilon);
             (value(lit), if lit { 1.0 } else { 0.0 }, rays)
         }
         Emitter::Directional(d) => {
-            let (lit, rays) = sees(hit, d, f32::INFINITY, casters, epsilon);
+            let (lit, rays) = sees(hit, Toward::Direction(d), casters, epsilon);
             (value(lit), if lit { 1.0 } else { 0.0 }, rays)
         }
         Emitter::Area { corner, u, v } => {
             let centre = corner + 0.5 * (u + v);
-            let (lit, mut rays) = sees(hit, centre - hit.p, 1.0, casters, epsilon);
+            let (lit, mut rays) = sees(hit, Toward::Point(centre), casters, epsilon);
             let mut visible = 0;
             for k in 0..side * side {
                 let (a, b) = (k % side, k / side);
@@ -307,7 +332,7 @@ fn shade(
                 let q = corner
                     + u * ((a as f32 + ja) / side as f32)
                     + v * ((b as f32 + jb) / side as f32);
-                let (seen, r) = sees(hit, q - hit.p, 1.0, casters, epsilon);
+                let (seen, r) = sees(hit, Toward::Point(q), casters, epsilon);
                 visible += u32::from(seen);
                 rays += r;
             }

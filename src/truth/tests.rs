@@ -47,6 +47,7 @@ fn top_down(size: u32, half: f32, lights: Vec<Light>, objects: Vec<Object>) -> S
         objects,
         shadow: ShadowSettings::default(),
         warnings: Vec::new(),
+        limits: crate::scene::Limits::default(),
     }
 }
 
@@ -342,4 +343,94 @@ fn default_scene_has_all_three_values() {
     }
     assert!(t.shadow_rays > 0 && t.primary_rays == 128 * 128);
     assert_eq!(t.visibility_image().dimensions(), (128, 128));
+}
+
+/// The default scene's camera with other near and far planes (nothing in the scene lies
+/// nearer than 4 or beyond 31 from the eye, so the mask must not change).
+fn default_with_depth_range(near: f32, far: f32) -> Scene {
+    let mut scene = Scene::default_scene();
+    scene.image.width = 128;
+    scene.image.height = 96;
+    scene.camera.projection = Projection::Perspective {
+        fovy: 40.0,
+        near,
+        far,
+    };
+    scene
+}
+
+/// Item: a far/near ratio of 2.5·10⁵ to 5·10⁷ used to empty the truth (every primary ray
+/// missed through the f32 inverse of P·V). The masks must equal the near-4/far-50 mask
+/// but for at most 0.1% of the pixels (samples on a silhouette, where rounding the ray's
+/// origin differently may tip a pixel).
+#[test]
+fn large_far_over_near_ratios_keep_the_truth() {
+    let reference = truth(
+        &default_with_depth_range(4.0, 50.0),
+        &TruthOptions::default(),
+    )
+    .expect("truth");
+    let background = |t: &Truth| t.mask.data.iter().filter(|&&v| v == BACKGROUND).count();
+    let pixels = reference.mask.data.len();
+    assert!(
+        background(&reference) < pixels * 3 / 4,
+        "the reference sees the scene"
+    );
+    for (near, far) in [(4.0, 1e6), (4.0, 1e9), (0.01, 1e8), (1e-6, 50.0)] {
+        let t = truth(
+            &default_with_depth_range(near, far),
+            &TruthOptions::default(),
+        )
+        .expect("truth");
+        let differ = t
+            .mask
+            .data
+            .iter()
+            .zip(&reference.mask.data)
+            .filter(|(a, b)| a != b)
+            .count();
+        assert!(
+            differ * 1000 <= pixels,
+            "near {near}, far {far}: {differ} of {pixels} pixels differ \
+             (background {} vs {})",
+            background(&t),
+            background(&reference)
+        );
+        assert!(t.shadow_rays > 0, "near {near}, far {far}: no shadow rays");
+    }
+}
+
+/// Item: `--light 99` on a scene without lights used to give an all-lit mask.
+#[test]
+fn a_light_past_the_end_of_a_lightless_scene_is_an_error() {
+    let mut scene = Scene::default_scene();
+    scene.image.width = 16;
+    scene.image.height = 16;
+    scene.lights.clear();
+    let options = |light| TruthOptions {
+        light,
+        ..TruthOptions::default()
+    };
+    let err = truth(&scene, &options(99)).expect_err("no light 99");
+    assert_eq!(
+        err,
+        TruthError::NoSuchLight {
+            index: 99,
+            count: 0
+        }
+    );
+    assert_eq!(
+        err.to_string(),
+        "light 99 asked for, but the scene has no lights"
+    );
+    // Light 0 of a lightless scene is what `none` draws: everything visible lit.
+    let lit = truth(&scene, &options(0)).expect("light 0");
+    assert!(lit.mask.data.iter().all(|&v| v == LIT || v == BACKGROUND));
+    scene.lights = Scene::default_scene().lights;
+    scene.lights.push(scene.lights[0]);
+    let err = truth(&scene, &options(2)).expect_err("no light 2");
+    assert!(
+        err.to_string().contains("2 lights (indices 0 to 1)"),
+        "{err}"
+    );
 }
