@@ -11,7 +11,7 @@ use fixedfunc::study::{self, SweepRange, SweepSpec};
 
 use super::error::CliError;
 use super::pipelines::{technique_parser, PipelineChoice};
-use super::progress::StudyBar;
+use super::progress::{Estimate, StudyBar};
 use super::scene_arg;
 use super::shadow_args::ShadowArgs;
 
@@ -61,6 +61,8 @@ pub struct Args {
 
 pub fn run(args: Args) -> Result<(), CliError> {
     let mut scene = scene_arg::load(args.scene.as_deref())?;
+    // The folder must take files before the study runs, not after.
+    report::check_output_dir(&args.out)?;
     ShadowArgs {
         map_size: args.map_size,
         precision: args.precision,
@@ -83,16 +85,16 @@ pub fn run(args: Args) -> Result<(), CliError> {
         backend: args.backend,
         size: args.size,
     };
-    let bar = StudyBar::new();
+    let mut bar = StudyBar::new("sweep-bias", Estimate::FromSecondUnit);
     let sweep = study::sweep(&scene, &spec, |p| bar.update(p));
     bar.finish();
     let sweep = sweep?;
     let written = report::write_sweep(&sweep, &args.out)?;
-    print!("{}", report::sweep_summary(&sweep));
-    println!(
+    out!("{}", report::sweep_summary(&sweep))?;
+    outln!(
         "wrote {} files to {}",
         written.files.len(),
         args.out.display()
-    );
+    )?;
     Ok(())
 }
