@@ -105,6 +105,12 @@ fn wait_for_xvfb(cli: &mut Child) -> (u32, String) {
 /// theirs, and so is the socket then.
 fn assert_gone(pid: u32, display: &str, after: &str) {
     let survived = alive(pid);
+    let state = std::fs::read_to_string(format!("/proc/{pid}/status"))
+        .unwrap_or_default()
+        .lines()
+        .filter(|l| l.starts_with("State:") || l.starts_with("PPid:"))
+        .collect::<Vec<_>>()
+        .join(", ");
     let owner = lock_owner(display);
     let ours = owner == Some(pid);
     let lock_left = ours || (lock_file(display).exists() && owner.is_none());
@@ -115,7 +121,10 @@ fn assert_gone(pid: u32, display: &str, after: &str) {
             libc::kill(pid as i32, libc::SIGTERM);
         }
     }
-    assert!(!survived, "Xvfb {display} (pid {pid}) outlived {after}");
+    assert!(
+        !survived,
+        "Xvfb {display} (pid {pid}, {state}) outlived {after}"
+    );
     assert!(
         !lock_left,
         "{} left behind after {after}",

@@ -20,9 +20,10 @@
 
 use std::ffi::OsString;
 use std::io::Read;
+use std::os::unix::process::CommandExt;
 use std::path::PathBuf;
 use std::process::{Child, Command, Stdio};
-use std::sync::atomic::{AtomicI32, Ordering};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, Weak};
 use std::time::{Duration, Instant};
 
@@ -37,17 +38,19 @@ const LOG_KEEP: usize = 8 * 1024;
 /// Display numbers tried.
 const NUMBERS: std::ops::Range<u32> = 90..200;
 
-/// The pids of the servers this process started and has not stopped (0: a free slot), for
-/// [`stop_private_displays`]. Atomics, so that a signal handler may read them.
-static RUNNING: [AtomicI32; 8] = [const { AtomicI32::new(0) }; 8];
+/// The servers this process started and has not stopped, as `pid << 32 | display number`
+/// (0: a free slot), for [`stop_private_displays`]. Atomics, so that a signal handler may
+/// read them.
+static RUNNING: [AtomicU64; 8] = [const { AtomicU64::new(0) }; 8];
 
 /// The server `start_if_needed` hands out, while one runs.
 static SHARED: Mutex<Weak<Running>> = Mutex::new(Weak::new());
 
-fn remember(pid: i32) {
+fn remember(pid: i32, number: u32) {
+    let entry = (pid as u64) << 32 | u64::from(number);
     for slot in &RUNNING {
         if slot
-            .compare_exchange(0, pid, Ordering::SeqCst, Ordering::SeqCst)
+            .compare_exchange(0, entry, Ordering::SeqCst, Ordering::SeqCst)
             .is_ok()
         {
             return;
@@ -57,17 +60,81 @@ fn remember(pid: i32) {
 
 fn forget(pid: i32) {
     for slot in &RUNNING {
-        let _ = slot.compare_exchange(pid, 0, Ordering::SeqCst, Ordering::SeqCst);
+        let entry = slot.load(Ordering::SeqCst);
+        if entry >> 32 == pid as u64 {
+            let _ = slot.compare_exchange(entry, 0, Ordering::SeqCst, Ordering::SeqCst);
+        }
+    }
+}
+
+/// `PREFIX N SUFFIX` as a NUL-terminated path in `buf`, without allocating.
+fn c_path<'a>(buf: &'a mut [u8; 48], prefix: &[u8], number: u32, suffix: &[u8]) -> &'a [u8] {
+    let mut digits = [0u8; 10];
+    let (mut n, mut k) = (number, 0);
+    loop {
+        digits[k] = b'0' + (n % 10) as u8;
+        k += 1;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    let mut len = 0;
+    let mut put = |b: u8| {
+        buf[len] = b;
+        len += 1;
+    };
+    prefix.iter().for_each(|&b| put(b));
+    digits[..k].iter().rev().for_each(|&b| put(b));
+    suffix.iter().for_each(|&b| put(b));
+    put(0);
+    &buf[..len]
+}
+
+/// Removes the lock file and socket of display `number` when the lock file names `pid`
+/// (a server that died before it could clean up): `open`, `read`, `unlink` only, for
+/// [`stop_private_displays`].
+fn remove_leftovers_in_handler(pid: i32, number: u32) {
+    let mut lock = [0u8; 48];
+    let lock = c_path(&mut lock, b"/tmp/.X", number, b"-lock");
+    let mut text = [0u8; 32];
+    // SAFETY: `lock` is NUL-terminated; `text` is a local buffer of the length given.
+    let read = unsafe {
+        let fd = libc::open(lock.as_ptr().cast(), libc::O_RDONLY);
+        if fd < 0 {
+            return;
+        }
+        let n = libc::read(fd, text.as_mut_ptr().cast(), text.len());
+        libc::close(fd);
+        n
+    };
+    let mut owner: i64 = 0;
+    for &b in &text[..read.max(0) as usize] {
+        if b.is_ascii_digit() {
+            owner = owner * 10 + i64::from(b - b'0');
+        }
+    }
+    if owner == i64::from(pid) {
+        let mut socket = [0u8; 48];
+        let socket = c_path(&mut socket, b"/tmp/.X11-unix/X", number, b"");
+        // SAFETY: both paths are NUL-terminated.
+        unsafe {
+            libc::unlink(socket.as_ptr().cast());
+            libc::unlink(lock.as_ptr().cast());
+        }
     }
 }
 
 /// Stops every X server this process started: SIGTERM, a wait of up to [`STOP_WAIT`] for it
-/// to exit, SIGKILL after that. For signal handlers: it allocates nothing, takes no lock
-/// and calls only async-signal-safe functions (`kill`, `waitpid`, `nanosleep`). A server
-/// stopped here is reaped here; its guard's drop then finds it gone.
+/// to exit, SIGKILL after that; then removes its lock file and socket if it could not (it
+/// was killed, or SIGTERM came before it set up its own handler). For signal handlers: it
+/// allocates nothing, takes no lock and calls only async-signal-safe functions (`kill`,
+/// `waitpid`, `nanosleep`, `open`, `read`, `close`, `unlink`). A server stopped here is
+/// reaped here; its guard's drop then finds it gone.
 pub fn stop_private_displays() {
     for slot in &RUNNING {
-        let pid = slot.swap(0, Ordering::SeqCst);
+        let entry = slot.swap(0, Ordering::SeqCst);
+        let (pid, number) = ((entry >> 32) as i32, entry as u32);
         if pid <= 0 {
             continue;
         }
@@ -92,6 +159,36 @@ pub fn stop_private_displays() {
                 libc::kill(pid, libc::SIGKILL);
                 libc::waitpid(pid, &mut status, 0);
             }
+        }
+        remove_leftovers_in_handler(pid, number);
+    }
+}
+
+/// Blocks SIGINT, SIGTERM, SIGHUP and SIGPIPE in this thread until dropped (a pending one
+/// is delivered then).
+struct BlockEndingSignals(libc::sigset_t);
+
+impl BlockEndingSignals {
+    fn new() -> BlockEndingSignals {
+        // SAFETY: the sets are initialised by sigemptyset before use.
+        unsafe {
+            let mut set: libc::sigset_t = std::mem::zeroed();
+            let mut old: libc::sigset_t = std::mem::zeroed();
+            libc::sigemptyset(&mut set);
+            for signal in [libc::SIGINT, libc::SIGTERM, libc::SIGHUP, libc::SIGPIPE] {
+                libc::sigaddset(&mut set, signal);
+            }
+            libc::pthread_sigmask(libc::SIG_BLOCK, &set, &mut old);
+            BlockEndingSignals(old)
+        }
+    }
+}
+
+impl Drop for BlockEndingSignals {
+    fn drop(&mut self) {
+        // SAFETY: restores the mask saved by `new`.
+        unsafe {
+            libc::pthread_sigmask(libc::SIG_SETMASK, &self.0, std::ptr::null_mut());
         }
     }
 }
@@ -174,7 +271,21 @@ impl VirtualDisplay {
 
     fn start_on(number: u32) -> Result<VirtualDisplay, Attempt> {
         let display = format!(":{number}");
-        let mut child = Command::new("Xvfb")
+        // Signals that end the process wait until the server is in `RUNNING`, so that the
+        // handler stops it even when one comes while the server starts up (this thread's
+        // mask; the child's is emptied before exec, or Xvfb would not hear SIGTERM).
+        let blocked = BlockEndingSignals::new();
+        let mut command = Command::new("Xvfb");
+        // SAFETY: the closure calls only sigemptyset and sigprocmask, async-signal-safe.
+        unsafe {
+            command.pre_exec(|| {
+                let mut empty: libc::sigset_t = std::mem::zeroed();
+                libc::sigemptyset(&mut empty);
+                libc::sigprocmask(libc::SIG_SETMASK, &empty, std::ptr::null_mut());
+                Ok(())
+            });
+        }
+        let child = command
             .args([
                 display.as_str(),
                 "-screen",
@@ -194,9 +305,11 @@ impl VirtualDisplay {
                          or set DISPLAY"
                     ),
                 })
-            })?;
+            });
+        let mut child = child?;
         let pid = child.id() as i32;
-        remember(pid);
+        remember(pid, number);
+        drop(blocked);
         let log = keep_log(child.stderr.take().expect("stderr is piped"));
         let running = Running {
             child,
@@ -217,7 +330,11 @@ impl VirtualDisplay {
             if let Ok(Some(status)) = running.child.try_wait() {
                 forget(pid);
                 let said = running.said();
-                if lock_owner(number).is_some_and(|owner| owner != pid) {
+                // Another server has the number (or had it a moment ago: it may be gone
+                // already, with its lock file).
+                if lock_owner(number).is_some_and(|owner| owner != pid)
+                    || said.contains("Server is already active")
+                {
                     return Err(Attempt::Taken);
                 }
                 return Err(Attempt::Failed(GpuError::Window {
@@ -334,5 +451,24 @@ impl Drop for Running {
         }
         self.remove_leftovers(pid);
         self.put_display_back();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paths_for_the_signal_handler_are_built_without_allocating() {
+        let mut buf = [0u8; 48];
+        assert_eq!(
+            c_path(&mut buf, b"/tmp/.X", 123, b"-lock"),
+            b"/tmp/.X123-lock\0"
+        );
+        let mut buf = [0u8; 48];
+        assert_eq!(
+            c_path(&mut buf, b"/tmp/.X11-unix/X", 0, b""),
+            b"/tmp/.X11-unix/X0\0"
+        );
     }
 }
