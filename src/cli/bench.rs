@@ -8,9 +8,9 @@ use super::error::CliError;
 
 /// The most repetitions `--repeats` takes. A median of 1000 runs moves by less than the
 /// machine's own noise when more are added, so more would only lengthen the run, without
-/// a word: the techniques group renders every technique on both paths once per repeat
-/// (1000 repeats take about as many seconds), and the truth group ray-casts the default
-/// scene and a million triangles per repeat (minutes each at 1000).
+/// a word: each repeat renders every technique on both paths (the techniques group),
+/// creates every backend's contexts (context) and ray-casts the default scene and a million
+/// triangles (truth).
 pub const MAX_REPEATS: usize = 1000;
 
 /// `--repeats N`: 1 to [`MAX_REPEATS`]. Zero is refused rather than run once.
