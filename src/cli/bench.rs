@@ -6,6 +6,28 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use super::error::CliError;
 
+/// The most repetitions `--repeats` takes. A median of 1000 runs moves by less than the
+/// machine's own noise when more are added, so more would only lengthen the run, without
+/// a word: each repeat renders every technique on both paths (the techniques group),
+/// creates every backend's contexts (context) and ray-casts the default scene and a million
+/// triangles (truth).
+pub const MAX_REPEATS: usize = 1000;
+
+/// `--repeats N`: 1 to [`MAX_REPEATS`]. Zero is refused rather than run once.
+pub fn parse_repeats(text: &str) -> Result<usize, String> {
+    let n: usize = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a whole number"))?;
+    match n {
+        0 => Err("0 repeats measure nothing: give 1 or more".to_string()),
+        n if n > MAX_REPEATS => Err(format!(
+            "at most {MAX_REPEATS} repeats: a median of {MAX_REPEATS} runs is already as              steady as the machine, and more would only make the run longer"
+        )),
+        n => Ok(n),
+    }
+}
+
 pub fn run(only: Option<BenchGroup>, repeats: usize, json: bool) -> Result<(), CliError> {
     let groups: Vec<BenchGroup> = only.map_or(BenchGroup::ALL.to_vec(), |g| vec![g]);
     for group in groups {
@@ -43,27 +65,30 @@ fn run_context(repeats: usize, json: bool) -> Result<(), CliError> {
     }
     bar.finish_and_clear();
     if json {
-        println!("{}", serde_json::to_string_pretty(&rows)?);
+        outln!("{}", serde_json::to_string_pretty(&rows)?)?;
         return Ok(());
     }
-    println!(
+    outln!(
         "context: {} repeats each; milliseconds, median [min–max]",
         repeats.max(1)
-    );
-    println!(
+    )?;
+    outln!(
         "{:<8} {:<14} {:>26} {:>26}",
-        "backend", "profile", "create", "first read-back frame"
-    );
+        "backend",
+        "profile",
+        "create",
+        "first read-back frame"
+    )?;
     for r in &rows {
         let fmt =
             |s: &fixedfunc::stats::Summary| format!("{:.2} [{:.2}–{:.2}]", s.median, s.min, s.max);
-        println!(
+        outln!(
             "{:<8} {:<14} {:>26} {:>26}",
             r.backend.name(),
             r.profile.name(),
             fmt(&r.create_ms),
             fmt(&r.first_frame_ms)
-        );
+        )?;
     }
     Ok(())
 }
@@ -78,22 +103,27 @@ fn run_pipeline(frames: usize, json: bool) -> Result<(), CliError> {
     let rows = pipeline::measure(Backend::Egl, frames, || bar.inc(1))?;
     bar.finish_and_clear();
     if json {
-        println!("{}", serde_json::to_string_pretty(&rows)?);
+        outln!("{}", serde_json::to_string_pretty(&rows)?)?;
         return Ok(());
     }
-    println!(
+    outln!(
         "pipeline: one frame of the default scene (none), {frames} frames each, interleaved; \
          medians of frames 2..N [min–max]"
-    );
-    println!(
+    )?;
+    outln!(
         "{:<8} {:>24} {:>26} {:>9} {:>12} {:>12}",
-        "path", "frame ms", "submit µs per draw", "programs", "after frame1", "sent/skipped"
-    );
+        "path",
+        "frame ms",
+        "submit µs per draw",
+        "programs",
+        "after frame1",
+        "sent/skipped"
+    )?;
     for r in &rows {
         let fmt = |s: &fixedfunc::stats::Summary, d: usize| {
             format!("{:.d$} [{:.d$}–{:.d$}]", s.median, s.min, s.max)
         };
-        println!(
+        outln!(
             "{:<8} {:>24} {:>26} {:>9} {:>12} {:>12}",
             format!("{:?}", r.pipeline).to_lowercase(),
             fmt(&r.frame_ms, 2),
@@ -104,13 +134,13 @@ fn run_pipeline(frames: usize, json: bool) -> Result<(), CliError> {
                 "{}/{}",
                 r.counters.state_calls_sent, r.counters.state_calls_skipped
             )
-        );
+        )?;
     }
     if let [e, n] = rows.as_slice() {
-        println!(
+        outln!(
             "emulated / native frame time: {:.2}×",
             e.frame_ms.median / n.frame_ms.median
-        );
+        )?;
     }
     Ok(())
 }
@@ -136,19 +166,25 @@ fn run_truth(runs: usize, json: bool) -> Result<(), CliError> {
             .iter()
             .map(|(n, t)| serde_json::json!({ "scene": n, "result": t }))
             .collect();
-        println!("{}", serde_json::to_string_pretty(&v)?);
+        outln!("{}", serde_json::to_string_pretty(&v)?)?;
         return Ok(());
     }
-    println!(
+    outln!(
         "truth: median run of {runs}, {} threads",
         rayon::current_num_threads()
-    );
-    println!(
+    )?;
+    outln!(
         "{:<15} {:>10} {:>10} {:>12} {:>16} {:>16} {:>10}",
-        "scene", "size", "triangles", "BVH ms", "primary rays/s", "shadow rays/s", "total ms"
-    );
+        "scene",
+        "size",
+        "triangles",
+        "BVH ms",
+        "primary rays/s",
+        "shadow rays/s",
+        "total ms"
+    )?;
     for (name, t) in &rows {
-        println!(
+        outln!(
             "{:<15} {:>10} {:>10} {:>12.1} {:>14.1} M {:>14.1} M {:>10.1}",
             name,
             format!("{}x{}", t.width, t.height),
@@ -157,7 +193,7 @@ fn run_truth(runs: usize, json: bool) -> Result<(), CliError> {
             t.primary_rays_per_s / 1e6,
             t.shadow_rays_per_s / 1e6,
             t.total_ms
-        );
+        )?;
     }
     Ok(())
 }
@@ -172,14 +208,14 @@ fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
     bar.finish_and_clear();
     if json {
         let value = serde_json::json!({ "rows": rows, "skipped": skipped });
-        println!("{}", serde_json::to_string_pretty(&value)?);
+        outln!("{}", serde_json::to_string_pretty(&value)?)?;
         return Ok(());
     }
-    println!(
+    outln!(
         "techniques: default scene, 512² image, 512² map; {} steady frames, interleaved; ms median [min–max]; the split from frames that make their maps; `static`: the steady frame when maps are made once",
         repeats.max(1)
-    );
-    println!(
+    )?;
+    outln!(
         "{:<22} {:<8} {:>8} {:>22} {:>7} {:>9} {:>7} {:>7} {:>8} {:>7} {:>6} {:>8}",
         "technique",
         "path",
@@ -193,13 +229,13 @@ fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
         "×none",
         "passes",
         "programs"
-    );
+    )?;
     let opt = |s: Option<fixedfunc::stats::Summary>| {
         s.map_or("—".to_string(), |s| format!("{:.2}", s.median))
     };
     let ratio = |v: Option<f64>| v.map_or("—".to_string(), |v| format!("{v:.2}"));
     for r in &rows {
-        println!(
+        outln!(
             "{:<22} {:<8} {:>8.2} {:>22} {:>7} {:>9} {:>7.2} {:>7} {:>8} {:>7} {:>6} {:>8}",
             r.technique,
             fixedfunc::render::pipeline_name(r.pipeline),
@@ -216,15 +252,15 @@ fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
             ratio(r.vs_none),
             r.passes,
             r.programs
-        );
+        )?;
     }
     for s in &skipped {
-        println!(
+        outln!(
             "skipped: {} on {}: {}",
             s.technique,
             fixedfunc::render::pipeline_name(s.pipeline),
             s.reason
-        );
+        )?;
     }
     Ok(())
 }

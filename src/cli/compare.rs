@@ -13,7 +13,7 @@ use fixedfunc::vocab::{Named, TechniqueId};
 
 use super::error::CliError;
 use super::pipelines::{technique_parser, PipelineChoice};
-use super::progress::StudyBar;
+use super::progress::{Estimate, StudyBar};
 use super::scene_arg;
 use super::shadow_args::ShadowArgs;
 
@@ -46,6 +46,8 @@ pub struct Args {
 pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
     let mut scene = scene_arg::load(args.scene.as_deref(), limits)?;
     args.shadow.apply(&mut scene);
+    // The folder must take files before the study runs, not after.
+    report::check_output_dir(&args.out)?;
     let techniques = if args.techniques.is_empty() {
         TechniqueId::all()
     } else {
@@ -64,19 +66,19 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
         frames: args.frames,
         size: args.size,
     };
-    let bar = StudyBar::new();
+    let mut bar = StudyBar::new("compare", Estimate::Never);
     let comparison = study::compare(&scene, &spec, |p| bar.update(p));
     bar.finish();
     let comparison = comparison?;
     let name = scene_arg::name(args.scene.as_deref());
     let written = report::write_comparison(&comparison, &name, &args.out)?;
     let rows = report::ResultRow::all(&comparison.rows);
-    print!("{}", report::comparison_table(&rows));
-    print!("{}", report::phase_lines(&comparison));
-    println!(
+    out!("{}", report::comparison_table(&rows))?;
+    out!("{}", report::phase_lines(&comparison))?;
+    outln!(
         "report {} ({} files)",
         args.out.join("report.html").display(),
         written.files.len()
-    );
+    )?;
     Ok(())
 }

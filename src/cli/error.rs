@@ -36,10 +36,12 @@ pub enum CliError {
     Study(#[from] fixedfunc::study::StudyError),
     #[error(transparent)]
     Report(#[from] fixedfunc::report::ReportError),
-    #[error("cannot write {path}: {source}")]
-    WriteImage {
+    #[error("cannot write to standard output: {0}")]
+    Stdout(#[source] std::io::Error),
+    #[error("{first} and {second} both name {path}: one file would overwrite the other")]
+    SameFile {
+        first: &'static str,
+        second: String,
         path: PathBuf,
-        #[source]
-        source: image::ImageError,
     },
 }

@@ -73,10 +73,10 @@ pub fn run(only: Option<Backend>, json: bool) -> Result<(), CliError> {
         });
     }
     if json {
-        println!("{}", serde_json::to_string_pretty(&reports)?);
+        outln!("{}", serde_json::to_string_pretty(&reports)?)?;
     } else {
         for report in &reports {
-            print_text(report);
+            print_text(report)?;
         }
     }
     match (only, reports.first()) {
@@ -97,37 +97,37 @@ pub fn run(only: Option<Backend>, json: bool) -> Result<(), CliError> {
     }
 }
 
-fn print_text(report: &BackendReport) {
+fn print_text(report: &BackendReport) -> Result<(), CliError> {
     let status = if report.works() {
         "works"
     } else {
         "UNAVAILABLE"
     };
-    println!("{}: {status}", report.backend);
+    outln!("{}: {status}", report.backend)?;
     if let Some(note) = &report.note {
-        println!("  note: {note}");
+        outln!("  note: {note}")?;
     }
     for c in &report.contexts {
         match &c.result {
-            ProfileResult::Error(e) => println!(
+            ProfileResult::Error(e) => outln!(
                 "  {:<14} error: {}",
                 c.profile.name(),
                 e.replace('\n', "\n    ")
-            ),
-            ProfileResult::Context(i) => print_context(i),
+            )?,
+            ProfileResult::Context(i) => print_context(i)?,
         }
     }
-    println!();
+    outln!()
 }
 
-fn print_context(i: &ContextInfo) {
-    println!("  {:<14} via {}", i.profile.name(), i.path);
-    println!("    vendor       {}", i.vendor);
-    println!("    renderer     {}", i.renderer);
-    println!("    version      {}", i.version);
-    println!("    GLSL         {}", i.glsl_version);
+fn print_context(i: &ContextInfo) -> Result<(), CliError> {
+    outln!("  {:<14} via {}", i.profile.name(), i.path)?;
+    outln!("    vendor       {}", i.vendor)?;
+    outln!("    renderer     {}", i.renderer)?;
+    outln!("    version      {}", i.version)?;
+    outln!("    GLSL         {}", i.glsl_version)?;
     let l = &i.limits;
-    println!(
+    outln!(
         "    limits       texture {}, renderbuffer {}, viewport {}x{}, image units {}, fixed-function units {}",
         l.max_texture_size,
         l.max_renderbuffer_size,
@@ -136,7 +136,7 @@ fn print_context(i: &ContextInfo) {
         l.max_texture_image_units,
         l.max_fixed_function_units
             .map_or("none (core profile)".to_string(), |n| n.to_string()),
-    );
+    )?;
     let depth: Vec<String> = i
         .depth
         .iter()
@@ -152,10 +152,10 @@ fn print_context(i: &ContextInfo) {
             }
         })
         .collect();
-    println!("    depth/stencil bits obtained: {}", depth.join(", "));
+    outln!("    depth/stencil bits obtained: {}", depth.join(", "))?;
     if i.profile == Profile::Core33 {
-        println!("    extensions   none needed: the emulated pipeline builds on GLSL 3.30 alone");
-        return;
+        outln!("    extensions   none needed: the emulated pipeline builds on GLSL 3.30 alone")?;
+        return Ok(());
     }
     let present: Vec<&str> = i
         .extensions
@@ -169,13 +169,13 @@ fn print_context(i: &ContextInfo) {
         .filter(|e| !e.present)
         .map(|e| e.name)
         .collect();
-    println!("    shadow extensions present: {}", present.join(" "));
-    println!(
+    outln!("    shadow extensions present: {}", present.join(" "))?;
+    outln!(
         "    shadow extensions absent:  {}",
         if absent.is_empty() {
             "none".to_string()
         } else {
             absent.join(" ")
         }
-    );
+    )
 }

@@ -2,11 +2,29 @@
 //! Errors from the layers below arrive here and become a message and an exit code; nothing
 //! below this module exits the process.
 
+/// `print!` that returns a failed write as an error (see `output`).
+macro_rules! out {
+    ($($arg:tt)*) => {
+        $crate::cli::output::write(format_args!($($arg)*), false)
+    };
+}
+
+/// `println!` that returns a failed write as an error (see `output`).
+macro_rules! outln {
+    () => {
+        $crate::cli::output::write(format_args!(""), true)
+    };
+    ($($arg:tt)*) => {
+        $crate::cli::output::write(format_args!($($arg)*), true)
+    };
+}
+
 mod bench;
 mod compare;
 mod error;
 mod info;
 mod named;
+mod output;
 mod pipelines;
 mod progress;
 mod render;
@@ -15,10 +33,12 @@ mod scene_arg;
 mod script_io;
 mod shaders;
 mod shadow_args;
+pub mod signals;
 mod sweep_bias;
 mod truth;
 
 use fixedfunc::vocab::{PipelineKind, TechniqueId};
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -146,8 +166,8 @@ enum Command {
         /// Only this group (default: all).
         #[arg(long, value_parser = named::named::<BenchGroup>())]
         only: Option<BenchGroup>,
-        /// Repetitions per measurement.
-        #[arg(long, default_value_t = 10)]
+        /// Repetitions per measurement, 1 to 1000 (see `bench::MAX_REPEATS`).
+        #[arg(long, default_value_t = 10, value_parser = bench::parse_repeats)]
         repeats: usize,
         /// Print JSON instead of a table.
         #[arg(long)]
@@ -231,10 +251,11 @@ pub fn run() -> ExitCode {
             limits,
         ),
     };
-    match result {
+    match result.and_then(|()| output::flush()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("fixedfunc: {error}");
+            // Nowhere is left to report a failure to write this.
+            let _ = writeln!(std::io::stderr(), "fixedfunc: {error}");
             ExitCode::FAILURE
         }
     }

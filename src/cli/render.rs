@@ -45,6 +45,14 @@ pub struct Args {
 pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
     let mut scene = scene_arg::load(args.scene.as_deref(), limits)?;
     args.shadow.apply(&mut scene);
+    let mut outputs = vec![
+        ("--out", args.out.as_path()),
+        ("--mask", args.mask.as_path()),
+    ];
+    if let Some(path) = &args.depth_map {
+        outputs.push(("--depth-map", path.as_path()));
+    }
+    scene_arg::check_png_outputs(&outputs)?;
     let options = RenderOptions {
         backend: args.backend,
         pipeline: args.pipeline,
@@ -97,26 +105,26 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
                 map_file(path, label)
             };
             scene_arg::save(picture, &file)?;
-            println!("light's map ({label}) {}", file.display());
+            outln!("light's map ({label}) {}", file.display())?;
         }
         if pictures.is_empty() {
-            println!(
+            outln!(
                 "`{}` makes no light's map: --depth-map ignored",
                 outcome.technique
-            );
+            )?;
         }
     }
-    println!("{}", outcome.figures());
+    outln!("{}", outcome.figures())?;
     for note in &outcome.notes {
-        println!("note: {note}");
+        outln!("note: {note}")?;
     }
-    println!(
+    outln!(
         "image {} · mask {} · {}x{} via {}",
         args.out.display(),
         args.mask.display(),
         outcome.image.width(),
         outcome.image.height(),
         outcome.context_path
-    );
+    )?;
     Ok(())
 }

@@ -21,6 +21,7 @@ pub fn run(
     out: &Path,
 ) -> Result<(), CliError> {
     let commands = script_io::load_lines(file)?;
+    super::scene_arg::check_png_outputs(&[("--out", out)])?;
     let _display = if backend == Backend::Window {
         VirtualDisplay::start_if_needed()?
     } else {
@@ -47,9 +48,9 @@ pub fn run(
         }
     }
     let image = target.read_color(&ctx)?;
-    super::scene_arg::save(&image, &out.to_path_buf())?;
+    super::scene_arg::save(&image, out)?;
     let c = p.counters();
-    println!(
+    outln!(
         "replay {}: {} commands, {} draws, {} programs compiled, {} state calls sent / {} skipped → {}",
         file.display(),
         c.commands,
@@ -58,7 +59,7 @@ pub fn run(
         c.state_calls_sent,
         c.state_calls_skipped,
         out.display()
-    );
+    )?;
     if errors > 0 {
         eprintln!("{errors} GL error(s) recorded (each named above with its line)");
     }

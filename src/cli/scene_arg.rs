@@ -1,8 +1,10 @@
-//! What `render` and `truth` share: the optional scene argument, `--size`, image output.
+//! What `render` and `truth` share: the optional scene argument, `--size`, image output
+//! (checked before the work, written so that a failure is reported).
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use fixedfunc::render::ImageSize;
+use fixedfunc::report;
 use fixedfunc::scene::{Limits, Scene};
 
 use super::error::CliError;
@@ -67,15 +69,34 @@ pub fn name(path: Option<&Path>) -> String {
     path.map_or("the default scene".to_string(), |p| p.display().to_string())
 }
 
-/// Saves an image as PNG (the format follows the extension).
-pub fn save<P, C>(image: &image::ImageBuffer<P, C>, path: &PathBuf) -> Result<(), CliError>
+/// Saves an image as PNG: encoded in memory, written to a temporary name, synced and
+/// renamed (`report::save_png`); a failure is an error, never a file reported as written.
+pub fn save<P, C>(image: &image::ImageBuffer<P, C>, path: &Path) -> Result<(), CliError>
 where
     P: image::PixelWithColorType,
     [P::Subpixel]: image::EncodableLayout,
     C: std::ops::Deref<Target = [P::Subpixel]>,
 {
-    image.save(path).map_err(|source| CliError::WriteImage {
-        path: path.clone(),
-        source,
-    })
+    Ok(report::save_png(image, path)?)
+}
+
+/// Refuses, before any work, PNG outputs that cannot be written (see
+/// `report::check_output`), that are not named `.png`, or two options that name one file.
+/// `outputs` pairs each option (`--out`) with its path.
+pub fn check_png_outputs(outputs: &[(&'static str, &Path)]) -> Result<(), CliError> {
+    for (i, &(flag, path)) in outputs.iter().enumerate() {
+        report::check_png_name(path)?;
+        report::check_output(path)?;
+        if let Some(&(first, _)) = outputs[..i]
+            .iter()
+            .find(|(_, earlier)| report::same_file(earlier, path))
+        {
+            return Err(CliError::SameFile {
+                first,
+                second: flag.to_string(),
+                path: path.to_path_buf(),
+            });
+        }
+    }
+    Ok(())
 }

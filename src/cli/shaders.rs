@@ -58,12 +58,12 @@ pub fn run(
         None => scene_frame(scene, technique, limits)?,
     };
     let keys = distinct_keys(&commands);
-    println!("{label}: {} distinct program(s)", keys.len());
+    outln!("{label}: {} distinct program(s)", keys.len())?;
     for (i, key) in keys.iter().enumerate() {
         let program = shadergen::generate(key);
-        println!("\n=== program {i} ===\n--- key ---\n{key:#?}");
-        println!("--- vertex shader ---\n{}", program.vertex);
-        println!("--- fragment shader ---\n{}", program.fragment);
+        outln!("\n=== program {i} ===\n--- key ---\n{key:#?}")?;
+        outln!("--- vertex shader ---\n{}", program.vertex)?;
+        outln!("--- fragment shader ---\n{}", program.fragment)?;
     }
     Ok(())
 }

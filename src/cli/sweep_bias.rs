@@ -12,7 +12,7 @@ use fixedfunc::study::{self, SweepRange, SweepSpec};
 
 use super::error::CliError;
 use super::pipelines::{technique_parser, PipelineChoice};
-use super::progress::StudyBar;
+use super::progress::{Estimate, StudyBar};
 use super::scene_arg;
 use super::shadow_args::ShadowArgs;
 
@@ -62,6 +62,8 @@ pub struct Args {
 
 pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
     let mut scene = scene_arg::load(args.scene.as_deref(), limits)?;
+    // The folder must take files before the study runs, not after.
+    report::check_output_dir(&args.out)?;
     ShadowArgs {
         map_size: args.map_size,
         precision: args.precision,
@@ -84,16 +86,16 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
         backend: args.backend,
         size: args.size,
     };
-    let bar = StudyBar::new();
+    let mut bar = StudyBar::new("sweep-bias", Estimate::FromSecondUnit);
     let sweep = study::sweep(&scene, &spec, |p| bar.update(p));
     bar.finish();
     let sweep = sweep?;
     let written = report::write_sweep(&sweep, &args.out)?;
-    print!("{}", report::sweep_summary(&sweep));
-    println!(
+    out!("{}", report::sweep_summary(&sweep))?;
+    outln!(
         "wrote {} files to {}",
         written.files.len(),
         args.out.display()
-    );
+    )?;
     Ok(())
 }

@@ -22,6 +22,11 @@ pub struct Args {
 
 pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
     let scene = scene_arg::load(args.scene.as_deref(), limits)?;
+    let mut outputs = vec![("--mask", args.mask.as_path())];
+    if let Some(path) = &args.visibility {
+        outputs.push(("--visibility", path.as_path()));
+    }
+    scene_arg::check_png_outputs(&outputs)?;
     let scene = render::apply_overrides(&scene, args.size, None);
     render::Footprint::of(&scene, 0)
         .check(&scene.limits)
@@ -48,7 +53,7 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
     }
     let t = &truth.timings;
     let s = |d: Duration| format!("{:.3}", d.as_secs_f64());
-    println!(
+    outln!(
         "truth: {}x{}, {} triangles, {} primary + {} shadow rays in {} s \
          (BVH {} s, primary {} s, shadow {} s) → {}{}",
         truth.mask.width,
@@ -64,6 +69,6 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
         args.visibility
             .as_ref()
             .map_or(String::new(), |p| format!(", visibility → {}", p.display())),
-    );
+    )?;
     Ok(())
 }

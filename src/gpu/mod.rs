@@ -39,7 +39,7 @@ pub use info::{ContextInfo, DepthReport, ExtensionReport, Limits, SHADOW_EXTENSI
 pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8};
 pub use target::{RenderTarget, TargetSpec};
 pub use trivial::FlatProgram;
-pub use xvfb::VirtualDisplay;
+pub use xvfb::{stop_private_displays, VirtualDisplay};
 
 /// Which library provides the context.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]

@@ -1,7 +1,9 @@
 //! The files of a comparison, written into one folder: per measured row its image, mask
 //! and error image; the truth mask; `results.csv` and `results.json`;
 //! `accuracy_vs_time.svg`/`.png`; `contact_sheet.png`; and last `report.html`, built from
-//! the list of what was written.
+//! the list of what was written. A `report.html` already in the folder is removed before
+//! the first new file is written: a run stopped half-way leaves new pictures and no page,
+//! never an old page that links new pictures under its old names.
 
 use std::path::Path;
 
@@ -23,6 +25,7 @@ pub fn write_comparison(
     dir: &Path,
 ) -> Result<Written, ReportError> {
     ensure_dir(dir)?;
+    remove_old_page(&dir.join(HTML))?;
     let rows = ResultRow::all(&c.rows);
     let mut written = Written::default();
     let truth_rgb = pictures::mask_rgb(&c.truth.mask);
@@ -76,6 +79,17 @@ pub fn write_comparison(
     let page = html::page(c, &rows, scene_name, &scene_facts(&c.scene), &written);
     write_text(dir, HTML, &page, &mut written)?;
     Ok(written)
+}
+
+/// Removes the page of an earlier run, if there is one.
+fn remove_old_page(page: &Path) -> Result<(), ReportError> {
+    match std::fs::remove_file(page) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(ReportError::Write {
+            path: page.to_path_buf(),
+            source: e,
+        }),
+        _ => Ok(()),
+    }
 }
 
 const CSV_HEADER: [&str; 26] = [

@@ -135,7 +135,13 @@ pub fn heatmap(
         title: title(sweep, surface),
     };
     let err = super::plot_error(svg);
-    draw(SVGBackend::new(svg, SIZE).into_drawing_area(), &grid).map_err(|e| err(&e))?;
+    let mut text = String::new();
+    draw(
+        SVGBackend::with_string(&mut text, SIZE).into_drawing_area(),
+        &grid,
+    )
+    .map_err(|e| err(&e))?;
+    super::files::write_file(svg, text.as_bytes())?;
     let mut png = RgbImage::new(SIZE.0, SIZE.1);
     draw(
         BitMapBackend::with_buffer(&mut png, SIZE).into_drawing_area(),

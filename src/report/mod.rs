@@ -12,12 +12,18 @@
 //! CSS, no scripts): it opens from disk in any browser. [`Written`] lists every file, and
 //! the page is built from that list's names.
 //!
+//! **Nothing lost, nothing half-written.** Every file goes through [`files`]: written to a
+//! temporary name, synced and renamed when complete; a failed write is an error, never a
+//! file reported as written. A comparison's page is written last and the old page is
+//! removed first, so a folder never holds a page that links pictures of another run.
+//!
 //! **Text in bitmaps** needs a font: plotters draws it with ab_glyph from a TrueType file
 //! found on the system ([`font`]), so no fontconfig or freetype is linked.
 
 mod compare_files;
 mod csv;
 mod file_names;
+pub mod files;
 pub mod font;
 mod heatmap;
 mod html;
@@ -29,6 +35,7 @@ mod sweep_files;
 mod table;
 
 pub use compare_files::write_comparison;
+pub use files::{check_output, check_output_dir, check_png_name, same_file, save_png, write_file};
 pub use light_map::{light_map_pictures, pseudo_colour};
 pub use pictures::{error_image, ErrorColours, ERROR_COLOURS};
 pub use rows::{pareto_front, Measured, ResultRow};
@@ -58,6 +65,12 @@ pub enum ReportError {
         #[source]
         source: image::ImageError,
     },
+    #[error("cannot write {path}: it is a folder")]
+    IsFolder { path: PathBuf },
+    #[error("cannot write {path}: the file is read-only")]
+    ReadOnly { path: PathBuf },
+    #[error("{path}: only PNG images are written; give the file a .png name")]
+    NotPng { path: PathBuf },
     #[error("cannot draw {path}: {message}")]
     Plot { path: PathBuf, message: String },
     #[error("JSON: {0}")]
@@ -95,7 +108,7 @@ fn ensure_dir(dir: &Path) -> Result<(), ReportError> {
     })
 }
 
-/// Writes `text` to `dir/name` and records it.
+/// Writes `text` to `dir/name` ([`files::write_file`]) and records it.
 fn write_text(
     dir: &Path,
     name: &str,
@@ -103,15 +116,12 @@ fn write_text(
     written: &mut Written,
 ) -> Result<(), ReportError> {
     let path = dir.join(name);
-    std::fs::write(&path, text).map_err(|source| ReportError::Write {
-        path: path.clone(),
-        source,
-    })?;
+    files::write_file(&path, text.as_bytes())?;
     written.push(path);
     Ok(())
 }
 
-/// Saves a PNG to `dir/name` and records it.
+/// Saves a PNG to `dir/name` ([`files::save_png`]) and records it.
 fn write_png<P, C>(
     dir: &Path,
     name: &str,
@@ -124,11 +134,7 @@ where
     C: std::ops::Deref<Target = [P::Subpixel]>,
 {
     let path = dir.join(name);
-    img.save_with_format(&path, image::ImageFormat::Png)
-        .map_err(|source| ReportError::Image {
-            path: path.clone(),
-            source,
-        })?;
+    files::save_png(img, &path)?;
     written.push(path);
     Ok(())
 }

@@ -161,7 +161,12 @@ pub fn compare(
     let mut done = 0;
     let mut step = |what: String| {
         done += 1;
-        progress(Progress { done, total, what });
+        progress(Progress {
+            done,
+            total,
+            unit: "steps",
+            what,
+        });
     };
 
     let base = RenderOptions {

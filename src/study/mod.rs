@@ -54,14 +54,16 @@ pub enum StudyError {
     Empty,
 }
 
-/// Progress of a study, for progress bars.
+/// Progress of a study, for progress bars and progress lines.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Progress {
-    /// Steps done so far.
+    /// Units of work done so far.
     pub done: u64,
-    /// Steps in the whole study.
+    /// Units of work in the whole study.
     pub total: u64,
-    /// What the step just finished was.
+    /// What a unit is, plural: `cells` (a sweep), `steps` (a comparison).
+    pub unit: &'static str,
+    /// What was just finished.
     pub what: String,
 }
 

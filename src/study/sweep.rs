@@ -107,12 +107,19 @@ pub fn sweep(
             })
         })
         .collect();
+    // The work is counted in cells: the truth before them is reported as cell 0 done, and
+    // a surface's set-up is part of its first cell.
     let surfaces_n = (spec.depths.len() * spec.pipelines.len()) as u64;
-    let total = 1 + surfaces_n * (1 + offsets.len() as u64);
+    let total = surfaces_n * offsets.len() as u64;
     let mut done = 0;
-    let mut step = |what: String| {
-        done += 1;
-        progress(Progress { done, total, what });
+    let mut step = |cells: u64, what: String| {
+        done += cells;
+        progress(Progress {
+            done,
+            total,
+            unit: "cells",
+            what,
+        });
     };
 
     let mut scene = render::apply_overrides(scene, spec.size, Some(spec.technique));
@@ -127,7 +134,7 @@ pub fn sweep(
     let truth_start = Instant::now();
     let truth = truth::truth(&scene, &base.truth)?;
     let truth_ms = ms_since(truth_start);
-    step("ground truth".to_string());
+    step(0, "ground truth".to_string());
 
     let mut surfaces = Vec::new();
     for &depth in &spec.depths {
@@ -139,8 +146,10 @@ pub fn sweep(
                 ..base.clone()
             };
             let label = format!("{} bits ({})", depth.bits(), pipeline_name(pipeline));
+            let mut ran = 0;
             let result = match grid(&scene, &options, &offsets, &truth, |i| {
-                step(format!("cell {}/{} at {label}", i + 1, offsets.len()))
+                ran = i + 1;
+                step(1, format!("cell {}/{} at {label}", i + 1, offsets.len()));
             }) {
                 Ok(r) => r,
                 Err(e) => match not_applicable(&e) {
@@ -154,13 +163,10 @@ pub fn sweep(
                     }
                 },
             };
-            if matches!(result, SurfaceResult::Skipped { .. }) {
+            if let SurfaceResult::Skipped { .. } = result {
                 // Count the cells that will not run, so the bar still ends full.
-                for _ in 0..offsets.len() {
-                    step(format!("skipped {label}"));
-                }
+                step((offsets.len() - ran) as u64, format!("skipped {label}"));
             }
-            step(format!("finished {label}"));
             surfaces.push(Surface {
                 depth,
                 pipeline,
