@@ -44,7 +44,9 @@ export RUSTFLAGS="--cfg fuzzing -Cpasses=sancov-module \
   -Cllvm-args=-sanitizer-coverage-inline-8bit-counters \
   -Cllvm-args=-sanitizer-coverage-pc-table \
   -Cllvm-args=-sanitizer-coverage-trace-compares"
-cargo build --release --locked --target "$host" --bins
+# Not --locked: fuzz/Cargo.lock pins what it lists, and a dependency the main crate gained
+# since is resolved rather than failing the build.
+cargo build --release --target "$host" --bins
 
 for target in "${targets[@]}"; do
   case "$target" in
