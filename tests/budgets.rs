@@ -278,7 +278,9 @@ fn a_raised_budget_is_accepted() {
     assert!(out.status.success(), "{}", text(&out.stderr));
 
     // The built-in scene (4,032 triangles) is held to the flag too, before any work.
-    let out = fixedfunc(&["compare", "--max-triangles", "4000", "--out", mask]);
+    let report = dir.path().join("report");
+    let report = report.to_str().expect("UTF-8 path");
+    let out = fixedfunc(&["compare", "--max-triangles", "4000", "--out", report]);
     assert!(!out.status.success());
     let stderr = text(&out.stderr);
     assert!(

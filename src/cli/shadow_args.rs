@@ -5,7 +5,7 @@
 use clap::Args;
 use fixedfunc::scene::Scene;
 use fixedfunc::vocab::{
-    DepthBits, MapFilter, PlanarMode, PolygonOffset, Precision, Projector, ReadbackRule,
+    DepthBits, MapFilter, OffsetArg, PlanarMode, Precision, Projector, ReadbackRule,
 };
 
 /// `--map-size`, `--depth-bits`, `--offset`, `--precision`, `--filter`.
@@ -41,26 +41,10 @@ pub struct ShadowArgs {
     pub projector: Option<Projector>,
 }
 
-/// A polygon offset on the command line, or none.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum OffsetArg {
-    None,
-    Offset(PolygonOffset),
-}
-
-/// `FACTOR,UNITS` (finite numbers) or `none`.
+/// `FACTOR,UNITS` (finite numbers) or `none`, by the vocabulary's rule (clap shows its
+/// message).
 pub fn parse_offset(text: &str) -> Result<OffsetArg, String> {
-    if text.eq_ignore_ascii_case("none") {
-        return Ok(OffsetArg::None);
-    }
-    let bad = || format!("`{text}`: expected FACTOR,UNITS (two finite numbers, e.g. 1,4) or none");
-    let (f, u) = text.split_once(',').ok_or_else(bad)?;
-    let factor: f32 = f.trim().parse().map_err(|_| bad())?;
-    let units: f32 = u.trim().parse().map_err(|_| bad())?;
-    if !(factor.is_finite() && units.is_finite()) {
-        return Err(bad());
-    }
-    Ok(OffsetArg::Offset(PolygonOffset { factor, units }))
+    text.parse::<OffsetArg>().map_err(|e| e.to_string())
 }
 
 impl ShadowArgs {
@@ -99,6 +83,7 @@ impl ShadowArgs {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use fixedfunc::vocab::PolygonOffset;
 
     #[test]
     fn offsets_parse_or_say_what_is_expected() {

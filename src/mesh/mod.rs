@@ -58,6 +58,34 @@ pub enum MeshError {
     NoFaces { path: PathBuf, degenerate: usize },
     #[error("OBJ file {path} has more than 2^32 vertices")]
     TooLarge { path: PathBuf },
+    #[error(
+        "OBJ file {path} line {line}: face index {index} names no {what} (indices count from 1; \
+         negative ones count back from the last one defined above)"
+    )]
+    BadIndex {
+        path: PathBuf,
+        line: usize,
+        index: i64,
+        what: ObjElement,
+    },
+}
+
+/// What an OBJ face index names: `v/vt/vn`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ObjElement {
+    Position,
+    TexCoord,
+    Normal,
+}
+
+impl std::fmt::Display for ObjElement {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            ObjElement::Position => "position",
+            ObjElement::TexCoord => "texture coordinate",
+            ObjElement::Normal => "normal",
+        })
+    }
 }
 
 impl Mesh {

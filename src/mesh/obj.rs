@@ -2,12 +2,16 @@
 //! vertex (position and normal indices merged), negative (relative) indices resolved by
 //! tobj. Materials are ignored: the scene file gives the material.
 //!
+//! A face index of 0, a negative one that reaches before the first element, or one past
+//! u32 is refused with its line before tobj reads the file: tobj would take 0 as "no
+//! normal", and wrap the others round to indices whose bounds check overflows.
+//!
 //! Degenerate faces (repeated vertices or zero area) are dropped and counted; the caller
 //! reports the count as a warning. A file whose faces are all degenerate, or that has none,
 //! is an error. Normals are computed from the faces for every object of the file that has
 //! none (or not one per vertex).
 
-use super::{Mesh, MeshError};
+use super::{Mesh, MeshError, ObjElement};
 use glam::Vec3;
 use std::path::Path;
 
@@ -32,6 +36,7 @@ pub fn load_obj(path: &Path) -> Result<ObjMesh, MeshError> {
 
 /// Parses OBJ text; `path` only names the source in errors.
 pub fn load_obj_str(text: &str, path: &Path) -> Result<ObjMesh, MeshError> {
+    check_face_indices(text, path)?;
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: true,
@@ -94,4 +99,43 @@ pub fn load_obj_str(text: &str, path: &Path) -> Result<ObjMesh, MeshError> {
         });
     }
     Ok(result)
+}
+
+/// Refuses the face indices tobj mishandles (see the module note). Lines are split as
+/// tobj splits them; what is not an integer is left to tobj to refuse.
+fn check_face_indices(text: &str, path: &Path) -> Result<(), MeshError> {
+    const WHAT: [ObjElement; 3] = [
+        ObjElement::Position,
+        ObjElement::TexCoord,
+        ObjElement::Normal,
+    ];
+    // Positions, texture coordinates and normals defined so far.
+    let mut defined = [0i64; 3];
+    for (n, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => defined[0] += 1,
+            Some("vt") => defined[1] += 1,
+            Some("vn") => defined[2] += 1,
+            Some("f") => {
+                for word in words {
+                    for (k, part) in word.split('/').enumerate().take(3) {
+                        let Ok(index) = part.parse::<i64>() else {
+                            continue;
+                        };
+                        if index == 0 || index > i64::from(u32::MAX) || defined[k] + index < 0 {
+                            return Err(MeshError::BadIndex {
+                                path: path.to_path_buf(),
+                                line: n + 1,
+                                index,
+                                what: WHAT[k],
+                            });
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
 }

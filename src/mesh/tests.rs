@@ -149,6 +149,52 @@ fn obj_negative_indices_and_pentagon_fan() {
     assert_eq!(obj.mesh.positions[4], Vec3::new(-1.0, 1.0, 0.0));
 }
 
+/// A crash of the obj fuzz target (`fuzz/run.sh obj`): tobj read the texture index -3,
+/// with no texture coordinate above it, as 2⁶⁴ − 3 and overflowed multiplying it; index 0
+/// it read as "no normal". Both are now refused at their line.
+#[test]
+fn obj_face_indices_that_name_nothing_are_refused() {
+    let crash = "v 3 0 0\nv 1 0 0\nv 1 1 0\nvn 1 0 -1\nf 1//1 3/-3 -2\nvt 0 0\nf 1 2 3\n";
+    let tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n";
+    for (text, line, index, what) in [
+        (crash.to_string(), 5, -3, ObjElement::TexCoord),
+        (format!("{tri}f 1//1 2//1 3//0\n"), 6, 0, ObjElement::Normal),
+        (format!("{tri}f 0 1 2\n"), 6, 0, ObjElement::Position),
+        (format!("{tri}f -4 -2 -1\n"), 6, -4, ObjElement::Position),
+        (
+            format!("{tri}f 1/-2 2/1 3/1\n"),
+            6,
+            -2,
+            ObjElement::TexCoord,
+        ),
+        (
+            format!("{tri}f 1//6148914691236517206 2 3\n"),
+            6,
+            6148914691236517206,
+            ObjElement::Normal,
+        ),
+    ] {
+        match load_obj_str(&text, Path::new("i.obj")) {
+            Err(e @ MeshError::BadIndex { .. }) => {
+                let MeshError::BadIndex {
+                    line: l,
+                    index: i,
+                    what: w,
+                    ..
+                } = &e
+                else {
+                    unreachable!()
+                };
+                assert_eq!((*l, *i, *w), (line, index, what), "{text}");
+                assert!(e.to_string().contains(&format!("line {line}")), "{e}");
+            }
+            other => panic!("{text}: expected BadIndex, got {other:?}"),
+        }
+    }
+    let fine = format!("{tri}f -3/-1/-1 -2/1/1 3/1/-1\n");
+    assert!(load_obj_str(&fine, Path::new("ok.obj")).is_ok());
+}
+
 #[test]
 fn obj_errors() {
     let none = load_obj_str("v 0 0 0\nv 1 0 0\n", Path::new("points.obj"));

@@ -10,7 +10,9 @@ mod settings;
 mod technique;
 
 pub use depth::{DepthBits, DepthRule, ReadbackRule};
-pub use settings::{MapFilter, PipelineKind, PlanarMode, PolygonOffset, Precision, Projector};
+pub use settings::{
+    BadOffset, MapFilter, OffsetArg, PipelineKind, PlanarMode, PolygonOffset, Precision, Projector,
+};
 pub use technique::TechniqueId;
 
 /// A value with user-facing names: the first name of a value is the one printed, later

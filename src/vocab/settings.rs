@@ -62,6 +62,41 @@ pub struct PolygonOffset {
     pub units: f32,
 }
 
+/// A polygon offset as the command line writes it (`--offset`): `FACTOR,UNITS`, two finite
+/// numbers, or `none` (any case) for no offset.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum OffsetArg {
+    None,
+    Offset(PolygonOffset),
+}
+
+/// Text that is neither `FACTOR,UNITS` nor `none`.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("`{text}`: expected FACTOR,UNITS (two finite numbers, e.g. 1,4) or none")]
+pub struct BadOffset {
+    pub text: String,
+}
+
+impl std::str::FromStr for OffsetArg {
+    type Err = BadOffset;
+
+    fn from_str(text: &str) -> Result<OffsetArg, BadOffset> {
+        if text.eq_ignore_ascii_case("none") {
+            return Ok(OffsetArg::None);
+        }
+        let bad = || BadOffset {
+            text: text.to_string(),
+        };
+        let (f, u) = text.split_once(',').ok_or_else(bad)?;
+        let factor: f32 = f.trim().parse().map_err(|_| bad())?;
+        let units: f32 = u.trim().parse().map_err(|_| bad())?;
+        if !(factor.is_finite() && units.is_finite()) {
+            return Err(bad());
+        }
+        Ok(OffsetArg::Offset(PolygonOffset { factor, units }))
+    }
+}
+
 /// How a shadow map is sampled (GL_TEXTURE_MIN/MAG_FILTER of the map).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Deserialize, Serialize)]
 #[serde(rename_all = "lowercase")]

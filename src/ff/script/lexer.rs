@@ -65,11 +65,17 @@ pub struct Token<'a> {
 /// mutual references end here with an error rather than loop).
 const MAX_EXPANSION_DEPTH: usize = 32;
 
+/// All macro expansions of a script together produce at most this many tokens: a macro
+/// whose body names the previous one twice doubles at each level, so 30 such lines would
+/// otherwise expand to 2³⁰ tokens. Each expansion is charged its body's length.
+const MAX_EXPANDED_TOKENS: usize = 1 << 20;
+
 /// The tokens of `src`, preprocessed.
 pub fn lex(src: &str) -> Result<Vec<Token<'_>>, ScriptError> {
     let src = src.strip_prefix('\u{FEFF}').unwrap_or(src);
     let mut pp = Preprocessor::default();
     let mut out = Vec::new();
+    let mut budget = MAX_EXPANDED_TOKENS;
     let mut line = 1;
     let mut rest = src;
     while !rest.is_empty() {
@@ -89,7 +95,7 @@ pub fn lex(src: &str) -> Result<Vec<Token<'_>>, ScriptError> {
         // Expanded with the macros defined so far, as a C preprocessor reads top to bottom.
         let mut line_tokens = Vec::new();
         tokens(text, first_line, &mut pp.comment, &mut line_tokens)?;
-        out.extend(pp.expand(line_tokens)?);
+        out.extend(pp.expand(line_tokens, &mut budget)?);
     }
     if let Some(open) = pp.comment {
         return Err(ScriptError::UnterminatedComment { line: open });
@@ -336,13 +342,18 @@ impl<'a> Preprocessor<'a> {
     }
 
     /// The tokens with every macro name replaced by its expansion (at the use's line).
-    fn expand(&self, toks: Vec<Token<'a>>) -> Result<Vec<Token<'a>>, ScriptError> {
+    /// `toks` with every macro expanded, each expansion charged to `budget`.
+    fn expand(
+        &self,
+        toks: Vec<Token<'a>>,
+        budget: &mut usize,
+    ) -> Result<Vec<Token<'a>>, ScriptError> {
         if self.macros.is_empty() {
             return Ok(toks);
         }
         let mut out = Vec::with_capacity(toks.len());
         for t in toks {
-            self.expand_one(t.tok, t.line, &mut Vec::new(), &mut out)?;
+            self.expand_one(t.tok, t.line, &mut Vec::new(), budget, &mut out)?;
         }
         Ok(out)
     }
@@ -352,6 +363,7 @@ impl<'a> Preprocessor<'a> {
         tok: Tok<'a>,
         line: usize,
         within: &mut Vec<&'a str>,
+        budget: &mut usize,
         out: &mut Vec<Token<'a>>,
     ) -> Result<(), ScriptError> {
         let Tok::Ident(name) = tok else {
@@ -370,9 +382,17 @@ impl<'a> Preprocessor<'a> {
                 ),
             });
         }
+        *budget = budget
+            .checked_sub(body.len())
+            .ok_or_else(|| ScriptError::Preprocessor {
+                line,
+                problem: format!(
+                    "macro {name}: the script's macros expand to more than {MAX_EXPANDED_TOKENS} tokens"
+                ),
+            })?;
         within.push(name);
         for t in body {
-            self.expand_one(*t, line, within, out)?;
+            self.expand_one(*t, line, within, budget, out)?;
         }
         within.pop();
         Ok(())
@@ -459,6 +479,31 @@ mod tests {
             Err(ScriptError::Preprocessor { line: 1, .. })
         ));
         assert!(lex("#define A B\n#define B A\nA").is_ok());
+    }
+
+    /// A timeout of the script fuzz target (`fuzz/run.sh script`, 5 s per input): 24 macros,
+    /// each naming the next twice, made 2²⁴ tokens from 500 bytes; now the expansion budget
+    /// refuses it at the line that used it.
+    #[test]
+    fn doubling_macros_are_refused_not_expanded() {
+        let mut src: String = (0..24)
+            .map(|i| format!("#define M{i} M{j} M{j}\n", j = i + 1))
+            .collect();
+        src.push_str("glBegin(M0);\n");
+        let started = std::time::Instant::now();
+        match lex(&src) {
+            Err(ScriptError::Preprocessor { line: 25, problem }) => {
+                assert!(problem.contains("expand to more than"), "{problem}")
+            }
+            other => panic!("expected a preprocessor error at line 25, got {other:?}"),
+        }
+        assert!(started.elapsed().as_secs() < 5);
+        // Within the budget, a doubling chain still expands in full.
+        let mut src: String = (0..10)
+            .map(|i| format!("#define M{i} M{j} M{j}\n", j = i + 1))
+            .collect();
+        src.push_str("M0");
+        assert_eq!(lex(&src).map(|t| t.len()), Ok(1024));
     }
 
     #[test]

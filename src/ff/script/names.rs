@@ -74,12 +74,11 @@ pub fn distance(a: &str, b: &str) -> usize {
 
 /// `names`, closest to `found` first (stable for ties), without duplicates.
 pub fn ranked(found: &str, names: &[&'static str]) -> Vec<&'static str> {
-    let mut v: Vec<&'static str> = Vec::new();
-    for n in names {
-        if !v.contains(n) {
-            v.push(n);
-        }
-    }
-    v.sort_by_key(|n| distance(found, n));
+    // A name longer than any GL token ranks the same by its first 64 characters; the cap
+    // keeps an error about a 10,000-character identifier as cheap as any other.
+    let found: String = found.chars().take(64).collect();
+    let mut seen = std::collections::HashSet::new();
+    let mut v: Vec<&'static str> = names.iter().copied().filter(|n| seen.insert(*n)).collect();
+    v.sort_by_cached_key(|n| distance(&found, n));
     v
 }
