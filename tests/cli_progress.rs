@@ -109,3 +109,26 @@ fn zero_frames_and_zero_steps_are_refused() {
         assert!(stderr.contains("invalid value '0"), "{args:?}: {stderr}");
     }
 }
+
+/// `bench` off a terminal: counted groups print progress lines with the time left, and
+/// the truth group names each part as it starts.
+#[test]
+fn bench_off_a_terminal_prints_progress_lines() {
+    let env = [("FIXEDFUNC_PROGRESS_INTERVAL_MS", "0")];
+    let run = fixedfunc(&["bench", "--only", "pipeline", "--repeats", "3"], &env);
+    let err = text(&run.stderr);
+    assert!(run.status.success(), "{err}");
+    let lines: Vec<&str> = err
+        .lines()
+        .filter(|l| l.starts_with("bench pipeline: ") && l.contains(" frames, "))
+        .collect();
+    assert!(lines.len() >= 2, "{err}");
+    assert!(lines.iter().any(|l| l.contains("left")), "{err}");
+    let run = fixedfunc(&["bench", "--only", "truth", "--repeats", "1"], &env);
+    let err = text(&run.stderr);
+    assert!(run.status.success(), "{err}");
+    assert!(
+        err.contains("bench truth: ray casting the default scene (1 runs)"),
+        "{err}"
+    );
+}

@@ -2,7 +2,11 @@
 
 use fixedfunc::bench::{context, pipeline, BenchGroup};
 use fixedfunc::gpu::{Backend, Profile, VirtualDisplay};
-use indicatif::{ProgressBar, ProgressStyle};
+use std::io::IsTerminal;
+
+use indicatif::ProgressBar;
+
+use super::progress::CountBar;
 
 use super::error::CliError;
 
@@ -49,21 +53,18 @@ fn run_context(repeats: usize, json: bool) -> Result<(), CliError> {
         Err(e) => eprintln!("window backend skipped: {e}"),
     }
     let total = (backends.len() * Profile::ALL.len() * repeats.max(1)) as u64;
-    let bar = ProgressBar::new(total).with_style(
-        ProgressStyle::with_template("{msg:>22} [{bar:30}] {pos}/{len}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
+    let mut bar = CountBar::new("bench context", total, "contexts");
     let mut rows = Vec::new();
     for &backend in &backends {
         for profile in Profile::ALL {
-            bar.set_message(format!("{backend} {}", profile.name()));
-            match context::measure(backend, profile, repeats, || bar.inc(1)) {
+            bar.set_what(format!("{backend} {}", profile.name()));
+            match context::measure(backend, profile, repeats, || bar.inc()) {
                 Ok(row) => rows.push(row),
-                Err(e) => bar.println(format!("{backend} {}: {e}", profile.name())),
+                Err(e) => bar.println(&format!("{backend} {}: {e}", profile.name())),
             }
         }
     }
-    bar.finish_and_clear();
+    bar.finish();
     if json {
         outln!("{}", serde_json::to_string_pretty(&rows)?)?;
         return Ok(());
@@ -95,13 +96,10 @@ fn run_context(repeats: usize, json: bool) -> Result<(), CliError> {
 
 fn run_pipeline(frames: usize, json: bool) -> Result<(), CliError> {
     let frames = frames.max(2);
-    let bar = ProgressBar::new(2 * frames as u64).with_style(
-        ProgressStyle::with_template("{msg:>22} [{bar:30}] {pos}/{len}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
-    bar.set_message("emulate vs native");
-    let rows = pipeline::measure(Backend::Egl, frames, || bar.inc(1))?;
-    bar.finish_and_clear();
+    let mut bar = CountBar::new("bench pipeline", 2 * frames as u64, "frames");
+    bar.set_what("emulate vs native".into());
+    let rows = pipeline::measure(Backend::Egl, frames, || bar.inc())?;
+    bar.finish();
     if json {
         outln!("{}", serde_json::to_string_pretty(&rows)?)?;
         return Ok(());
@@ -150,10 +148,18 @@ fn run_truth(runs: usize, json: bool) -> Result<(), CliError> {
     use fixedfunc::truth::{bench, TruthOptions};
     let runs = runs.clamp(1, 1000) as u32;
     let spinner = ProgressBar::new_spinner();
-    spinner.set_message("ray casting the default scene");
+    // Off a terminal the spinner draws nothing: each part is announced on its own line.
+    let say = |what: &str| {
+        if std::io::stderr().is_terminal() {
+            spinner.set_message(what.to_string());
+        } else {
+            eprintln!("bench truth: {what} ({runs} runs)");
+        }
+    };
+    say("ray casting the default scene");
     spinner.enable_steady_tick(std::time::Duration::from_millis(100));
     let default = bench::throughput(&Scene::default_scene(), &TruthOptions::default(), runs)?;
-    spinner.set_message("ray casting ~1M triangles");
+    say("ray casting ~1M triangles");
     let million = bench::throughput(
         &bench::million_triangle_scene(),
         &TruthOptions::default(),
@@ -199,13 +205,11 @@ fn run_truth(runs: usize, json: bool) -> Result<(), CliError> {
 }
 
 fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
-    let bar = ProgressBar::new(repeats.max(1) as u64 + 1).with_style(
-        ProgressStyle::with_template("techniques, interleaved frames [{bar:30}] {pos}/{len}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
+    let mut bar = CountBar::new("bench techniques", repeats.max(1) as u64 + 1, "rounds");
+    bar.set_what("interleaved frames".into());
     let (rows, skipped) =
-        fixedfunc::bench::techniques::measure(repeats, || bar.inc(1)).map_err(CliError::from)?;
-    bar.finish_and_clear();
+        fixedfunc::bench::techniques::measure(repeats, || bar.inc()).map_err(CliError::from)?;
+    bar.finish();
     if json {
         let value = serde_json::json!({ "rows": rows, "skipped": skipped });
         outln!("{}", serde_json::to_string_pretty(&value)?)?;

@@ -186,6 +186,53 @@ impl StudyBar {
     }
 }
 
+/// Counted steps of work that is not a study (`bench`'s groups), reported as a study's
+/// are: a bar on a terminal, lines with the time left elsewhere.
+pub struct CountBar {
+    bar: StudyBar,
+    done: u64,
+    total: u64,
+    unit: &'static str,
+    what: String,
+}
+
+impl CountBar {
+    pub fn new(command: &'static str, total: u64, unit: &'static str) -> CountBar {
+        CountBar {
+            bar: StudyBar::new(command, Estimate::FromSecondUnit),
+            done: 0,
+            total,
+            unit,
+            what: String::new(),
+        }
+    }
+
+    /// What the next steps are of (shown on the bar).
+    pub fn set_what(&mut self, what: String) {
+        self.what = what;
+    }
+
+    /// One more step done.
+    pub fn inc(&mut self) {
+        self.done += 1;
+        self.bar.update(Progress {
+            done: self.done,
+            total: self.total,
+            unit: self.unit,
+            what: self.what.clone(),
+        });
+    }
+
+    /// A line above the bar, or on its own line without one.
+    pub fn println(&self, line: &str) {
+        self.bar.say(line);
+    }
+
+    pub fn finish(&self) {
+        self.bar.finish();
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
