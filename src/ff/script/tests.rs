@@ -673,18 +673,19 @@ proptest! {
     }
 }
 
+/// `written` parses to the same commands as `plain`.
+fn same(written: &str, plain: &str) {
+    assert_eq!(
+        parse(written).unwrap_or_else(|e| panic!("{written:?}: {e}")),
+        parse(plain).unwrap(),
+        "{written:?}"
+    );
+}
+
 /// What a C compiler accepts of the dialect, the reader accepts too (each case is the same
 /// commands as its plain spelling).
 mod c_as_written {
     use super::*;
-
-    fn same(written: &str, plain: &str) {
-        assert_eq!(
-            parse(written).unwrap_or_else(|e| panic!("{written:?}: {e}")),
-            parse(plain).unwrap(),
-            "{written:?}"
-        );
-    }
 
     #[test]
     fn preprocessor_includes_and_defines() {
@@ -784,14 +785,6 @@ mod c_as_written {
 /// reads as its float spelling with GL's conversion applied.
 mod variants {
     use super::*;
-
-    fn same(written: &str, plain: &str) {
-        assert_eq!(
-            parse(written).unwrap_or_else(|e| panic!("{written:?}: {e}")),
-            parse(plain).unwrap(),
-            "{written:?}"
-        );
-    }
 
     #[test]
     fn integer_colours_are_normalised() {
