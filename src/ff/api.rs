@@ -1,10 +1,14 @@
-//! The GL entry points the layer knows, as one table: each call's C name and its parameter
-//! list as `GL/gl.h` declares it. The script reader dispatches on it and lists it in
-//! "unknown call" errors, the script printer takes every call name from it, and the native
-//! path names the call behind a GL error from it ([`Command::entry`]), so a name is spelled
-//! once, here.
+//! The GL entry points the layer knows, as one table: each call's C name, its parameters
+//! with their C types, and its return type. Everything that spells a call takes it from
+//! here: the script reader dispatches on it and lists it in "unknown call" errors, the
+//! script printer takes every call name from it, the native path names the call behind a
+//! GL error from it ([`Command::entry`]), and the C library (`abi`) exports one function
+//! per row, with the row's signature. The table is a macro that hands its rows to another
+//! macro ([`gl_entry_table`]), so the enum here and the C exports are expanded from the
+//! same text.
 
 use std::fmt;
+use std::sync::OnceLock;
 
 use super::combiners::CombinerParam;
 use super::command::Command;
@@ -13,7 +17,30 @@ use super::texenv::TexEnvParam;
 use super::texgen::TexGenParam;
 use super::texture::TexParam;
 
-/// Whether a script may spell the call. `Client` calls exist only as what a path issues
+/// The C types of `GL/gl.h`, as the table and the C exports spell them.
+#[allow(non_camel_case_types)]
+pub mod ctypes {
+    pub use std::ffi::c_void;
+    pub type GLenum = u32;
+    pub type GLboolean = u8;
+    pub type GLbitfield = u32;
+    pub type GLbyte = i8;
+    pub type GLshort = i16;
+    pub type GLint = i32;
+    pub type GLsizei = i32;
+    pub type GLubyte = u8;
+    pub type GLushort = u16;
+    pub type GLuint = u32;
+    pub type GLfloat = f32;
+    pub type GLclampf = f32;
+    pub type GLdouble = f64;
+    pub type GLclampd = f64;
+    pub type GLintptr = isize;
+    pub type GLsizeiptr = isize;
+}
+
+/// Who may spell the call. `Script` calls are read by `replay` and exported by the C
+/// library; `Client` calls are exported, and exist in scripts only as what a path issues
 /// for a `Command::Draw` (a script draws with glBegin/glEnd).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Form {
@@ -21,8 +48,269 @@ pub enum Form {
     Client,
 }
 
-macro_rules! entry_points {
-    ($($variant:ident = $name:literal ($form:expr, $params:literal);)*) => {
+/// The table of entry points. `gl_entry_table!(m)` expands to `m! { rows }`, one row per
+/// entry point: `Variant = glName(Form; arg: CType, …) [-> CType];`. Parameter names are
+/// those of `GL/gl.h` (`r#ref`, `r#type` where C's name is a Rust keyword).
+#[macro_export]
+#[doc(hidden)]
+macro_rules! gl_entry_table {
+    ($callback:ident) => {
+        $callback! {
+
+        MatrixMode = glMatrixMode(Script; mode: GLenum);
+        LoadIdentity = glLoadIdentity(Script; );
+        LoadMatrixf = glLoadMatrixf(Script; m: *const GLfloat);
+        MultMatrixf = glMultMatrixf(Script; m: *const GLfloat);
+        PushMatrix = glPushMatrix(Script; );
+        PopMatrix = glPopMatrix(Script; );
+        Translatef = glTranslatef(Script; x: GLfloat, y: GLfloat, z: GLfloat);
+        Rotatef = glRotatef(Script; angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat);
+        Scalef = glScalef(Script; x: GLfloat, y: GLfloat, z: GLfloat);
+        Frustum = glFrustum(Script; left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, zNear: GLdouble, zFar: GLdouble);
+        Ortho = glOrtho(Script; left: GLdouble, right: GLdouble, bottom: GLdouble, top: GLdouble, zNear: GLdouble, zFar: GLdouble);
+        Viewport = glViewport(Script; x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+        DepthRange = glDepthRange(Script; zNear: GLdouble, zFar: GLdouble);
+        Enable = glEnable(Script; cap: GLenum);
+        Disable = glDisable(Script; cap: GLenum);
+        Vertex2s = glVertex2s(Script; x: GLshort, y: GLshort);
+        Vertex2sv = glVertex2sv(Script; v: *const GLshort);
+        Vertex2i = glVertex2i(Script; x: GLint, y: GLint);
+        Vertex2iv = glVertex2iv(Script; v: *const GLint);
+        Vertex2f = glVertex2f(Script; x: GLfloat, y: GLfloat);
+        Vertex2fv = glVertex2fv(Script; v: *const GLfloat);
+        Vertex2d = glVertex2d(Script; x: GLdouble, y: GLdouble);
+        Vertex2dv = glVertex2dv(Script; v: *const GLdouble);
+        Vertex3s = glVertex3s(Script; x: GLshort, y: GLshort, z: GLshort);
+        Vertex3sv = glVertex3sv(Script; v: *const GLshort);
+        Vertex3i = glVertex3i(Script; x: GLint, y: GLint, z: GLint);
+        Vertex3iv = glVertex3iv(Script; v: *const GLint);
+        Vertex3f = glVertex3f(Script; x: GLfloat, y: GLfloat, z: GLfloat);
+        Vertex3fv = glVertex3fv(Script; v: *const GLfloat);
+        Vertex3d = glVertex3d(Script; x: GLdouble, y: GLdouble, z: GLdouble);
+        Vertex3dv = glVertex3dv(Script; v: *const GLdouble);
+        Vertex4s = glVertex4s(Script; x: GLshort, y: GLshort, z: GLshort, w: GLshort);
+        Vertex4sv = glVertex4sv(Script; v: *const GLshort);
+        Vertex4i = glVertex4i(Script; x: GLint, y: GLint, z: GLint, w: GLint);
+        Vertex4iv = glVertex4iv(Script; v: *const GLint);
+        Vertex4f = glVertex4f(Script; x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat);
+        Vertex4fv = glVertex4fv(Script; v: *const GLfloat);
+        Vertex4d = glVertex4d(Script; x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble);
+        Vertex4dv = glVertex4dv(Script; v: *const GLdouble);
+        Color3b = glColor3b(Script; red: GLbyte, green: GLbyte, blue: GLbyte);
+        Color3bv = glColor3bv(Script; v: *const GLbyte);
+        Color3s = glColor3s(Script; red: GLshort, green: GLshort, blue: GLshort);
+        Color3sv = glColor3sv(Script; v: *const GLshort);
+        Color3i = glColor3i(Script; red: GLint, green: GLint, blue: GLint);
+        Color3iv = glColor3iv(Script; v: *const GLint);
+        Color3f = glColor3f(Script; red: GLfloat, green: GLfloat, blue: GLfloat);
+        Color3fv = glColor3fv(Script; v: *const GLfloat);
+        Color3d = glColor3d(Script; red: GLdouble, green: GLdouble, blue: GLdouble);
+        Color3dv = glColor3dv(Script; v: *const GLdouble);
+        Color3ub = glColor3ub(Script; red: GLubyte, green: GLubyte, blue: GLubyte);
+        Color3ubv = glColor3ubv(Script; v: *const GLubyte);
+        Color3us = glColor3us(Script; red: GLushort, green: GLushort, blue: GLushort);
+        Color3usv = glColor3usv(Script; v: *const GLushort);
+        Color3ui = glColor3ui(Script; red: GLuint, green: GLuint, blue: GLuint);
+        Color3uiv = glColor3uiv(Script; v: *const GLuint);
+        Color4b = glColor4b(Script; red: GLbyte, green: GLbyte, blue: GLbyte, alpha: GLbyte);
+        Color4bv = glColor4bv(Script; v: *const GLbyte);
+        Color4s = glColor4s(Script; red: GLshort, green: GLshort, blue: GLshort, alpha: GLshort);
+        Color4sv = glColor4sv(Script; v: *const GLshort);
+        Color4i = glColor4i(Script; red: GLint, green: GLint, blue: GLint, alpha: GLint);
+        Color4iv = glColor4iv(Script; v: *const GLint);
+        Color4f = glColor4f(Script; red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
+        Color4fv = glColor4fv(Script; v: *const GLfloat);
+        Color4d = glColor4d(Script; red: GLdouble, green: GLdouble, blue: GLdouble, alpha: GLdouble);
+        Color4dv = glColor4dv(Script; v: *const GLdouble);
+        Color4ub = glColor4ub(Script; red: GLubyte, green: GLubyte, blue: GLubyte, alpha: GLubyte);
+        Color4ubv = glColor4ubv(Script; v: *const GLubyte);
+        Color4us = glColor4us(Script; red: GLushort, green: GLushort, blue: GLushort, alpha: GLushort);
+        Color4usv = glColor4usv(Script; v: *const GLushort);
+        Color4ui = glColor4ui(Script; red: GLuint, green: GLuint, blue: GLuint, alpha: GLuint);
+        Color4uiv = glColor4uiv(Script; v: *const GLuint);
+        Normal3b = glNormal3b(Script; nx: GLbyte, ny: GLbyte, nz: GLbyte);
+        Normal3bv = glNormal3bv(Script; v: *const GLbyte);
+        Normal3s = glNormal3s(Script; nx: GLshort, ny: GLshort, nz: GLshort);
+        Normal3sv = glNormal3sv(Script; v: *const GLshort);
+        Normal3i = glNormal3i(Script; nx: GLint, ny: GLint, nz: GLint);
+        Normal3iv = glNormal3iv(Script; v: *const GLint);
+        Normal3f = glNormal3f(Script; nx: GLfloat, ny: GLfloat, nz: GLfloat);
+        Normal3fv = glNormal3fv(Script; v: *const GLfloat);
+        Normal3d = glNormal3d(Script; nx: GLdouble, ny: GLdouble, nz: GLdouble);
+        Normal3dv = glNormal3dv(Script; v: *const GLdouble);
+        TexCoord1s = glTexCoord1s(Script; s: GLshort);
+        TexCoord1sv = glTexCoord1sv(Script; v: *const GLshort);
+        TexCoord1i = glTexCoord1i(Script; s: GLint);
+        TexCoord1iv = glTexCoord1iv(Script; v: *const GLint);
+        TexCoord1f = glTexCoord1f(Script; s: GLfloat);
+        TexCoord1fv = glTexCoord1fv(Script; v: *const GLfloat);
+        TexCoord1d = glTexCoord1d(Script; s: GLdouble);
+        TexCoord1dv = glTexCoord1dv(Script; v: *const GLdouble);
+        TexCoord2s = glTexCoord2s(Script; s: GLshort, t: GLshort);
+        TexCoord2sv = glTexCoord2sv(Script; v: *const GLshort);
+        TexCoord2i = glTexCoord2i(Script; s: GLint, t: GLint);
+        TexCoord2iv = glTexCoord2iv(Script; v: *const GLint);
+        TexCoord2f = glTexCoord2f(Script; s: GLfloat, t: GLfloat);
+        TexCoord2fv = glTexCoord2fv(Script; v: *const GLfloat);
+        TexCoord2d = glTexCoord2d(Script; s: GLdouble, t: GLdouble);
+        TexCoord2dv = glTexCoord2dv(Script; v: *const GLdouble);
+        TexCoord3s = glTexCoord3s(Script; s: GLshort, t: GLshort, r: GLshort);
+        TexCoord3sv = glTexCoord3sv(Script; v: *const GLshort);
+        TexCoord3i = glTexCoord3i(Script; s: GLint, t: GLint, r: GLint);
+        TexCoord3iv = glTexCoord3iv(Script; v: *const GLint);
+        TexCoord3f = glTexCoord3f(Script; s: GLfloat, t: GLfloat, r: GLfloat);
+        TexCoord3fv = glTexCoord3fv(Script; v: *const GLfloat);
+        TexCoord3d = glTexCoord3d(Script; s: GLdouble, t: GLdouble, r: GLdouble);
+        TexCoord3dv = glTexCoord3dv(Script; v: *const GLdouble);
+        TexCoord4s = glTexCoord4s(Script; s: GLshort, t: GLshort, r: GLshort, q: GLshort);
+        TexCoord4sv = glTexCoord4sv(Script; v: *const GLshort);
+        TexCoord4i = glTexCoord4i(Script; s: GLint, t: GLint, r: GLint, q: GLint);
+        TexCoord4iv = glTexCoord4iv(Script; v: *const GLint);
+        TexCoord4f = glTexCoord4f(Script; s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat);
+        TexCoord4fv = glTexCoord4fv(Script; v: *const GLfloat);
+        TexCoord4d = glTexCoord4d(Script; s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble);
+        TexCoord4dv = glTexCoord4dv(Script; v: *const GLdouble);
+        MultiTexCoord1s = glMultiTexCoord1s(Script; target: GLenum, s: GLshort);
+        MultiTexCoord1sv = glMultiTexCoord1sv(Script; target: GLenum, v: *const GLshort);
+        MultiTexCoord1i = glMultiTexCoord1i(Script; target: GLenum, s: GLint);
+        MultiTexCoord1iv = glMultiTexCoord1iv(Script; target: GLenum, v: *const GLint);
+        MultiTexCoord1f = glMultiTexCoord1f(Script; target: GLenum, s: GLfloat);
+        MultiTexCoord1fv = glMultiTexCoord1fv(Script; target: GLenum, v: *const GLfloat);
+        MultiTexCoord1d = glMultiTexCoord1d(Script; target: GLenum, s: GLdouble);
+        MultiTexCoord1dv = glMultiTexCoord1dv(Script; target: GLenum, v: *const GLdouble);
+        MultiTexCoord2s = glMultiTexCoord2s(Script; target: GLenum, s: GLshort, t: GLshort);
+        MultiTexCoord2sv = glMultiTexCoord2sv(Script; target: GLenum, v: *const GLshort);
+        MultiTexCoord2i = glMultiTexCoord2i(Script; target: GLenum, s: GLint, t: GLint);
+        MultiTexCoord2iv = glMultiTexCoord2iv(Script; target: GLenum, v: *const GLint);
+        MultiTexCoord2f = glMultiTexCoord2f(Script; target: GLenum, s: GLfloat, t: GLfloat);
+        MultiTexCoord2fv = glMultiTexCoord2fv(Script; target: GLenum, v: *const GLfloat);
+        MultiTexCoord2d = glMultiTexCoord2d(Script; target: GLenum, s: GLdouble, t: GLdouble);
+        MultiTexCoord2dv = glMultiTexCoord2dv(Script; target: GLenum, v: *const GLdouble);
+        MultiTexCoord3s = glMultiTexCoord3s(Script; target: GLenum, s: GLshort, t: GLshort, r: GLshort);
+        MultiTexCoord3sv = glMultiTexCoord3sv(Script; target: GLenum, v: *const GLshort);
+        MultiTexCoord3i = glMultiTexCoord3i(Script; target: GLenum, s: GLint, t: GLint, r: GLint);
+        MultiTexCoord3iv = glMultiTexCoord3iv(Script; target: GLenum, v: *const GLint);
+        MultiTexCoord3f = glMultiTexCoord3f(Script; target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat);
+        MultiTexCoord3fv = glMultiTexCoord3fv(Script; target: GLenum, v: *const GLfloat);
+        MultiTexCoord3d = glMultiTexCoord3d(Script; target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble);
+        MultiTexCoord3dv = glMultiTexCoord3dv(Script; target: GLenum, v: *const GLdouble);
+        MultiTexCoord4s = glMultiTexCoord4s(Script; target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort);
+        MultiTexCoord4sv = glMultiTexCoord4sv(Script; target: GLenum, v: *const GLshort);
+        MultiTexCoord4i = glMultiTexCoord4i(Script; target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint);
+        MultiTexCoord4iv = glMultiTexCoord4iv(Script; target: GLenum, v: *const GLint);
+        MultiTexCoord4f = glMultiTexCoord4f(Script; target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat);
+        MultiTexCoord4fv = glMultiTexCoord4fv(Script; target: GLenum, v: *const GLfloat);
+        MultiTexCoord4d = glMultiTexCoord4d(Script; target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble);
+        MultiTexCoord4dv = glMultiTexCoord4dv(Script; target: GLenum, v: *const GLdouble);
+        MultiTexCoord1sARB = glMultiTexCoord1sARB(Script; target: GLenum, s: GLshort);
+        MultiTexCoord1svARB = glMultiTexCoord1svARB(Script; target: GLenum, v: *const GLshort);
+        MultiTexCoord1iARB = glMultiTexCoord1iARB(Script; target: GLenum, s: GLint);
+        MultiTexCoord1ivARB = glMultiTexCoord1ivARB(Script; target: GLenum, v: *const GLint);
+        MultiTexCoord1fARB = glMultiTexCoord1fARB(Script; target: GLenum, s: GLfloat);
+        MultiTexCoord1fvARB = glMultiTexCoord1fvARB(Script; target: GLenum, v: *const GLfloat);
+        MultiTexCoord1dARB = glMultiTexCoord1dARB(Script; target: GLenum, s: GLdouble);
+        MultiTexCoord1dvARB = glMultiTexCoord1dvARB(Script; target: GLenum, v: *const GLdouble);
+        MultiTexCoord2sARB = glMultiTexCoord2sARB(Script; target: GLenum, s: GLshort, t: GLshort);
+        MultiTexCoord2svARB = glMultiTexCoord2svARB(Script; target: GLenum, v: *const GLshort);
+        MultiTexCoord2iARB = glMultiTexCoord2iARB(Script; target: GLenum, s: GLint, t: GLint);
+        MultiTexCoord2ivARB = glMultiTexCoord2ivARB(Script; target: GLenum, v: *const GLint);
+        MultiTexCoord2fARB = glMultiTexCoord2fARB(Script; target: GLenum, s: GLfloat, t: GLfloat);
+        MultiTexCoord2fvARB = glMultiTexCoord2fvARB(Script; target: GLenum, v: *const GLfloat);
+        MultiTexCoord2dARB = glMultiTexCoord2dARB(Script; target: GLenum, s: GLdouble, t: GLdouble);
+        MultiTexCoord2dvARB = glMultiTexCoord2dvARB(Script; target: GLenum, v: *const GLdouble);
+        MultiTexCoord3sARB = glMultiTexCoord3sARB(Script; target: GLenum, s: GLshort, t: GLshort, r: GLshort);
+        MultiTexCoord3svARB = glMultiTexCoord3svARB(Script; target: GLenum, v: *const GLshort);
+        MultiTexCoord3iARB = glMultiTexCoord3iARB(Script; target: GLenum, s: GLint, t: GLint, r: GLint);
+        MultiTexCoord3ivARB = glMultiTexCoord3ivARB(Script; target: GLenum, v: *const GLint);
+        MultiTexCoord3fARB = glMultiTexCoord3fARB(Script; target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat);
+        MultiTexCoord3fvARB = glMultiTexCoord3fvARB(Script; target: GLenum, v: *const GLfloat);
+        MultiTexCoord3dARB = glMultiTexCoord3dARB(Script; target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble);
+        MultiTexCoord3dvARB = glMultiTexCoord3dvARB(Script; target: GLenum, v: *const GLdouble);
+        MultiTexCoord4sARB = glMultiTexCoord4sARB(Script; target: GLenum, s: GLshort, t: GLshort, r: GLshort, q: GLshort);
+        MultiTexCoord4svARB = glMultiTexCoord4svARB(Script; target: GLenum, v: *const GLshort);
+        MultiTexCoord4iARB = glMultiTexCoord4iARB(Script; target: GLenum, s: GLint, t: GLint, r: GLint, q: GLint);
+        MultiTexCoord4ivARB = glMultiTexCoord4ivARB(Script; target: GLenum, v: *const GLint);
+        MultiTexCoord4fARB = glMultiTexCoord4fARB(Script; target: GLenum, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat);
+        MultiTexCoord4fvARB = glMultiTexCoord4fvARB(Script; target: GLenum, v: *const GLfloat);
+        MultiTexCoord4dARB = glMultiTexCoord4dARB(Script; target: GLenum, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble);
+        MultiTexCoord4dvARB = glMultiTexCoord4dvARB(Script; target: GLenum, v: *const GLdouble);
+        ActiveTextureARB = glActiveTextureARB(Script; texture: GLenum);
+        Rects = glRects(Script; x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort);
+        Rectsv = glRectsv(Script; v1: *const GLshort, v2: *const GLshort);
+        Recti = glRecti(Script; x1: GLint, y1: GLint, x2: GLint, y2: GLint);
+        Rectiv = glRectiv(Script; v1: *const GLint, v2: *const GLint);
+        Rectf = glRectf(Script; x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat);
+        Rectfv = glRectfv(Script; v1: *const GLfloat, v2: *const GLfloat);
+        Rectd = glRectd(Script; x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble);
+        Rectdv = glRectdv(Script; v1: *const GLdouble, v2: *const GLdouble);
+        Translated = glTranslated(Script; x: GLdouble, y: GLdouble, z: GLdouble);
+        Rotated = glRotated(Script; angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble);
+        Scaled = glScaled(Script; x: GLdouble, y: GLdouble, z: GLdouble);
+        LoadMatrixd = glLoadMatrixd(Script; m: *const GLdouble);
+        MultMatrixd = glMultMatrixd(Script; m: *const GLdouble);
+        TexGenf = glTexGenf(Script; coord: GLenum, pname: GLenum, param: GLfloat);
+        TexGend = glTexGend(Script; coord: GLenum, pname: GLenum, param: GLdouble);
+        TexGendv = glTexGendv(Script; coord: GLenum, pname: GLenum, params: *const GLdouble);
+        TexGeniv = glTexGeniv(Script; coord: GLenum, pname: GLenum, params: *const GLint);
+        Begin = glBegin(Script; mode: GLenum);
+        End = glEnd(Script; );
+        Lightf = glLightf(Script; light: GLenum, pname: GLenum, param: GLfloat);
+        Lighti = glLighti(Script; light: GLenum, pname: GLenum, param: GLint);
+        Lightfv = glLightfv(Script; light: GLenum, pname: GLenum, params: *const GLfloat);
+        LightModelf = glLightModelf(Script; pname: GLenum, param: GLfloat);
+        LightModeli = glLightModeli(Script; pname: GLenum, param: GLint);
+        LightModelfv = glLightModelfv(Script; pname: GLenum, params: *const GLfloat);
+        Materialf = glMaterialf(Script; face: GLenum, pname: GLenum, param: GLfloat);
+        Materialfv = glMaterialfv(Script; face: GLenum, pname: GLenum, params: *const GLfloat);
+        ColorMaterial = glColorMaterial(Script; face: GLenum, mode: GLenum);
+        ShadeModel = glShadeModel(Script; mode: GLenum);
+        ActiveTexture = glActiveTexture(Script; texture: GLenum);
+        BindTexture = glBindTexture(Script; target: GLenum, texture: GLuint);
+        TexImage1D = glTexImage1D(Script; target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
+        TexImage2D = glTexImage2D(Script; target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
+        TexSubImage2D = glTexSubImage2D(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
+        CopyTexImage2D = glCopyTexImage2D(Script; target: GLenum, level: GLint, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, height: GLsizei, border: GLint);
+        TexParameteri = glTexParameteri(Script; target: GLenum, pname: GLenum, param: GLint);
+        TexParameterf = glTexParameterf(Script; target: GLenum, pname: GLenum, param: GLfloat);
+        TexParameterfv = glTexParameterfv(Script; target: GLenum, pname: GLenum, params: *const GLfloat);
+        TexGeni = glTexGeni(Script; coord: GLenum, pname: GLenum, param: GLint);
+        TexGenfv = glTexGenfv(Script; coord: GLenum, pname: GLenum, params: *const GLfloat);
+        TexEnvi = glTexEnvi(Script; target: GLenum, pname: GLenum, param: GLint);
+        TexEnvf = glTexEnvf(Script; target: GLenum, pname: GLenum, param: GLfloat);
+        TexEnvfv = glTexEnvfv(Script; target: GLenum, pname: GLenum, params: *const GLfloat);
+        CombinerParameteriNV = glCombinerParameteriNV(Script; pname: GLenum, param: GLint);
+        CombinerParameterfvNV = glCombinerParameterfvNV(Script; pname: GLenum, params: *const GLfloat);
+        CombinerInputNV = glCombinerInputNV(Script; stage: GLenum, portion: GLenum, variable: GLenum, input: GLenum, mapping: GLenum, componentUsage: GLenum);
+        CombinerOutputNV = glCombinerOutputNV(Script; stage: GLenum, portion: GLenum, abOutput: GLenum, cdOutput: GLenum, sumOutput: GLenum, scale: GLenum, bias: GLenum, abDotProduct: GLboolean, cdDotProduct: GLboolean, muxSum: GLboolean);
+        FinalCombinerInputNV = glFinalCombinerInputNV(Script; variable: GLenum, input: GLenum, mapping: GLenum, componentUsage: GLenum);
+        AlphaFunc = glAlphaFunc(Script; func: GLenum, r#ref: GLfloat);
+        DepthFunc = glDepthFunc(Script; func: GLenum);
+        DepthMask = glDepthMask(Script; flag: GLboolean);
+        StencilFunc = glStencilFunc(Script; func: GLenum, r#ref: GLint, mask: GLuint);
+        StencilOp = glStencilOp(Script; fail: GLenum, zfail: GLenum, zpass: GLenum);
+        StencilMask = glStencilMask(Script; mask: GLuint);
+        BlendFunc = glBlendFunc(Script; sfactor: GLenum, dfactor: GLenum);
+        ColorMask = glColorMask(Script; red: GLboolean, green: GLboolean, blue: GLboolean, alpha: GLboolean);
+        PolygonOffset = glPolygonOffset(Script; factor: GLfloat, units: GLfloat);
+        PolygonMode = glPolygonMode(Script; face: GLenum, mode: GLenum);
+        CullFace = glCullFace(Script; mode: GLenum);
+        FrontFace = glFrontFace(Script; mode: GLenum);
+        LineWidth = glLineWidth(Script; width: GLfloat);
+        PointSize = glPointSize(Script; size: GLfloat);
+        Clear = glClear(Script; mask: GLbitfield);
+        ClearColor = glClearColor(Script; red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
+        ClearDepth = glClearDepth(Script; depth: GLdouble);
+        ClearStencil = glClearStencil(Script; s: GLint);
+        ReadPixels = glReadPixels(Script; x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, r#type: GLenum, pixels: *mut c_void);
+        DrawArrays = glDrawArrays(Client; mode: GLenum, first: GLint, count: GLsizei);
+        DrawElements = glDrawElements(Client; mode: GLenum, count: GLsizei, r#type: GLenum, indices: *const c_void);
+        }
+    };
+}
+pub use gl_entry_table;
+
+macro_rules! define_entries {
+    ($($variant:ident = $name:ident($form:ident; $($arg:ident: $ty:ty),*) $(-> $ret:ty)?;)*) => {
         /// A GL entry point.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum Entry {
@@ -36,282 +324,49 @@ macro_rules! entry_points {
             /// The C name (`glMatrixMode`).
             pub fn name(self) -> &'static str {
                 match self {
-                    $(Entry::$variant => $name,)*
+                    $(Entry::$variant => stringify!($name),)*
                 }
             }
 
-            /// The parameter list as `GL/gl.h` declares it (empty for `void`).
-            pub fn params(self) -> &'static str {
+            /// The parameters as (name, Rust spelling of the C type), e.g.
+            /// `("params", "*const GLfloat")`.
+            pub fn raw_params(self) -> &'static [(&'static str, &'static str)] {
                 match self {
-                    $(Entry::$variant => $params,)*
+                    $(Entry::$variant => &[$((stringify!($arg), stringify!($ty))),*],)*
                 }
             }
 
-            /// Whether a script may spell it.
+            /// The C return type (`void` for none).
+            pub fn return_type(self) -> &'static str {
+                match self {
+                    $(Entry::$variant => {
+                        let r: &'static str = "void";
+                        $(let r = stringify!($ret);)?
+                        r
+                    })*
+                }
+            }
+
+            /// Who may spell it.
             pub fn form(self) -> Form {
                 match self {
-                    $(Entry::$variant => $form,)*
+                    $(Entry::$variant => Form::$form,)*
                 }
             }
         }
     };
 }
 
-entry_points! {
-    MatrixMode = "glMatrixMode"(Form::Script, "GLenum mode");
-    LoadIdentity = "glLoadIdentity"(Form::Script, "");
-    LoadMatrixf = "glLoadMatrixf"(Form::Script, "const GLfloat *m");
-    MultMatrixf = "glMultMatrixf"(Form::Script, "const GLfloat *m");
-    PushMatrix = "glPushMatrix"(Form::Script, "");
-    PopMatrix = "glPopMatrix"(Form::Script, "");
-    Translatef = "glTranslatef"(Form::Script, "GLfloat x, GLfloat y, GLfloat z");
-    Rotatef = "glRotatef"(Form::Script, "GLfloat angle, GLfloat x, GLfloat y, GLfloat z");
-    Scalef = "glScalef"(Form::Script, "GLfloat x, GLfloat y, GLfloat z");
-    Frustum = "glFrustum"(Form::Script, "GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear, GLdouble zFar");
-    Ortho = "glOrtho"(Form::Script, "GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear, GLdouble zFar");
-    Viewport = "glViewport"(Form::Script, "GLint x, GLint y, GLsizei width, GLsizei height");
-    DepthRange = "glDepthRange"(Form::Script, "GLdouble zNear, GLdouble zFar");
-    Enable = "glEnable"(Form::Script, "GLenum cap");
-    Disable = "glDisable"(Form::Script, "GLenum cap");
-    Vertex2s = "glVertex2s"(Form::Script, "GLshort x, GLshort y");
-    Vertex2sv = "glVertex2sv"(Form::Script, "const GLshort *v");
-    Vertex2i = "glVertex2i"(Form::Script, "GLint x, GLint y");
-    Vertex2iv = "glVertex2iv"(Form::Script, "const GLint *v");
-    Vertex2f = "glVertex2f"(Form::Script, "GLfloat x, GLfloat y");
-    Vertex2fv = "glVertex2fv"(Form::Script, "const GLfloat *v");
-    Vertex2d = "glVertex2d"(Form::Script, "GLdouble x, GLdouble y");
-    Vertex2dv = "glVertex2dv"(Form::Script, "const GLdouble *v");
-    Vertex3s = "glVertex3s"(Form::Script, "GLshort x, GLshort y, GLshort z");
-    Vertex3sv = "glVertex3sv"(Form::Script, "const GLshort *v");
-    Vertex3i = "glVertex3i"(Form::Script, "GLint x, GLint y, GLint z");
-    Vertex3iv = "glVertex3iv"(Form::Script, "const GLint *v");
-    Vertex3f = "glVertex3f"(Form::Script, "GLfloat x, GLfloat y, GLfloat z");
-    Vertex3fv = "glVertex3fv"(Form::Script, "const GLfloat *v");
-    Vertex3d = "glVertex3d"(Form::Script, "GLdouble x, GLdouble y, GLdouble z");
-    Vertex3dv = "glVertex3dv"(Form::Script, "const GLdouble *v");
-    Vertex4s = "glVertex4s"(Form::Script, "GLshort x, GLshort y, GLshort z, GLshort w");
-    Vertex4sv = "glVertex4sv"(Form::Script, "const GLshort *v");
-    Vertex4i = "glVertex4i"(Form::Script, "GLint x, GLint y, GLint z, GLint w");
-    Vertex4iv = "glVertex4iv"(Form::Script, "const GLint *v");
-    Vertex4f = "glVertex4f"(Form::Script, "GLfloat x, GLfloat y, GLfloat z, GLfloat w");
-    Vertex4fv = "glVertex4fv"(Form::Script, "const GLfloat *v");
-    Vertex4d = "glVertex4d"(Form::Script, "GLdouble x, GLdouble y, GLdouble z, GLdouble w");
-    Vertex4dv = "glVertex4dv"(Form::Script, "const GLdouble *v");
-    Color3b = "glColor3b"(Form::Script, "GLbyte red, GLbyte green, GLbyte blue");
-    Color3bv = "glColor3bv"(Form::Script, "const GLbyte *v");
-    Color3s = "glColor3s"(Form::Script, "GLshort red, GLshort green, GLshort blue");
-    Color3sv = "glColor3sv"(Form::Script, "const GLshort *v");
-    Color3i = "glColor3i"(Form::Script, "GLint red, GLint green, GLint blue");
-    Color3iv = "glColor3iv"(Form::Script, "const GLint *v");
-    Color3f = "glColor3f"(Form::Script, "GLfloat red, GLfloat green, GLfloat blue");
-    Color3fv = "glColor3fv"(Form::Script, "const GLfloat *v");
-    Color3d = "glColor3d"(Form::Script, "GLdouble red, GLdouble green, GLdouble blue");
-    Color3dv = "glColor3dv"(Form::Script, "const GLdouble *v");
-    Color3ub = "glColor3ub"(Form::Script, "GLubyte red, GLubyte green, GLubyte blue");
-    Color3ubv = "glColor3ubv"(Form::Script, "const GLubyte *v");
-    Color3us = "glColor3us"(Form::Script, "GLushort red, GLushort green, GLushort blue");
-    Color3usv = "glColor3usv"(Form::Script, "const GLushort *v");
-    Color3ui = "glColor3ui"(Form::Script, "GLuint red, GLuint green, GLuint blue");
-    Color3uiv = "glColor3uiv"(Form::Script, "const GLuint *v");
-    Color4b = "glColor4b"(Form::Script, "GLbyte red, GLbyte green, GLbyte blue, GLbyte alpha");
-    Color4bv = "glColor4bv"(Form::Script, "const GLbyte *v");
-    Color4s = "glColor4s"(Form::Script, "GLshort red, GLshort green, GLshort blue, GLshort alpha");
-    Color4sv = "glColor4sv"(Form::Script, "const GLshort *v");
-    Color4i = "glColor4i"(Form::Script, "GLint red, GLint green, GLint blue, GLint alpha");
-    Color4iv = "glColor4iv"(Form::Script, "const GLint *v");
-    Color4f = "glColor4f"(Form::Script, "GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha");
-    Color4fv = "glColor4fv"(Form::Script, "const GLfloat *v");
-    Color4d = "glColor4d"(Form::Script, "GLdouble red, GLdouble green, GLdouble blue, GLdouble alpha");
-    Color4dv = "glColor4dv"(Form::Script, "const GLdouble *v");
-    Color4ub = "glColor4ub"(Form::Script, "GLubyte red, GLubyte green, GLubyte blue, GLubyte alpha");
-    Color4ubv = "glColor4ubv"(Form::Script, "const GLubyte *v");
-    Color4us = "glColor4us"(Form::Script, "GLushort red, GLushort green, GLushort blue, GLushort alpha");
-    Color4usv = "glColor4usv"(Form::Script, "const GLushort *v");
-    Color4ui = "glColor4ui"(Form::Script, "GLuint red, GLuint green, GLuint blue, GLuint alpha");
-    Color4uiv = "glColor4uiv"(Form::Script, "const GLuint *v");
-    Normal3b = "glNormal3b"(Form::Script, "GLbyte nx, GLbyte ny, GLbyte nz");
-    Normal3bv = "glNormal3bv"(Form::Script, "const GLbyte *v");
-    Normal3s = "glNormal3s"(Form::Script, "GLshort nx, GLshort ny, GLshort nz");
-    Normal3sv = "glNormal3sv"(Form::Script, "const GLshort *v");
-    Normal3i = "glNormal3i"(Form::Script, "GLint nx, GLint ny, GLint nz");
-    Normal3iv = "glNormal3iv"(Form::Script, "const GLint *v");
-    Normal3f = "glNormal3f"(Form::Script, "GLfloat nx, GLfloat ny, GLfloat nz");
-    Normal3fv = "glNormal3fv"(Form::Script, "const GLfloat *v");
-    Normal3d = "glNormal3d"(Form::Script, "GLdouble nx, GLdouble ny, GLdouble nz");
-    Normal3dv = "glNormal3dv"(Form::Script, "const GLdouble *v");
-    TexCoord1s = "glTexCoord1s"(Form::Script, "GLshort s");
-    TexCoord1sv = "glTexCoord1sv"(Form::Script, "const GLshort *v");
-    TexCoord1i = "glTexCoord1i"(Form::Script, "GLint s");
-    TexCoord1iv = "glTexCoord1iv"(Form::Script, "const GLint *v");
-    TexCoord1f = "glTexCoord1f"(Form::Script, "GLfloat s");
-    TexCoord1fv = "glTexCoord1fv"(Form::Script, "const GLfloat *v");
-    TexCoord1d = "glTexCoord1d"(Form::Script, "GLdouble s");
-    TexCoord1dv = "glTexCoord1dv"(Form::Script, "const GLdouble *v");
-    TexCoord2s = "glTexCoord2s"(Form::Script, "GLshort s, GLshort t");
-    TexCoord2sv = "glTexCoord2sv"(Form::Script, "const GLshort *v");
-    TexCoord2i = "glTexCoord2i"(Form::Script, "GLint s, GLint t");
-    TexCoord2iv = "glTexCoord2iv"(Form::Script, "const GLint *v");
-    TexCoord2f = "glTexCoord2f"(Form::Script, "GLfloat s, GLfloat t");
-    TexCoord2fv = "glTexCoord2fv"(Form::Script, "const GLfloat *v");
-    TexCoord2d = "glTexCoord2d"(Form::Script, "GLdouble s, GLdouble t");
-    TexCoord2dv = "glTexCoord2dv"(Form::Script, "const GLdouble *v");
-    TexCoord3s = "glTexCoord3s"(Form::Script, "GLshort s, GLshort t, GLshort r");
-    TexCoord3sv = "glTexCoord3sv"(Form::Script, "const GLshort *v");
-    TexCoord3i = "glTexCoord3i"(Form::Script, "GLint s, GLint t, GLint r");
-    TexCoord3iv = "glTexCoord3iv"(Form::Script, "const GLint *v");
-    TexCoord3f = "glTexCoord3f"(Form::Script, "GLfloat s, GLfloat t, GLfloat r");
-    TexCoord3fv = "glTexCoord3fv"(Form::Script, "const GLfloat *v");
-    TexCoord3d = "glTexCoord3d"(Form::Script, "GLdouble s, GLdouble t, GLdouble r");
-    TexCoord3dv = "glTexCoord3dv"(Form::Script, "const GLdouble *v");
-    TexCoord4s = "glTexCoord4s"(Form::Script, "GLshort s, GLshort t, GLshort r, GLshort q");
-    TexCoord4sv = "glTexCoord4sv"(Form::Script, "const GLshort *v");
-    TexCoord4i = "glTexCoord4i"(Form::Script, "GLint s, GLint t, GLint r, GLint q");
-    TexCoord4iv = "glTexCoord4iv"(Form::Script, "const GLint *v");
-    TexCoord4f = "glTexCoord4f"(Form::Script, "GLfloat s, GLfloat t, GLfloat r, GLfloat q");
-    TexCoord4fv = "glTexCoord4fv"(Form::Script, "const GLfloat *v");
-    TexCoord4d = "glTexCoord4d"(Form::Script, "GLdouble s, GLdouble t, GLdouble r, GLdouble q");
-    TexCoord4dv = "glTexCoord4dv"(Form::Script, "const GLdouble *v");
-    MultiTexCoord1s = "glMultiTexCoord1s"(Form::Script, "GLenum target, GLshort s");
-    MultiTexCoord1sv = "glMultiTexCoord1sv"(Form::Script, "GLenum target, const GLshort *v");
-    MultiTexCoord1i = "glMultiTexCoord1i"(Form::Script, "GLenum target, GLint s");
-    MultiTexCoord1iv = "glMultiTexCoord1iv"(Form::Script, "GLenum target, const GLint *v");
-    MultiTexCoord1f = "glMultiTexCoord1f"(Form::Script, "GLenum target, GLfloat s");
-    MultiTexCoord1fv = "glMultiTexCoord1fv"(Form::Script, "GLenum target, const GLfloat *v");
-    MultiTexCoord1d = "glMultiTexCoord1d"(Form::Script, "GLenum target, GLdouble s");
-    MultiTexCoord1dv = "glMultiTexCoord1dv"(Form::Script, "GLenum target, const GLdouble *v");
-    MultiTexCoord2s = "glMultiTexCoord2s"(Form::Script, "GLenum target, GLshort s, GLshort t");
-    MultiTexCoord2sv = "glMultiTexCoord2sv"(Form::Script, "GLenum target, const GLshort *v");
-    MultiTexCoord2i = "glMultiTexCoord2i"(Form::Script, "GLenum target, GLint s, GLint t");
-    MultiTexCoord2iv = "glMultiTexCoord2iv"(Form::Script, "GLenum target, const GLint *v");
-    MultiTexCoord2f = "glMultiTexCoord2f"(Form::Script, "GLenum target, GLfloat s, GLfloat t");
-    MultiTexCoord2fv = "glMultiTexCoord2fv"(Form::Script, "GLenum target, const GLfloat *v");
-    MultiTexCoord2d = "glMultiTexCoord2d"(Form::Script, "GLenum target, GLdouble s, GLdouble t");
-    MultiTexCoord2dv = "glMultiTexCoord2dv"(Form::Script, "GLenum target, const GLdouble *v");
-    MultiTexCoord3s = "glMultiTexCoord3s"(Form::Script, "GLenum target, GLshort s, GLshort t, GLshort r");
-    MultiTexCoord3sv = "glMultiTexCoord3sv"(Form::Script, "GLenum target, const GLshort *v");
-    MultiTexCoord3i = "glMultiTexCoord3i"(Form::Script, "GLenum target, GLint s, GLint t, GLint r");
-    MultiTexCoord3iv = "glMultiTexCoord3iv"(Form::Script, "GLenum target, const GLint *v");
-    MultiTexCoord3f = "glMultiTexCoord3f"(Form::Script, "GLenum target, GLfloat s, GLfloat t, GLfloat r");
-    MultiTexCoord3fv = "glMultiTexCoord3fv"(Form::Script, "GLenum target, const GLfloat *v");
-    MultiTexCoord3d = "glMultiTexCoord3d"(Form::Script, "GLenum target, GLdouble s, GLdouble t, GLdouble r");
-    MultiTexCoord3dv = "glMultiTexCoord3dv"(Form::Script, "GLenum target, const GLdouble *v");
-    MultiTexCoord4s = "glMultiTexCoord4s"(Form::Script, "GLenum target, GLshort s, GLshort t, GLshort r, GLshort q");
-    MultiTexCoord4sv = "glMultiTexCoord4sv"(Form::Script, "GLenum target, const GLshort *v");
-    MultiTexCoord4i = "glMultiTexCoord4i"(Form::Script, "GLenum target, GLint s, GLint t, GLint r, GLint q");
-    MultiTexCoord4iv = "glMultiTexCoord4iv"(Form::Script, "GLenum target, const GLint *v");
-    MultiTexCoord4f = "glMultiTexCoord4f"(Form::Script, "GLenum target, GLfloat s, GLfloat t, GLfloat r, GLfloat q");
-    MultiTexCoord4fv = "glMultiTexCoord4fv"(Form::Script, "GLenum target, const GLfloat *v");
-    MultiTexCoord4d = "glMultiTexCoord4d"(Form::Script, "GLenum target, GLdouble s, GLdouble t, GLdouble r, GLdouble q");
-    MultiTexCoord4dv = "glMultiTexCoord4dv"(Form::Script, "GLenum target, const GLdouble *v");
-    MultiTexCoord1sARB = "glMultiTexCoord1sARB"(Form::Script, "GLenum target, GLshort s");
-    MultiTexCoord1svARB = "glMultiTexCoord1svARB"(Form::Script, "GLenum target, const GLshort *v");
-    MultiTexCoord1iARB = "glMultiTexCoord1iARB"(Form::Script, "GLenum target, GLint s");
-    MultiTexCoord1ivARB = "glMultiTexCoord1ivARB"(Form::Script, "GLenum target, const GLint *v");
-    MultiTexCoord1fARB = "glMultiTexCoord1fARB"(Form::Script, "GLenum target, GLfloat s");
-    MultiTexCoord1fvARB = "glMultiTexCoord1fvARB"(Form::Script, "GLenum target, const GLfloat *v");
-    MultiTexCoord1dARB = "glMultiTexCoord1dARB"(Form::Script, "GLenum target, GLdouble s");
-    MultiTexCoord1dvARB = "glMultiTexCoord1dvARB"(Form::Script, "GLenum target, const GLdouble *v");
-    MultiTexCoord2sARB = "glMultiTexCoord2sARB"(Form::Script, "GLenum target, GLshort s, GLshort t");
-    MultiTexCoord2svARB = "glMultiTexCoord2svARB"(Form::Script, "GLenum target, const GLshort *v");
-    MultiTexCoord2iARB = "glMultiTexCoord2iARB"(Form::Script, "GLenum target, GLint s, GLint t");
-    MultiTexCoord2ivARB = "glMultiTexCoord2ivARB"(Form::Script, "GLenum target, const GLint *v");
-    MultiTexCoord2fARB = "glMultiTexCoord2fARB"(Form::Script, "GLenum target, GLfloat s, GLfloat t");
-    MultiTexCoord2fvARB = "glMultiTexCoord2fvARB"(Form::Script, "GLenum target, const GLfloat *v");
-    MultiTexCoord2dARB = "glMultiTexCoord2dARB"(Form::Script, "GLenum target, GLdouble s, GLdouble t");
-    MultiTexCoord2dvARB = "glMultiTexCoord2dvARB"(Form::Script, "GLenum target, const GLdouble *v");
-    MultiTexCoord3sARB = "glMultiTexCoord3sARB"(Form::Script, "GLenum target, GLshort s, GLshort t, GLshort r");
-    MultiTexCoord3svARB = "glMultiTexCoord3svARB"(Form::Script, "GLenum target, const GLshort *v");
-    MultiTexCoord3iARB = "glMultiTexCoord3iARB"(Form::Script, "GLenum target, GLint s, GLint t, GLint r");
-    MultiTexCoord3ivARB = "glMultiTexCoord3ivARB"(Form::Script, "GLenum target, const GLint *v");
-    MultiTexCoord3fARB = "glMultiTexCoord3fARB"(Form::Script, "GLenum target, GLfloat s, GLfloat t, GLfloat r");
-    MultiTexCoord3fvARB = "glMultiTexCoord3fvARB"(Form::Script, "GLenum target, const GLfloat *v");
-    MultiTexCoord3dARB = "glMultiTexCoord3dARB"(Form::Script, "GLenum target, GLdouble s, GLdouble t, GLdouble r");
-    MultiTexCoord3dvARB = "glMultiTexCoord3dvARB"(Form::Script, "GLenum target, const GLdouble *v");
-    MultiTexCoord4sARB = "glMultiTexCoord4sARB"(Form::Script, "GLenum target, GLshort s, GLshort t, GLshort r, GLshort q");
-    MultiTexCoord4svARB = "glMultiTexCoord4svARB"(Form::Script, "GLenum target, const GLshort *v");
-    MultiTexCoord4iARB = "glMultiTexCoord4iARB"(Form::Script, "GLenum target, GLint s, GLint t, GLint r, GLint q");
-    MultiTexCoord4ivARB = "glMultiTexCoord4ivARB"(Form::Script, "GLenum target, const GLint *v");
-    MultiTexCoord4fARB = "glMultiTexCoord4fARB"(Form::Script, "GLenum target, GLfloat s, GLfloat t, GLfloat r, GLfloat q");
-    MultiTexCoord4fvARB = "glMultiTexCoord4fvARB"(Form::Script, "GLenum target, const GLfloat *v");
-    MultiTexCoord4dARB = "glMultiTexCoord4dARB"(Form::Script, "GLenum target, GLdouble s, GLdouble t, GLdouble r, GLdouble q");
-    MultiTexCoord4dvARB = "glMultiTexCoord4dvARB"(Form::Script, "GLenum target, const GLdouble *v");
-    ActiveTextureARB = "glActiveTextureARB"(Form::Script, "GLenum texture");
-    Rects = "glRects"(Form::Script, "GLshort x1, GLshort y1, GLshort x2, GLshort y2");
-    Rectsv = "glRectsv"(Form::Script, "const GLshort *v1, const GLshort *v2");
-    Recti = "glRecti"(Form::Script, "GLint x1, GLint y1, GLint x2, GLint y2");
-    Rectiv = "glRectiv"(Form::Script, "const GLint *v1, const GLint *v2");
-    Rectf = "glRectf"(Form::Script, "GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2");
-    Rectfv = "glRectfv"(Form::Script, "const GLfloat *v1, const GLfloat *v2");
-    Rectd = "glRectd"(Form::Script, "GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2");
-    Rectdv = "glRectdv"(Form::Script, "const GLdouble *v1, const GLdouble *v2");
-    Translated = "glTranslated"(Form::Script, "GLdouble x, GLdouble y, GLdouble z");
-    Rotated = "glRotated"(Form::Script, "GLdouble angle, GLdouble x, GLdouble y, GLdouble z");
-    Scaled = "glScaled"(Form::Script, "GLdouble x, GLdouble y, GLdouble z");
-    LoadMatrixd = "glLoadMatrixd"(Form::Script, "const GLdouble *m");
-    MultMatrixd = "glMultMatrixd"(Form::Script, "const GLdouble *m");
-    TexGenf = "glTexGenf"(Form::Script, "GLenum coord, GLenum pname, GLfloat param");
-    TexGend = "glTexGend"(Form::Script, "GLenum coord, GLenum pname, GLdouble param");
-    TexGendv = "glTexGendv"(Form::Script, "GLenum coord, GLenum pname, const GLdouble *params");
-    TexGeniv = "glTexGeniv"(Form::Script, "GLenum coord, GLenum pname, const GLint *params");
-    Begin = "glBegin"(Form::Script, "GLenum mode");
-    End = "glEnd"(Form::Script, "");
-    Lightf = "glLightf"(Form::Script, "GLenum light, GLenum pname, GLfloat param");
-    Lighti = "glLighti"(Form::Script, "GLenum light, GLenum pname, GLint param");
-    Lightfv = "glLightfv"(Form::Script, "GLenum light, GLenum pname, const GLfloat *params");
-    LightModelf = "glLightModelf"(Form::Script, "GLenum pname, GLfloat param");
-    LightModeli = "glLightModeli"(Form::Script, "GLenum pname, GLint param");
-    LightModelfv = "glLightModelfv"(Form::Script, "GLenum pname, const GLfloat *params");
-    Materialf = "glMaterialf"(Form::Script, "GLenum face, GLenum pname, GLfloat param");
-    Materialfv = "glMaterialfv"(Form::Script, "GLenum face, GLenum pname, const GLfloat *params");
-    ColorMaterial = "glColorMaterial"(Form::Script, "GLenum face, GLenum mode");
-    ShadeModel = "glShadeModel"(Form::Script, "GLenum mode");
-    ActiveTexture = "glActiveTexture"(Form::Script, "GLenum texture");
-    BindTexture = "glBindTexture"(Form::Script, "GLenum target, GLuint texture");
-    TexImage1D = "glTexImage1D"(Form::Script, "GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border, GLenum format, GLenum type, const void *pixels");
-    TexImage2D = "glTexImage2D"(Form::Script, "GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border, GLenum format, GLenum type, const void *pixels");
-    TexSubImage2D = "glTexSubImage2D"(Form::Script, "GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width, GLsizei height, GLenum format, GLenum type, const void *pixels");
-    CopyTexImage2D = "glCopyTexImage2D"(Form::Script, "GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width, GLsizei height, GLint border");
-    TexParameteri = "glTexParameteri"(Form::Script, "GLenum target, GLenum pname, GLint param");
-    TexParameterf = "glTexParameterf"(Form::Script, "GLenum target, GLenum pname, GLfloat param");
-    TexParameterfv = "glTexParameterfv"(Form::Script, "GLenum target, GLenum pname, const GLfloat *params");
-    TexGeni = "glTexGeni"(Form::Script, "GLenum coord, GLenum pname, GLint param");
-    TexGenfv = "glTexGenfv"(Form::Script, "GLenum coord, GLenum pname, const GLfloat *params");
-    TexEnvi = "glTexEnvi"(Form::Script, "GLenum target, GLenum pname, GLint param");
-    TexEnvf = "glTexEnvf"(Form::Script, "GLenum target, GLenum pname, GLfloat param");
-    TexEnvfv = "glTexEnvfv"(Form::Script, "GLenum target, GLenum pname, const GLfloat *params");
-    CombinerParameteriNV = "glCombinerParameteriNV"(Form::Script, "GLenum pname, GLint param");
-    CombinerParameterfvNV = "glCombinerParameterfvNV"(Form::Script, "GLenum pname, const GLfloat *params");
-    CombinerInputNV = "glCombinerInputNV"(Form::Script, "GLenum stage, GLenum portion, GLenum variable, GLenum input, GLenum mapping, GLenum componentUsage");
-    CombinerOutputNV = "glCombinerOutputNV"(Form::Script, "GLenum stage, GLenum portion, GLenum abOutput, GLenum cdOutput, GLenum sumOutput, GLenum scale, GLenum bias, GLboolean abDotProduct, GLboolean cdDotProduct, GLboolean muxSum");
-    FinalCombinerInputNV = "glFinalCombinerInputNV"(Form::Script, "GLenum variable, GLenum input, GLenum mapping, GLenum componentUsage");
-    AlphaFunc = "glAlphaFunc"(Form::Script, "GLenum func, GLfloat ref");
-    DepthFunc = "glDepthFunc"(Form::Script, "GLenum func");
-    DepthMask = "glDepthMask"(Form::Script, "GLboolean flag");
-    StencilFunc = "glStencilFunc"(Form::Script, "GLenum func, GLint ref, GLuint mask");
-    StencilOp = "glStencilOp"(Form::Script, "GLenum fail, GLenum zfail, GLenum zpass");
-    StencilMask = "glStencilMask"(Form::Script, "GLuint mask");
-    BlendFunc = "glBlendFunc"(Form::Script, "GLenum sfactor, GLenum dfactor");
-    ColorMask = "glColorMask"(Form::Script, "GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha");
-    PolygonOffset = "glPolygonOffset"(Form::Script, "GLfloat factor, GLfloat units");
-    PolygonMode = "glPolygonMode"(Form::Script, "GLenum face, GLenum mode");
-    CullFace = "glCullFace"(Form::Script, "GLenum mode");
-    FrontFace = "glFrontFace"(Form::Script, "GLenum mode");
-    LineWidth = "glLineWidth"(Form::Script, "GLfloat width");
-    PointSize = "glPointSize"(Form::Script, "GLfloat size");
-    Clear = "glClear"(Form::Script, "GLbitfield mask");
-    ClearColor = "glClearColor"(Form::Script, "GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha");
-    ClearDepth = "glClearDepth"(Form::Script, "GLdouble depth");
-    ClearStencil = "glClearStencil"(Form::Script, "GLint s");
-    ReadPixels = "glReadPixels"(Form::Script, "GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, void *pixels");
-    DrawArrays = "glDrawArrays"(Form::Client, "GLenum mode, GLint first, GLsizei count");
-    DrawElements = "glDrawElements"(Form::Client, "GLenum mode, GLsizei count, GLenum type, const void *indices");
-
-}
+gl_entry_table!(define_entries);
 
 impl Entry {
     /// The entry point a C name means.
     pub fn from_name(name: &str) -> Option<Entry> {
-        Entry::ALL.iter().copied().find(|e| e.name() == name)
+        static BY_NAME: OnceLock<std::collections::HashMap<&'static str, Entry>> = OnceLock::new();
+        BY_NAME
+            .get_or_init(|| Entry::ALL.iter().map(|e| (e.name(), *e)).collect())
+            .get(name)
+            .copied()
     }
 
     /// Every call a script may spell, for errors and generators.
@@ -325,10 +380,25 @@ impl Entry {
 
     /// The number of parameters.
     pub fn arity(self) -> usize {
-        match self.params() {
-            "" => 0,
-            p => p.split(',').count(),
-        }
+        self.raw_params().len()
+    }
+
+    /// The parameter list as `GL/gl.h` declares it (empty for `void`):
+    /// `GLenum light, GLenum pname, const GLfloat *params`.
+    pub fn params(self) -> &'static str {
+        static PARAMS: OnceLock<Vec<String>> = OnceLock::new();
+        &PARAMS.get_or_init(|| {
+            Entry::ALL
+                .iter()
+                .map(|e| {
+                    e.raw_params()
+                        .iter()
+                        .map(|(name, ty)| c_declaration(name, ty))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                })
+                .collect()
+        })[self as usize]
     }
 
     /// The C prototype, `void glMatrixMode(GLenum mode)`.
@@ -337,7 +407,31 @@ impl Entry {
             "" => "void",
             p => p,
         };
-        format!("void {}({params})", self.name())
+        format!("{} {}({params})", c_type(self.return_type()), self.name())
+    }
+}
+
+/// The C spelling of a table type: `*const GLfloat` → `const GLfloat *`, `c_void` → `void`.
+fn c_type(rust: &str) -> String {
+    let rust = rust.replace("c_void", "void");
+    let rust = rust.replace("* const", "*const").replace("* mut", "*mut");
+    if let Some(t) = rust.strip_prefix("*const ") {
+        format!("const {t} *")
+    } else if let Some(t) = rust.strip_prefix("*mut ") {
+        format!("{t} *")
+    } else {
+        rust
+    }
+}
+
+/// One C parameter declaration: `const GLfloat *params`, `GLfloat ref`.
+fn c_declaration(name: &str, rust_type: &str) -> String {
+    let name = name.strip_prefix("r#").unwrap_or(name);
+    let ty = c_type(rust_type);
+    if ty.ends_with('*') {
+        format!("{ty}{name}")
+    } else {
+        format!("{ty} {name}")
     }
 }
 
@@ -447,8 +541,15 @@ pub struct AttribCall {
 }
 
 impl Entry {
-    /// The family variant this entry point is, read from its name.
+    /// The family variant this entry point is (read from its name once per table).
     pub fn attrib_call(self) -> Option<AttribCall> {
+        static CALLS: OnceLock<Vec<Option<AttribCall>>> = OnceLock::new();
+        CALLS.get_or_init(|| Entry::ALL.iter().map(|e| e.read_attrib_call()).collect())
+            [self as usize]
+    }
+
+    /// The family variant, read from the name.
+    fn read_attrib_call(self) -> Option<AttribCall> {
         let name = self.name().strip_prefix("gl")?;
         let name = name.strip_suffix("ARB").unwrap_or(name);
         let (attrib, rest) = [

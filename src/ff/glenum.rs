@@ -64,6 +64,14 @@ pub fn gl<T: GlEnum>(v: T) -> u32 {
     v.gl_value().unwrap_or(0)
 }
 
+/// The value of a token name (`"GL_AMBIENT"`), from the registry.
+pub fn value_of(name: &str) -> Option<u32> {
+    registry::BY_NAME
+        .binary_search_by(|(n, _)| (*n).cmp(name))
+        .ok()
+        .map(|i| registry::BY_NAME[i].1)
+}
+
 /// GL_LIGHTi.
 pub fn light(i: u8) -> u32 {
     registry::LIGHT0 + u32::from(i)
@@ -77,6 +85,73 @@ pub fn texture_unit(i: u8) -> u32 {
 /// GL_COMBINERi_NV.
 pub fn combiner(i: u8) -> u32 {
     registry::COMBINER0_NV + u32::from(i)
+}
+
+/// Indexed token families: `GL_LIGHT0`…, `GL_TEXTURE0`…, `GL_COMBINER0_NV`….
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Family {
+    Light,
+    Texture,
+    Combiner,
+}
+
+impl Family {
+    /// (prefix, suffix, number of named tokens).
+    fn parts(self) -> (&'static str, &'static str, u32) {
+        match self {
+            Family::Light => ("GL_LIGHT", "", 8),
+            Family::Texture => ("GL_TEXTURE", "", 32),
+            Family::Combiner => ("GL_COMBINER", "_NV", 8),
+        }
+    }
+
+    /// `GL_TEXTURE3` (+ offset) → 3 (+ offset). Accepts the `_ARB` spelling of TEXTUREi.
+    pub fn parse(self, name: &str, offset: u32) -> Option<u8> {
+        let (prefix, suffix, count) = self.parts();
+        let rest = name.strip_prefix(prefix)?;
+        let digits = match self {
+            Family::Texture => rest.strip_suffix("_ARB").unwrap_or(rest),
+            _ => rest.strip_suffix(suffix)?,
+        };
+        if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+            return None;
+        }
+        let i: u32 = digits.parse().ok().filter(|i| *i < count)?;
+        u8::try_from(i.checked_add(offset)?).ok()
+    }
+
+    /// The token for index `i`: `GL_LIGHT2`, or `GL_LIGHT0 + 9` beyond the named ones.
+    pub fn print(self, i: u8) -> String {
+        let (prefix, suffix, count) = self.parts();
+        if u32::from(i) < count {
+            format!("{prefix}{i}{suffix}")
+        } else {
+            format!("{prefix}0{suffix} + {i}")
+        }
+    }
+
+    /// The index a GLenum value names: `GL_LIGHT0 + 3` → 3. Only the named range counts
+    /// (a value beyond it is another token: GL_TEXTURE0 + 110 is GL_SPARE0_NV).
+    pub fn from_value(self, value: u32) -> Option<u8> {
+        let (_, _, count) = self.parts();
+        let base = match self {
+            Family::Light => registry::LIGHT0,
+            Family::Texture => registry::TEXTURE0,
+            Family::Combiner => registry::COMBINER0_NV,
+        };
+        value
+            .checked_sub(base)
+            .filter(|i| *i < count)
+            .and_then(|i| u8::try_from(i).ok())
+    }
+
+    pub fn example(self) -> &'static str {
+        match self {
+            Family::Light => "GL_LIGHT0..GL_LIGHT7",
+            Family::Texture => "GL_TEXTURE0..GL_TEXTURE31",
+            Family::Combiner => "GL_COMBINER0_NV..GL_COMBINER7_NV",
+        }
+    }
 }
 
 macro_rules! gl_enums {

@@ -16,6 +16,8 @@
 
 pub mod api;
 pub mod apply;
+pub mod args;
+pub mod calls;
 pub mod combiner_model;
 pub mod combiners;
 pub mod command;
@@ -23,6 +25,7 @@ pub mod error;
 pub mod fragment;
 pub mod geometry;
 pub mod glenum;
+pub mod immediate;
 pub mod light;
 pub mod matrix;
 pub mod precision;

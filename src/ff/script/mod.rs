@@ -14,7 +14,6 @@
 //! [`print`] is the inverse of [`parse`]: `parse(&print(cmds)) == cmds` for every command list
 //! except indexed geometry, which prints de-indexed (same triangles, no index array).
 
-mod calls;
 mod lexer;
 pub mod names;
 mod parse;

@@ -1,61 +1,8 @@
-//! The script's side of GL token names: the indexed families (GL_LIGHTi, GL_TEXTUREi,
-//! GL_COMBINERi_NV, with `GL_LIGHT0 + n` beyond the named tokens, as C allows) and the
-//! ranking of names in errors. The enum tables are `ff::glenum`'s and the calls
+//! The script's side of GL token names: the ranking of names in errors. The indexed
+//! families (GL_LIGHTi, GL_TEXTUREi, GL_COMBINERi_NV) are `ff::glenum::Family`. The enum tables are `ff::glenum`'s and the calls
 //! `ff::api`'s, shared with both pipelines.
 
-pub use crate::ff::glenum::GlEnum;
-
-/// Indexed token families: `GL_LIGHT0`…, `GL_TEXTURE0`…, `GL_COMBINER0_NV`….
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Family {
-    Light,
-    Texture,
-    Combiner,
-}
-
-impl Family {
-    /// (prefix, suffix, number of named tokens).
-    fn parts(self) -> (&'static str, &'static str, u32) {
-        match self {
-            Family::Light => ("GL_LIGHT", "", 8),
-            Family::Texture => ("GL_TEXTURE", "", 32),
-            Family::Combiner => ("GL_COMBINER", "_NV", 8),
-        }
-    }
-
-    /// `GL_TEXTURE3` (+ offset) → 3 (+ offset). Accepts the `_ARB` spelling of TEXTUREi.
-    pub fn parse(self, name: &str, offset: u32) -> Option<u8> {
-        let (prefix, suffix, count) = self.parts();
-        let rest = name.strip_prefix(prefix)?;
-        let digits = match self {
-            Family::Texture => rest.strip_suffix("_ARB").unwrap_or(rest),
-            _ => rest.strip_suffix(suffix)?,
-        };
-        if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
-            return None;
-        }
-        let i: u32 = digits.parse().ok().filter(|i| *i < count)?;
-        u8::try_from(i.checked_add(offset)?).ok()
-    }
-
-    /// The token for index `i`: `GL_LIGHT2`, or `GL_LIGHT0 + 9` beyond the named ones.
-    pub fn print(self, i: u8) -> String {
-        let (prefix, suffix, count) = self.parts();
-        if u32::from(i) < count {
-            format!("{prefix}{i}{suffix}")
-        } else {
-            format!("{prefix}0{suffix} + {i}")
-        }
-    }
-
-    pub fn example(self) -> &'static str {
-        match self {
-            Family::Light => "GL_LIGHT0..GL_LIGHT7",
-            Family::Texture => "GL_TEXTURE0..GL_TEXTURE31",
-            Family::Combiner => "GL_COMBINER0_NV..GL_COMBINER7_NV",
-        }
-    }
-}
+pub use crate::ff::glenum::{Family, GlEnum};
 
 /// Levenshtein distance, to list the closest names first in errors.
 pub fn distance(a: &str, b: &str) -> usize {

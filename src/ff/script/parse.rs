@@ -3,12 +3,12 @@
 
 use std::sync::Arc;
 
-use glam::{Mat4, Vec3, Vec4};
-
 use super::lexer::{lex, Tok, Token};
 use super::names::{ranked, Family, GlEnum};
 use super::ScriptError;
-use crate::ff::api::{Attrib, AttribCall, Entry, Form};
+use crate::ff::api::{Entry, Form};
+use crate::ff::args::{Args, PixelShape};
+use crate::ff::immediate::Immediate;
 use crate::ff::*;
 use crate::vocab::DepthRule;
 
@@ -348,7 +348,138 @@ pub(super) struct Call<'s, 'a> {
 }
 
 impl Call<'_, '_> {
-    pub(super) fn count(&self, n: usize) -> Res<()> {
+    fn num(&self, i: usize) -> Option<(bool, &str)> {
+        match self.args.get(i) {
+            Some(Arg::Num { neg, text, .. }) => Some((*neg, text)),
+            _ => None,
+        }
+    }
+
+    fn int_cast(&self, i: usize) -> bool {
+        matches!(self.args.get(i), Some(Arg::Num { int_cast: true, .. }))
+    }
+
+    fn name(&self, i: usize) -> Option<(&str, u32)> {
+        match self.args.get(i) {
+            Some(Arg::Name { name, offset }) => Some((name, *offset)),
+            _ => None,
+        }
+    }
+
+    fn array(&self, i: usize) -> Option<(&str, &[(bool, &str)])> {
+        match self.args.get(i) {
+            Some(Arg::Array { ty, values }) => Some((ty, values)),
+            _ => None,
+        }
+    }
+
+    /// The numbers of a compound literal, as [`Call::f64`] reads each.
+    fn array_all(&self, i: usize) -> Res<Vec<f64>> {
+        let (_, values) = self
+            .array(i)
+            .ok_or_else(|| self.bad(i, "a compound-literal array such as (GLfloat[]){…}"))?;
+        values
+            .iter()
+            .map(|(neg, text)| {
+                let v = c_number(text).ok_or_else(|| self.bad(i, "numbers in the array"))?;
+                Ok(if *neg { -v } else { v })
+            })
+            .collect()
+    }
+    fn or_names(&self, i: usize) -> Option<Vec<&str>> {
+        match self.args.get(i) {
+            Some(Arg::Or(v)) => Some(v.clone()),
+            Some(Arg::Name { name, offset: 0 }) => Some(vec![name]),
+            Some(Arg::Num {
+                neg: false,
+                text: "0",
+                ..
+            }) => Some(vec![]),
+            _ => None,
+        }
+    }
+}
+
+impl Args for Call<'_, '_> {
+    type Error = ScriptError;
+
+    fn entry(&self) -> Entry {
+        self.entry
+    }
+    fn unsupported(&self) -> ScriptError {
+        ScriptError::UnknownCall {
+            line: self.line,
+            name: self.name.to_string(),
+            expected: ranked(self.name, &Entry::script_names()),
+        }
+    }
+    fn immediate(&self, rule: &'static str) -> ScriptError {
+        ScriptError::Immediate {
+            line: self.line,
+            call: self.name.to_string(),
+            rule,
+        }
+    }
+    fn array_length(&self, expected: usize, found: usize) -> ScriptError {
+        ScriptError::ArrayLength {
+            line: self.line,
+            call: self.name,
+            expected,
+            found,
+        }
+    }
+    fn also_expected(&self, err: ScriptError, alternative: &'static str) -> ScriptError {
+        match err {
+            ScriptError::UnknownEnum {
+                line,
+                call,
+                arg,
+                name,
+                mut expected,
+            } => {
+                expected.push(alternative);
+                ScriptError::UnknownEnum {
+                    line,
+                    call,
+                    arg,
+                    name,
+                    expected,
+                }
+            }
+            other => other,
+        }
+    }
+    fn bits(&self, i: usize, names: &[&'static str]) -> Res<Vec<&'static str>> {
+        let found = self
+            .or_names(i)
+            .ok_or_else(|| self.bad(i, "bits joined by '|', or 0"))?;
+        found
+            .into_iter()
+            .map(|n| {
+                names
+                    .iter()
+                    .find(|b| **b == n)
+                    .copied()
+                    .ok_or_else(|| ScriptError::UnknownEnum {
+                        line: self.line,
+                        call: self.name,
+                        arg: i + 1,
+                        name: n.to_string(),
+                        expected: names.to_vec(),
+                    })
+            })
+            .collect()
+    }
+    fn array_f64(&self, i: usize, n: usize) -> Res<Vec<f64>> {
+        let mut values = self.array_all(i)?;
+        if values.len() < n {
+            return Err(self.array_length(n, values.len()));
+        }
+        values.truncate(n);
+        Ok(values)
+    }
+
+    fn count(&self, n: usize) -> Res<()> {
         if self.args.len() == n {
             Ok(())
         } else {
@@ -360,7 +491,8 @@ impl Call<'_, '_> {
             })
         }
     }
-    pub(super) fn bad(&self, i: usize, expected: &'static str) -> ScriptError {
+
+    fn bad(&self, i: usize, expected: &'static str) -> ScriptError {
         let found = self.args.get(i).map_or("nothing".to_string(), |a| match a {
             Arg::Num { neg, text, .. } => format!("{}{text}", if *neg { "-" } else { "" }),
             Arg::Name { name, offset: 0 } => name.to_string(),
@@ -377,43 +509,24 @@ impl Call<'_, '_> {
             found,
         }
     }
-    fn num(&self, i: usize) -> Option<(bool, &str)> {
-        match self.args.get(i) {
-            Some(Arg::Num { neg, text, .. }) => Some((*neg, text)),
-            _ => None,
-        }
-    }
-    fn int_cast(&self, i: usize) -> bool {
-        matches!(self.args.get(i), Some(Arg::Num { int_cast: true, .. }))
-    }
+
     /// A number as C passes it before the parameter's conversion: a literal with an `f`
     /// suffix is a float, any other floating literal a double, an integer literal exact.
-    pub(super) fn f64(&self, i: usize) -> Res<f64> {
+    fn f64(&self, i: usize) -> Res<f64> {
         let (neg, text) = self.num(i).ok_or_else(|| self.bad(i, "a number"))?;
         let v = c_number(text).ok_or_else(|| self.bad(i, "a number"))?;
         let v = if self.int_cast(i) { v.trunc() } else { v };
         Ok(if neg { -v } else { v })
     }
-    /// The numbers of a compound literal, as [`Call::f64`] reads each.
-    fn array_f64(&self, i: usize) -> Res<Vec<f64>> {
-        let (_, values) = self
-            .array(i)
-            .ok_or_else(|| self.bad(i, "a compound-literal array such as (GLfloat[]){…}"))?;
-        values
-            .iter()
-            .map(|(neg, text)| {
-                let v = c_number(text).ok_or_else(|| self.bad(i, "numbers in the array"))?;
-                Ok(if *neg { -v } else { v })
-            })
-            .collect()
-    }
-    pub(super) fn f32(&self, i: usize) -> Res<f32> {
+
+    fn f32(&self, i: usize) -> Res<f32> {
         let (neg, text) = self.num(i).ok_or_else(|| self.bad(i, "a number"))?;
         let v = float_literal(text).ok_or_else(|| self.bad(i, "a number"))?;
         let v = if self.int_cast(i) { v.trunc() } else { v };
         Ok(if neg { -v } else { v })
     }
-    pub(super) fn int(&self, i: usize) -> Res<i64> {
+
+    fn int(&self, i: usize) -> Res<i64> {
         let (neg, text) = self.num(i).ok_or_else(|| self.bad(i, "an integer"))?;
         let v = int_literal(text)
             .or_else(|| {
@@ -425,19 +538,8 @@ impl Call<'_, '_> {
             .ok_or_else(|| self.bad(i, "an integer"))?;
         Ok(if neg { -v } else { v })
     }
-    pub(super) fn i32(&self, i: usize) -> Res<i32> {
-        i32::try_from(self.int(i)?).map_err(|_| self.bad(i, "a 32-bit integer"))
-    }
-    pub(super) fn u32(&self, i: usize) -> Res<u32> {
-        u32::try_from(self.int(i)?).map_err(|_| self.bad(i, "an unsigned 32-bit integer"))
-    }
-    fn name(&self, i: usize) -> Option<(&str, u32)> {
-        match self.args.get(i) {
-            Some(Arg::Name { name, offset }) => Some((name, *offset)),
-            _ => None,
-        }
-    }
-    pub(super) fn unknown(&self, i: usize, expected: Vec<&'static str>) -> ScriptError {
+
+    fn unknown(&self, i: usize, expected: Vec<&'static str>) -> ScriptError {
         let found = match self.args.get(i) {
             Some(Arg::Name { name, offset: 0 }) => name.to_string(),
             _ => return self.bad(i, "a GL token"),
@@ -451,37 +553,36 @@ impl Call<'_, '_> {
             expected,
         }
     }
-    pub(super) fn enm<T: GlEnum>(&self, i: usize) -> Res<T> {
+
+    fn enm<T: GlEnum>(&self, i: usize) -> Res<T> {
         self.name(i)
             .filter(|(_, off)| *off == 0)
             .and_then(|(n, _)| T::from_gl_name(n))
             .ok_or_else(|| self.unknown(i, T::names()))
     }
+
     /// A GL token naming one of `pnames` (a parameter name).
-    pub(super) fn pname(&self, i: usize, pnames: &[&'static str]) -> Res<&'static str> {
+    fn pname(&self, i: usize, pnames: &[&'static str]) -> Res<&'static str> {
         self.name(i)
             .and_then(|(n, off)| pnames.iter().find(|p| **p == n && off == 0).copied())
             .ok_or_else(|| self.unknown(i, pnames.to_vec()))
     }
-    pub(super) fn family(&self, i: usize, f: Family) -> Res<u8> {
+
+    fn family(&self, i: usize, f: Family) -> Res<u8> {
         self.name(i)
             .and_then(|(n, off)| f.parse(n, off))
             .ok_or_else(|| self.unknown(i, vec![f.example()]))
     }
-    pub(super) fn boolean(&self, i: usize) -> Res<bool> {
+
+    fn boolean(&self, i: usize) -> Res<bool> {
         match self.num(i) {
             Some((false, "0")) => Ok(false),
             Some((false, "1")) => Ok(true),
             _ => self.enm::<bool>(i),
         }
     }
-    fn array(&self, i: usize) -> Option<(&str, &[(bool, &str)])> {
-        match self.args.get(i) {
-            Some(Arg::Array { ty, values }) => Some((ty, values)),
-            _ => None,
-        }
-    }
-    pub(super) fn floats<const N: usize>(&self, i: usize) -> Res<[f32; N]> {
+
+    fn floats<const N: usize>(&self, i: usize) -> Res<[f32; N]> {
         let (_, values) = self
             .array(i)
             .ok_or_else(|| self.bad(i, "a (GLfloat[]){…} array"))?;
@@ -500,34 +601,11 @@ impl Call<'_, '_> {
         }
         Ok(out)
     }
-    pub(super) fn vec4_array(&self, i: usize) -> Res<Vec4> {
-        self.floats::<4>(i).map(Vec4::from_array)
-    }
-    pub(super) fn vec3_args(&self, from: usize) -> Res<Vec3> {
-        Ok(Vec3::new(
-            self.f32(from)?,
-            self.f32(from + 1)?,
-            self.f32(from + 2)?,
-        ))
-    }
-    pub(super) fn vec3_array(&self, i: usize) -> Res<Vec3> {
-        self.floats::<3>(i).map(Vec3::from_array)
-    }
-    pub(super) fn mat4(&self, i: usize) -> Res<Mat4> {
-        self.floats::<16>(i).map(|a| Mat4::from_cols_array(&a))
-    }
-    pub(super) fn vec4_args(&self, from: usize) -> Res<Vec4> {
-        Ok(Vec4::new(
-            self.f32(from)?,
-            self.f32(from + 1)?,
-            self.f32(from + 2)?,
-            self.f32(from + 3)?,
-        ))
-    }
+
     /// glTexImage's data: NULL, a readback buffer `readback_<n>`, a converted depth
     /// readback `fixedfunc_depth_<ubyte|ushort>_<truncate|round>(readback_<n>)`, or a pixel
     /// array.
-    pub(super) fn tex_data(&self, i: usize) -> Res<TexData> {
+    fn tex_data(&self, i: usize, shape: PixelShape) -> Res<TexData> {
         if let Some(Arg::Call { func, arg }) = self.args.get(i) {
             let (ty, rule) = depth_helper(func).ok_or_else(|| {
                 self.bad(i, "a depth helper: fixedfunc_depth_ubyte_truncate, fixedfunc_depth_ubyte_round, fixedfunc_depth_ushort_truncate or fixedfunc_depth_ushort_round")
@@ -541,11 +619,12 @@ impl Call<'_, '_> {
         }
         match self.name(i) {
             Some((n, 0)) if n.starts_with("readback_") => self.slot(i).map(TexData::Readback),
-            _ => Ok(self.pixels(i)?.map_or(TexData::Null, TexData::Bytes)),
+            _ => Ok(self.pixels(i, shape)?.map_or(TexData::Null, TexData::Bytes)),
         }
     }
+
     /// Pixel data: NULL, or a compound literal whose element type gives the byte encoding.
-    pub(super) fn pixels(&self, i: usize) -> Res<Option<Arc<[u8]>>> {
+    fn pixels(&self, i: usize, _shape: PixelShape) -> Res<Option<Arc<[u8]>>> {
         if let Some(("NULL", 0)) = self.name(i) {
             return Ok(None);
         }
@@ -579,6 +658,14 @@ impl Call<'_, '_> {
         }
         Ok(Some(Arc::from(bytes)))
     }
+    fn slot(&self, i: usize) -> Res<u32> {
+        self.name(i)
+            .filter(|(_, off)| *off == 0)
+            .and_then(|(n, _)| n.strip_prefix("readback_"))
+            .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+            .and_then(|d| d.parse().ok())
+            .ok_or_else(|| self.bad(i, "a readback slot readback_<n>"))
+    }
 }
 
 /// Parses a script into Commands.
@@ -594,7 +681,13 @@ pub fn parse_lines(src: &str) -> Result<Vec<(usize, Command)>, ScriptError> {
         toks: &toks,
         pos: 0,
     };
-    let mut out = Folder::default();
+    // The model follows the script, so that glBegin reads the current values any earlier
+    // command left (glColor, a glEnd's last vertex, glPopAttrib).
+    let mut state = FixedState::default();
+    let mut immediate = Immediate::default();
+    let mut out = Vec::new();
+    let mut made = Vec::new();
+    let mut open_line = 0;
     while cur.peek().is_some() {
         // An empty statement is valid C and does nothing.
         if cur.peek() == Some(Tok::Semi) {
@@ -609,352 +702,30 @@ pub fn parse_lines(src: &str) -> Result<Vec<(usize, Command)>, ScriptError> {
                 name: stmt.name.to_string(),
                 expected: ranked(stmt.name, &Entry::script_names()),
             })?;
-        out.call(&Call {
+        let call = Call {
             line: stmt.line,
             name: entry.name(),
             entry,
             args: &stmt.args,
-        })?;
-        out.lines.resize(out.cmds.len(), stmt.line);
-    }
-    out.finish()
-}
-
-/// glBegin/glEnd folding, with the current vertex values tracked across the script (GL
-/// defaults at the start) so vertices before an attribute's first call get the right value.
-#[derive(Default)]
-struct Folder {
-    cmds: Vec<Command>,
-    /// The script line of each command in `cmds`.
-    lines: Vec<usize>,
-    current: Option<CurrentValues>,
-    open: Option<Open>,
-}
-
-/// A glBegin not yet ended.
-struct Open {
-    line: usize,
-    geometry: Geometry,
-    /// The current values at glBegin: what vertices before an attribute's first call get.
-    begin: CurrentValues,
-    /// Attributes called inside the pair (colour, normal, texcoord per unit): each gets an
-    /// array at the next vertex, so a value set after the last vertex only stays current.
-    called: [bool; 2 + MAX_TEXTURE_UNITS],
-}
-
-enum Attr {
-    Color(Vec4),
-    Normal(Vec3),
-    TexCoord(u8, Vec4),
-}
-
-impl Folder {
-    fn current(&self) -> CurrentValues {
-        self.current.unwrap_or(CurrentValues::DEFAULT)
-    }
-
-    fn call(&mut self, c: &Call) -> Res<()> {
-        if let Some(form) = c.entry.attrib_call() {
-            return self.family(c, form);
-        }
-        match c.entry {
-            Entry::Begin => {
-                c.count(1)?;
-                self.begin(c, c.enm(0)?)
-            }
-            Entry::End => {
-                c.count(0)?;
-                self.end_pair(c)
-            }
-            _ => {
-                if self.open.is_some() {
-                    return Err(immediate(
-                        c,
-                        "only vertex attributes are allowed inside glBegin/glEnd",
-                    ));
-                }
-                self.cmds.push(command(c)?);
-                Ok(())
-            }
-        }
-    }
-
-    /// One call of the vertex-attribute families (glVertex, glColor, glNormal, glTexCoord,
-    /// glMultiTexCoord, glRect) in any of its variants: the values are converted to the
-    /// parameter type as C does, then colours and normals of integer types are normalised
-    /// (GL 1.5 Table 2.9); missing components take GL's defaults (z = 0, w = 1, q = 1,
-    /// alpha = 1).
-    fn family(&mut self, c: &Call, form: AttribCall) -> Res<()> {
-        let from = usize::from(form.attrib == Attrib::MultiTexCoord);
-        let v = attrib_values(c, form, from)?;
-        let f = |k: usize, default: f32| v.get(k).map_or(default, |x| *x as f32);
-        let n = |k: usize, default: f32| v.get(k).map_or(default, |x| form.ty.normalized(*x));
-        let coords = Vec4::new(f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 1.0));
-        match form.attrib {
-            Attrib::Vertex => self.vertex(c, coords),
-            Attrib::Rect => {
-                if self.open.is_some() {
-                    return Err(immediate(c, "glRect inside glBegin/glEnd"));
-                }
-                // Mesa draws glRect as one GL_QUADS: (x1,y1) (x2,y1) (x2,y2) (x1,y2).
-                let (x1, y1, x2, y2) = (f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 0.0));
-                self.begin(c, Primitive::Quads)?;
-                for (x, y) in [(x1, y1), (x2, y1), (x2, y2), (x1, y2)] {
-                    self.vertex(c, Vec4::new(x, y, 0.0, 1.0))?;
-                }
-                self.end_pair(c)
-            }
-            Attrib::Color => {
-                let color = Vec4::new(n(0, 0.0), n(1, 0.0), n(2, 0.0), n(3, 1.0));
-                self.attribute_call(c, Attr::Color(color))
-            }
-            Attrib::Normal => {
-                let normal = Vec3::new(n(0, 0.0), n(1, 0.0), n(2, 1.0));
-                self.attribute_call(c, Attr::Normal(normal))
-            }
-            Attrib::TexCoord => self.attribute_call(c, Attr::TexCoord(0, coords)),
-            Attrib::MultiTexCoord => {
-                let unit = c.family(0, Family::Texture)?;
-                self.attribute_call(c, Attr::TexCoord(unit, coords))
-            }
-        }
-    }
-
-    fn attribute_call(&mut self, c: &Call, attr: Attr) -> Res<()> {
-        if let (Some(_), Attr::TexCoord(unit, _)) = (&self.open, &attr) {
-            if usize::from(*unit) >= MAX_TEXTURE_UNITS {
-                return Err(immediate(c, "texture unit beyond MAX_TEXTURE_UNITS"));
-            }
-        }
-        self.attribute(attr);
-        Ok(())
-    }
-
-    fn begin(&mut self, c: &Call, primitive: Primitive) -> Res<()> {
-        if self.open.is_some() {
-            return Err(immediate(c, "glBegin inside glBegin/glEnd"));
-        }
-        self.open = Some(Open {
-            line: c.line,
-            geometry: Geometry::new(primitive, Vec::new()),
-            begin: self.current(),
-            called: [false; 2 + MAX_TEXTURE_UNITS],
-        });
-        Ok(())
-    }
-
-    fn end_pair(&mut self, c: &Call) -> Res<()> {
-        let open = self
-            .open
-            .take()
-            .ok_or_else(|| immediate(c, "glEnd without glBegin"))?;
-        self.end(open.geometry, open.begin);
-        Ok(())
-    }
-
-    /// glVertex: a vertex with the current values of every attribute with an array.
-    fn vertex(&mut self, c: &Call, p: Vec4) -> Res<()> {
-        let cur = self.current();
-        let open = self
-            .open
-            .as_mut()
-            .ok_or_else(|| immediate(c, "glVertex outside glBegin/glEnd"))?;
-        open.arrays_for_called();
-        let g = &mut open.geometry;
-        g.positions.push(p);
-        if let Some(v) = &mut g.colors {
-            v.push(cur.color);
-        }
-        if let Some(v) = &mut g.normals {
-            v.push(cur.normal);
-        }
-        for (u, t) in g.texcoords.iter_mut().enumerate() {
-            if let Some(v) = t {
-                v.push(cur.texcoords[u]);
-            }
-        }
-        Ok(())
-    }
-
-    fn attribute(&mut self, attr: Attr) {
-        let mut cur = self.current();
-        let index = match attr {
-            Attr::Color(v) => {
-                cur.color = v;
-                0
-            }
-            Attr::Normal(v) => {
-                cur.normal = v;
-                1
-            }
-            Attr::TexCoord(unit, coord) => {
-                // An invalid unit is FixedState's INVALID_ENUM outside the pair, a parse
-                // error inside (checked by `attribute`).
-                if let Some(t) = cur.texcoords.get_mut(usize::from(unit)) {
-                    *t = coord;
-                }
-                2 + usize::from(unit)
-            }
         };
-        match &mut self.open {
-            Some(open) => {
-                if let Some(flag) = open.called.get_mut(index) {
-                    *flag = true;
-                }
-            }
-            None => self.cmds.push(match attr {
-                Attr::Color(v) => Command::Color(v),
-                Attr::Normal(v) => Command::Normal(v),
-                Attr::TexCoord(unit, coord) => Command::TexCoord { unit, coord },
-            }),
+        if entry == Entry::Begin {
+            open_line = stmt.line;
         }
-        self.current = Some(cur);
-    }
-
-    /// Emits the Draw, then any value set after the last vertex, so the state after the
-    /// commands equals GL's after glEnd.
-    fn end(&mut self, g: Geometry, begin: CurrentValues) {
-        let mut after = after_draw(&g, begin);
-        let cur = self.current();
-        self.cmds.push(Command::Draw(Arc::new(g)));
-        if after.color != cur.color {
-            self.cmds.push(Command::Color(cur.color));
-            after.color = cur.color;
-        }
-        if after.normal != cur.normal {
-            self.cmds.push(Command::Normal(cur.normal));
-        }
-        for u in 0..MAX_TEXTURE_UNITS {
-            if after.texcoords[u] != cur.texcoords[u] {
-                self.cmds.push(Command::TexCoord {
-                    unit: u as u8,
-                    coord: cur.texcoords[u],
-                });
-            }
+        immediate.call(&call, &state.current, &mut made)?;
+        for cmd in made.drain(..) {
+            // Errors are the executing pipeline's to report; here only the values count.
+            let _ = state.apply(&cmd);
+            out.push((stmt.line, cmd));
         }
     }
-
-    fn finish(self) -> Res<Vec<(usize, Command)>> {
-        if let Some(Open { line, .. }) = self.open {
-            return Err(ScriptError::Immediate {
-                line,
-                call: "glBegin".into(),
-                rule: "glBegin without glEnd",
-            });
-        }
-        Ok(self.lines.into_iter().zip(self.cmds).collect())
-    }
-}
-
-/// What FixedState holds after the Draw: the last vertex's values where arrays exist, else
-/// the values current at glBegin (attributes without arrays were not called inside the
-/// pair, or only after the last vertex).
-fn after_draw(g: &Geometry, mut v: CurrentValues) -> CurrentValues {
-    v.color = Geometry::last(&g.colors).unwrap_or(v.color);
-    v.normal = Geometry::last(&g.normals).unwrap_or(v.normal);
-    for (u, t) in g.texcoords.iter().enumerate() {
-        v.texcoords[u] = Geometry::last(t).unwrap_or(v.texcoords[u]);
-    }
-    v
-}
-
-impl Open {
-    /// Creates the arrays of attributes called since glBegin, filled with the glBegin
-    /// values for the vertices already emitted.
-    fn arrays_for_called(&mut self) {
-        let n = self.geometry.positions.len();
-        let g = &mut self.geometry;
-        if self.called[0] {
-            g.colors.get_or_insert_with(|| vec![self.begin.color; n]);
-        }
-        if self.called[1] {
-            g.normals.get_or_insert_with(|| vec![self.begin.normal; n]);
-        }
-        for (u, t) in g.texcoords.iter_mut().enumerate() {
-            if self.called[2 + u] {
-                t.get_or_insert_with(|| vec![self.begin.texcoords[u]; n]);
-            }
-        }
-    }
-}
-
-fn immediate(c: &Call, rule: &'static str) -> ScriptError {
-    ScriptError::Immediate {
-        line: c.line,
-        call: c.name.to_string(),
-        rule,
-    }
-}
-
-/// The values of an attribute-family call from argument `from` on: `count` scalars, or
-/// one array (two for glRect's corners) of at least that many, each converted to the
-/// parameter type as C converts an argument.
-fn attrib_values(c: &Call, form: AttribCall, from: usize) -> Res<Vec<f64>> {
-    if !form.vector {
-        c.count(from + form.count)?;
-        return (0..form.count)
-            .map(|k| c.f64(from + k).map(|v| form.ty.convert(v)))
-            .collect();
-    }
-    let arrays = if form.attrib == Attrib::Rect { 2 } else { 1 };
-    c.count(from + arrays)?;
-    let per = form.count / arrays;
-    let mut out = Vec::with_capacity(form.count);
-    for k in 0..arrays {
-        let values = c.array_f64(from + k)?;
-        if values.len() < per {
-            return Err(ScriptError::ArrayLength {
-                line: c.line,
-                call: c.name,
-                expected: per,
-                found: values.len(),
-            });
-        }
-        out.extend(values[..per].iter().map(|v| form.ty.convert(*v)));
+    if immediate.is_open() {
+        return Err(ScriptError::Immediate {
+            line: open_line,
+            call: "glBegin".into(),
+            rule: "glBegin without glEnd",
+        });
     }
     Ok(out)
-}
-
-/// Every call that is not immediate mode.
-fn command(c: &Call) -> Res<Command> {
-    for area in [
-        super::calls::transform_and_fragment,
-        super::calls::lighting,
-        super::calls::texturing,
-        super::calls::combiners,
-    ] {
-        if let Some(cmd) = area(c)? {
-            return Ok(cmd);
-        }
-    }
-    Err(ScriptError::UnknownCall {
-        line: c.line,
-        name: c.name.to_string(),
-        expected: ranked(c.name, &Entry::script_names()),
-    })
-}
-
-impl Call<'_, '_> {
-    pub(super) fn or_names(&self, i: usize) -> Option<Vec<&str>> {
-        match self.args.get(i) {
-            Some(Arg::Or(v)) => Some(v.clone()),
-            Some(Arg::Name { name, offset: 0 }) => Some(vec![name]),
-            Some(Arg::Num {
-                neg: false,
-                text: "0",
-                ..
-            }) => Some(vec![]),
-            _ => None,
-        }
-    }
-    pub(super) fn slot(&self, i: usize) -> Res<u32> {
-        self.name(i)
-            .filter(|(_, off)| *off == 0)
-            .and_then(|(n, _)| n.strip_prefix("readback_"))
-            .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
-            .and_then(|d| d.parse().ok())
-            .ok_or_else(|| self.bad(i, "a readback slot readback_<n>"))
-    }
 }
 
 /// The client helpers a script may apply to a depth readback, by name.

@@ -1,15 +1,12 @@
-//! One converter per area from a parsed call to its Command. Each returns `Ok(None)` for
-//! calls of other areas.
+//! From a call to its Command, written once for both front ends (see [`Args`]): one
+//! converter per area, each returning `Ok(None)` for calls of other areas.
 
-use super::names::Family;
-use super::parse::Call;
-use super::ScriptError;
-use crate::ff::api::Entry;
-use crate::ff::*;
+use super::api::Entry;
+use super::args::{Args, PixelShape};
+use super::glenum::Family;
+use super::*;
 
-type Res<T> = Result<T, ScriptError>;
-
-fn volume(c: &Call) -> Res<ViewVolume> {
+fn volume<A: Args>(c: &A) -> Result<ViewVolume, A::Error> {
     c.count(6)?;
     Ok(ViewVolume {
         left: c.f32(0)?,
@@ -21,64 +18,46 @@ fn volume(c: &Call) -> Res<ViewVolume> {
     })
 }
 
-fn clear_mask(c: &Call) -> Res<ClearMask> {
+/// The Command of every call that is not immediate mode (those are
+/// [`Immediate`](super::immediate::Immediate)'s).
+pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
+    for area in [transform_and_fragment, lighting, texturing, combiners] {
+        if let Some(cmd) = area(c)? {
+            return Ok(cmd);
+        }
+    }
+    Err(c.unsupported())
+}
+
+fn clear_mask<A: Args>(c: &A) -> Result<ClearMask, A::Error> {
     const BITS: [&str; 3] = [
         "GL_COLOR_BUFFER_BIT",
         "GL_DEPTH_BUFFER_BIT",
         "GL_STENCIL_BUFFER_BIT",
     ];
-    let names = c
-        .or_names(0)
-        .ok_or_else(|| c.bad(0, "buffer bits joined by '|', or 0"))?;
     let mut m = ClearMask::default();
-    for n in names {
+    for n in c.bits(0, &BITS)? {
         match n {
             "GL_COLOR_BUFFER_BIT" => m.color = true,
             "GL_DEPTH_BUFFER_BIT" => m.depth = true,
-            "GL_STENCIL_BUFFER_BIT" => m.stencil = true,
-            other => {
-                return Err(ScriptError::UnknownEnum {
-                    line: c.line,
-                    call: c.name,
-                    arg: 1,
-                    name: other.to_string(),
-                    expected: BITS.to_vec(),
-                })
-            }
+            _ => m.stencil = true,
         }
     }
     Ok(m)
 }
 
-fn capability(c: &Call) -> Res<Capability> {
+fn capability<A: Args>(c: &A) -> Result<Capability, A::Error> {
     if let Ok(i) = c.family(0, Family::Light) {
         return Ok(Capability::Light(i));
     }
-    c.enm(0).map_err(|e| match e {
-        ScriptError::UnknownEnum {
-            line,
-            call,
-            arg,
-            name,
-            mut expected,
-        } => {
-            expected.push("GL_LIGHT0..GL_LIGHT7");
-            ScriptError::UnknownEnum {
-                line,
-                call,
-                arg,
-                name,
-                expected,
-            }
-        }
-        other => other,
-    })
+    c.enm(0)
+        .map_err(|e| c.also_expected(e, "GL_LIGHT0..GL_LIGHT7"))
 }
 
 /// Matrices, viewport, enables, per-fragment operations, clears and readback.
-pub(super) fn transform_and_fragment(c: &Call) -> Res<Option<Command>> {
+pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
     let n = |k: usize| c.count(k);
-    Ok(Some(match c.entry {
+    Ok(Some(match c.entry() {
         Entry::MatrixMode => n(1).and(c.enm(0)).map(Command::MatrixMode)?,
         Entry::LoadIdentity => n(0).map(|_| Command::LoadIdentity)?,
         Entry::LoadMatrixf | Entry::LoadMatrixd => n(1).and(c.mat4(0)).map(Command::LoadMatrix)?,
@@ -218,8 +197,8 @@ const MATERIAL_VECTORS: &[&str] = &[
 ];
 
 /// Lighting and materials.
-pub(super) fn lighting(c: &Call) -> Res<Option<Command>> {
-    Ok(Some(match c.entry {
+pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
+    Ok(Some(match c.entry() {
         Entry::Lightfv => {
             c.count(3)?;
             let light = c.family(0, Family::Light)?;
@@ -350,8 +329,8 @@ const ENV_PARAMS: &[&str] = &[
 ];
 
 /// Texture units, objects, images, parameters, texgen and texenv.
-pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
-    Ok(Some(match c.entry {
+pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
+    Ok(Some(match c.entry() {
         Entry::ActiveTexture | Entry::ActiveTextureARB => c
             .count(1)
             .and(c.family(0, Family::Texture))
@@ -366,45 +345,65 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
         Entry::TexImage1D => {
             c.count(8)?;
             target_is(c, TextureTarget::Texture1D)?;
+            let shape = PixelShape {
+                width: c.i32(3)?,
+                height: 1,
+                format: c.enm(5)?,
+                ty: c.enm(6)?,
+            };
             Command::TexImage(TexImage {
                 target: TextureTarget::Texture1D,
                 level: c.i32(1)?,
                 internal_format: c.enm(2)?,
-                width: c.i32(3)?,
+                width: shape.width,
                 height: 1,
                 border: c.i32(4)?,
-                format: c.enm(5)?,
-                ty: c.enm(6)?,
-                data: c.tex_data(7)?,
+                format: shape.format,
+                ty: shape.ty,
+                data: c.tex_data(7, shape)?,
             })
         }
         Entry::TexImage2D => {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
+            let shape = PixelShape {
+                width: c.i32(3)?,
+                height: c.i32(4)?,
+                format: c.enm(6)?,
+                ty: c.enm(7)?,
+            };
             Command::TexImage(TexImage {
                 target: TextureTarget::Texture2D,
                 level: c.i32(1)?,
                 internal_format: c.enm(2)?,
-                width: c.i32(3)?,
-                height: c.i32(4)?,
+                width: shape.width,
+                height: shape.height,
                 border: c.i32(5)?,
-                format: c.enm(6)?,
-                ty: c.enm(7)?,
-                data: c.tex_data(8)?,
+                format: shape.format,
+                ty: shape.ty,
+                data: c.tex_data(8, shape)?,
             })
         }
         Entry::TexSubImage2D => {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
-            Command::TexSubImage2D(TexSubImage {
-                level: c.i32(1)?,
-                x: c.i32(2)?,
-                y: c.i32(3)?,
+            let shape = PixelShape {
                 width: c.i32(4)?,
                 height: c.i32(5)?,
                 format: c.enm(6)?,
                 ty: c.enm(7)?,
-                data: c.pixels(8)?.ok_or_else(|| c.bad(8, "a pixel array"))?,
+            };
+            Command::TexSubImage2D(TexSubImage {
+                level: c.i32(1)?,
+                x: c.i32(2)?,
+                y: c.i32(3)?,
+                width: shape.width,
+                height: shape.height,
+                format: shape.format,
+                ty: shape.ty,
+                data: c
+                    .pixels(8, shape)?
+                    .ok_or_else(|| c.bad(8, "a pixel array"))?,
             })
         }
         Entry::CopyTexImage2D => {
@@ -468,7 +467,7 @@ pub(super) fn texturing(c: &Call) -> Res<Option<Command>> {
     }))
 }
 
-fn target_is(c: &Call, want: TextureTarget) -> Res<()> {
+fn target_is<A: Args>(c: &A, want: TextureTarget) -> Result<(), A::Error> {
     let t: TextureTarget = c.enm(0)?;
     if t == want {
         Ok(())
@@ -484,11 +483,11 @@ fn target_is(c: &Call, want: TextureTarget) -> Res<()> {
     }
 }
 
-fn env_target(c: &Call) -> Res<()> {
+fn env_target<A: Args>(c: &A) -> Result<(), A::Error> {
     c.pname(0, &["GL_TEXTURE_ENV"]).map(|_| ())
 }
 
-fn tex_param(c: &Call) -> Res<TexParam> {
+fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
     Ok(match c.pname(1, TEX_PARAMS)? {
         "GL_TEXTURE_MIN_FILTER" => TexParam::MinFilter(c.enm(2)?),
         "GL_TEXTURE_MAG_FILTER" => TexParam::MagFilter(c.enm(2)?),
@@ -502,7 +501,7 @@ fn tex_param(c: &Call) -> Res<TexParam> {
     })
 }
 
-fn tex_env(c: &Call) -> Res<TexEnvParam> {
+fn tex_env<A: Args>(c: &A) -> Result<TexEnvParam, A::Error> {
     let pname = c.pname(1, ENV_PARAMS)?;
     // GL_SOURCE1_RGB, GL_SRC1_ALPHA, GL_OPERAND2_RGB: the first digit is the argument.
     let digit_arg = |p: &str| {
@@ -513,7 +512,7 @@ fn tex_env(c: &Call) -> Res<TexEnvParam> {
             _ => CombineArg::Arg2,
         }
     };
-    let source = || -> Res<CombineSource> {
+    let source = || -> Result<CombineSource, A::Error> {
         if let Ok(u) = c.family(2, Family::Texture) {
             return Ok(CombineSource::TextureUnit(u));
         }
@@ -534,14 +533,14 @@ fn tex_env(c: &Call) -> Res<TexEnvParam> {
     })
 }
 
-fn register(c: &Call, i: usize) -> Res<Register> {
+fn register<A: Args>(c: &A, i: usize) -> Result<Register, A::Error> {
     if let Ok(u) = c.family(i, Family::Texture) {
         return Ok(Register::Texture(u));
     }
     c.enm(i)
 }
 
-fn input(c: &Call, from: usize) -> Res<CombinerInput> {
+fn input<A: Args>(c: &A, from: usize) -> Result<CombinerInput, A::Error> {
     Ok(CombinerInput {
         register: register(c, from)?,
         mapping: c.enm(from + 1)?,
@@ -550,8 +549,8 @@ fn input(c: &Call, from: usize) -> Res<CombinerInput> {
 }
 
 /// NV_register_combiners.
-pub(super) fn combiners(c: &Call) -> Res<Option<Command>> {
-    Ok(Some(match c.entry {
+pub fn combiners<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
+    Ok(Some(match c.entry() {
         Entry::CombinerParameteriNV => {
             c.count(2)?;
             Command::CombinerParameter(

@@ -1,0 +1,138 @@
+//! The arguments of one GL call, as the converters of [`calls`](super::calls) read them.
+//!
+//! A call reaches the layer through one of two front ends: a script (`ff::script`, where
+//! tokens are names and arrays are compound literals) or the C library (`abi`, where tokens
+//! are GLenum values and arrays are pointers). Each implements `Args`; the converters from a
+//! call to its [`Command`](super::Command) are written once, against this trait, and each
+//! front end says what a bad argument is: a script error with the line and the valid
+//! alternatives, or the GL error the specification gives (INVALID_ENUM for a token outside
+//! the set, INVALID_VALUE for a bad number or bitfield).
+
+use std::sync::Arc;
+
+use glam::{Mat4, Vec3, Vec4};
+
+use super::api::Entry;
+use super::command::TexData;
+use super::glenum::{Family, GlEnum};
+use super::texture::{PixelFormat, PixelType};
+
+/// What a pixel pointer holds, so that a front end that receives only a pointer knows how
+/// many bytes to read (GL 1.5 §3.6.4: width × height groups, rows padded to the unpack
+/// alignment).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelShape {
+    pub width: i32,
+    pub height: i32,
+    pub format: PixelFormat,
+    pub ty: PixelType,
+}
+
+/// Typed readers of one call's arguments, by position.
+pub trait Args {
+    /// What a bad argument becomes.
+    type Error;
+
+    /// The entry point called.
+    fn entry(&self) -> Entry;
+
+    /// `Ok` when the call has `n` arguments (a C call always has its prototype's).
+    fn count(&self, n: usize) -> Result<(), Self::Error>;
+
+    /// Argument `i` is not what the call takes.
+    fn bad(&self, i: usize, expected: &'static str) -> Self::Error;
+
+    /// Argument `i` is a token outside `expected`.
+    fn unknown(&self, i: usize, expected: Vec<&'static str>) -> Self::Error;
+
+    /// `err` (an `unknown` error) with one more valid alternative named.
+    fn also_expected(&self, err: Self::Error, _alternative: &'static str) -> Self::Error {
+        err
+    }
+
+    /// A call the layer has no converter for.
+    fn unsupported(&self) -> Self::Error;
+
+    /// A call not allowed between glBegin and glEnd, or immediate mode misused.
+    fn immediate(&self, rule: &'static str) -> Self::Error;
+
+    /// An array of `found` values where `expected` are needed.
+    fn array_length(&self, expected: usize, found: usize) -> Self::Error;
+
+    /// A number as the caller passed it, before the parameter's own conversion.
+    fn f64(&self, i: usize) -> Result<f64, Self::Error>;
+
+    /// A number as a GLfloat.
+    fn f32(&self, i: usize) -> Result<f32, Self::Error>;
+
+    /// An integer.
+    fn int(&self, i: usize) -> Result<i64, Self::Error>;
+
+    fn i32(&self, i: usize) -> Result<i32, Self::Error> {
+        i32::try_from(self.int(i)?).map_err(|_| self.bad(i, "a 32-bit integer"))
+    }
+
+    fn u32(&self, i: usize) -> Result<u32, Self::Error> {
+        u32::try_from(self.int(i)?).map_err(|_| self.bad(i, "an unsigned 32-bit integer"))
+    }
+
+    /// A token of the model enum `T`.
+    fn enm<T: GlEnum>(&self, i: usize) -> Result<T, Self::Error>;
+
+    /// A token naming one of `pnames` (a parameter name).
+    fn pname(&self, i: usize, pnames: &[&'static str]) -> Result<&'static str, Self::Error>;
+
+    /// An indexed token: GL_LIGHTi, GL_TEXTUREi, GL_COMBINERi_NV.
+    fn family(&self, i: usize, f: Family) -> Result<u8, Self::Error>;
+
+    /// A GLboolean.
+    fn boolean(&self, i: usize) -> Result<bool, Self::Error>;
+
+    /// The bits of a bitfield argument, by name, each one of `names` (0 is no bits).
+    fn bits(&self, i: usize, names: &[&'static str]) -> Result<Vec<&'static str>, Self::Error>;
+
+    /// Exactly `N` floats from an array argument.
+    fn floats<const N: usize>(&self, i: usize) -> Result<[f32; N], Self::Error>;
+
+    /// The first `n` numbers of an array argument (at least `n` must be there), each as
+    /// the caller's element type holds it.
+    fn array_f64(&self, i: usize, n: usize) -> Result<Vec<f64>, Self::Error>;
+
+    /// glTexImage's data: NULL, bytes, or (scripts) a readback slot.
+    fn tex_data(&self, i: usize, shape: PixelShape) -> Result<TexData, Self::Error>;
+
+    /// Pixel data: NULL, or bytes.
+    fn pixels(&self, i: usize, shape: PixelShape) -> Result<Option<Arc<[u8]>>, Self::Error>;
+
+    /// The readback slot glReadPixels writes to.
+    fn slot(&self, i: usize) -> Result<u32, Self::Error>;
+
+    fn vec4_array(&self, i: usize) -> Result<Vec4, Self::Error> {
+        self.floats::<4>(i).map(Vec4::from_array)
+    }
+
+    fn vec3_array(&self, i: usize) -> Result<Vec3, Self::Error> {
+        self.floats::<3>(i).map(Vec3::from_array)
+    }
+
+    fn mat4(&self, i: usize) -> Result<Mat4, Self::Error> {
+        self.floats::<16>(i).map(|a| Mat4::from_cols_array(&a))
+    }
+
+    fn vec3_args(&self, from: usize) -> Result<Vec3, Self::Error> {
+        Ok(Vec3::new(
+            self.f32(from)?,
+            self.f32(from + 1)?,
+            self.f32(from + 2)?,
+        ))
+    }
+
+    fn vec4_args(&self, from: usize) -> Result<Vec4, Self::Error> {
+        Ok(Vec4::new(
+            self.f32(from)?,
+            self.f32(from + 1)?,
+            self.f32(from + 2)?,
+            self.f32(from + 3)?,
+        ))
+    }
+}

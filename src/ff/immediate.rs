@@ -1,0 +1,297 @@
+//! Immediate mode: glBegin … glEnd with the vertex-attribute calls folded into one
+//! `Command::Draw`, for either front end (scripts and the C library).
+//!
+//! An attribute called inside the pair becomes a per-vertex array; vertices before its
+//! first call take the value current at glBegin (GL 1.5 §2.7: the current value is what
+//! each vertex copies). Outside the pair an attribute call is a plain state command
+//! (`Command::Color`…). After the Draw, any value set after the last vertex follows as
+//! its own command, so the state after the commands equals GL's after glEnd. Inside the
+//! pair only the attribute calls are allowed (§2.6.3: anything else is INVALID_OPERATION).
+
+use std::sync::Arc;
+
+use glam::{Vec3, Vec4};
+
+use super::api::{Attrib, AttribCall, Entry};
+use super::args::Args;
+use super::command::Command;
+use super::geometry::{Geometry, Primitive};
+use super::glenum::Family;
+use super::state::{CurrentValues, MAX_TEXTURE_UNITS};
+
+/// The immediate-mode half of a front end: whether a glBegin is open, and what it holds.
+#[derive(Debug, Default)]
+pub struct Immediate {
+    open: Option<Open>,
+}
+
+/// A glBegin not yet ended.
+#[derive(Debug)]
+struct Open {
+    geometry: Geometry,
+    /// The current values at glBegin: what vertices before an attribute's first call get.
+    begin: CurrentValues,
+    /// The current values as the calls inside the pair have set them.
+    current: CurrentValues,
+    /// Attributes called inside the pair (colour, normal, texcoord per unit): each gets an
+    /// array at the next vertex, so a value set after the last vertex only stays current.
+    called: [bool; 2 + MAX_TEXTURE_UNITS],
+}
+
+enum Attr {
+    Color(Vec4),
+    Normal(Vec3),
+    TexCoord(u8, Vec4),
+}
+
+impl Immediate {
+    /// Whether a glBegin is open.
+    pub fn is_open(&self) -> bool {
+        self.open.is_some()
+    }
+
+    /// Abandons an open glBegin (a front end that stops mid-pair).
+    pub fn reset(&mut self) {
+        self.open = None;
+    }
+
+    /// Converts one call, appending what it yields to `out`. `current` is the state's
+    /// current values (read at glBegin and by glRect). Calls other than immediate mode go
+    /// to [`calls::command`](super::calls::command).
+    pub fn call<A: Args>(
+        &mut self,
+        c: &A,
+        current: &CurrentValues,
+        out: &mut Vec<Command>,
+    ) -> Result<(), A::Error> {
+        if let Some(form) = c.entry().attrib_call() {
+            return self.family(c, form, current, out);
+        }
+        match c.entry() {
+            Entry::Begin => {
+                c.count(1)?;
+                self.begin(c, c.enm(0)?, current)
+            }
+            Entry::End => {
+                c.count(0)?;
+                self.end(c, out)
+            }
+            _ => {
+                if self.open.is_some() {
+                    return Err(
+                        c.immediate("only vertex attributes are allowed inside glBegin/glEnd")
+                    );
+                }
+                out.push(super::calls::command(c)?);
+                Ok(())
+            }
+        }
+    }
+
+    /// One call of the vertex-attribute families (glVertex, glColor, glNormal, glTexCoord,
+    /// glMultiTexCoord, glRect) in any of its variants: the values are converted to the
+    /// parameter type as C does, then colours and normals of integer types are normalised
+    /// (GL 1.5 Table 2.9); missing components take GL's defaults (z = 0, w = 1, q = 1,
+    /// alpha = 1).
+    fn family<A: Args>(
+        &mut self,
+        c: &A,
+        form: AttribCall,
+        current: &CurrentValues,
+        out: &mut Vec<Command>,
+    ) -> Result<(), A::Error> {
+        let from = usize::from(form.attrib == Attrib::MultiTexCoord);
+        let v = attrib_values(c, form, from)?;
+        let f = |k: usize, default: f32| v.get(k).map_or(default, |x| *x as f32);
+        let n = |k: usize, default: f32| v.get(k).map_or(default, |x| form.ty.normalized(*x));
+        let coords = Vec4::new(f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 1.0));
+        match form.attrib {
+            Attrib::Vertex => self.vertex(c, coords),
+            Attrib::Rect => {
+                if self.open.is_some() {
+                    return Err(c.immediate("glRect inside glBegin/glEnd"));
+                }
+                // Mesa draws glRect as one GL_QUADS: (x1,y1) (x2,y1) (x2,y2) (x1,y2).
+                let (x1, y1, x2, y2) = (f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 0.0));
+                self.begin(c, Primitive::Quads, current)?;
+                for (x, y) in [(x1, y1), (x2, y1), (x2, y2), (x1, y2)] {
+                    self.vertex(c, Vec4::new(x, y, 0.0, 1.0))?;
+                }
+                self.end(c, out)
+            }
+            Attrib::Color => {
+                let color = Vec4::new(n(0, 0.0), n(1, 0.0), n(2, 0.0), n(3, 1.0));
+                self.attribute(c, Attr::Color(color), out)
+            }
+            Attrib::Normal => {
+                let normal = Vec3::new(n(0, 0.0), n(1, 0.0), n(2, 1.0));
+                self.attribute(c, Attr::Normal(normal), out)
+            }
+            Attrib::TexCoord => self.attribute(c, Attr::TexCoord(0, coords), out),
+            Attrib::MultiTexCoord => {
+                let unit = c.family(0, Family::Texture)?;
+                self.attribute(c, Attr::TexCoord(unit, coords), out)
+            }
+        }
+    }
+
+    fn begin<A: Args>(
+        &mut self,
+        c: &A,
+        primitive: Primitive,
+        current: &CurrentValues,
+    ) -> Result<(), A::Error> {
+        if self.open.is_some() {
+            return Err(c.immediate("glBegin inside glBegin/glEnd"));
+        }
+        self.open = Some(Open {
+            geometry: Geometry::new(primitive, Vec::new()),
+            begin: *current,
+            current: *current,
+            called: [false; 2 + MAX_TEXTURE_UNITS],
+        });
+        Ok(())
+    }
+
+    /// glVertex: a vertex with the current values of every attribute with an array.
+    fn vertex<A: Args>(&mut self, c: &A, p: Vec4) -> Result<(), A::Error> {
+        let open = self
+            .open
+            .as_mut()
+            .ok_or_else(|| c.immediate("glVertex outside glBegin/glEnd"))?;
+        open.arrays_for_called();
+        let cur = open.current;
+        let g = &mut open.geometry;
+        g.positions.push(p);
+        if let Some(v) = &mut g.colors {
+            v.push(cur.color);
+        }
+        if let Some(v) = &mut g.normals {
+            v.push(cur.normal);
+        }
+        for (u, t) in g.texcoords.iter_mut().enumerate() {
+            if let Some(v) = t {
+                v.push(cur.texcoords[u]);
+            }
+        }
+        Ok(())
+    }
+
+    fn attribute<A: Args>(
+        &mut self,
+        c: &A,
+        attr: Attr,
+        out: &mut Vec<Command>,
+    ) -> Result<(), A::Error> {
+        let Some(open) = &mut self.open else {
+            // Outside the pair: a state command (an invalid unit is the model's
+            // INVALID_ENUM).
+            out.push(match attr {
+                Attr::Color(v) => Command::Color(v),
+                Attr::Normal(v) => Command::Normal(v),
+                Attr::TexCoord(unit, coord) => Command::TexCoord { unit, coord },
+            });
+            return Ok(());
+        };
+        let index = match attr {
+            Attr::Color(v) => {
+                open.current.color = v;
+                0
+            }
+            Attr::Normal(v) => {
+                open.current.normal = v;
+                1
+            }
+            Attr::TexCoord(unit, coord) => {
+                let u = usize::from(unit);
+                if u >= MAX_TEXTURE_UNITS {
+                    return Err(c.immediate("texture unit beyond MAX_TEXTURE_UNITS"));
+                }
+                open.current.texcoords[u] = coord;
+                2 + u
+            }
+        };
+        open.called[index] = true;
+        Ok(())
+    }
+
+    /// glEnd: emits the Draw, then any value set after the last vertex.
+    fn end<A: Args>(&mut self, c: &A, out: &mut Vec<Command>) -> Result<(), A::Error> {
+        let open = self
+            .open
+            .take()
+            .ok_or_else(|| c.immediate("glEnd without glBegin"))?;
+        let g = open.geometry;
+        let cur = open.current;
+        let after = after_draw(&g, open.begin);
+        out.push(Command::Draw(Arc::new(g)));
+        if after.color != cur.color {
+            out.push(Command::Color(cur.color));
+        }
+        if after.normal != cur.normal {
+            out.push(Command::Normal(cur.normal));
+        }
+        for u in 0..MAX_TEXTURE_UNITS {
+            if after.texcoords[u] != cur.texcoords[u] {
+                out.push(Command::TexCoord {
+                    unit: u as u8,
+                    coord: cur.texcoords[u],
+                });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// What FixedState holds after the Draw: the last vertex's values where arrays exist, else
+/// the values current at glBegin (attributes without arrays were not called inside the
+/// pair, or only after the last vertex).
+fn after_draw(g: &Geometry, mut v: CurrentValues) -> CurrentValues {
+    v.color = Geometry::last(&g.colors).unwrap_or(v.color);
+    v.normal = Geometry::last(&g.normals).unwrap_or(v.normal);
+    for (u, t) in g.texcoords.iter().enumerate() {
+        v.texcoords[u] = Geometry::last(t).unwrap_or(v.texcoords[u]);
+    }
+    v
+}
+
+impl Open {
+    /// Creates the arrays of attributes called since glBegin, filled with the glBegin
+    /// values for the vertices already emitted.
+    fn arrays_for_called(&mut self) {
+        let n = self.geometry.positions.len();
+        let g = &mut self.geometry;
+        if self.called[0] {
+            g.colors.get_or_insert_with(|| vec![self.begin.color; n]);
+        }
+        if self.called[1] {
+            g.normals.get_or_insert_with(|| vec![self.begin.normal; n]);
+        }
+        for (u, t) in g.texcoords.iter_mut().enumerate() {
+            if self.called[2 + u] {
+                t.get_or_insert_with(|| vec![self.begin.texcoords[u]; n]);
+            }
+        }
+    }
+}
+
+/// The values of an attribute-family call from argument `from` on: `count` scalars, or
+/// one array (two for glRect's corners) of at least that many, each converted to the
+/// parameter type as C converts an argument.
+fn attrib_values<A: Args>(c: &A, form: AttribCall, from: usize) -> Result<Vec<f64>, A::Error> {
+    if !form.vector {
+        c.count(from + form.count)?;
+        return (0..form.count)
+            .map(|k| c.f64(from + k).map(|v| form.ty.convert(v)))
+            .collect();
+    }
+    let arrays = if form.attrib == Attrib::Rect { 2 } else { 1 };
+    c.count(from + arrays)?;
+    let per = form.count / arrays;
+    let mut out = Vec::with_capacity(form.count);
+    for k in 0..arrays {
+        let values = c.array_f64(from + k, per)?;
+        out.extend(values.iter().map(|v| form.ty.convert(*v)));
+    }
+    Ok(out)
+}
