@@ -70,5 +70,7 @@ fn main() {
     }
     enums.push_str("];\n");
     fs::write(Path::new(&out).join("gl_enums.rs"), enums).expect("OUT_DIR is writable");
+    // The C library answers to the name programs link against.
+    println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libOSMesa.so.8");
     println!("cargo:rerun-if-changed=build.rs");
 }

@@ -6,12 +6,14 @@
 //! `vocab` (the shared names: techniques, pipelines, depth formats, readback rules) and
 //! `stats` (medians of timings) → `gpu` (contexts, render targets, readback) → `ff`
 //! (commands and the GL 1.x state model, no GL calls) → `mesh` → `scene` → `metrics` →
-//! `truth` (pure) → `pipeline` → `techniques` (plans of Commands) → `render` (a scene, judged
+//! `truth` (pure) → `pipeline` → `abi` (the C library: OSMesa and the GL 1.x entry points
+//! over the emulated pipeline) and `techniques` (plans of Commands) → `render` (a scene, judged
 //! against the truth; open sessions interleaved in rounds) → `bench`, `study` (many
 //! renders against one truth: compare, bias sweeps) → `report` (tables, plots, pages) →
 //! the `fixedfunc` CLI. `tests/layers.rs` reads the sources and fails on an import that
 //! runs up this order.
 
+pub mod abi;
 pub mod bench;
 pub mod ff;
 pub mod gpu;

@@ -16,6 +16,7 @@ const LAYERS: &[(&str, u32)] = &[
     ("metrics", 5),
     ("truth", 6),
     ("pipeline", 7),
+    ("abi", 8),
     ("techniques", 8),
     ("render", 9),
     ("bench", 10),

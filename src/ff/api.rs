@@ -39,13 +39,16 @@ pub mod ctypes {
     pub type GLsizeiptr = isize;
 }
 
-/// Who may spell the call. `Script` calls are read by `replay` and exported by the C
-/// library; `Client` calls are exported, and exist in scripts only as what a path issues
-/// for a `Command::Draw` (a script draws with glBegin/glEnd).
+/// Who may spell the call. Every call is exported by the C library. `Script` calls are
+/// also read by `replay`; `Client` calls exist in scripts only as what a path issues for a
+/// `Command::Draw` (a script draws with glBegin/glEnd); `Abi` calls are answered by the C
+/// library itself (the error flag, strings, client pixel storage, synchronisation) and
+/// have no Command.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Form {
     Script,
     Client,
+    Abi,
 }
 
 /// The table of entry points. `gl_entry_table!(m)` expands to `m! { rows }`, one row per
@@ -304,10 +307,26 @@ macro_rules! gl_entry_table {
         ReadPixels = glReadPixels(Script; x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, r#type: GLenum, pixels: *mut c_void);
         DrawArrays = glDrawArrays(Client; mode: GLenum, first: GLint, count: GLsizei);
         DrawElements = glDrawElements(Client; mode: GLenum, count: GLsizei, r#type: GLenum, indices: *const c_void);
+        // Answered by the C library.
+        Finish = glFinish(Abi; );
+        Flush = glFlush(Abi; );
+        GetError = glGetError(Abi; ) -> GLenum;
+        GetString = glGetString(Abi; name: GLenum) -> *const GLubyte;
+        PixelStorei = glPixelStorei(Abi; pname: GLenum, param: GLint);
+        PixelStoref = glPixelStoref(Abi; pname: GLenum, param: GLfloat);
         }
     };
 }
 pub use gl_entry_table;
+
+macro_rules! return_name {
+    () => {
+        "void"
+    };
+    ($t:ty) => {
+        stringify!($t)
+    };
+}
 
 macro_rules! define_entries {
     ($($variant:ident = $name:ident($form:ident; $($arg:ident: $ty:ty),*) $(-> $ret:ty)?;)*) => {
@@ -339,11 +358,7 @@ macro_rules! define_entries {
             /// The C return type (`void` for none).
             pub fn return_type(self) -> &'static str {
                 match self {
-                    $(Entry::$variant => {
-                        let r: &'static str = "void";
-                        $(let r = stringify!($ret);)?
-                        r
-                    })*
+                    $(Entry::$variant => return_name!($($ret)?),)*
                 }
             }
 

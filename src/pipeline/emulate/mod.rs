@@ -87,6 +87,12 @@ impl EmulatedPipeline {
         self
     }
 
+    /// Forgets the raster state last sent, so the next draw sends all of it: for a caller
+    /// that changed GL state behind the pipeline (bound another target).
+    pub fn forget_sent_state(&mut self) {
+        self.path.raster.invalidate();
+    }
+
     /// The key the next draw would use (for `fixedfunc shaders` and tests).
     pub fn current_key(&self) -> ShaderKey {
         ShaderKey::from_state(&self.core.state, self.path.precision)

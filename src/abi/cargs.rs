@@ -1,0 +1,285 @@
+//! A C call's arguments as the shared converters read them ([`Args`]): tokens arrive as
+//! GLenum values, arrays as typed pointers, and a bad argument is the GL error the
+//! specification gives (INVALID_ENUM for a token outside the set, INVALID_VALUE for a bad
+//! number, bitfield or null array).
+//!
+//! Pointers are read only as far as the call's parameters say (four floats for
+//! GL_AMBIENT, three for GL_SPOT_DIRECTION, width × height pixels with the unpack
+//! alignment), never further: what a C program passes is its own contract, as with any GL.
+
+use std::cell::Cell;
+use std::ffi::c_void;
+use std::sync::Arc;
+
+use crate::ff::api::Entry;
+use crate::ff::args::{Args, PixelShape};
+use crate::ff::glenum::{value_of, Family, GlEnum};
+use crate::ff::{GlErrorKind, TexData};
+
+/// The element type behind a pointer parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CElem {
+    Byte,
+    UByte,
+    Short,
+    UShort,
+    Int,
+    UInt,
+    Float,
+    Double,
+    Void,
+}
+
+/// The element type of a pointer parameter's pointee.
+pub trait CElement {
+    const ELEM: CElem;
+}
+
+macro_rules! elements {
+    ($($t:ty => $e:ident),*) => {
+        $(impl CElement for $t {
+            const ELEM: CElem = CElem::$e;
+        })*
+    };
+}
+elements!(i8 => Byte, u8 => UByte, i16 => Short, u16 => UShort, i32 => Int, u32 => UInt,
+          f32 => Float, f64 => Double, c_void => Void);
+
+/// One argument of a C call.
+#[derive(Clone, Copy, Debug)]
+pub enum CArg {
+    Int(i64),
+    Float(f64),
+    Ptr(*const c_void, CElem),
+}
+
+macro_rules! int_args {
+    ($($t:ty),*) => {
+        $(impl From<$t> for CArg {
+            fn from(v: $t) -> Self {
+                CArg::Int(v as i64)
+            }
+        })*
+    };
+}
+int_args!(i8, u8, i16, u16, i32, u32, isize);
+
+impl From<f32> for CArg {
+    fn from(v: f32) -> Self {
+        CArg::Float(f64::from(v))
+    }
+}
+
+impl From<f64> for CArg {
+    fn from(v: f64) -> Self {
+        CArg::Float(v)
+    }
+}
+
+impl<T: CElement> From<*const T> for CArg {
+    fn from(p: *const T) -> Self {
+        CArg::Ptr(p.cast(), T::ELEM)
+    }
+}
+
+impl<T: CElement> From<*mut T> for CArg {
+    fn from(p: *mut T) -> Self {
+        CArg::Ptr(p.cast_const().cast(), T::ELEM)
+    }
+}
+
+/// The readback slot a C glReadPixels uses before its bytes are copied out.
+pub const CALLER_SLOT: u32 = u32::MAX;
+
+/// One C call: its entry point, its arguments, and the client state reading needs.
+pub struct CCall<'a> {
+    pub entry: Entry,
+    pub args: &'a [CArg],
+    /// GL_UNPACK_ALIGNMENT (1, 2, 4 or 8).
+    pub unpack_alignment: usize,
+    /// Set when no converter knew the call.
+    pub unsupported: Cell<bool>,
+}
+
+impl CCall<'_> {
+    /// Whether the call failed because the layer has no converter for it.
+    pub fn was_unsupported(&self) -> bool {
+        self.unsupported.get()
+    }
+
+    fn value(&self, i: usize) -> Option<f64> {
+        match self.args.get(i)? {
+            CArg::Int(v) => Some(*v as f64),
+            CArg::Float(v) => Some(*v),
+            CArg::Ptr(..) => None,
+        }
+    }
+
+    /// A token: an integer argument, or a float holding one (`glTexParameterf(…,
+    /// GL_LINEAR)`), converted as C converts a float to GLenum (truncation).
+    fn token(&self, i: usize) -> Option<u32> {
+        match self.args.get(i)? {
+            CArg::Int(v) => u32::try_from(*v).ok(),
+            CArg::Float(v) if v.is_finite() && *v >= 0.0 && *v < 4294967296.0 => {
+                Some(v.trunc() as u32)
+            }
+            _ => None,
+        }
+    }
+
+    fn pointer(&self, i: usize) -> Result<(*const c_void, CElem), GlErrorKind> {
+        match self.args.get(i) {
+            Some(CArg::Ptr(p, e)) if !p.is_null() => Ok((*p, *e)),
+            _ => Err(GlErrorKind::InvalidValue),
+        }
+    }
+
+    /// `n` values from pointer argument `i`, each as its C element type holds it.
+    fn read(&self, i: usize, n: usize) -> Result<Vec<f64>, GlErrorKind> {
+        let (p, elem) = self.pointer(i)?;
+        // SAFETY: the caller passed a pointer to at least `n` elements of this type, as the
+        // GL prototype and the parameter name require (GL's contract with the program).
+        let v = unsafe {
+            (0..n)
+                .map(|k| match elem {
+                    CElem::Byte => f64::from(*p.cast::<i8>().add(k)),
+                    CElem::UByte | CElem::Void => f64::from(*p.cast::<u8>().add(k)),
+                    CElem::Short => f64::from(p.cast::<i16>().add(k).read_unaligned()),
+                    CElem::UShort => f64::from(p.cast::<u16>().add(k).read_unaligned()),
+                    CElem::Int => f64::from(p.cast::<i32>().add(k).read_unaligned()),
+                    CElem::UInt => f64::from(p.cast::<u32>().add(k).read_unaligned()),
+                    CElem::Float => f64::from(p.cast::<f32>().add(k).read_unaligned()),
+                    CElem::Double => p.cast::<f64>().add(k).read_unaligned(),
+                })
+                .collect()
+        };
+        Ok(v)
+    }
+
+    /// The pixels of `shape` from pointer `i`, unpacked with the unpack alignment
+    /// (GL 1.5 §3.6.4: each row starts at a multiple of the alignment) into the tightly
+    /// packed rows the model holds.
+    fn unpack(&self, i: usize, shape: PixelShape) -> Result<Option<Arc<[u8]>>, GlErrorKind> {
+        let p = match self.args.get(i) {
+            Some(CArg::Ptr(p, _)) if p.is_null() => return Ok(None),
+            Some(CArg::Ptr(p, _)) => *p,
+            _ => return Err(GlErrorKind::InvalidValue),
+        };
+        let (w, h) = (shape.width.max(0) as usize, shape.height.max(0) as usize);
+        let group = shape.format.components() * shape.ty.size();
+        let row = w * group;
+        let align = self.unpack_alignment.max(1);
+        let stride = row.div_ceil(align) * align;
+        let mut out = Vec::with_capacity(row * h);
+        for y in 0..h {
+            // SAFETY: the program's buffer holds `h` rows of `stride` bytes (the last row
+            // only `row`), as GL requires of the data a pixel call reads.
+            let r = unsafe { std::slice::from_raw_parts(p.cast::<u8>().add(y * stride), row) };
+            out.extend_from_slice(r);
+        }
+        Ok(Some(Arc::from(out)))
+    }
+}
+
+impl Args for CCall<'_> {
+    type Error = GlErrorKind;
+
+    fn entry(&self) -> Entry {
+        self.entry
+    }
+    fn count(&self, _n: usize) -> Result<(), GlErrorKind> {
+        // A C call has its prototype's arguments.
+        Ok(())
+    }
+    fn bad(&self, _i: usize, _expected: &'static str) -> GlErrorKind {
+        GlErrorKind::InvalidValue
+    }
+    fn unknown(&self, _i: usize, _expected: Vec<&'static str>) -> GlErrorKind {
+        GlErrorKind::InvalidEnum
+    }
+    fn unsupported(&self) -> GlErrorKind {
+        self.unsupported.set(true);
+        GlErrorKind::InvalidOperation
+    }
+    fn immediate(&self, _rule: &'static str) -> GlErrorKind {
+        GlErrorKind::InvalidOperation
+    }
+    fn array_length(&self, _expected: usize, _found: usize) -> GlErrorKind {
+        GlErrorKind::InvalidValue
+    }
+    fn f64(&self, i: usize) -> Result<f64, GlErrorKind> {
+        self.value(i).ok_or(GlErrorKind::InvalidValue)
+    }
+    fn f32(&self, i: usize) -> Result<f32, GlErrorKind> {
+        self.f64(i).map(|v| v as f32)
+    }
+    fn int(&self, i: usize) -> Result<i64, GlErrorKind> {
+        match self.args.get(i) {
+            Some(CArg::Int(v)) => Ok(*v),
+            // A float given where GL keeps an integer: GL 1.5 §2.3, rounded to nearest.
+            Some(CArg::Float(v)) if v.is_finite() => Ok(v.round() as i64),
+            _ => Err(GlErrorKind::InvalidValue),
+        }
+    }
+    fn enm<T: GlEnum>(&self, i: usize) -> Result<T, GlErrorKind> {
+        self.token(i)
+            .and_then(T::from_gl_value)
+            .ok_or(GlErrorKind::InvalidEnum)
+    }
+    fn pname(&self, i: usize, pnames: &[&'static str]) -> Result<&'static str, GlErrorKind> {
+        let v = self.token(i).ok_or(GlErrorKind::InvalidEnum)?;
+        pnames
+            .iter()
+            .find(|p| value_of(p) == Some(v))
+            .copied()
+            .ok_or(GlErrorKind::InvalidEnum)
+    }
+    fn family(&self, i: usize, f: Family) -> Result<u8, GlErrorKind> {
+        self.token(i)
+            .and_then(|v| f.from_value(v))
+            .ok_or(GlErrorKind::InvalidEnum)
+    }
+    fn boolean(&self, i: usize) -> Result<bool, GlErrorKind> {
+        self.value(i)
+            .map(|v| v != 0.0)
+            .ok_or(GlErrorKind::InvalidValue)
+    }
+    fn bits(&self, i: usize, names: &[&'static str]) -> Result<Vec<&'static str>, GlErrorKind> {
+        let v = self.token(i).ok_or(GlErrorKind::InvalidValue)?;
+        let mut rest = v;
+        let mut out = Vec::new();
+        for n in names {
+            let bit = value_of(n).unwrap_or(0);
+            if v & bit != 0 {
+                out.push(*n);
+                rest &= !bit;
+            }
+        }
+        // A bit outside the set: INVALID_VALUE (GL 1.5 §4.2.3 for glClear).
+        if rest == 0 {
+            Ok(out)
+        } else {
+            Err(GlErrorKind::InvalidValue)
+        }
+    }
+    fn floats<const N: usize>(&self, i: usize) -> Result<[f32; N], GlErrorKind> {
+        let v = self.read(i, N)?;
+        let mut out = [0.0; N];
+        for (o, x) in out.iter_mut().zip(v) {
+            *o = x as f32;
+        }
+        Ok(out)
+    }
+    fn array_f64(&self, i: usize, n: usize) -> Result<Vec<f64>, GlErrorKind> {
+        self.read(i, n)
+    }
+    fn tex_data(&self, i: usize, shape: PixelShape) -> Result<TexData, GlErrorKind> {
+        Ok(self.unpack(i, shape)?.map_or(TexData::Null, TexData::Bytes))
+    }
+    fn pixels(&self, i: usize, shape: PixelShape) -> Result<Option<Arc<[u8]>>, GlErrorKind> {
+        self.unpack(i, shape)
+    }
+    fn slot(&self, _i: usize) -> Result<u32, GlErrorKind> {
+        Ok(CALLER_SLOT)
+    }
+}

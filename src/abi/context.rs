@@ -1,0 +1,428 @@
+//! One OSMesa context: an EGL surfaceless core 3.3 context running the emulated pipeline,
+//! a render target the size of the caller's buffer, and the client state of the C front
+//! end (immediate mode, pixel storage, the error flag of calls the model never sees).
+//!
+//! The image reaches the caller's buffer as Mesa's OSMesa puts it there: on glFinish and
+//! glFlush, and when another buffer is made current. The buffer is written in its own
+//! format (RGBA, BGRA, ARGB, RGB or BGR bytes), row by row with OSMESA_ROW_LENGTH, the
+//! bottom row first unless OSMESA_Y_UP is 0.
+
+use std::collections::HashSet;
+use std::ffi::c_void;
+
+use super::cargs::{CArg, CCall, CALLER_SLOT};
+use super::AbiError;
+use crate::ff::api::Entry;
+use crate::ff::immediate::Immediate;
+use crate::ff::{Command, CurrentValues, GlErrorKind};
+use crate::gpu::{Backend, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec};
+use crate::pipeline::emulate::EmulatedPipeline;
+use crate::pipeline::Pipeline;
+use crate::vocab::DepthBits;
+
+/// OSMESA_RGBA, OSMESA_BGRA…: the byte order of the caller's buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorFormat {
+    Rgba,
+    Bgra,
+    Argb,
+    Rgb,
+    Bgr,
+}
+
+impl ColorFormat {
+    pub const RGBA: u32 = 0x1908;
+    pub const BGRA: u32 = 0x1;
+    pub const ARGB: u32 = 0x2;
+    pub const RGB: u32 = 0x1907;
+    pub const BGR: u32 = 0x4;
+
+    pub fn from_osmesa(v: u32) -> Option<ColorFormat> {
+        Some(match v {
+            Self::RGBA => ColorFormat::Rgba,
+            Self::BGRA => ColorFormat::Bgra,
+            Self::ARGB => ColorFormat::Argb,
+            Self::RGB => ColorFormat::Rgb,
+            Self::BGR => ColorFormat::Bgr,
+            _ => return None,
+        })
+    }
+
+    pub fn osmesa(self) -> u32 {
+        match self {
+            ColorFormat::Rgba => Self::RGBA,
+            ColorFormat::Bgra => Self::BGRA,
+            ColorFormat::Argb => Self::ARGB,
+            ColorFormat::Rgb => Self::RGB,
+            ColorFormat::Bgr => Self::BGR,
+        }
+    }
+
+    /// Bytes per pixel.
+    pub fn bytes(self) -> usize {
+        match self {
+            ColorFormat::Rgb | ColorFormat::Bgr => 3,
+            _ => 4,
+        }
+    }
+
+    /// An RGBA pixel in this order.
+    fn write(self, rgba: &[u8], out: &mut [u8]) {
+        let [r, g, b, a] = [rgba[0], rgba[1], rgba[2], rgba[3]];
+        match self {
+            ColorFormat::Rgba => out.copy_from_slice(&[r, g, b, a]),
+            ColorFormat::Bgra => out.copy_from_slice(&[b, g, r, a]),
+            ColorFormat::Argb => out.copy_from_slice(&[a, r, g, b]),
+            ColorFormat::Rgb => out.copy_from_slice(&[r, g, b]),
+            ColorFormat::Bgr => out.copy_from_slice(&[b, g, r]),
+        }
+    }
+}
+
+/// The caller's buffer, as OSMesaMakeCurrent gave it.
+#[derive(Clone, Copy, Debug)]
+pub struct ClientBuffer {
+    pub ptr: *mut c_void,
+    pub ty: u32,
+    pub width: i32,
+    pub height: i32,
+}
+
+/// What a call returns to C.
+#[derive(Clone, Copy, Debug)]
+pub enum Ret {
+    None,
+    Enum(u32),
+    Ptr(*const u8),
+}
+
+pub struct Context {
+    // Field order: the pipeline and target hold GL objects of `gpu`, which drops last.
+    pipeline: Option<EmulatedPipeline>,
+    target: Option<RenderTarget>,
+    gpu: GpuContext,
+    pub format: ColorFormat,
+    depth: DepthBits,
+    stencil: bool,
+    pub buffer: Option<ClientBuffer>,
+    /// OSMESA_ROW_LENGTH in pixels (0: the buffer's width).
+    pub row_length: i32,
+    /// OSMESA_Y_UP: row 0 of the buffer is the bottom row. Mesa's default: true.
+    pub y_up: bool,
+    immediate: Immediate,
+    made: Vec<Command>,
+    /// The first error of a call the model never saw (a bad token, a call inside
+    /// glBegin/glEnd), kept until glGetError as GL keeps its flag.
+    error: Option<GlErrorKind>,
+    warned: HashSet<Entry>,
+    /// GL_UNPACK_ALIGNMENT and GL_PACK_ALIGNMENT. GL default: 4.
+    unpack_alignment: usize,
+    pack_alignment: usize,
+    /// The depth values of OSMesaGetDepthBuffer, kept until the next call to it.
+    pub depth_copy: Vec<u8>,
+}
+
+/// The largest buffer side (llvmpipe's MAX_TEXTURE_SIZE, which Mesa's OSMesa reports as
+/// OSMESA_MAX_WIDTH and OSMESA_MAX_HEIGHT).
+pub const MAX_SIZE: i32 = 16384;
+
+impl Context {
+    /// A context whose buffers have `depth_bits` and `stencil_bits` as asked: depth 16 or
+    /// less without stencil is a 16-bit buffer, up to 24 (or any with stencil) a 24-bit
+    /// one with 8 stencil bits, more a 32-bit float one.
+    pub fn new(format: ColorFormat, depth_bits: i32, stencil_bits: i32) -> Result<Self, AbiError> {
+        let gpu = GpuContext::new(&ContextRequest::new(Backend::Egl, Profile::Core33))?;
+        let stencil = stencil_bits > 0;
+        let depth = match depth_bits {
+            _ if stencil => DepthBits::D24,
+            d if d <= 16 => DepthBits::D16,
+            d if d <= 24 => DepthBits::D24,
+            _ => DepthBits::D32F,
+        };
+        Ok(Context {
+            pipeline: None,
+            target: None,
+            gpu,
+            format,
+            depth,
+            stencil,
+            buffer: None,
+            row_length: 0,
+            y_up: true,
+            immediate: Immediate::default(),
+            made: Vec::new(),
+            error: None,
+            warned: HashSet::new(),
+            unpack_alignment: 4,
+            pack_alignment: 4,
+            depth_copy: Vec::new(),
+        })
+    }
+
+    pub fn make_gl_current(&self) -> bool {
+        self.gpu.make_current().is_ok()
+    }
+
+    /// OSMesaMakeCurrent's half after validation: the image so far goes to the old buffer,
+    /// and the target follows the new buffer's size. The first call sets the viewport to
+    /// the buffer, as GL's initial viewport is the window.
+    pub fn bind_buffer(&mut self, buffer: ClientBuffer) -> Result<(), AbiError> {
+        self.write_back();
+        let (w, h) = (buffer.width as u32, buffer.height as u32);
+        let same = self
+            .target
+            .as_ref()
+            .is_some_and(|t| (t.width(), t.height()) == (w, h));
+        if !same {
+            if let Some(old) = self.target.take() {
+                old.delete(&self.gpu);
+            }
+            let mut spec = TargetSpec::new(w, h, self.depth);
+            if self.stencil {
+                spec = spec.with_stencil();
+            }
+            let target = RenderTarget::new(&self.gpu, spec)?;
+            target.bind(&self.gpu);
+            self.target = Some(target);
+            match &mut self.pipeline {
+                None => self.pipeline = Some(EmulatedPipeline::new(&self.gpu)?),
+                Some(p) => p.forget_sent_state(),
+            }
+        }
+        self.buffer = Some(buffer);
+        Ok(())
+    }
+
+    /// Releases the GL objects (the context must be current).
+    pub fn release(&mut self) {
+        if let Some(mut p) = self.pipeline.take() {
+            p.release(&self.gpu);
+        }
+        if let Some(t) = self.target.take() {
+            t.delete(&self.gpu);
+        }
+    }
+
+    pub fn record_error(&mut self, kind: GlErrorKind) {
+        let model_pending = self
+            .pipeline
+            .as_ref()
+            .is_some_and(|p| p.state().error().is_some());
+        if self.error.is_none() && !model_pending {
+            self.error = Some(kind);
+        }
+    }
+
+    /// glGetError: the first error since the last call, from the C front end or the model.
+    fn take_error(&mut self) -> u32 {
+        let kind = self
+            .error
+            .take()
+            .or_else(|| self.pipeline.as_mut()?.take_gl_error().map(|e| e.kind));
+        kind.map_or(0, error_code)
+    }
+
+    /// One GL call from C.
+    pub fn call(&mut self, entry: Entry, args: &[CArg]) -> Ret {
+        if self.pipeline.is_none() {
+            // No buffer made current yet: GL calls have no context to act on.
+            return Ret::None;
+        }
+        let inside = self.immediate.is_open() && entry.attrib_call().is_none();
+        match entry {
+            Entry::GetError if !inside => return Ret::Enum(self.take_error()),
+            Entry::Finish | Entry::Flush if !inside => {
+                self.write_back();
+                return Ret::None;
+            }
+            Entry::GetString if !inside => {
+                return match super::strings::get(args, &self.gpu) {
+                    Some(p) => Ret::Ptr(p),
+                    None => {
+                        self.record_error(GlErrorKind::InvalidEnum);
+                        Ret::Ptr(std::ptr::null())
+                    }
+                };
+            }
+            Entry::PixelStorei | Entry::PixelStoref if !inside => {
+                self.pixel_store(args);
+                return Ret::None;
+            }
+            Entry::GetError | Entry::Finish | Entry::Flush | Entry::GetString => {
+                self.record_error(GlErrorKind::InvalidOperation);
+                return Ret::None;
+            }
+            _ => {}
+        }
+        let c = CCall {
+            entry,
+            args,
+            unpack_alignment: self.unpack_alignment,
+            unsupported: Default::default(),
+        };
+        let current = self.pipeline.as_ref().map(|p| p.state().current);
+        let mut made = std::mem::take(&mut self.made);
+        let outcome = self
+            .immediate
+            .call(&c, &current.unwrap_or(CurrentValues::DEFAULT), &mut made);
+        if let Err(kind) = outcome {
+            if c.was_unsupported() && self.warned.insert(entry) {
+                eprintln!(
+                    "fixedfunc: {entry} is not implemented by this layer; it records \
+                     GL_INVALID_OPERATION and does nothing"
+                );
+            }
+            self.record_error(kind);
+        }
+        for cmd in made.drain(..) {
+            self.execute(&cmd);
+        }
+        self.made = made;
+        if entry == Entry::ReadPixels {
+            self.copy_read_pixels(args);
+        }
+        Ret::None
+    }
+
+    fn execute(&mut self, cmd: &Command) {
+        let Some(p) = self.pipeline.as_mut() else {
+            return;
+        };
+        if let Err(e) = p.execute(&self.gpu, std::slice::from_ref(cmd)) {
+            eprintln!("fixedfunc: {}: {e}", cmd.entry());
+            self.record_error(GlErrorKind::InvalidOperation);
+        }
+    }
+
+    /// glPixelStore{i,f}: GL_PACK_ALIGNMENT and GL_UNPACK_ALIGNMENT (1, 2, 4 or 8, else
+    /// INVALID_VALUE); other names: INVALID_ENUM.
+    fn pixel_store(&mut self, args: &[CArg]) {
+        const PACK_ALIGNMENT: i64 = 0x0D05;
+        const UNPACK_ALIGNMENT: i64 = 0x0CF5;
+        let (CArg::Int(pname), value) = (args[0], args[1]) else {
+            return;
+        };
+        let value = match value {
+            CArg::Int(v) => v,
+            CArg::Float(f) if f.is_finite() => f.round() as i64,
+            _ => 0,
+        };
+        let slot = match pname {
+            PACK_ALIGNMENT => &mut self.pack_alignment,
+            UNPACK_ALIGNMENT => &mut self.unpack_alignment,
+            _ => return self.record_error(GlErrorKind::InvalidEnum),
+        };
+        match value {
+            1 | 2 | 4 | 8 => *slot = value as usize,
+            _ => self.record_error(GlErrorKind::InvalidValue),
+        }
+    }
+
+    /// glReadPixels into the caller's memory: the bytes the pipeline read, rows padded to
+    /// GL_PACK_ALIGNMENT.
+    fn copy_read_pixels(&mut self, args: &[CArg]) {
+        let Some(CArg::Ptr(dst, _)) = args.get(6).copied() else {
+            return;
+        };
+        let Some(r) = self
+            .pipeline
+            .as_ref()
+            .and_then(|p| p.readback(CALLER_SLOT))
+        else {
+            return;
+        };
+        if dst.is_null() {
+            return;
+        }
+        let row = r.width as usize * r.format.components() * r.ty.size();
+        let align = self.pack_alignment;
+        let stride = row.div_ceil(align) * align;
+        for (y, src) in r.bytes.chunks_exact(row.max(1)).enumerate() {
+            // SAFETY: the program's buffer holds height rows of `stride` bytes, as GL
+            // requires of the memory glReadPixels writes.
+            unsafe {
+                std::ptr::copy_nonoverlapping(
+                    src.as_ptr(),
+                    dst.cast::<u8>().cast_mut().add(y * stride),
+                    row,
+                );
+            }
+        }
+    }
+
+    /// The image so far into the caller's buffer.
+    pub fn write_back(&mut self) {
+        let (Some(target), Some(buffer)) = (&self.target, self.buffer) else {
+            return;
+        };
+        let image = match target.read_color(&self.gpu) {
+            Ok(i) => i,
+            Err(e) => {
+                eprintln!("fixedfunc: reading the image back failed: {e}");
+                return;
+            }
+        };
+        let (w, h) = (buffer.width as usize, buffer.height as usize);
+        let bpp = self.format.bytes();
+        let row_pixels = if self.row_length > 0 {
+            self.row_length as usize
+        } else {
+            w
+        };
+        let raw = image.as_raw();
+        for y in 0..h {
+            // `image` is top row first; GL's row y counts from the bottom.
+            let src_row = h - 1 - y;
+            let dst_row = if self.y_up { y } else { h - 1 - y };
+            for x in 0..w {
+                let s = (src_row * w + x) * 4;
+                let d = (dst_row * row_pixels + x) * bpp;
+                // SAFETY: the caller's buffer holds height rows of ROW_LENGTH pixels in
+                // its format (OSMesaMakeCurrent's contract).
+                let out =
+                    unsafe { std::slice::from_raw_parts_mut(buffer.ptr.cast::<u8>().add(d), bpp) };
+                self.format.write(&raw[s..s + 4], out);
+            }
+        }
+    }
+
+    /// The depth buffer as OSMesaGetDepthBuffer gives it: (width, height, bytes per value).
+    pub fn read_depth(&mut self) -> Option<(i32, i32, i32)> {
+        let target = self.target.as_ref()?;
+        let (w, h) = (target.width() as i32, target.height() as i32);
+        let rule = crate::vocab::ReadbackRule::Driver;
+        let (bytes, per) = match self.depth {
+            DepthBits::D16 => (
+                target
+                    .read_depth_u16(&self.gpu, rule)
+                    .ok()?
+                    .iter()
+                    .flat_map(|v| v.to_ne_bytes())
+                    .collect(),
+                2,
+            ),
+            _ => (
+                target
+                    .read_depth_u32(&self.gpu, rule)
+                    .ok()?
+                    .iter()
+                    .flat_map(|v| v.to_ne_bytes())
+                    .collect(),
+                4,
+            ),
+        };
+        self.depth_copy = bytes;
+        Some((w, h, per))
+    }
+}
+
+/// The GLenum glGetError returns for a kind.
+pub fn error_code(kind: GlErrorKind) -> u32 {
+    match kind {
+        GlErrorKind::InvalidEnum => 0x0500,
+        GlErrorKind::InvalidValue => 0x0501,
+        GlErrorKind::InvalidOperation => 0x0502,
+        GlErrorKind::StackOverflow => 0x0503,
+        GlErrorKind::StackUnderflow => 0x0504,
+    }
+}

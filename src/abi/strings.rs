@@ -1,0 +1,67 @@
+//! glGetString: what the layer says it is. The extension string lists exactly what the
+//! model emulates, so a program that tests for an extension before using it takes the path
+//! the layer can render.
+
+use std::ffi::CString;
+use std::sync::OnceLock;
+
+use glow::HasContext;
+
+use super::cargs::CArg;
+use crate::gpu::GpuContext;
+
+/// The extensions whose state and commands the model holds.
+pub const EXTENSIONS: &[&str] = &[
+    "GL_ARB_multitexture",
+    "GL_ARB_texture_env_add",
+    "GL_ARB_texture_env_combine",
+    "GL_ARB_texture_env_crossbar",
+    "GL_ARB_texture_env_dot3",
+    "GL_EXT_texture_env_combine",
+    "GL_ARB_depth_texture",
+    "GL_ARB_shadow",
+    "GL_ARB_shadow_ambient",
+    "GL_EXT_stencil_wrap",
+    "GL_NV_register_combiners",
+    "GL_SGIS_generate_mipmap",
+];
+
+struct Strings {
+    vendor: CString,
+    renderer: CString,
+    version: CString,
+    extensions: CString,
+}
+
+fn strings(gpu: &GpuContext) -> &'static Strings {
+    static STRINGS: OnceLock<Strings> = OnceLock::new();
+    STRINGS.get_or_init(|| {
+        let driver = unsafe { gpu.gl().get_parameter_string(glow::RENDERER) };
+        let c = |s: String| CString::new(s.replace('\0', "")).unwrap_or_default();
+        Strings {
+            vendor: c("fixedfunc".into()),
+            renderer: c(format!(
+                "fixedfunc emulated fixed function on {driver} ({})",
+                gpu.path()
+            )),
+            version: c(format!("1.5 fixedfunc {}", env!("CARGO_PKG_VERSION"))),
+            extensions: c(EXTENSIONS.join(" ")),
+        }
+    })
+}
+
+/// The string for glGetString's name, or `None` (INVALID_ENUM).
+pub fn get(args: &[CArg], gpu: &GpuContext) -> Option<*const u8> {
+    let CArg::Int(name) = *args.first()? else {
+        return None;
+    };
+    let s = strings(gpu);
+    let text = match name as u32 {
+        glow::VENDOR => &s.vendor,
+        glow::RENDERER => &s.renderer,
+        glow::VERSION => &s.version,
+        glow::EXTENSIONS => &s.extensions,
+        _ => return None,
+    };
+    Some(text.as_ptr().cast())
+}
