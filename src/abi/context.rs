@@ -262,9 +262,9 @@ impl Context {
         };
         let current = self.pipeline.as_ref().map(|p| p.state().current);
         let mut made = std::mem::take(&mut self.made);
-        let outcome = self
-            .immediate
-            .call(&c, &current.unwrap_or(CurrentValues::DEFAULT), &mut made);
+        let outcome =
+            self.immediate
+                .call(&c, &current.unwrap_or(CurrentValues::DEFAULT), &mut made);
         if let Err(kind) = outcome {
             if c.was_unsupported() && self.warned.insert(entry) {
                 eprintln!(
@@ -291,6 +291,13 @@ impl Context {
         if let Err(e) = p.execute(&self.gpu, std::slice::from_ref(cmd)) {
             eprintln!("fixedfunc: {}: {e}", cmd.entry());
             self.record_error(GlErrorKind::InvalidOperation);
+        }
+        // The flag keeps the first error only: one the C front end recorded earlier wins
+        // over any the model raised since.
+        if self.error.is_some() {
+            if let Some(p) = self.pipeline.as_mut() {
+                let _ = p.take_gl_error();
+            }
         }
     }
 
@@ -324,11 +331,7 @@ impl Context {
         let Some(CArg::Ptr(dst, _)) = args.get(6).copied() else {
             return;
         };
-        let Some(r) = self
-            .pipeline
-            .as_ref()
-            .and_then(|p| p.readback(CALLER_SLOT))
-        else {
+        let Some(r) = self.pipeline.as_ref().and_then(|p| p.readback(CALLER_SLOT)) else {
             return;
         };
         if dst.is_null() {

@@ -62,8 +62,12 @@ impl FromRet for *mut c_void {
 }
 
 macro_rules! ret_type {
-    () => { () };
-    ($t:ty) => { $t };
+    () => {
+        ()
+    };
+    ($t:ty) => {
+        $t
+    };
 }
 
 macro_rules! define_exports {
@@ -93,5 +97,7 @@ pub fn proc_address(name: &str) -> *const c_void {
         t.extend(super::osmesa::functions());
         t
     });
-    table.get(name).map_or(std::ptr::null(), |a| *a as *const c_void)
+    table
+        .get(name)
+        .map_or(std::ptr::null(), |a| *a as *const c_void)
 }

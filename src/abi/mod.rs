@@ -95,7 +95,9 @@ pub(crate) fn dispatch(entry: Entry, args: &[CArg]) -> Ret {
                 .map(|s| s.to_string())
                 .or_else(|| panic.downcast_ref::<String>().cloned())
                 .unwrap_or_default();
-            eprintln!("fixedfunc: internal error in {entry}: {what}; recorded GL_INVALID_OPERATION");
+            eprintln!(
+                "fixedfunc: internal error in {entry}: {what}; recorded GL_INVALID_OPERATION"
+            );
             // SAFETY: as above.
             let _ = catch_unwind(AssertUnwindSafe(|| unsafe {
                 (*ctx).record_error(GlErrorKind::InvalidOperation)

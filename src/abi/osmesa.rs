@@ -64,7 +64,10 @@ fn create(format: GLenum, depth: GLint, stencil: GLint) -> OSMesaContext {
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn OSMesaCreateContext(format: GLenum, _sharelist: OSMesaContext) -> OSMesaContext {
+pub unsafe extern "C" fn OSMesaCreateContext(
+    format: GLenum,
+    _sharelist: OSMesaContext,
+) -> OSMesaContext {
     // Mesa's default buffers: 24 depth bits, 8 stencil bits.
     create(format, 24, 8)
 }
@@ -262,7 +265,8 @@ pub unsafe extern "C" fn OSMesaGetColorBuffer(
     format: *mut GLint,
     buffer: *mut *mut c_void,
 ) -> GLboolean {
-    if ctx.is_null() || width.is_null() || height.is_null() || format.is_null() || buffer.is_null() {
+    if ctx.is_null() || width.is_null() || height.is_null() || format.is_null() || buffer.is_null()
+    {
         return 0;
     }
     // SAFETY: a live context and the caller's out-parameters.
@@ -347,17 +351,41 @@ pub unsafe extern "C" fn OSMesaColorClamp(_enable: GLboolean) {}
 /// The OSMesa functions by name, for OSMesaGetProcAddress.
 pub(crate) fn functions() -> HashMap<&'static str, usize> {
     HashMap::from([
-        ("OSMesaCreateContext", OSMesaCreateContext as *const () as usize),
-        ("OSMesaCreateContextExt", OSMesaCreateContextExt as *const () as usize),
-        ("OSMesaCreateContextAttribs", OSMesaCreateContextAttribs as *const () as usize),
-        ("OSMesaDestroyContext", OSMesaDestroyContext as *const () as usize),
+        (
+            "OSMesaCreateContext",
+            OSMesaCreateContext as *const () as usize,
+        ),
+        (
+            "OSMesaCreateContextExt",
+            OSMesaCreateContextExt as *const () as usize,
+        ),
+        (
+            "OSMesaCreateContextAttribs",
+            OSMesaCreateContextAttribs as *const () as usize,
+        ),
+        (
+            "OSMesaDestroyContext",
+            OSMesaDestroyContext as *const () as usize,
+        ),
         ("OSMesaMakeCurrent", OSMesaMakeCurrent as *const () as usize),
-        ("OSMesaGetCurrentContext", OSMesaGetCurrentContext as *const () as usize),
+        (
+            "OSMesaGetCurrentContext",
+            OSMesaGetCurrentContext as *const () as usize,
+        ),
         ("OSMesaPixelStore", OSMesaPixelStore as *const () as usize),
         ("OSMesaGetIntegerv", OSMesaGetIntegerv as *const () as usize),
-        ("OSMesaGetColorBuffer", OSMesaGetColorBuffer as *const () as usize),
-        ("OSMesaGetDepthBuffer", OSMesaGetDepthBuffer as *const () as usize),
-        ("OSMesaGetProcAddress", OSMesaGetProcAddress as *const () as usize),
+        (
+            "OSMesaGetColorBuffer",
+            OSMesaGetColorBuffer as *const () as usize,
+        ),
+        (
+            "OSMesaGetDepthBuffer",
+            OSMesaGetDepthBuffer as *const () as usize,
+        ),
+        (
+            "OSMesaGetProcAddress",
+            OSMesaGetProcAddress as *const () as usize,
+        ),
         ("OSMesaColorClamp", OSMesaColorClamp as *const () as usize),
     ])
 }

@@ -36,6 +36,8 @@ pub enum CliError {
     Study(#[from] fixedfunc::study::StudyError),
     #[error(transparent)]
     Report(#[from] fixedfunc::report::ReportError),
+    #[error("osmesa-dir: {0}")]
+    Osmesa(String),
     #[error("cannot write to standard output: {0}")]
     Stdout(#[source] std::io::Error),
     #[error("{first} and {second} both name {path}: one file would overwrite the other")]

@@ -24,6 +24,7 @@ mod compare;
 mod error;
 mod info;
 mod named;
+mod osmesa_dir;
 mod output;
 mod pipelines;
 mod progress;
@@ -161,6 +162,10 @@ enum Command {
         #[arg(long)]
         technique: Option<String>,
     },
+    /// Print a folder holding the C library as libOSMesa.so.8, for
+    /// `LD_LIBRARY_PATH=$(fixedfunc osmesa-dir) ./program`: an unmodified OSMesa program
+    /// then renders through the layer (the emulated pipeline on EGL).
+    OsmesaDir,
     /// Repeated timings, reported as medians.
     Bench {
         /// Only this group (default: all).
@@ -180,6 +185,7 @@ pub fn run() -> ExitCode {
     let limits = cli.limits.limits();
     let result = match cli.command {
         Command::Info { backend, json } => info::run(backend, json),
+        Command::OsmesaDir => osmesa_dir::run(),
         Command::Compare(args) => compare::run(args, limits),
         Command::SweepBias(args) => sweep_bias::run(args, limits),
         Command::Replay {

@@ -11,7 +11,7 @@ use glam::Vec4;
 
 use super::command::{Capability, Command, CopyTexImage, ReadPixels, TexImage, TexSubImage};
 use super::error::{GlError, GlResult};
-use super::fragment::{BlendFactor, DepthRange, Face, Viewport};
+use super::fragment::{DepthRange, Face, Viewport};
 use super::geometry::Geometry;
 use super::light::MAX_LIGHTS;
 use super::matrix::{frustum, ortho, rotate, scale, translate};
@@ -178,12 +178,10 @@ impl FixedState {
                 s.depth_pass = *depth_pass;
             }
             Command::StencilMask(m) => self.stencil_test.value.write_mask = *m,
+            // GL 1.5 Table 4.2 makes SRC_ALPHA_SATURATE a source factor only; Mesa 22.3.6
+            // accepts it as the destination factor too (as GL 4.4 does), and the layer
+            // follows Mesa (tests/c/errors.c, checked against Mesa's OSMesa).
             Command::BlendFunc { src, dst } => {
-                if *dst == BlendFactor::SrcAlphaSaturate {
-                    return Err(GlError::invalid_enum(
-                        "SRC_ALPHA_SATURATE is a source factor only",
-                    ));
-                }
                 self.blend.value = super::fragment::Blend {
                     src: *src,
                     dst: *dst,

@@ -105,13 +105,6 @@ fn error_semantics_table() {
             InvalidEnum,
         ),
         (
-            Command::BlendFunc {
-                src: BlendFactor::One,
-                dst: BlendFactor::SrcAlphaSaturate,
-            },
-            InvalidEnum,
-        ),
-        (
             Command::Frustum(ViewVolume {
                 left: -1.0,
                 right: 1.0,

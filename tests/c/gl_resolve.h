@@ -12,7 +12,7 @@
 #define DECLARE_POINTER(ret, name, params) static ret (*p_##name) params;
 GL_FUNCTIONS(DECLARE_POINTER)
 #define RESOLVE_POINTER(ret, name, params)                                         \
-  p_##name = (ret (*) params)OSMesaGetProcAddress(#name);                         \
+  p_##name = (ret(*) params)(void (*)(void))OSMesaGetProcAddress(#name);          \
   if (!p_##name) {                                                                  \
     fprintf(stderr, "OSMesaGetProcAddress(\"%s\") returned NULL\n", #name);         \
     exit(2);                                                                        \

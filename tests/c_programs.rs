@@ -1,0 +1,190 @@
+//! Unmodified C programs written for Mesa's OSMesa (`tests/c/`), compiled with `cc` against
+//! the real `GL/osmesa.h` (Debian's libosmesa6-dev) and run twice: on Mesa's own
+//! `libOSMesa.so.8`, and with `LD_LIBRARY_PATH=$(fixedfunc osmesa-dir)` on the layer's. The
+//! images must match within 3/255 on 99% of pixels, and the error sequences exactly.
+//! Each program runs in the variant that links the GL symbols directly and in the one
+//! that resolves them through OSMesaGetProcAddress.
+
+mod support;
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use image::{Rgba, RgbaImage};
+use support::{assert_images_match, Tolerance};
+
+/// How the program reaches GL.
+#[derive(Clone, Copy, Debug)]
+enum Linking {
+    Direct,
+    ProcAddress,
+}
+
+/// Which library the program runs on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Library {
+    Mesa,
+    Fixedfunc,
+}
+
+fn source(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/c")
+        .join(name)
+}
+
+fn work_dir(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("c_programs")
+        .join(name);
+    std::fs::create_dir_all(&dir).expect("the test folder can be made");
+    dir
+}
+
+/// Compiles `tests/c/NAME.c` as C99 with every warning an error.
+fn compile(name: &str, linking: Linking) -> PathBuf {
+    let dir = work_dir(name);
+    let exe = dir.join(format!("{name}-{linking:?}"));
+    let mut cc = Command::new("cc");
+    cc.args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-O1", "-o"])
+        .arg(&exe)
+        .arg(source(&format!("{name}.c")));
+    if let Linking::ProcAddress = linking {
+        cc.arg("-DRESOLVE_WITH_PROC_ADDRESS");
+    }
+    let out = cc.args(["-lOSMesa", "-lm"]).output().expect("cc runs");
+    assert!(
+        out.status.success(),
+        "cc {name}.c failed (needs gcc and libosmesa6-dev):\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    exe
+}
+
+/// The folder `fixedfunc osmesa-dir` prints.
+fn fixedfunc_dir() -> PathBuf {
+    let out = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
+        .arg("osmesa-dir")
+        .output()
+        .expect("fixedfunc runs");
+    assert!(
+        out.status.success(),
+        "fixedfunc osmesa-dir failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let dir = PathBuf::from(String::from_utf8_lossy(&out.stdout).trim());
+    assert!(
+        dir.join("libOSMesa.so.8").exists(),
+        "{} lacks libOSMesa.so.8",
+        dir.display()
+    );
+    dir
+}
+
+fn run(exe: &Path, library: Library, args: &[&str]) -> Output {
+    let mut cmd = Command::new(exe);
+    cmd.args(args);
+    if library == Library::Fixedfunc {
+        cmd.env("LD_LIBRARY_PATH", fixedfunc_dir());
+    }
+    let out = cmd.output().expect("the program runs");
+    assert!(
+        out.status.success(),
+        "{} on {library:?} failed ({}):\n{}",
+        exe.display(),
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}
+
+/// A binary PPM (P6, maxval 255) as an opaque RGBA image.
+fn read_ppm(path: &Path) -> RgbaImage {
+    let data = std::fs::read(path).expect("the program wrote its image");
+    let mut fields = Vec::new();
+    let mut pos = 0;
+    while fields.len() < 4 {
+        while data[pos].is_ascii_whitespace() {
+            pos += 1;
+        }
+        let start = pos;
+        while !data[pos].is_ascii_whitespace() {
+            pos += 1;
+        }
+        fields.push(String::from_utf8_lossy(&data[start..pos]).into_owned());
+    }
+    assert_eq!(fields[0], "P6");
+    let (w, h): (u32, u32) = (fields[1].parse().unwrap(), fields[2].parse().unwrap());
+    let pixels = &data[pos + 1..];
+    RgbaImage::from_fn(w, h, |x, y| {
+        let i = ((y * w + x) * 3) as usize;
+        Rgba([pixels[i], pixels[i + 1], pixels[i + 2], 255])
+    })
+}
+
+fn render(name: &str, linking: Linking, library: Library, args: &[&str]) -> RgbaImage {
+    let exe = compile(name, linking);
+    let out = work_dir(name).join(format!("{linking:?}-{library:?}.ppm"));
+    let mut all = vec![out.to_str().unwrap()];
+    all.extend_from_slice(args);
+    run(&exe, library, &all);
+    read_ppm(&out)
+}
+
+/// Pixels whose largest channel is at least 100 and twice the others: the program drew
+/// something of that colour (so a blank image cannot pass).
+fn count_dominant(img: &RgbaImage, channel: usize) -> usize {
+    img.pixels()
+        .filter(|p| {
+            let c = p.0[channel];
+            c >= 100 && (0..3).all(|k| k == channel || u16::from(p.0[k]) * 2 <= u16::from(c))
+        })
+        .count()
+}
+
+/// 3/255 per channel on 99% of the pixels.
+fn within_3_on_99_percent(img: &RgbaImage) -> Tolerance {
+    Tolerance {
+        per_channel: 3,
+        max_bad_pixels: (img.width() * img.height()) as usize / 100,
+    }
+}
+
+#[test]
+fn the_classic_osmesa_demo_renders_as_on_mesa() {
+    for linking in [Linking::Direct, Linking::ProcAddress] {
+        let mesa = render("osdemo", linking, Library::Mesa, &["300", "200"]);
+        let ours = render("osdemo", linking, Library::Fixedfunc, &["300", "200"]);
+        for channel in 0..3 {
+            assert!(
+                count_dominant(&mesa, channel) > 1000,
+                "Mesa drew no torus, cone or sphere of channel {channel}"
+            );
+        }
+        assert_images_match(
+            &format!("osdemo-{linking:?}"),
+            &ours,
+            &mesa,
+            within_3_on_99_percent(&mesa),
+        );
+    }
+}
+
+#[test]
+fn errors_follow_mesa_call_by_call() {
+    let exe = compile("errors", Linking::Direct);
+    let mesa = run(&exe, Library::Mesa, &[]);
+    let ours = run(&exe, Library::Fixedfunc, &[]);
+    let (mesa, ours) = (
+        String::from_utf8_lossy(&mesa.stdout),
+        String::from_utf8_lossy(&ours.stdout),
+    );
+    assert!(
+        mesa.lines().count() > 30,
+        "the program checked too little:\n{mesa}"
+    );
+    for (m, o) in mesa.lines().zip(ours.lines()) {
+        assert_eq!(o, m, "the layer's error differs from Mesa's");
+    }
+    assert_eq!(ours.lines().count(), mesa.lines().count());
+}
