@@ -188,3 +188,23 @@ fn errors_follow_mesa_call_by_call() {
     }
     assert_eq!(ours.lines().count(), mesa.lines().count());
 }
+
+#[test]
+fn client_arrays_draw_as_on_mesa() {
+    let mesa = render("arrays", Linking::Direct, Library::Mesa, &[]);
+    let ours = render("arrays", Linking::Direct, Library::Fixedfunc, &[]);
+    // Six 64×64 panels, each drawn through another path: each must show something.
+    let background = Rgba([26, 26, 26, 255]);
+    for panel in 0..6u32 {
+        let (x0, y0) = ((panel % 3) * 64, 64 - (panel / 3) * 64);
+        let drawn = (0..64)
+            .flat_map(|y| (0..64).map(move |x| (x0 + x, y0 + y)))
+            .filter(|&(x, y)| *mesa.get_pixel(x, y) != background)
+            .count();
+        assert!(
+            drawn > 200,
+            "panel {panel} is empty on Mesa ({drawn} pixels)"
+        );
+    }
+    assert_images_match("arrays", &ours, &mesa, within_3_on_99_percent(&mesa));
+}

@@ -7,12 +7,14 @@
 //! GL_AMBIENT, three for GL_SPOT_DIRECTION, width × height pixels with the unpack
 //! alignment), never further: what a C program passes is its own contract, as with any GL.
 
+use std::borrow::Cow;
 use std::cell::Cell;
 use std::ffi::c_void;
 use std::sync::Arc;
 
 use crate::ff::api::Entry;
 use crate::ff::args::{Args, PixelShape};
+use crate::ff::client::{ArrayData, ClientMemory};
 use crate::ff::glenum::{value_of, Family, GlEnum};
 use crate::ff::{GlErrorKind, TexData};
 
@@ -279,7 +281,34 @@ impl Args for CCall<'_> {
     fn pixels(&self, i: usize, shape: PixelShape) -> Result<Option<Arc<[u8]>>, GlErrorKind> {
         self.unpack(i, shape)
     }
+    fn array_data(&self, i: usize) -> Result<ArrayData, GlErrorKind> {
+        match self.args.get(i) {
+            Some(CArg::Ptr(p, _)) if p.is_null() => Ok(ArrayData::Null),
+            Some(CArg::Ptr(p, _)) => Ok(ArrayData::Address(*p as usize)),
+            // An integer where a pointer goes: an offset into no buffer object.
+            _ => Err(GlErrorKind::InvalidValue),
+        }
+    }
     fn slot(&self, _i: usize) -> Result<u32, GlErrorKind> {
         Ok(CALLER_SLOT)
+    }
+}
+
+/// The calling program's memory, read where a client array points (GL's contract: the
+/// program keeps the arrays valid while a draw reads them).
+pub struct ProgramMemory;
+
+impl ClientMemory for ProgramMemory {
+    fn read<'d>(&self, data: &'d ArrayData, offset: usize, len: usize) -> Option<Cow<'d, [u8]>> {
+        match data {
+            ArrayData::Address(a) => {
+                let start = a.checked_add(offset)?;
+                // SAFETY: the program's array holds the elements the draw names.
+                let bytes = unsafe { std::slice::from_raw_parts(start as *const u8, len) };
+                Some(Cow::Borrowed(bytes))
+            }
+            ArrayData::Bytes(b) => b.get(offset..offset.checked_add(len)?).map(Cow::Borrowed),
+            ArrayData::Null => None,
+        }
     }
 }

@@ -10,10 +10,10 @@
 use std::collections::HashSet;
 use std::ffi::c_void;
 
-use super::cargs::{CArg, CCall, CALLER_SLOT};
+use super::cargs::{CArg, CCall, ProgramMemory, CALLER_SLOT};
 use super::AbiError;
 use crate::ff::api::Entry;
-use crate::ff::immediate::Immediate;
+use crate::ff::front::Client;
 use crate::ff::{Command, CurrentValues, GlErrorKind};
 use crate::gpu::{Backend, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec};
 use crate::pipeline::emulate::EmulatedPipeline;
@@ -109,7 +109,7 @@ pub struct Context {
     pub row_length: i32,
     /// OSMESA_Y_UP: row 0 of the buffer is the bottom row. Mesa's default: true.
     pub y_up: bool,
-    immediate: Immediate,
+    client: Client,
     made: Vec<Command>,
     /// The first error of a call the model never saw (a bad token, a call inside
     /// glBegin/glEnd), kept until glGetError as GL keeps its flag.
@@ -149,7 +149,7 @@ impl Context {
             buffer: None,
             row_length: 0,
             y_up: true,
-            immediate: Immediate::default(),
+            client: Client::default(),
             made: Vec::new(),
             error: None,
             warned: HashSet::new(),
@@ -228,7 +228,7 @@ impl Context {
             // No buffer made current yet: GL calls have no context to act on.
             return Ret::None;
         }
-        let inside = self.immediate.is_open() && entry.attrib_call().is_none();
+        let inside = self.client.immediate.is_open() && entry.attrib_call().is_none();
         match entry {
             Entry::GetError if !inside => return Ret::Enum(self.take_error()),
             Entry::Finish | Entry::Flush if !inside => {
@@ -262,9 +262,8 @@ impl Context {
         };
         let current = self.pipeline.as_ref().map(|p| p.state().current);
         let mut made = std::mem::take(&mut self.made);
-        let outcome =
-            self.immediate
-                .call(&c, &current.unwrap_or(CurrentValues::DEFAULT), &mut made);
+        let current = current.unwrap_or(CurrentValues::DEFAULT);
+        let outcome = self.client.call(&c, &current, &ProgramMemory, &mut made);
         if let Err(kind) = outcome {
             if c.was_unsupported() && self.warned.insert(entry) {
                 eprintln!(

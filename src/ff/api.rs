@@ -40,14 +40,11 @@ pub mod ctypes {
 }
 
 /// Who may spell the call. Every call is exported by the C library. `Script` calls are
-/// also read by `replay`; `Client` calls exist in scripts only as what a path issues for a
-/// `Command::Draw` (a script draws with glBegin/glEnd); `Abi` calls are answered by the C
-/// library itself (the error flag, strings, client pixel storage, synchronisation) and
-/// have no Command.
+/// also read by `replay`; `Abi` calls are answered by the C library itself (the error
+/// flag, strings, client pixel storage, synchronisation) and have no Command.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Form {
     Script,
-    Client,
     Abi,
 }
 
@@ -305,8 +302,20 @@ macro_rules! gl_entry_table {
         ClearDepth = glClearDepth(Script; depth: GLdouble);
         ClearStencil = glClearStencil(Script; s: GLint);
         ReadPixels = glReadPixels(Script; x: GLint, y: GLint, width: GLsizei, height: GLsizei, format: GLenum, r#type: GLenum, pixels: *mut c_void);
-        DrawArrays = glDrawArrays(Client; mode: GLenum, first: GLint, count: GLsizei);
-        DrawElements = glDrawElements(Client; mode: GLenum, count: GLsizei, r#type: GLenum, indices: *const c_void);
+        // Client vertex arrays (ff::client).
+        VertexPointer = glVertexPointer(Script; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
+        NormalPointer = glNormalPointer(Script; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
+        ColorPointer = glColorPointer(Script; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
+        TexCoordPointer = glTexCoordPointer(Script; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
+        ClientActiveTexture = glClientActiveTexture(Script; texture: GLenum);
+        ClientActiveTextureARB = glClientActiveTextureARB(Script; texture: GLenum);
+        EnableClientState = glEnableClientState(Script; array: GLenum);
+        DisableClientState = glDisableClientState(Script; array: GLenum);
+        DrawArrays = glDrawArrays(Script; mode: GLenum, first: GLint, count: GLsizei);
+        DrawElements = glDrawElements(Script; mode: GLenum, count: GLsizei, r#type: GLenum, indices: *const c_void);
+        DrawRangeElements = glDrawRangeElements(Script; mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, r#type: GLenum, indices: *const c_void);
+        ArrayElement = glArrayElement(Script; i: GLint);
+        InterleavedArrays = glInterleavedArrays(Script; format: GLenum, stride: GLsizei, pointer: *const c_void);
         // Answered by the C library.
         Finish = glFinish(Abi; );
         Flush = glFlush(Abi; );
@@ -773,6 +782,7 @@ mod tests {
             "void glAlphaFunc(GLenum func, GLfloat ref)"
         );
         assert_eq!(Entry::TexImage2D.arity(), 9);
-        assert!(!Entry::script_names().contains(&"glDrawArrays"));
+        assert!(Entry::script_names().contains(&"glDrawArrays"));
+        assert!(!Entry::script_names().contains(&"glGetError"));
     }
 }

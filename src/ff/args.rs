@@ -13,6 +13,7 @@ use std::sync::Arc;
 use glam::{Mat4, Vec3, Vec4};
 
 use super::api::Entry;
+use super::client::ArrayData;
 use super::command::TexData;
 use super::glenum::{Family, GlEnum};
 use super::texture::{PixelFormat, PixelType};
@@ -103,6 +104,10 @@ pub trait Args {
 
     /// Pixel data: NULL, or bytes.
     fn pixels(&self, i: usize, shape: PixelShape) -> Result<Option<Arc<[u8]>>, Self::Error>;
+
+    /// The memory a client-array pointer names: NULL, bytes given with the call (a
+    /// script), or an address in the program (C).
+    fn array_data(&self, i: usize) -> Result<ArrayData, Self::Error>;
 
     /// The readback slot glReadPixels writes to.
     fn slot(&self, i: usize) -> Result<u32, Self::Error>;

@@ -135,6 +135,31 @@ impl Immediate {
         }
     }
 
+    /// glArrayElement: the element's attributes, then its vertex, as the immediate calls
+    /// would give them (GL 1.5 §2.8). Outside glBegin/glEnd only the attributes take effect.
+    pub fn array_element<A: Args>(
+        &mut self,
+        c: &A,
+        e: super::client::Element,
+        out: &mut Vec<Command>,
+    ) -> Result<(), A::Error> {
+        if let Some(n) = e.normal {
+            self.attribute(c, Attr::Normal(n), out)?;
+        }
+        if let Some(color) = e.color {
+            self.attribute(c, Attr::Color(color), out)?;
+        }
+        for (unit, t) in e.texcoords.iter().enumerate() {
+            if let Some(t) = t {
+                self.attribute(c, Attr::TexCoord(unit as u8, *t), out)?;
+            }
+        }
+        match (e.position, self.open.is_some()) {
+            (Some(p), true) => self.vertex(c, p),
+            _ => Ok(()),
+        }
+    }
+
     fn begin<A: Args>(
         &mut self,
         c: &A,

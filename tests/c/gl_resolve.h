@@ -17,9 +17,9 @@ GL_FUNCTIONS(DECLARE_POINTER)
     fprintf(stderr, "OSMesaGetProcAddress(\"%s\") returned NULL\n", #name);         \
     exit(2);                                                                        \
   }
-static void resolve_gl(void) { GL_FUNCTIONS(RESOLVE_POINTER) }
+static inline void resolve_gl(void) { GL_FUNCTIONS(RESOLVE_POINTER) }
 #else
-static void resolve_gl(void) {}
+static inline void resolve_gl(void) {}
 #endif
 
 /* Writes the RGBA buffer (bottom row first, as OSMesa leaves it) as a binary PPM, top

@@ -8,7 +8,8 @@ use super::names::{ranked, Family, GlEnum};
 use super::ScriptError;
 use crate::ff::api::{Entry, Form};
 use crate::ff::args::{Args, PixelShape};
-use crate::ff::immediate::Immediate;
+use crate::ff::client::{ArrayData, BytesOnly};
+use crate::ff::front::Client;
 use crate::ff::*;
 use crate::vocab::DepthRule;
 
@@ -652,11 +653,38 @@ impl Args for Call<'_, '_> {
                     .map(|v| bytes.extend(v.to_le_bytes())),
                 "GLfloat" => float_literal(text)
                     .map(|v| bytes.extend((if *neg { -v } else { v }).to_le_bytes())),
-                _ => return Err(self.bad(i, "a GLubyte, GLushort, GLuint or GLfloat array")),
+                "GLbyte" => int()
+                    .and_then(|v| i8::try_from(v).ok())
+                    .map(|v| bytes.extend(v.to_le_bytes())),
+                "GLshort" => int()
+                    .and_then(|v| i16::try_from(v).ok())
+                    .map(|v| bytes.extend(v.to_le_bytes())),
+                "GLint" => int()
+                    .and_then(|v| i32::try_from(v).ok())
+                    .map(|v| bytes.extend(v.to_le_bytes())),
+                "GLdouble" => c_number(text)
+                    .map(|v| bytes.extend((if *neg { -v } else { v }).to_le_bytes())),
+                _ => {
+                    return Err(self.bad(
+                        i,
+                        "a GLubyte, GLbyte, GLushort, GLshort, GLuint, GLint, GLfloat or GLdouble array",
+                    ))
+                }
             };
             ok.ok_or_else(|| self.bad(i, "array values that fit the element type"))?;
         }
         Ok(Some(Arc::from(bytes)))
+    }
+    fn array_data(&self, i: usize) -> Res<ArrayData> {
+        let shape = PixelShape {
+            width: 0,
+            height: 0,
+            format: PixelFormat::Rgba,
+            ty: PixelType::UnsignedByte,
+        };
+        Ok(self
+            .pixels(i, shape)?
+            .map_or(ArrayData::Null, ArrayData::Bytes))
     }
     fn slot(&self, i: usize) -> Res<u32> {
         self.name(i)
@@ -684,7 +712,7 @@ pub fn parse_lines(src: &str) -> Result<Vec<(usize, Command)>, ScriptError> {
     // The model follows the script, so that glBegin reads the current values any earlier
     // command left (glColor, a glEnd's last vertex, glPopAttrib).
     let mut state = FixedState::default();
-    let mut immediate = Immediate::default();
+    let mut client = Client::default();
     let mut out = Vec::new();
     let mut made = Vec::new();
     let mut open_line = 0;
@@ -711,14 +739,14 @@ pub fn parse_lines(src: &str) -> Result<Vec<(usize, Command)>, ScriptError> {
         if entry == Entry::Begin {
             open_line = stmt.line;
         }
-        immediate.call(&call, &state.current, &mut made)?;
+        client.call(&call, &state.current, &BytesOnly, &mut made)?;
         for cmd in made.drain(..) {
             // Errors are the executing pipeline's to report; here only the values count.
             let _ = state.apply(&cmd);
             out.push((stmt.line, cmd));
         }
     }
-    if immediate.is_open() {
+    if client.immediate.is_open() {
         return Err(ScriptError::Immediate {
             line: open_line,
             call: "glBegin".into(),

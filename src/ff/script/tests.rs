@@ -142,6 +142,48 @@ fn immediate_mode_folds_into_one_draw() {
     assert_eq!(cmds[2], Command::Normal(Vec3::Y));
 }
 
+#[test]
+fn client_arrays_draw_from_compound_literals() {
+    let src = "glVertexPointer(2, GL_SHORT, 0, (GLshort[]){0, 0, 4, 0, 4, 4, 0, 4});\n\
+               glColorPointer(4, GL_UNSIGNED_BYTE, 0, (GLubyte[]){255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255});\n\
+               glEnableClientState(GL_VERTEX_ARRAY);\n\
+               glEnableClientState(GL_COLOR_ARRAY);\n\
+               glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_BYTE, (GLubyte[]){0, 1, 2, 0, 2, 3});\n\
+               glDisableClientState(GL_COLOR_ARRAY);\n\
+               glDrawArrays(GL_LINE_LOOP, 1, 3);\n\
+               glDisableClientState(GL_VERTEX_ARRAY);\n\
+               glDrawArrays(GL_POINTS, 0, 4);\n";
+    let cmds = parse(src).unwrap();
+    assert_eq!(
+        cmds.len(),
+        2,
+        "a draw without the vertex array draws nothing: {cmds:?}"
+    );
+    let Command::Draw(g) = &cmds[0] else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(g.positions[2], Vec4::new(4.0, 4.0, 0.0, 1.0));
+    assert_eq!(g.indices.as_deref(), Some(&[0, 1, 2, 0, 2, 3][..]));
+    assert_eq!(
+        g.colors.as_ref().map(|c| c[1]),
+        Some(Vec4::new(0.0, 1.0, 0.0, 1.0))
+    );
+    let Command::Draw(g) = &cmds[1] else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!((g.primitive, g.positions.len()), (Primitive::LineLoop, 3));
+    assert_eq!(g.positions[0], Vec4::new(4.0, 0.0, 0.0, 1.0));
+    assert!(g.colors.is_none());
+    // Bad sizes, types and counts are the errors GL gives, with the line.
+    let err = parse("glVertexPointer(5, GL_FLOAT, 0, NULL);").unwrap_err();
+    assert!(
+        matches!(err, ScriptError::BadArgument { line: 1, .. }),
+        "{err}"
+    );
+    let err = parse("glVertexPointer(3, GL_UNSIGNED_BYTE, 0, NULL);").unwrap_err();
+    assert!(matches!(err, ScriptError::UnknownEnum { .. }), "{err}");
+}
+
 fn sample_commands() -> Vec<Command> {
     let mut g = Geometry::new(
         Primitive::TriangleFan,

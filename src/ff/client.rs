@@ -1,0 +1,586 @@
+//! Client vertex arrays (GL 1.5 §2.8): the pointers a program sets with glVertexPointer,
+//! glNormalPointer, glColorPointer and glTexCoordPointer (per client-active unit), their
+//! enables, and the draws that read them (glDrawArrays, glDrawElements,
+//! glDrawRangeElements, glArrayElement, glInterleavedArrays). This is client state: it
+//! belongs to the front end (a script or the C library), not to the server state the
+//! pipelines execute; a draw reads the arrays when it is called and becomes one
+//! `Command::Draw` whose geometry holds the values read.
+//!
+//! Reading follows GL's rules: element i of an array starts at `pointer + i × stride`
+//! (stride 0: the elements are packed); colours and normals of integer types are
+//! normalised (Table 2.9); a vertex with fewer than four coordinates gets z = 0, w = 1; a
+//! texture coordinate gets t = r = 0, q = 1. An attribute whose array is disabled takes
+//! the current value, as the model does for a missing array.
+
+use std::borrow::Cow;
+use std::sync::Arc;
+
+use glam::{Vec3, Vec4};
+
+use super::api::{CType, Entry};
+use super::args::Args;
+use super::geometry::{Geometry, Primitive};
+use super::glenum::Family;
+use super::state::MAX_TEXTURE_UNITS;
+
+/// Where an array's elements are.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ArrayData {
+    /// No pointer given yet (or NULL).
+    Null,
+    /// Bytes carried with the call (a script's compound literal).
+    Bytes(Arc<[u8]>),
+    /// An address in the calling program's memory (the C library).
+    Address(usize),
+}
+
+/// Reads the memory an [`ArrayData`] names: a front end that holds addresses says how.
+pub trait ClientMemory {
+    /// `len` bytes from `offset`, or `None` when there are none.
+    fn read<'d>(&self, data: &'d ArrayData, offset: usize, len: usize) -> Option<Cow<'d, [u8]>>;
+}
+
+/// Memory that holds only bytes given with the calls (scripts).
+pub struct BytesOnly;
+
+impl ClientMemory for BytesOnly {
+    fn read<'d>(&self, data: &'d ArrayData, offset: usize, len: usize) -> Option<Cow<'d, [u8]>> {
+        match data {
+            ArrayData::Bytes(b) => b.get(offset..offset.checked_add(len)?).map(Cow::Borrowed),
+            ArrayData::Null | ArrayData::Address(_) => None,
+        }
+    }
+}
+
+/// One array pointer and its enable. GL defaults: disabled, size 4 (normals 3), FLOAT,
+/// stride 0, NULL.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ArrayPointer {
+    pub enabled: bool,
+    pub size: i32,
+    pub ty: CType,
+    pub stride: i32,
+    pub data: ArrayData,
+}
+
+impl ArrayPointer {
+    fn new(size: i32) -> Self {
+        ArrayPointer {
+            enabled: false,
+            size,
+            ty: CType::Float,
+            stride: 0,
+            data: ArrayData::Null,
+        }
+    }
+
+    /// Element `i`'s components as stored, or `None` when the memory does not hold it.
+    fn element(&self, mem: &dyn ClientMemory, i: usize) -> Option<Vec<f64>> {
+        let size = self.size.max(0) as usize;
+        let elem = ctype_size(self.ty);
+        let stride = if self.stride > 0 {
+            self.stride as usize
+        } else {
+            size * elem
+        };
+        let bytes = mem.read(&self.data, i.checked_mul(stride)?, size * elem)?;
+        Some(
+            bytes
+                .chunks_exact(elem)
+                .map(|b| decode(self.ty, b))
+                .collect(),
+        )
+    }
+}
+
+fn ctype_size(t: CType) -> usize {
+    match t {
+        CType::Byte | CType::UByte => 1,
+        CType::Short | CType::UShort => 2,
+        CType::Int | CType::UInt | CType::Float => 4,
+        CType::Double => 8,
+    }
+}
+
+fn decode(t: CType, b: &[u8]) -> f64 {
+    match t {
+        CType::Byte => f64::from(b[0] as i8),
+        CType::UByte => f64::from(b[0]),
+        CType::Short => f64::from(i16::from_ne_bytes([b[0], b[1]])),
+        CType::UShort => f64::from(u16::from_ne_bytes([b[0], b[1]])),
+        CType::Int => f64::from(i32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
+        CType::UInt => f64::from(u32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
+        CType::Float => f64::from(f32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
+        CType::Double => f64::from_ne_bytes([b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]),
+    }
+}
+
+/// The GL type tokens of array data.
+const TYPE_NAMES: [(&str, CType); 8] = [
+    ("GL_BYTE", CType::Byte),
+    ("GL_UNSIGNED_BYTE", CType::UByte),
+    ("GL_SHORT", CType::Short),
+    ("GL_UNSIGNED_SHORT", CType::UShort),
+    ("GL_INT", CType::Int),
+    ("GL_UNSIGNED_INT", CType::UInt),
+    ("GL_FLOAT", CType::Float),
+    ("GL_DOUBLE", CType::Double),
+];
+
+/// The client arrays of a front end.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClientArrays {
+    pub vertex: ArrayPointer,
+    pub normal: ArrayPointer,
+    pub color: ArrayPointer,
+    pub texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
+    /// glClientActiveTexture: the unit glTexCoordPointer and the TEXTURE_COORD_ARRAY
+    /// enable address. GL default: 0.
+    pub client_active: u8,
+}
+
+impl Default for ClientArrays {
+    fn default() -> Self {
+        ClientArrays {
+            vertex: ArrayPointer::new(4),
+            normal: ArrayPointer::new(3),
+            color: ArrayPointer::new(4),
+            texcoord: std::array::from_fn(|_| ArrayPointer::new(4)),
+            client_active: 0,
+        }
+    }
+}
+
+/// What one element of the enabled arrays gives (glArrayElement).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Element {
+    pub color: Option<Vec4>,
+    pub normal: Option<Vec3>,
+    pub texcoords: [Option<Vec4>; MAX_TEXTURE_UNITS],
+    pub position: Option<Vec4>,
+}
+
+/// What a client call did.
+#[derive(Debug, PartialEq)]
+pub enum ClientEffect {
+    /// Client state changed; nothing to draw.
+    State,
+    /// A draw: the geometry read from the arrays (`None` when the vertex array is
+    /// disabled or the count is 0: GL draws nothing).
+    Draw(Option<Geometry>),
+    /// glArrayElement: the element's values, for immediate mode.
+    Element(Element),
+}
+
+impl ClientArrays {
+    /// Whether `entry` is one of the client-array calls.
+    pub fn handles(entry: Entry) -> bool {
+        matches!(
+            entry,
+            Entry::VertexPointer
+                | Entry::NormalPointer
+                | Entry::ColorPointer
+                | Entry::TexCoordPointer
+                | Entry::ClientActiveTexture
+                | Entry::ClientActiveTextureARB
+                | Entry::EnableClientState
+                | Entry::DisableClientState
+                | Entry::DrawArrays
+                | Entry::DrawElements
+                | Entry::DrawRangeElements
+                | Entry::ArrayElement
+                | Entry::InterleavedArrays
+        )
+    }
+
+    /// Runs one client-array call. GL errors: a size, stride or count out of range is
+    /// INVALID_VALUE; a type or mode outside the set INVALID_ENUM (GL 1.5 §2.8).
+    pub fn call<A: Args>(
+        &mut self,
+        c: &A,
+        mem: &dyn ClientMemory,
+    ) -> Result<ClientEffect, A::Error> {
+        match c.entry() {
+            Entry::VertexPointer => {
+                let p = self.pointer(
+                    c,
+                    0,
+                    &[2, 3, 4],
+                    &[CType::Short, CType::Int, CType::Float, CType::Double],
+                )?;
+                self.vertex = ArrayPointer {
+                    enabled: self.vertex.enabled,
+                    ..p
+                };
+            }
+            Entry::NormalPointer => {
+                let ty = self.array_type(
+                    c,
+                    0,
+                    &[
+                        CType::Byte,
+                        CType::Short,
+                        CType::Int,
+                        CType::Float,
+                        CType::Double,
+                    ],
+                )?;
+                let stride = stride(c, 1)?;
+                self.normal = ArrayPointer {
+                    enabled: self.normal.enabled,
+                    size: 3,
+                    ty,
+                    stride,
+                    data: c.array_data(2)?,
+                };
+            }
+            Entry::ColorPointer => {
+                let p = self.pointer(
+                    c,
+                    0,
+                    &[3, 4],
+                    &[
+                        CType::Byte,
+                        CType::UByte,
+                        CType::Short,
+                        CType::UShort,
+                        CType::Int,
+                        CType::UInt,
+                        CType::Float,
+                        CType::Double,
+                    ],
+                )?;
+                self.color = ArrayPointer {
+                    enabled: self.color.enabled,
+                    ..p
+                };
+            }
+            Entry::TexCoordPointer => {
+                let p = self.pointer(
+                    c,
+                    0,
+                    &[1, 2, 3, 4],
+                    &[CType::Short, CType::Int, CType::Float, CType::Double],
+                )?;
+                let unit = &mut self.texcoord[usize::from(self.client_active)];
+                *unit = ArrayPointer {
+                    enabled: unit.enabled,
+                    ..p
+                };
+            }
+            Entry::ClientActiveTexture | Entry::ClientActiveTextureARB => {
+                let unit = c.family(0, Family::Texture)?;
+                if usize::from(unit) >= MAX_TEXTURE_UNITS {
+                    return Err(c.unknown(0, vec!["GL_TEXTURE0..GL_TEXTURE7"]));
+                }
+                self.client_active = unit;
+            }
+            Entry::EnableClientState | Entry::DisableClientState => {
+                let on = c.entry() == Entry::EnableClientState;
+                let array = c.pname(
+                    0,
+                    &[
+                        "GL_VERTEX_ARRAY",
+                        "GL_NORMAL_ARRAY",
+                        "GL_COLOR_ARRAY",
+                        "GL_TEXTURE_COORD_ARRAY",
+                        "GL_INDEX_ARRAY",
+                        "GL_EDGE_FLAG_ARRAY",
+                    ],
+                )?;
+                match array {
+                    "GL_VERTEX_ARRAY" => self.vertex.enabled = on,
+                    "GL_NORMAL_ARRAY" => self.normal.enabled = on,
+                    "GL_COLOR_ARRAY" => self.color.enabled = on,
+                    "GL_TEXTURE_COORD_ARRAY" => {
+                        self.texcoord[usize::from(self.client_active)].enabled = on
+                    }
+                    // Colour-index and edge-flag arrays: accepted, never read (RGBA mode;
+                    // polygon edges are drawn whole).
+                    _ => {}
+                }
+            }
+            Entry::DrawArrays => {
+                let mode = c.enm(0)?;
+                let first = c.i32(1)?;
+                let count = c.i32(2)?;
+                if first < 0 || count < 0 {
+                    return Err(c.bad(2, "a first index and count of 0 or more"));
+                }
+                let indices: Vec<usize> =
+                    (first as usize..first as usize + count as usize).collect();
+                return Ok(ClientEffect::Draw(self.geometry(mode, &indices, None, mem)));
+            }
+            Entry::DrawElements | Entry::DrawRangeElements => {
+                let ranged = c.entry() == Entry::DrawRangeElements;
+                let k = if ranged { 2 } else { 0 };
+                let mode: Primitive = c.enm(0)?;
+                if ranged && c.u32(2)? < c.u32(1)? {
+                    return Err(c.bad(2, "end ≥ start"));
+                }
+                let count = c.i32(1 + k)?;
+                if count < 0 {
+                    return Err(c.bad(1 + k, "a count of 0 or more"));
+                }
+                let ty = index_type(c, 2 + k)?;
+                let data = c.array_data(3 + k)?;
+                let size = ctype_size(ty);
+                let bytes = mem
+                    .read(&data, 0, count as usize * size)
+                    .ok_or_else(|| c.bad(3 + k, "indices"))?;
+                let indices: Vec<usize> = bytes
+                    .chunks_exact(size)
+                    .map(|b| decode(ty, b) as usize)
+                    .collect();
+                let n = indices.iter().max().map_or(0, |m| m + 1);
+                let all: Vec<usize> = (0..n).collect();
+                let g = self.geometry(mode, &all, Some(&indices), mem);
+                return Ok(ClientEffect::Draw(g));
+            }
+            Entry::ArrayElement => {
+                let i = c.i32(0)?;
+                if i < 0 {
+                    return Err(c.bad(0, "an index of 0 or more"));
+                }
+                return Ok(ClientEffect::Element(self.element(i as usize, mem)));
+            }
+            Entry::InterleavedArrays => self.interleaved(c)?,
+            _ => return Err(c.unsupported()),
+        }
+        Ok(ClientEffect::State)
+    }
+
+    fn array_type<A: Args>(&self, c: &A, i: usize, allowed: &[CType]) -> Result<CType, A::Error> {
+        let names: Vec<&'static str> = TYPE_NAMES
+            .iter()
+            .filter(|(_, t)| allowed.contains(t))
+            .map(|(n, _)| *n)
+            .collect();
+        let name = c.pname(i, &names)?;
+        Ok(TYPE_NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, t)| *t)
+            .unwrap_or(CType::Float))
+    }
+
+    /// glXPointer(size, type, stride, pointer).
+    fn pointer<A: Args>(
+        &self,
+        c: &A,
+        from: usize,
+        sizes: &[i32],
+        types: &[CType],
+    ) -> Result<ArrayPointer, A::Error> {
+        let size = c.i32(from)?;
+        if !sizes.contains(&size) {
+            return Err(c.bad(from, "a size the array allows"));
+        }
+        let ty = self.array_type(c, from + 1, types)?;
+        let stride = stride(c, from + 2)?;
+        Ok(ArrayPointer {
+            enabled: false,
+            size,
+            ty,
+            stride,
+            data: c.array_data(from + 3)?,
+        })
+    }
+
+    /// The geometry of vertices `which` (each an element index), drawn through `indices`
+    /// into them when given.
+    fn geometry(
+        &self,
+        mode: Primitive,
+        which: &[usize],
+        indices: Option<&[usize]>,
+        mem: &dyn ClientMemory,
+    ) -> Option<Geometry> {
+        if !self.vertex.enabled || which.is_empty() {
+            return None;
+        }
+        let vec4 = |v: Option<Vec<f64>>, d: Vec4| {
+            let v = v.unwrap_or_default();
+            let g = |k: usize, dk: f32| v.get(k).map_or(dk, |x| *x as f32);
+            Vec4::new(g(0, d.x), g(1, d.y), g(2, d.z), g(3, d.w))
+        };
+        let mut g = Geometry::new(mode, Vec::with_capacity(which.len()));
+        for &i in which {
+            g.positions.push(vec4(
+                self.vertex.element(mem, i),
+                Vec4::new(0.0, 0.0, 0.0, 1.0),
+            ));
+        }
+        if self.normal.enabled {
+            let ty = self.normal.ty;
+            g.normals = Some(
+                which
+                    .iter()
+                    .map(|&i| {
+                        let v = self
+                            .normal
+                            .element(mem, i)
+                            .unwrap_or_else(|| vec![0.0, 0.0, 1.0]);
+                        Vec3::new(
+                            ty.normalized(v[0]),
+                            ty.normalized(v[1]),
+                            ty.normalized(v[2]),
+                        )
+                    })
+                    .collect(),
+            );
+        }
+        if self.color.enabled {
+            let ty = self.color.ty;
+            g.colors = Some(
+                which
+                    .iter()
+                    .map(|&i| {
+                        let v = self.color.element(mem, i).unwrap_or_default();
+                        let n = |k: usize, d: f32| v.get(k).map_or(d, |x| ty.normalized(*x));
+                        Vec4::new(n(0, 0.0), n(1, 0.0), n(2, 0.0), n(3, 1.0))
+                    })
+                    .collect(),
+            );
+        }
+        for (unit, t) in self.texcoord.iter().enumerate() {
+            if t.enabled {
+                g.texcoords[unit] = Some(
+                    which
+                        .iter()
+                        .map(|&i| vec4(t.element(mem, i), Vec4::new(0.0, 0.0, 0.0, 1.0)))
+                        .collect(),
+                );
+            }
+        }
+        g.indices = indices.map(|ix| ix.iter().map(|&i| i as u32).collect());
+        Some(g)
+    }
+
+    /// glArrayElement(i): the values of element i of every enabled array.
+    fn element(&self, i: usize, mem: &dyn ClientMemory) -> Element {
+        let mut e = Element::default();
+        let Some(mut g) = self.geometry(Primitive::Points, &[i], None, mem) else {
+            // Without a vertex array the other arrays still set their current values.
+            let mut with_vertex = self.clone();
+            with_vertex.vertex.enabled = true;
+            if let Some(g) = with_vertex.geometry(Primitive::Points, &[i], None, mem) {
+                e.color = Geometry::last(&g.colors);
+                e.normal = Geometry::last(&g.normals);
+                for (u, t) in g.texcoords.iter().enumerate() {
+                    e.texcoords[u] = Geometry::last(t);
+                }
+            }
+            return e;
+        };
+        e.color = Geometry::last(&g.colors);
+        e.normal = Geometry::last(&g.normals);
+        for (u, t) in g.texcoords.iter().enumerate() {
+            e.texcoords[u] = Geometry::last(t);
+        }
+        e.position = g.positions.pop();
+        e
+    }
+
+    /// glInterleavedArrays(format, stride, pointer): sets and enables the arrays the
+    /// format names, disables the others (GL 1.5 §2.8, Table 2.5), on the client-active
+    /// unit.
+    fn interleaved<A: Args>(&mut self, c: &A) -> Result<(), A::Error> {
+        // (name, texcoord size, colour size, colour type, normal, vertex size).
+        const FORMATS: [(&str, i32, i32, CType, bool, i32); 14] = [
+            ("GL_V2F", 0, 0, CType::Float, false, 2),
+            ("GL_V3F", 0, 0, CType::Float, false, 3),
+            ("GL_C4UB_V2F", 0, 4, CType::UByte, false, 2),
+            ("GL_C4UB_V3F", 0, 4, CType::UByte, false, 3),
+            ("GL_C3F_V3F", 0, 3, CType::Float, false, 3),
+            ("GL_N3F_V3F", 0, 0, CType::Float, true, 3),
+            ("GL_C4F_N3F_V3F", 0, 4, CType::Float, true, 3),
+            ("GL_T2F_V3F", 2, 0, CType::Float, false, 3),
+            ("GL_T4F_V4F", 4, 0, CType::Float, false, 4),
+            ("GL_T2F_C4UB_V3F", 2, 4, CType::UByte, false, 3),
+            ("GL_T2F_C3F_V3F", 2, 3, CType::Float, false, 3),
+            ("GL_T2F_N3F_V3F", 2, 0, CType::Float, true, 3),
+            ("GL_T2F_C4F_N3F_V3F", 2, 4, CType::Float, true, 3),
+            ("GL_T4F_C4F_N3F_V4F", 4, 4, CType::Float, true, 4),
+        ];
+        let names: Vec<&'static str> = FORMATS.iter().map(|f| f.0).collect();
+        let name = c.pname(0, &names)?;
+        let &(_, tc, cc, cty, normal, vc) = FORMATS
+            .iter()
+            .find(|f| f.0 == name)
+            .expect("pname returned a listed name");
+        let given = stride(c, 1)?;
+        let data = c.array_data(2)?;
+        // Offsets in bytes: texcoord, colour, normal, vertex (floats are 4 bytes; a
+        // C4UB colour takes 4 bytes).
+        let colour_bytes = if cty == CType::UByte { 4 } else { 4 * cc };
+        let oc = 4 * tc;
+        let on = oc + colour_bytes * i32::from(cc > 0);
+        let ov = on + 12 * i32::from(normal);
+        let whole = ov + 4 * vc;
+        let stride = if given == 0 { whole } else { given };
+        let at = |offset: i32| match &data {
+            ArrayData::Bytes(b) => ArrayData::Bytes(
+                b.get(offset as usize..)
+                    .map_or_else(|| Arc::from(Vec::new()), Arc::from),
+            ),
+            ArrayData::Address(a) => ArrayData::Address(a + offset as usize),
+            ArrayData::Null => ArrayData::Null,
+        };
+        let make = |size: i32, ty: CType, offset: i32, on: bool| ArrayPointer {
+            enabled: on,
+            size,
+            ty,
+            stride,
+            data: at(offset),
+        };
+        let unit = usize::from(self.client_active);
+        self.texcoord[unit] = if tc > 0 {
+            make(tc, CType::Float, 0, true)
+        } else {
+            ArrayPointer {
+                enabled: false,
+                ..self.texcoord[unit].clone()
+            }
+        };
+        self.color = if cc > 0 {
+            make(cc, cty, oc, true)
+        } else {
+            ArrayPointer {
+                enabled: false,
+                ..self.color.clone()
+            }
+        };
+        self.normal = if normal {
+            make(3, CType::Float, on, true)
+        } else {
+            ArrayPointer {
+                enabled: false,
+                ..self.normal.clone()
+            }
+        };
+        self.vertex = make(vc, CType::Float, ov, true);
+        Ok(())
+    }
+}
+
+fn stride<A: Args>(c: &A, i: usize) -> Result<i32, A::Error> {
+    let s = c.i32(i)?;
+    if s < 0 {
+        return Err(c.bad(i, "a stride of 0 or more"));
+    }
+    Ok(s)
+}
+
+/// glDrawElements' index type: UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT.
+fn index_type<A: Args>(c: &A, i: usize) -> Result<CType, A::Error> {
+    let name = c.pname(
+        i,
+        &["GL_UNSIGNED_BYTE", "GL_UNSIGNED_SHORT", "GL_UNSIGNED_INT"],
+    )?;
+    Ok(match name {
+        "GL_UNSIGNED_BYTE" => CType::UByte,
+        "GL_UNSIGNED_SHORT" => CType::UShort,
+        _ => CType::UInt,
+    })
+}
