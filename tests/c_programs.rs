@@ -208,3 +208,27 @@ fn client_arrays_draw_as_on_mesa() {
     }
     assert_images_match("arrays", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+#[test]
+fn display_lists_run_as_on_mesa() {
+    let exe = compile("lists", Linking::Direct);
+    let dir = work_dir("lists");
+    let run_on = |library: Library| {
+        let out = dir.join(format!("{library:?}.ppm"));
+        let text = run(&exe, library, &[out.to_str().unwrap()]).stdout;
+        (String::from_utf8_lossy(&text).into_owned(), read_ppm(&out))
+    };
+    let (mesa_text, mesa) = run_on(Library::Mesa);
+    let (ours_text, ours) = run_on(Library::Fixedfunc);
+    assert!(
+        mesa_text.contains("glCallLists through the base       0x0500"),
+        "the recorded bad call raised no error on Mesa:\n{mesa_text}"
+    );
+    assert_eq!(
+        ours_text, mesa_text,
+        "glGetError and glIsList answers differ"
+    );
+    let lit = mesa.pixels().filter(|p| p.0[..3] != [0, 0, 0]).count();
+    assert!(lit > 4000, "Mesa drew too little ({lit} pixels)");
+    assert_images_match("lists", &ours, &mesa, within_3_on_99_percent(&mesa));
+}

@@ -12,7 +12,7 @@ use std::cell::Cell;
 use std::ffi::c_void;
 use std::sync::Arc;
 
-use crate::ff::api::Entry;
+use crate::ff::api::{CType, Entry};
 use crate::ff::args::{Args, PixelShape};
 use crate::ff::client::{ArrayData, ClientMemory};
 use crate::ff::glenum::{value_of, Family, GlEnum};
@@ -280,6 +280,29 @@ impl Args for CCall<'_> {
     }
     fn pixels(&self, i: usize, shape: PixelShape) -> Result<Option<Arc<[u8]>>, GlErrorKind> {
         self.unpack(i, shape)
+    }
+    fn array_as(&self, i: usize, n: usize, ty: CType) -> Result<Vec<f64>, GlErrorKind> {
+        let elem = match ty {
+            CType::Byte => CElem::Byte,
+            CType::UByte => CElem::UByte,
+            CType::Short => CElem::Short,
+            CType::UShort => CElem::UShort,
+            CType::Int => CElem::Int,
+            CType::UInt => CElem::UInt,
+            CType::Float => CElem::Float,
+            CType::Double => CElem::Double,
+        };
+        let (p, _) = self.pointer(i)?;
+        let typed = CCall {
+            entry: self.entry,
+            args: &[CArg::Ptr(p, elem)],
+            unpack_alignment: self.unpack_alignment,
+            unsupported: Cell::new(false),
+        };
+        typed.read(0, n)
+    }
+    fn deferred(&self, err: &GlErrorKind) -> Option<GlErrorKind> {
+        Some(*err)
     }
     fn array_data(&self, i: usize) -> Result<ArrayData, GlErrorKind> {
         match self.args.get(i) {

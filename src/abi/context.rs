@@ -264,6 +264,7 @@ impl Context {
         let mut made = std::mem::take(&mut self.made);
         let current = current.unwrap_or(CurrentValues::DEFAULT);
         let outcome = self.client.call(&c, &current, &ProgramMemory, &mut made);
+        let value = *outcome.as_ref().unwrap_or(&0);
         if let Err(kind) = outcome {
             if c.was_unsupported() && self.warned.insert(entry) {
                 eprintln!(
@@ -280,7 +281,7 @@ impl Context {
         if entry == Entry::ReadPixels {
             self.copy_read_pixels(args);
         }
-        Ret::None
+        Ret::Enum(value)
     }
 
     fn execute(&mut self, cmd: &Command) {

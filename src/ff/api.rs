@@ -316,6 +316,15 @@ macro_rules! gl_entry_table {
         DrawRangeElements = glDrawRangeElements(Script; mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, r#type: GLenum, indices: *const c_void);
         ArrayElement = glArrayElement(Script; i: GLint);
         InterleavedArrays = glInterleavedArrays(Script; format: GLenum, stride: GLsizei, pointer: *const c_void);
+        // Display lists (ff::lists).
+        NewList = glNewList(Script; list: GLuint, mode: GLenum);
+        EndList = glEndList(Script; );
+        CallList = glCallList(Script; list: GLuint);
+        CallLists = glCallLists(Script; n: GLsizei, r#type: GLenum, lists: *const c_void);
+        GenLists = glGenLists(Script; range: GLsizei) -> GLuint;
+        DeleteLists = glDeleteLists(Script; list: GLuint, range: GLsizei);
+        IsList = glIsList(Script; list: GLuint) -> GLboolean;
+        ListBase = glListBase(Script; base: GLuint);
         // Answered by the C library.
         Finish = glFinish(Abi; );
         Flush = glFlush(Abi; );
@@ -708,6 +717,7 @@ impl Command {
                 Some(_) => Entry::DrawElements,
                 None => Entry::DrawArrays,
             },
+            Command::Raise { call, .. } => *call,
         }
     }
 }

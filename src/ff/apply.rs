@@ -50,6 +50,12 @@ impl FixedState {
         let mv = self.modelview.top();
         let unit = self.active_unit();
         match cmd {
+            Command::Raise { error, .. } => {
+                return Err(GlError {
+                    kind: *error,
+                    rule: "the call's arguments, checked as its display list runs",
+                })
+            }
             Command::MatrixMode(m) => self.matrix_mode = *m,
             Command::LoadIdentity => self.current_stack_mut().set_top(glam::Mat4::IDENTITY),
             Command::LoadMatrix(m) => self.current_stack_mut().set_top(*m),

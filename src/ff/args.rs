@@ -12,9 +12,10 @@ use std::sync::Arc;
 
 use glam::{Mat4, Vec3, Vec4};
 
-use super::api::Entry;
+use super::api::{CType, Entry};
 use super::client::ArrayData;
 use super::command::TexData;
+use super::error::GlErrorKind;
 use super::glenum::{Family, GlEnum};
 use super::texture::{PixelFormat, PixelType};
 
@@ -98,6 +99,15 @@ pub trait Args {
     /// The first `n` numbers of an array argument (at least `n` must be there), each as
     /// the caller's element type holds it.
     fn array_f64(&self, i: usize, n: usize) -> Result<Vec<f64>, Self::Error>;
+
+    /// The first `n` values of an untyped array argument (`const void *`) read as `ty`
+    /// (a script's compound literal carries its own element type and is read as written).
+    fn array_as(&self, i: usize, n: usize, ty: CType) -> Result<Vec<f64>, Self::Error>;
+
+    /// The GL error to keep in a display list when a compiled call's arguments are bad
+    /// (GL raises it when the list runs), or `None` when the front end stops at once (a
+    /// script reports the line).
+    fn deferred(&self, err: &Self::Error) -> Option<GlErrorKind>;
 
     /// glTexImage's data: NULL, bytes, or (scripts) a readback slot.
     fn tex_data(&self, i: usize, shape: PixelShape) -> Result<TexData, Self::Error>;

@@ -14,6 +14,9 @@ use glam::{Mat4, Vec3, Vec4};
 
 use crate::vocab::DepthRule;
 
+use super::api::Entry;
+use super::error::GlErrorKind;
+
 use super::combiners::{
     CombinerInput, CombinerOutput, CombinerParam, FinalVariable, Portion, Variable,
 };
@@ -287,4 +290,11 @@ pub enum Command {
 
     /// glBegin … glEnd, or glDrawArrays/glDrawElements.
     Draw(Arc<Geometry>),
+
+    /// A call a display list recorded with arguments GL rejects: running it raises
+    /// `error` and does nothing else (GL checks a listed call when the list executes).
+    Raise {
+        error: GlErrorKind,
+        call: Entry,
+    },
 }

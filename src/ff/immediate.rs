@@ -14,6 +14,7 @@ use glam::{Vec3, Vec4};
 
 use super::api::{Attrib, AttribCall, Entry};
 use super::args::Args;
+use super::client::Element;
 use super::command::Command;
 use super::geometry::{Geometry, Primitive};
 use super::glenum::Family;
@@ -38,11 +39,76 @@ struct Open {
     called: [bool; 2 + MAX_TEXTURE_UNITS],
 }
 
-enum Attr {
+/// A vertex attribute as an immediate-mode call sets it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Attr {
     Color(Vec4),
     Normal(Vec3),
     TexCoord(u8, Vec4),
 }
+
+/// One immediate-mode call with its values read: what a display list keeps of it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Op {
+    Begin(Primitive),
+    End,
+    Vertex(Vec4),
+    Attribute(Attr),
+    /// glRect's corners (x1, y1, x2, y2).
+    Rect([f32; 4]),
+    /// glArrayElement's values.
+    Element(Element),
+}
+
+/// The immediate-mode call `c` is, with its values read and converted; `None` for any
+/// other call.
+pub fn decode<A: Args>(c: &A) -> Result<Option<Op>, A::Error> {
+    if let Some(form) = c.entry().attrib_call() {
+        return family(c, form).map(Some);
+    }
+    Ok(match c.entry() {
+        Entry::Begin => {
+            c.count(1)?;
+            Some(Op::Begin(c.enm(0)?))
+        }
+        Entry::End => {
+            c.count(0)?;
+            Some(Op::End)
+        }
+        _ => None,
+    })
+}
+
+/// One call of the vertex-attribute families (glVertex, glColor, glNormal, glTexCoord,
+/// glMultiTexCoord, glRect) in any of its variants: the values are converted to the
+/// parameter type as C does, then colours and normals of integer types are normalised
+/// (GL 1.5 Table 2.9); missing components take GL's defaults (z = 0, w = 1, q = 1,
+/// alpha = 1).
+fn family<A: Args>(c: &A, form: AttribCall) -> Result<Op, A::Error> {
+    let from = usize::from(form.attrib == Attrib::MultiTexCoord);
+    let v = attrib_values(c, form, from)?;
+    let f = |k: usize, default: f32| v.get(k).map_or(default, |x| *x as f32);
+    let n = |k: usize, default: f32| v.get(k).map_or(default, |x| form.ty.normalized(*x));
+    let coords = Vec4::new(f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 1.0));
+    Ok(match form.attrib {
+        Attrib::Vertex => Op::Vertex(coords),
+        Attrib::Rect => Op::Rect([f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 0.0)]),
+        Attrib::Color => Op::Attribute(Attr::Color(Vec4::new(
+            n(0, 0.0),
+            n(1, 0.0),
+            n(2, 0.0),
+            n(3, 1.0),
+        ))),
+        Attrib::Normal => Op::Attribute(Attr::Normal(Vec3::new(n(0, 0.0), n(1, 0.0), n(2, 1.0)))),
+        Attrib::TexCoord => Op::Attribute(Attr::TexCoord(0, coords)),
+        Attrib::MultiTexCoord => {
+            Op::Attribute(Attr::TexCoord(c.family(0, Family::Texture)?, coords))
+        }
+    })
+}
+
+/// A broken immediate-mode rule, in words (the front end makes it its error).
+pub type Rule = &'static str;
 
 impl Immediate {
     /// Whether a glBegin is open.
@@ -64,19 +130,11 @@ impl Immediate {
         current: &CurrentValues,
         out: &mut Vec<Command>,
     ) -> Result<(), A::Error> {
-        if let Some(form) = c.entry().attrib_call() {
-            return self.family(c, form, current, out);
-        }
-        match c.entry() {
-            Entry::Begin => {
-                c.count(1)?;
-                self.begin(c, c.enm(0)?, current)
-            }
-            Entry::End => {
-                c.count(0)?;
-                self.end(c, out)
-            }
-            _ => {
+        match decode(c)? {
+            Some(op) => self
+                .apply(&op, current, out)
+                .map_err(|rule| c.immediate(rule)),
+            None => {
                 if self.open.is_some() {
                     return Err(
                         c.immediate("only vertex attributes are allowed inside glBegin/glEnd")
@@ -88,86 +146,56 @@ impl Immediate {
         }
     }
 
-    /// One call of the vertex-attribute families (glVertex, glColor, glNormal, glTexCoord,
-    /// glMultiTexCoord, glRect) in any of its variants: the values are converted to the
-    /// parameter type as C does, then colours and normals of integer types are normalised
-    /// (GL 1.5 Table 2.9); missing components take GL's defaults (z = 0, w = 1, q = 1,
-    /// alpha = 1).
-    fn family<A: Args>(
+    /// Applies one immediate-mode call.
+    pub fn apply(
         &mut self,
-        c: &A,
-        form: AttribCall,
+        op: &Op,
         current: &CurrentValues,
         out: &mut Vec<Command>,
-    ) -> Result<(), A::Error> {
-        let from = usize::from(form.attrib == Attrib::MultiTexCoord);
-        let v = attrib_values(c, form, from)?;
-        let f = |k: usize, default: f32| v.get(k).map_or(default, |x| *x as f32);
-        let n = |k: usize, default: f32| v.get(k).map_or(default, |x| form.ty.normalized(*x));
-        let coords = Vec4::new(f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 1.0));
-        match form.attrib {
-            Attrib::Vertex => self.vertex(c, coords),
-            Attrib::Rect => {
+    ) -> Result<(), Rule> {
+        match op {
+            Op::Begin(p) => self.begin(*p, current),
+            Op::End => self.end(out),
+            Op::Vertex(v) => self.vertex(*v),
+            Op::Attribute(a) => self.attribute(*a, out),
+            Op::Rect([x1, y1, x2, y2]) => {
                 if self.open.is_some() {
-                    return Err(c.immediate("glRect inside glBegin/glEnd"));
+                    return Err("glRect inside glBegin/glEnd");
                 }
                 // Mesa draws glRect as one GL_QUADS: (x1,y1) (x2,y1) (x2,y2) (x1,y2).
-                let (x1, y1, x2, y2) = (f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 0.0));
-                self.begin(c, Primitive::Quads, current)?;
+                self.begin(Primitive::Quads, current)?;
                 for (x, y) in [(x1, y1), (x2, y1), (x2, y2), (x1, y2)] {
-                    self.vertex(c, Vec4::new(x, y, 0.0, 1.0))?;
+                    self.vertex(Vec4::new(*x, *y, 0.0, 1.0))?;
                 }
-                self.end(c, out)
+                self.end(out)
             }
-            Attrib::Color => {
-                let color = Vec4::new(n(0, 0.0), n(1, 0.0), n(2, 0.0), n(3, 1.0));
-                self.attribute(c, Attr::Color(color), out)
-            }
-            Attrib::Normal => {
-                let normal = Vec3::new(n(0, 0.0), n(1, 0.0), n(2, 1.0));
-                self.attribute(c, Attr::Normal(normal), out)
-            }
-            Attrib::TexCoord => self.attribute(c, Attr::TexCoord(0, coords), out),
-            Attrib::MultiTexCoord => {
-                let unit = c.family(0, Family::Texture)?;
-                self.attribute(c, Attr::TexCoord(unit, coords), out)
-            }
+            Op::Element(e) => self.array_element(e, out),
         }
     }
 
     /// glArrayElement: the element's attributes, then its vertex, as the immediate calls
     /// would give them (GL 1.5 §2.8). Outside glBegin/glEnd only the attributes take effect.
-    pub fn array_element<A: Args>(
-        &mut self,
-        c: &A,
-        e: super::client::Element,
-        out: &mut Vec<Command>,
-    ) -> Result<(), A::Error> {
+    fn array_element(&mut self, e: &Element, out: &mut Vec<Command>) -> Result<(), Rule> {
         if let Some(n) = e.normal {
-            self.attribute(c, Attr::Normal(n), out)?;
+            self.attribute(Attr::Normal(n), out)?;
         }
         if let Some(color) = e.color {
-            self.attribute(c, Attr::Color(color), out)?;
+            self.attribute(Attr::Color(color), out)?;
         }
         for (unit, t) in e.texcoords.iter().enumerate() {
             if let Some(t) = t {
-                self.attribute(c, Attr::TexCoord(unit as u8, *t), out)?;
+                self.attribute(Attr::TexCoord(unit as u8, *t), out)?;
             }
         }
         match (e.position, self.open.is_some()) {
-            (Some(p), true) => self.vertex(c, p),
+            (Some(p), true) => self.vertex(p),
             _ => Ok(()),
         }
     }
 
-    fn begin<A: Args>(
-        &mut self,
-        c: &A,
-        primitive: Primitive,
-        current: &CurrentValues,
-    ) -> Result<(), A::Error> {
+    fn begin(&mut self, primitive: Primitive, current: &CurrentValues) -> Result<(), Rule> {
         if self.open.is_some() {
-            return Err(c.immediate("glBegin inside glBegin/glEnd"));
+            return Err("glBegin inside glBegin/glEnd");
         }
         self.open = Some(Open {
             geometry: Geometry::new(primitive, Vec::new()),
@@ -179,11 +207,8 @@ impl Immediate {
     }
 
     /// glVertex: a vertex with the current values of every attribute with an array.
-    fn vertex<A: Args>(&mut self, c: &A, p: Vec4) -> Result<(), A::Error> {
-        let open = self
-            .open
-            .as_mut()
-            .ok_or_else(|| c.immediate("glVertex outside glBegin/glEnd"))?;
+    fn vertex(&mut self, p: Vec4) -> Result<(), Rule> {
+        let open = self.open.as_mut().ok_or("glVertex outside glBegin/glEnd")?;
         open.arrays_for_called();
         let cur = open.current;
         let g = &mut open.geometry;
@@ -202,12 +227,7 @@ impl Immediate {
         Ok(())
     }
 
-    fn attribute<A: Args>(
-        &mut self,
-        c: &A,
-        attr: Attr,
-        out: &mut Vec<Command>,
-    ) -> Result<(), A::Error> {
+    fn attribute(&mut self, attr: Attr, out: &mut Vec<Command>) -> Result<(), Rule> {
         let Some(open) = &mut self.open else {
             // Outside the pair: a state command (an invalid unit is the model's
             // INVALID_ENUM).
@@ -230,7 +250,7 @@ impl Immediate {
             Attr::TexCoord(unit, coord) => {
                 let u = usize::from(unit);
                 if u >= MAX_TEXTURE_UNITS {
-                    return Err(c.immediate("texture unit beyond MAX_TEXTURE_UNITS"));
+                    return Err("texture unit beyond MAX_TEXTURE_UNITS");
                 }
                 open.current.texcoords[u] = coord;
                 2 + u
@@ -241,11 +261,8 @@ impl Immediate {
     }
 
     /// glEnd: emits the Draw, then any value set after the last vertex.
-    fn end<A: Args>(&mut self, c: &A, out: &mut Vec<Command>) -> Result<(), A::Error> {
-        let open = self
-            .open
-            .take()
-            .ok_or_else(|| c.immediate("glEnd without glBegin"))?;
+    fn end(&mut self, out: &mut Vec<Command>) -> Result<(), Rule> {
+        let open = self.open.take().ok_or("glEnd without glBegin")?;
         let g = open.geometry;
         let cur = open.current;
         let after = after_draw(&g, open.begin);

@@ -29,6 +29,7 @@ pub mod geometry;
 pub mod glenum;
 pub mod immediate;
 pub mod light;
+pub mod lists;
 pub mod matrix;
 pub mod precision;
 pub mod script;

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use super::lexer::{lex, Tok, Token};
 use super::names::{ranked, Family, GlEnum};
 use super::ScriptError;
-use crate::ff::api::{Entry, Form};
+use crate::ff::api::{CType, Entry, Form};
 use crate::ff::args::{Args, PixelShape};
 use crate::ff::client::{ArrayData, BytesOnly};
 use crate::ff::front::Client;
@@ -674,6 +674,12 @@ impl Args for Call<'_, '_> {
             ok.ok_or_else(|| self.bad(i, "array values that fit the element type"))?;
         }
         Ok(Some(Arc::from(bytes)))
+    }
+    fn array_as(&self, i: usize, n: usize, _ty: CType) -> Res<Vec<f64>> {
+        self.array_f64(i, n)
+    }
+    fn deferred(&self, _err: &ScriptError) -> Option<GlErrorKind> {
+        None
     }
     fn array_data(&self, i: usize) -> Res<ArrayData> {
         let shape = PixelShape {

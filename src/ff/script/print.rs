@@ -97,6 +97,9 @@ fn command(out: &mut String, c: &Command) {
                 pixels(t.ty, &t.data)
             ),
         ),
+        Command::Raise { error, call } => out.push_str(&format!(
+            "/* {call}: {error:?} raised here by a display list */\n"
+        )),
         other => line(out, format_args!("{}", call(other))),
     }
 }
@@ -355,7 +358,10 @@ fn call(c: &Command) -> String {
             r.slot
         ),
         // Printed by `command`.
-        Command::Draw(_) | Command::TexImage(_) | Command::TexSubImage2D(_) => String::new(),
+        Command::Draw(_)
+        | Command::TexImage(_)
+        | Command::TexSubImage2D(_)
+        | Command::Raise { .. } => String::new(),
     }
 }
 

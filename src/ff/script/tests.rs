@@ -184,6 +184,41 @@ fn client_arrays_draw_from_compound_literals() {
     assert!(matches!(err, ScriptError::UnknownEnum { .. }), "{err}");
 }
 
+#[test]
+fn display_lists_expand_where_they_are_called() {
+    let src = "glGenLists(3);\n\
+               glNewList(1, GL_COMPILE);\n\
+               glColor3f(1, 0, 0);\n\
+               glBegin(GL_POINTS); glVertex2f(0, 0); glEnd();\n\
+               glEndList();\n\
+               glNewList(2, GL_COMPILE_AND_EXECUTE);\n\
+               glTranslatef(1, 0, 0); glCallList(1);\n\
+               glEndList();\n\
+               glListBase(1);\n\
+               glCallLists(2, GL_UNSIGNED_BYTE, (GLubyte[]){0, 1});\n";
+    let cmds = parse(src).unwrap();
+    let draws = cmds
+        .iter()
+        .filter(|c| matches!(c, Command::Draw(_)))
+        .count();
+    let moves = cmds
+        .iter()
+        .filter(|c| matches!(c, Command::Translate(_)))
+        .count();
+    // List 2 ran once as it was compiled, then lists 1 and 2 through the base.
+    assert_eq!((draws, moves), (3, 2), "{cmds:?}");
+    let err = parse("glNewList(0, GL_COMPILE);").unwrap_err();
+    assert!(
+        matches!(err, ScriptError::BadArgument { line: 1, .. }),
+        "{err}"
+    );
+    let err = parse("glEndList();").unwrap_err();
+    assert!(
+        matches!(err, ScriptError::Immediate { line: 1, .. }),
+        "{err}"
+    );
+}
+
 fn sample_commands() -> Vec<Command> {
     let mut g = Geometry::new(
         Primitive::TriangleFan,

@@ -164,6 +164,8 @@ impl Native {
                 let bytes = readback::read_pixels(g, r);
                 core.readbacks.insert(r.slot, bytes);
             }
+            // The model rejects it before anything is issued.
+            Command::Raise { .. } => {}
             Command::Draw(geometry) => {
                 if core.state.register_combiners.enabled {
                     return Err(PipelineError::Unsupported {

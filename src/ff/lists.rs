@@ -1,0 +1,164 @@
+//! Display lists (GL 1.5 §5.4): glNewList … glEndList record calls, glCallList(s) replays
+//! them, nested up to GL_MAX_LIST_NESTING (64, Mesa's) deep.
+//!
+//! A list keeps each call as it was when compiled, data read then (GL: "the values are
+//! those in effect when the list is compiled", so a vertex array or a pointer argument is
+//! read at compile time): a state call as its `Command`, an immediate-mode call as its
+//! decoded [`Op`], a draw from client arrays as the `Command::Draw` of the values read. A
+//! call whose arguments GL rejects is kept as `Command::Raise`, raising the error when the
+//! list runs (GL checks a listed call when it executes; Mesa does the same). Calls GL
+//! executes at once instead of compiling — client state, glGenLists, glDeleteLists,
+//! glIsList, glReadPixels, queries — are not recorded ([`compiled`]).
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use super::api::Entry;
+use super::command::Command;
+use super::immediate::Op;
+use super::state::CurrentValues;
+
+/// GL_MAX_LIST_NESTING as Mesa sets it.
+pub const MAX_LIST_NESTING: usize = 64;
+
+/// One recorded call.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Item {
+    Command(Command),
+    Immediate(Op),
+    /// glCallList(n).
+    Call(u32),
+    /// glCallLists: the names before the list base is added.
+    CallMany(Vec<u32>),
+    /// glListBase(b).
+    Base(u32),
+}
+
+/// GL_COMPILE or GL_COMPILE_AND_EXECUTE.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ListMode {
+    Compile,
+    CompileAndExecute,
+}
+
+/// The lists of a context and the one being compiled.
+#[derive(Debug, Default)]
+pub struct Lists {
+    lists: HashMap<u32, Arc<Vec<Item>>>,
+    compiling: Option<(u32, ListMode, Vec<Item>)>,
+    /// glListBase. GL default: 0.
+    pub base: u32,
+}
+
+/// Whether GL compiles `entry` into a list being made (the others run at once).
+pub fn compiled(entry: Entry) -> bool {
+    !matches!(
+        entry,
+        Entry::NewList
+            | Entry::EndList
+            | Entry::GenLists
+            | Entry::DeleteLists
+            | Entry::IsList
+            | Entry::ReadPixels
+            | Entry::VertexPointer
+            | Entry::NormalPointer
+            | Entry::ColorPointer
+            | Entry::TexCoordPointer
+            | Entry::ClientActiveTexture
+            | Entry::ClientActiveTextureARB
+            | Entry::EnableClientState
+            | Entry::DisableClientState
+            | Entry::InterleavedArrays
+    )
+}
+
+impl Lists {
+    /// The mode of the list being compiled, if one is.
+    pub fn compiling(&self) -> Option<ListMode> {
+        self.compiling.as_ref().map(|(_, m, _)| *m)
+    }
+
+    /// glNewList (the caller has checked name ≠ 0 and the mode).
+    pub fn begin(&mut self, name: u32, mode: ListMode) -> Result<(), &'static str> {
+        if self.compiling.is_some() {
+            return Err("glNewList while a list is being compiled");
+        }
+        self.compiling = Some((name, mode, Vec::new()));
+        Ok(())
+    }
+
+    /// glEndList: the list replaces any list of that name.
+    pub fn end(&mut self) -> Result<(), &'static str> {
+        let (name, _, items) = self.compiling.take().ok_or("glEndList without glNewList")?;
+        self.lists.insert(name, Arc::new(items));
+        Ok(())
+    }
+
+    /// Appends a call to the list being compiled.
+    pub fn record(&mut self, item: Item) {
+        if let Some((_, _, items)) = &mut self.compiling {
+            items.push(item);
+        }
+    }
+
+    /// glGenLists(range): the first of `range` consecutive unused names, each made an
+    /// empty list; 0 when range is 0 or no such run exists below 2³².
+    pub fn generate(&mut self, range: u32) -> u32 {
+        if range == 0 {
+            return 0;
+        }
+        let mut first: u32 = 1;
+        loop {
+            let Some(last) = first.checked_add(range - 1) else {
+                return 0;
+            };
+            match (first..=last).find(|n| self.lists.contains_key(n)) {
+                None => break,
+                Some(used) => first = used + 1,
+            }
+        }
+        for n in first..first + range {
+            self.lists.insert(n, Arc::new(Vec::new()));
+        }
+        first
+    }
+
+    /// glDeleteLists(list, range).
+    pub fn delete(&mut self, list: u32, range: u32) {
+        for n in list..list.saturating_add(range) {
+            self.lists.remove(&n);
+        }
+    }
+
+    /// glIsList.
+    pub fn is_list(&self, name: u32) -> bool {
+        self.lists.contains_key(&name)
+    }
+
+    pub fn get(&self, name: u32) -> Option<Arc<Vec<Item>>> {
+        self.lists.get(&name).cloned()
+    }
+}
+
+/// Follows the current values through a command, so that a glBegin later in the same
+/// list reads what the list's own glColor, glNormal or draw left current.
+pub fn follow(current: &mut CurrentValues, cmd: &Command) {
+    match cmd {
+        Command::Color(c) => current.color = *c,
+        Command::Normal(n) => current.normal = *n,
+        Command::TexCoord { unit, coord } => {
+            if let Some(t) = current.texcoords.get_mut(usize::from(*unit)) {
+                *t = *coord;
+            }
+        }
+        Command::Draw(g) => {
+            use super::geometry::Geometry;
+            current.color = Geometry::last(&g.colors).unwrap_or(current.color);
+            current.normal = Geometry::last(&g.normals).unwrap_or(current.normal);
+            for (u, t) in g.texcoords.iter().enumerate() {
+                current.texcoords[u] = Geometry::last(t).unwrap_or(current.texcoords[u]);
+            }
+        }
+        _ => {}
+    }
+}
