@@ -92,7 +92,7 @@ impl Client {
             ClientEffect::Draw(Some(g)) => out.push(Command::Draw(Arc::new(g))),
             ClientEffect::Element(e) => self
                 .immediate
-                .apply(&Op::Element(e), current, out)
+                .apply(&Op::Element(Box::new(e)), current, out)
                 .map_err(|rule| c.immediate(rule))?,
         }
         Ok(0)
@@ -162,7 +162,7 @@ impl Client {
             Entry::CallLists => Item::CallMany(list_names(c)?),
             Entry::ListBase => Item::Base(c.u32(0)?),
             e if ClientArrays::handles(e) => match self.arrays.call(c, mem)? {
-                ClientEffect::Element(el) => Item::Immediate(Op::Element(el)),
+                ClientEffect::Element(el) => Item::Immediate(Op::Element(Box::new(el))),
                 ClientEffect::Draw(Some(g)) => Item::Command(Command::Draw(Arc::new(g))),
                 ClientEffect::Draw(None) | ClientEffect::State => return Ok(None),
             },

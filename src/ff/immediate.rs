@@ -57,7 +57,7 @@ pub enum Op {
     /// glRect's corners (x1, y1, x2, y2).
     Rect([f32; 4]),
     /// glArrayElement's values.
-    Element(Element),
+    Element(Box<Element>),
 }
 
 /// The immediate-mode call `c` is, with its values read and converted; `None` for any
