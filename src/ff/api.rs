@@ -305,6 +305,9 @@ entry_points! {
     ReadPixels = "glReadPixels"(Form::Script, "GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, void *pixels");
     DrawArrays = "glDrawArrays"(Form::Client, "GLenum mode, GLint first, GLsizei count");
     DrawElements = "glDrawElements"(Form::Client, "GLenum mode, GLsizei count, GLenum type, const void *indices");
+    // Attribute stacks and queries.
+    PushAttrib = "glPushAttrib"(Form::Script, "GLbitfield mask");
+    PopAttrib = "glPopAttrib"(Form::Script, "");
 
 }
 
@@ -583,6 +586,8 @@ impl Command {
                 Some(_) => Entry::DrawElements,
                 None => Entry::DrawArrays,
             },
+            Command::PushAttrib(_) => Entry::PushAttrib,
+            Command::PopAttrib => Entry::PopAttrib,
         }
     }
 }

@@ -14,6 +14,7 @@ use glam::{Mat4, Vec3, Vec4};
 
 use crate::vocab::DepthRule;
 
+use super::attrib::AttribMask;
 use super::combiners::{
     CombinerInput, CombinerOutput, CombinerParam, FinalVariable, Portion, Variable,
 };
@@ -287,4 +288,10 @@ pub enum Command {
 
     /// glBegin … glEnd, or glDrawArrays/glDrawElements.
     Draw(Arc<Geometry>),
+
+    // Attribute stack (GL 1.5 §6.1.14).
+    /// STACK_OVERFLOW beyond MAX_ATTRIB_STACK_DEPTH entries.
+    PushAttrib(AttribMask),
+    /// STACK_UNDERFLOW on an empty stack.
+    PopAttrib,
 }

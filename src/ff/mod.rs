@@ -16,6 +16,7 @@
 
 pub mod api;
 pub mod apply;
+pub mod attrib;
 pub mod combiner_model;
 pub mod combiners;
 pub mod command;
@@ -26,6 +27,7 @@ pub mod glenum;
 pub mod light;
 pub mod matrix;
 pub mod precision;
+pub mod query;
 pub mod script;
 pub mod state;
 pub mod texenv;
@@ -35,6 +37,7 @@ pub mod texture;
 #[cfg(test)]
 mod state_tests;
 
+pub use attrib::{AttribFrame, AttribGroup, AttribMask, MAX_ATTRIB_STACK_DEPTH};
 pub use combiners::{
     CombinerBias, CombinerInput, CombinerOutput, CombinerParam, CombinerScale, ComponentUsage,
     FinalVariable, GeneralStage, Mapping, Portion, Product, Register, RegisterCombiners,
@@ -53,6 +56,7 @@ pub use light::{
     Material, MaterialParam, Materials, MAX_LIGHTS,
 };
 pub use matrix::{MatrixMode, MatrixStack, ViewVolume};
+pub use query::QueryValue;
 pub use state::{CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_TEXTURE_UNITS};
 pub use texenv::{
     Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,

@@ -354,6 +354,8 @@ fn call(c: &Command) -> String {
             n(r.ty),
             r.slot
         ),
+        Command::PushAttrib(m) => format!("{}({})", Entry::PushAttrib, attrib_mask(*m)),
+        Command::PopAttrib => format!("{}()", Entry::PopAttrib),
         // Printed by `command`.
         Command::Draw(_) | Command::TexImage(_) | Command::TexSubImage2D(_) => String::new(),
     }
@@ -377,6 +379,23 @@ fn clear_mask(m: ClearMask) -> String {
         "0".into()
     } else {
         bits.join(" | ")
+    }
+}
+
+/// GL_ALL_ATTRIB_BITS, or the group bits joined by '|' (bits of no group in hex), or 0.
+fn attrib_mask(m: AttribMask) -> String {
+    if m == AttribMask::ALL {
+        return "GL_ALL_ATTRIB_BITS".into();
+    }
+    let mut parts: Vec<String> = m.groups().map(|g| n(g).to_string()).collect();
+    let rest = m.0 & !AttribMask::of(&AttribGroup::ALL).0;
+    if rest != 0 {
+        parts.push(format!("{rest:#x}"));
+    }
+    if parts.is_empty() {
+        "0".into()
+    } else {
+        parts.join(" | ")
     }
 }
 

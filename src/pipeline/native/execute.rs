@@ -175,6 +175,8 @@ impl Native {
                 draw::restore_current(g, &core.state, geometry);
                 core.counters.draws += 1;
             }
+            Command::PushAttrib(mask) => unsafe { g.PushAttrib(mask.0) },
+            Command::PopAttrib => unsafe { g.PopAttrib() },
         }
         Ok(())
     }
