@@ -19,10 +19,16 @@
 //! There is no client attribute stack: the model holds no client state (vertex arrays
 //! travel inside each draw), so glPushClientAttrib has nothing to save.
 
+use super::command::{Capability, Command};
 use super::error::{GlError, GlResult};
+use super::fragment::Face;
 use super::glenum::{registry, GlEnum};
-use super::state::FixedState;
-use super::texture::TextureTarget;
+use super::light::{LightModelParam, LightParam, MaterialParam};
+use super::matrix::MatrixMode;
+use super::state::{FixedState, TextureUnit};
+use super::texenv::{CombineArg, TexEnvParam};
+use super::texgen::{TexCoord, TexGenParam};
+use super::texture::{TexParam, TextureTarget};
 
 /// GL_MAX_ATTRIB_STACK_DEPTH: Mesa's `MAX_ATTRIB_STACK_DEPTH`, 16 on llvmpipe (the spec's
 /// minimum too).
@@ -262,6 +268,292 @@ impl FixedState {
     }
 }
 
+/// glEnable or glDisable.
+fn toggle(cap: Capability, on: bool) -> Command {
+    if on {
+        Command::Enable(cap)
+    } else {
+        Command::Disable(cap)
+    }
+}
+
+impl FixedState {
+    /// The commands that set the groups of `mask` to this state's values, from any state
+    /// with the same texture objects: what a path that cannot trust its driver's glPopAttrib
+    /// sends after it (the native path, `pipeline::native`). Light positions, spot
+    /// directions and eye planes are sent under an identity modelview, so the stored
+    /// eye-space values arrive unchanged; the modelview matrix, the matrix mode and the
+    /// active unit are put back at the end. Register-combiner state is left out (no driver
+    /// has it).
+    pub fn group_commands(&self, mask: AttribMask) -> Vec<Command> {
+        let mut out = Vec::new();
+        for group in mask.groups() {
+            self.push_group_commands(group, &mut out);
+        }
+        out.push(Command::ActiveTexture(self.active_unit() as u8));
+        out.push(Command::MatrixMode(self.matrix_mode));
+        out
+    }
+
+    fn push_group_commands(&self, group: AttribGroup, out: &mut Vec<Command>) {
+        match group {
+            AttribGroup::Current => {
+                out.push(Command::Color(self.current.color));
+                out.push(Command::Normal(self.current.normal));
+                for (u, t) in self.current.texcoords.iter().enumerate() {
+                    out.push(Command::TexCoord {
+                        unit: u as u8,
+                        coord: *t,
+                    });
+                }
+            }
+            AttribGroup::Enable => self.enable_commands(out),
+            AttribGroup::Lighting => self.lighting_commands(out),
+            AttribGroup::Texture => self.texture_commands(out),
+            AttribGroup::Transform => {
+                out.push(toggle(Capability::Normalize, self.normalize));
+                out.push(toggle(Capability::RescaleNormal, self.rescale_normal));
+            }
+            AttribGroup::Viewport => {
+                out.push(Command::Viewport(self.viewport));
+                out.push(Command::DepthRange {
+                    near: self.depth_range.near,
+                    far: self.depth_range.far,
+                });
+            }
+            AttribGroup::ColorBuffer => {
+                let (a, b) = (self.alpha_test, self.blend);
+                out.push(toggle(Capability::AlphaTest, a.enabled));
+                out.push(Command::AlphaFunc {
+                    func: a.value.func,
+                    reference: a.value.reference,
+                });
+                out.push(toggle(Capability::Blend, b.enabled));
+                out.push(Command::BlendFunc {
+                    src: b.value.src,
+                    dst: b.value.dst,
+                });
+                out.push(Command::ColorMask(self.color_mask));
+                out.push(Command::ClearColor(self.clear.color));
+            }
+            AttribGroup::DepthBuffer => {
+                let d = self.depth_test;
+                out.push(toggle(Capability::DepthTest, d.enabled));
+                out.push(Command::DepthFunc(d.value.func));
+                out.push(Command::DepthMask(d.value.write));
+                out.push(Command::ClearDepth(self.clear.depth));
+            }
+            AttribGroup::StencilBuffer => {
+                let t = self.stencil_test;
+                out.push(toggle(Capability::StencilTest, t.enabled));
+                out.push(Command::StencilFunc {
+                    func: t.value.func,
+                    reference: t.value.reference,
+                    mask: t.value.value_mask,
+                });
+                out.push(Command::StencilOp {
+                    fail: t.value.fail,
+                    depth_fail: t.value.depth_fail,
+                    depth_pass: t.value.depth_pass,
+                });
+                out.push(Command::StencilMask(t.value.write_mask));
+                out.push(Command::ClearStencil(self.clear.stencil));
+            }
+            AttribGroup::Polygon => {
+                out.push(toggle(Capability::CullFace, self.cull_face.enabled));
+                out.push(Command::CullFace(self.cull_face.value));
+                out.push(Command::FrontFace(self.front_face));
+                for (face, mode) in [
+                    (Face::Front, self.polygon_mode.front),
+                    (Face::Back, self.polygon_mode.back),
+                ] {
+                    out.push(Command::PolygonMode { face, mode });
+                }
+                out.push(Command::PolygonOffset {
+                    factor: self.polygon_offset.factor,
+                    units: self.polygon_offset.units,
+                });
+                let e = self.offset_enables;
+                out.push(toggle(Capability::PolygonOffsetFill, e.fill));
+                out.push(toggle(Capability::PolygonOffsetLine, e.line));
+                out.push(toggle(Capability::PolygonOffsetPoint, e.point));
+            }
+            AttribGroup::Line => out.push(Command::LineWidth(self.line_width)),
+            AttribGroup::Point => out.push(Command::PointSize(self.point_size)),
+            AttribGroup::PolygonStipple
+            | AttribGroup::PixelMode
+            | AttribGroup::Fog
+            | AttribGroup::AccumBuffer
+            | AttribGroup::Hint
+            | AttribGroup::Eval
+            | AttribGroup::List
+            | AttribGroup::Scissor
+            | AttribGroup::Multisample => {}
+        }
+    }
+
+    fn enable_commands(&self, out: &mut Vec<Command>) {
+        out.push(toggle(Capability::Lighting, self.lighting));
+        for (i, l) in self.lights.iter().enumerate() {
+            out.push(toggle(Capability::Light(i as u8), l.enabled));
+        }
+        out.push(toggle(
+            Capability::ColorMaterial,
+            self.color_material.enabled,
+        ));
+        out.push(toggle(Capability::Normalize, self.normalize));
+        out.push(toggle(Capability::RescaleNormal, self.rescale_normal));
+        for (u, unit) in self.units.iter().enumerate() {
+            out.push(Command::ActiveTexture(u as u8));
+            self.unit_enable_commands(unit, out);
+        }
+        out.push(toggle(Capability::AlphaTest, self.alpha_test.enabled));
+        out.push(toggle(Capability::DepthTest, self.depth_test.enabled));
+        out.push(toggle(Capability::StencilTest, self.stencil_test.enabled));
+        out.push(toggle(Capability::Blend, self.blend.enabled));
+        out.push(toggle(Capability::CullFace, self.cull_face.enabled));
+        let e = self.offset_enables;
+        out.push(toggle(Capability::PolygonOffsetFill, e.fill));
+        out.push(toggle(Capability::PolygonOffsetLine, e.line));
+        out.push(toggle(Capability::PolygonOffsetPoint, e.point));
+    }
+
+    fn unit_enable_commands(&self, unit: &TextureUnit, out: &mut Vec<Command>) {
+        out.push(toggle(Capability::Texture1D, unit.texture_1d));
+        out.push(toggle(Capability::Texture2D, unit.texture_2d));
+        for c in TexCoord::ALL {
+            out.push(toggle(
+                Capability::TextureGen(c),
+                unit.texgen[c.index()].enabled,
+            ));
+        }
+    }
+
+    fn lighting_commands(&self, out: &mut Vec<Command>) {
+        out.push(toggle(Capability::Lighting, self.lighting));
+        out.push(Command::MatrixMode(MatrixMode::Modelview));
+        out.push(Command::LoadIdentity);
+        for (i, l) in self.lights.iter().enumerate() {
+            let v = l.value;
+            for param in [
+                LightParam::Ambient(v.ambient),
+                LightParam::Diffuse(v.diffuse),
+                LightParam::Specular(v.specular),
+                LightParam::Position(v.position),
+                LightParam::SpotDirection(v.spot_direction),
+                LightParam::SpotExponent(v.spot_exponent),
+                LightParam::SpotCutoff(v.spot_cutoff),
+                LightParam::ConstantAttenuation(v.constant_attenuation),
+                LightParam::LinearAttenuation(v.linear_attenuation),
+                LightParam::QuadraticAttenuation(v.quadratic_attenuation),
+            ] {
+                out.push(Command::Light {
+                    light: i as u8,
+                    param,
+                });
+            }
+            out.push(toggle(Capability::Light(i as u8), l.enabled));
+        }
+        out.push(Command::LoadMatrix(self.modelview.top()));
+        let m = self.light_model;
+        out.push(Command::LightModel(LightModelParam::Ambient(m.ambient)));
+        out.push(Command::LightModel(LightModelParam::LocalViewer(
+            m.local_viewer,
+        )));
+        out.push(Command::LightModel(LightModelParam::TwoSide(m.two_side)));
+        out.push(Command::LightModel(LightModelParam::ColorControl(
+            m.color_control,
+        )));
+        for (face, mat) in [
+            (Face::Front, self.materials.front),
+            (Face::Back, self.materials.back),
+        ] {
+            for param in [
+                MaterialParam::Ambient(mat.ambient),
+                MaterialParam::Diffuse(mat.diffuse),
+                MaterialParam::Specular(mat.specular),
+                MaterialParam::Emission(mat.emission),
+                MaterialParam::Shininess(mat.shininess),
+            ] {
+                out.push(Command::Material { face, param });
+            }
+        }
+        let cm = self.color_material;
+        out.push(Command::ColorMaterial {
+            face: cm.value.face,
+            mode: cm.value.mode,
+        });
+        out.push(toggle(Capability::ColorMaterial, cm.enabled));
+        out.push(Command::ShadeModel(self.shade_model));
+    }
+
+    fn texture_commands(&self, out: &mut Vec<Command>) {
+        out.push(Command::MatrixMode(MatrixMode::Modelview));
+        out.push(Command::LoadIdentity);
+        for (u, unit) in self.units.iter().enumerate() {
+            out.push(Command::ActiveTexture(u as u8));
+            for target in [TextureTarget::Texture1D, TextureTarget::Texture2D] {
+                let name = unit.bound(target);
+                out.push(Command::BindTexture { target, name });
+                if let Some(t) = self.texture(target, name) {
+                    let p = t.params;
+                    for param in [
+                        TexParam::MinFilter(p.min_filter),
+                        TexParam::MagFilter(p.mag_filter),
+                        TexParam::WrapS(p.wrap_s),
+                        TexParam::WrapT(p.wrap_t),
+                        TexParam::BorderColor(p.border_color),
+                        TexParam::CompareMode(p.compare_mode),
+                        TexParam::CompareFunc(p.compare_func),
+                        TexParam::DepthTextureMode(p.depth_texture_mode),
+                        TexParam::CompareFailValue(p.compare_fail_value),
+                        TexParam::GenerateMipmap(p.generate_mipmap),
+                    ] {
+                        out.push(Command::TexParameter { target, param });
+                    }
+                }
+            }
+            let e = unit.env;
+            out.push(Command::TexEnv(TexEnvParam::Mode(e.mode)));
+            out.push(Command::TexEnv(TexEnvParam::Color(e.color)));
+            out.push(Command::TexEnv(TexEnvParam::CombineRgb(e.rgb.func)));
+            out.push(Command::TexEnv(TexEnvParam::CombineAlpha(e.alpha.func)));
+            for a in CombineArg::ALL {
+                let i = a.index();
+                out.push(Command::TexEnv(TexEnvParam::SourceRgb(a, e.rgb.sources[i])));
+                out.push(Command::TexEnv(TexEnvParam::SourceAlpha(
+                    a,
+                    e.alpha.sources[i],
+                )));
+                out.push(Command::TexEnv(TexEnvParam::OperandRgb(
+                    a,
+                    e.rgb.operands[i],
+                )));
+                out.push(Command::TexEnv(TexEnvParam::OperandAlpha(
+                    a,
+                    e.alpha.operands[i],
+                )));
+            }
+            out.push(Command::TexEnv(TexEnvParam::RgbScale(e.rgb.scale.factor())));
+            out.push(Command::TexEnv(TexEnvParam::AlphaScale(
+                e.alpha.scale.factor(),
+            )));
+            for c in TexCoord::ALL {
+                let g = unit.texgen[c.index()].value;
+                for param in [
+                    TexGenParam::Mode(g.mode),
+                    TexGenParam::ObjectPlane(g.object_plane),
+                    TexGenParam::EyePlane(g.eye_plane),
+                ] {
+                    out.push(Command::TexGen { coord: c, param });
+                }
+            }
+            self.unit_enable_commands(unit, out);
+        }
+        out.push(Command::LoadMatrix(self.modelview.top()));
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -378,6 +670,49 @@ mod tests {
         assert_eq!(s.texture(t2d, 1).unwrap().params.wrap_s, Wrap::Clamp);
         assert!(s.textures.contains_key(&2), "objects are not deleted");
         assert_eq!(s.lights[0].value.diffuse, Vec4::ZERO, "LIGHTING not pushed");
+    }
+
+    /// The group commands of a state, applied to another with the same texture objects,
+    /// give back the first state.
+    #[test]
+    fn group_commands_rebuild_the_groups() {
+        let mut a = FixedState::new();
+        apply(
+            &mut a,
+            &[
+                Command::BindTexture {
+                    target: TextureTarget::Texture2D,
+                    name: 1,
+                },
+                Command::Translate(glam::Vec3::new(1.0, 2.0, 3.0)),
+                Command::PushAttrib(AttribMask::ALL),
+            ],
+        );
+        let mut b = a.clone();
+        apply(
+            &mut a,
+            &[
+                Command::Light {
+                    light: 3,
+                    param: LightParam::Position(Vec4::new(1.0, 0.0, 2.0, 1.0)),
+                },
+                Command::Enable(Capability::Light(3)),
+                Command::TexParameter {
+                    target: TextureTarget::Texture2D,
+                    param: TexParam::WrapS(Wrap::ClampToEdge),
+                },
+                Command::TexEnv(TexEnvParam::Mode(TexEnvMode::Replace)),
+                Command::ActiveTexture(2),
+                Command::MatrixMode(MatrixMode::Texture),
+                Command::Color(Vec4::new(0.5, 0.25, 0.125, 1.0)),
+                Command::LineWidth(2.0),
+                Command::StencilMask(3),
+            ],
+        );
+        for c in a.group_commands(AttribMask::ALL) {
+            b.apply(&c).unwrap();
+        }
+        assert_eq!(b, a);
     }
 
     #[test]

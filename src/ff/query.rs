@@ -35,6 +35,7 @@ use super::attrib::MAX_ATTRIB_STACK_DEPTH;
 use super::combiners::MAX_GENERAL_COMBINERS;
 use super::command::Capability;
 use super::error::GlErrorKind;
+use super::fragment::STENCIL_BITS;
 use super::glenum::{gl, registry as r, GlEnum};
 use super::light::MAX_LIGHTS;
 use super::matrix::MatrixStack;
@@ -43,20 +44,18 @@ use super::texenv::{CombineSource, TexEnv};
 use super::texgen::TexCoord;
 use super::texture::{TexFormat, TextureTarget, MAX_TEXTURE_LEVEL, MAX_TEXTURE_SIZE};
 
-/// The stencil bits the query assumes for clamping STENCIL_REF to [0, 2ˢ − 1] (GL 1.5
-/// §4.1.5): every target the pipelines make with a stencil buffer has 8 bits. Mesa clamps
-/// with the draw buffer's bits, so without a stencil buffer it answers 0.
-pub const STENCIL_BITS: u32 = 8;
-
 /// GL_TEXTURE_COMPARE_FAIL_VALUE_ARB (ARB_shadow_ambient, outside the registry subset
 /// `build.rs` reads).
-const TEXTURE_COMPARE_FAIL_VALUE_ARB: u32 = 0x80BF;
+pub const TEXTURE_COMPARE_FAIL_VALUE_ARB: u32 = 0x80BF;
 
 /// One value of a query answer, as the state holds it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum QueryValue {
     Bool(bool),
     Int(i32),
+    /// An unsigned value (Mesa's TYPE_UINT: the stencil masks): as an integer, clamped to
+    /// 2³¹ − 1, so all 32 ones read 2147483647, not −1.
+    UInt(u32),
     /// A GLenum; as an integer, its value.
     Enum(u32),
     /// A float that becomes an integer by rounding (§6.1.2).
@@ -77,7 +76,7 @@ impl QueryValue {
         match self {
             QueryValue::Bool(b) => b,
             QueryValue::Int(i) => i != 0,
-            QueryValue::Enum(e) => e != 0,
+            QueryValue::UInt(u) | QueryValue::Enum(u) => u != 0,
             // C truth: NaN is TRUE.
             QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => f != 0.0,
         }
@@ -88,6 +87,7 @@ impl QueryValue {
         match self {
             QueryValue::Bool(b) => i32::from(b),
             QueryValue::Int(i) => i,
+            QueryValue::UInt(u) => u.min(i32::MAX as u32) as i32,
             QueryValue::Enum(e) => e as i32,
             QueryValue::Float(f) => round_to_int(f),
             QueryValue::Normalized(f) => normalized_to_int(f64::from(f)),
@@ -100,7 +100,7 @@ impl QueryValue {
         match self {
             QueryValue::Bool(b) => f32::from(u8::from(b)),
             QueryValue::Int(i) => i as f32,
-            QueryValue::Enum(e) => e as f32,
+            QueryValue::UInt(u) | QueryValue::Enum(u) => u as f32,
             QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => f,
         }
     }
@@ -110,7 +110,7 @@ impl QueryValue {
         match self {
             QueryValue::Bool(b) => f64::from(u8::from(b)),
             QueryValue::Int(i) => f64::from(i),
-            QueryValue::Enum(e) => f64::from(e),
+            QueryValue::UInt(u) | QueryValue::Enum(u) => f64::from(u),
             QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => {
                 f64::from(f)
             }
@@ -222,7 +222,10 @@ pnames! {
     TEXTURE_MATRIX => |s| matrix(s.texture_matrix(s.active_unit())),
     TRANSPOSE_MODELVIEW_MATRIX => |s| matrix(s.modelview.top().transpose()),
     TRANSPOSE_PROJECTION_MATRIX => |s| matrix(s.projection.top().transpose()),
-    TRANSPOSE_TEXTURE_MATRIX => |s| matrix(s.texture_matrix(s.active_unit()).transpose()),
+    // Mesa deviation (pinned in `tests/query_native.rs`): unit 0's matrix whatever the
+    // active unit (its table entry points at the first stack), where TEXTURE_MATRIX follows
+    // the active unit.
+    TRANSPOSE_TEXTURE_MATRIX => |s| matrix(s.texture_matrix(0).transpose()),
     MODELVIEW_STACK_DEPTH => |s| depth(&s.modelview),
     PROJECTION_STACK_DEPTH => |s| depth(&s.projection),
     TEXTURE_STACK_DEPTH => |s| depth(&s.texture_matrices[s.active_unit()]),
@@ -260,13 +263,14 @@ pnames! {
     DEPTH_FUNC => |s| enm(s.depth_test.value.func),
     DEPTH_WRITEMASK => |s| boolean(s.depth_test.value.write),
     STENCIL_FUNC => |s| enm(s.stencil_test.value.func),
-    STENCIL_VALUE_MASK => |s| int(s.stencil_test.value.value_mask as i32),
-    // Clamped to [0, 2ˢ − 1] when queried (§4.1.5); stored as given.
+    STENCIL_VALUE_MASK => |s| vec![QueryValue::UInt(s.stencil_test.value.value_mask)],
+    // Clamped to [0, 2ˢ − 1] when queried (§4.1.5), s = STENCIL_BITS; stored as given. Mesa
+    // clamps with the draw buffer's bits, so without a stencil buffer it answers 0.
     STENCIL_REF => |s| int(s.stencil_test.value.reference.clamp(0, (1 << STENCIL_BITS) - 1)),
     STENCIL_FAIL => |s| enm(s.stencil_test.value.fail),
     STENCIL_PASS_DEPTH_FAIL => |s| enm(s.stencil_test.value.depth_fail),
     STENCIL_PASS_DEPTH_PASS => |s| enm(s.stencil_test.value.depth_pass),
-    STENCIL_WRITEMASK => |s| int(s.stencil_test.value.write_mask as i32),
+    STENCIL_WRITEMASK => |s| vec![QueryValue::UInt(s.stencil_test.value.write_mask)],
     BLEND_SRC => |s| enm(s.blend.value.src),
     BLEND_DST => |s| enm(s.blend.value.dst),
     COLOR_WRITEMASK => |s| {
@@ -622,6 +626,12 @@ mod tests {
         assert_eq!(QueryValue::Bool(true).as_float(), 1.0);
         assert_eq!(QueryValue::Enum(r::LESS).as_float(), 513.0);
         assert_eq!(QueryValue::Int(-1).as_double(), -1.0);
+        assert_eq!(
+            QueryValue::UInt(u32::MAX).as_int(),
+            i32::MAX,
+            "Mesa's TYPE_UINT"
+        );
+        assert_eq!(QueryValue::UInt(u32::MAX).as_double(), 4_294_967_295.0);
     }
 
     #[test]
@@ -632,7 +642,7 @@ mod tests {
         assert_eq!(ints(r::CURRENT_COLOR), vec![i32::MAX; 4]);
         assert_eq!(ints(r::MODELVIEW_STACK_DEPTH), vec![1]);
         assert_eq!(ints(r::MAX_ATTRIB_STACK_DEPTH), vec![16]);
-        assert_eq!(ints(r::STENCIL_VALUE_MASK), vec![-1]);
+        assert_eq!(ints(r::STENCIL_VALUE_MASK), vec![255]);
         assert_eq!(ints(r::POLYGON_MODE), vec![r::FILL as i32; 2]);
         assert_eq!(ints(r::LIGHT0), vec![0]);
         assert_eq!(s.is_enabled(r::LIGHT0 + 7), Ok(false));

@@ -10,7 +10,8 @@
 //! - ARB_shadow_ambient's fail value is recorded in the model and not sent (Mesa lacks the
 //!   extension): a failed compare reads 0 here;
 //! - NV_register_combiners has no native path: a draw with it enabled is `Unsupported`;
-//! - Mesa's texture-matrix pop bug is worked around by re-loading the matrix after a pop.
+//! - Mesa's texture-matrix pop bug is worked around by re-loading the matrix after a pop;
+//! - Mesa's nested glPopAttrib bug is worked around by sending the popped groups again.
 
 pub mod bindings;
 mod conv;
@@ -57,6 +58,8 @@ impl NativeGl {
 pub struct Native {
     gl: NativeGl,
     textures: textures::Textures,
+    /// The masks of the glPushAttrib calls issued and not yet popped.
+    attrib_masks: Vec<crate::ff::AttribMask>,
 }
 
 /// Commands executed by Mesa's fixed-function pipeline.
@@ -73,6 +76,7 @@ impl NativePipeline {
         let path = Native {
             gl,
             textures: textures::Textures::default(),
+            attrib_masks: Vec::new(),
         };
         Ok(PathPipeline::from_parts(Core::default(), path))
     }
