@@ -956,3 +956,53 @@ fn stencil_masks_start_as_eight_ones() {
         );
     }
 }
+
+/// Mesa's integer conversions where the spec says otherwise (GL 1.5 §6.1.2), matched by
+/// `QueryValue`: glGetLightiv truncates a position (spec: rounds), glGetIntegerv scales a
+/// matrix element like a colour (spec: rounds), and −1.0 as a colour is −(2³¹ − 1) (Table
+/// 4.5: −2³¹).
+#[test]
+fn mesa_integer_getters_truncate_and_scale() {
+    for backend in HEADLESS {
+        let (_ctx, _t, native) = raw(backend);
+        let g = native.raw();
+        let (mut pos, mut m, mut c) = ([0i32; 4], [0i32; 16], [0i32; 4]);
+        // SAFETY: plain GL calls; each buffer holds what its pname writes.
+        unsafe {
+            g.Lightfv(gl::LIGHT1, gl::POSITION, [1.7f32, -2.7, 3.0, 1.0].as_ptr());
+            g.GetLightiv(gl::LIGHT1, gl::POSITION, pos.as_mut_ptr());
+            g.Scalef(0.5, 2.0, 1.0);
+            g.GetIntegerv(gl::MODELVIEW_MATRIX, m.as_mut_ptr());
+            g.Color4f(-1.0, 0.5, 1.0, 0.0);
+            g.GetIntegerv(gl::CURRENT_COLOR, c.as_mut_ptr());
+        }
+        assert_eq!(pos, [1, -2, 3, 1], "{backend}");
+        assert_eq!(&m[..2], &[1_073_741_823, 0], "{backend}");
+        assert_eq!(
+            m[5],
+            i32::MIN,
+            "{backend}: 2.0 is outside GLint once scaled"
+        );
+        assert_eq!(
+            c,
+            [-2_147_483_647, 1_073_741_823, 2_147_483_647, 0],
+            "{backend}"
+        );
+
+        let mut s = FixedState::new();
+        for cmd in [
+            Command::Light {
+                light: 1,
+                param: LightParam::Position(Vec4::new(1.7, -2.7, 3.0, 1.0)),
+            },
+            Command::Scale(Vec3::new(0.5, 2.0, 1.0)),
+            Command::Color(Vec4::new(-1.0, 0.5, 1.0, 0.0)),
+        ] {
+            s.apply(&cmd).unwrap();
+        }
+        let ints = |v: Vec<QueryValue>| -> Vec<i32> { v.iter().map(|x| x.as_int()).collect() };
+        assert_eq!(ints(s.get_light(r::LIGHT0 + 1, r::POSITION).unwrap()), pos);
+        assert_eq!(ints(s.get(r::MODELVIEW_MATRIX).unwrap()), m);
+        assert_eq!(ints(s.get(r::CURRENT_COLOR).unwrap()), c);
+    }
+}

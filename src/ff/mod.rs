@@ -9,6 +9,8 @@
 //! - The small modules hold the GL rules both pipelines and the tests need, each with its
 //!   formula: matrices ([`matrix`]), texgen ([`texgen`]), texture environments ([`texenv`]),
 //!   register combiners ([`combiners`]), per-fragment tests ([`fragment`]).
+//! - [`query`] answers every glGet, glIsEnabled and per-object getter from the state, with
+//!   GL's (and Mesa's) type conversions; [`attrib`] is the glPushAttrib/glPopAttrib stack.
 //!
 //! Eye planes and light positions are transformed by the modelview current when they are
 //! set (GL 1.5 §2.11.4, §2.14.1), never at draw time. Depth readback conversions belong to
