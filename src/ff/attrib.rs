@@ -3,7 +3,7 @@
 //!
 //! A push records the whole model state with the mask; a pop copies back the fields of the
 //! groups the mask names, and only those. Each group's fields are listed once, in
-//! [`FixedState::restore_group`]. Groups whose state the model does not hold yet (FOG,
+//! `FixedState::restore_group`. Groups whose state the model does not hold yet (FOG,
 //! SCISSOR, EVAL, HINT, LIST, PIXEL_MODE, ACCUM_BUFFER, MULTISAMPLE, POLYGON_STIPPLE) are
 //! accepted and restore nothing; a field added to the model for one of them is added to
 //! its arm there. What GL puts in two groups (LIGHTING's enables are also ENABLE's) is

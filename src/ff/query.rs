@@ -373,6 +373,26 @@ impl FixedState {
         self.is_enabled(pname).map(boolean)
     }
 
+    /// glGetBooleanv(pname), converted (GL_TRUE = true).
+    pub fn get_booleanv(&self, pname: u32) -> Result<Vec<bool>, GlErrorKind> {
+        Ok(self.get(pname)?.iter().map(|v| v.as_bool()).collect())
+    }
+
+    /// glGetIntegerv(pname), converted.
+    pub fn get_integerv(&self, pname: u32) -> Result<Vec<i32>, GlErrorKind> {
+        Ok(self.get(pname)?.iter().map(|v| v.as_int()).collect())
+    }
+
+    /// glGetFloatv(pname), converted.
+    pub fn get_floatv(&self, pname: u32) -> Result<Vec<f32>, GlErrorKind> {
+        Ok(self.get(pname)?.iter().map(|v| v.as_float()).collect())
+    }
+
+    /// glGetDoublev(pname), converted.
+    pub fn get_doublev(&self, pname: u32) -> Result<Vec<f64>, GlErrorKind> {
+        Ok(self.get(pname)?.iter().map(|v| v.as_double()).collect())
+    }
+
     /// glIsEnabled(cap); INVALID_ENUM for a capability the model does not have. Texture
     /// and texgen enables are the active unit's.
     pub fn is_enabled(&self, cap: u32) -> Result<bool, GlErrorKind> {
@@ -645,6 +665,10 @@ mod tests {
         assert_eq!(ints(r::STENCIL_VALUE_MASK), vec![255]);
         assert_eq!(ints(r::POLYGON_MODE), vec![r::FILL as i32; 2]);
         assert_eq!(ints(r::LIGHT0), vec![0]);
+        assert_eq!(s.get_integerv(r::MAX_LIGHTS), Ok(vec![8]));
+        assert_eq!(s.get_booleanv(r::DEPTH_WRITEMASK), Ok(vec![true]));
+        assert_eq!(s.get_floatv(r::LINE_WIDTH), Ok(vec![1.0]));
+        assert_eq!(s.get_doublev(r::DEPTH_RANGE), Ok(vec![0.0, 1.0]));
         assert_eq!(s.is_enabled(r::LIGHT0 + 7), Ok(false));
         assert_eq!(s.is_enabled(r::LIGHT0 + 8), Err(GlErrorKind::InvalidEnum));
         assert_eq!(s.get(r::FOG_COLOR), Err(GlErrorKind::InvalidEnum));
