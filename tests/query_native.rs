@@ -27,10 +27,10 @@ use fixedfunc::ff::{
     AttribGroup, AttribMask, BlendFactor, Capability, ClearMask, ColorControl, ColorMask,
     ColorMaterialMode, CombineArg, CombineFunc, CombineOperand, CombineSource, Command,
     CompareFunc, CompareMode, DepthTextureMode, Face, Filter, FixedState, FrontFace, Geometry,
-    LightModelParam, LightParam, MaterialParam, MatrixMode, PixelFormat, PixelType, PolygonMode,
-    Primitive, QueryValue, ShadeModel, StencilOp, TexCoord, TexEnvMode, TexEnvParam, TexFormat,
-    TexGenMode, TexGenParam, TexImage, TexParam, TextureTarget, ViewVolume, Viewport, Wrap,
-    MAX_TEXTURE_UNITS,
+    GlErrorKind, LightModelParam, LightParam, MaterialParam, MatrixMode, PixelFormat, PixelType,
+    PolygonMode, Primitive, QueryValue, ShadeModel, StencilOp, TexCoord, TexEnvMode, TexEnvParam,
+    TexFormat, TexGenMode, TexGenParam, TexImage, TexParam, TextureTarget, ViewVolume, Viewport,
+    Wrap, MAX_TEXTURE_UNITS,
 };
 use fixedfunc::gpu::{Backend, GpuContext, Profile, RenderTarget};
 use fixedfunc::pipeline::native::{bindings as gl, NativeGl, NativePipeline};
@@ -1004,5 +1004,107 @@ fn mesa_integer_getters_truncate_and_scale() {
         assert_eq!(ints(s.get_light(r::LIGHT0 + 1, r::POSITION).unwrap()), pos);
         assert_eq!(ints(s.get(r::MODELVIEW_MATRIX).unwrap()), m);
         assert_eq!(ints(s.get(r::CURRENT_COLOR).unwrap()), c);
+    }
+}
+
+/// The GL error code of a model error.
+fn code(e: GlErrorKind) -> u32 {
+    match e {
+        GlErrorKind::InvalidEnum => gl::INVALID_ENUM,
+        GlErrorKind::InvalidValue => gl::INVALID_VALUE,
+        GlErrorKind::InvalidOperation => gl::INVALID_OPERATION,
+        GlErrorKind::StackOverflow => gl::STACK_OVERFLOW,
+        GlErrorKind::StackUnderflow => gl::STACK_UNDERFLOW,
+    }
+}
+
+/// Bad arguments raise the same error in the model and in Mesa: FRONT_AND_BACK for a
+/// material, a light beyond MAX_LIGHTS, a level outside [0, 14], a pname or target the
+/// getter does not take, an unknown glGet pname or capability.
+#[test]
+fn argument_errors_agree() {
+    let s = FixedState::new();
+    type Call = Box<dyn Fn(&gl::Gl)>;
+    let mut buf = [0f32; 16];
+    let p = buf.as_mut_ptr();
+    let mut ibuf = [0i32; 16];
+    let ip = ibuf.as_mut_ptr();
+    // SAFETY (every closure): 16-value buffers that outlive the calls.
+    let cases: Vec<(&str, Result<(), GlErrorKind>, Call)> = vec![
+        (
+            "material FRONT_AND_BACK",
+            s.get_material(r::FRONT_AND_BACK, r::AMBIENT).map(drop),
+            Box::new(move |g| unsafe { g.GetMaterialfv(gl::FRONT_AND_BACK, gl::AMBIENT, p) }),
+        ),
+        (
+            "material POSITION",
+            s.get_material(r::FRONT, r::POSITION).map(drop),
+            Box::new(move |g| unsafe { g.GetMaterialfv(gl::FRONT, gl::POSITION, p) }),
+        ),
+        (
+            "LIGHT8",
+            s.get_light(r::LIGHT0 + 8, r::AMBIENT).map(drop),
+            Box::new(move |g| unsafe { g.GetLightfv(gl::LIGHT0 + 8, gl::AMBIENT, p) }),
+        ),
+        (
+            "light SHININESS",
+            s.get_light(r::LIGHT0, r::SHININESS).map(drop),
+            Box::new(move |g| unsafe { g.GetLightfv(gl::LIGHT0, gl::SHININESS, p) }),
+        ),
+        (
+            "level -1",
+            s.get_tex_level_parameter(r::TEXTURE_2D, -1, r::TEXTURE_WIDTH)
+                .map(drop),
+            Box::new(move |g| unsafe {
+                g.GetTexLevelParameteriv(gl::TEXTURE_2D, -1, gl::TEXTURE_WIDTH, ip)
+            }),
+        ),
+        (
+            "level 15",
+            s.get_tex_level_parameter(r::TEXTURE_2D, 15, r::TEXTURE_WIDTH)
+                .map(drop),
+            Box::new(move |g| unsafe {
+                g.GetTexLevelParameteriv(gl::TEXTURE_2D, 15, gl::TEXTURE_WIDTH, ip)
+            }),
+        ),
+        (
+            "texenv target",
+            s.get_tex_env(r::TEXTURE_2D, r::TEXTURE_ENV_MODE).map(drop),
+            Box::new(move |g| unsafe { g.GetTexEnviv(gl::TEXTURE_2D, gl::TEXTURE_ENV_MODE, ip) }),
+        ),
+        (
+            "texgen pname",
+            s.get_tex_gen(r::S, r::AMBIENT).map(drop),
+            Box::new(move |g| unsafe { g.GetTexGeniv(gl::S, gl::AMBIENT, ip) }),
+        ),
+        (
+            "texparameter pname",
+            s.get_tex_parameter(r::TEXTURE_2D, r::AMBIENT).map(drop),
+            Box::new(move |g| unsafe { g.GetTexParameteriv(gl::TEXTURE_2D, gl::AMBIENT, ip) }),
+        ),
+        (
+            "glGet pname",
+            s.get(0xFFFF).map(drop),
+            Box::new(move |g| unsafe { g.GetIntegerv(0xFFFF, ip) }),
+        ),
+        (
+            "IsEnabled LIGHT8",
+            s.is_enabled(r::LIGHT0 + 8).map(drop),
+            Box::new(|g| {
+                // SAFETY: plain GL call.
+                unsafe { g.IsEnabled(gl::LIGHT0 + 8) };
+            }),
+        ),
+    ];
+    for backend in HEADLESS {
+        let (_ctx, _t, native) = raw(backend);
+        let g = native.raw();
+        for (name, model, call) in &cases {
+            call(g);
+            // SAFETY: plain GL call.
+            let driver = unsafe { g.GetError() };
+            let want = model.map_or_else(code, |()| gl::NO_ERROR);
+            assert_eq!(driver, want, "{backend} {name}: driver 0x{driver:04X}");
+        }
     }
 }
