@@ -22,6 +22,20 @@
 //!   EYE_PLANE…) truncate (`(GLint) f` in Mesa's `light.c`, `texgen.c`; the spec rounds):
 //!   [`QueryValue::Truncated`].
 //!
+//! Other Mesa behaviour the answers follow (each pinned in `tests/query_native.rs`):
+//! TRANSPOSE_TEXTURE_MATRIX is unit 0's whatever the active unit; the stencil masks are
+//! unsigned and start as 0xFF; an unspecified texture level reports internal format RGBA.
+//! Where the model stores less than Mesa the answers differ, by design: DEPTH_RANGE and
+//! DEPTH_CLEAR_VALUE are f32 here and doubles in Mesa (glGetIntegerv scales the double, so
+//! values not exact in f32 can differ in the last bits); TEXTURE_INTERNAL_FORMAT is the
+//! sized format the model keeps (Mesa returns an unsized name as given).
+//!
+//! Not answered yet (INVALID_ENUM), because the model does not hold the state: fog,
+//! scissor, clip planes, logic op, blend equation and colour, hints, pixel store and
+//! transfer, the raster position, client state (CLIENT_ACTIVE_TEXTURE, arrays), framebuffer
+//! bits, implementation limits other than those listed, COLOR_INDEXES, TEXTURE_PRIORITY,
+//! TEXTURE_RESIDENT, TEXTURE_WRAP_R.
+//!
 //! Adding a pname: one line in the [`PNAMES`] table (or in the marked block at its end) —
 //! the GL token without `GL_`, and a function from `&FixedState` to its values built with
 //! the helpers below (`floats`, `normalized`, `enm`, `int`, `boolean`, `matrix`). The
