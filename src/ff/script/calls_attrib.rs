@@ -1,5 +1,5 @@
 //! The attribute-stack calls: glPushAttrib(mask) with the group bits joined by '|' (or
-//! GL_ALL_ATTRIB_BITS, or 0), and glPopAttrib().
+//! GL_ALL_ATTRIB_BITS, or an integer, as C allows), and glPopAttrib().
 
 use super::parse::Call;
 use super::ScriptError;
@@ -25,9 +25,12 @@ pub(super) fn attrib(c: &Call) -> Res<Option<Command>> {
 }
 
 fn mask(c: &Call) -> Res<AttribMask> {
-    let names = c
-        .or_names(0)
-        .ok_or_else(|| c.bad(0, "attribute bits joined by '|', or 0"))?;
+    let Some(names) = c.or_names(0) else {
+        return c
+            .u32(0)
+            .map(AttribMask)
+            .map_err(|_| c.bad(0, "attribute bits joined by '|', or an integer"));
+    };
     let mut bits = 0;
     for name in names {
         bits |= match name {

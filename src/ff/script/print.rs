@@ -382,16 +382,16 @@ fn clear_mask(m: ClearMask) -> String {
     }
 }
 
-/// GL_ALL_ATTRIB_BITS, or the group bits joined by '|' (bits of no group in hex), or 0.
+/// GL_ALL_ATTRIB_BITS, or the group bits joined by '|', or 0; a mask with bits of no group
+/// (which GL ignores) prints as one hex number, so it reads back the same.
 fn attrib_mask(m: AttribMask) -> String {
     if m == AttribMask::ALL {
         return "GL_ALL_ATTRIB_BITS".into();
     }
-    let mut parts: Vec<String> = m.groups().map(|g| n(g).to_string()).collect();
-    let rest = m.0 & !AttribMask::of(&AttribGroup::ALL).0;
-    if rest != 0 {
-        parts.push(format!("{rest:#x}"));
+    if m.0 & !AttribMask::of(&AttribGroup::ALL).0 != 0 {
+        return format!("{:#x}", m.0);
     }
+    let parts: Vec<&str> = m.groups().map(n).collect();
     if parts.is_empty() {
         "0".into()
     } else {

@@ -489,6 +489,7 @@ fn sample_commands() -> Vec<Command> {
             AttribGroup::Texture,
         ])),
         Command::PushAttrib(AttribMask(0)),
+        Command::PushAttrib(AttribMask(0x4000_0001)),
         Command::PopAttrib,
     ]
 }
@@ -509,6 +510,10 @@ fn attribute_masks_read_and_print_as_bits() {
             AttribGroup::Fog
         ]))]),
         "glPushAttrib(GL_CURRENT_BIT | GL_FOG_BIT);\n"
+    );
+    same(
+        "glPushAttrib(0x2001);",
+        "glPushAttrib(GL_CURRENT_BIT | GL_ENABLE_BIT);",
     );
     let e = parse("glPushAttrib(GL_CURRENT_BIT | GL_FOGG_BIT);").unwrap_err();
     assert!(e.to_string().contains("GL_FOG_BIT"), "{e}");
