@@ -316,6 +316,9 @@ macro_rules! gl_entry_table {
         DrawRangeElements = glDrawRangeElements(Script; mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, r#type: GLenum, indices: *const c_void);
         ArrayElement = glArrayElement(Script; i: GLint);
         InterleavedArrays = glInterleavedArrays(Script; format: GLenum, stride: GLsizei, pointer: *const c_void);
+        // Attribute stacks (ff::attrib).
+        PushAttrib = glPushAttrib(Script; mask: GLbitfield);
+        PopAttrib = glPopAttrib(Script; );
         // Display lists (ff::lists).
         NewList = glNewList(Script; list: GLuint, mode: GLenum);
         EndList = glEndList(Script; );
@@ -718,6 +721,8 @@ impl Command {
                 None => Entry::DrawArrays,
             },
             Command::Raise { call, .. } => *call,
+            Command::PushAttrib(_) => Entry::PushAttrib,
+            Command::PopAttrib => Entry::PopAttrib,
         }
     }
 }

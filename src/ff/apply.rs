@@ -223,6 +223,8 @@ impl FixedState {
             Command::ClearStencil(s) => self.clear.stencil = *s,
             Command::ReadPixels(r) => check_read_pixels(r)?,
             Command::Draw(g) => self.draw(g)?,
+            Command::PushAttrib(mask) => self.push_attrib(*mask)?,
+            Command::PopAttrib => self.pop_attrib()?,
         }
         Ok(())
     }

@@ -21,7 +21,13 @@ fn volume<A: Args>(c: &A) -> Result<ViewVolume, A::Error> {
 /// The Command of every call that is not immediate mode (those are
 /// [`Immediate`](super::immediate::Immediate)'s).
 pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
-    for area in [transform_and_fragment, lighting, texturing, combiners] {
+    for area in [
+        transform_and_fragment,
+        lighting,
+        texturing,
+        combiners,
+        super::calls_attrib::attrib,
+    ] {
         if let Some(cmd) = area(c)? {
             return Ok(cmd);
         }

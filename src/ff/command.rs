@@ -17,6 +17,7 @@ use crate::vocab::DepthRule;
 use super::api::Entry;
 use super::error::GlErrorKind;
 
+use super::attrib::AttribMask;
 use super::combiners::{
     CombinerInput, CombinerOutput, CombinerParam, FinalVariable, Portion, Variable,
 };
@@ -297,4 +298,9 @@ pub enum Command {
         error: GlErrorKind,
         call: Entry,
     },
+    // Attribute stack (GL 1.5 §6.1.14).
+    /// STACK_OVERFLOW beyond MAX_ATTRIB_STACK_DEPTH entries.
+    PushAttrib(AttribMask),
+    /// STACK_UNDERFLOW on an empty stack.
+    PopAttrib,
 }

@@ -120,7 +120,12 @@ impl StencilOp {
     }
 }
 
-/// glStencilFunc + glStencilOp + glStencilMask. GL default: ALWAYS, ref 0, masks all ones,
+/// The stencil bits the model assumes: every target the pipelines make with a stencil buffer
+/// has 8 (D24S8).
+pub const STENCIL_BITS: u32 = 8;
+
+/// glStencilFunc + glStencilOp + glStencilMask. GL default: ALWAYS, ref 0, masks all ones
+/// of the STENCIL_BITS (0xFF: Mesa's initial masks, which glGetIntegerv reports as 255),
 /// KEEP/KEEP/KEEP.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct StencilTest {
@@ -140,8 +145,8 @@ impl StencilTest {
     pub const DEFAULT: Self = Self {
         func: CompareFunc::Always,
         reference: 0,
-        value_mask: u32::MAX,
-        write_mask: u32::MAX,
+        value_mask: (1 << STENCIL_BITS) - 1,
+        write_mask: (1 << STENCIL_BITS) - 1,
         fail: StencilOp::Keep,
         depth_fail: StencilOp::Keep,
         depth_pass: StencilOp::Keep,

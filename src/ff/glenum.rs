@@ -456,6 +456,30 @@ gl_enums!(SumOrMux { FALSE => SumOrMux::Sum, TRUE => SumOrMux::Mux });
 
 gl_enums!(bool { FALSE => false, TRUE => true });
 
+gl_enums!(AttribGroup {
+    CURRENT_BIT => AttribGroup::Current,
+    POINT_BIT => AttribGroup::Point,
+    LINE_BIT => AttribGroup::Line,
+    POLYGON_BIT => AttribGroup::Polygon,
+    POLYGON_STIPPLE_BIT => AttribGroup::PolygonStipple,
+    PIXEL_MODE_BIT => AttribGroup::PixelMode,
+    LIGHTING_BIT => AttribGroup::Lighting,
+    FOG_BIT => AttribGroup::Fog,
+    DEPTH_BUFFER_BIT => AttribGroup::DepthBuffer,
+    ACCUM_BUFFER_BIT => AttribGroup::AccumBuffer,
+    STENCIL_BUFFER_BIT => AttribGroup::StencilBuffer,
+    VIEWPORT_BIT => AttribGroup::Viewport,
+    TRANSFORM_BIT => AttribGroup::Transform,
+    ENABLE_BIT => AttribGroup::Enable,
+    COLOR_BUFFER_BIT => AttribGroup::ColorBuffer,
+    HINT_BIT => AttribGroup::Hint,
+    EVAL_BIT => AttribGroup::Eval,
+    LIST_BIT => AttribGroup::List,
+    TEXTURE_BIT => AttribGroup::Texture,
+    SCISSOR_BIT => AttribGroup::Scissor,
+    MULTISAMPLE_BIT => AttribGroup::Multisample,
+});
+
 #[cfg(test)]
 mod tests {
     use super::*;

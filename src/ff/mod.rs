@@ -9,6 +9,8 @@
 //! - The small modules hold the GL rules both pipelines and the tests need, each with its
 //!   formula: matrices ([`matrix`]), texgen ([`texgen`]), texture environments ([`texenv`]),
 //!   register combiners ([`combiners`]), per-fragment tests ([`fragment`]).
+//! - [`query`] answers every glGet, glIsEnabled and per-object getter from the state, with
+//!   GL's (and Mesa's) type conversions; [`attrib`] is the glPushAttrib/glPopAttrib stack.
 //!
 //! Eye planes and light positions are transformed by the modelview current when they are
 //! set (GL 1.5 §2.11.4, §2.14.1), never at draw time. Depth readback conversions belong to
@@ -17,7 +19,9 @@
 pub mod api;
 pub mod apply;
 pub mod args;
+pub mod attrib;
 pub mod calls;
+pub mod calls_attrib;
 pub mod client;
 pub mod combiner_model;
 pub mod combiners;
@@ -32,6 +36,7 @@ pub mod light;
 pub mod lists;
 pub mod matrix;
 pub mod precision;
+pub mod query;
 pub mod script;
 pub mod state;
 pub mod texenv;
@@ -41,6 +46,7 @@ pub mod texture;
 #[cfg(test)]
 mod state_tests;
 
+pub use attrib::{AttribFrame, AttribGroup, AttribMask, MAX_ATTRIB_STACK_DEPTH};
 pub use combiners::{
     CombinerBias, CombinerInput, CombinerOutput, CombinerParam, CombinerScale, ComponentUsage,
     FinalVariable, GeneralStage, Mapping, Portion, Product, Register, RegisterCombiners,
@@ -59,6 +65,7 @@ pub use light::{
     Material, MaterialParam, Materials, MAX_LIGHTS,
 };
 pub use matrix::{MatrixMode, MatrixStack, ViewVolume};
+pub use query::QueryValue;
 pub use state::{CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_TEXTURE_UNITS};
 pub use texenv::{
     Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,

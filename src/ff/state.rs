@@ -8,6 +8,7 @@ use std::collections::BTreeMap;
 
 use glam::{Mat4, Vec3, Vec4};
 
+use super::attrib::AttribFrame;
 use super::combiners::RegisterCombiners;
 use super::error::GlError;
 use super::fragment::{
@@ -184,6 +185,9 @@ pub struct FixedState {
     pub point_size: f32,
     /// GL default: colour (0,0,0,0), depth 1, stencil 0.
     pub clear: ClearValues,
+
+    /// glPushAttrib entries (`attrib`). GL default: empty.
+    pub(crate) attrib_stack: Vec<AttribFrame>,
 }
 
 impl Default for FixedState {
@@ -237,6 +241,7 @@ impl FixedState {
             line_width: 1.0,
             point_size: 1.0,
             clear: ClearValues::DEFAULT,
+            attrib_stack: Vec::new(),
         }
     }
 

@@ -357,6 +357,8 @@ fn call(c: &Command) -> String {
             n(r.ty),
             r.slot
         ),
+        Command::PushAttrib(m) => format!("{}({})", Entry::PushAttrib, attrib_mask(*m)),
+        Command::PopAttrib => format!("{}()", Entry::PopAttrib),
         // Printed by `command`.
         Command::Draw(_)
         | Command::TexImage(_)
@@ -383,6 +385,23 @@ fn clear_mask(m: ClearMask) -> String {
         "0".into()
     } else {
         bits.join(" | ")
+    }
+}
+
+/// GL_ALL_ATTRIB_BITS, or the group bits joined by '|', or 0; a mask with bits of no group
+/// (which GL ignores) prints as one hex number, so it reads back the same.
+fn attrib_mask(m: AttribMask) -> String {
+    if m == AttribMask::ALL {
+        return "GL_ALL_ATTRIB_BITS".into();
+    }
+    if m.0 & !AttribMask::of(&AttribGroup::ALL).0 != 0 {
+        return format!("{:#x}", m.0);
+    }
+    let parts: Vec<&str> = m.groups().map(n).collect();
+    if parts.is_empty() {
+        "0".into()
+    } else {
+        parts.join(" | ")
     }
 }
 

@@ -560,7 +560,40 @@ fn sample_commands() -> Vec<Command> {
         }),
         Command::Draw(Arc::new(g)),
         Command::Draw(Arc::new(Geometry::new(Primitive::Points, vec![]))),
+        Command::PushAttrib(AttribMask::ALL),
+        Command::PushAttrib(AttribMask::of(&[
+            AttribGroup::Lighting,
+            AttribGroup::Texture,
+        ])),
+        Command::PushAttrib(AttribMask(0)),
+        Command::PushAttrib(AttribMask(0x4000_0001)),
+        Command::PopAttrib,
     ]
+}
+
+#[test]
+fn attribute_masks_read_and_print_as_bits() {
+    same(
+        "glPushAttrib(GL_ENABLE_BIT | GL_DEPTH_BUFFER_BIT);",
+        "glPushAttrib(GL_DEPTH_BUFFER_BIT|GL_ENABLE_BIT);",
+    );
+    assert_eq!(
+        parse("glPushAttrib(GL_ALL_ATTRIB_BITS); glPopAttrib();").unwrap(),
+        vec![Command::PushAttrib(AttribMask::ALL), Command::PopAttrib]
+    );
+    assert_eq!(
+        print(&[Command::PushAttrib(AttribMask::of(&[
+            AttribGroup::Current,
+            AttribGroup::Fog
+        ]))]),
+        "glPushAttrib(GL_CURRENT_BIT | GL_FOG_BIT);\n"
+    );
+    same(
+        "glPushAttrib(0x2001);",
+        "glPushAttrib(GL_CURRENT_BIT | GL_ENABLE_BIT);",
+    );
+    let e = parse("glPushAttrib(GL_CURRENT_BIT | GL_FOGG_BIT);").unwrap_err();
+    assert!(e.to_string().contains("GL_FOG_BIT"), "{e}");
 }
 
 #[test]

@@ -186,6 +186,9 @@ impl Issue for Emulate {
             Command::ReadPixels(r) => {
                 core.readbacks.insert(r.slot, read_pixels(gl, r));
             }
+            // The model restored the groups; the raster state and uniforms follow it at the
+            // next draw, the texture objects' parameters now.
+            Command::PopAttrib => self.textures.sync_bound_params(gl, state)?,
             _ => {}
         }
         Ok(())

@@ -156,6 +156,27 @@ impl Textures {
         Ok(())
     }
 
+    /// Re-sends the parameters of every texture bound on any unit that has a GL object:
+    /// after glPopAttrib(TEXTURE_BIT) wrote saved parameters back into those objects.
+    pub fn sync_bound_params(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+    ) -> Result<(), PipelineError> {
+        for unit in &state.units {
+            for target in [TextureTarget::Texture1D, TextureTarget::Texture2D] {
+                let id = (target, unit.bound(target));
+                if let (true, Some(object)) =
+                    (self.objects.contains_key(&id), state.texture(id.0, id.1))
+                {
+                    let gl_t = self.edit(gl, id)?;
+                    apply_params(gl, gl_t, object);
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Binds the textures of the enabled units before a draw.
     pub fn bind_units(
         &mut self,

@@ -9,13 +9,19 @@
 //!   texture stack is followed by glLoadMatrixf of the matrix GL itself reports (after a
 //!   different one: Mesa ignores a load of the matrix already on top), which marks the
 //!   texture matrix dirty again.
+//! - **Nested glPopAttrib** (Mesa 22.3): Mesa restores only the groups changed since the
+//!   push, and a pop resets that record to the one saved at the push, so a change made while
+//!   an inner entry was on the stack is not undone by the outer pop
+//!   (`tests/query_native.rs`, `mesa_nested_pop_attrib_skips_groups_changed_inside`).
+//!   After the real glPopAttrib the popped groups are sent again from the model
+//!   (`FixedState::group_commands`).
 //! - **Register combiners** have no native path (Mesa dropped NV_register_combiners): their
 //!   commands change only the model, and a draw with REGISTER_COMBINERS_NV enabled is
 //!   refused with `PipelineError::Unsupported` instead of drawing something else.
 
 use glam::Mat4;
 
-use crate::ff::{ClearMask, Command, MatrixMode};
+use crate::ff::{AttribMask, ClearMask, Command, MatrixMode};
 use crate::pipeline::PipelineError;
 
 use super::bindings as gl;
@@ -176,6 +182,19 @@ impl Native {
                 draw::draw(g, geometry);
                 draw::restore_current(g, &core.state, geometry);
                 core.counters.draws += 1;
+            }
+            Command::PushAttrib(mask) => {
+                unsafe { g.PushAttrib(mask.0) };
+                self.attrib_masks.push(*mask);
+            }
+            Command::PopAttrib => {
+                unsafe { g.PopAttrib() };
+                // The model accepted the pop, so a mask was pushed; the groups are sent
+                // again from the model (see the module note).
+                let mask = self.attrib_masks.pop().unwrap_or(AttribMask(0));
+                for c in core.state.group_commands(mask) {
+                    self.issue_calls(core, &c)?;
+                }
             }
         }
         Ok(())

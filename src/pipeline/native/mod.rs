@@ -10,7 +10,8 @@
 //! - ARB_shadow_ambient's fail value is recorded in the model and not sent (Mesa lacks the
 //!   extension): a failed compare reads 0 here;
 //! - NV_register_combiners has no native path: a draw with it enabled is `Unsupported`;
-//! - Mesa's texture-matrix pop bug is worked around by re-loading the matrix after a pop.
+//! - Mesa's texture-matrix pop bug is worked around by re-loading the matrix after a pop;
+//! - Mesa's nested glPopAttrib bug is worked around by sending the popped groups again.
 
 pub mod bindings;
 mod conv;
@@ -57,6 +58,8 @@ impl NativeGl {
 pub struct Native {
     gl: NativeGl,
     textures: textures::Textures,
+    /// The masks of the glPushAttrib calls issued and not yet popped.
+    attrib_masks: Vec<crate::ff::AttribMask>,
 }
 
 /// Commands executed by Mesa's fixed-function pipeline.
@@ -73,8 +76,21 @@ impl NativePipeline {
         let path = Native {
             gl,
             textures: textures::Textures::default(),
+            attrib_masks: Vec::new(),
         };
-        Ok(PathPipeline::from_parts(Core::default(), path))
+        // The model's viewport starts as GL's (the bound target), as on the emulated path:
+        // a glPopAttrib(VIEWPORT_BIT) sends the model's viewport back.
+        let mut core = Core::default();
+        let mut v = [0i32; 4];
+        // SAFETY: VIEWPORT writes 4 integers.
+        unsafe { ctx.gl().get_parameter_i32_slice(glow::VIEWPORT, &mut v) };
+        let _ = core.state.apply(&Command::Viewport(crate::ff::Viewport {
+            x: v[0],
+            y: v[1],
+            width: v[2],
+            height: v[3],
+        }));
+        Ok(PathPipeline::from_parts(core, path))
     }
 
     /// How many GL texture objects the pipeline holds.

@@ -1,0 +1,741 @@
+//! The server attribute stack: glPushAttrib / glPopAttrib (GL 1.5 §6.1.14, the "attribute"
+//! column of Tables 6.5–6.28).
+//!
+//! A push records the whole model state with the mask; a pop copies back the fields of the
+//! groups the mask names, and only those. Each group's fields are listed once, in
+//! `FixedState::restore_group`. Groups whose state the model does not hold yet (FOG,
+//! SCISSOR, EVAL, HINT, LIST, PIXEL_MODE, ACCUM_BUFFER, MULTISAMPLE, POLYGON_STIPPLE) are
+//! accepted and restore nothing; a field added to the model for one of them is added to
+//! its arm there. What GL puts in two groups (LIGHTING's enables are also ENABLE's) is
+//! restored by either, from the same snapshot.
+//!
+//! Matrices and their stacks belong to no group (only MATRIX_MODE is TRANSFORM state), and
+//! texture images belong to no group: TEXTURE_BIT saves the bindings of every unit, the
+//! active unit, the environments and texgen, and the parameters of the textures bound at
+//! the push, which the pop writes back into those objects (Mesa's `pop_texture_group`).
+//! The NV_register_combiners state is TEXTURE state (the extension's state tables:
+//! "texture" and "texture/enable").
+//!
+//! There is no client attribute stack: the model holds no client state (vertex arrays
+//! travel inside each draw), so glPushClientAttrib has nothing to save.
+
+use super::command::{Capability, Command};
+use super::error::{GlError, GlResult};
+use super::fragment::Face;
+use super::glenum::{registry, GlEnum};
+use super::light::{LightModelParam, LightParam, MaterialParam};
+use super::matrix::MatrixMode;
+use super::state::{FixedState, TextureUnit};
+use super::texenv::{CombineArg, TexEnvParam};
+use super::texgen::{TexCoord, TexGenParam};
+use super::texture::{TexParam, TextureTarget};
+
+/// GL_MAX_ATTRIB_STACK_DEPTH: Mesa's `MAX_ATTRIB_STACK_DEPTH`, 16 on llvmpipe (the spec's
+/// minimum too).
+pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
+
+/// One attribute group, named by its glPushAttrib bit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum AttribGroup {
+    Current,
+    Point,
+    Line,
+    Polygon,
+    PolygonStipple,
+    PixelMode,
+    Lighting,
+    Fog,
+    DepthBuffer,
+    AccumBuffer,
+    StencilBuffer,
+    Viewport,
+    Transform,
+    Enable,
+    ColorBuffer,
+    Hint,
+    Eval,
+    List,
+    Texture,
+    Scissor,
+    Multisample,
+}
+
+impl AttribGroup {
+    /// Every group, in the order of their bits.
+    pub const ALL: [AttribGroup; 21] = [
+        AttribGroup::Current,
+        AttribGroup::Point,
+        AttribGroup::Line,
+        AttribGroup::Polygon,
+        AttribGroup::PolygonStipple,
+        AttribGroup::PixelMode,
+        AttribGroup::Lighting,
+        AttribGroup::Fog,
+        AttribGroup::DepthBuffer,
+        AttribGroup::AccumBuffer,
+        AttribGroup::StencilBuffer,
+        AttribGroup::Viewport,
+        AttribGroup::Transform,
+        AttribGroup::Enable,
+        AttribGroup::ColorBuffer,
+        AttribGroup::Hint,
+        AttribGroup::Eval,
+        AttribGroup::List,
+        AttribGroup::Texture,
+        AttribGroup::Scissor,
+        AttribGroup::Multisample,
+    ];
+
+    /// The group's bit (GL_CURRENT_BIT …).
+    pub fn bit(self) -> u32 {
+        self.gl_value().unwrap_or(0)
+    }
+}
+
+/// glPushAttrib's mask: the GL bitfield as given. Bits that name no group are ignored, as
+/// GL ignores them; GL_ALL_ATTRIB_BITS is every bit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct AttribMask(pub u32);
+
+impl AttribMask {
+    /// GL_ALL_ATTRIB_BITS.
+    pub const ALL: AttribMask = AttribMask(registry::ALL_ATTRIB_BITS);
+
+    /// The mask of these groups.
+    pub fn of(groups: &[AttribGroup]) -> AttribMask {
+        AttribMask(groups.iter().fold(0, |m, g| m | g.bit()))
+    }
+
+    pub fn contains(self, group: AttribGroup) -> bool {
+        self.0 & group.bit() != 0
+    }
+
+    /// The groups the mask names, in bit order.
+    pub fn groups(self) -> impl Iterator<Item = AttribGroup> {
+        AttribGroup::ALL
+            .into_iter()
+            .filter(move |g| self.contains(*g))
+    }
+}
+
+/// One glPushAttrib: the mask and the state when it was pushed (its own attribute stack
+/// left out).
+#[derive(Debug, Clone, PartialEq)]
+pub struct AttribFrame {
+    pub mask: AttribMask,
+    saved: Box<FixedState>,
+}
+
+impl FixedState {
+    /// ATTRIB_STACK_DEPTH.
+    pub fn attrib_depth(&self) -> usize {
+        self.attrib_stack.len()
+    }
+
+    /// glPushAttrib: STACK_OVERFLOW on a full stack, with no other effect.
+    pub(crate) fn push_attrib(&mut self, mask: AttribMask) -> GlResult {
+        if self.attrib_stack.len() >= MAX_ATTRIB_STACK_DEPTH {
+            return Err(GlError::stack_overflow(
+                "PushAttrib on a stack holding MAX_ATTRIB_STACK_DEPTH entries",
+            ));
+        }
+        let stack = std::mem::take(&mut self.attrib_stack);
+        let saved = Box::new(self.clone());
+        self.attrib_stack = stack;
+        self.attrib_stack.push(AttribFrame { mask, saved });
+        Ok(())
+    }
+
+    /// glPopAttrib: restores the groups of the top entry's mask; STACK_UNDERFLOW on an
+    /// empty stack, with no other effect.
+    pub(crate) fn pop_attrib(&mut self) -> GlResult {
+        let frame = self.attrib_stack.pop().ok_or(GlError::stack_underflow(
+            "PopAttrib on an empty attribute stack",
+        ))?;
+        for group in frame.mask.groups() {
+            self.restore_group(group, &frame.saved);
+        }
+        Ok(())
+    }
+
+    /// Copies one group's fields back from `s` (GL 1.5 Tables 6.5–6.28, "attribute").
+    fn restore_group(&mut self, group: AttribGroup, s: &FixedState) {
+        match group {
+            // Current colour, normal, texture coordinates (the raster position and edge
+            // flag are not modelled).
+            AttribGroup::Current => self.current = s.current,
+            AttribGroup::Enable => self.restore_enables(s),
+            AttribGroup::Lighting => {
+                self.lighting = s.lighting;
+                self.lights = s.lights;
+                self.light_model = s.light_model;
+                self.materials = s.materials;
+                self.color_material = s.color_material;
+                self.shade_model = s.shade_model;
+            }
+            AttribGroup::Texture => self.restore_textures(s),
+            // MATRIX_MODE, NORMALIZE, RESCALE_NORMAL (clip planes are not modelled).
+            AttribGroup::Transform => {
+                self.matrix_mode = s.matrix_mode;
+                self.normalize = s.normalize;
+                self.rescale_normal = s.rescale_normal;
+            }
+            AttribGroup::Viewport => {
+                self.viewport = s.viewport;
+                self.depth_range = s.depth_range;
+            }
+            // Alpha test, blending, colour write mask, clear colour (dither, logic op and
+            // draw buffer are not modelled).
+            AttribGroup::ColorBuffer => {
+                self.alpha_test = s.alpha_test;
+                self.blend = s.blend;
+                self.color_mask = s.color_mask;
+                self.clear.color = s.clear.color;
+            }
+            AttribGroup::DepthBuffer => {
+                self.depth_test = s.depth_test;
+                self.clear.depth = s.clear.depth;
+            }
+            AttribGroup::StencilBuffer => {
+                self.stencil_test = s.stencil_test;
+                self.clear.stencil = s.clear.stencil;
+            }
+            // Culling, front face, polygon modes, offset and its enables (smoothing and
+            // the stipple enable are not modelled).
+            AttribGroup::Polygon => {
+                self.cull_face = s.cull_face;
+                self.front_face = s.front_face;
+                self.polygon_mode = s.polygon_mode;
+                self.polygon_offset = s.polygon_offset;
+                self.offset_enables = s.offset_enables;
+            }
+            AttribGroup::Line => self.line_width = s.line_width,
+            AttribGroup::Point => self.point_size = s.point_size,
+            // Not modelled yet: nothing saved, nothing restored.
+            AttribGroup::PolygonStipple
+            | AttribGroup::PixelMode
+            | AttribGroup::Fog
+            | AttribGroup::AccumBuffer
+            | AttribGroup::Hint
+            | AttribGroup::Eval
+            | AttribGroup::List
+            | AttribGroup::Scissor
+            | AttribGroup::Multisample => {}
+        }
+    }
+
+    /// ENABLE_BIT: every glEnable flag the model has.
+    fn restore_enables(&mut self, s: &FixedState) {
+        self.lighting = s.lighting;
+        for (l, saved) in self.lights.iter_mut().zip(&s.lights) {
+            l.enabled = saved.enabled;
+        }
+        self.color_material.enabled = s.color_material.enabled;
+        self.normalize = s.normalize;
+        self.rescale_normal = s.rescale_normal;
+        for (u, saved) in self.units.iter_mut().zip(&s.units) {
+            u.texture_1d = saved.texture_1d;
+            u.texture_2d = saved.texture_2d;
+            for (g, sg) in u.texgen.iter_mut().zip(&saved.texgen) {
+                g.enabled = sg.enabled;
+            }
+        }
+        self.alpha_test.enabled = s.alpha_test.enabled;
+        self.depth_test.enabled = s.depth_test.enabled;
+        self.stencil_test.enabled = s.stencil_test.enabled;
+        self.blend.enabled = s.blend.enabled;
+        self.cull_face.enabled = s.cull_face.enabled;
+        self.offset_enables = s.offset_enables;
+        self.register_combiners.enabled = s.register_combiners.enabled;
+    }
+
+    /// TEXTURE_BIT: the active unit, every unit's enables, bindings, environment and
+    /// texgen, the register combiners, and the parameters of the textures bound at the push.
+    fn restore_textures(&mut self, s: &FixedState) {
+        self.active_texture = s.active_texture;
+        self.units = s.units;
+        self.register_combiners = s.register_combiners;
+        for unit in &s.units {
+            for target in [TextureTarget::Texture1D, TextureTarget::Texture2D] {
+                let name = unit.bound(target);
+                if let (Some(saved), Some(now)) =
+                    (s.texture(target, name), self.texture_mut(target, name))
+                {
+                    now.params = saved.params;
+                }
+            }
+        }
+    }
+}
+
+/// glEnable or glDisable.
+fn toggle(cap: Capability, on: bool) -> Command {
+    if on {
+        Command::Enable(cap)
+    } else {
+        Command::Disable(cap)
+    }
+}
+
+impl FixedState {
+    /// The commands that set the groups of `mask` to this state's values, from any state
+    /// with the same texture objects: what a path that cannot trust its driver's glPopAttrib
+    /// sends after it (the native path, `pipeline::native`). Light positions, spot
+    /// directions and eye planes are sent under an identity modelview, so the stored
+    /// eye-space values arrive unchanged; the modelview matrix, the matrix mode and the
+    /// active unit are put back at the end. Register-combiner state is left out (no driver
+    /// has it).
+    pub fn group_commands(&self, mask: AttribMask) -> Vec<Command> {
+        let mut out = Vec::new();
+        for group in mask.groups() {
+            self.push_group_commands(group, &mut out);
+        }
+        out.push(Command::ActiveTexture(self.active_unit() as u8));
+        out.push(Command::MatrixMode(self.matrix_mode));
+        out
+    }
+
+    fn push_group_commands(&self, group: AttribGroup, out: &mut Vec<Command>) {
+        match group {
+            AttribGroup::Current => {
+                out.push(Command::Color(self.current.color));
+                out.push(Command::Normal(self.current.normal));
+                for (u, t) in self.current.texcoords.iter().enumerate() {
+                    out.push(Command::TexCoord {
+                        unit: u as u8,
+                        coord: *t,
+                    });
+                }
+            }
+            AttribGroup::Enable => self.enable_commands(out),
+            AttribGroup::Lighting => self.lighting_commands(out),
+            AttribGroup::Texture => self.texture_commands(out),
+            AttribGroup::Transform => {
+                out.push(toggle(Capability::Normalize, self.normalize));
+                out.push(toggle(Capability::RescaleNormal, self.rescale_normal));
+            }
+            AttribGroup::Viewport => {
+                out.push(Command::Viewport(self.viewport));
+                out.push(Command::DepthRange {
+                    near: self.depth_range.near,
+                    far: self.depth_range.far,
+                });
+            }
+            AttribGroup::ColorBuffer => {
+                let (a, b) = (self.alpha_test, self.blend);
+                out.push(toggle(Capability::AlphaTest, a.enabled));
+                out.push(Command::AlphaFunc {
+                    func: a.value.func,
+                    reference: a.value.reference,
+                });
+                out.push(toggle(Capability::Blend, b.enabled));
+                out.push(Command::BlendFunc {
+                    src: b.value.src,
+                    dst: b.value.dst,
+                });
+                out.push(Command::ColorMask(self.color_mask));
+                out.push(Command::ClearColor(self.clear.color));
+            }
+            AttribGroup::DepthBuffer => {
+                let d = self.depth_test;
+                out.push(toggle(Capability::DepthTest, d.enabled));
+                out.push(Command::DepthFunc(d.value.func));
+                out.push(Command::DepthMask(d.value.write));
+                out.push(Command::ClearDepth(self.clear.depth));
+            }
+            AttribGroup::StencilBuffer => {
+                let t = self.stencil_test;
+                out.push(toggle(Capability::StencilTest, t.enabled));
+                out.push(Command::StencilFunc {
+                    func: t.value.func,
+                    reference: t.value.reference,
+                    mask: t.value.value_mask,
+                });
+                out.push(Command::StencilOp {
+                    fail: t.value.fail,
+                    depth_fail: t.value.depth_fail,
+                    depth_pass: t.value.depth_pass,
+                });
+                out.push(Command::StencilMask(t.value.write_mask));
+                out.push(Command::ClearStencil(self.clear.stencil));
+            }
+            AttribGroup::Polygon => {
+                out.push(toggle(Capability::CullFace, self.cull_face.enabled));
+                out.push(Command::CullFace(self.cull_face.value));
+                out.push(Command::FrontFace(self.front_face));
+                for (face, mode) in [
+                    (Face::Front, self.polygon_mode.front),
+                    (Face::Back, self.polygon_mode.back),
+                ] {
+                    out.push(Command::PolygonMode { face, mode });
+                }
+                out.push(Command::PolygonOffset {
+                    factor: self.polygon_offset.factor,
+                    units: self.polygon_offset.units,
+                });
+                let e = self.offset_enables;
+                out.push(toggle(Capability::PolygonOffsetFill, e.fill));
+                out.push(toggle(Capability::PolygonOffsetLine, e.line));
+                out.push(toggle(Capability::PolygonOffsetPoint, e.point));
+            }
+            AttribGroup::Line => out.push(Command::LineWidth(self.line_width)),
+            AttribGroup::Point => out.push(Command::PointSize(self.point_size)),
+            AttribGroup::PolygonStipple
+            | AttribGroup::PixelMode
+            | AttribGroup::Fog
+            | AttribGroup::AccumBuffer
+            | AttribGroup::Hint
+            | AttribGroup::Eval
+            | AttribGroup::List
+            | AttribGroup::Scissor
+            | AttribGroup::Multisample => {}
+        }
+    }
+
+    fn enable_commands(&self, out: &mut Vec<Command>) {
+        out.push(toggle(Capability::Lighting, self.lighting));
+        for (i, l) in self.lights.iter().enumerate() {
+            out.push(toggle(Capability::Light(i as u8), l.enabled));
+        }
+        out.push(toggle(
+            Capability::ColorMaterial,
+            self.color_material.enabled,
+        ));
+        out.push(toggle(Capability::Normalize, self.normalize));
+        out.push(toggle(Capability::RescaleNormal, self.rescale_normal));
+        for (u, unit) in self.units.iter().enumerate() {
+            out.push(Command::ActiveTexture(u as u8));
+            self.unit_enable_commands(unit, out);
+        }
+        out.push(toggle(Capability::AlphaTest, self.alpha_test.enabled));
+        out.push(toggle(Capability::DepthTest, self.depth_test.enabled));
+        out.push(toggle(Capability::StencilTest, self.stencil_test.enabled));
+        out.push(toggle(Capability::Blend, self.blend.enabled));
+        out.push(toggle(Capability::CullFace, self.cull_face.enabled));
+        let e = self.offset_enables;
+        out.push(toggle(Capability::PolygonOffsetFill, e.fill));
+        out.push(toggle(Capability::PolygonOffsetLine, e.line));
+        out.push(toggle(Capability::PolygonOffsetPoint, e.point));
+    }
+
+    fn unit_enable_commands(&self, unit: &TextureUnit, out: &mut Vec<Command>) {
+        out.push(toggle(Capability::Texture1D, unit.texture_1d));
+        out.push(toggle(Capability::Texture2D, unit.texture_2d));
+        for c in TexCoord::ALL {
+            out.push(toggle(
+                Capability::TextureGen(c),
+                unit.texgen[c.index()].enabled,
+            ));
+        }
+    }
+
+    fn lighting_commands(&self, out: &mut Vec<Command>) {
+        out.push(toggle(Capability::Lighting, self.lighting));
+        out.push(Command::MatrixMode(MatrixMode::Modelview));
+        out.push(Command::LoadIdentity);
+        for (i, l) in self.lights.iter().enumerate() {
+            let v = l.value;
+            for param in [
+                LightParam::Ambient(v.ambient),
+                LightParam::Diffuse(v.diffuse),
+                LightParam::Specular(v.specular),
+                LightParam::Position(v.position),
+                LightParam::SpotDirection(v.spot_direction),
+                LightParam::SpotExponent(v.spot_exponent),
+                LightParam::SpotCutoff(v.spot_cutoff),
+                LightParam::ConstantAttenuation(v.constant_attenuation),
+                LightParam::LinearAttenuation(v.linear_attenuation),
+                LightParam::QuadraticAttenuation(v.quadratic_attenuation),
+            ] {
+                out.push(Command::Light {
+                    light: i as u8,
+                    param,
+                });
+            }
+            out.push(toggle(Capability::Light(i as u8), l.enabled));
+        }
+        out.push(Command::LoadMatrix(self.modelview.top()));
+        let m = self.light_model;
+        out.push(Command::LightModel(LightModelParam::Ambient(m.ambient)));
+        out.push(Command::LightModel(LightModelParam::LocalViewer(
+            m.local_viewer,
+        )));
+        out.push(Command::LightModel(LightModelParam::TwoSide(m.two_side)));
+        out.push(Command::LightModel(LightModelParam::ColorControl(
+            m.color_control,
+        )));
+        for (face, mat) in [
+            (Face::Front, self.materials.front),
+            (Face::Back, self.materials.back),
+        ] {
+            for param in [
+                MaterialParam::Ambient(mat.ambient),
+                MaterialParam::Diffuse(mat.diffuse),
+                MaterialParam::Specular(mat.specular),
+                MaterialParam::Emission(mat.emission),
+                MaterialParam::Shininess(mat.shininess),
+            ] {
+                out.push(Command::Material { face, param });
+            }
+        }
+        let cm = self.color_material;
+        out.push(Command::ColorMaterial {
+            face: cm.value.face,
+            mode: cm.value.mode,
+        });
+        out.push(toggle(Capability::ColorMaterial, cm.enabled));
+        out.push(Command::ShadeModel(self.shade_model));
+    }
+
+    fn texture_commands(&self, out: &mut Vec<Command>) {
+        out.push(Command::MatrixMode(MatrixMode::Modelview));
+        out.push(Command::LoadIdentity);
+        for (u, unit) in self.units.iter().enumerate() {
+            out.push(Command::ActiveTexture(u as u8));
+            for target in [TextureTarget::Texture1D, TextureTarget::Texture2D] {
+                let name = unit.bound(target);
+                out.push(Command::BindTexture { target, name });
+                if let Some(t) = self.texture(target, name) {
+                    let p = t.params;
+                    for param in [
+                        TexParam::MinFilter(p.min_filter),
+                        TexParam::MagFilter(p.mag_filter),
+                        TexParam::WrapS(p.wrap_s),
+                        TexParam::WrapT(p.wrap_t),
+                        TexParam::BorderColor(p.border_color),
+                        TexParam::CompareMode(p.compare_mode),
+                        TexParam::CompareFunc(p.compare_func),
+                        TexParam::DepthTextureMode(p.depth_texture_mode),
+                        TexParam::CompareFailValue(p.compare_fail_value),
+                        TexParam::GenerateMipmap(p.generate_mipmap),
+                    ] {
+                        out.push(Command::TexParameter { target, param });
+                    }
+                }
+            }
+            let e = unit.env;
+            out.push(Command::TexEnv(TexEnvParam::Mode(e.mode)));
+            out.push(Command::TexEnv(TexEnvParam::Color(e.color)));
+            out.push(Command::TexEnv(TexEnvParam::CombineRgb(e.rgb.func)));
+            out.push(Command::TexEnv(TexEnvParam::CombineAlpha(e.alpha.func)));
+            for a in CombineArg::ALL {
+                let i = a.index();
+                out.push(Command::TexEnv(TexEnvParam::SourceRgb(a, e.rgb.sources[i])));
+                out.push(Command::TexEnv(TexEnvParam::SourceAlpha(
+                    a,
+                    e.alpha.sources[i],
+                )));
+                out.push(Command::TexEnv(TexEnvParam::OperandRgb(
+                    a,
+                    e.rgb.operands[i],
+                )));
+                out.push(Command::TexEnv(TexEnvParam::OperandAlpha(
+                    a,
+                    e.alpha.operands[i],
+                )));
+            }
+            out.push(Command::TexEnv(TexEnvParam::RgbScale(e.rgb.scale.factor())));
+            out.push(Command::TexEnv(TexEnvParam::AlphaScale(
+                e.alpha.scale.factor(),
+            )));
+            for c in TexCoord::ALL {
+                let g = unit.texgen[c.index()].value;
+                for param in [
+                    TexGenParam::Mode(g.mode),
+                    TexGenParam::ObjectPlane(g.object_plane),
+                    TexGenParam::EyePlane(g.eye_plane),
+                ] {
+                    out.push(Command::TexGen { coord: c, param });
+                }
+            }
+            self.unit_enable_commands(unit, out);
+        }
+        out.push(Command::LoadMatrix(self.modelview.top()));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ff::{
+        BlendFactor, Capability, Command, CompareFunc, GlErrorKind, LightParam, MatrixMode,
+        TexEnvMode, TexEnvParam, TexParam, Wrap,
+    };
+    use glam::Vec4;
+
+    fn apply(s: &mut FixedState, cmds: &[Command]) {
+        for c in cmds {
+            s.apply(c).unwrap();
+        }
+    }
+
+    #[test]
+    fn overflow_and_underflow_leave_the_state() {
+        let mut s = FixedState::new();
+        assert_eq!(
+            s.apply(&Command::PopAttrib).unwrap_err().kind,
+            GlErrorKind::StackUnderflow
+        );
+        for _ in 0..MAX_ATTRIB_STACK_DEPTH {
+            s.apply(&Command::PushAttrib(AttribMask::ALL)).unwrap();
+        }
+        s.take_error();
+        let before = s.clone();
+        assert_eq!(
+            s.apply(&Command::PushAttrib(AttribMask::ALL))
+                .unwrap_err()
+                .kind,
+            GlErrorKind::StackOverflow
+        );
+        s.take_error();
+        assert_eq!(s, before);
+        assert_eq!(s.attrib_depth(), MAX_ATTRIB_STACK_DEPTH);
+    }
+
+    #[test]
+    fn a_pop_restores_the_pushed_groups_only() {
+        let mut s = FixedState::new();
+        apply(
+            &mut s,
+            &[
+                Command::PushAttrib(AttribMask::of(&[
+                    AttribGroup::Enable,
+                    AttribGroup::DepthBuffer,
+                ])),
+                Command::Enable(Capability::DepthTest),
+                Command::DepthFunc(CompareFunc::Greater),
+                Command::BlendFunc {
+                    src: BlendFactor::SrcAlpha,
+                    dst: BlendFactor::One,
+                },
+                Command::Enable(Capability::Blend),
+                Command::MatrixMode(MatrixMode::Projection),
+                Command::PopAttrib,
+            ],
+        );
+        assert!(!s.depth_test.enabled);
+        assert!(!s.blend.enabled, "ENABLE_BIT restores BLEND");
+        assert_eq!(s.depth_test.value.func, CompareFunc::Less);
+        assert_eq!(
+            s.blend.value.src,
+            BlendFactor::SrcAlpha,
+            "COLOR_BUFFER not pushed"
+        );
+        assert_eq!(
+            s.matrix_mode,
+            MatrixMode::Projection,
+            "TRANSFORM not pushed"
+        );
+        assert_eq!(s.attrib_depth(), 0);
+    }
+
+    #[test]
+    fn texture_bit_restores_units_bindings_and_bound_parameters() {
+        let mut s = FixedState::new();
+        let t2d = TextureTarget::Texture2D;
+        apply(
+            &mut s,
+            &[
+                Command::BindTexture {
+                    target: t2d,
+                    name: 1,
+                },
+                Command::TexParameter {
+                    target: t2d,
+                    param: TexParam::WrapS(Wrap::Clamp),
+                },
+                Command::PushAttrib(AttribMask::of(&[AttribGroup::Texture])),
+                Command::TexParameter {
+                    target: t2d,
+                    param: TexParam::WrapS(Wrap::ClampToEdge),
+                },
+                Command::ActiveTexture(1),
+                Command::BindTexture {
+                    target: t2d,
+                    name: 2,
+                },
+                Command::TexEnv(TexEnvParam::Mode(TexEnvMode::Replace)),
+                Command::Enable(Capability::Texture2D),
+                Command::Light {
+                    light: 0,
+                    param: LightParam::Diffuse(Vec4::ZERO),
+                },
+                Command::PopAttrib,
+            ],
+        );
+        assert_eq!(s.active_texture, 0);
+        assert_eq!(s.units[1].bound_2d, 0);
+        assert!(!s.units[1].texture_2d);
+        assert_eq!(s.units[1].env.mode, TexEnvMode::Modulate);
+        assert_eq!(s.texture(t2d, 1).unwrap().params.wrap_s, Wrap::Clamp);
+        assert!(s.textures.contains_key(&2), "objects are not deleted");
+        assert_eq!(s.lights[0].value.diffuse, Vec4::ZERO, "LIGHTING not pushed");
+    }
+
+    /// The group commands of a state, applied to another with the same texture objects,
+    /// give back the first state.
+    #[test]
+    fn group_commands_rebuild_the_groups() {
+        let mut a = FixedState::new();
+        apply(
+            &mut a,
+            &[
+                Command::BindTexture {
+                    target: TextureTarget::Texture2D,
+                    name: 1,
+                },
+                Command::Translate(glam::Vec3::new(1.0, 2.0, 3.0)),
+                Command::PushAttrib(AttribMask::ALL),
+            ],
+        );
+        let mut b = a.clone();
+        apply(
+            &mut a,
+            &[
+                Command::Light {
+                    light: 3,
+                    param: LightParam::Position(Vec4::new(1.0, 0.0, 2.0, 1.0)),
+                },
+                Command::Enable(Capability::Light(3)),
+                Command::TexParameter {
+                    target: TextureTarget::Texture2D,
+                    param: TexParam::WrapS(Wrap::ClampToEdge),
+                },
+                Command::TexEnv(TexEnvParam::Mode(TexEnvMode::Replace)),
+                Command::ActiveTexture(2),
+                Command::MatrixMode(MatrixMode::Texture),
+                Command::Color(Vec4::new(0.5, 0.25, 0.125, 1.0)),
+                Command::LineWidth(2.0),
+                Command::StencilMask(3),
+            ],
+        );
+        for c in a.group_commands(AttribMask::ALL) {
+            b.apply(&c).unwrap();
+        }
+        assert_eq!(b, a);
+    }
+
+    #[test]
+    fn all_attrib_bits_round_trips_the_state() {
+        let mut s = FixedState::new();
+        s.apply(&Command::PushAttrib(AttribMask::ALL)).unwrap();
+        let pushed = {
+            let mut p = s.clone();
+            p.attrib_stack.clear();
+            p
+        };
+        apply(
+            &mut s,
+            &[
+                Command::Color(Vec4::new(0.1, 0.2, 0.3, 0.4)),
+                Command::Enable(Capability::Lighting),
+                Command::LineWidth(3.0),
+                Command::PointSize(4.0),
+                Command::StencilMask(7),
+                Command::ClearStencil(3),
+                Command::PopAttrib,
+            ],
+        );
+        assert_eq!(s, pushed);
+    }
+}

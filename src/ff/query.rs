@@ -1,0 +1,748 @@
+//! State queries: glGet*, glIsEnabled and the per-object getters, answered from the model.
+//!
+//! Every answer is a list of [`QueryValue`]s, each tagged with the kind of value the state
+//! holds, so one answer serves glGetBooleanv, glGetIntegerv, glGetFloatv and glGetDoublev
+//! through the conversions of GL 1.5 §6.1.2 ([`QueryValue::as_bool`], [`QueryValue::as_int`],
+//! [`QueryValue::as_float`], [`QueryValue::as_double`]). The conversions are Mesa's
+//! (`src/mesa/main/get.c`, 22.x), which the native oracle test checks against llvmpipe:
+//!
+//! - boolean → 0/1 (1.0/0.0); integer or enum → boolean: ≠ 0; integer → float: exact for the
+//!   values the model holds (enums are < 2²⁴);
+//! - float → boolean: ≠ 0 (C truth, so NaN → TRUE);
+//! - float → integer, ordinary values ([`QueryValue::Float`]): rounded to nearest, halves away
+//!   from zero (Mesa `lroundf`, stored into a GLint: NaN and |x| ≥ 2⁶³ give 0, larger than
+//!   2³¹ wraps modulo 2³²);
+//! - float → integer, colours, normals, depth range, depth clear value, alpha reference and
+//!   matrices ([`QueryValue::Normalized`]): the "most positive representable integer" rule,
+//!   Mesa's `FLOAT_TO_INT(x) = (GLint)(2147483647.0 · x)`, truncating: 1 → 2³¹ − 1,
+//!   −1 → −(2³¹ − 1) (the spec's Table 4.5 gives −2³¹), 0.5 → 1073741823; a result outside
+//!   GLint (|x| > 1) or NaN gives −2³¹, the x86-64 conversion of an out-of-range double.
+//!   Matrices through glGetIntegerv are a Mesa deviation: the spec rounds them;
+//! - the `…iv` getters of lights, texgen planes (glGetLightiv POSITION, glGetTexGeniv
+//!   EYE_PLANE…) truncate (`(GLint) f` in Mesa's `light.c`, `texgen.c`; the spec rounds):
+//!   [`QueryValue::Truncated`].
+//!
+//! Other Mesa behaviour the answers follow (each pinned in `tests/query_native.rs`):
+//! TRANSPOSE_TEXTURE_MATRIX is unit 0's whatever the active unit; the stencil masks are
+//! unsigned and start as 0xFF; an unspecified texture level reports internal format RGBA.
+//! Where the model stores less than Mesa the answers differ, by design: DEPTH_RANGE and
+//! DEPTH_CLEAR_VALUE are f32 here and doubles in Mesa (glGetIntegerv scales the double, so
+//! values not exact in f32 can differ in the last bits); TEXTURE_INTERNAL_FORMAT is the
+//! sized format the model keeps (Mesa returns an unsized name as given).
+//!
+//! Not answered yet (INVALID_ENUM), because the model does not hold the state: fog,
+//! scissor, clip planes, logic op, blend equation and colour, hints, pixel store and
+//! transfer, the raster position, client state (CLIENT_ACTIVE_TEXTURE, arrays), framebuffer
+//! bits, implementation limits other than those listed, COLOR_INDEXES, TEXTURE_PRIORITY,
+//! TEXTURE_RESIDENT, TEXTURE_WRAP_R.
+//!
+//! Adding a pname: one line in the [`PNAMES`] table (or in the marked block at its end) —
+//! the GL token without `GL_`, and a function from `&FixedState` to its values built with
+//! the helpers below (`floats`, `normalized`, `enm`, `int`, `boolean`, `matrix`). The
+//! registry constant, the printed name and the oracle test's list all come from that line.
+//! A capability goes in `glenum`'s `Capability` table instead: glGet and glIsEnabled answer
+//! every capability from [`FixedState::is_enabled`].
+
+use glam::Mat4;
+
+use super::attrib::MAX_ATTRIB_STACK_DEPTH;
+use super::combiners::MAX_GENERAL_COMBINERS;
+use super::command::Capability;
+use super::error::GlErrorKind;
+use super::fragment::STENCIL_BITS;
+use super::glenum::{gl, registry as r, GlEnum};
+use super::light::MAX_LIGHTS;
+use super::matrix::MatrixStack;
+use super::state::{FixedState, MAX_TEXTURE_UNITS};
+use super::texenv::{CombineSource, TexEnv};
+use super::texgen::TexCoord;
+use super::texture::{TexFormat, TextureTarget, MAX_TEXTURE_LEVEL, MAX_TEXTURE_SIZE};
+
+/// GL_TEXTURE_COMPARE_FAIL_VALUE_ARB (ARB_shadow_ambient, outside the registry subset
+/// `build.rs` reads).
+pub const TEXTURE_COMPARE_FAIL_VALUE_ARB: u32 = 0x80BF;
+
+/// One value of a query answer, as the state holds it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum QueryValue {
+    Bool(bool),
+    Int(i32),
+    /// An unsigned value (Mesa's TYPE_UINT: the stencil masks): as an integer, clamped to
+    /// 2³¹ − 1, so all 32 ones read 2147483647, not −1.
+    UInt(u32),
+    /// A GLenum; as an integer, its value.
+    Enum(u32),
+    /// A float that becomes an integer by rounding (§6.1.2).
+    Float(f32),
+    /// A colour, normal, depth or matrix value that becomes an integer by Mesa's
+    /// `FLOAT_TO_INT` (see the module note).
+    Normalized(f32),
+    /// A float that Mesa's `…iv` getter casts to GLint, truncating.
+    Truncated(f32),
+}
+
+/// A query's values in the order GL writes them.
+pub type Queried = Vec<QueryValue>;
+
+impl QueryValue {
+    /// glGetBooleanv's conversion.
+    pub fn as_bool(self) -> bool {
+        match self {
+            QueryValue::Bool(b) => b,
+            QueryValue::Int(i) => i != 0,
+            QueryValue::UInt(u) | QueryValue::Enum(u) => u != 0,
+            // C truth: NaN is TRUE.
+            QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => f != 0.0,
+        }
+    }
+
+    /// glGetIntegerv's conversion.
+    pub fn as_int(self) -> i32 {
+        match self {
+            QueryValue::Bool(b) => i32::from(b),
+            QueryValue::Int(i) => i,
+            QueryValue::UInt(u) => u.min(i32::MAX as u32) as i32,
+            QueryValue::Enum(e) => e as i32,
+            QueryValue::Float(f) => round_to_int(f),
+            QueryValue::Normalized(f) => normalized_to_int(f64::from(f)),
+            QueryValue::Truncated(f) => c_int(f64::from(f)),
+        }
+    }
+
+    /// glGetFloatv's conversion.
+    pub fn as_float(self) -> f32 {
+        match self {
+            QueryValue::Bool(b) => f32::from(u8::from(b)),
+            QueryValue::Int(i) => i as f32,
+            QueryValue::UInt(u) | QueryValue::Enum(u) => u as f32,
+            QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => f,
+        }
+    }
+
+    /// glGetDoublev's conversion.
+    pub fn as_double(self) -> f64 {
+        match self {
+            QueryValue::Bool(b) => f64::from(u8::from(b)),
+            QueryValue::Int(i) => f64::from(i),
+            QueryValue::UInt(u) | QueryValue::Enum(u) => f64::from(u),
+            QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => {
+                f64::from(f)
+            }
+        }
+    }
+}
+
+/// Mesa's float → GLint for ordinary values: `lroundf` (nearest, halves away from zero) into
+/// a `long`, stored into a GLint (the low 32 bits). `lroundf` of NaN or of a value beyond
+/// `long` is `LONG_MIN` on x86-64 glibc, whose low 32 bits are 0.
+pub fn round_to_int(f: f32) -> i32 {
+    let r = f64::from(f).round();
+    // 2⁶³: the first value outside `long`.
+    const LONG_RANGE: f64 = 9_223_372_036_854_775_808.0;
+    if r.is_nan() || !(-LONG_RANGE..LONG_RANGE).contains(&r) {
+        return 0;
+    }
+    (r as i64) as i32
+}
+
+/// Mesa's `FLOAT_TO_INT(x) = (GLint)(2147483647.0 · x)`: linear, [−1, 1] → [−(2³¹ − 1),
+/// 2³¹ − 1], truncating.
+pub fn normalized_to_int(x: f64) -> i32 {
+    c_int(2_147_483_647.0 * x)
+}
+
+/// C's `(GLint) x` as x86-64 computes it (`cvttsd2si`): truncation toward zero; NaN and
+/// values outside GLint give −2³¹ (the "integer indefinite").
+pub fn c_int(x: f64) -> i32 {
+    let t = x.trunc();
+    if t.is_nan() || t < f64::from(i32::MIN) || t > f64::from(i32::MAX) {
+        i32::MIN
+    } else {
+        t as i32
+    }
+}
+
+fn floats(v: &[f32]) -> Queried {
+    v.iter().map(|f| QueryValue::Float(*f)).collect()
+}
+
+fn normalized(v: &[f32]) -> Queried {
+    v.iter().map(|f| QueryValue::Normalized(*f)).collect()
+}
+
+fn truncated(v: &[f32]) -> Queried {
+    v.iter().map(|f| QueryValue::Truncated(*f)).collect()
+}
+
+fn enm<T: GlEnum>(v: T) -> Queried {
+    vec![QueryValue::Enum(gl(v))]
+}
+
+fn int(i: i32) -> Queried {
+    vec![QueryValue::Int(i)]
+}
+
+fn count(n: usize) -> Queried {
+    int(i32::try_from(n).unwrap_or(i32::MAX))
+}
+
+fn boolean(b: bool) -> Queried {
+    vec![QueryValue::Bool(b)]
+}
+
+/// A matrix in column-major order, as glGet writes it (Mesa's TYPE_MATRIX: FLOAT_TO_INT for
+/// glGetIntegerv).
+fn matrix(m: Mat4) -> Queried {
+    normalized(&m.to_cols_array())
+}
+
+fn depth(s: &MatrixStack) -> Queried {
+    count(s.depth())
+}
+
+/// The GLenum of a combine source (TEXTUREn is the family TEXTURE0 + n).
+fn source(s: CombineSource) -> u32 {
+    match s {
+        CombineSource::TextureUnit(n) => r::TEXTURE0 + u32::from(n),
+        other => gl(other),
+    }
+}
+
+/// One glGet pname: its token, its value and how the model answers it.
+pub struct Pname {
+    /// `GL_…`.
+    pub name: &'static str,
+    pub value: u32,
+    get: fn(&FixedState) -> Queried,
+}
+
+macro_rules! pnames {
+    ($($name:ident => $get:expr,)*) => {
+        /// Every glGet pname the model answers besides the capabilities (see the module note
+        /// for how to add one).
+        pub const PNAMES: &[Pname] = &[$(Pname {
+            name: concat!("GL_", stringify!($name)),
+            value: r::$name,
+            get: $get,
+        }),*];
+    };
+}
+
+pnames! {
+    // Transformation (GL 1.5 Table 6.6).
+    MATRIX_MODE => |s| enm(s.matrix_mode),
+    MODELVIEW_MATRIX => |s| matrix(s.modelview.top()),
+    PROJECTION_MATRIX => |s| matrix(s.projection.top()),
+    TEXTURE_MATRIX => |s| matrix(s.texture_matrix(s.active_unit())),
+    TRANSPOSE_MODELVIEW_MATRIX => |s| matrix(s.modelview.top().transpose()),
+    TRANSPOSE_PROJECTION_MATRIX => |s| matrix(s.projection.top().transpose()),
+    // Mesa deviation (pinned in `tests/query_native.rs`): unit 0's matrix whatever the
+    // active unit (its table entry points at the first stack), where TEXTURE_MATRIX follows
+    // the active unit.
+    TRANSPOSE_TEXTURE_MATRIX => |s| matrix(s.texture_matrix(0).transpose()),
+    MODELVIEW_STACK_DEPTH => |s| depth(&s.modelview),
+    PROJECTION_STACK_DEPTH => |s| depth(&s.projection),
+    TEXTURE_STACK_DEPTH => |s| depth(&s.texture_matrices[s.active_unit()]),
+    MAX_MODELVIEW_STACK_DEPTH => |s| count(s.modelview.max_depth()),
+    MAX_PROJECTION_STACK_DEPTH => |s| count(s.projection.max_depth()),
+    MAX_TEXTURE_STACK_DEPTH => |s| count(s.texture_matrices[0].max_depth()),
+    VIEWPORT => |s| {
+        let v = s.viewport;
+        [v.x, v.y, v.width, v.height].into_iter().map(QueryValue::Int).collect()
+    },
+    DEPTH_RANGE => |s| normalized(&[s.depth_range.near, s.depth_range.far]),
+
+    // Current values (Table 6.5): the texture coordinates of the active unit.
+    CURRENT_COLOR => |s| normalized(&s.current.color.to_array()),
+    CURRENT_NORMAL => |s| normalized(&s.current.normal.to_array()),
+    CURRENT_TEXTURE_COORDS => |s| floats(&s.current.texcoords[s.active_unit()].to_array()),
+
+    // Lighting (Tables 6.9, 6.10).
+    LIGHT_MODEL_AMBIENT => |s| normalized(&s.light_model.ambient.to_array()),
+    LIGHT_MODEL_LOCAL_VIEWER => |s| boolean(s.light_model.local_viewer),
+    LIGHT_MODEL_TWO_SIDE => |s| boolean(s.light_model.two_side),
+    LIGHT_MODEL_COLOR_CONTROL => |s| enm(s.light_model.color_control),
+    SHADE_MODEL => |s| enm(s.shade_model),
+    COLOR_MATERIAL_FACE => |s| enm(s.color_material.value.face),
+    COLOR_MATERIAL_PARAMETER => |s| enm(s.color_material.value.mode),
+
+    // Texturing (Tables 6.15–6.20): the active unit's bindings.
+    ACTIVE_TEXTURE => |s| vec![QueryValue::Enum(r::TEXTURE0 + s.active_unit() as u32)],
+    TEXTURE_BINDING_1D => |s| name(s.units[s.active_unit()].bound_1d),
+    TEXTURE_BINDING_2D => |s| name(s.units[s.active_unit()].bound_2d),
+
+    // Per-fragment operations (Table 6.21) and framebuffer control (Table 6.22).
+    ALPHA_TEST_FUNC => |s| enm(s.alpha_test.value.func),
+    ALPHA_TEST_REF => |s| normalized(&[s.alpha_test.value.reference]),
+    DEPTH_FUNC => |s| enm(s.depth_test.value.func),
+    DEPTH_WRITEMASK => |s| boolean(s.depth_test.value.write),
+    STENCIL_FUNC => |s| enm(s.stencil_test.value.func),
+    STENCIL_VALUE_MASK => |s| vec![QueryValue::UInt(s.stencil_test.value.value_mask)],
+    // Clamped to [0, 2ˢ − 1] when queried (§4.1.5), s = STENCIL_BITS; stored as given. Mesa
+    // clamps with the draw buffer's bits, so without a stencil buffer it answers 0.
+    STENCIL_REF => |s| int(s.stencil_test.value.reference.clamp(0, (1 << STENCIL_BITS) - 1)),
+    STENCIL_FAIL => |s| enm(s.stencil_test.value.fail),
+    STENCIL_PASS_DEPTH_FAIL => |s| enm(s.stencil_test.value.depth_fail),
+    STENCIL_PASS_DEPTH_PASS => |s| enm(s.stencil_test.value.depth_pass),
+    STENCIL_WRITEMASK => |s| vec![QueryValue::UInt(s.stencil_test.value.write_mask)],
+    BLEND_SRC => |s| enm(s.blend.value.src),
+    BLEND_DST => |s| enm(s.blend.value.dst),
+    COLOR_WRITEMASK => |s| {
+        let m = s.color_mask;
+        [m.r, m.g, m.b, m.a].into_iter().map(QueryValue::Bool).collect()
+    },
+    COLOR_CLEAR_VALUE => |s| normalized(&s.clear.color.to_array()),
+    DEPTH_CLEAR_VALUE => |s| normalized(&[s.clear.depth]),
+    STENCIL_CLEAR_VALUE => |s| int(s.clear.stencil),
+
+    // Rasterisation (Tables 6.11–6.14).
+    POLYGON_OFFSET_FACTOR => |s| floats(&[s.polygon_offset.factor]),
+    POLYGON_OFFSET_UNITS => |s| floats(&[s.polygon_offset.units]),
+    POLYGON_MODE => |s| {
+        [s.polygon_mode.front, s.polygon_mode.back]
+            .into_iter()
+            .map(|m| QueryValue::Enum(gl(m)))
+            .collect()
+    },
+    CULL_FACE_MODE => |s| enm(s.cull_face.value),
+    FRONT_FACE => |s| enm(s.front_face),
+    LINE_WIDTH => |s| floats(&[s.line_width]),
+    POINT_SIZE => |s| floats(&[s.point_size]),
+
+    // Attribute stack (Table 6.39).
+    ATTRIB_STACK_DEPTH => |s| count(s.attrib_depth()),
+    MAX_ATTRIB_STACK_DEPTH => |_| count(MAX_ATTRIB_STACK_DEPTH),
+
+    // Implementation limits (Table 6.32): the model's, which are llvmpipe's.
+    MAX_LIGHTS => |_| count(MAX_LIGHTS),
+    MAX_TEXTURE_UNITS => |_| count(MAX_TEXTURE_UNITS),
+    MAX_TEXTURE_SIZE => |_| int(MAX_TEXTURE_SIZE),
+
+    // NV_register_combiners (not in Mesa: the oracle test leaves these out).
+    NUM_GENERAL_COMBINERS_NV => |s| count(s.register_combiners.value.num_general),
+    COLOR_SUM_CLAMP_NV => |s| boolean(s.register_combiners.value.color_sum_clamp),
+    CONSTANT_COLOR0_NV => |s| normalized(&s.register_combiners.value.constant_color[0].to_array()),
+    CONSTANT_COLOR1_NV => |s| normalized(&s.register_combiners.value.constant_color[1].to_array()),
+    MAX_GENERAL_COMBINERS_NV => |_| count(MAX_GENERAL_COMBINERS),
+
+    // ── New pnames go here (fog, scissor, clip planes, logic op, blend equation and
+    // colour…): `TOKEN => |s| helper(s.field),` as above. ──
+}
+
+/// A texture name as glGetIntegerv reports it.
+fn name(n: u32) -> Queried {
+    int(n as i32)
+}
+
+/// The pnames of NV_register_combiners, which Mesa does not expose.
+pub const NV_PNAMES: [u32; 5] = [
+    r::NUM_GENERAL_COMBINERS_NV,
+    r::COLOR_SUM_CLAMP_NV,
+    r::CONSTANT_COLOR0_NV,
+    r::CONSTANT_COLOR1_NV,
+    r::MAX_GENERAL_COMBINERS_NV,
+];
+
+/// The capability a glEnable/glIsEnabled enum names (LIGHTi for i < MAX_LIGHTS).
+pub fn capability(cap: u32) -> Option<Capability> {
+    let light = cap.wrapping_sub(r::LIGHT0);
+    if (light as usize) < MAX_LIGHTS {
+        return Some(Capability::Light(light as u8));
+    }
+    Capability::from_gl_value(cap)
+}
+
+/// Every capability enum the model answers (for glIsEnabled and as glGet pnames).
+pub fn capabilities() -> Vec<u32> {
+    let mut caps: Vec<u32> = Capability::TABLE.iter().map(|(_, v, _)| *v).collect();
+    caps.extend((0..MAX_LIGHTS as u32).map(|i| r::LIGHT0 + i));
+    caps
+}
+
+/// Every glGet pname the model answers: the table and the capabilities.
+pub fn pnames() -> Vec<u32> {
+    let mut all: Vec<u32> = PNAMES.iter().map(|p| p.value).collect();
+    all.extend(capabilities());
+    all
+}
+
+/// The token of a pname the model answers (`GL_…`), for messages.
+pub fn pname_name(pname: u32) -> Option<&'static str> {
+    if let Some(p) = PNAMES.iter().find(|p| p.value == pname) {
+        return Some(p.name);
+    }
+    match capability(pname)? {
+        Capability::Light(_) => Some("GL_LIGHTi"),
+        c => c.gl_name(),
+    }
+}
+
+impl FixedState {
+    /// glGet{Boolean,Integer,Float,Double}v(pname): the values, to be converted with
+    /// [`QueryValue`]'s `as_*`; INVALID_ENUM for a pname the model does not answer.
+    pub fn get(&self, pname: u32) -> Result<Queried, GlErrorKind> {
+        if let Some(p) = PNAMES.iter().find(|p| p.value == pname) {
+            return Ok((p.get)(self));
+        }
+        self.is_enabled(pname).map(boolean)
+    }
+
+    /// glGetBooleanv(pname), converted (GL_TRUE = true).
+    pub fn get_booleanv(&self, pname: u32) -> Result<Vec<bool>, GlErrorKind> {
+        Ok(self.get(pname)?.iter().map(|v| v.as_bool()).collect())
+    }
+
+    /// glGetIntegerv(pname), converted.
+    pub fn get_integerv(&self, pname: u32) -> Result<Vec<i32>, GlErrorKind> {
+        Ok(self.get(pname)?.iter().map(|v| v.as_int()).collect())
+    }
+
+    /// glGetFloatv(pname), converted.
+    pub fn get_floatv(&self, pname: u32) -> Result<Vec<f32>, GlErrorKind> {
+        Ok(self.get(pname)?.iter().map(|v| v.as_float()).collect())
+    }
+
+    /// glGetDoublev(pname), converted.
+    pub fn get_doublev(&self, pname: u32) -> Result<Vec<f64>, GlErrorKind> {
+        Ok(self.get(pname)?.iter().map(|v| v.as_double()).collect())
+    }
+
+    /// glIsEnabled(cap); INVALID_ENUM for a capability the model does not have. Texture
+    /// and texgen enables are the active unit's.
+    pub fn is_enabled(&self, cap: u32) -> Result<bool, GlErrorKind> {
+        let cap = capability(cap).ok_or(GlErrorKind::InvalidEnum)?;
+        let unit = &self.units[self.active_unit()];
+        Ok(match cap {
+            Capability::Lighting => self.lighting,
+            Capability::Light(i) => self.lights.get(usize::from(i)).is_some_and(|l| l.enabled),
+            Capability::ColorMaterial => self.color_material.enabled,
+            Capability::Normalize => self.normalize,
+            Capability::RescaleNormal => self.rescale_normal,
+            Capability::Texture1D => unit.texture_1d,
+            Capability::Texture2D => unit.texture_2d,
+            Capability::TextureGen(c) => unit.texgen[c.index()].enabled,
+            Capability::AlphaTest => self.alpha_test.enabled,
+            Capability::DepthTest => self.depth_test.enabled,
+            Capability::StencilTest => self.stencil_test.enabled,
+            Capability::Blend => self.blend.enabled,
+            Capability::CullFace => self.cull_face.enabled,
+            Capability::PolygonOffsetFill => self.offset_enables.fill,
+            Capability::PolygonOffsetLine => self.offset_enables.line,
+            Capability::PolygonOffsetPoint => self.offset_enables.point,
+            Capability::RegisterCombiners => self.register_combiners.enabled,
+        })
+    }
+
+    /// glGetLight{f,i}v(light, pname): colours are normalised values, the rest truncate
+    /// under glGetLightiv (Mesa). Position and spot direction are in eye coordinates, as
+    /// stored (GL 1.5 §6.1.3). INVALID_ENUM for a light ≥ MAX_LIGHTS or another pname.
+    pub fn get_light(&self, light: u32, pname: u32) -> Result<Queried, GlErrorKind> {
+        let i = light.wrapping_sub(r::LIGHT0) as usize;
+        let l = self.lights.get(i).ok_or(GlErrorKind::InvalidEnum)?.value;
+        Ok(match pname {
+            r::AMBIENT => normalized(&l.ambient.to_array()),
+            r::DIFFUSE => normalized(&l.diffuse.to_array()),
+            r::SPECULAR => normalized(&l.specular.to_array()),
+            r::POSITION => truncated(&l.position.to_array()),
+            r::SPOT_DIRECTION => truncated(&l.spot_direction.to_array()),
+            r::SPOT_EXPONENT => truncated(&[l.spot_exponent]),
+            r::SPOT_CUTOFF => truncated(&[l.spot_cutoff]),
+            r::CONSTANT_ATTENUATION => truncated(&[l.constant_attenuation]),
+            r::LINEAR_ATTENUATION => truncated(&[l.linear_attenuation]),
+            r::QUADRATIC_ATTENUATION => truncated(&[l.quadratic_attenuation]),
+            _ => return Err(GlErrorKind::InvalidEnum),
+        })
+    }
+
+    /// glGetMaterial{f,i}v(face, pname): face FRONT or BACK (FRONT_AND_BACK is
+    /// INVALID_ENUM, §6.1.3); colours normalised, SHININESS rounded. COLOR_INDEXES is not
+    /// modelled (INVALID_ENUM).
+    pub fn get_material(&self, face: u32, pname: u32) -> Result<Queried, GlErrorKind> {
+        let m = match face {
+            r::FRONT => self.materials.front,
+            r::BACK => self.materials.back,
+            _ => return Err(GlErrorKind::InvalidEnum),
+        };
+        Ok(match pname {
+            r::AMBIENT => normalized(&m.ambient.to_array()),
+            r::DIFFUSE => normalized(&m.diffuse.to_array()),
+            r::SPECULAR => normalized(&m.specular.to_array()),
+            r::EMISSION => normalized(&m.emission.to_array()),
+            r::SHININESS => floats(&[m.shininess]),
+            _ => return Err(GlErrorKind::InvalidEnum),
+        })
+    }
+
+    /// glGetTexEnv{f,i}v(TEXTURE_ENV, pname) of the active unit. Other targets and pnames:
+    /// INVALID_ENUM.
+    pub fn get_tex_env(&self, target: u32, pname: u32) -> Result<Queried, GlErrorKind> {
+        if target != r::TEXTURE_ENV {
+            return Err(GlErrorKind::InvalidEnum);
+        }
+        let e: &TexEnv = &self.units[self.active_unit()].env;
+        let src = |v: CombineSource| vec![QueryValue::Enum(source(v))];
+        Ok(match pname {
+            r::TEXTURE_ENV_MODE => enm(e.mode),
+            r::TEXTURE_ENV_COLOR => normalized(&e.color.to_array()),
+            r::COMBINE_RGB => enm(e.rgb.func),
+            r::COMBINE_ALPHA => enm(e.alpha.func),
+            r::SOURCE0_RGB => src(e.rgb.sources[0]),
+            r::SOURCE1_RGB => src(e.rgb.sources[1]),
+            r::SOURCE2_RGB => src(e.rgb.sources[2]),
+            r::SOURCE0_ALPHA => src(e.alpha.sources[0]),
+            r::SOURCE1_ALPHA => src(e.alpha.sources[1]),
+            r::SOURCE2_ALPHA => src(e.alpha.sources[2]),
+            r::OPERAND0_RGB => enm(e.rgb.operands[0]),
+            r::OPERAND1_RGB => enm(e.rgb.operands[1]),
+            r::OPERAND2_RGB => enm(e.rgb.operands[2]),
+            r::OPERAND0_ALPHA => enm(e.alpha.operands[0]),
+            r::OPERAND1_ALPHA => enm(e.alpha.operands[1]),
+            r::OPERAND2_ALPHA => enm(e.alpha.operands[2]),
+            r::RGB_SCALE => floats(&[e.rgb.scale.factor()]),
+            r::ALPHA_SCALE => floats(&[e.alpha.scale.factor()]),
+            _ => return Err(GlErrorKind::InvalidEnum),
+        })
+    }
+
+    /// glGetTexGen{d,f,i}v(coord, pname) of the active unit. The eye plane is the stored,
+    /// eye-space one (§6.1.3); planes truncate under glGetTexGeniv (Mesa).
+    pub fn get_tex_gen(&self, coord: u32, pname: u32) -> Result<Queried, GlErrorKind> {
+        let c = TexCoord::from_gl_value(coord).ok_or(GlErrorKind::InvalidEnum)?;
+        let g = self.units[self.active_unit()].texgen[c.index()].value;
+        Ok(match pname {
+            r::TEXTURE_GEN_MODE => enm(g.mode),
+            r::OBJECT_PLANE => truncated(&g.object_plane.to_array()),
+            r::EYE_PLANE => truncated(&g.eye_plane.to_array()),
+            _ => return Err(GlErrorKind::InvalidEnum),
+        })
+    }
+
+    /// glGetTexParameter{f,i}v(target, pname): the texture bound to `target` on the active
+    /// unit. BASE_LEVEL, MAX_LEVEL, MIN_LOD and MAX_LOD are not settable in the model and
+    /// answer their GL defaults (0, 1000, −1000, 1000).
+    pub fn get_tex_parameter(&self, target: u32, pname: u32) -> Result<Queried, GlErrorKind> {
+        let t = TextureTarget::from_gl_value(target).ok_or(GlErrorKind::InvalidEnum)?;
+        let name = self.units[self.active_unit()].bound(t);
+        let p = self
+            .texture(t, name)
+            .ok_or(GlErrorKind::InvalidOperation)?
+            .params;
+        Ok(match pname {
+            r::TEXTURE_MIN_FILTER => enm(p.min_filter),
+            r::TEXTURE_MAG_FILTER => enm(p.mag_filter),
+            r::TEXTURE_WRAP_S => enm(p.wrap_s),
+            r::TEXTURE_WRAP_T => enm(p.wrap_t),
+            r::TEXTURE_BORDER_COLOR => normalized(&p.border_color.to_array()),
+            r::TEXTURE_COMPARE_MODE => enm(p.compare_mode),
+            r::TEXTURE_COMPARE_FUNC => enm(p.compare_func),
+            r::DEPTH_TEXTURE_MODE => enm(p.depth_texture_mode),
+            r::GENERATE_MIPMAP => boolean(p.generate_mipmap),
+            TEXTURE_COMPARE_FAIL_VALUE_ARB => floats(&[p.compare_fail_value]),
+            r::TEXTURE_BASE_LEVEL => int(0),
+            r::TEXTURE_MAX_LEVEL => int(1000),
+            r::TEXTURE_MIN_LOD => floats(&[-1000.0]),
+            r::TEXTURE_MAX_LOD => floats(&[1000.0]),
+            _ => return Err(GlErrorKind::InvalidEnum),
+        })
+    }
+
+    /// glGetTexLevelParameter{f,i}v(target, level, pname) of the texture bound to `target`
+    /// on the active unit. A level outside [0, log2 MAX_TEXTURE_SIZE] is INVALID_VALUE; an
+    /// unspecified level answers 0 for everything but the internal format, which is RGBA
+    /// (Mesa, after GL 4.0; GL 1.5 says 1). The internal format is the sized one the model
+    /// holds: an unsized name given to glTexImage (GL_RGBA) reads back sized (GL_RGBA8),
+    /// where Mesa returns the name as given. Component sizes are those of Mesa's llvmpipe
+    /// formats, 0 for components the base format lacks.
+    pub fn get_tex_level_parameter(
+        &self,
+        target: u32,
+        level: i32,
+        pname: u32,
+    ) -> Result<Queried, GlErrorKind> {
+        let t = TextureTarget::from_gl_value(target).ok_or(GlErrorKind::InvalidEnum)?;
+        if !(0..=MAX_TEXTURE_LEVEL).contains(&level) {
+            return Err(GlErrorKind::InvalidValue);
+        }
+        let name = self.units[self.active_unit()].bound(t);
+        let l = self
+            .texture(t, name)
+            .ok_or(GlErrorKind::InvalidOperation)?
+            .level(level);
+        let format = l.map(|l| l.internal_format);
+        let size = |component: Component| int(format.map_or(0, |f| bits(f, component)));
+        Ok(match pname {
+            r::TEXTURE_WIDTH => int(l.map_or(0, |l| l.width)),
+            r::TEXTURE_HEIGHT => int(l.map_or(0, |l| l.height)),
+            r::TEXTURE_BORDER => int(0),
+            r::TEXTURE_INTERNAL_FORMAT => vec![QueryValue::Enum(format.map_or(r::RGBA, gl))],
+            r::TEXTURE_RED_SIZE => size(Component::Red),
+            r::TEXTURE_GREEN_SIZE => size(Component::Green),
+            r::TEXTURE_BLUE_SIZE => size(Component::Blue),
+            r::TEXTURE_ALPHA_SIZE => size(Component::Alpha),
+            r::TEXTURE_LUMINANCE_SIZE => size(Component::Luminance),
+            r::TEXTURE_INTENSITY_SIZE => size(Component::Intensity),
+            r::TEXTURE_DEPTH_SIZE => size(Component::Depth),
+            r::TEXTURE_COMPRESSED => boolean(false),
+            _ => return Err(GlErrorKind::InvalidEnum),
+        })
+    }
+}
+
+/// The components glGetTexLevelParameter reports sizes of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Component {
+    Red,
+    Green,
+    Blue,
+    Alpha,
+    Luminance,
+    Intensity,
+    Depth,
+}
+
+/// TEXTURE_*_SIZE of a format: 8 bits per component of the 8-bit formats, the depth
+/// formats' bits, 0 for a component the base format does not have.
+fn bits(f: TexFormat, c: Component) -> i32 {
+    use Component as C;
+    match (f, c) {
+        (TexFormat::Rgba8, C::Red | C::Green | C::Blue | C::Alpha)
+        | (TexFormat::Rgb8, C::Red | C::Green | C::Blue)
+        | (TexFormat::Luminance8, C::Luminance)
+        | (TexFormat::Intensity8, C::Intensity)
+        | (TexFormat::Alpha8, C::Alpha)
+        | (TexFormat::Luminance8Alpha8, C::Luminance | C::Alpha) => 8,
+        (TexFormat::DepthComponent16, C::Depth) => 16,
+        (TexFormat::DepthComponent24, C::Depth) => 24,
+        (TexFormat::DepthComponent32F, C::Depth) => 32,
+        _ => 0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ff::{Command, Face, LightParam, MaterialParam};
+    use glam::Vec4;
+
+    /// GL 1.5 §6.1.2 as Mesa converts, at the boundaries.
+    #[test]
+    fn conversions_at_their_boundaries() {
+        let n = QueryValue::Normalized;
+        assert_eq!(n(1.0).as_int(), 2_147_483_647);
+        assert_eq!(n(-1.0).as_int(), -2_147_483_647);
+        assert_eq!(n(0.0).as_int(), 0);
+        assert_eq!(n(0.5).as_int(), 1_073_741_823);
+        assert_eq!(
+            n(2.0).as_int(),
+            i32::MIN,
+            "outside [-1, 1]: x86-64's indefinite"
+        );
+        assert_eq!(n(f32::NAN).as_int(), i32::MIN);
+        let f = QueryValue::Float;
+        assert_eq!(f(0.5).as_int(), 1, "halves away from zero");
+        assert_eq!(f(-0.5).as_int(), -1);
+        assert_eq!(f(2.5).as_int(), 3);
+        assert_eq!(f(1.4999).as_int(), 1);
+        assert_eq!(f(f32::NAN).as_int(), 0, "lroundf's LONG_MIN, low 32 bits");
+        assert_eq!(f(f32::INFINITY).as_int(), 0);
+        assert_eq!(f(4_294_967_296.0 + 512.0).as_int(), 512, "wraps modulo 2³²");
+        let t = QueryValue::Truncated;
+        assert_eq!(t(1.9).as_int(), 1);
+        assert_eq!(t(-1.9).as_int(), -1);
+        assert_eq!(t(f32::NAN).as_int(), i32::MIN);
+        // Booleans.
+        assert!(f(f32::NAN).as_bool(), "C truth");
+        assert!(!f(0.0).as_bool());
+        assert!(!f(-0.0).as_bool());
+        assert!(n(0.25).as_bool());
+        assert!(QueryValue::Int(-1).as_bool());
+        assert_eq!(QueryValue::Bool(true).as_int(), 1);
+        assert_eq!(QueryValue::Bool(true).as_float(), 1.0);
+        assert_eq!(QueryValue::Enum(r::LESS).as_float(), 513.0);
+        assert_eq!(QueryValue::Int(-1).as_double(), -1.0);
+        assert_eq!(
+            QueryValue::UInt(u32::MAX).as_int(),
+            i32::MAX,
+            "Mesa's TYPE_UINT"
+        );
+        assert_eq!(QueryValue::UInt(u32::MAX).as_double(), 4_294_967_295.0);
+    }
+
+    #[test]
+    fn defaults_answer_the_initial_state() {
+        let s = FixedState::new();
+        let ints = |p| -> Vec<i32> { s.get(p).unwrap().iter().map(|v| v.as_int()).collect() };
+        assert_eq!(ints(r::MATRIX_MODE), vec![r::MODELVIEW as i32]);
+        assert_eq!(ints(r::CURRENT_COLOR), vec![i32::MAX; 4]);
+        assert_eq!(ints(r::MODELVIEW_STACK_DEPTH), vec![1]);
+        assert_eq!(ints(r::MAX_ATTRIB_STACK_DEPTH), vec![16]);
+        assert_eq!(ints(r::STENCIL_VALUE_MASK), vec![255]);
+        assert_eq!(ints(r::POLYGON_MODE), vec![r::FILL as i32; 2]);
+        assert_eq!(ints(r::LIGHT0), vec![0]);
+        assert_eq!(s.get_integerv(r::MAX_LIGHTS), Ok(vec![8]));
+        assert_eq!(s.get_booleanv(r::DEPTH_WRITEMASK), Ok(vec![true]));
+        assert_eq!(s.get_floatv(r::LINE_WIDTH), Ok(vec![1.0]));
+        assert_eq!(s.get_doublev(r::DEPTH_RANGE), Ok(vec![0.0, 1.0]));
+        assert_eq!(s.is_enabled(r::LIGHT0 + 7), Ok(false));
+        assert_eq!(s.is_enabled(r::LIGHT0 + 8), Err(GlErrorKind::InvalidEnum));
+        assert_eq!(s.get(r::FOG_COLOR), Err(GlErrorKind::InvalidEnum));
+        assert_eq!(s.get(0xFFFF_FFFF), Err(GlErrorKind::InvalidEnum));
+        // Every table entry answers, with a distinct pname.
+        let all = pnames();
+        for p in &all {
+            assert!(
+                s.get(*p).is_ok_and(|v| !v.is_empty()),
+                "{:?}",
+                pname_name(*p)
+            );
+        }
+        let mut sorted = all.clone();
+        sorted.sort_unstable();
+        sorted.dedup();
+        assert_eq!(sorted.len(), all.len());
+    }
+
+    #[test]
+    fn object_getters_check_their_arguments() {
+        let mut s = FixedState::new();
+        s.apply(&Command::Light {
+            light: 1,
+            param: LightParam::Position(Vec4::new(1.7, -2.7, 3.0, 1.0)),
+        })
+        .unwrap();
+        let pos = s.get_light(r::LIGHT0 + 1, r::POSITION).unwrap();
+        let ints: Vec<i32> = pos.iter().map(|v| v.as_int()).collect();
+        assert_eq!(ints, vec![1, -2, 3, 1], "glGetLightiv truncates (Mesa)");
+        assert_eq!(
+            s.get_light(r::LIGHT0 + 8, r::POSITION),
+            Err(GlErrorKind::InvalidEnum)
+        );
+        assert_eq!(
+            s.get_material(r::FRONT_AND_BACK, r::AMBIENT),
+            Err(GlErrorKind::InvalidEnum)
+        );
+        s.apply(&Command::Material {
+            face: Face::Back,
+            param: MaterialParam::Shininess(10.5),
+        })
+        .unwrap();
+        let sh = s.get_material(r::BACK, r::SHININESS).unwrap();
+        assert_eq!(sh[0].as_int(), 11);
+        assert_eq!(
+            s.get_tex_level_parameter(r::TEXTURE_2D, -1, r::TEXTURE_WIDTH),
+            Err(GlErrorKind::InvalidValue)
+        );
+        let f = s
+            .get_tex_level_parameter(r::TEXTURE_2D, 0, r::TEXTURE_INTERNAL_FORMAT)
+            .unwrap();
+        assert_eq!(f, vec![QueryValue::Enum(r::RGBA)]);
+        assert_eq!(
+            s.get_tex_env(r::TEXTURE_2D, r::TEXTURE_ENV_MODE),
+            Err(GlErrorKind::InvalidEnum)
+        );
+        assert_eq!(
+            s.get_tex_gen(r::S, r::TEXTURE_GEN_MODE).unwrap(),
+            vec![QueryValue::Enum(r::EYE_LINEAR)]
+        );
+    }
+}
