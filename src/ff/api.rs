@@ -8,6 +8,7 @@ use std::fmt;
 
 use super::combiners::CombinerParam;
 use super::command::Command;
+use super::fog::FogParam;
 use super::light::{LightModelParam, LightParam, MaterialParam};
 use super::texenv::TexEnvParam;
 use super::texgen::TexGenParam;
@@ -305,6 +306,11 @@ entry_points! {
     ReadPixels = "glReadPixels"(Form::Script, "GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, void *pixels");
     DrawArrays = "glDrawArrays"(Form::Client, "GLenum mode, GLint first, GLsizei count");
     DrawElements = "glDrawElements"(Form::Client, "GLenum mode, GLsizei count, GLenum type, const void *indices");
+    // Fog, scissor, clip planes, logic op, blending (GL 1.0–1.4).
+    Fogf = "glFogf"(Form::Script, "GLenum pname, GLfloat param");
+    Fogi = "glFogi"(Form::Script, "GLenum pname, GLint param");
+    Fogfv = "glFogfv"(Form::Script, "GLenum pname, const GLfloat *params");
+    Fogiv = "glFogiv"(Form::Script, "GLenum pname, const GLint *params");
 
 }
 
@@ -574,6 +580,11 @@ impl Command {
             Command::FrontFace(_) => Entry::FrontFace,
             Command::LineWidth(_) => Entry::LineWidth,
             Command::PointSize(_) => Entry::PointSize,
+            Command::Fog(p) => match p {
+                FogParam::Mode(_) => Entry::Fogi,
+                FogParam::Color(_) => Entry::Fogfv,
+                _ => Entry::Fogf,
+            },
             Command::Clear(_) => Entry::Clear,
             Command::ClearColor(_) => Entry::ClearColor,
             Command::ClearDepth(_) => Entry::ClearDepth,

@@ -211,6 +211,11 @@ impl FixedState {
             Command::FrontFace(f) => self.front_face = *f,
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
             Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
+            Command::Fog(p) => {
+                let mut fog = self.fog.value;
+                fog.set(*p)?;
+                self.fog.value = fog;
+            }
             Command::Clear(_) => {}
             // Clamped to [0, 1]: ±∞ → 1, 0; NaN → 0 (glam's clamp is max then min, and
             // Rust's max drops a NaN). Mesa measured alike (`tests/fidelity_nonfinite.rs`).
@@ -261,6 +266,7 @@ impl FixedState {
             Capability::PolygonOffsetLine => self.offset_enables.line = on,
             Capability::PolygonOffsetPoint => self.offset_enables.point = on,
             Capability::RegisterCombiners => self.register_combiners.enabled = on,
+            Capability::Fog => self.fog.enabled = on,
         }
         Ok(())
     }

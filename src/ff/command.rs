@@ -17,6 +17,7 @@ use crate::vocab::DepthRule;
 use super::combiners::{
     CombinerInput, CombinerOutput, CombinerParam, FinalVariable, Portion, Variable,
 };
+use super::fog::FogParam;
 use super::fragment::{
     BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, PolygonMode, ShadeModel,
     StencilOp, Viewport,
@@ -53,6 +54,8 @@ pub enum Capability {
     PolygonOffsetPoint,
     /// REGISTER_COMBINERS_NV.
     RegisterCombiners,
+    /// FOG (GL 1.5 §3.10).
+    Fog,
 }
 
 /// glTexImage1D / glTexImage2D.
@@ -277,6 +280,8 @@ pub enum Command {
     LineWidth(f32),
     /// > 0, else INVALID_VALUE.
     PointSize(f32),
+    /// glFog: FOG_DENSITY < 0 is INVALID_VALUE.
+    Fog(FogParam),
 
     // Framebuffer.
     Clear(ClearMask),

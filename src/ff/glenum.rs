@@ -114,6 +114,13 @@ gl_enums!(Capability {
     POLYGON_OFFSET_LINE => Capability::PolygonOffsetLine,
     POLYGON_OFFSET_POINT => Capability::PolygonOffsetPoint,
     REGISTER_COMBINERS_NV => Capability::RegisterCombiners,
+    FOG => Capability::Fog,
+});
+
+gl_enums!(FogMode {
+    LINEAR => FogMode::Linear,
+    EXP => FogMode::Exp,
+    EXP2 => FogMode::Exp2,
 });
 
 gl_enums!(CompareFunc {

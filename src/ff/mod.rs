@@ -8,7 +8,7 @@
 //!   state unchanged; the first error sticks until read).
 //! - The small modules hold the GL rules both pipelines and the tests need, each with its
 //!   formula: matrices ([`matrix`]), texgen ([`texgen`]), texture environments ([`texenv`]),
-//!   register combiners ([`combiners`]), per-fragment tests ([`fragment`]).
+//!   register combiners ([`combiners`]), fog ([`fog`]), per-fragment tests ([`fragment`]).
 //!
 //! Eye planes and light positions are transformed by the modelview current when they are
 //! set (GL 1.5 §2.11.4, §2.14.1), never at draw time. Depth readback conversions belong to
@@ -20,6 +20,7 @@ pub mod combiner_model;
 pub mod combiners;
 pub mod command;
 pub mod error;
+pub mod fog;
 pub mod fragment;
 pub mod geometry;
 pub mod glenum;
@@ -42,6 +43,7 @@ pub use combiners::{
 };
 pub use command::{Capability, Command, CopyTexImage, ReadPixels, TexData, TexImage, TexSubImage};
 pub use error::{GlError, GlErrorKind, GlResult};
+pub use fog::{Fog, FogMode, FogParam};
 pub use fragment::{
     AlphaTest, Blend, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc, DepthRange,
     DepthTest, Face, FrontFace, OffsetEnables, PolygonMode, ShadeModel, StencilOp, StencilTest,

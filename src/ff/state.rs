@@ -10,6 +10,7 @@ use glam::{Mat4, Vec3, Vec4};
 
 use super::combiners::RegisterCombiners;
 use super::error::GlError;
+use super::fog::Fog;
 use super::fragment::{
     AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace,
     OffsetEnables, PolygonMode, ShadeModel, StencilTest, Toggle, Viewport,
@@ -184,6 +185,9 @@ pub struct FixedState {
     pub point_size: f32,
     /// GL default: colour (0,0,0,0), depth 1, stencil 0.
     pub clear: ClearValues,
+    /// FOG. GL default: disabled, EXP, density 1, start 0, end 1, colour (0,0,0,0); the
+    /// distance is |z_eye| (FOG_COORDINATE_SOURCE = FRAGMENT_DEPTH, as Mesa computes it).
+    pub fog: Toggle<Fog>,
 }
 
 impl Default for FixedState {
@@ -237,6 +241,7 @@ impl FixedState {
             line_width: 1.0,
             point_size: 1.0,
             clear: ClearValues::DEFAULT,
+            fog: Toggle::off(Fog::DEFAULT),
         }
     }
 

@@ -15,6 +15,7 @@
 //! except indexed geometry, which prints de-indexed (same triangles, no index array).
 
 mod calls;
+mod calls_raster;
 mod lexer;
 pub mod names;
 mod parse;

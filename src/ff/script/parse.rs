@@ -922,6 +922,7 @@ fn command(c: &Call) -> Res<Command> {
         super::calls::lighting,
         super::calls::texturing,
         super::calls::combiners,
+        super::calls_raster::raster,
     ] {
         if let Some(cmd) = area(c)? {
             return Ok(cmd);

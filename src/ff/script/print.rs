@@ -339,6 +339,7 @@ fn call(c: &Command) -> String {
         Command::FrontFace(face) => format!("{}({})", Entry::FrontFace, n(*face)),
         Command::LineWidth(w) => format!("{}({})", Entry::LineWidth, f(*w)),
         Command::PointSize(s) => format!("{}({})", Entry::PointSize, f(*s)),
+        Command::Fog(p) => fog(p),
         Command::Clear(m) => format!("{}({})", Entry::Clear, clear_mask(*m)),
         Command::ClearColor(c) => format!("{}({})", Entry::ClearColor, fs(&c.to_array())),
         Command::ClearDepth(d) => format!("{}({})", Entry::ClearDepth, f(*d)),
@@ -357,6 +358,18 @@ fn call(c: &Command) -> String {
         // Printed by `command`.
         Command::Draw(_) | Command::TexImage(_) | Command::TexSubImage2D(_) => String::new(),
     }
+}
+
+fn fog(p: &FogParam) -> String {
+    let (pname, v) = match p {
+        FogParam::Mode(m) => return format!("{}(GL_FOG_MODE, {})", Entry::Fogi, n(*m)),
+        FogParam::Color(c) => return format!("{}(GL_FOG_COLOR, {})", Entry::Fogfv, v4(*c)),
+        FogParam::Density(v) => ("GL_FOG_DENSITY", v),
+        FogParam::Start(v) => ("GL_FOG_START", v),
+        FogParam::End(v) => ("GL_FOG_END", v),
+        FogParam::Index(v) => ("GL_FOG_INDEX", v),
+    };
+    format!("{}({pname}, {})", Entry::Fogf, f(*v))
 }
 
 fn volume(v: &ViewVolume) -> String {

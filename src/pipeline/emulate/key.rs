@@ -11,7 +11,7 @@ use super::polygon::EdgeRule;
 use crate::ff::{
     AlphaTest, BaseFormat, ColorControl, ColorMaterialMode, Combine, CombineFunc, CombineOperand,
     CombineScale, CombineSource, CombinerInput, CompareFunc, CompareMode, DepthTextureMode, Face,
-    FixedState, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode,
+    FixedState, FogMode, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode,
     TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
 };
 use crate::vocab::Precision;
@@ -150,6 +150,11 @@ pub struct FragmentKey {
     /// SECONDARY_COLOR register instead.
     pub color_sum: bool,
     pub flat: bool,
+    /// FOG's mode; `None` when fog is off (no fog code, no fog varying). The vertex stage
+    /// writes |z_eye|, the fragment stage blends after texturing and the colour sum — or,
+    /// under register combiners, fills their FOG register instead (the final combiner
+    /// applies fog there, NV_register_combiners).
+    pub fog: Option<FogMode>,
     /// `None` when the alpha test is off or ALWAYS (no code at all).
     pub alpha_test: Option<CompareFunc>,
     /// Which fragments of a split quad or polygon survive in LINE or POINT mode
@@ -226,6 +231,7 @@ impl ShaderKey {
             two_side,
             color_sum,
             flat: state.shade_model == ShadeModel::Flat,
+            fog: state.fog.get().map(|f| f.mode),
             alpha_test: state
                 .alpha_test
                 .get()

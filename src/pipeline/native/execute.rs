@@ -15,7 +15,7 @@
 
 use glam::Mat4;
 
-use crate::ff::{ClearMask, Command, MatrixMode};
+use crate::ff::{ClearMask, Command, FogParam, MatrixMode};
 use crate::pipeline::PipelineError;
 
 use super::bindings as gl;
@@ -156,6 +156,7 @@ impl Native {
             Command::FrontFace(f) => unsafe { g.FrontFace(conv::value(*f)) },
             Command::LineWidth(w) => unsafe { g.LineWidth(*w) },
             Command::PointSize(s) => unsafe { g.PointSize(*s) },
+            Command::Fog(p) => fog(g, *p),
             Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
             Command::ClearColor(c) => unsafe { g.ClearColor(c.x, c.y, c.z, c.w) },
             Command::ClearDepth(d) => unsafe { g.ClearDepth((*d).into()) },
@@ -194,6 +195,21 @@ fn reload_texture_matrix(g: &gl::Gl) {
     unsafe {
         g.LoadMatrixf(other.as_ptr());
         g.LoadMatrixf(m.as_ptr());
+    }
+}
+
+/// glFog with the parameter's own entry point (glFogi for the mode, glFogfv for the colour).
+fn fog(g: &gl::Gl, p: FogParam) {
+    // SAFETY: plain GL calls; FOG_COLOR reads 4 floats from a local array.
+    unsafe {
+        match p {
+            FogParam::Mode(m) => g.Fogi(gl::FOG_MODE, conv::int(conv::value(m))),
+            FogParam::Density(v) => g.Fogf(gl::FOG_DENSITY, v),
+            FogParam::Start(v) => g.Fogf(gl::FOG_START, v),
+            FogParam::End(v) => g.Fogf(gl::FOG_END, v),
+            FogParam::Index(v) => g.Fogf(gl::FOG_INDEX, v),
+            FogParam::Color(c) => g.Fogfv(gl::FOG_COLOR, c.to_array().as_ptr()),
+        }
     }
 }
 

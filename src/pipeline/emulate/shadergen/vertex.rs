@@ -68,6 +68,13 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     for unit in &key.units {
         emit_texcoords(&mut w, &mut eye, key, unit);
     }
+    if fragment.fog.is_some() {
+        // FOG_COORDINATE_SOURCE = FRAGMENT_DEPTH as Mesa computes it: z = |z_eye| per
+        // vertex (ffvertex_prog.c, FDM_EYE_PLANE_ABS), interpolated; f per fragment.
+        let e = eye.position(&mut w);
+        w.declare("out float v_fog;");
+        w.line(format!("v_fog = abs({e}.z);"));
+    }
     if fragment.edges.is_some() {
         emit_edge(&mut w);
     }
