@@ -311,6 +311,7 @@ entry_points! {
     Fogi = "glFogi"(Form::Script, "GLenum pname, GLint param");
     Fogfv = "glFogfv"(Form::Script, "GLenum pname, const GLfloat *params");
     Fogiv = "glFogiv"(Form::Script, "GLenum pname, const GLint *params");
+    Scissor = "glScissor"(Form::Script, "GLint x, GLint y, GLsizei width, GLsizei height");
 
 }
 
@@ -580,6 +581,7 @@ impl Command {
             Command::FrontFace(_) => Entry::FrontFace,
             Command::LineWidth(_) => Entry::LineWidth,
             Command::PointSize(_) => Entry::PointSize,
+            Command::Scissor(_) => Entry::Scissor,
             Command::Fog(p) => match p {
                 FogParam::Mode(_) => Entry::Fogi,
                 FogParam::Color(_) => Entry::Fogfv,

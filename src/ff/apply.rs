@@ -211,6 +211,14 @@ impl FixedState {
             Command::FrontFace(f) => self.front_face = *f,
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
             Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
+            Command::Scissor(b) => {
+                if b.width < 0 || b.height < 0 {
+                    return Err(GlError::invalid_value(
+                        "Scissor width and height must be ≥ 0",
+                    ));
+                }
+                self.scissor.value = Some(*b);
+            }
             Command::Fog(p) => {
                 let mut fog = self.fog.value;
                 fog.set(*p)?;
@@ -267,6 +275,7 @@ impl FixedState {
             Capability::PolygonOffsetPoint => self.offset_enables.point = on,
             Capability::RegisterCombiners => self.register_combiners.enabled = on,
             Capability::Fog => self.fog.enabled = on,
+            Capability::ScissorTest => self.scissor.enabled = on,
         }
         Ok(())
     }

@@ -19,8 +19,8 @@ use super::combiners::{
 };
 use super::fog::FogParam;
 use super::fragment::{
-    BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, PolygonMode, ShadeModel,
-    StencilOp, Viewport,
+    BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, PolygonMode, ScissorBox,
+    ShadeModel, StencilOp, Viewport,
 };
 use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
@@ -56,6 +56,8 @@ pub enum Capability {
     RegisterCombiners,
     /// FOG (GL 1.5 §3.10).
     Fog,
+    /// SCISSOR_TEST (§4.1.2).
+    ScissorTest,
 }
 
 /// glTexImage1D / glTexImage2D.
@@ -282,6 +284,8 @@ pub enum Command {
     PointSize(f32),
     /// glFog: FOG_DENSITY < 0 is INVALID_VALUE.
     Fog(FogParam),
+    /// glScissor: a negative width or height is INVALID_VALUE.
+    Scissor(ScissorBox),
 
     // Framebuffer.
     Clear(ClearMask),

@@ -285,6 +285,18 @@ pub struct Viewport {
     pub height: i32,
 }
 
+/// glScissor's box in window coordinates (GL 1.5 §4.1.2): a fragment at (x_w, y_w) passes
+/// when x ≤ x_w < x + width and y ≤ y_w < y + height; glClear obeys it too (§4.2.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct ScissorBox {
+    pub x: i32,
+    pub y: i32,
+    /// ≥ 0, else INVALID_VALUE.
+    pub width: i32,
+    /// ≥ 0, else INVALID_VALUE.
+    pub height: i32,
+}
+
 /// glDepthRange, clamped to [0, 1] when set: z_w = z_ndc·(f − n)/2 + (n + f)/2.
 /// GL default: 0, 1.
 #[derive(Debug, Clone, Copy, PartialEq)]

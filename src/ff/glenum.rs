@@ -115,6 +115,7 @@ gl_enums!(Capability {
     POLYGON_OFFSET_POINT => Capability::PolygonOffsetPoint,
     REGISTER_COMBINERS_NV => Capability::RegisterCombiners,
     FOG => Capability::Fog,
+    SCISSOR_TEST => Capability::ScissorTest,
 });
 
 gl_enums!(FogMode {

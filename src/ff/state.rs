@@ -13,7 +13,7 @@ use super::error::GlError;
 use super::fog::Fog;
 use super::fragment::{
     AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace,
-    OffsetEnables, PolygonMode, ShadeModel, StencilTest, Toggle, Viewport,
+    OffsetEnables, PolygonMode, ScissorBox, ShadeModel, StencilTest, Toggle, Viewport,
 };
 use super::light::{ColorMaterial, Light, LightModel, Materials, MAX_LIGHTS};
 use super::matrix::{
@@ -188,6 +188,10 @@ pub struct FixedState {
     /// FOG. GL default: disabled, EXP, density 1, start 0, end 1, colour (0,0,0,0); the
     /// distance is |z_eye| (FOG_COORDINATE_SOURCE = FRAGMENT_DEPTH, as Mesa computes it).
     pub fog: Toggle<Fog>,
+    /// SCISSOR_TEST with glScissor's box. GL default: disabled, (0, 0, window width, window
+    /// height). The model does not know the window: `None` = never set = the whole target,
+    /// so an enabled test without a box restricts nothing.
+    pub scissor: Toggle<Option<ScissorBox>>,
 }
 
 impl Default for FixedState {
@@ -242,6 +246,7 @@ impl FixedState {
             point_size: 1.0,
             clear: ClearValues::DEFAULT,
             fog: Toggle::off(Fog::DEFAULT),
+            scissor: Toggle::off(None),
         }
     }
 
@@ -258,6 +263,12 @@ impl FixedState {
     /// The active texture unit's index, always < MAX_TEXTURE_UNITS.
     pub fn active_unit(&self) -> usize {
         self.active_texture.min(MAX_TEXTURE_UNITS - 1)
+    }
+
+    /// The box the scissor test restricts fragments and clears to: `None` when the test is
+    /// off or the box was never set (the whole target).
+    pub fn scissor_box(&self) -> Option<ScissorBox> {
+        self.scissor.get().flatten()
     }
 
     /// The current modelview matrix.

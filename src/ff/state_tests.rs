@@ -44,6 +44,12 @@ fn initial_values() {
     assert_eq!(s.depth_range, DepthRange::DEFAULT);
     assert_eq!(s.register_combiners.get(), None);
     assert_eq!(s.register_combiners.value.num_general, 1);
+    assert_eq!(s.fog.get(), None);
+    assert_eq!(s.fog.value, Fog::DEFAULT);
+    assert_eq!(s.fog.value.mode, FogMode::Exp);
+    assert_eq!(s.scissor.get(), None);
+    assert_eq!(s.scissor.value, None);
+    assert_eq!(s.scissor_box(), None);
     assert_eq!(s.error(), None);
 }
 
@@ -123,6 +129,16 @@ fn error_semantics_table() {
             InvalidValue,
         ),
         (Command::LineWidth(0.0), InvalidValue),
+        (Command::Fog(FogParam::Density(-0.5)), InvalidValue),
+        (
+            Command::Scissor(ScissorBox {
+                x: 0,
+                y: 0,
+                width: -1,
+                height: 4,
+            }),
+            InvalidValue,
+        ),
     ];
     for (cmd, kind) in cases {
         // A non-default state, so "unchanged" is meaningful.

@@ -66,6 +66,15 @@ fn fog(c: &Call) -> Res<FogParam> {
 pub(super) fn raster(c: &Call) -> Res<Option<Command>> {
     Ok(Some(match c.entry {
         Entry::Fogf | Entry::Fogi | Entry::Fogfv | Entry::Fogiv => Command::Fog(fog(c)?),
+        Entry::Scissor => {
+            c.count(4)?;
+            Command::Scissor(ScissorBox {
+                x: c.i32(0)?,
+                y: c.i32(1)?,
+                width: c.i32(2)?,
+                height: c.i32(3)?,
+            })
+        }
         _ => return Ok(None),
     }))
 }

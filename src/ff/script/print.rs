@@ -340,6 +340,14 @@ fn call(c: &Command) -> String {
         Command::LineWidth(w) => format!("{}({})", Entry::LineWidth, f(*w)),
         Command::PointSize(s) => format!("{}({})", Entry::PointSize, f(*s)),
         Command::Fog(p) => fog(p),
+        Command::Scissor(b) => format!(
+            "{}({}, {}, {}, {})",
+            Entry::Scissor,
+            b.x,
+            b.y,
+            b.width,
+            b.height
+        ),
         Command::Clear(m) => format!("{}({})", Entry::Clear, clear_mask(*m)),
         Command::ClearColor(c) => format!("{}({})", Entry::ClearColor, fs(&c.to_array())),
         Command::ClearDepth(d) => format!("{}({})", Entry::ClearDepth, f(*d)),

@@ -439,6 +439,13 @@ fn sample_commands() -> Vec<Command> {
         Command::LineWidth(12.0),
         Command::PointSize(0.5),
         Command::Enable(Capability::Fog),
+        Command::Enable(Capability::ScissorTest),
+        Command::Scissor(ScissorBox {
+            x: -2,
+            y: 3,
+            width: 10,
+            height: 0,
+        }),
         Command::Fog(FogParam::Mode(FogMode::Exp2)),
         Command::Fog(FogParam::Density(0.25)),
         Command::Fog(FogParam::Start(-1.5)),

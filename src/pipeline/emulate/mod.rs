@@ -146,7 +146,7 @@ impl Emulate {
                 gl.clear_stencil(c.stencil);
                 bits |= glow::STENCIL_BUFFER_BIT;
             }
-            // Clear obeys the scissor-free viewport-independent masks (§4.2.3).
+            // Clear obeys the masks and the scissor box, not the viewport (§4.2.3).
             gl.clear(bits);
         }
     }

@@ -1,5 +1,6 @@
 //! The raster state that stays GL state on the core path (depth, stencil, blend, masks,
-//! polygon offset, culling, polygon mode, line width, point size, viewport, depth range),
+//! polygon offset, culling, polygon mode, line width, point size, viewport, scissor, depth
+//! range),
 //! synced before each draw
 //! through a shadow copy of what was last sent: an unchanged value is not sent again, and
 //! both outcomes are counted.
@@ -11,7 +12,7 @@ use super::conv;
 use super::polygon::PolygonPass;
 use crate::ff::{
     Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, OffsetEnables,
-    PolygonMode, StencilTest, Viewport,
+    PolygonMode, ScissorBox, StencilTest, Viewport,
 };
 
 /// One piece of state as last sent (`None` = never sent).
@@ -47,6 +48,8 @@ pub struct RasterSync {
     /// glLineWidth; the point size is a uniform written to gl_PointSize.
     line_width: Sent<f32>,
     viewport: Sent<Viewport>,
+    /// The scissor box in force (`None`: test off, or never set = the whole target).
+    scissor: Sent<Option<ScissorBox>>,
     depth_range: Sent<DepthRange>,
     /// (sent, skipped)
     counts: (u64, u64),
@@ -75,6 +78,13 @@ impl RasterSync {
         let c = &mut self.counts;
         self.viewport.sync(s.viewport, c, |v| unsafe {
             gl.viewport(v.x, v.y, v.width, v.height)
+        });
+        // Also before a clear: glClear obeys the scissor (GL 1.5 §4.2.3).
+        self.scissor.sync(s.scissor_box(), c, |b| unsafe {
+            toggle(gl, glow::SCISSOR_TEST, b.is_some());
+            if let Some(b) = b {
+                gl.scissor(b.x, b.y, b.width, b.height);
+            }
         });
         self.depth_range.sync(s.depth_range, c, |r| unsafe {
             gl.depth_range_f64(f64::from(r.near), f64::from(r.far))

@@ -157,6 +157,7 @@ impl Native {
             Command::LineWidth(w) => unsafe { g.LineWidth(*w) },
             Command::PointSize(s) => unsafe { g.PointSize(*s) },
             Command::Fog(p) => fog(g, *p),
+            Command::Scissor(b) => unsafe { g.Scissor(b.x, b.y, b.width, b.height) },
             Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
             Command::ClearColor(c) => unsafe { g.ClearColor(c.x, c.y, c.z, c.w) },
             Command::ClearDepth(d) => unsafe { g.ClearDepth((*d).into()) },
