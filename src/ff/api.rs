@@ -312,6 +312,7 @@ entry_points! {
     Fogfv = "glFogfv"(Form::Script, "GLenum pname, const GLfloat *params");
     Fogiv = "glFogiv"(Form::Script, "GLenum pname, const GLint *params");
     Scissor = "glScissor"(Form::Script, "GLint x, GLint y, GLsizei width, GLsizei height");
+    ClipPlane = "glClipPlane"(Form::Script, "GLenum plane, const GLdouble *equation");
 
 }
 
@@ -582,6 +583,7 @@ impl Command {
             Command::LineWidth(_) => Entry::LineWidth,
             Command::PointSize(_) => Entry::PointSize,
             Command::Scissor(_) => Entry::Scissor,
+            Command::ClipPlane { .. } => Entry::ClipPlane,
             Command::Fog(p) => match p {
                 FogParam::Mode(_) => Entry::Fogi,
                 FogParam::Color(_) => Entry::Fogfv,

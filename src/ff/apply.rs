@@ -14,7 +14,7 @@ use super::error::{GlError, GlResult};
 use super::fragment::{BlendFactor, DepthRange, Face, Viewport};
 use super::geometry::Geometry;
 use super::light::MAX_LIGHTS;
-use super::matrix::{frustum, ortho, rotate, scale, translate};
+use super::matrix::{frustum, ortho, plane_to_eye, rotate, scale, translate};
 use super::state::{FixedState, PolygonModes, MAX_TEXTURE_UNITS};
 use super::texture::{
     blit, check_format_pair, check_image_size, image_size, PixelData, TexLevel, TextureObject,
@@ -219,6 +219,13 @@ impl FixedState {
                 }
                 self.scissor.value = Some(*b);
             }
+            Command::ClipPlane { plane, equation } => {
+                let slot = self
+                    .clip_planes
+                    .get_mut(usize::from(*plane))
+                    .ok_or(GlError::invalid_enum("CLIP_PLANEi beyond MAX_CLIP_PLANES"))?;
+                slot.value = plane_to_eye(*equation, mv);
+            }
             Command::Fog(p) => {
                 let mut fog = self.fog.value;
                 fog.set(*p)?;
@@ -276,6 +283,13 @@ impl FixedState {
             Capability::RegisterCombiners => self.register_combiners.enabled = on,
             Capability::Fog => self.fog.enabled = on,
             Capability::ScissorTest => self.scissor.enabled = on,
+            Capability::ClipPlane(i) => {
+                let plane = self
+                    .clip_planes
+                    .get_mut(usize::from(i))
+                    .ok_or(GlError::invalid_enum("CLIP_PLANEi beyond MAX_CLIP_PLANES"))?;
+                plane.enabled = on;
+            }
         }
         Ok(())
     }

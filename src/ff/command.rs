@@ -58,6 +58,8 @@ pub enum Capability {
     Fog,
     /// SCISSOR_TEST (§4.1.2).
     ScissorTest,
+    /// CLIP_PLANEi (§2.12); INVALID_ENUM for i ≥ MAX_CLIP_PLANES.
+    ClipPlane(u8),
 }
 
 /// glTexImage1D / glTexImage2D.
@@ -286,6 +288,12 @@ pub enum Command {
     Fog(FogParam),
     /// glScissor: a negative width or height is INVALID_VALUE.
     Scissor(ScissorBox),
+    /// glClipPlane(CLIP_PLANE0 + plane, equation), the equation in object coordinates;
+    /// plane < MAX_CLIP_PLANES, else INVALID_ENUM.
+    ClipPlane {
+        plane: u8,
+        equation: Vec4,
+    },
 
     // Framebuffer.
     Clear(ClearMask),

@@ -8,7 +8,7 @@
 //!
 //! A value may appear again under an alias (accepted when parsing, never printed or sent:
 //! the first entry is the canonical one). Indexed families (GL_LIGHTi, GL_TEXTUREi,
-//! GL_COMBINERi_NV) are not tables: `LIGHT0 + i`.
+//! GL_COMBINERi_NV, GL_CLIP_PLANEi) are not tables: `LIGHT0 + i`.
 
 use super::*;
 
@@ -72,6 +72,11 @@ pub fn light(i: u8) -> u32 {
 /// GL_TEXTUREi.
 pub fn texture_unit(i: u8) -> u32 {
     registry::TEXTURE0 + u32::from(i)
+}
+
+/// GL_CLIP_PLANEi.
+pub fn clip_plane(i: u8) -> u32 {
+    registry::CLIP_PLANE0 + u32::from(i)
 }
 
 /// GL_COMBINERi_NV.

@@ -55,7 +55,9 @@ pub use light::{
     Material, MaterialParam, Materials, MAX_LIGHTS,
 };
 pub use matrix::{MatrixMode, MatrixStack, ViewVolume};
-pub use state::{CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_TEXTURE_UNITS};
+pub use state::{
+    CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_CLIP_PLANES, MAX_TEXTURE_UNITS,
+};
 pub use texenv::{
     Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,
     TexEnvMode, TexEnvParam,

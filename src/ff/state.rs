@@ -28,6 +28,10 @@ use crate::vocab::PolygonOffset;
 /// pipelines need at least 4 image units).
 pub const MAX_TEXTURE_UNITS: usize = 8;
 
+/// GL_MAX_CLIP_PLANES modelled: Mesa's 8 (measured on llvmpipe's compatibility context,
+/// `tests/fidelity_clip_planes.rs`; GL 1.5 asks for at least 6).
+pub const MAX_CLIP_PLANES: usize = 8;
+
 /// The current vertex values (glColor, glNormal, glMultiTexCoord).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CurrentValues {
@@ -192,6 +196,11 @@ pub struct FixedState {
     /// height). The model does not know the window: `None` = never set = the whole target,
     /// so an enabled test without a box restricts nothing.
     pub scissor: Toggle<Option<ScissorBox>>,
+    /// CLIP_PLANEi with glClipPlane's plane in eye coordinates (§2.12): stored already
+    /// multiplied by the inverse of the modelview current when it was specified,
+    /// p′ = p·M⁻¹; a vertex is kept where p′·(x_e, y_e, z_e, w_e)ᵀ ≥ 0. GL default: all
+    /// disabled, (0, 0, 0, 0).
+    pub clip_planes: [Toggle<Vec4>; MAX_CLIP_PLANES],
 }
 
 impl Default for FixedState {
@@ -247,6 +256,7 @@ impl FixedState {
             clear: ClearValues::DEFAULT,
             fog: Toggle::off(Fog::DEFAULT),
             scissor: Toggle::off(None),
+            clip_planes: [Toggle::off(Vec4::ZERO); MAX_CLIP_PLANES],
         }
     }
 

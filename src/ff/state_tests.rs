@@ -50,6 +50,10 @@ fn initial_values() {
     assert_eq!(s.scissor.get(), None);
     assert_eq!(s.scissor.value, None);
     assert_eq!(s.scissor_box(), None);
+    assert!(s
+        .clip_planes
+        .iter()
+        .all(|p| !p.enabled && p.value == Vec4::ZERO));
     assert_eq!(s.error(), None);
 }
 
@@ -130,6 +134,17 @@ fn error_semantics_table() {
         ),
         (Command::LineWidth(0.0), InvalidValue),
         (Command::Fog(FogParam::Density(-0.5)), InvalidValue),
+        (
+            Command::ClipPlane {
+                plane: MAX_CLIP_PLANES as u8,
+                equation: Vec4::X,
+            },
+            InvalidEnum,
+        ),
+        (
+            Command::Enable(Capability::ClipPlane(MAX_CLIP_PLANES as u8)),
+            InvalidEnum,
+        ),
         (
             Command::Scissor(ScissorBox {
                 x: 0,
@@ -361,4 +376,21 @@ fn draw_leaves_the_last_vertex_values_current() {
         s.apply(&Command::Draw(g.into())).unwrap_err().kind,
         GlErrorKind::InvalidValue
     );
+}
+
+/// A clip plane is stored in eye space with the modelview of glClipPlane (§2.12):
+/// p′ = p·M⁻¹, so under glTranslatef(½, 0, 0) the plane −x ≥ 0 becomes −x_e + ½ ≥ 0.
+#[test]
+fn clip_planes_are_transformed_when_specified() {
+    let s = run(&[
+        Command::Translate(Vec3::new(0.5, 0.0, 0.0)),
+        Command::ClipPlane {
+            plane: 7,
+            equation: Vec4::new(-1.0, 0.0, 0.0, 0.0),
+        },
+        Command::LoadIdentity,
+        Command::Enable(Capability::ClipPlane(7)),
+    ]);
+    assert!(s.clip_planes[7].enabled);
+    assert_eq!(s.clip_planes[7].value, Vec4::new(-1.0, 0.0, 0.0, 0.5));
 }

@@ -54,6 +54,9 @@ fn capability(c: &Call) -> Res<Capability> {
     if let Ok(i) = c.family(0, Family::Light) {
         return Ok(Capability::Light(i));
     }
+    if let Ok(i) = c.family(0, Family::ClipPlane) {
+        return Ok(Capability::ClipPlane(i));
+    }
     c.enm(0).map_err(|e| match e {
         ScriptError::UnknownEnum {
             line,
@@ -63,6 +66,7 @@ fn capability(c: &Call) -> Res<Capability> {
             mut expected,
         } => {
             expected.push("GL_LIGHT0..GL_LIGHT7");
+            expected.push("GL_CLIP_PLANE0..GL_CLIP_PLANE5");
             ScriptError::UnknownEnum {
                 line,
                 call,

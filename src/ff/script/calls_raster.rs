@@ -1,6 +1,7 @@
 //! The converter of the raster calls added with GL 1.0–1.4 fog, scissor, clip planes, logic
 //! op and blending; `Ok(None)` for calls of other areas.
 
+use super::names::Family;
 use super::parse::Call;
 use super::ScriptError;
 use crate::ff::api::{CType, Entry};
@@ -66,6 +67,13 @@ fn fog(c: &Call) -> Res<FogParam> {
 pub(super) fn raster(c: &Call) -> Res<Option<Command>> {
     Ok(Some(match c.entry {
         Entry::Fogf | Entry::Fogi | Entry::Fogfv | Entry::Fogiv => Command::Fog(fog(c)?),
+        Entry::ClipPlane => {
+            c.count(2)?;
+            Command::ClipPlane {
+                plane: c.family(0, Family::ClipPlane)?,
+                equation: c.vec4_array(1)?,
+            }
+        }
         Entry::Scissor => {
             c.count(4)?;
             Command::Scissor(ScissorBox {

@@ -1,5 +1,5 @@
 //! The script's side of GL token names: the indexed families (GL_LIGHTi, GL_TEXTUREi,
-//! GL_COMBINERi_NV, with `GL_LIGHT0 + n` beyond the named tokens, as C allows) and the
+//! GL_COMBINERi_NV, GL_CLIP_PLANEi, with `GL_LIGHT0 + n` beyond the named tokens, as C allows) and the
 //! ranking of names in errors. The enum tables are `ff::glenum`'s and the calls
 //! `ff::api`'s, shared with both pipelines.
 
@@ -11,6 +11,7 @@ pub enum Family {
     Light,
     Texture,
     Combiner,
+    ClipPlane,
 }
 
 impl Family {
@@ -20,6 +21,7 @@ impl Family {
             Family::Light => ("GL_LIGHT", "", 8),
             Family::Texture => ("GL_TEXTURE", "", 32),
             Family::Combiner => ("GL_COMBINER", "_NV", 8),
+            Family::ClipPlane => ("GL_CLIP_PLANE", "", 6),
         }
     }
 
@@ -53,6 +55,7 @@ impl Family {
             Family::Light => "GL_LIGHT0..GL_LIGHT7",
             Family::Texture => "GL_TEXTURE0..GL_TEXTURE31",
             Family::Combiner => "GL_COMBINER0_NV..GL_COMBINER7_NV",
+            Family::ClipPlane => "GL_CLIP_PLANE0..GL_CLIP_PLANE5",
         }
     }
 }

@@ -55,6 +55,7 @@ fn b(v: bool) -> &'static str {
 fn capability(c: Capability) -> String {
     match c {
         Capability::Light(i) => Family::Light.print(i),
+        Capability::ClipPlane(i) => Family::ClipPlane.print(i),
         other => n(other).to_string(),
     }
 }
@@ -340,6 +341,13 @@ fn call(c: &Command) -> String {
         Command::LineWidth(w) => format!("{}({})", Entry::LineWidth, f(*w)),
         Command::PointSize(s) => format!("{}({})", Entry::PointSize, f(*s)),
         Command::Fog(p) => fog(p),
+        // glClipPlane reads doubles: the f32 values print exactly as doubles.
+        Command::ClipPlane { plane, equation } => format!(
+            "{}({}, (GLdouble[]){{{}}})",
+            Entry::ClipPlane,
+            Family::ClipPlane.print(*plane),
+            fs(&equation.to_array())
+        ),
         Command::Scissor(b) => format!(
             "{}({}, {}, {}, {})",
             Entry::Scissor,

@@ -440,6 +440,12 @@ fn sample_commands() -> Vec<Command> {
         Command::PointSize(0.5),
         Command::Enable(Capability::Fog),
         Command::Enable(Capability::ScissorTest),
+        Command::Enable(Capability::ClipPlane(7)),
+        Command::Disable(Capability::ClipPlane(2)),
+        Command::ClipPlane {
+            plane: 6,
+            equation: Vec4::new(0.5, -1.0, 0.0, 0.25),
+        },
         Command::Scissor(ScissorBox {
             x: -2,
             y: 3,

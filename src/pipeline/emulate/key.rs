@@ -12,7 +12,7 @@ use crate::ff::{
     AlphaTest, BaseFormat, ColorControl, ColorMaterialMode, Combine, CombineFunc, CombineOperand,
     CombineScale, CombineSource, CombinerInput, CompareFunc, CompareMode, DepthTextureMode, Face,
     FixedState, FogMode, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode,
-    TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
+    TextureTarget, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS,
 };
 use crate::vocab::Precision;
 
@@ -64,6 +64,9 @@ pub struct VertexUnitKey {
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct VertexKey {
     pub lighting: Option<LightingKey>,
+    /// The enabled user clip planes, ascending: each writes gl_ClipDistance[i] (the plane
+    /// itself is a uniform).
+    pub clip_planes: Vec<u8>,
     pub normalize: bool,
     pub rescale_normal: bool,
     pub units: Vec<VertexUnitKey>,
@@ -194,7 +197,12 @@ impl ShaderKey {
                 u.coords
                     .contains(&CoordSource::Generated(TexGenMode::SphereMap))
             });
+        let clip_planes = (0..MAX_CLIP_PLANES)
+            .filter(|&i| state.clip_planes[i].enabled)
+            .map(|i| i as u8)
+            .collect();
         let vertex = VertexKey {
+            clip_planes,
             normalize: normal_used && state.normalize,
             rescale_normal: normal_used && state.rescale_normal && !state.normalize,
             units: vertex_units,

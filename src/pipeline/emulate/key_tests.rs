@@ -664,6 +664,14 @@ fn same_code() -> Vec<Case> {
             ],
         ),
         same(
+            "a clip plane's equation is a uniform",
+            vec![Command::Enable(Capability::ClipPlane(2))],
+            vec![Command::ClipPlane {
+                plane: 2,
+                equation: Vec4::new(1.0, 2.0, 3.0, 4.0),
+            }],
+        ),
+        same(
             "the fog mode while fog is off",
             textured(),
             vec![Command::Fog(FogParam::Mode(FogMode::Linear))],
@@ -890,6 +898,19 @@ fn changed_code() -> Vec<Case> {
             "enabling register combiners",
             textured(),
             vec![Command::Enable(Capability::RegisterCombiners)],
+        ),
+        changes(
+            "enabling a clip plane",
+            textured(),
+            vec![Command::Enable(Capability::ClipPlane(5))],
+        ),
+        changes(
+            "another clip plane",
+            vec![Command::Enable(Capability::ClipPlane(0))],
+            vec![
+                Command::Disable(Capability::ClipPlane(0)),
+                Command::Enable(Capability::ClipPlane(1)),
+            ],
         ),
         changes(
             "enabling fog",

@@ -12,7 +12,7 @@ use super::conv;
 use super::polygon::PolygonPass;
 use crate::ff::{
     Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, OffsetEnables,
-    PolygonMode, ScissorBox, StencilTest, Viewport,
+    PolygonMode, ScissorBox, StencilTest, Viewport, MAX_CLIP_PLANES,
 };
 
 /// One piece of state as last sent (`None` = never sent).
@@ -48,6 +48,9 @@ pub struct RasterSync {
     /// glLineWidth; the point size is a uniform written to gl_PointSize.
     line_width: Sent<f32>,
     viewport: Sent<Viewport>,
+    /// The enabled user clip planes as bits: CLIP_DISTANCEi for plane i, which the
+    /// program writes (the key lists the same planes).
+    clip_planes: Sent<u8>,
     /// The scissor box in force (`None`: test off, or never set = the whole target).
     scissor: Sent<Option<ScissorBox>>,
     depth_range: Sent<DepthRange>,
@@ -78,6 +81,17 @@ impl RasterSync {
         let c = &mut self.counts;
         self.viewport.sync(s.viewport, c, |v| unsafe {
             gl.viewport(v.x, v.y, v.width, v.height)
+        });
+        let planes = s
+            .clip_planes
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| p.enabled)
+            .fold(0u8, |bits, (i, _)| bits | (1 << i));
+        self.clip_planes.sync(planes, c, |bits| {
+            for i in 0..MAX_CLIP_PLANES {
+                toggle(gl, glow::CLIP_DISTANCE0 + i as u32, bits & (1 << i) != 0);
+            }
         });
         // Also before a clear: glClear obeys the scissor (GL 1.5 §4.2.3).
         self.scissor.sync(s.scissor_box(), c, |b| unsafe {

@@ -157,6 +157,11 @@ impl Native {
             Command::LineWidth(w) => unsafe { g.LineWidth(*w) },
             Command::PointSize(s) => unsafe { g.PointSize(*s) },
             Command::Fog(p) => fog(g, *p),
+            // GL transforms the plane by the inverse modelview itself, as the model did.
+            Command::ClipPlane { plane, equation } => {
+                let e = equation.as_dvec4().to_array();
+                unsafe { g.ClipPlane(conv::clip_plane_name(*plane), e.as_ptr()) }
+            }
             Command::Scissor(b) => unsafe { g.Scissor(b.x, b.y, b.width, b.height) },
             Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
             Command::ClearColor(c) => unsafe { g.ClearColor(c.x, c.y, c.z, c.w) },
