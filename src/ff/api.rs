@@ -313,6 +313,7 @@ entry_points! {
     Fogiv = "glFogiv"(Form::Script, "GLenum pname, const GLint *params");
     Scissor = "glScissor"(Form::Script, "GLint x, GLint y, GLsizei width, GLsizei height");
     ClipPlane = "glClipPlane"(Form::Script, "GLenum plane, const GLdouble *equation");
+    LogicOp = "glLogicOp"(Form::Script, "GLenum opcode");
 
 }
 
@@ -583,6 +584,7 @@ impl Command {
             Command::LineWidth(_) => Entry::LineWidth,
             Command::PointSize(_) => Entry::PointSize,
             Command::Scissor(_) => Entry::Scissor,
+            Command::LogicOp(_) => Entry::LogicOp,
             Command::ClipPlane { .. } => Entry::ClipPlane,
             Command::Fog(p) => match p {
                 FogParam::Mode(_) => Entry::Fogi,

@@ -211,6 +211,7 @@ impl FixedState {
             Command::FrontFace(f) => self.front_face = *f,
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
             Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
+            Command::LogicOp(op) => self.logic_op.value = *op,
             Command::Scissor(b) => {
                 if b.width < 0 || b.height < 0 {
                     return Err(GlError::invalid_value(
@@ -283,6 +284,8 @@ impl FixedState {
             Capability::RegisterCombiners => self.register_combiners.enabled = on,
             Capability::Fog => self.fog.enabled = on,
             Capability::ScissorTest => self.scissor.enabled = on,
+            Capability::ColorLogicOp => self.logic_op.enabled = on,
+            Capability::IndexLogicOp => self.index_logic_op = on,
             Capability::ClipPlane(i) => {
                 let plane = self
                     .clip_planes

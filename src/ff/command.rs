@@ -19,8 +19,8 @@ use super::combiners::{
 };
 use super::fog::FogParam;
 use super::fragment::{
-    BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, PolygonMode, ScissorBox,
-    ShadeModel, StencilOp, Viewport,
+    BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, LogicOp, PolygonMode,
+    ScissorBox, ShadeModel, StencilOp, Viewport,
 };
 use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
@@ -60,6 +60,11 @@ pub enum Capability {
     ScissorTest,
     /// CLIP_PLANEi (§2.12); INVALID_ENUM for i ≥ MAX_CLIP_PLANES.
     ClipPlane(u8),
+    /// COLOR_LOGIC_OP (§4.1.10).
+    ColorLogicOp,
+    /// INDEX_LOGIC_OP (= GL 1.0's LOGIC_OP): colour-index mode only; recorded, no effect
+    /// in RGBA.
+    IndexLogicOp,
 }
 
 /// glTexImage1D / glTexImage2D.
@@ -286,6 +291,8 @@ pub enum Command {
     PointSize(f32),
     /// glFog: FOG_DENSITY < 0 is INVALID_VALUE.
     Fog(FogParam),
+    /// glLogicOp: one of the 16 opcodes of Table 4.4.
+    LogicOp(LogicOp),
     /// glScissor: a negative width or height is INVALID_VALUE.
     Scissor(ScissorBox),
     /// glClipPlane(CLIP_PLANE0 + plane, equation), the equation in object coordinates;

@@ -179,6 +179,69 @@ impl Blend {
     };
 }
 
+/// glLogicOp (GL 1.5 §4.1.10, Table 4.4): the colour written is op(s, d) bit by bit, s the
+/// fragment's colour and d the framebuffer's, as unsigned integers of the buffer's bits.
+/// GL default: COPY. While COLOR_LOGIC_OP is on, blending is off (§4.1.10).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum LogicOp {
+    /// 0
+    Clear,
+    /// s ∧ d
+    And,
+    /// s ∧ ¬d
+    AndReverse,
+    /// s
+    Copy,
+    /// ¬s ∧ d
+    AndInverted,
+    /// d
+    Noop,
+    /// s ⊕ d
+    Xor,
+    /// s ∨ d
+    Or,
+    /// ¬(s ∨ d)
+    Nor,
+    /// ¬(s ⊕ d)
+    Equiv,
+    /// ¬d
+    Invert,
+    /// s ∨ ¬d
+    OrReverse,
+    /// ¬s
+    CopyInverted,
+    /// ¬s ∨ d
+    OrInverted,
+    /// ¬(s ∧ d)
+    Nand,
+    /// all 1
+    Set,
+}
+
+impl LogicOp {
+    /// Table 4.4 on one 8-bit component.
+    pub fn apply(self, s: u8, d: u8) -> u8 {
+        match self {
+            LogicOp::Clear => 0,
+            LogicOp::And => s & d,
+            LogicOp::AndReverse => s & !d,
+            LogicOp::Copy => s,
+            LogicOp::AndInverted => !s & d,
+            LogicOp::Noop => d,
+            LogicOp::Xor => s ^ d,
+            LogicOp::Or => s | d,
+            LogicOp::Nor => !(s | d),
+            LogicOp::Equiv => !(s ^ d),
+            LogicOp::Invert => !d,
+            LogicOp::OrReverse => s | !d,
+            LogicOp::CopyInverted => !s,
+            LogicOp::OrInverted => !s | d,
+            LogicOp::Nand => !(s & d),
+            LogicOp::Set => 0xff,
+        }
+    }
+}
+
 /// glColorMask. GL default: all TRUE.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct ColorMask {
@@ -337,6 +400,34 @@ mod tests {
         ];
         for (f, a, b, want) in table {
             assert_eq!(f.passes(a, b), want, "{f:?} {a} {b}");
+        }
+    }
+
+    /// Table 4.4 on the patterns s = 1100, d = 1010: each opcode's truth table.
+    #[test]
+    fn logic_ops_follow_table_4_4() {
+        use LogicOp::*;
+        let (s, d) = (0b1100, 0b1010);
+        let table = [
+            (Clear, 0b0000),
+            (And, 0b1000),
+            (AndReverse, 0b0100),
+            (Copy, 0b1100),
+            (AndInverted, 0b0010),
+            (Noop, 0b1010),
+            (Xor, 0b0110),
+            (Or, 0b1110),
+            (Nor, 0b0001),
+            (Equiv, 0b1001),
+            (Invert, 0b0101),
+            (OrReverse, 0b1101),
+            (CopyInverted, 0b0011),
+            (OrInverted, 0b1011),
+            (Nand, 0b0111),
+            (Set, 0b1111),
+        ];
+        for (op, want) in table {
+            assert_eq!(op.apply(s, d) & 0b1111, want, "{op:?}");
         }
     }
 

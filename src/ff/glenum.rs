@@ -121,6 +121,28 @@ gl_enums!(Capability {
     REGISTER_COMBINERS_NV => Capability::RegisterCombiners,
     FOG => Capability::Fog,
     SCISSOR_TEST => Capability::ScissorTest,
+    COLOR_LOGIC_OP => Capability::ColorLogicOp,
+    INDEX_LOGIC_OP => Capability::IndexLogicOp,
+    LOGIC_OP => Capability::IndexLogicOp,
+});
+
+gl_enums!(LogicOp {
+    CLEAR => LogicOp::Clear,
+    AND => LogicOp::And,
+    AND_REVERSE => LogicOp::AndReverse,
+    COPY => LogicOp::Copy,
+    AND_INVERTED => LogicOp::AndInverted,
+    NOOP => LogicOp::Noop,
+    XOR => LogicOp::Xor,
+    OR => LogicOp::Or,
+    NOR => LogicOp::Nor,
+    EQUIV => LogicOp::Equiv,
+    INVERT => LogicOp::Invert,
+    OR_REVERSE => LogicOp::OrReverse,
+    COPY_INVERTED => LogicOp::CopyInverted,
+    OR_INVERTED => LogicOp::OrInverted,
+    NAND => LogicOp::Nand,
+    SET => LogicOp::Set,
 });
 
 gl_enums!(FogMode {

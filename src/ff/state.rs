@@ -12,7 +12,7 @@ use super::combiners::RegisterCombiners;
 use super::error::GlError;
 use super::fog::Fog;
 use super::fragment::{
-    AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace,
+    AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace, LogicOp,
     OffsetEnables, PolygonMode, ScissorBox, ShadeModel, StencilTest, Toggle, Viewport,
 };
 use super::light::{ColorMaterial, Light, LightModel, Materials, MAX_LIGHTS};
@@ -201,6 +201,11 @@ pub struct FixedState {
     /// p′ = p·M⁻¹; a vertex is kept where p′·(x_e, y_e, z_e, w_e)ᵀ ≥ 0. GL default: all
     /// disabled, (0, 0, 0, 0).
     pub clip_planes: [Toggle<Vec4>; MAX_CLIP_PLANES],
+    /// COLOR_LOGIC_OP with glLogicOp. GL default: disabled, COPY. While enabled, blending
+    /// is not applied (§4.1.10).
+    pub logic_op: Toggle<LogicOp>,
+    /// INDEX_LOGIC_OP. GL default: FALSE; no effect on an RGBA framebuffer.
+    pub index_logic_op: bool,
 }
 
 impl Default for FixedState {
@@ -257,6 +262,8 @@ impl FixedState {
             fog: Toggle::off(Fog::DEFAULT),
             scissor: Toggle::off(None),
             clip_planes: [Toggle::off(Vec4::ZERO); MAX_CLIP_PLANES],
+            logic_op: Toggle::off(LogicOp::Copy),
+            index_logic_op: false,
         }
     }
 

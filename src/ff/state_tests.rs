@@ -50,6 +50,9 @@ fn initial_values() {
     assert_eq!(s.scissor.get(), None);
     assert_eq!(s.scissor.value, None);
     assert_eq!(s.scissor_box(), None);
+    assert_eq!(s.logic_op.get(), None);
+    assert_eq!(s.logic_op.value, LogicOp::Copy);
+    assert!(!s.index_logic_op);
     assert!(s
         .clip_planes
         .iter()

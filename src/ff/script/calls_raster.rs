@@ -74,6 +74,7 @@ pub(super) fn raster(c: &Call) -> Res<Option<Command>> {
                 equation: c.vec4_array(1)?,
             }
         }
+        Entry::LogicOp => c.count(1).and(c.enm(0)).map(Command::LogicOp)?,
         Entry::Scissor => {
             c.count(4)?;
             Command::Scissor(ScissorBox {

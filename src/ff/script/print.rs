@@ -341,6 +341,7 @@ fn call(c: &Command) -> String {
         Command::LineWidth(w) => format!("{}({})", Entry::LineWidth, f(*w)),
         Command::PointSize(s) => format!("{}({})", Entry::PointSize, f(*s)),
         Command::Fog(p) => fog(p),
+        Command::LogicOp(op) => format!("{}({})", Entry::LogicOp, n(*op)),
         // glClipPlane reads doubles: the f32 values print exactly as doubles.
         Command::ClipPlane { plane, equation } => format!(
             "{}({}, (GLdouble[]){{{}}})",

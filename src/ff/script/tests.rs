@@ -440,6 +440,9 @@ fn sample_commands() -> Vec<Command> {
         Command::PointSize(0.5),
         Command::Enable(Capability::Fog),
         Command::Enable(Capability::ScissorTest),
+        Command::Enable(Capability::ColorLogicOp),
+        Command::Disable(Capability::IndexLogicOp),
+        Command::LogicOp(LogicOp::OrReverse),
         Command::Enable(Capability::ClipPlane(7)),
         Command::Disable(Capability::ClipPlane(2)),
         Command::ClipPlane {

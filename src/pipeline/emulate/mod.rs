@@ -30,7 +30,7 @@ use self::cache::ProgramCache;
 use self::draw::GeometryCache;
 use self::key::ShaderKey;
 use self::program::Program;
-use self::sync::RasterSync;
+use self::sync::{LogicOpCall, RasterSync};
 use self::textures::Textures;
 use super::core::{Core, Issue, PathPipeline};
 use super::{Counters, PipelineError, Readback};
@@ -75,7 +75,7 @@ impl EmulatedPipeline {
             programs: ProgramCache::default(),
             geometry: GeometryCache::default(),
             textures: Textures::default(),
-            raster: RasterSync::default(),
+            raster: RasterSync::new(LogicOpCall::load(ctx)),
             precision: Precision::Float,
         };
         Ok(PathPipeline::from_parts(core, path))

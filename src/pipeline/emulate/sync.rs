@@ -11,9 +11,35 @@ use glow::HasContext;
 use super::conv;
 use super::polygon::PolygonPass;
 use crate::ff::{
-    Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, OffsetEnables,
+    Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, LogicOp, OffsetEnables,
     PolygonMode, ScissorBox, StencilTest, Viewport, MAX_CLIP_PLANES,
 };
+
+/// glLogicOp of the core context: glow 0.16 has no wrapper for it, so the entry point is
+/// looked up once when the pipeline is made (`None`: the driver has none; COLOR_LOGIC_OP
+/// is still toggled, with the driver's opcode).
+#[derive(Clone, Copy, Default)]
+pub struct LogicOpCall(Option<unsafe extern "system" fn(u32)>);
+
+impl LogicOpCall {
+    pub fn load(ctx: &crate::gpu::GpuContext) -> LogicOpCall {
+        let p = ctx.proc_address("glLogicOp");
+        // SAFETY: a non-null address from the context's loader is glLogicOp, whose C type
+        // is void (GLenum); `Option<fn>` has the same layout as a nullable pointer.
+        LogicOpCall(unsafe {
+            std::mem::transmute::<*const std::ffi::c_void, Option<unsafe extern "system" fn(u32)>>(
+                p,
+            )
+        })
+    }
+
+    fn call(self, op: u32) {
+        if let Some(f) = self.0 {
+            // SAFETY: glLogicOp on the current context.
+            unsafe { f(op) }
+        }
+    }
+}
 
 /// One piece of state as last sent (`None` = never sent).
 struct Sent<T>(Option<T>);
@@ -48,6 +74,10 @@ pub struct RasterSync {
     /// glLineWidth; the point size is a uniform written to gl_PointSize.
     line_width: Sent<f32>,
     viewport: Sent<Viewport>,
+    /// COLOR_LOGIC_OP with its opcode (core GL has glLogicOp and, like GL 1.x, blends
+    /// nothing while it is on).
+    logic_op: Sent<Option<LogicOp>>,
+    logic_op_call: LogicOpCall,
     /// The enabled user clip planes as bits: CLIP_DISTANCEi for plane i, which the
     /// program writes (the key lists the same planes).
     clip_planes: Sent<u8>,
@@ -69,6 +99,14 @@ fn toggle(gl: &glow::Context, cap: u32, on: bool) {
 }
 
 impl RasterSync {
+    /// A sync that sends glLogicOp through `logic_op`.
+    pub fn new(logic_op: LogicOpCall) -> RasterSync {
+        RasterSync {
+            logic_op_call: logic_op,
+            ..RasterSync::default()
+        }
+    }
+
     /// Calls sent and skipped so far.
     pub fn counts(&self) -> (u64, u64) {
         self.counts
@@ -146,6 +184,13 @@ impl RasterSync {
                 gl.blend_func(conv::value(b.src), conv::value(b.dst));
             }
         });
+        let call = self.logic_op_call;
+        self.logic_op.sync(s.logic_op.get(), c, |op| {
+            toggle(gl, glow::COLOR_LOGIC_OP, op.is_some());
+            if let Some(op) = op {
+                call.call(conv::value(op));
+            }
+        });
         // A pass offsets in its own mode only (`polygon`); a clear sends the state's enables.
         let enables = match pass {
             Some(p) => OffsetEnables {
@@ -189,7 +234,7 @@ impl RasterSync {
     /// Forget what was sent (after something else touched GL state).
     pub fn invalidate(&mut self) {
         let counts = self.counts;
-        *self = RasterSync::default();
+        *self = RasterSync::new(self.logic_op_call);
         self.counts = counts;
     }
 }

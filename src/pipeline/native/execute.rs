@@ -162,6 +162,7 @@ impl Native {
                 let e = equation.as_dvec4().to_array();
                 unsafe { g.ClipPlane(conv::clip_plane_name(*plane), e.as_ptr()) }
             }
+            Command::LogicOp(op) => unsafe { g.LogicOp(conv::value(*op)) },
             Command::Scissor(b) => unsafe { g.Scissor(b.x, b.y, b.width, b.height) },
             Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
             Command::ClearColor(c) => unsafe { g.ClearColor(c.x, c.y, c.z, c.w) },
