@@ -314,6 +314,9 @@ entry_points! {
     Scissor = "glScissor"(Form::Script, "GLint x, GLint y, GLsizei width, GLsizei height");
     ClipPlane = "glClipPlane"(Form::Script, "GLenum plane, const GLdouble *equation");
     LogicOp = "glLogicOp"(Form::Script, "GLenum opcode");
+    BlendColor = "glBlendColor"(Form::Script, "GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha");
+    BlendEquation = "glBlendEquation"(Form::Script, "GLenum mode");
+    BlendFuncSeparate = "glBlendFuncSeparate"(Form::Script, "GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha");
 
 }
 
@@ -585,6 +588,9 @@ impl Command {
             Command::PointSize(_) => Entry::PointSize,
             Command::Scissor(_) => Entry::Scissor,
             Command::LogicOp(_) => Entry::LogicOp,
+            Command::BlendFuncSeparate { .. } => Entry::BlendFuncSeparate,
+            Command::BlendEquation(_) => Entry::BlendEquation,
+            Command::BlendColor(_) => Entry::BlendColor,
             Command::ClipPlane { .. } => Entry::ClipPlane,
             Command::Fog(p) => match p {
                 FogParam::Mode(_) => Entry::Fogi,

@@ -179,16 +179,24 @@ impl FixedState {
             }
             Command::StencilMask(m) => self.stencil_test.value.write_mask = *m,
             Command::BlendFunc { src, dst } => {
-                if *dst == BlendFactor::SrcAlphaSaturate {
-                    return Err(GlError::invalid_enum(
-                        "SRC_ALPHA_SATURATE is a source factor only",
-                    ));
-                }
-                self.blend.value = super::fragment::Blend {
-                    src: *src,
-                    dst: *dst,
-                };
+                let dst = check_destination(*dst)?;
+                let b = &mut self.blend.value;
+                (b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha) = (*src, dst, *src, dst);
             }
+            Command::BlendFuncSeparate {
+                src_rgb,
+                dst_rgb,
+                src_alpha,
+                dst_alpha,
+            } => {
+                let (dst_rgb, dst_alpha) =
+                    (check_destination(*dst_rgb)?, check_destination(*dst_alpha)?);
+                let b = &mut self.blend.value;
+                (b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha) =
+                    (*src_rgb, dst_rgb, *src_alpha, dst_alpha);
+            }
+            Command::BlendEquation(e) => self.blend.value.equation = *e,
+            Command::BlendColor(c) => self.blend_color = c.clamp(Vec4::ZERO, Vec4::ONE),
             Command::ColorMask(m) => self.color_mask = *m,
             Command::PolygonOffset { factor, units } => {
                 self.polygon_offset = crate::vocab::PolygonOffset {
@@ -467,6 +475,17 @@ fn unit_clamp(v: f32) -> f32 {
     } else {
         v.clamp(0.0, 1.0)
     }
+}
+
+/// SRC_ALPHA_SATURATE is a source factor only (GL 1.5 Table 4.2): INVALID_ENUM as a
+/// destination.
+fn check_destination(f: BlendFactor) -> GlResult<BlendFactor> {
+    if f == BlendFactor::SrcAlphaSaturate {
+        return Err(GlError::invalid_enum(
+            "SRC_ALPHA_SATURATE is a source factor only",
+        ));
+    }
+    Ok(f)
 }
 
 fn check_unit(unit: u8) -> GlResult<usize> {

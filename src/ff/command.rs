@@ -19,8 +19,8 @@ use super::combiners::{
 };
 use super::fog::FogParam;
 use super::fragment::{
-    BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, LogicOp, PolygonMode,
-    ScissorBox, ShadeModel, StencilOp, Viewport,
+    BlendEquation, BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, LogicOp,
+    PolygonMode, ScissorBox, ShadeModel, StencilOp, Viewport,
 };
 use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
@@ -274,6 +274,17 @@ pub enum Command {
         src: BlendFactor,
         dst: BlendFactor,
     },
+    /// glBlendFuncSeparate (GL 1.4): SRC_ALPHA_SATURATE as a destination factor is
+    /// INVALID_ENUM.
+    BlendFuncSeparate {
+        src_rgb: BlendFactor,
+        dst_rgb: BlendFactor,
+        src_alpha: BlendFactor,
+        dst_alpha: BlendFactor,
+    },
+    BlendEquation(BlendEquation),
+    /// glBlendColor, clamped to [0, 1] when set.
+    BlendColor(Vec4),
     ColorMask(ColorMask),
     PolygonOffset {
         factor: f32,

@@ -148,7 +148,8 @@ impl StencilTest {
     };
 }
 
-/// glBlendFunc factors (GL 1.5 Table 4.2).
+/// glBlendFunc / glBlendFuncSeparate factors (GL 1.5 Table 4.2), c the constant colour of
+/// glBlendColor.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum BlendFactor {
     Zero,
@@ -163,19 +164,51 @@ pub enum BlendFactor {
     OneMinusDstAlpha,
     /// Source factor only: (f, f, f, 1) with f = min(As, 1 − Ad).
     SrcAlphaSaturate,
+    /// (Rc, Gc, Bc, Ac)
+    ConstantColor,
+    /// (1, 1, 1, 1) − (Rc, Gc, Bc, Ac)
+    OneMinusConstantColor,
+    /// (Ac, Ac, Ac, Ac)
+    ConstantAlpha,
+    /// 1 − Ac on every component
+    OneMinusConstantAlpha,
 }
 
-/// glBlendFunc. GL default: ONE, ZERO.
+/// glBlendEquation (GL 1.5 §4.1.7): s, d the source and destination colours, S, D their
+/// factors. GL default: FUNC_ADD. MIN and MAX ignore the factors.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BlendEquation {
+    /// s·S + d·D
+    FuncAdd,
+    /// s·S − d·D
+    FuncSubtract,
+    /// d·D − s·S
+    FuncReverseSubtract,
+    /// min(s, d)
+    Min,
+    /// max(s, d)
+    Max,
+}
+
+/// glBlendFuncSeparate (glBlendFunc sets the RGB and alpha factors alike) and
+/// glBlendEquation. GL default: ONE, ZERO for both, FUNC_ADD. The constant colour is
+/// `FixedState::blend_color`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Blend {
-    pub src: BlendFactor,
-    pub dst: BlendFactor,
+    pub src_rgb: BlendFactor,
+    pub dst_rgb: BlendFactor,
+    pub src_alpha: BlendFactor,
+    pub dst_alpha: BlendFactor,
+    pub equation: BlendEquation,
 }
 
 impl Blend {
     pub const ONE_ZERO: Self = Self {
-        src: BlendFactor::One,
-        dst: BlendFactor::Zero,
+        src_rgb: BlendFactor::One,
+        dst_rgb: BlendFactor::Zero,
+        src_alpha: BlendFactor::One,
+        dst_alpha: BlendFactor::Zero,
+        equation: BlendEquation::FuncAdd,
     };
 }
 

@@ -185,6 +185,18 @@ gl_enums!(BlendFactor {
     DST_ALPHA => BlendFactor::DstAlpha,
     ONE_MINUS_DST_ALPHA => BlendFactor::OneMinusDstAlpha,
     SRC_ALPHA_SATURATE => BlendFactor::SrcAlphaSaturate,
+    CONSTANT_COLOR => BlendFactor::ConstantColor,
+    ONE_MINUS_CONSTANT_COLOR => BlendFactor::OneMinusConstantColor,
+    CONSTANT_ALPHA => BlendFactor::ConstantAlpha,
+    ONE_MINUS_CONSTANT_ALPHA => BlendFactor::OneMinusConstantAlpha,
+});
+
+gl_enums!(BlendEquation {
+    FUNC_ADD => BlendEquation::FuncAdd,
+    FUNC_SUBTRACT => BlendEquation::FuncSubtract,
+    FUNC_REVERSE_SUBTRACT => BlendEquation::FuncReverseSubtract,
+    MIN => BlendEquation::Min,
+    MAX => BlendEquation::Max,
 });
 
 gl_enums!(Face {

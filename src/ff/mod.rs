@@ -45,9 +45,9 @@ pub use command::{Capability, Command, CopyTexImage, ReadPixels, TexData, TexIma
 pub use error::{GlError, GlErrorKind, GlResult};
 pub use fog::{Fog, FogMode, FogParam};
 pub use fragment::{
-    AlphaTest, Blend, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc, DepthRange,
-    DepthTest, Face, FrontFace, LogicOp, OffsetEnables, PolygonMode, ScissorBox, ShadeModel,
-    StencilOp, StencilTest, Toggle, Viewport,
+    AlphaTest, Blend, BlendEquation, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc,
+    DepthRange, DepthTest, Face, FrontFace, LogicOp, OffsetEnables, PolygonMode, ScissorBox,
+    ShadeModel, StencilOp, StencilTest, Toggle, Viewport,
 };
 pub use geometry::{Geometry, Primitive};
 pub use light::{

@@ -169,8 +169,10 @@ pub struct FixedState {
     pub depth_test: Toggle<DepthTest>,
     /// STENCIL_TEST. GL default: disabled, [`StencilTest::DEFAULT`].
     pub stencil_test: Toggle<StencilTest>,
-    /// BLEND. GL default: disabled, ONE, ZERO.
+    /// BLEND. GL default: disabled, ONE, ZERO (RGB and alpha), FUNC_ADD.
     pub blend: Toggle<Blend>,
+    /// glBlendColor's constant colour c, clamped to [0, 1] when set. GL default: (0,0,0,0).
+    pub blend_color: Vec4,
     /// GL default: all TRUE.
     pub color_mask: ColorMask,
     /// GL default: factor 0, units 0.
@@ -244,6 +246,7 @@ impl FixedState {
             depth_test: Toggle::off(DepthTest::LESS_WRITE),
             stencil_test: Toggle::off(StencilTest::DEFAULT),
             blend: Toggle::off(Blend::ONE_ZERO),
+            blend_color: Vec4::ZERO,
             color_mask: ColorMask::ALL,
             polygon_offset: PolygonOffset {
                 factor: 0.0,

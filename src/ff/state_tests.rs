@@ -50,6 +50,8 @@ fn initial_values() {
     assert_eq!(s.scissor.get(), None);
     assert_eq!(s.scissor.value, None);
     assert_eq!(s.scissor_box(), None);
+    assert_eq!(s.blend.value.equation, BlendEquation::FuncAdd);
+    assert_eq!(s.blend_color, Vec4::ZERO);
     assert_eq!(s.logic_op.get(), None);
     assert_eq!(s.logic_op.value, LogicOp::Copy);
     assert!(!s.index_logic_op);
@@ -137,6 +139,15 @@ fn error_semantics_table() {
         ),
         (Command::LineWidth(0.0), InvalidValue),
         (Command::Fog(FogParam::Density(-0.5)), InvalidValue),
+        (
+            Command::BlendFuncSeparate {
+                src_rgb: BlendFactor::ConstantColor,
+                dst_rgb: BlendFactor::Zero,
+                src_alpha: BlendFactor::One,
+                dst_alpha: BlendFactor::SrcAlphaSaturate,
+            },
+            InvalidEnum,
+        ),
         (
             Command::ClipPlane {
                 plane: MAX_CLIP_PLANES as u8,
@@ -396,4 +407,35 @@ fn clip_planes_are_transformed_when_specified() {
     ]);
     assert!(s.clip_planes[7].enabled);
     assert_eq!(s.clip_planes[7].value, Vec4::new(-1.0, 0.0, 0.0, 0.5));
+}
+
+/// glBlendFunc sets the RGB and alpha factors alike; glBlendColor clamps to [0, 1].
+#[test]
+fn blend_func_sets_both_factor_pairs_and_blend_color_clamps() {
+    let s = run(&[
+        Command::BlendFuncSeparate {
+            src_rgb: BlendFactor::ConstantAlpha,
+            dst_rgb: BlendFactor::One,
+            src_alpha: BlendFactor::SrcAlphaSaturate,
+            dst_alpha: BlendFactor::OneMinusConstantColor,
+        },
+        Command::BlendFunc {
+            src: BlendFactor::SrcAlpha,
+            dst: BlendFactor::OneMinusSrcAlpha,
+        },
+        Command::BlendEquation(BlendEquation::Max),
+        Command::BlendColor(Vec4::new(-1.0, 0.5, 2.0, f32::INFINITY)),
+    ]);
+    let b = s.blend.value;
+    assert_eq!(
+        (b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha, b.equation),
+        (
+            BlendFactor::SrcAlpha,
+            BlendFactor::OneMinusSrcAlpha,
+            BlendFactor::SrcAlpha,
+            BlendFactor::OneMinusSrcAlpha,
+            BlendEquation::Max
+        )
+    );
+    assert_eq!(s.blend_color, Vec4::new(0.0, 0.5, 1.0, 1.0));
 }

@@ -74,6 +74,17 @@ pub(super) fn raster(c: &Call) -> Res<Option<Command>> {
                 equation: c.vec4_array(1)?,
             }
         }
+        Entry::BlendColor => c.count(4).and(c.vec4_args(0)).map(Command::BlendColor)?,
+        Entry::BlendEquation => c.count(1).and(c.enm(0)).map(Command::BlendEquation)?,
+        Entry::BlendFuncSeparate => {
+            c.count(4)?;
+            Command::BlendFuncSeparate {
+                src_rgb: c.enm(0)?,
+                dst_rgb: c.enm(1)?,
+                src_alpha: c.enm(2)?,
+                dst_alpha: c.enm(3)?,
+            }
+        }
         Entry::LogicOp => c.count(1).and(c.enm(0)).map(Command::LogicOp)?,
         Entry::Scissor => {
             c.count(4)?;

@@ -341,6 +341,21 @@ fn call(c: &Command) -> String {
         Command::LineWidth(w) => format!("{}({})", Entry::LineWidth, f(*w)),
         Command::PointSize(s) => format!("{}({})", Entry::PointSize, f(*s)),
         Command::Fog(p) => fog(p),
+        Command::BlendColor(c) => format!("{}({})", Entry::BlendColor, fs(&c.to_array())),
+        Command::BlendEquation(e) => format!("{}({})", Entry::BlendEquation, n(*e)),
+        Command::BlendFuncSeparate {
+            src_rgb,
+            dst_rgb,
+            src_alpha,
+            dst_alpha,
+        } => format!(
+            "{}({}, {}, {}, {})",
+            Entry::BlendFuncSeparate,
+            n(*src_rgb),
+            n(*dst_rgb),
+            n(*src_alpha),
+            n(*dst_alpha)
+        ),
         Command::LogicOp(op) => format!("{}({})", Entry::LogicOp, n(*op)),
         // glClipPlane reads doubles: the f32 values print exactly as doubles.
         Command::ClipPlane { plane, equation } => format!(

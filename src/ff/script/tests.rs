@@ -443,6 +443,14 @@ fn sample_commands() -> Vec<Command> {
         Command::Enable(Capability::ColorLogicOp),
         Command::Disable(Capability::IndexLogicOp),
         Command::LogicOp(LogicOp::OrReverse),
+        Command::BlendColor(Vec4::new(0.25, 0.5, 0.75, 1.0)),
+        Command::BlendEquation(BlendEquation::FuncReverseSubtract),
+        Command::BlendFuncSeparate {
+            src_rgb: BlendFactor::ConstantColor,
+            dst_rgb: BlendFactor::OneMinusConstantAlpha,
+            src_alpha: BlendFactor::SrcAlphaSaturate,
+            dst_alpha: BlendFactor::Zero,
+        },
         Command::Enable(Capability::ClipPlane(7)),
         Command::Disable(Capability::ClipPlane(2)),
         Command::ClipPlane {

@@ -6,6 +6,7 @@
 //! both outcomes are counted.
 
 use crate::vocab::PolygonOffset;
+use glam::Vec4;
 use glow::HasContext;
 
 use super::conv;
@@ -66,7 +67,8 @@ impl<T> Default for Sent<T> {
 pub struct RasterSync {
     depth: Sent<Option<DepthTest>>,
     stencil: Sent<Option<StencilTest>>,
-    blend: Sent<Option<Blend>>,
+    /// BLEND with its factors and equation, and the constant colour.
+    blend: Sent<(Option<Blend>, Vec4)>,
     color_mask: Sent<ColorMask>,
     offset: Sent<(OffsetEnables, PolygonOffset)>,
     cull: Sent<(Option<Face>, FrontFace)>,
@@ -178,12 +180,20 @@ impl RasterSync {
             );
             gl.stencil_mask(t.write_mask);
         });
-        self.blend.sync(s.blend.get(), c, |b| unsafe {
-            toggle(gl, glow::BLEND, b.is_some());
-            if let Some(b) = b {
-                gl.blend_func(conv::value(b.src), conv::value(b.dst));
-            }
-        });
+        self.blend
+            .sync((s.blend.get(), s.blend_color), c, |(b, k)| unsafe {
+                toggle(gl, glow::BLEND, b.is_some());
+                if let Some(b) = b {
+                    gl.blend_func_separate(
+                        conv::value(b.src_rgb),
+                        conv::value(b.dst_rgb),
+                        conv::value(b.src_alpha),
+                        conv::value(b.dst_alpha),
+                    );
+                    gl.blend_equation(conv::value(b.equation));
+                    gl.blend_color(k.x, k.y, k.z, k.w);
+                }
+            });
         let call = self.logic_op_call;
         self.logic_op.sync(s.logic_op.get(), c, |op| {
             toggle(gl, glow::COLOR_LOGIC_OP, op.is_some());

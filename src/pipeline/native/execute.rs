@@ -162,6 +162,21 @@ impl Native {
                 let e = equation.as_dvec4().to_array();
                 unsafe { g.ClipPlane(conv::clip_plane_name(*plane), e.as_ptr()) }
             }
+            Command::BlendFuncSeparate {
+                src_rgb,
+                dst_rgb,
+                src_alpha,
+                dst_alpha,
+            } => unsafe {
+                g.BlendFuncSeparate(
+                    conv::value(*src_rgb),
+                    conv::value(*dst_rgb),
+                    conv::value(*src_alpha),
+                    conv::value(*dst_alpha),
+                )
+            },
+            Command::BlendEquation(e) => unsafe { g.BlendEquation(conv::value(*e)) },
+            Command::BlendColor(c) => unsafe { g.BlendColor(c.x, c.y, c.z, c.w) },
             Command::LogicOp(op) => unsafe { g.LogicOp(conv::value(*op)) },
             Command::Scissor(b) => unsafe { g.Scissor(b.x, b.y, b.width, b.height) },
             Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
