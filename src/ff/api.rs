@@ -316,6 +316,7 @@ entry_points! {
     LogicOp = "glLogicOp"(Form::Script, "GLenum opcode");
     BlendColor = "glBlendColor"(Form::Script, "GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha");
     BlendEquation = "glBlendEquation"(Form::Script, "GLenum mode");
+    Hint = "glHint"(Form::Script, "GLenum target, GLenum mode");
     BlendFuncSeparate = "glBlendFuncSeparate"(Form::Script, "GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha");
 
 }
@@ -588,6 +589,7 @@ impl Command {
             Command::PointSize(_) => Entry::PointSize,
             Command::Scissor(_) => Entry::Scissor,
             Command::LogicOp(_) => Entry::LogicOp,
+            Command::Hint { .. } => Entry::Hint,
             Command::BlendFuncSeparate { .. } => Entry::BlendFuncSeparate,
             Command::BlendEquation(_) => Entry::BlendEquation,
             Command::BlendColor(_) => Entry::BlendColor,

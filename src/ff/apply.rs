@@ -220,6 +220,7 @@ impl FixedState {
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
             Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
             Command::LogicOp(op) => self.logic_op.value = *op,
+            Command::Hint { target, mode } => self.hints.set(*target, *mode),
             Command::Scissor(b) => {
                 if b.width < 0 || b.height < 0 {
                     return Err(GlError::invalid_value(
@@ -294,6 +295,7 @@ impl FixedState {
             Capability::ScissorTest => self.scissor.enabled = on,
             Capability::ColorLogicOp => self.logic_op.enabled = on,
             Capability::IndexLogicOp => self.index_logic_op = on,
+            Capability::Dither => self.dither = on,
             Capability::ClipPlane(i) => {
                 let plane = self
                     .clip_planes

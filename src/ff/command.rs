@@ -19,8 +19,8 @@ use super::combiners::{
 };
 use super::fog::FogParam;
 use super::fragment::{
-    BlendEquation, BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, LogicOp,
-    PolygonMode, ScissorBox, ShadeModel, StencilOp, Viewport,
+    BlendEquation, BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, HintMode,
+    HintTarget, LogicOp, PolygonMode, ScissorBox, ShadeModel, StencilOp, Viewport,
 };
 use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
@@ -62,6 +62,8 @@ pub enum Capability {
     ClipPlane(u8),
     /// COLOR_LOGIC_OP (§4.1.10).
     ColorLogicOp,
+    /// DITHER (§4.1.9); enabled initially. State only.
+    Dither,
     /// INDEX_LOGIC_OP (= GL 1.0's LOGIC_OP): colour-index mode only; recorded, no effect
     /// in RGBA.
     IndexLogicOp,
@@ -302,6 +304,11 @@ pub enum Command {
     PointSize(f32),
     /// glFog: FOG_DENSITY < 0 is INVALID_VALUE.
     Fog(FogParam),
+    /// glHint (§5.6): an unknown target or mode is INVALID_ENUM (the script rejects it).
+    Hint {
+        target: HintTarget,
+        mode: HintMode,
+    },
     /// glLogicOp: one of the 16 opcodes of Table 4.4.
     LogicOp(LogicOp),
     /// glScissor: a negative width or height is INVALID_VALUE.

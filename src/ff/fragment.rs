@@ -15,8 +15,8 @@ pub struct Toggle<T> {
 }
 
 impl<T: Copy> Toggle<T> {
-    /// Disabled, holding `value` (every capability starts disabled except DITHER and
-    /// MULTISAMPLE, neither modelled here).
+    /// Disabled, holding `value` (every capability starts disabled except DITHER, a plain
+    /// `bool` in `FixedState`, and MULTISAMPLE, not modelled).
     pub const fn off(value: T) -> Self {
         Self {
             enabled: false,
@@ -272,6 +272,57 @@ impl LogicOp {
             LogicOp::Nand => !(s & d),
             LogicOp::Set => 0xff,
         }
+    }
+}
+
+/// glHint targets (GL 1.5 §5.6, Table 5.7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum HintTarget {
+    PerspectiveCorrection,
+    PointSmooth,
+    LineSmooth,
+    PolygonSmooth,
+    Fog,
+}
+
+/// glHint modes. GL default: DONT_CARE for every target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum HintMode {
+    Fastest,
+    Nicest,
+    DontCare,
+}
+
+/// The hints: how an implementation may trade quality for speed. State only: neither
+/// path changes its arithmetic for them (Mesa's llvmpipe ignores them too).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Hints {
+    pub perspective_correction: HintMode,
+    pub point_smooth: HintMode,
+    pub line_smooth: HintMode,
+    pub polygon_smooth: HintMode,
+    pub fog: HintMode,
+}
+
+impl Hints {
+    pub const DEFAULT: Self = Self {
+        perspective_correction: HintMode::DontCare,
+        point_smooth: HintMode::DontCare,
+        line_smooth: HintMode::DontCare,
+        polygon_smooth: HintMode::DontCare,
+        fog: HintMode::DontCare,
+    };
+
+    /// glHint(target, mode).
+    pub fn set(&mut self, target: HintTarget, mode: HintMode) {
+        let slot = match target {
+            HintTarget::PerspectiveCorrection => &mut self.perspective_correction,
+            HintTarget::PointSmooth => &mut self.point_smooth,
+            HintTarget::LineSmooth => &mut self.line_smooth,
+            HintTarget::PolygonSmooth => &mut self.polygon_smooth,
+            HintTarget::Fog => &mut self.fog,
+        };
+        *slot = mode;
     }
 }
 

@@ -121,6 +121,7 @@ gl_enums!(Capability {
     REGISTER_COMBINERS_NV => Capability::RegisterCombiners,
     FOG => Capability::Fog,
     SCISSOR_TEST => Capability::ScissorTest,
+    DITHER => Capability::Dither,
     COLOR_LOGIC_OP => Capability::ColorLogicOp,
     INDEX_LOGIC_OP => Capability::IndexLogicOp,
     LOGIC_OP => Capability::IndexLogicOp,
@@ -143,6 +144,20 @@ gl_enums!(LogicOp {
     OR_INVERTED => LogicOp::OrInverted,
     NAND => LogicOp::Nand,
     SET => LogicOp::Set,
+});
+
+gl_enums!(HintTarget {
+    PERSPECTIVE_CORRECTION_HINT => HintTarget::PerspectiveCorrection,
+    POINT_SMOOTH_HINT => HintTarget::PointSmooth,
+    LINE_SMOOTH_HINT => HintTarget::LineSmooth,
+    POLYGON_SMOOTH_HINT => HintTarget::PolygonSmooth,
+    FOG_HINT => HintTarget::Fog,
+});
+
+gl_enums!(HintMode {
+    FASTEST => HintMode::Fastest,
+    NICEST => HintMode::Nicest,
+    DONT_CARE => HintMode::DontCare,
 });
 
 gl_enums!(FogMode {

@@ -46,8 +46,8 @@ pub use error::{GlError, GlErrorKind, GlResult};
 pub use fog::{Fog, FogMode, FogParam};
 pub use fragment::{
     AlphaTest, Blend, BlendEquation, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc,
-    DepthRange, DepthTest, Face, FrontFace, LogicOp, OffsetEnables, PolygonMode, ScissorBox,
-    ShadeModel, StencilOp, StencilTest, Toggle, Viewport,
+    DepthRange, DepthTest, Face, FrontFace, HintMode, HintTarget, Hints, LogicOp, OffsetEnables,
+    PolygonMode, ScissorBox, ShadeModel, StencilOp, StencilTest, Toggle, Viewport,
 };
 pub use geometry::{Geometry, Primitive};
 pub use light::{

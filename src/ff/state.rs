@@ -12,8 +12,8 @@ use super::combiners::RegisterCombiners;
 use super::error::GlError;
 use super::fog::Fog;
 use super::fragment::{
-    AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace, LogicOp,
-    OffsetEnables, PolygonMode, ScissorBox, ShadeModel, StencilTest, Toggle, Viewport,
+    AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace, Hints,
+    LogicOp, OffsetEnables, PolygonMode, ScissorBox, ShadeModel, StencilTest, Toggle, Viewport,
 };
 use super::light::{ColorMaterial, Light, LightModel, Materials, MAX_LIGHTS};
 use super::matrix::{
@@ -208,6 +208,11 @@ pub struct FixedState {
     pub logic_op: Toggle<LogicOp>,
     /// INDEX_LOGIC_OP. GL default: FALSE; no effect on an RGBA framebuffer.
     pub index_logic_op: bool,
+    /// DITHER (§4.1.9). GL default: TRUE. State only: an 8-bit target has nothing to
+    /// dither on llvmpipe, and the emulated path leaves core GL's own DITHER as it is.
+    pub dither: bool,
+    /// glHint. GL default: DONT_CARE for every target; state only.
+    pub hints: Hints,
 }
 
 impl Default for FixedState {
@@ -267,6 +272,8 @@ impl FixedState {
             clip_planes: [Toggle::off(Vec4::ZERO); MAX_CLIP_PLANES],
             logic_op: Toggle::off(LogicOp::Copy),
             index_logic_op: false,
+            dither: true,
+            hints: Hints::DEFAULT,
         }
     }
 

@@ -55,6 +55,8 @@ fn initial_values() {
     assert_eq!(s.logic_op.get(), None);
     assert_eq!(s.logic_op.value, LogicOp::Copy);
     assert!(!s.index_logic_op);
+    assert!(s.dither);
+    assert_eq!(s.hints, Hints::DEFAULT);
     assert!(s
         .clip_planes
         .iter()

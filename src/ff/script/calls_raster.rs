@@ -1,5 +1,5 @@
 //! The converter of the raster calls added with GL 1.0–1.4 fog, scissor, clip planes, logic
-//! op and blending; `Ok(None)` for calls of other areas.
+//! op and blending, and glHint; `Ok(None)` for calls of other areas.
 
 use super::names::Family;
 use super::parse::Call;
@@ -83,6 +83,13 @@ pub(super) fn raster(c: &Call) -> Res<Option<Command>> {
                 dst_rgb: c.enm(1)?,
                 src_alpha: c.enm(2)?,
                 dst_alpha: c.enm(3)?,
+            }
+        }
+        Entry::Hint => {
+            c.count(2)?;
+            Command::Hint {
+                target: c.enm(0)?,
+                mode: c.enm(1)?,
             }
         }
         Entry::LogicOp => c.count(1).and(c.enm(0)).map(Command::LogicOp)?,

@@ -356,6 +356,9 @@ fn call(c: &Command) -> String {
             n(*src_alpha),
             n(*dst_alpha)
         ),
+        Command::Hint { target, mode } => {
+            format!("{}({}, {})", Entry::Hint, n(*target), n(*mode))
+        }
         Command::LogicOp(op) => format!("{}({})", Entry::LogicOp, n(*op)),
         // glClipPlane reads doubles: the f32 values print exactly as doubles.
         Command::ClipPlane { plane, equation } => format!(

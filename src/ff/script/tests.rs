@@ -443,6 +443,11 @@ fn sample_commands() -> Vec<Command> {
         Command::Enable(Capability::ColorLogicOp),
         Command::Disable(Capability::IndexLogicOp),
         Command::LogicOp(LogicOp::OrReverse),
+        Command::Disable(Capability::Dither),
+        Command::Hint {
+            target: HintTarget::Fog,
+            mode: HintMode::Nicest,
+        },
         Command::BlendColor(Vec4::new(0.25, 0.5, 0.75, 1.0)),
         Command::BlendEquation(BlendEquation::FuncReverseSubtract),
         Command::BlendFuncSeparate {

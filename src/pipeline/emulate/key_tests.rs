@@ -34,7 +34,7 @@ use crate::ff::{
     TexCoord, TexData, TexEnvMode, TexEnvParam, TexFormat, TexGenMode, TexGenParam, TexImage,
     TexParam, TexSubImage, TextureTarget, ViewVolume, Viewport, Wrap,
 };
-use crate::ff::{FogMode, FogParam};
+use crate::ff::{FogMode, FogParam, HintMode, HintTarget};
 use crate::pipeline::emulate::shadergen;
 
 /// What a case's change should do to the code (and so to the key).
@@ -670,6 +670,21 @@ fn same_code() -> Vec<Case> {
                 plane: 2,
                 equation: Vec4::new(1.0, 2.0, 3.0, 4.0),
             }],
+        ),
+        same(
+            "DITHER and the hints are state only",
+            vec![Command::Enable(Capability::Fog)],
+            vec![
+                Command::Disable(Capability::Dither),
+                Command::Hint {
+                    target: HintTarget::Fog,
+                    mode: HintMode::Nicest,
+                },
+                Command::Hint {
+                    target: HintTarget::PerspectiveCorrection,
+                    mode: HintMode::Fastest,
+                },
+            ],
         ),
         same(
             "the fog mode while fog is off",

@@ -177,6 +177,9 @@ impl Native {
             },
             Command::BlendEquation(e) => unsafe { g.BlendEquation(conv::value(*e)) },
             Command::BlendColor(c) => unsafe { g.BlendColor(c.x, c.y, c.z, c.w) },
+            Command::Hint { target, mode } => unsafe {
+                g.Hint(conv::value(*target), conv::value(*mode))
+            },
             Command::LogicOp(op) => unsafe { g.LogicOp(conv::value(*op)) },
             Command::Scissor(b) => unsafe { g.Scissor(b.x, b.y, b.width, b.height) },
             Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
