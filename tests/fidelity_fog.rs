@@ -16,6 +16,7 @@ mod fidelity;
 mod support;
 
 use fidelity::{compare, probe_rgb, run_both, script_file, Frame};
+use fixedfunc::vocab::{PipelineKind, Precision};
 use support::Tolerance;
 
 const FRAME: Frame = Frame::new(64, 32);
@@ -76,5 +77,78 @@ glEnd();
                 probe_rgb(&out.image, x, y, [128, 128, 128], 1);
             }
         }
+    }
+}
+
+/// A receding quad, orange towards blue fog, LINEAR 1…20; `extra` comes before the draw.
+fn receding(extra: &str) -> String {
+    format!(
+        "glViewport(0, 0, 64, 32);
+glClearColor(0, 0, 0, 0);
+glClear(GL_COLOR_BUFFER_BIT);
+glMatrixMode(GL_PROJECTION);
+glLoadIdentity();
+glFrustum(-1, 1, -0.5, 0.5, 1, 30);
+glMatrixMode(GL_MODELVIEW);
+glLoadIdentity();
+glEnable(GL_FOG);
+glFogi(GL_FOG_MODE, GL_LINEAR);
+glFogf(GL_FOG_START, 1);
+glFogf(GL_FOG_END, 20);
+glFogfv(GL_FOG_COLOR, (GLfloat[]){{0.1, 0.3, 0.9, 1}});
+{extra}glColor4f(1, 0.5, 0.1, 0.75);
+glBegin(GL_QUADS);
+glVertex3f(-2, -1, -2);
+glVertex3f(2, -1, -2);
+glVertex3f(25, 12.5, -25);
+glVertex3f(-25, 12.5, -25);
+glEnd();
+"
+    )
+}
+
+/// Under register combiners the final combiner applies fog (NV_register_combiners): with
+/// A = FOG.a (the factor f), B = PRIMARY_COLOR, C = FOG.rgb (the fog colour), D = 0 and
+/// G = PRIMARY_COLOR.a, the emulated combiners compute f·C + (1 − f)·C_f, which is GL's fog —
+/// so they must draw what Mesa's native fog draws without combiners (which Mesa lacks).
+/// 3/255 on ≥ 99% of the pixels; a FOG register still reading (0, 0, 0, 1) gives the bare
+/// primary colour and fails by up to 204/255 on blue where f = 0.
+#[test]
+fn the_combiners_fog_register_holds_the_fog_colour_and_factor() {
+    let combiners =
+        "glFinalCombinerInputNV(GL_VARIABLE_A_NV, GL_FOG, GL_UNSIGNED_IDENTITY_NV, GL_ALPHA);
+glFinalCombinerInputNV(GL_VARIABLE_B_NV, GL_PRIMARY_COLOR_NV, GL_UNSIGNED_IDENTITY_NV, GL_RGB);
+glFinalCombinerInputNV(GL_VARIABLE_C_NV, GL_FOG, GL_UNSIGNED_IDENTITY_NV, GL_RGB);
+glFinalCombinerInputNV(GL_VARIABLE_D_NV, GL_ZERO, GL_UNSIGNED_IDENTITY_NV, GL_RGB);
+glFinalCombinerInputNV(GL_VARIABLE_G_NV, GL_PRIMARY_COLOR_NV, GL_UNSIGNED_IDENTITY_NV, GL_ALPHA);
+glEnable(GL_REGISTER_COMBINERS_NV);
+";
+    let plain = fidelity::parse(&receding(""));
+    let with_combiners = fidelity::parse(&receding(combiners));
+    let tol = Tolerance {
+        per_channel: 3,
+        max_bad_pixels: (FRAME.width * FRAME.height / 100) as usize,
+    };
+    for backend in support::HEADLESS {
+        let native = fidelity::run_one(
+            PipelineKind::Native,
+            Precision::Float,
+            backend,
+            FRAME,
+            &plain,
+        );
+        let emulate = fidelity::run_one(
+            PipelineKind::Emulate,
+            Precision::Float,
+            backend,
+            FRAME,
+            &with_combiners,
+        );
+        support::assert_images_match(
+            &format!("fog-combiners-{backend}"),
+            &emulate.image,
+            &native.image,
+            tol,
+        );
     }
 }
