@@ -6,7 +6,7 @@
 //!   applying fog before the texture (MODULATE by grey 128) instead of after it moves the
 //!   fogged pixels by (1 − f)·C_f/2 — half the fog colour where f = 0, 127/255 on blue —
 //!   and fails it; so do a wrong
-//!   mode formula or a per-vertex factor.
+//!   mode formula or a per-vertex factor. `Precision::Fixed8` is held to the same bound.
 //! - The distance rule: with FOG_COORDINATE_SOURCE = FRAGMENT_DEPTH Mesa fogs by |z_eye|
 //!   (`ffvertex_prog.c`, FDM_EYE_PLANE_ABS), measured here: a quad at z_eye = −10 spanning
 //!   the whole view under LINEAR 0…20 is fogged by exactly f = ½ at its centre and at its
@@ -27,7 +27,18 @@ fn fog_modes_match_native_on_quads_lines_and_points() {
         per_channel: 3,
         max_bad_pixels: (FRAME.width * FRAME.height / 100) as usize,
     };
-    for p in compare("fog", &script_file("fog"), FRAME, tol) {
+    let pairs = compare("fog", &script_file("fog"), FRAME, tol);
+    // Precision::Fixed8 fogs the 0..=255 stage values and rounds to the nearest integer:
+    // the same tolerance against Mesa.
+    let fixed8 = fidelity::run_one(
+        PipelineKind::Emulate,
+        Precision::Fixed8,
+        support::HEADLESS[0],
+        FRAME,
+        &fidelity::parse(&script_file("fog")),
+    );
+    support::assert_images_match("fog-fixed8", &fixed8.image, &pairs[0].native.image, tol);
+    for p in pairs {
         // Not vacuous: the far end of the LINEAR quad (z_eye ≈ −24, f = 0) is the fog
         // colour (0.2, 0.4, 1) on both paths; its near end (z ≈ −2, f = 18/19) is close
         // to the textured colour (1, 0.8, 0.6)·128/255.

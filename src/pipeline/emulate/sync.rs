@@ -1,9 +1,8 @@
-//! The raster state that stays GL state on the core path (depth, stencil, blend, masks,
-//! polygon offset, culling, polygon mode, line width, point size, viewport, scissor, depth
-//! range),
-//! synced before each draw
-//! through a shadow copy of what was last sent: an unchanged value is not sent again, and
-//! both outcomes are counted.
+//! The raster state that stays GL state on the core path (depth, stencil, blend with its
+//! equation and constant colour, logic op, masks, polygon offset, culling, polygon mode,
+//! line width, viewport, scissor, the CLIP_DISTANCE enables of the user clip planes, depth
+//! range), synced before each draw through a shadow copy of what was last sent: an
+//! unchanged value is not sent again, and both outcomes are counted.
 
 use crate::vocab::PolygonOffset;
 use glam::Vec4;
