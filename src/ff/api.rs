@@ -316,8 +316,8 @@ entry_points! {
     LogicOp = "glLogicOp"(Form::Script, "GLenum opcode");
     BlendColor = "glBlendColor"(Form::Script, "GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha");
     BlendEquation = "glBlendEquation"(Form::Script, "GLenum mode");
-    Hint = "glHint"(Form::Script, "GLenum target, GLenum mode");
     BlendFuncSeparate = "glBlendFuncSeparate"(Form::Script, "GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha");
+    Hint = "glHint"(Form::Script, "GLenum target, GLenum mode");
 
 }
 
