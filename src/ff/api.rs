@@ -12,6 +12,7 @@ use std::sync::OnceLock;
 
 use super::combiners::CombinerParam;
 use super::command::Command;
+use super::fog::FogParam;
 use super::light::{LightModelParam, LightParam, MaterialParam};
 use super::texenv::TexEnvParam;
 use super::texgen::TexGenParam;
@@ -316,6 +317,18 @@ macro_rules! gl_entry_table {
         DrawRangeElements = glDrawRangeElements(Script; mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, r#type: GLenum, indices: *const c_void);
         ArrayElement = glArrayElement(Script; i: GLint);
         InterleavedArrays = glInterleavedArrays(Script; format: GLenum, stride: GLsizei, pointer: *const c_void);
+        // Fog, scissor, clip planes, logic op, blending (GL 1.0–1.4), hints.
+        Fogf = glFogf(Script; pname: GLenum, param: GLfloat);
+        Fogi = glFogi(Script; pname: GLenum, param: GLint);
+        Fogfv = glFogfv(Script; pname: GLenum, params: *const GLfloat);
+        Fogiv = glFogiv(Script; pname: GLenum, params: *const GLint);
+        Scissor = glScissor(Script; x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+        ClipPlane = glClipPlane(Script; plane: GLenum, equation: *const GLdouble);
+        LogicOp = glLogicOp(Script; opcode: GLenum);
+        BlendColor = glBlendColor(Script; red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
+        BlendEquation = glBlendEquation(Script; mode: GLenum);
+        BlendFuncSeparate = glBlendFuncSeparate(Script; sfactorRGB: GLenum, dfactorRGB: GLenum, sfactorAlpha: GLenum, dfactorAlpha: GLenum);
+        Hint = glHint(Script; target: GLenum, mode: GLenum);
         // Attribute stacks (ff::attrib).
         PushAttrib = glPushAttrib(Script; mask: GLbitfield);
         PopAttrib = glPopAttrib(Script; );
@@ -711,6 +724,18 @@ impl Command {
             Command::FrontFace(_) => Entry::FrontFace,
             Command::LineWidth(_) => Entry::LineWidth,
             Command::PointSize(_) => Entry::PointSize,
+            Command::Scissor(_) => Entry::Scissor,
+            Command::LogicOp(_) => Entry::LogicOp,
+            Command::Hint { .. } => Entry::Hint,
+            Command::BlendFuncSeparate { .. } => Entry::BlendFuncSeparate,
+            Command::BlendEquation(_) => Entry::BlendEquation,
+            Command::BlendColor(_) => Entry::BlendColor,
+            Command::ClipPlane { .. } => Entry::ClipPlane,
+            Command::Fog(p) => match p {
+                FogParam::Mode(_) => Entry::Fogi,
+                FogParam::Color(_) => Entry::Fogfv,
+                _ => Entry::Fogf,
+            },
             Command::Clear(_) => Entry::Clear,
             Command::ClearColor(_) => Entry::ClearColor,
             Command::ClearDepth(_) => Entry::ClearDepth,

@@ -14,7 +14,7 @@ use super::error::{GlError, GlResult};
 use super::fragment::{DepthRange, Face, Viewport};
 use super::geometry::Geometry;
 use super::light::MAX_LIGHTS;
-use super::matrix::{frustum, ortho, rotate, scale, translate};
+use super::matrix::{frustum, ortho, plane_to_eye, rotate, scale, translate};
 use super::state::{FixedState, PolygonModes, MAX_TEXTURE_UNITS};
 use super::texture::{
     blit, check_format_pair, check_image_size, image_size, PixelData, TexLevel, TextureObject,
@@ -185,14 +185,24 @@ impl FixedState {
             }
             Command::StencilMask(m) => self.stencil_test.value.write_mask = *m,
             // GL 1.5 Table 4.2 makes SRC_ALPHA_SATURATE a source factor only; Mesa 22.3.6
-            // accepts it as the destination factor too (as GL 4.4 does), and the layer
-            // follows Mesa (tests/c/errors.c, checked against Mesa's OSMesa).
+            // accepts it as a destination factor too (as GL 4.4 does), and the layer follows
+            // Mesa (tests/c/errors.c, checked against Mesa's OSMesa).
             Command::BlendFunc { src, dst } => {
-                self.blend.value = super::fragment::Blend {
-                    src: *src,
-                    dst: *dst,
-                };
+                let b = &mut self.blend.value;
+                (b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha) = (*src, *dst, *src, *dst);
             }
+            Command::BlendFuncSeparate {
+                src_rgb,
+                dst_rgb,
+                src_alpha,
+                dst_alpha,
+            } => {
+                let b = &mut self.blend.value;
+                (b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha) =
+                    (*src_rgb, *dst_rgb, *src_alpha, *dst_alpha);
+            }
+            Command::BlendEquation(e) => self.blend.value.equation = *e,
+            Command::BlendColor(c) => self.blend_color = c.clamp(Vec4::ZERO, Vec4::ONE),
             Command::ColorMask(m) => self.color_mask = *m,
             Command::PolygonOffset { factor, units } => {
                 self.polygon_offset = crate::vocab::PolygonOffset {
@@ -215,6 +225,28 @@ impl FixedState {
             Command::FrontFace(f) => self.front_face = *f,
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
             Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
+            Command::LogicOp(op) => self.logic_op.value = *op,
+            Command::Hint { target, mode } => self.hints.set(*target, *mode),
+            Command::Scissor(b) => {
+                if b.width < 0 || b.height < 0 {
+                    return Err(GlError::invalid_value(
+                        "Scissor width and height must be ≥ 0",
+                    ));
+                }
+                self.scissor.value = Some(*b);
+            }
+            Command::ClipPlane { plane, equation } => {
+                let slot = self
+                    .clip_planes
+                    .get_mut(usize::from(*plane))
+                    .ok_or(GlError::invalid_enum("CLIP_PLANEi beyond MAX_CLIP_PLANES"))?;
+                slot.value = plane_to_eye(*equation, mv);
+            }
+            Command::Fog(p) => {
+                let mut fog = self.fog.value;
+                fog.set(*p)?;
+                self.fog.value = fog;
+            }
             Command::Clear(_) => {}
             // Clamped to [0, 1]: ±∞ → 1, 0; NaN → 0 (glam's clamp is max then min, and
             // Rust's max drops a NaN). Mesa measured alike (`tests/fidelity_nonfinite.rs`).
@@ -267,6 +299,18 @@ impl FixedState {
             Capability::PolygonOffsetLine => self.offset_enables.line = on,
             Capability::PolygonOffsetPoint => self.offset_enables.point = on,
             Capability::RegisterCombiners => self.register_combiners.enabled = on,
+            Capability::Fog => self.fog.enabled = on,
+            Capability::ScissorTest => self.scissor.enabled = on,
+            Capability::ColorLogicOp => self.logic_op.enabled = on,
+            Capability::IndexLogicOp => self.index_logic_op = on,
+            Capability::Dither => self.dither = on,
+            Capability::ClipPlane(i) => {
+                let plane = self
+                    .clip_planes
+                    .get_mut(usize::from(i))
+                    .ok_or(GlError::invalid_enum("CLIP_PLANEi beyond MAX_CLIP_PLANES"))?;
+                plane.enabled = on;
+            }
         }
         Ok(())
     }
@@ -443,6 +487,8 @@ fn unit_clamp(v: f32) -> f32 {
     }
 }
 
+/// SRC_ALPHA_SATURATE is a source factor only (GL 1.5 Table 4.2): INVALID_ENUM as a
+/// destination.
 fn check_unit(unit: u8) -> GlResult<usize> {
     let u = usize::from(unit);
     if u >= MAX_TEXTURE_UNITS {

@@ -21,6 +21,7 @@
 
 use super::command::{Capability, Command};
 use super::error::{GlError, GlResult};
+use super::fog::FogParam;
 use super::fragment::Face;
 use super::glenum::{registry, GlEnum};
 use super::light::{LightModelParam, LightParam, MaterialParam};
@@ -174,21 +175,26 @@ impl FixedState {
                 self.shade_model = s.shade_model;
             }
             AttribGroup::Texture => self.restore_textures(s),
-            // MATRIX_MODE, NORMALIZE, RESCALE_NORMAL (clip planes are not modelled).
+            // MATRIX_MODE, NORMALIZE, RESCALE_NORMAL, the clip planes and their enables.
             AttribGroup::Transform => {
                 self.matrix_mode = s.matrix_mode;
                 self.normalize = s.normalize;
                 self.rescale_normal = s.rescale_normal;
+                self.clip_planes = s.clip_planes;
             }
             AttribGroup::Viewport => {
                 self.viewport = s.viewport;
                 self.depth_range = s.depth_range;
             }
-            // Alpha test, blending, colour write mask, clear colour (dither, logic op and
-            // draw buffer are not modelled).
+            // Alpha test, blending and its colour, logic op, dither, colour write mask,
+            // clear colour (the draw buffer is not modelled).
             AttribGroup::ColorBuffer => {
                 self.alpha_test = s.alpha_test;
                 self.blend = s.blend;
+                self.blend_color = s.blend_color;
+                self.logic_op = s.logic_op;
+                self.index_logic_op = s.index_logic_op;
+                self.dither = s.dither;
                 self.color_mask = s.color_mask;
                 self.clear.color = s.clear.color;
             }
@@ -211,15 +217,15 @@ impl FixedState {
             }
             AttribGroup::Line => self.line_width = s.line_width,
             AttribGroup::Point => self.point_size = s.point_size,
+            AttribGroup::Fog => self.fog = s.fog,
+            AttribGroup::Scissor => self.scissor = s.scissor,
+            AttribGroup::Hint => self.hints = s.hints,
             // Not modelled yet: nothing saved, nothing restored.
             AttribGroup::PolygonStipple
             | AttribGroup::PixelMode
-            | AttribGroup::Fog
             | AttribGroup::AccumBuffer
-            | AttribGroup::Hint
             | AttribGroup::Eval
             | AttribGroup::List
-            | AttribGroup::Scissor
             | AttribGroup::Multisample => {}
         }
     }
@@ -247,6 +253,14 @@ impl FixedState {
         self.cull_face.enabled = s.cull_face.enabled;
         self.offset_enables = s.offset_enables;
         self.register_combiners.enabled = s.register_combiners.enabled;
+        self.fog.enabled = s.fog.enabled;
+        self.scissor.enabled = s.scissor.enabled;
+        for (p, saved) in self.clip_planes.iter_mut().zip(&s.clip_planes) {
+            p.enabled = saved.enabled;
+        }
+        self.logic_op.enabled = s.logic_op.enabled;
+        self.index_logic_op = s.index_logic_op;
+        self.dither = s.dither;
     }
 
     /// TEXTURE_BIT: the active unit, every unit's enables, bindings, environment and
@@ -313,6 +327,18 @@ impl FixedState {
             AttribGroup::Transform => {
                 out.push(toggle(Capability::Normalize, self.normalize));
                 out.push(toggle(Capability::RescaleNormal, self.rescale_normal));
+                // The planes are stored in eye coordinates: sent under an identity
+                // modelview they arrive unchanged.
+                out.push(Command::MatrixMode(MatrixMode::Modelview));
+                out.push(Command::LoadIdentity);
+                for (i, p) in self.clip_planes.iter().enumerate() {
+                    out.push(Command::ClipPlane {
+                        plane: i as u8,
+                        equation: p.value,
+                    });
+                    out.push(toggle(Capability::ClipPlane(i as u8), p.enabled));
+                }
+                out.push(Command::LoadMatrix(self.modelview.top()));
             }
             AttribGroup::Viewport => {
                 out.push(Command::Viewport(self.viewport));
@@ -329,10 +355,17 @@ impl FixedState {
                     reference: a.value.reference,
                 });
                 out.push(toggle(Capability::Blend, b.enabled));
-                out.push(Command::BlendFunc {
-                    src: b.value.src,
-                    dst: b.value.dst,
+                out.push(Command::BlendFuncSeparate {
+                    src_rgb: b.value.src_rgb,
+                    dst_rgb: b.value.dst_rgb,
+                    src_alpha: b.value.src_alpha,
+                    dst_alpha: b.value.dst_alpha,
                 });
+                out.push(Command::BlendEquation(b.value.equation));
+                out.push(Command::BlendColor(self.blend_color));
+                out.push(toggle(Capability::ColorLogicOp, self.logic_op.enabled));
+                out.push(Command::LogicOp(self.logic_op.value));
+                out.push(toggle(Capability::Dither, self.dither));
                 out.push(Command::ColorMask(self.color_mask));
                 out.push(Command::ClearColor(self.clear.color));
             }
@@ -380,14 +413,35 @@ impl FixedState {
             }
             AttribGroup::Line => out.push(Command::LineWidth(self.line_width)),
             AttribGroup::Point => out.push(Command::PointSize(self.point_size)),
+            AttribGroup::Fog => {
+                let f = self.fog;
+                out.push(toggle(Capability::Fog, f.enabled));
+                for p in [
+                    FogParam::Mode(f.value.mode),
+                    FogParam::Density(f.value.density),
+                    FogParam::Start(f.value.start),
+                    FogParam::End(f.value.end),
+                    FogParam::Color(f.value.color),
+                ] {
+                    out.push(Command::Fog(p));
+                }
+            }
+            AttribGroup::Scissor => {
+                out.push(toggle(Capability::ScissorTest, self.scissor.enabled));
+                if let Some(b) = self.scissor.value {
+                    out.push(Command::Scissor(b));
+                }
+            }
+            AttribGroup::Hint => {
+                for (target, mode) in self.hints.all() {
+                    out.push(Command::Hint { target, mode });
+                }
+            }
             AttribGroup::PolygonStipple
             | AttribGroup::PixelMode
-            | AttribGroup::Fog
             | AttribGroup::AccumBuffer
-            | AttribGroup::Hint
             | AttribGroup::Eval
             | AttribGroup::List
-            | AttribGroup::Scissor
             | AttribGroup::Multisample => {}
         }
     }
@@ -416,6 +470,14 @@ impl FixedState {
         out.push(toggle(Capability::PolygonOffsetFill, e.fill));
         out.push(toggle(Capability::PolygonOffsetLine, e.line));
         out.push(toggle(Capability::PolygonOffsetPoint, e.point));
+        out.push(toggle(Capability::Fog, self.fog.enabled));
+        out.push(toggle(Capability::ScissorTest, self.scissor.enabled));
+        for (i, p) in self.clip_planes.iter().enumerate() {
+            out.push(toggle(Capability::ClipPlane(i as u8), p.enabled));
+        }
+        out.push(toggle(Capability::ColorLogicOp, self.logic_op.enabled));
+        out.push(toggle(Capability::IndexLogicOp, self.index_logic_op));
+        out.push(toggle(Capability::Dither, self.dither));
     }
 
     fn unit_enable_commands(&self, unit: &TextureUnit, out: &mut Vec<Command>) {
@@ -617,7 +679,7 @@ mod tests {
         assert!(!s.blend.enabled, "ENABLE_BIT restores BLEND");
         assert_eq!(s.depth_test.value.func, CompareFunc::Less);
         assert_eq!(
-            s.blend.value.src,
+            s.blend.value.src_rgb,
             BlendFactor::SrcAlpha,
             "COLOR_BUFFER not pushed"
         );

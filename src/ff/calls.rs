@@ -27,6 +27,7 @@ pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
         texturing,
         combiners,
         super::calls_attrib::attrib,
+        super::calls_raster::raster,
     ] {
         if let Some(cmd) = area(c)? {
             return Ok(cmd);
@@ -56,8 +57,13 @@ fn capability<A: Args>(c: &A) -> Result<Capability, A::Error> {
     if let Ok(i) = c.family(0, Family::Light) {
         return Ok(Capability::Light(i));
     }
-    c.enm(0)
-        .map_err(|e| c.also_expected(e, "GL_LIGHT0..GL_LIGHT7"))
+    if let Ok(i) = c.family(0, Family::ClipPlane) {
+        return Ok(Capability::ClipPlane(i));
+    }
+    c.enm(0).map_err(|e| {
+        let e = c.also_expected(e, "GL_LIGHT0..GL_LIGHT7");
+        c.also_expected(e, "GL_CLIP_PLANE0..GL_CLIP_PLANE5")
+    })
 }
 
 /// Matrices, viewport, enables, per-fragment operations, clears and readback.

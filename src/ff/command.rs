@@ -21,9 +21,10 @@ use super::attrib::AttribMask;
 use super::combiners::{
     CombinerInput, CombinerOutput, CombinerParam, FinalVariable, Portion, Variable,
 };
+use super::fog::FogParam;
 use super::fragment::{
-    BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, PolygonMode, ShadeModel,
-    StencilOp, Viewport,
+    BlendEquation, BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, HintMode,
+    HintTarget, LogicOp, PolygonMode, ScissorBox, ShadeModel, StencilOp, Viewport,
 };
 use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
@@ -57,6 +58,19 @@ pub enum Capability {
     PolygonOffsetPoint,
     /// REGISTER_COMBINERS_NV.
     RegisterCombiners,
+    /// FOG (GL 1.5 §3.10).
+    Fog,
+    /// SCISSOR_TEST (§4.1.2).
+    ScissorTest,
+    /// CLIP_PLANEi (§2.12); INVALID_ENUM for i ≥ MAX_CLIP_PLANES.
+    ClipPlane(u8),
+    /// COLOR_LOGIC_OP (§4.1.10).
+    ColorLogicOp,
+    /// DITHER (§4.1.9); enabled initially. State only.
+    Dither,
+    /// INDEX_LOGIC_OP (= GL 1.0's LOGIC_OP): colour-index mode only; recorded, no effect
+    /// in RGBA.
+    IndexLogicOp,
 }
 
 /// glTexImage1D / glTexImage2D.
@@ -266,6 +280,17 @@ pub enum Command {
         src: BlendFactor,
         dst: BlendFactor,
     },
+    /// glBlendFuncSeparate (GL 1.4): SRC_ALPHA_SATURATE as a destination factor is
+    /// INVALID_ENUM.
+    BlendFuncSeparate {
+        src_rgb: BlendFactor,
+        dst_rgb: BlendFactor,
+        src_alpha: BlendFactor,
+        dst_alpha: BlendFactor,
+    },
+    BlendEquation(BlendEquation),
+    /// glBlendColor, clamped to [0, 1] when set.
+    BlendColor(Vec4),
     ColorMask(ColorMask),
     PolygonOffset {
         factor: f32,
@@ -281,6 +306,23 @@ pub enum Command {
     LineWidth(f32),
     /// > 0, else INVALID_VALUE.
     PointSize(f32),
+    /// glFog: FOG_DENSITY < 0 is INVALID_VALUE.
+    Fog(FogParam),
+    /// glHint (§5.6): an unknown target or mode is INVALID_ENUM (the script rejects it).
+    Hint {
+        target: HintTarget,
+        mode: HintMode,
+    },
+    /// glLogicOp: one of the 16 opcodes of Table 4.4.
+    LogicOp(LogicOp),
+    /// glScissor: a negative width or height is INVALID_VALUE.
+    Scissor(ScissorBox),
+    /// glClipPlane(CLIP_PLANE0 + plane, equation), the equation in object coordinates;
+    /// plane < MAX_CLIP_PLANES, else INVALID_ENUM.
+    ClipPlane {
+        plane: u8,
+        equation: Vec4,
+    },
 
     // Framebuffer.
     Clear(ClearMask),

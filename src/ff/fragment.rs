@@ -15,8 +15,8 @@ pub struct Toggle<T> {
 }
 
 impl<T: Copy> Toggle<T> {
-    /// Disabled, holding `value` (every capability starts disabled except DITHER and
-    /// MULTISAMPLE, neither modelled here).
+    /// Disabled, holding `value` (every capability starts disabled except DITHER, a plain
+    /// `bool` in `FixedState`, and MULTISAMPLE, not modelled).
     pub const fn off(value: T) -> Self {
         Self {
             enabled: false,
@@ -153,7 +153,8 @@ impl StencilTest {
     };
 }
 
-/// glBlendFunc factors (GL 1.5 Table 4.2).
+/// glBlendFunc / glBlendFuncSeparate factors (GL 1.5 Table 4.2), c the constant colour of
+/// glBlendColor.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum BlendFactor {
     Zero,
@@ -168,20 +169,180 @@ pub enum BlendFactor {
     OneMinusDstAlpha,
     /// Source factor only: (f, f, f, 1) with f = min(As, 1 − Ad).
     SrcAlphaSaturate,
+    /// (Rc, Gc, Bc, Ac)
+    ConstantColor,
+    /// (1, 1, 1, 1) − (Rc, Gc, Bc, Ac)
+    OneMinusConstantColor,
+    /// (Ac, Ac, Ac, Ac)
+    ConstantAlpha,
+    /// 1 − Ac on every component
+    OneMinusConstantAlpha,
 }
 
-/// glBlendFunc. GL default: ONE, ZERO.
+/// glBlendEquation (GL 1.5 §4.1.7): s, d the source and destination colours, S, D their
+/// factors. GL default: FUNC_ADD. MIN and MAX ignore the factors.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BlendEquation {
+    /// s·S + d·D
+    FuncAdd,
+    /// s·S − d·D
+    FuncSubtract,
+    /// d·D − s·S
+    FuncReverseSubtract,
+    /// min(s, d)
+    Min,
+    /// max(s, d)
+    Max,
+}
+
+/// glBlendFuncSeparate (glBlendFunc sets the RGB and alpha factors alike) and
+/// glBlendEquation. GL default: ONE, ZERO for both, FUNC_ADD. The constant colour is
+/// `FixedState::blend_color`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Blend {
-    pub src: BlendFactor,
-    pub dst: BlendFactor,
+    pub src_rgb: BlendFactor,
+    pub dst_rgb: BlendFactor,
+    pub src_alpha: BlendFactor,
+    pub dst_alpha: BlendFactor,
+    pub equation: BlendEquation,
 }
 
 impl Blend {
     pub const ONE_ZERO: Self = Self {
-        src: BlendFactor::One,
-        dst: BlendFactor::Zero,
+        src_rgb: BlendFactor::One,
+        dst_rgb: BlendFactor::Zero,
+        src_alpha: BlendFactor::One,
+        dst_alpha: BlendFactor::Zero,
+        equation: BlendEquation::FuncAdd,
     };
+}
+
+/// glLogicOp (GL 1.5 §4.1.10, Table 4.4): the colour written is op(s, d) bit by bit, s the
+/// fragment's colour and d the framebuffer's, as unsigned integers of the buffer's bits.
+/// GL default: COPY. While COLOR_LOGIC_OP is on, blending is off (§4.1.10).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum LogicOp {
+    /// 0
+    Clear,
+    /// s ∧ d
+    And,
+    /// s ∧ ¬d
+    AndReverse,
+    /// s
+    Copy,
+    /// ¬s ∧ d
+    AndInverted,
+    /// d
+    Noop,
+    /// s ⊕ d
+    Xor,
+    /// s ∨ d
+    Or,
+    /// ¬(s ∨ d)
+    Nor,
+    /// ¬(s ⊕ d)
+    Equiv,
+    /// ¬d
+    Invert,
+    /// s ∨ ¬d
+    OrReverse,
+    /// ¬s
+    CopyInverted,
+    /// ¬s ∨ d
+    OrInverted,
+    /// ¬(s ∧ d)
+    Nand,
+    /// all 1
+    Set,
+}
+
+impl LogicOp {
+    /// Table 4.4 on one 8-bit component.
+    pub fn apply(self, s: u8, d: u8) -> u8 {
+        match self {
+            LogicOp::Clear => 0,
+            LogicOp::And => s & d,
+            LogicOp::AndReverse => s & !d,
+            LogicOp::Copy => s,
+            LogicOp::AndInverted => !s & d,
+            LogicOp::Noop => d,
+            LogicOp::Xor => s ^ d,
+            LogicOp::Or => s | d,
+            LogicOp::Nor => !(s | d),
+            LogicOp::Equiv => !(s ^ d),
+            LogicOp::Invert => !d,
+            LogicOp::OrReverse => s | !d,
+            LogicOp::CopyInverted => !s,
+            LogicOp::OrInverted => !s | d,
+            LogicOp::Nand => !(s & d),
+            LogicOp::Set => 0xff,
+        }
+    }
+}
+
+/// glHint targets (GL 1.5 §5.6, Table 5.7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum HintTarget {
+    PerspectiveCorrection,
+    PointSmooth,
+    LineSmooth,
+    PolygonSmooth,
+    Fog,
+}
+
+/// glHint modes. GL default: DONT_CARE for every target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum HintMode {
+    Fastest,
+    Nicest,
+    DontCare,
+}
+
+/// The hints: how an implementation may trade quality for speed. State only: neither
+/// path changes its arithmetic for them (Mesa's llvmpipe ignores them too).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Hints {
+    pub perspective_correction: HintMode,
+    pub point_smooth: HintMode,
+    pub line_smooth: HintMode,
+    pub polygon_smooth: HintMode,
+    pub fog: HintMode,
+}
+
+impl Hints {
+    pub const DEFAULT: Self = Self {
+        perspective_correction: HintMode::DontCare,
+        point_smooth: HintMode::DontCare,
+        line_smooth: HintMode::DontCare,
+        polygon_smooth: HintMode::DontCare,
+        fog: HintMode::DontCare,
+    };
+
+    /// glHint(target, mode).
+    pub fn set(&mut self, target: HintTarget, mode: HintMode) {
+        let slot = match target {
+            HintTarget::PerspectiveCorrection => &mut self.perspective_correction,
+            HintTarget::PointSmooth => &mut self.point_smooth,
+            HintTarget::LineSmooth => &mut self.line_smooth,
+            HintTarget::PolygonSmooth => &mut self.polygon_smooth,
+            HintTarget::Fog => &mut self.fog,
+        };
+        *slot = mode;
+    }
+
+    /// Every target with its mode.
+    pub fn all(&self) -> [(HintTarget, HintMode); 5] {
+        [
+            (
+                HintTarget::PerspectiveCorrection,
+                self.perspective_correction,
+            ),
+            (HintTarget::PointSmooth, self.point_smooth),
+            (HintTarget::LineSmooth, self.line_smooth),
+            (HintTarget::PolygonSmooth, self.polygon_smooth),
+            (HintTarget::Fog, self.fog),
+        ]
+    }
 }
 
 /// glColorMask. GL default: all TRUE.
@@ -290,6 +451,18 @@ pub struct Viewport {
     pub height: i32,
 }
 
+/// glScissor's box in window coordinates (GL 1.5 §4.1.2): a fragment at (x_w, y_w) passes
+/// when x ≤ x_w < x + width and y ≤ y_w < y + height; glClear obeys it too (§4.2.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct ScissorBox {
+    pub x: i32,
+    pub y: i32,
+    /// ≥ 0, else INVALID_VALUE.
+    pub width: i32,
+    /// ≥ 0, else INVALID_VALUE.
+    pub height: i32,
+}
+
 /// glDepthRange, clamped to [0, 1] when set: z_w = z_ndc·(f − n)/2 + (n + f)/2.
 /// GL default: 0, 1.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -330,6 +503,34 @@ mod tests {
         ];
         for (f, a, b, want) in table {
             assert_eq!(f.passes(a, b), want, "{f:?} {a} {b}");
+        }
+    }
+
+    /// Table 4.4 on the patterns s = 1100, d = 1010: each opcode's truth table.
+    #[test]
+    fn logic_ops_follow_table_4_4() {
+        use LogicOp::*;
+        let (s, d) = (0b1100, 0b1010);
+        let table = [
+            (Clear, 0b0000),
+            (And, 0b1000),
+            (AndReverse, 0b0100),
+            (Copy, 0b1100),
+            (AndInverted, 0b0010),
+            (Noop, 0b1010),
+            (Xor, 0b0110),
+            (Or, 0b1110),
+            (Nor, 0b0001),
+            (Equiv, 0b1001),
+            (Invert, 0b0101),
+            (OrReverse, 0b1101),
+            (CopyInverted, 0b0011),
+            (OrInverted, 0b1011),
+            (Nand, 0b0111),
+            (Set, 0b1111),
+        ];
+        for (op, want) in table {
+            assert_eq!(op.apply(s, d) & 0b1111, want, "{op:?}");
         }
     }
 

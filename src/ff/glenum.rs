@@ -8,7 +8,7 @@
 //!
 //! A value may appear again under an alias (accepted when parsing, never printed or sent:
 //! the first entry is the canonical one). Indexed families (GL_LIGHTi, GL_TEXTUREi,
-//! GL_COMBINERi_NV) are not tables: `LIGHT0 + i`.
+//! GL_COMBINERi_NV, GL_CLIP_PLANEi) are not tables: `LIGHT0 + i`.
 
 use super::*;
 
@@ -82,6 +82,11 @@ pub fn texture_unit(i: u8) -> u32 {
     registry::TEXTURE0 + u32::from(i)
 }
 
+/// GL_CLIP_PLANEi.
+pub fn clip_plane(i: u8) -> u32 {
+    registry::CLIP_PLANE0 + u32::from(i)
+}
+
 /// GL_COMBINERi_NV.
 pub fn combiner(i: u8) -> u32 {
     registry::COMBINER0_NV + u32::from(i)
@@ -93,6 +98,7 @@ pub enum Family {
     Light,
     Texture,
     Combiner,
+    ClipPlane,
 }
 
 impl Family {
@@ -102,6 +108,7 @@ impl Family {
             Family::Light => ("GL_LIGHT", "", 8),
             Family::Texture => ("GL_TEXTURE", "", 32),
             Family::Combiner => ("GL_COMBINER", "_NV", 8),
+            Family::ClipPlane => ("GL_CLIP_PLANE", "", 6),
         }
     }
 
@@ -133,11 +140,12 @@ impl Family {
     /// The index a GLenum value names: `GL_LIGHT0 + 3` → 3. Only the named range counts
     /// (a value beyond it is another token: GL_TEXTURE0 + 110 is GL_SPARE0_NV).
     pub fn from_value(self, value: u32) -> Option<u8> {
-        let (_, _, count) = self.parts();
-        let base = match self {
-            Family::Light => registry::LIGHT0,
-            Family::Texture => registry::TEXTURE0,
-            Family::Combiner => registry::COMBINER0_NV,
+        let (base, count) = match self {
+            Family::Light => (registry::LIGHT0, 8),
+            Family::Texture => (registry::TEXTURE0, 32),
+            Family::Combiner => (registry::COMBINER0_NV, 8),
+            // GL_CLIP_PLANE0 + i up to MAX_CLIP_PLANES (8 on Mesa), beyond the six named.
+            Family::ClipPlane => (registry::CLIP_PLANE0, super::state::MAX_CLIP_PLANES as u32),
         };
         value
             .checked_sub(base)
@@ -150,6 +158,7 @@ impl Family {
             Family::Light => "GL_LIGHT0..GL_LIGHT7",
             Family::Texture => "GL_TEXTURE0..GL_TEXTURE31",
             Family::Combiner => "GL_COMBINER0_NV..GL_COMBINER7_NV",
+            Family::ClipPlane => "GL_CLIP_PLANE0..GL_CLIP_PLANE5",
         }
     }
 }
@@ -189,6 +198,51 @@ gl_enums!(Capability {
     POLYGON_OFFSET_LINE => Capability::PolygonOffsetLine,
     POLYGON_OFFSET_POINT => Capability::PolygonOffsetPoint,
     REGISTER_COMBINERS_NV => Capability::RegisterCombiners,
+    FOG => Capability::Fog,
+    SCISSOR_TEST => Capability::ScissorTest,
+    DITHER => Capability::Dither,
+    COLOR_LOGIC_OP => Capability::ColorLogicOp,
+    INDEX_LOGIC_OP => Capability::IndexLogicOp,
+    LOGIC_OP => Capability::IndexLogicOp,
+});
+
+gl_enums!(LogicOp {
+    CLEAR => LogicOp::Clear,
+    AND => LogicOp::And,
+    AND_REVERSE => LogicOp::AndReverse,
+    COPY => LogicOp::Copy,
+    AND_INVERTED => LogicOp::AndInverted,
+    NOOP => LogicOp::Noop,
+    XOR => LogicOp::Xor,
+    OR => LogicOp::Or,
+    NOR => LogicOp::Nor,
+    EQUIV => LogicOp::Equiv,
+    INVERT => LogicOp::Invert,
+    OR_REVERSE => LogicOp::OrReverse,
+    COPY_INVERTED => LogicOp::CopyInverted,
+    OR_INVERTED => LogicOp::OrInverted,
+    NAND => LogicOp::Nand,
+    SET => LogicOp::Set,
+});
+
+gl_enums!(HintTarget {
+    PERSPECTIVE_CORRECTION_HINT => HintTarget::PerspectiveCorrection,
+    POINT_SMOOTH_HINT => HintTarget::PointSmooth,
+    LINE_SMOOTH_HINT => HintTarget::LineSmooth,
+    POLYGON_SMOOTH_HINT => HintTarget::PolygonSmooth,
+    FOG_HINT => HintTarget::Fog,
+});
+
+gl_enums!(HintMode {
+    FASTEST => HintMode::Fastest,
+    NICEST => HintMode::Nicest,
+    DONT_CARE => HintMode::DontCare,
+});
+
+gl_enums!(FogMode {
+    LINEAR => FogMode::Linear,
+    EXP => FogMode::Exp,
+    EXP2 => FogMode::Exp2,
 });
 
 gl_enums!(CompareFunc {
@@ -225,6 +279,18 @@ gl_enums!(BlendFactor {
     DST_ALPHA => BlendFactor::DstAlpha,
     ONE_MINUS_DST_ALPHA => BlendFactor::OneMinusDstAlpha,
     SRC_ALPHA_SATURATE => BlendFactor::SrcAlphaSaturate,
+    CONSTANT_COLOR => BlendFactor::ConstantColor,
+    ONE_MINUS_CONSTANT_COLOR => BlendFactor::OneMinusConstantColor,
+    CONSTANT_ALPHA => BlendFactor::ConstantAlpha,
+    ONE_MINUS_CONSTANT_ALPHA => BlendFactor::OneMinusConstantAlpha,
+});
+
+gl_enums!(BlendEquation {
+    FUNC_ADD => BlendEquation::FuncAdd,
+    FUNC_SUBTRACT => BlendEquation::FuncSubtract,
+    FUNC_REVERSE_SUBTRACT => BlendEquation::FuncReverseSubtract,
+    MIN => BlendEquation::Min,
+    MAX => BlendEquation::Max,
 });
 
 gl_enums!(Face {

@@ -8,7 +8,7 @@
 //!   state unchanged; the first error sticks until read).
 //! - The small modules hold the GL rules both pipelines and the tests need, each with its
 //!   formula: matrices ([`matrix`]), texgen ([`texgen`]), texture environments ([`texenv`]),
-//!   register combiners ([`combiners`]), per-fragment tests ([`fragment`]).
+//!   register combiners ([`combiners`]), fog ([`fog`]), per-fragment tests ([`fragment`]).
 //! - [`query`] answers every glGet, glIsEnabled and per-object getter from the state, with
 //!   GL's (and Mesa's) type conversions; [`attrib`] is the glPushAttrib/glPopAttrib stack.
 //!
@@ -22,11 +22,13 @@ pub mod args;
 pub mod attrib;
 pub mod calls;
 pub mod calls_attrib;
+pub mod calls_raster;
 pub mod client;
 pub mod combiner_model;
 pub mod combiners;
 pub mod command;
 pub mod error;
+pub mod fog;
 pub mod fragment;
 pub mod front;
 pub mod geometry;
@@ -54,10 +56,11 @@ pub use combiners::{
 };
 pub use command::{Capability, Command, CopyTexImage, ReadPixels, TexData, TexImage, TexSubImage};
 pub use error::{GlError, GlErrorKind, GlResult};
+pub use fog::{Fog, FogMode, FogParam};
 pub use fragment::{
-    AlphaTest, Blend, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc, DepthRange,
-    DepthTest, Face, FrontFace, OffsetEnables, PolygonMode, ShadeModel, StencilOp, StencilTest,
-    Toggle, Viewport,
+    AlphaTest, Blend, BlendEquation, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc,
+    DepthRange, DepthTest, Face, FrontFace, HintMode, HintTarget, Hints, LogicOp, OffsetEnables,
+    PolygonMode, ScissorBox, ShadeModel, StencilOp, StencilTest, Toggle, Viewport,
 };
 pub use geometry::{Geometry, Primitive};
 pub use light::{
@@ -66,7 +69,9 @@ pub use light::{
 };
 pub use matrix::{MatrixMode, MatrixStack, ViewVolume};
 pub use query::QueryValue;
-pub use state::{CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_TEXTURE_UNITS};
+pub use state::{
+    CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_CLIP_PLANES, MAX_TEXTURE_UNITS,
+};
 pub use texenv::{
     Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,
     TexEnvMode, TexEnvParam,

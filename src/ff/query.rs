@@ -285,8 +285,8 @@ pnames! {
     STENCIL_PASS_DEPTH_FAIL => |s| enm(s.stencil_test.value.depth_fail),
     STENCIL_PASS_DEPTH_PASS => |s| enm(s.stencil_test.value.depth_pass),
     STENCIL_WRITEMASK => |s| vec![QueryValue::UInt(s.stencil_test.value.write_mask)],
-    BLEND_SRC => |s| enm(s.blend.value.src),
-    BLEND_DST => |s| enm(s.blend.value.dst),
+    BLEND_SRC => |s| enm(s.blend.value.src_rgb),
+    BLEND_DST => |s| enm(s.blend.value.dst_rgb),
     COLOR_WRITEMASK => |s| {
         let m = s.color_mask;
         [m.r, m.g, m.b, m.a].into_iter().map(QueryValue::Bool).collect()
@@ -325,8 +325,40 @@ pnames! {
     CONSTANT_COLOR1_NV => |s| normalized(&s.register_combiners.value.constant_color[1].to_array()),
     MAX_GENERAL_COMBINERS_NV => |_| count(MAX_GENERAL_COMBINERS),
 
-    // ── New pnames go here (fog, scissor, clip planes, logic op, blend equation and
-    // colour…): `TOKEN => |s| helper(s.field),` as above. ──
+    // Blending of GL 1.4, logic op, dither (Table 6.21).
+    BLEND_SRC_RGB => |s| enm(s.blend.value.src_rgb),
+    BLEND_DST_RGB => |s| enm(s.blend.value.dst_rgb),
+    BLEND_SRC_ALPHA => |s| enm(s.blend.value.src_alpha),
+    BLEND_DST_ALPHA => |s| enm(s.blend.value.dst_alpha),
+    BLEND_EQUATION => |s| enm(s.blend.value.equation),
+    BLEND_EQUATION_ALPHA => |s| enm(s.blend.value.equation),
+    BLEND_COLOR => |s| normalized(&s.blend_color.to_array()),
+    LOGIC_OP_MODE => |s| enm(s.logic_op.value),
+
+    // Fog (Table 6.10).
+    FOG_MODE => |s| enm(s.fog.value.mode),
+    FOG_DENSITY => |s| floats(&[s.fog.value.density]),
+    FOG_START => |s| floats(&[s.fog.value.start]),
+    FOG_END => |s| floats(&[s.fog.value.end]),
+    FOG_COLOR => |s| normalized(&s.fog.value.color.to_array()),
+    FOG_INDEX => |_| floats(&[0.0]),
+
+    // Scissor (Table 6.16): the box as set; before any glScissor, the whole target, which
+    // the front end that knows the window sets at its first make-current.
+    SCISSOR_BOX => |s| {
+        let b = s.scissor.value.unwrap_or_default();
+        [b.x, b.y, b.width, b.height].into_iter().map(QueryValue::Int).collect()
+    },
+    MAX_CLIP_PLANES => |_| count(super::state::MAX_CLIP_PLANES),
+
+    // Hints (Table 6.27).
+    PERSPECTIVE_CORRECTION_HINT => |s| enm(s.hints.perspective_correction),
+    POINT_SMOOTH_HINT => |s| enm(s.hints.point_smooth),
+    LINE_SMOOTH_HINT => |s| enm(s.hints.line_smooth),
+    POLYGON_SMOOTH_HINT => |s| enm(s.hints.polygon_smooth),
+    FOG_HINT => |s| enm(s.hints.fog),
+
+    // ── New pnames go here: `TOKEN => |s| helper(s.field),` as above. ──
 }
 
 /// A texture name as glGetIntegerv reports it.
@@ -349,6 +381,9 @@ pub fn capability(cap: u32) -> Option<Capability> {
     if (light as usize) < MAX_LIGHTS {
         return Some(Capability::Light(light as u8));
     }
+    if let Some(i) = super::glenum::Family::ClipPlane.from_value(cap) {
+        return Some(Capability::ClipPlane(i));
+    }
     Capability::from_gl_value(cap)
 }
 
@@ -356,6 +391,10 @@ pub fn capability(cap: u32) -> Option<Capability> {
 pub fn capabilities() -> Vec<u32> {
     let mut caps: Vec<u32> = Capability::TABLE.iter().map(|(_, v, _)| *v).collect();
     caps.extend((0..MAX_LIGHTS as u32).map(|i| r::LIGHT0 + i));
+    caps.extend((0..super::state::MAX_CLIP_PLANES as u32).map(|i| r::CLIP_PLANE0 + i));
+    // An alias (GL_LOGIC_OP for GL_INDEX_LOGIC_OP) is one capability.
+    let mut seen = std::collections::HashSet::new();
+    caps.retain(|c| seen.insert(*c));
     caps
 }
 
@@ -430,6 +469,15 @@ impl FixedState {
             Capability::PolygonOffsetLine => self.offset_enables.line,
             Capability::PolygonOffsetPoint => self.offset_enables.point,
             Capability::RegisterCombiners => self.register_combiners.enabled,
+            Capability::Fog => self.fog.enabled,
+            Capability::ScissorTest => self.scissor.enabled,
+            Capability::ClipPlane(i) => self
+                .clip_planes
+                .get(usize::from(i))
+                .is_some_and(|p| p.enabled),
+            Capability::ColorLogicOp => self.logic_op.enabled,
+            Capability::IndexLogicOp => self.index_logic_op,
+            Capability::Dither => self.dither,
         })
     }
 
@@ -685,7 +733,7 @@ mod tests {
         assert_eq!(s.get_doublev(r::DEPTH_RANGE), Ok(vec![0.0, 1.0]));
         assert_eq!(s.is_enabled(r::LIGHT0 + 7), Ok(false));
         assert_eq!(s.is_enabled(r::LIGHT0 + 8), Err(GlErrorKind::InvalidEnum));
-        assert_eq!(s.get(r::FOG_COLOR), Err(GlErrorKind::InvalidEnum));
+        assert_eq!(s.get(r::ACCUM_CLEAR_VALUE), Err(GlErrorKind::InvalidEnum));
         assert_eq!(s.get(0xFFFF_FFFF), Err(GlErrorKind::InvalidEnum));
         // Every table entry answers, with a distinct pname.
         let all = pnames();

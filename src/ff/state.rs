@@ -11,9 +11,10 @@ use glam::{Mat4, Vec3, Vec4};
 use super::attrib::AttribFrame;
 use super::combiners::RegisterCombiners;
 use super::error::GlError;
+use super::fog::Fog;
 use super::fragment::{
-    AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace,
-    OffsetEnables, PolygonMode, ShadeModel, StencilTest, Toggle, Viewport,
+    AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace, Hints,
+    LogicOp, OffsetEnables, PolygonMode, ScissorBox, ShadeModel, StencilTest, Toggle, Viewport,
 };
 use super::light::{ColorMaterial, Light, LightModel, Materials, MAX_LIGHTS};
 use super::matrix::{
@@ -27,6 +28,10 @@ use crate::vocab::PolygonOffset;
 /// GL_MAX_TEXTURE_UNITS modelled: texgen, env, matrices and coordinates for 8 units (the
 /// pipelines need at least 4 image units).
 pub const MAX_TEXTURE_UNITS: usize = 8;
+
+/// GL_MAX_CLIP_PLANES modelled: Mesa's 8 (measured on llvmpipe's compatibility context,
+/// `tests/fidelity_clip_planes.rs`; GL 1.5 asks for at least 6).
+pub const MAX_CLIP_PLANES: usize = 8;
 
 /// The current vertex values (glColor, glNormal, glMultiTexCoord).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -165,8 +170,10 @@ pub struct FixedState {
     pub depth_test: Toggle<DepthTest>,
     /// STENCIL_TEST. GL default: disabled, [`StencilTest::DEFAULT`].
     pub stencil_test: Toggle<StencilTest>,
-    /// BLEND. GL default: disabled, ONE, ZERO.
+    /// BLEND. GL default: disabled, ONE, ZERO (RGB and alpha), FUNC_ADD.
     pub blend: Toggle<Blend>,
+    /// glBlendColor's constant colour c, clamped to [0, 1] when set. GL default: (0,0,0,0).
+    pub blend_color: Vec4,
     /// GL default: all TRUE.
     pub color_mask: ColorMask,
     /// GL default: factor 0, units 0.
@@ -188,6 +195,28 @@ pub struct FixedState {
 
     /// glPushAttrib entries (`attrib`). GL default: empty.
     pub(crate) attrib_stack: Vec<AttribFrame>,
+    /// FOG. GL default: disabled, EXP, density 1, start 0, end 1, colour (0,0,0,0); the
+    /// distance is |z_eye| (FOG_COORDINATE_SOURCE = FRAGMENT_DEPTH, as Mesa computes it).
+    pub fog: Toggle<Fog>,
+    /// SCISSOR_TEST with glScissor's box. GL default: disabled, (0, 0, window width, window
+    /// height). The model does not know the window: `None` = never set = the whole target,
+    /// so an enabled test without a box restricts nothing.
+    pub scissor: Toggle<Option<ScissorBox>>,
+    /// CLIP_PLANEi with glClipPlane's plane in eye coordinates (§2.12): stored already
+    /// multiplied by the inverse of the modelview current when it was specified,
+    /// p′ = p·M⁻¹; a vertex is kept where p′·(x_e, y_e, z_e, w_e)ᵀ ≥ 0. GL default: all
+    /// disabled, (0, 0, 0, 0).
+    pub clip_planes: [Toggle<Vec4>; MAX_CLIP_PLANES],
+    /// COLOR_LOGIC_OP with glLogicOp. GL default: disabled, COPY. While enabled, blending
+    /// is not applied (§4.1.10).
+    pub logic_op: Toggle<LogicOp>,
+    /// INDEX_LOGIC_OP. GL default: FALSE; no effect on an RGBA framebuffer.
+    pub index_logic_op: bool,
+    /// DITHER (§4.1.9). GL default: TRUE. State only: an 8-bit target has nothing to
+    /// dither on llvmpipe, and the emulated path leaves core GL's own DITHER as it is.
+    pub dither: bool,
+    /// glHint. GL default: DONT_CARE for every target; state only.
+    pub hints: Hints,
 }
 
 impl Default for FixedState {
@@ -226,6 +255,7 @@ impl FixedState {
             depth_test: Toggle::off(DepthTest::LESS_WRITE),
             stencil_test: Toggle::off(StencilTest::DEFAULT),
             blend: Toggle::off(Blend::ONE_ZERO),
+            blend_color: Vec4::ZERO,
             color_mask: ColorMask::ALL,
             polygon_offset: PolygonOffset {
                 factor: 0.0,
@@ -242,6 +272,13 @@ impl FixedState {
             point_size: 1.0,
             clear: ClearValues::DEFAULT,
             attrib_stack: Vec::new(),
+            fog: Toggle::off(Fog::DEFAULT),
+            scissor: Toggle::off(None),
+            clip_planes: [Toggle::off(Vec4::ZERO); MAX_CLIP_PLANES],
+            logic_op: Toggle::off(LogicOp::Copy),
+            index_logic_op: false,
+            dither: true,
+            hints: Hints::DEFAULT,
         }
     }
 
@@ -258,6 +295,12 @@ impl FixedState {
     /// The active texture unit's index, always < MAX_TEXTURE_UNITS.
     pub fn active_unit(&self) -> usize {
         self.active_texture.min(MAX_TEXTURE_UNITS - 1)
+    }
+
+    /// The box the scissor test restricts fragments and clears to: `None` when the test is
+    /// off or the box was never set (the whole target).
+    pub fn scissor_box(&self) -> Option<ScissorBox> {
+        self.scissor.get().flatten()
     }
 
     /// The current modelview matrix.

@@ -44,6 +44,23 @@ fn initial_values() {
     assert_eq!(s.depth_range, DepthRange::DEFAULT);
     assert_eq!(s.register_combiners.get(), None);
     assert_eq!(s.register_combiners.value.num_general, 1);
+    assert_eq!(s.fog.get(), None);
+    assert_eq!(s.fog.value, Fog::DEFAULT);
+    assert_eq!(s.fog.value.mode, FogMode::Exp);
+    assert_eq!(s.scissor.get(), None);
+    assert_eq!(s.scissor.value, None);
+    assert_eq!(s.scissor_box(), None);
+    assert_eq!(s.blend.value.equation, BlendEquation::FuncAdd);
+    assert_eq!(s.blend_color, Vec4::ZERO);
+    assert_eq!(s.logic_op.get(), None);
+    assert_eq!(s.logic_op.value, LogicOp::Copy);
+    assert!(!s.index_logic_op);
+    assert!(s.dither);
+    assert_eq!(s.hints, Hints::DEFAULT);
+    assert!(s
+        .clip_planes
+        .iter()
+        .all(|p| !p.enabled && p.value == Vec4::ZERO));
     assert_eq!(s.error(), None);
 }
 
@@ -116,6 +133,27 @@ fn error_semantics_table() {
             InvalidValue,
         ),
         (Command::LineWidth(0.0), InvalidValue),
+        (Command::Fog(FogParam::Density(-0.5)), InvalidValue),
+        (
+            Command::ClipPlane {
+                plane: MAX_CLIP_PLANES as u8,
+                equation: Vec4::X,
+            },
+            InvalidEnum,
+        ),
+        (
+            Command::Enable(Capability::ClipPlane(MAX_CLIP_PLANES as u8)),
+            InvalidEnum,
+        ),
+        (
+            Command::Scissor(ScissorBox {
+                x: 0,
+                y: 0,
+                width: -1,
+                height: 4,
+            }),
+            InvalidValue,
+        ),
     ];
     for (cmd, kind) in cases {
         // A non-default state, so "unchanged" is meaningful.
@@ -338,4 +376,52 @@ fn draw_leaves_the_last_vertex_values_current() {
         s.apply(&Command::Draw(g.into())).unwrap_err().kind,
         GlErrorKind::InvalidValue
     );
+}
+
+/// A clip plane is stored in eye space with the modelview of glClipPlane (§2.12):
+/// p′ = p·M⁻¹, so under glTranslatef(½, 0, 0) the plane −x ≥ 0 becomes −x_e + ½ ≥ 0.
+#[test]
+fn clip_planes_are_transformed_when_specified() {
+    let s = run(&[
+        Command::Translate(Vec3::new(0.5, 0.0, 0.0)),
+        Command::ClipPlane {
+            plane: 7,
+            equation: Vec4::new(-1.0, 0.0, 0.0, 0.0),
+        },
+        Command::LoadIdentity,
+        Command::Enable(Capability::ClipPlane(7)),
+    ]);
+    assert!(s.clip_planes[7].enabled);
+    assert_eq!(s.clip_planes[7].value, Vec4::new(-1.0, 0.0, 0.0, 0.5));
+}
+
+/// glBlendFunc sets the RGB and alpha factors alike; glBlendColor clamps to [0, 1].
+#[test]
+fn blend_func_sets_both_factor_pairs_and_blend_color_clamps() {
+    let s = run(&[
+        Command::BlendFuncSeparate {
+            src_rgb: BlendFactor::ConstantAlpha,
+            dst_rgb: BlendFactor::One,
+            src_alpha: BlendFactor::SrcAlphaSaturate,
+            dst_alpha: BlendFactor::OneMinusConstantColor,
+        },
+        Command::BlendFunc {
+            src: BlendFactor::SrcAlpha,
+            dst: BlendFactor::OneMinusSrcAlpha,
+        },
+        Command::BlendEquation(BlendEquation::Max),
+        Command::BlendColor(Vec4::new(-1.0, 0.5, 2.0, f32::INFINITY)),
+    ]);
+    let b = s.blend.value;
+    assert_eq!(
+        (b.src_rgb, b.dst_rgb, b.src_alpha, b.dst_alpha, b.equation),
+        (
+            BlendFactor::SrcAlpha,
+            BlendFactor::OneMinusSrcAlpha,
+            BlendFactor::SrcAlpha,
+            BlendFactor::OneMinusSrcAlpha,
+            BlendEquation::Max
+        )
+    );
+    assert_eq!(s.blend_color, Vec4::new(0.0, 0.5, 1.0, 1.0));
 }

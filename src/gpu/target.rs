@@ -52,7 +52,7 @@ pub struct RenderTarget {
 
 impl RenderTarget {
     /// Creates the target and leaves it bound as the draw and read framebuffer, with the
-    /// viewport covering it.
+    /// viewport and the scissor box covering it.
     pub fn new(ctx: &GpuContext, spec: TargetSpec) -> Result<RenderTarget, GpuError> {
         let gl = ctx.gl();
         let limit = unsafe { gl.get_parameter_i32(glow::MAX_RENDERBUFFER_SIZE) }.max(0) as u32;
@@ -128,6 +128,11 @@ impl RenderTarget {
                 0
             };
             gl.viewport(0, 0, w, h);
+            // The scissor box starts as the window (GL 1.5 §4.1.2); the target is the
+            // window here. A surfaceless context has no window, and Mesa starts the box at
+            // (0, 0, 0, 0) there (measured, `tests/fidelity_scissor.rs`): SCISSOR_TEST
+            // enabled before any glScissor would then discard everything.
+            gl.scissor(0, 0, w, h);
             target
         };
         ctx.check_error("RenderTarget::new")?;

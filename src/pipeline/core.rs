@@ -22,6 +22,31 @@ pub struct Core {
     pub counters: Counters,
 }
 
+impl Core {
+    /// A core whose model starts with the window-sized state GL gives a new context: the
+    /// viewport and the scissor box cover the target bound now (GL 1.5 §2.11.1, §4.1.2:
+    /// both start as the window; the model knows the window only through GL).
+    pub fn for_bound_target(ctx: &GpuContext) -> Core {
+        let mut core = Core::default();
+        let mut v = [0i32; 4];
+        // SAFETY: VIEWPORT writes 4 integers.
+        unsafe { glow::HasContext::get_parameter_i32_slice(ctx.gl(), glow::VIEWPORT, &mut v) };
+        let _ = core.state.apply(&Command::Viewport(crate::ff::Viewport {
+            x: v[0],
+            y: v[1],
+            width: v[2],
+            height: v[3],
+        }));
+        let _ = core.state.apply(&Command::Scissor(crate::ff::ScissorBox {
+            x: v[0],
+            y: v[1],
+            width: v[2],
+            height: v[3],
+        }));
+        core
+    }
+}
+
 /// One path's half of execution.
 pub trait Issue {
     /// Which path this is.

@@ -55,6 +55,7 @@ fn b(v: bool) -> &'static str {
 fn capability(c: Capability) -> String {
     match c {
         Capability::Light(i) => Family::Light.print(i),
+        Capability::ClipPlane(i) => Family::ClipPlane.print(i),
         other => n(other).to_string(),
     }
 }
@@ -342,6 +343,41 @@ fn call(c: &Command) -> String {
         Command::FrontFace(face) => format!("{}({})", Entry::FrontFace, n(*face)),
         Command::LineWidth(w) => format!("{}({})", Entry::LineWidth, f(*w)),
         Command::PointSize(s) => format!("{}({})", Entry::PointSize, f(*s)),
+        Command::Fog(p) => fog(p),
+        Command::BlendColor(c) => format!("{}({})", Entry::BlendColor, fs(&c.to_array())),
+        Command::BlendEquation(e) => format!("{}({})", Entry::BlendEquation, n(*e)),
+        Command::BlendFuncSeparate {
+            src_rgb,
+            dst_rgb,
+            src_alpha,
+            dst_alpha,
+        } => format!(
+            "{}({}, {}, {}, {})",
+            Entry::BlendFuncSeparate,
+            n(*src_rgb),
+            n(*dst_rgb),
+            n(*src_alpha),
+            n(*dst_alpha)
+        ),
+        Command::Hint { target, mode } => {
+            format!("{}({}, {})", Entry::Hint, n(*target), n(*mode))
+        }
+        Command::LogicOp(op) => format!("{}({})", Entry::LogicOp, n(*op)),
+        // glClipPlane reads doubles: the f32 values print exactly as doubles.
+        Command::ClipPlane { plane, equation } => format!(
+            "{}({}, (GLdouble[]){{{}}})",
+            Entry::ClipPlane,
+            Family::ClipPlane.print(*plane),
+            fs(&equation.to_array())
+        ),
+        Command::Scissor(b) => format!(
+            "{}({}, {}, {}, {})",
+            Entry::Scissor,
+            b.x,
+            b.y,
+            b.width,
+            b.height
+        ),
         Command::Clear(m) => format!("{}({})", Entry::Clear, clear_mask(*m)),
         Command::ClearColor(c) => format!("{}({})", Entry::ClearColor, fs(&c.to_array())),
         Command::ClearDepth(d) => format!("{}({})", Entry::ClearDepth, f(*d)),
@@ -365,6 +401,18 @@ fn call(c: &Command) -> String {
         | Command::TexSubImage2D(_)
         | Command::Raise { .. } => String::new(),
     }
+}
+
+fn fog(p: &FogParam) -> String {
+    let (pname, v) = match p {
+        FogParam::Mode(m) => return format!("{}(GL_FOG_MODE, {})", Entry::Fogi, n(*m)),
+        FogParam::Color(c) => return format!("{}(GL_FOG_COLOR, {})", Entry::Fogfv, v4(*c)),
+        FogParam::Density(v) => ("GL_FOG_DENSITY", v),
+        FogParam::Start(v) => ("GL_FOG_START", v),
+        FogParam::End(v) => ("GL_FOG_END", v),
+        FogParam::Index(v) => ("GL_FOG_INDEX", v),
+    };
+    format!("{}({pname}, {})", Entry::Fogf, f(*v))
 }
 
 fn volume(v: &ViewVolume) -> String {

@@ -515,6 +515,42 @@ fn sample_commands() -> Vec<Command> {
         Command::FrontFace(FrontFace::Cw),
         Command::LineWidth(12.0),
         Command::PointSize(0.5),
+        Command::Enable(Capability::Fog),
+        Command::Enable(Capability::ScissorTest),
+        Command::Enable(Capability::ColorLogicOp),
+        Command::Disable(Capability::IndexLogicOp),
+        Command::LogicOp(LogicOp::OrReverse),
+        Command::Disable(Capability::Dither),
+        Command::Hint {
+            target: HintTarget::Fog,
+            mode: HintMode::Nicest,
+        },
+        Command::BlendColor(Vec4::new(0.25, 0.5, 0.75, 1.0)),
+        Command::BlendEquation(BlendEquation::FuncReverseSubtract),
+        Command::BlendFuncSeparate {
+            src_rgb: BlendFactor::ConstantColor,
+            dst_rgb: BlendFactor::OneMinusConstantAlpha,
+            src_alpha: BlendFactor::SrcAlphaSaturate,
+            dst_alpha: BlendFactor::Zero,
+        },
+        Command::Enable(Capability::ClipPlane(7)),
+        Command::Disable(Capability::ClipPlane(2)),
+        Command::ClipPlane {
+            plane: 6,
+            equation: Vec4::new(0.5, -1.0, 0.0, 0.25),
+        },
+        Command::Scissor(ScissorBox {
+            x: -2,
+            y: 3,
+            width: 10,
+            height: 0,
+        }),
+        Command::Fog(FogParam::Mode(FogMode::Exp2)),
+        Command::Fog(FogParam::Density(0.25)),
+        Command::Fog(FogParam::Start(-1.5)),
+        Command::Fog(FogParam::End(40.0)),
+        Command::Fog(FogParam::Index(2.0)),
+        Command::Fog(FogParam::Color(Vec4::new(0.1, 0.2, 0.3, 1.0))),
         Command::Clear(ClearMask::ALL),
         Command::Clear(ClearMask::default()),
         Command::ClearColor(Vec4::new(0.5, 0.5, 0.5, 0.0)),
@@ -957,4 +993,25 @@ mod variants {
         let e = parse("glColor4fv((GLfloat[]){1, 0, 0});").unwrap_err();
         assert!(matches!(e, ScriptError::ArrayLength { .. }), "{e}");
     }
+}
+
+#[test]
+fn fog_calls_in_every_form() {
+    let cmds = parse(
+        "glFogf(GL_FOG_MODE, GL_LINEAR); glFogi(GL_FOG_DENSITY, 2); \
+         glFogfv(GL_FOG_END, (GLfloat[]){5}); \
+         glFogiv(GL_FOG_COLOR, (GLint[]){2147483647, 0, 0, 2147483647});",
+    )
+    .unwrap();
+    assert_eq!(cmds[0], Command::Fog(FogParam::Mode(FogMode::Linear)));
+    assert_eq!(cmds[1], Command::Fog(FogParam::Density(2.0)));
+    assert_eq!(cmds[2], Command::Fog(FogParam::End(5.0)));
+    let Command::Fog(FogParam::Color(c)) = cmds[3] else {
+        panic!("{:?}", cmds[3]);
+    };
+    assert!((c - Vec4::new(1.0, 0.0, 0.0, 1.0)).abs().max_element() < 1e-6);
+    assert!(matches!(
+        err("glFogi(GL_FOG_MODE, GL_NEAREST);"),
+        ScriptError::UnknownEnum { .. }
+    ));
 }

@@ -11,8 +11,8 @@ use super::polygon::EdgeRule;
 use crate::ff::{
     AlphaTest, BaseFormat, ColorControl, ColorMaterialMode, Combine, CombineFunc, CombineOperand,
     CombineScale, CombineSource, CombinerInput, CompareFunc, CompareMode, DepthTextureMode, Face,
-    FixedState, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode,
-    TextureTarget, MAX_LIGHTS, MAX_TEXTURE_UNITS,
+    FixedState, FogMode, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode,
+    TextureTarget, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS,
 };
 use crate::vocab::Precision;
 
@@ -64,6 +64,9 @@ pub struct VertexUnitKey {
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct VertexKey {
     pub lighting: Option<LightingKey>,
+    /// The enabled user clip planes, ascending: each writes gl_ClipDistance[i] (the plane
+    /// itself is a uniform).
+    pub clip_planes: Vec<u8>,
     pub normalize: bool,
     pub rescale_normal: bool,
     pub units: Vec<VertexUnitKey>,
@@ -150,6 +153,11 @@ pub struct FragmentKey {
     /// SECONDARY_COLOR register instead.
     pub color_sum: bool,
     pub flat: bool,
+    /// FOG's mode; `None` when fog is off (no fog code, no fog varying). The vertex stage
+    /// writes |z_eye|, the fragment stage blends after texturing and the colour sum — or,
+    /// under register combiners, fills their FOG register instead (the final combiner
+    /// applies fog there, NV_register_combiners).
+    pub fog: Option<FogMode>,
     /// `None` when the alpha test is off or ALWAYS (no code at all).
     pub alpha_test: Option<CompareFunc>,
     /// Which fragments of a split quad or polygon survive in LINE or POINT mode
@@ -189,7 +197,12 @@ impl ShaderKey {
                 u.coords
                     .contains(&CoordSource::Generated(TexGenMode::SphereMap))
             });
+        let clip_planes = (0..MAX_CLIP_PLANES)
+            .filter(|&i| state.clip_planes[i].enabled)
+            .map(|i| i as u8)
+            .collect();
         let vertex = VertexKey {
+            clip_planes,
             normalize: normal_used && state.normalize,
             rescale_normal: normal_used && state.rescale_normal && !state.normalize,
             units: vertex_units,
@@ -226,6 +239,7 @@ impl ShaderKey {
             two_side,
             color_sum,
             flat: state.shade_model == ShadeModel::Flat,
+            fog: state.fog.get().map(|f| f.mode),
             alpha_test: state
                 .alpha_test
                 .get()

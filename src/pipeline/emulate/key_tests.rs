@@ -17,7 +17,8 @@
 //! state that changes the picture changed neither the key nor the code: it is generated now,
 //! and replayed against Mesa in `tests/scripts/fidelity/separate_specular.c`.
 //!
-//! Fog is not in the table: the state model has no fog (techniques never enable it).
+//! Fog: its enable and FOG_MODE shape the code; density, start, end and colour are
+//! uniforms, and fog parameters set while fog is off change nothing.
 
 use crate::vocab::Precision;
 use std::sync::Arc;
@@ -33,6 +34,7 @@ use crate::ff::{
     TexCoord, TexData, TexEnvMode, TexEnvParam, TexFormat, TexGenMode, TexGenParam, TexImage,
     TexParam, TexSubImage, TextureTarget, ViewVolume, Viewport, Wrap,
 };
+use crate::ff::{FogMode, FogParam, HintMode, HintTarget};
 use crate::pipeline::emulate::shadergen;
 
 /// What a case's change should do to the code (and so to the key).
@@ -650,6 +652,45 @@ fn same_code() -> Vec<Case> {
                 Command::PointSize(4.0),
             ],
         ),
+        same(
+            "fog values are uniforms",
+            vec![Command::Enable(Capability::Fog)],
+            vec![
+                Command::Fog(FogParam::Density(0.3)),
+                Command::Fog(FogParam::Start(2.0)),
+                Command::Fog(FogParam::End(9.0)),
+                Command::Fog(FogParam::Color(Vec4::ONE)),
+                Command::Fog(FogParam::Index(1.0)),
+            ],
+        ),
+        same(
+            "a clip plane's equation is a uniform",
+            vec![Command::Enable(Capability::ClipPlane(2))],
+            vec![Command::ClipPlane {
+                plane: 2,
+                equation: Vec4::new(1.0, 2.0, 3.0, 4.0),
+            }],
+        ),
+        same(
+            "DITHER and the hints are state only",
+            vec![Command::Enable(Capability::Fog)],
+            vec![
+                Command::Disable(Capability::Dither),
+                Command::Hint {
+                    target: HintTarget::Fog,
+                    mode: HintMode::Nicest,
+                },
+                Command::Hint {
+                    target: HintTarget::PerspectiveCorrection,
+                    mode: HintMode::Fastest,
+                },
+            ],
+        ),
+        same(
+            "the fog mode while fog is off",
+            textured(),
+            vec![Command::Fog(FogParam::Mode(FogMode::Linear))],
+        ),
     ]
 }
 
@@ -872,6 +913,34 @@ fn changed_code() -> Vec<Case> {
             "enabling register combiners",
             textured(),
             vec![Command::Enable(Capability::RegisterCombiners)],
+        ),
+        changes(
+            "enabling a clip plane",
+            textured(),
+            vec![Command::Enable(Capability::ClipPlane(5))],
+        ),
+        changes(
+            "another clip plane",
+            vec![Command::Enable(Capability::ClipPlane(0))],
+            vec![
+                Command::Disable(Capability::ClipPlane(0)),
+                Command::Enable(Capability::ClipPlane(1)),
+            ],
+        ),
+        changes(
+            "enabling fog",
+            textured(),
+            vec![Command::Enable(Capability::Fog)],
+        ),
+        changes(
+            "the fog mode",
+            vec![Command::Enable(Capability::Fog)],
+            vec![Command::Fog(FogParam::Mode(FogMode::Exp2))],
+        ),
+        changes(
+            "fog under register combiners fills their FOG register",
+            with_combiners(textured()),
+            vec![Command::Enable(Capability::Fog)],
         ),
         changes(
             "the number of general combiners",

@@ -30,11 +30,11 @@ use self::cache::ProgramCache;
 use self::draw::GeometryCache;
 use self::key::ShaderKey;
 use self::program::Program;
-use self::sync::RasterSync;
+use self::sync::{LogicOpCall, RasterSync};
 use self::textures::Textures;
 use super::core::{Core, Issue, PathPipeline};
 use super::{Counters, PipelineError, Readback};
-use crate::ff::{Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels, Viewport};
+use crate::ff::{Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels};
 use crate::gpu::{GpuContext, Profile};
 use crate::vocab::{PipelineKind, Precision};
 
@@ -62,20 +62,12 @@ impl EmulatedPipeline {
                 got: ctx.profile().name(),
             });
         }
-        let mut core = Core::default();
-        let mut v = [0i32; 4];
-        unsafe { ctx.gl().get_parameter_i32_slice(glow::VIEWPORT, &mut v) };
-        let _ = core.state.apply(&Command::Viewport(Viewport {
-            x: v[0],
-            y: v[1],
-            width: v[2],
-            height: v[3],
-        }));
+        let core = Core::for_bound_target(ctx);
         let path = Emulate {
             programs: ProgramCache::default(),
             geometry: GeometryCache::default(),
             textures: Textures::default(),
-            raster: RasterSync::default(),
+            raster: RasterSync::new(LogicOpCall::load(ctx)),
             precision: Precision::Float,
         };
         Ok(PathPipeline::from_parts(core, path))
@@ -152,7 +144,7 @@ impl Emulate {
                 gl.clear_stencil(c.stencil);
                 bits |= glow::STENCIL_BUFFER_BIT;
             }
-            // Clear obeys the scissor-free viewport-independent masks (§4.2.3).
+            // Clear obeys the masks and the scissor box, not the viewport (§4.2.3).
             gl.clear(bits);
         }
     }

@@ -1,18 +1,45 @@
-//! The raster state that stays GL state on the core path (depth, stencil, blend, masks,
-//! polygon offset, culling, polygon mode, line width, point size, viewport, depth range),
-//! synced before each draw
-//! through a shadow copy of what was last sent: an unchanged value is not sent again, and
-//! both outcomes are counted.
+//! The raster state that stays GL state on the core path (depth, stencil, blend with its
+//! equation and constant colour, logic op, masks, polygon offset, culling, polygon mode,
+//! line width, viewport, scissor, the CLIP_DISTANCE enables of the user clip planes, depth
+//! range), synced before each draw through a shadow copy of what was last sent: an
+//! unchanged value is not sent again, and both outcomes are counted.
 
 use crate::vocab::PolygonOffset;
+use glam::Vec4;
 use glow::HasContext;
 
 use super::conv;
 use super::polygon::PolygonPass;
 use crate::ff::{
-    Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, OffsetEnables,
-    PolygonMode, StencilTest, Viewport,
+    Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, LogicOp, OffsetEnables,
+    PolygonMode, ScissorBox, StencilTest, Viewport, MAX_CLIP_PLANES,
 };
+
+/// glLogicOp of the core context: glow 0.16 has no wrapper for it, so the entry point is
+/// looked up once when the pipeline is made (`None`: the driver has none; COLOR_LOGIC_OP
+/// is still toggled, with the driver's opcode).
+#[derive(Clone, Copy, Default)]
+pub struct LogicOpCall(Option<unsafe extern "system" fn(u32)>);
+
+impl LogicOpCall {
+    pub fn load(ctx: &crate::gpu::GpuContext) -> LogicOpCall {
+        let p = ctx.proc_address("glLogicOp");
+        // SAFETY: a non-null address from the context's loader is glLogicOp, whose C type
+        // is void (GLenum); `Option<fn>` has the same layout as a nullable pointer.
+        LogicOpCall(unsafe {
+            std::mem::transmute::<*const std::ffi::c_void, Option<unsafe extern "system" fn(u32)>>(
+                p,
+            )
+        })
+    }
+
+    fn call(self, op: u32) {
+        if let Some(f) = self.0 {
+            // SAFETY: glLogicOp on the current context.
+            unsafe { f(op) }
+        }
+    }
+}
 
 /// One piece of state as last sent (`None` = never sent).
 struct Sent<T>(Option<T>);
@@ -39,7 +66,8 @@ impl<T> Default for Sent<T> {
 pub struct RasterSync {
     depth: Sent<Option<DepthTest>>,
     stencil: Sent<Option<StencilTest>>,
-    blend: Sent<Option<Blend>>,
+    /// BLEND with its factors and equation, and the constant colour.
+    blend: Sent<(Option<Blend>, Vec4)>,
     color_mask: Sent<ColorMask>,
     offset: Sent<(OffsetEnables, PolygonOffset)>,
     cull: Sent<(Option<Face>, FrontFace)>,
@@ -47,6 +75,15 @@ pub struct RasterSync {
     /// glLineWidth; the point size is a uniform written to gl_PointSize.
     line_width: Sent<f32>,
     viewport: Sent<Viewport>,
+    /// COLOR_LOGIC_OP with its opcode (core GL has glLogicOp and, like GL 1.x, blends
+    /// nothing while it is on).
+    logic_op: Sent<Option<LogicOp>>,
+    logic_op_call: LogicOpCall,
+    /// The enabled user clip planes as bits: CLIP_DISTANCEi for plane i, which the
+    /// program writes (the key lists the same planes).
+    clip_planes: Sent<u8>,
+    /// The scissor box in force (`None`: test off, or never set = the whole target).
+    scissor: Sent<Option<ScissorBox>>,
     depth_range: Sent<DepthRange>,
     /// (sent, skipped)
     counts: (u64, u64),
@@ -63,6 +100,14 @@ fn toggle(gl: &glow::Context, cap: u32, on: bool) {
 }
 
 impl RasterSync {
+    /// A sync that sends glLogicOp through `logic_op`.
+    pub fn new(logic_op: LogicOpCall) -> RasterSync {
+        RasterSync {
+            logic_op_call: logic_op,
+            ..RasterSync::default()
+        }
+    }
+
     /// Calls sent and skipped so far.
     pub fn counts(&self) -> (u64, u64) {
         self.counts
@@ -75,6 +120,24 @@ impl RasterSync {
         let c = &mut self.counts;
         self.viewport.sync(s.viewport, c, |v| unsafe {
             gl.viewport(v.x, v.y, v.width, v.height)
+        });
+        let planes = s
+            .clip_planes
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| p.enabled)
+            .fold(0u8, |bits, (i, _)| bits | (1 << i));
+        self.clip_planes.sync(planes, c, |bits| {
+            for i in 0..MAX_CLIP_PLANES {
+                toggle(gl, glow::CLIP_DISTANCE0 + i as u32, bits & (1 << i) != 0);
+            }
+        });
+        // Also before a clear: glClear obeys the scissor (GL 1.5 §4.2.3).
+        self.scissor.sync(s.scissor_box(), c, |b| unsafe {
+            toggle(gl, glow::SCISSOR_TEST, b.is_some());
+            if let Some(b) = b {
+                gl.scissor(b.x, b.y, b.width, b.height);
+            }
         });
         self.depth_range.sync(s.depth_range, c, |r| unsafe {
             gl.depth_range_f64(f64::from(r.near), f64::from(r.far))
@@ -116,10 +179,25 @@ impl RasterSync {
             );
             gl.stencil_mask(t.write_mask);
         });
-        self.blend.sync(s.blend.get(), c, |b| unsafe {
-            toggle(gl, glow::BLEND, b.is_some());
-            if let Some(b) = b {
-                gl.blend_func(conv::value(b.src), conv::value(b.dst));
+        self.blend
+            .sync((s.blend.get(), s.blend_color), c, |(b, k)| unsafe {
+                toggle(gl, glow::BLEND, b.is_some());
+                if let Some(b) = b {
+                    gl.blend_func_separate(
+                        conv::value(b.src_rgb),
+                        conv::value(b.dst_rgb),
+                        conv::value(b.src_alpha),
+                        conv::value(b.dst_alpha),
+                    );
+                    gl.blend_equation(conv::value(b.equation));
+                    gl.blend_color(k.x, k.y, k.z, k.w);
+                }
+            });
+        let call = self.logic_op_call;
+        self.logic_op.sync(s.logic_op.get(), c, |op| {
+            toggle(gl, glow::COLOR_LOGIC_OP, op.is_some());
+            if let Some(op) = op {
+                call.call(conv::value(op));
             }
         });
         // A pass offsets in its own mode only (`polygon`); a clear sends the state's enables.
@@ -165,7 +243,7 @@ impl RasterSync {
     /// Forget what was sent (after something else touched GL state).
     pub fn invalidate(&mut self) {
         let counts = self.counts;
-        *self = RasterSync::default();
+        *self = RasterSync::new(self.logic_op_call);
         self.counts = counts;
     }
 }

@@ -78,6 +78,12 @@ pub enum UniformSource {
     Sampler(u8),
     /// glPointSize, written to gl_PointSize (core GL reads the size from the program).
     PointSize,
+    /// CLIP_PLANEi's plane in eye coordinates.
+    ClipPlane(u8),
+    /// `Fog::factor_params`: (a, b, d·log₂e, d/√ln 2).
+    FogParams,
+    /// FOG_COLOR, clamped when set.
+    FogColor,
 }
 
 impl UniformSource {
@@ -102,6 +108,9 @@ impl UniformSource {
             UniformSource::CombinerConstant(i) => format!("u_combiner_constant{i}"),
             UniformSource::Sampler(u) => format!("u_tex{u}"),
             UniformSource::PointSize => "u_point_size".into(),
+            UniformSource::ClipPlane(i) => format!("u_clip_plane{i}"),
+            UniformSource::FogParams => "u_fog_params".into(),
+            UniformSource::FogColor => "u_fog_color".into(),
         }
     }
 
@@ -213,6 +222,14 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
         }
         UniformSource::Sampler(u) => Int(i32::from(u)),
         UniformSource::PointSize => Float(state.point_size),
+        UniformSource::ClipPlane(i) => Vec4(
+            state
+                .clip_planes
+                .get(usize::from(i))
+                .map_or(glam::Vec4::ZERO, |p| p.value),
+        ),
+        UniformSource::FogParams => Vec4(state.fog.value.factor_params()),
+        UniformSource::FogColor => Vec4(state.fog.value.color),
     }
 }
 

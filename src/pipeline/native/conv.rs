@@ -4,7 +4,7 @@
 //! (GL_TEXTUREi, the crossbar). On a compatibility context every legacy format exists, so
 //! the table's value is the one sent, with no substitution.
 
-use crate::ff::glenum::{gl, light, registry, texture_unit as unit};
+use crate::ff::glenum::{clip_plane, gl, light, registry, texture_unit as unit};
 use crate::ff::{Capability, CombineSource};
 
 use super::bindings::types::GLenum;
@@ -26,9 +26,15 @@ pub fn texture_unit(i: u8) -> GLenum {
 pub fn capability(c: Capability) -> Option<GLenum> {
     match c {
         Capability::Light(i) => Some(light(i)),
+        Capability::ClipPlane(i) => Some(clip_plane(i)),
         Capability::RegisterCombiners => None,
         other => Some(gl(other)),
     }
+}
+
+/// GL_CLIP_PLANEi.
+pub fn clip_plane_name(i: u8) -> GLenum {
+    clip_plane(i)
 }
 
 /// A combine source; TEXTUREn is the crossbar (ARB_texture_env_crossbar, GL 1.4).

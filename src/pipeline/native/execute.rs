@@ -21,7 +21,7 @@
 
 use glam::Mat4;
 
-use crate::ff::{AttribMask, ClearMask, Command, MatrixMode};
+use crate::ff::{AttribMask, ClearMask, Command, FogParam, MatrixMode};
 use crate::pipeline::PipelineError;
 
 use super::bindings as gl;
@@ -162,6 +162,32 @@ impl Native {
             Command::FrontFace(f) => unsafe { g.FrontFace(conv::value(*f)) },
             Command::LineWidth(w) => unsafe { g.LineWidth(*w) },
             Command::PointSize(s) => unsafe { g.PointSize(*s) },
+            Command::Fog(p) => fog(g, *p),
+            // GL transforms the plane by the inverse modelview itself, as the model did.
+            Command::ClipPlane { plane, equation } => {
+                let e = equation.as_dvec4().to_array();
+                unsafe { g.ClipPlane(conv::clip_plane_name(*plane), e.as_ptr()) }
+            }
+            Command::BlendFuncSeparate {
+                src_rgb,
+                dst_rgb,
+                src_alpha,
+                dst_alpha,
+            } => unsafe {
+                g.BlendFuncSeparate(
+                    conv::value(*src_rgb),
+                    conv::value(*dst_rgb),
+                    conv::value(*src_alpha),
+                    conv::value(*dst_alpha),
+                )
+            },
+            Command::BlendEquation(e) => unsafe { g.BlendEquation(conv::value(*e)) },
+            Command::BlendColor(c) => unsafe { g.BlendColor(c.x, c.y, c.z, c.w) },
+            Command::Hint { target, mode } => unsafe {
+                g.Hint(conv::value(*target), conv::value(*mode))
+            },
+            Command::LogicOp(op) => unsafe { g.LogicOp(conv::value(*op)) },
+            Command::Scissor(b) => unsafe { g.Scissor(b.x, b.y, b.width, b.height) },
             Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
             Command::ClearColor(c) => unsafe { g.ClearColor(c.x, c.y, c.z, c.w) },
             Command::ClearDepth(d) => unsafe { g.ClearDepth((*d).into()) },
@@ -215,6 +241,21 @@ fn reload_texture_matrix(g: &gl::Gl) {
     unsafe {
         g.LoadMatrixf(other.as_ptr());
         g.LoadMatrixf(m.as_ptr());
+    }
+}
+
+/// glFog with the parameter's own entry point (glFogi for the mode, glFogfv for the colour).
+fn fog(g: &gl::Gl, p: FogParam) {
+    // SAFETY: plain GL calls; FOG_COLOR reads 4 floats from a local array.
+    unsafe {
+        match p {
+            FogParam::Mode(m) => g.Fogi(gl::FOG_MODE, conv::int(conv::value(m))),
+            FogParam::Density(v) => g.Fogf(gl::FOG_DENSITY, v),
+            FogParam::Start(v) => g.Fogf(gl::FOG_START, v),
+            FogParam::End(v) => g.Fogf(gl::FOG_END, v),
+            FogParam::Index(v) => g.Fogf(gl::FOG_INDEX, v),
+            FogParam::Color(c) => g.Fogfv(gl::FOG_COLOR, c.to_array().as_ptr()),
+        }
     }
 }
 

@@ -78,18 +78,9 @@ impl NativePipeline {
             textures: textures::Textures::default(),
             attrib_masks: Vec::new(),
         };
-        // The model's viewport starts as GL's (the bound target), as on the emulated path:
-        // a glPopAttrib(VIEWPORT_BIT) sends the model's viewport back.
-        let mut core = Core::default();
-        let mut v = [0i32; 4];
-        // SAFETY: VIEWPORT writes 4 integers.
-        unsafe { ctx.gl().get_parameter_i32_slice(glow::VIEWPORT, &mut v) };
-        let _ = core.state.apply(&Command::Viewport(crate::ff::Viewport {
-            x: v[0],
-            y: v[1],
-            width: v[2],
-            height: v[3],
-        }));
+        // The model's viewport and scissor box start as GL's (the bound target), as on the
+        // emulated path: a glPopAttrib(VIEWPORT_BIT) sends the model's viewport back.
+        let core = Core::for_bound_target(ctx);
         Ok(PathPipeline::from_parts(core, path))
     }
 

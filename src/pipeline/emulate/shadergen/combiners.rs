@@ -133,8 +133,14 @@ pub fn emit(w: &mut GlslWriter, fragment: &FragmentKey, key: &CombinersKey) {
     } else {
         w.line("vec4 rc_secondary = vec4(0.0);");
     }
-    // Fog is off: FOG = (fog colour, 1); SPARE0.a starts as texture 0's alpha.
-    w.line("vec4 rc_fog = vec4(0.0, 0.0, 0.0, 1.0);");
+    // FOG = (fog colour, fog factor f) when fog is on — the final combiner applies fog
+    // (NV_register_combiners) — else (0, 0, 0, 1). SPARE0.a starts as texture 0's alpha.
+    if fragment.fog.is_some() {
+        let c = w.uniform(UniformSource::FogColor);
+        w.line(format!("vec4 rc_fog = vec4({c}.rgb, fog_f);"));
+    } else {
+        w.line("vec4 rc_fog = vec4(0.0, 0.0, 0.0, 1.0);");
+    }
     w.line(format!(
         "vec4 rc_spare0 = vec4(0.0, 0.0, 0.0, {});",
         if enabled(0) {

@@ -1,10 +1,11 @@
 //! The fragment stage: texture lookups (projective, depth compare), the texture environment
-//! of each enabled unit in order (GL 1.5 §3.8.13 and ARB_texture_env_combine), the alpha test.
+//! of each enabled unit in order (GL 1.5 §3.8.13 and ARB_texture_env_combine), the colour
+//! sum, fog (§3.10), the alpha test.
 //! Every stage's result is clamped to [0, 1] (H14); INTERPOLATE is a0·a2 + a1·(1 − a2) (H13).
 
 use crate::ff::{
     BaseFormat, Combine, CombineFunc, CombineOperand, CombineSource, CompareFunc, DepthTextureMode,
-    TextureTarget,
+    FogMode, TextureTarget,
 };
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{EnvKey, FragmentKey, FragmentUnitKey, TexelKey};
@@ -44,6 +45,9 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
             w.line(format!("t{0} = q8(t{0});", unit.unit));
         }
     }
+    if let Some(mode) = key.fog {
+        emit_fog_factor(&mut w, mode);
+    }
     w.line("vec4 previous = primary;");
     match &key.combiners {
         Some(c) => super::combiners::emit(&mut w, key, c),
@@ -59,6 +63,9 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
                     m.clamp("previous.rgb + secondary.rgb")
                 ));
             }
+            if key.fog.is_some() {
+                emit_fog_blend(&mut w, key.precision);
+            }
         }
     }
     if let Some(func) = key.alpha_test {
@@ -69,6 +76,34 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
         Precision::Fixed8 => w.line("frag_color = previous / 255.0;"),
     }
     w
+}
+
+/// `fog_f`: the fog factor of the interpolated distance z = v_fog, clamped to [0, 1]
+/// (GL 1.5 §3.10), by exp2 with Mesa's pre-scaled parameters (`Fog::factor_params`):
+/// LINEAR z·a + b; EXP 2^(−z·d·log₂e); EXP2 2^(−(z·d/√ln 2)²).
+fn emit_fog_factor(w: &mut GlslWriter, mode: FogMode) {
+    w.declare("in float v_fog;");
+    let p = w.uniform(UniformSource::FogParams);
+    let f = match mode {
+        FogMode::Linear => format!("v_fog * {p}.x + {p}.y"),
+        FogMode::Exp => format!("exp2(-(v_fog * {p}.z))"),
+        FogMode::Exp2 => format!("exp2(-((v_fog * {p}.w) * (v_fog * {p}.w)))"),
+    };
+    w.line(format!("float fog_f = clamp({f}, 0.0, 1.0);"));
+}
+
+/// C = f·C_r + (1 − f)·C_f on RGB, alpha unchanged (§3.10); after texturing and the colour
+/// sum, before the alpha test. Fixed8 rounds the blend to the nearest integer.
+fn emit_fog_blend(w: &mut GlslWriter, precision: Precision) {
+    let c = w.uniform(UniformSource::FogColor);
+    match precision {
+        Precision::Float => {
+            w.line(format!("previous.rgb = mix({c}.rgb, previous.rgb, fog_f);"));
+        }
+        Precision::Fixed8 => w.line(format!(
+            "previous.rgb = floor(mix(q8({c}).rgb, previous.rgb, fog_f) + 0.5);"
+        )),
+    }
 }
 
 /// `secondary`: the secondary colour of the face (the separate specular), clamped.

@@ -39,6 +39,12 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     let size = w.uniform(UniformSource::PointSize);
     w.line(format!("gl_PointSize = {size};"));
     let mut eye = EyeTerms::default();
+    for &i in &key.clip_planes {
+        // User clip plane i (GL 1.5 §2.12): kept where p′·x_eye ≥ 0, p′ the eye plane.
+        let e = eye.position(&mut w);
+        let p = w.uniform(UniformSource::ClipPlane(i));
+        w.line(format!("gl_ClipDistance[{i}] = dot({p}, {e});"));
+    }
     let color = if fragment.flat {
         w.declare(&format!(
             "layout(location = {ATTRIB_SHADE_COLOR}) in vec4 a_shade_color;"
@@ -67,6 +73,13 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     }
     for unit in &key.units {
         emit_texcoords(&mut w, &mut eye, key, unit);
+    }
+    if fragment.fog.is_some() {
+        // FOG_COORDINATE_SOURCE = FRAGMENT_DEPTH as Mesa computes it: z = |z_eye| per
+        // vertex (ffvertex_prog.c, FDM_EYE_PLANE_ABS), interpolated; f per fragment.
+        let e = eye.position(&mut w);
+        w.declare("out float v_fog;");
+        w.line(format!("v_fog = abs({e}.z);"));
     }
     if fragment.edges.is_some() {
         emit_edge(&mut w);

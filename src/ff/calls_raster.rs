@@ -1,0 +1,104 @@
+//! The converter of the raster calls added with GL 1.0–1.4 fog, scissor, clip planes, logic
+//! op and blending, and glHint; `Ok(None)` for calls of other areas.
+
+use super::api::{CType, Entry};
+use super::args::Args;
+use super::glenum::Family;
+use super::*;
+
+const FOG_SCALARS: &[&str] = &[
+    "GL_FOG_MODE",
+    "GL_FOG_DENSITY",
+    "GL_FOG_START",
+    "GL_FOG_END",
+    "GL_FOG_INDEX",
+];
+const FOG_VECTORS: &[&str] = &[
+    "GL_FOG_COLOR",
+    "GL_FOG_DENSITY",
+    "GL_FOG_START",
+    "GL_FOG_END",
+    "GL_FOG_INDEX",
+];
+
+/// A scalar fog parameter of `value`.
+fn fog_scalar(pname: &str, value: f32) -> FogParam {
+    match pname {
+        "GL_FOG_DENSITY" => FogParam::Density(value),
+        "GL_FOG_START" => FogParam::Start(value),
+        "GL_FOG_END" => FogParam::End(value),
+        _ => FogParam::Index(value),
+    }
+}
+
+/// glFog{f,i}(pname, param) and glFog{f,i}v(pname, params). FOG_MODE takes its token
+/// (the vector forms read numbers only: FOG_MODE goes through glFogi). glFogiv's colour is
+/// mapped as signed integers are (GL 1.5 Table 2.9: (2c + 1)/(2³² − 1)).
+fn fog<A: Args>(c: &A) -> Result<FogParam, A::Error> {
+    c.count(2)?;
+    Ok(match c.entry() {
+        Entry::Fogf | Entry::Fogi => match c.pname(0, FOG_SCALARS)? {
+            "GL_FOG_MODE" => FogParam::Mode(c.enm(1)?),
+            p => fog_scalar(p, c.f32(1)?),
+        },
+        _ => {
+            let int = c.entry() == Entry::Fogiv;
+            match c.pname(0, FOG_VECTORS)? {
+                "GL_FOG_COLOR" => {
+                    let v = c.floats::<4>(1)?;
+                    FogParam::Color(glam::Vec4::from_array(v.map(|x| {
+                        if int {
+                            CType::Int.normalized(f64::from(x))
+                        } else {
+                            x
+                        }
+                    })))
+                }
+                p => fog_scalar(p, c.floats::<1>(1)?[0]),
+            }
+        }
+    })
+}
+
+/// Fog, scissor, clip planes, logic op and blending.
+pub fn raster<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
+    Ok(Some(match c.entry() {
+        Entry::Fogf | Entry::Fogi | Entry::Fogfv | Entry::Fogiv => Command::Fog(fog(c)?),
+        Entry::ClipPlane => {
+            c.count(2)?;
+            Command::ClipPlane {
+                plane: c.family(0, Family::ClipPlane)?,
+                equation: c.vec4_array(1)?,
+            }
+        }
+        Entry::BlendColor => c.count(4).and(c.vec4_args(0)).map(Command::BlendColor)?,
+        Entry::BlendEquation => c.count(1).and(c.enm(0)).map(Command::BlendEquation)?,
+        Entry::BlendFuncSeparate => {
+            c.count(4)?;
+            Command::BlendFuncSeparate {
+                src_rgb: c.enm(0)?,
+                dst_rgb: c.enm(1)?,
+                src_alpha: c.enm(2)?,
+                dst_alpha: c.enm(3)?,
+            }
+        }
+        Entry::Hint => {
+            c.count(2)?;
+            Command::Hint {
+                target: c.enm(0)?,
+                mode: c.enm(1)?,
+            }
+        }
+        Entry::LogicOp => c.count(1).and(c.enm(0)).map(Command::LogicOp)?,
+        Entry::Scissor => {
+            c.count(4)?;
+            Command::Scissor(ScissorBox {
+                x: c.i32(0)?,
+                y: c.i32(1)?,
+                width: c.i32(2)?,
+                height: c.i32(3)?,
+            })
+        }
+        _ => return Ok(None),
+    }))
+}
