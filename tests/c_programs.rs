@@ -232,3 +232,18 @@ fn display_lists_run_as_on_mesa() {
     assert!(lit > 4000, "Mesa drew too little ({lit} pixels)");
     assert_images_match("lists", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+#[test]
+fn state_queries_answer_as_on_mesa() {
+    let exe = compile("state", Linking::Direct);
+    let mesa = String::from_utf8_lossy(&run(&exe, Library::Mesa, &[]).stdout).into_owned();
+    let ours = String::from_utf8_lossy(&run(&exe, Library::Fixedfunc, &[]).stdout).into_owned();
+    assert!(
+        mesa.lines().count() > 70,
+        "the program read too little:\n{mesa}"
+    );
+    for (m, o) in mesa.lines().zip(ours.lines()) {
+        assert_eq!(o, m, "the layer's answer differs from Mesa's");
+    }
+    assert_eq!(ours.lines().count(), mesa.lines().count());
+}

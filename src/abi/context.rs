@@ -248,6 +248,27 @@ impl Context {
                 self.pixel_store(args);
                 return Ret::None;
             }
+            _ if super::queries::handles(entry) && !inside => {
+                let Some(p) = self.pipeline.as_ref() else {
+                    return Ret::None;
+                };
+                let front = super::queries::ClientState {
+                    client: &self.client,
+                    pack_alignment: self.pack_alignment,
+                    unpack_alignment: self.unpack_alignment,
+                };
+                return match super::queries::answer(entry, args, p.state(), &front) {
+                    Ok(v) => Ret::Enum(v),
+                    Err(kind) => {
+                        self.record_error(kind);
+                        Ret::Enum(0)
+                    }
+                };
+            }
+            _ if super::queries::handles(entry) => {
+                self.record_error(GlErrorKind::InvalidOperation);
+                return Ret::Enum(0);
+            }
             Entry::GetError | Entry::Finish | Entry::Flush | Entry::GetString => {
                 self.record_error(GlErrorKind::InvalidOperation);
                 return Ret::None;

@@ -17,6 +17,7 @@ pub mod cargs;
 pub mod context;
 pub mod exports;
 pub mod osmesa;
+pub mod queries;
 pub mod strings;
 
 use std::cell::Cell;

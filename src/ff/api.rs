@@ -348,6 +348,26 @@ macro_rules! gl_entry_table {
         GetString = glGetString(Abi; name: GLenum) -> *const GLubyte;
         PixelStorei = glPixelStorei(Abi; pname: GLenum, param: GLint);
         PixelStoref = glPixelStoref(Abi; pname: GLenum, param: GLfloat);
+        // Queries, answered from the model (ff::query) and the front end's client state.
+        GetBooleanv = glGetBooleanv(Abi; pname: GLenum, data: *mut GLboolean);
+        GetIntegerv = glGetIntegerv(Abi; pname: GLenum, data: *mut GLint);
+        GetFloatv = glGetFloatv(Abi; pname: GLenum, data: *mut GLfloat);
+        GetDoublev = glGetDoublev(Abi; pname: GLenum, data: *mut GLdouble);
+        IsEnabled = glIsEnabled(Abi; cap: GLenum) -> GLboolean;
+        GetLightfv = glGetLightfv(Abi; light: GLenum, pname: GLenum, params: *mut GLfloat);
+        GetLightiv = glGetLightiv(Abi; light: GLenum, pname: GLenum, params: *mut GLint);
+        GetMaterialfv = glGetMaterialfv(Abi; face: GLenum, pname: GLenum, params: *mut GLfloat);
+        GetMaterialiv = glGetMaterialiv(Abi; face: GLenum, pname: GLenum, params: *mut GLint);
+        GetTexEnvfv = glGetTexEnvfv(Abi; target: GLenum, pname: GLenum, params: *mut GLfloat);
+        GetTexEnviv = glGetTexEnviv(Abi; target: GLenum, pname: GLenum, params: *mut GLint);
+        GetTexGenfv = glGetTexGenfv(Abi; coord: GLenum, pname: GLenum, params: *mut GLfloat);
+        GetTexGeniv = glGetTexGeniv(Abi; coord: GLenum, pname: GLenum, params: *mut GLint);
+        GetTexGendv = glGetTexGendv(Abi; coord: GLenum, pname: GLenum, params: *mut GLdouble);
+        GetTexParameterfv = glGetTexParameterfv(Abi; target: GLenum, pname: GLenum, params: *mut GLfloat);
+        GetTexParameteriv = glGetTexParameteriv(Abi; target: GLenum, pname: GLenum, params: *mut GLint);
+        GetTexLevelParameterfv = glGetTexLevelParameterfv(Abi; target: GLenum, level: GLint, pname: GLenum, params: *mut GLfloat);
+        GetTexLevelParameteriv = glGetTexLevelParameteriv(Abi; target: GLenum, level: GLint, pname: GLenum, params: *mut GLint);
+        GetClipPlane = glGetClipPlane(Abi; plane: GLenum, equation: *mut GLdouble);
         }
     };
 }

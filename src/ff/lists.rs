@@ -78,6 +78,11 @@ impl Lists {
         self.compiling.as_ref().map(|(_, m, _)| *m)
     }
 
+    /// The name of the list being compiled (LIST_INDEX), if one is.
+    pub fn compiling_name(&self) -> Option<u32> {
+        self.compiling.as_ref().map(|(n, _, _)| *n)
+    }
+
     /// glNewList (the caller has checked name ≠ 0 and the mode).
     pub fn begin(&mut self, name: u32, mode: ListMode) -> Result<(), &'static str> {
         if self.compiling.is_some() {

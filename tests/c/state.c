@@ -1,0 +1,237 @@
+/* State set and read back: every glGet form, glIsEnabled and the per-object getters,
+ * across lighting, texturing, texgen, per-fragment state, fog, clip planes, client arrays
+ * and display lists, with glPushAttrib/glPopAttrib around changes. One line per query;
+ * floats to 5 significant digits. Run on Mesa's OSMesa and on fixedfunc's library, the
+ * outputs must be the same.
+ *
+ * usage: state */
+#include <GL/osmesa.h>
+#include <stdio.h>
+
+static void ints(const char *what, GLenum pname, int n) {
+  GLint v[16] = {0};
+  glGetIntegerv(pname, v);
+  printf("%-28s", what);
+  for (int i = 0; i < n; i++) printf(" %d", v[i]);
+  printf("  err 0x%x\n", glGetError());
+}
+
+static void floats(const char *what, GLenum pname, int n) {
+  GLfloat v[16] = {0};
+  glGetFloatv(pname, v);
+  printf("%-28s", what);
+  for (int i = 0; i < n; i++) printf(" %.5g", v[i]);
+  printf("  err 0x%x\n", glGetError());
+}
+
+static void bools(const char *what, GLenum pname, int n) {
+  GLboolean v[16] = {0};
+  glGetBooleanv(pname, v);
+  printf("%-28s", what);
+  for (int i = 0; i < n; i++) printf(" %d", v[i]);
+  printf("  err 0x%x\n", glGetError());
+}
+
+static void doubles(const char *what, GLenum pname, int n) {
+  GLdouble v[16] = {0};
+  glGetDoublev(pname, v);
+  printf("%-28s", what);
+  for (int i = 0; i < n; i++) printf(" %.5g", v[i]);
+  printf("  err 0x%x\n", glGetError());
+}
+
+static void enabled(const char *what, GLenum cap) {
+  GLboolean on = glIsEnabled(cap);
+  printf("%-28s %d  err 0x%x\n", what, on, glGetError());
+}
+
+static void fv(const char *what, const GLfloat *v, int n) {
+  printf("%-28s", what);
+  for (int i = 0; i < n; i++) printf(" %.5g", v[i]);
+  printf("  err 0x%x\n", glGetError());
+}
+
+int main(void) {
+  static GLubyte buffer[32 * 24 * 4];
+  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+  if (!ctx || !OSMesaMakeCurrent(ctx, buffer, GL_UNSIGNED_BYTE, 32, 24)) return 1;
+  GLfloat v[16];
+
+  /* Defaults. */
+  ints("viewport", GL_VIEWPORT, 4);
+  ints("scissor box", GL_SCISSOR_BOX, 4);
+  ints("matrix mode", GL_MATRIX_MODE, 1);
+  floats("current color", GL_CURRENT_COLOR, 4);
+  ints("current color (int)", GL_CURRENT_COLOR, 4);
+  floats("current normal", GL_CURRENT_NORMAL, 3);
+  bools("depth writemask", GL_DEPTH_WRITEMASK, 1);
+  ints("depth func", GL_DEPTH_FUNC, 1);
+  doubles("depth range", GL_DEPTH_RANGE, 2);
+  ints("max lights", GL_MAX_LIGHTS, 1);
+  ints("max texture units", GL_MAX_TEXTURE_UNITS, 1);
+  ints("max clip planes", GL_MAX_CLIP_PLANES, 1);
+  ints("max modelview depth", GL_MAX_MODELVIEW_STACK_DEPTH, 1);
+  ints("max attrib depth", GL_MAX_ATTRIB_STACK_DEPTH, 1);
+  ints("shade model", GL_SHADE_MODEL, 1);
+  ints("front face", GL_FRONT_FACE, 1);
+  ints("stencil writemask", GL_STENCIL_WRITEMASK, 1);
+  ints("unpack alignment", GL_UNPACK_ALIGNMENT, 1);
+  enabled("dither", GL_DITHER);
+  enabled("lighting", GL_LIGHTING);
+  enabled("vertex array", GL_VERTEX_ARRAY);
+
+  /* Transform. */
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(-1, 1, -1, 1, 1, 10);
+  glMatrixMode(GL_MODELVIEW);
+  glTranslatef(1, 2, 3);
+  glScalef(2, 2, 2);
+  glPushMatrix();
+  floats("modelview", GL_MODELVIEW_MATRIX, 16);
+  floats("projection", GL_PROJECTION_MATRIX, 16);
+  ints("modelview depth", GL_MODELVIEW_STACK_DEPTH, 1);
+  glPopMatrix();
+  glViewport(2, 3, 20, 10);
+  glDepthRange(0.25, 0.75);
+  ints("viewport set", GL_VIEWPORT, 4);
+  floats("depth range set", GL_DEPTH_RANGE, 2);
+
+  /* Lighting. */
+  GLfloat pos[] = {1, 2, 3, 0}, dif[] = {0.5f, 0.25f, 1, 1}, amb[] = {0.1f, 0.2f, 0.3f, 1};
+  glLoadIdentity();
+  glLightfv(GL_LIGHT1, GL_POSITION, pos);
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, dif);
+  glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 45);
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, amb);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+  glMaterialf(GL_FRONT, GL_SHININESS, 17.5f);
+  glMaterialfv(GL_BACK, GL_EMISSION, dif);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT1);
+  glColorMaterial(GL_BACK, GL_SPECULAR);
+  glGetLightfv(GL_LIGHT1, GL_POSITION, v);
+  fv("light1 position", v, 4);
+  glGetLightfv(GL_LIGHT1, GL_DIFFUSE, v);
+  fv("light1 diffuse", v, 4);
+  glGetLightfv(GL_LIGHT1, GL_SPOT_CUTOFF, v);
+  fv("light1 cutoff", v, 1);
+  glGetMaterialfv(GL_FRONT, GL_SHININESS, v);
+  fv("front shininess", v, 1);
+  glGetMaterialfv(GL_BACK, GL_EMISSION, v);
+  fv("back emission", v, 4);
+  floats("light model ambient", GL_LIGHT_MODEL_AMBIENT, 4);
+  bools("two side", GL_LIGHT_MODEL_TWO_SIDE, 1);
+  ints("color material param", GL_COLOR_MATERIAL_PARAMETER, 1);
+  ints("color material face", GL_COLOR_MATERIAL_FACE, 1);
+  enabled("light1", GL_LIGHT1);
+
+  /* Texturing. */
+  static const GLubyte texels[4 * 4 * 4] = {255};
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, 7);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_ADD_SIGNED);
+  glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, 2);
+  GLfloat plane[] = {1, 0.5f, 0, 0.25f};
+  glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
+  glTexGenfv(GL_S, GL_OBJECT_PLANE, plane);
+  glEnable(GL_TEXTURE_GEN_S);
+  glEnable(GL_TEXTURE_2D);
+  ints("active texture", GL_ACTIVE_TEXTURE, 1);
+  ints("binding 2d", GL_TEXTURE_BINDING_2D, 1);
+  enabled("texture 2d (unit 1)", GL_TEXTURE_2D);
+  enabled("texgen s (unit 1)", GL_TEXTURE_GEN_S);
+  GLint iv[4];
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, iv);
+  printf("%-28s %d  err 0x%x\n", "min filter", iv[0], glGetError());
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, iv);
+  printf("%-28s %d  err 0x%x\n", "wrap s", iv[0], glGetError());
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, iv);
+  printf("%-28s %d  err 0x%x\n", "level 0 width", iv[0], glGetError());
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_COMBINE_RGB, iv);
+  printf("%-28s %d  err 0x%x\n", "combine rgb", iv[0], glGetError());
+  glGetTexEnvfv(GL_TEXTURE_ENV, GL_RGB_SCALE, v);
+  fv("rgb scale", v, 1);
+  glGetTexGenfv(GL_S, GL_OBJECT_PLANE, v);
+  fv("object plane s", v, 4);
+  glGetTexGeniv(GL_S, GL_TEXTURE_GEN_MODE, iv);
+  printf("%-28s %d  err 0x%x\n", "texgen mode s", iv[0], glGetError());
+  glActiveTexture(GL_TEXTURE0);
+  enabled("texture 2d (unit 0)", GL_TEXTURE_2D);
+
+  /* Per-fragment state, fog, clip planes. */
+  glPushAttrib(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_FOG_BIT | GL_ENABLE_BIT);
+  glAlphaFunc(GL_GEQUAL, 0.5f);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_BLEND);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_FALSE);
+  glFogi(GL_FOG_MODE, GL_LINEAR);
+  glFogf(GL_FOG_START, 2);
+  glFogf(GL_FOG_END, 8);
+  glEnable(GL_FOG);
+  ints("alpha func", GL_ALPHA_TEST_FUNC, 1);
+  floats("alpha ref", GL_ALPHA_TEST_REF, 1);
+  ints("blend src, dst", GL_BLEND_SRC, 1);
+  ints("blend dst", GL_BLEND_DST, 1);
+  ints("fog mode", GL_FOG_MODE, 1);
+  floats("fog start", GL_FOG_START, 1);
+  ints("attrib depth", GL_ATTRIB_STACK_DEPTH, 1);
+  glPopAttrib();
+  ints("blend dst popped", GL_BLEND_DST, 1);
+  enabled("blend popped", GL_BLEND);
+  enabled("fog popped", GL_FOG);
+  ints("depth func popped", GL_DEPTH_FUNC, 1);
+  bools("depth mask popped", GL_DEPTH_WRITEMASK, 1);
+  ints("alpha func popped", GL_ALPHA_TEST_FUNC, 1);
+  GLdouble eq[] = {1, 0, 0, 0.5}, back[4];
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glTranslatef(1, 0, 0);
+  glClipPlane(GL_CLIP_PLANE2, eq);
+  glEnable(GL_CLIP_PLANE2);
+  glGetClipPlane(GL_CLIP_PLANE2, back);
+  printf("%-28s %.5g %.5g %.5g %.5g  err 0x%x\n", "clip plane 2", back[0], back[1], back[2],
+         back[3], glGetError());
+  enabled("clip plane 2", GL_CLIP_PLANE2);
+  glScissor(1, 2, 3, 4);
+  ints("scissor set", GL_SCISSOR_BOX, 4);
+
+  /* Client state and lists. */
+  static const GLfloat verts[6] = {0};
+  glVertexPointer(2, GL_FLOAT, 8, verts);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glClientActiveTexture(GL_TEXTURE1);
+  glTexCoordPointer(3, GL_SHORT, 0, verts);
+  enabled("vertex array", GL_VERTEX_ARRAY);
+  ints("vertex array size", GL_VERTEX_ARRAY_SIZE, 1);
+  ints("vertex array stride", GL_VERTEX_ARRAY_STRIDE, 1);
+  ints("client active texture", GL_CLIENT_ACTIVE_TEXTURE, 1);
+  ints("texcoord array type", GL_TEXTURE_COORD_ARRAY_TYPE, 1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 2);
+  ints("pack alignment", GL_PACK_ALIGNMENT, 1);
+  glListBase(5);
+  ints("list base", GL_LIST_BASE, 1);
+  glNewList(3, GL_COMPILE);
+  ints("list index", GL_LIST_INDEX, 1);
+  ints("list mode", GL_LIST_MODE, 1);
+  glEndList();
+
+  /* Errors of the getters. */
+  ints("unknown pname", 0x1234, 1);
+  enabled("unknown cap", 0x1234);
+  glGetLightfv(GL_LIGHT0 + 8, GL_DIFFUSE, v);
+  printf("%-28s err 0x%x\n", "light 8", glGetError());
+  glGetMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, v);
+  printf("%-28s err 0x%x\n", "material front and back", glGetError());
+  glBegin(GL_POINTS);
+  glGetFloatv(GL_CURRENT_COLOR, v);
+  glEnd();
+  printf("%-28s err 0x%x\n", "glGet inside glBegin", glGetError());
+
+  OSMesaDestroyContext(ctx);
+  return 0;
+}
