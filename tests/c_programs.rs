@@ -9,6 +9,7 @@ mod support;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use std::sync::Mutex;
 
 use image::{Rgba, RgbaImage};
 use support::{assert_images_match, Tolerance};
@@ -41,8 +42,21 @@ fn work_dir(name: &str) -> PathBuf {
     dir
 }
 
-/// Compiles `tests/c/NAME.c` as C99 with every warning an error.
+/// Compiles `tests/c/NAME.c` as C99 with every warning an error, once per test run (the
+/// tests run in parallel and share the executables).
 fn compile(name: &str, linking: Linking) -> PathBuf {
+    static BUILT: Mutex<Vec<(String, PathBuf)>> = Mutex::new(Vec::new());
+    let key = format!("{name}-{linking:?}");
+    let mut built = BUILT.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, exe)) = built.iter().find(|(k, _)| *k == key) {
+        return exe.clone();
+    }
+    let exe = build(name, linking);
+    built.push((key, exe.clone()));
+    exe
+}
+
+fn build(name: &str, linking: Linking) -> PathBuf {
     let dir = work_dir(name);
     let exe = dir.join(format!("{name}-{linking:?}"));
     let mut cc = Command::new("cc");
@@ -246,4 +260,72 @@ fn state_queries_answer_as_on_mesa() {
         assert_eq!(o, m, "the layer's answer differs from Mesa's");
     }
     assert_eq!(ours.lines().count(), mesa.lines().count());
+}
+
+/// A program traced with FIXEDFUNC_TRACE replays to the image it rendered, and `fixedfunc
+/// shaders` reads the trace.
+#[test]
+fn a_trace_replays_to_the_same_image() {
+    for (name, args, size) in [
+        ("osdemo", vec!["120", "90"], "120x90"),
+        ("arrays", vec![], "192x128"),
+        ("lists", vec![], "160x160"),
+    ] {
+        let exe = compile(name, Linking::Direct);
+        let dir = work_dir(name);
+        let (image, trace, replayed) = (
+            dir.join("traced.ppm"),
+            dir.join("calls.c"),
+            dir.join("replayed.png"),
+        );
+        let mut cmd = Command::new(&exe);
+        cmd.arg(&image)
+            .args(&args)
+            .env("LD_LIBRARY_PATH", fixedfunc_dir())
+            .env("FIXEDFUNC_TRACE", &trace);
+        let out = cmd.output().expect("the program runs");
+        assert!(
+            out.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = std::fs::read_to_string(&trace).expect("the trace was written");
+        assert!(
+            text.contains(&format!("--size {size}")),
+            "{name}: {text:.300}"
+        );
+        let replay = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
+            .arg("replay")
+            .arg(&trace)
+            .args(["--size", size, "--out"])
+            .arg(&replayed)
+            .output()
+            .expect("fixedfunc runs");
+        assert!(
+            replay.status.success(),
+            "{name}: replay failed: {}",
+            String::from_utf8_lossy(&replay.stderr)
+        );
+        let traced = read_ppm(&image);
+        // The PPM carries no alpha: compare colours only.
+        let mut back = image::open(&replayed).expect("a PNG").to_rgba8();
+        back.pixels_mut().for_each(|p| p.0[3] = 255);
+        assert_images_match(
+            &format!("trace-{name}"),
+            &back,
+            &traced,
+            within_3_on_99_percent(&traced),
+        );
+        let shaders = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
+            .arg("shaders")
+            .arg(&trace)
+            .output()
+            .expect("fixedfunc runs");
+        let listing = String::from_utf8_lossy(&shaders.stdout);
+        assert!(
+            shaders.status.success() && listing.contains("#version 330"),
+            "{name}: shaders failed: {}",
+            String::from_utf8_lossy(&shaders.stderr)
+        );
+    }
 }

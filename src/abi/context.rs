@@ -120,6 +120,8 @@ pub struct Context {
     pack_alignment: usize,
     /// The depth values of OSMesaGetDepthBuffer, kept until the next call to it.
     pub depth_copy: Vec<u8>,
+    /// FIXEDFUNC_TRACE is set: each executed command is written to the trace.
+    tracing: bool,
 }
 
 /// The largest buffer side (llvmpipe's MAX_TEXTURE_SIZE, which Mesa's OSMesa reports as
@@ -156,6 +158,7 @@ impl Context {
             unpack_alignment: 4,
             pack_alignment: 4,
             depth_copy: Vec::new(),
+            tracing: super::trace::enabled(),
         })
     }
 
@@ -190,6 +193,9 @@ impl Context {
             }
         }
         self.buffer = Some(buffer);
+        if self.tracing {
+            super::trace::buffer(buffer.width, buffer.height);
+        }
         Ok(())
     }
 
@@ -309,6 +315,9 @@ impl Context {
         let Some(p) = self.pipeline.as_mut() else {
             return;
         };
+        if self.tracing {
+            super::trace::command(cmd);
+        }
         if let Err(e) = p.execute(&self.gpu, std::slice::from_ref(cmd)) {
             eprintln!("fixedfunc: {}: {e}", cmd.entry());
             self.record_error(GlErrorKind::InvalidOperation);

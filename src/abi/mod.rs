@@ -10,6 +10,8 @@
 //!   script reader uses (`ff::calls`, `ff::immediate`) and executes the Commands on the
 //!   current context's pipeline; GL's queries and client state that the model does not
 //!   hold (glGetError, glGetString, glPixelStore, glFinish) are answered here.
+//! - [`trace`]: with `FIXEDFUNC_TRACE=calls.c`, every executed call as the script
+//!   dialect, replayable with `fixedfunc replay`.
 //! - No Rust panic crosses the boundary: one is caught, printed on stderr, and recorded as
 //!   GL_INVALID_OPERATION.
 
@@ -19,6 +21,7 @@ pub mod exports;
 pub mod osmesa;
 pub mod queries;
 pub mod strings;
+pub mod trace;
 
 use std::cell::Cell;
 use std::panic::{catch_unwind, AssertUnwindSafe};

@@ -12,7 +12,8 @@
 //! `ReadPixels::slot = n`. Indices beyond the named tokens print as `GL_LIGHT0 + 9`.
 //!
 //! [`print`] is the inverse of [`parse`]: `parse(&print(cmds)) == cmds` for every command list
-//! except indexed geometry, which prints de-indexed (same triangles, no index array).
+//! (indexed geometry prints as client arrays and glDrawElements; vertices no index names
+//! are dropped).
 
 mod lexer;
 pub mod names;

@@ -644,14 +644,13 @@ fn tex_image(out: &mut String, t: &TexImage) {
     );
 }
 
-/// glBegin/glEnd; indexed geometry is printed de-indexed.
+/// glBegin/glEnd; indexed geometry as glDrawElements over client arrays.
 fn draw(out: &mut String, g: &Geometry) {
+    if let Some(idx) = &g.indices {
+        return draw_elements(out, g, idx);
+    }
     line(out, format_args!("{}({})", Entry::Begin, n(g.primitive)));
-    let order: Vec<usize> = match &g.indices {
-        Some(idx) => idx.iter().map(|&i| i as usize).collect(),
-        None => (0..g.positions.len()).collect(),
-    };
-    for i in order {
+    for i in 0..g.positions.len() {
         let Some(p) = g.positions.get(i) else {
             continue;
         };
@@ -693,4 +692,92 @@ fn draw(out: &mut String, g: &Geometry) {
         }
     }
     line(out, format_args!("{}()", Entry::End));
+}
+
+/// Indexed geometry as the era drew it: client arrays over the vertices, then
+/// glDrawElements, then the arrays disabled again. (Mesa splits indexed quads differently
+/// from glBegin/glEnd ones, so an indexed draw stays indexed.)
+fn draw_elements(out: &mut String, g: &Geometry, idx: &[u32]) {
+    let flat4 = |v: &[glam::Vec4]| -> Vec<f32> { v.iter().flat_map(|x| x.to_array()).collect() };
+    let mut enabled = vec!["GL_VERTEX_ARRAY"];
+    line(
+        out,
+        format_args!(
+            "{}(4, GL_FLOAT, 0, {})",
+            Entry::VertexPointer,
+            arr(&flat4(&g.positions))
+        ),
+    );
+    if let Some(c) = &g.colors {
+        line(
+            out,
+            format_args!(
+                "{}(4, GL_FLOAT, 0, {})",
+                Entry::ColorPointer,
+                arr(&flat4(c))
+            ),
+        );
+        enabled.push("GL_COLOR_ARRAY");
+    }
+    if let Some(nrm) = &g.normals {
+        let flat: Vec<f32> = nrm.iter().flat_map(|x| x.to_array()).collect();
+        line(
+            out,
+            format_args!("{}(GL_FLOAT, 0, {})", Entry::NormalPointer, arr(&flat)),
+        );
+        enabled.push("GL_NORMAL_ARRAY");
+    }
+    for name in &enabled {
+        line(out, format_args!("{}({name})", Entry::EnableClientState));
+    }
+    let units: Vec<(usize, &Vec<glam::Vec4>)> = g
+        .texcoords
+        .iter()
+        .enumerate()
+        .filter_map(|(u, t)| t.as_ref().map(|t| (u, t)))
+        .collect();
+    for (u, t) in &units {
+        let unit = Family::Texture.print(*u as u8);
+        line(out, format_args!("{}({unit})", Entry::ClientActiveTexture));
+        line(
+            out,
+            format_args!(
+                "{}(4, GL_FLOAT, 0, {})",
+                Entry::TexCoordPointer,
+                arr(&flat4(t))
+            ),
+        );
+        line(
+            out,
+            format_args!("{}(GL_TEXTURE_COORD_ARRAY)", Entry::EnableClientState),
+        );
+    }
+    let list: Vec<String> = idx.iter().map(u32::to_string).collect();
+    line(
+        out,
+        format_args!(
+            "{}({}, {}, GL_UNSIGNED_INT, (GLuint[]){{{}}})",
+            Entry::DrawElements,
+            n(g.primitive),
+            idx.len(),
+            list.join(", ")
+        ),
+    );
+    for (u, _) in &units {
+        let unit = Family::Texture.print(*u as u8);
+        line(out, format_args!("{}({unit})", Entry::ClientActiveTexture));
+        line(
+            out,
+            format_args!("{}(GL_TEXTURE_COORD_ARRAY)", Entry::DisableClientState),
+        );
+    }
+    if !units.is_empty() {
+        line(
+            out,
+            format_args!("{}(GL_TEXTURE0)", Entry::ClientActiveTexture),
+        );
+    }
+    for name in &enabled {
+        line(out, format_args!("{}({name})", Entry::DisableClientState));
+    }
 }

@@ -644,19 +644,22 @@ fn round_trip_of_every_command() {
 }
 
 #[test]
-fn indexed_geometry_prints_de_indexed() {
+fn indexed_geometry_prints_as_draw_elements() {
     let mut g = Geometry::new(
-        Primitive::Triangles,
-        vec![Vec4::W, Vec4::X + Vec4::W, Vec4::Y + Vec4::W],
+        Primitive::Quads,
+        vec![Vec4::W, Vec4::X + Vec4::W, Vec4::ONE, Vec4::Y + Vec4::W],
     );
-    g.indices = Some(vec![2, 1, 0]);
-    let back = parse(&print(&[Command::Draw(Arc::new(g))])).unwrap();
-    let Command::Draw(b) = &back[0] else { panic!() };
-    assert_eq!(
-        b.positions,
-        vec![Vec4::Y + Vec4::W, Vec4::X + Vec4::W, Vec4::W]
+    g.indices = Some(vec![3, 2, 1, 0]);
+    g.colors = Some(vec![Vec4::X, Vec4::Y, Vec4::Z, Vec4::ONE]);
+    g.texcoords[2] = Some(vec![Vec4::W; 4]);
+    let text = print(&[Command::Draw(Arc::new(g.clone()))]);
+    assert!(
+        text.contains("glDrawElements(GL_QUADS, 4, GL_UNSIGNED_INT"),
+        "{text}"
     );
-    assert_eq!(b.indices, None);
+    // Indexed quads split as Mesa splits indexed quads: the draw stays indexed.
+    let back = parse(&text).unwrap();
+    assert_eq!(back, vec![Command::Draw(Arc::new(g))], "\n{text}");
 }
 
 /// The printed script compiles as C99 against the system's GL headers (the test command

@@ -1,0 +1,84 @@
+//! `FIXEDFUNC_TRACE=calls.c`: every call the library executes, written as the script
+//! dialect (`ff::script::print`), so that `fixedfunc replay calls.c --size WxH` renders the
+//! same image and `fixedfunc shaders calls.c` shows the programs it needed. What reaches
+//! the file is what the pipeline executed: client arrays, buffer and display-list data
+//! appear inlined where they were drawn (as glBegin/glEnd with the values read), texture
+//! data as compound literals, a recorded error as a comment. One file per process; each
+//! context and buffer size is announced in a comment.
+//!
+//! A write that fails stops the trace with one message on stderr (the program itself goes
+//! on: a trace is an observer, not part of the GL contract).
+
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::sync::Mutex;
+
+use crate::ff::script::print;
+use crate::ff::Command;
+
+/// The environment variable naming the trace file.
+pub const VARIABLE: &str = "FIXEDFUNC_TRACE";
+
+enum State {
+    Unopened,
+    Writing(BufWriter<File>),
+    Off,
+}
+
+static TRACE: Mutex<State> = Mutex::new(State::Unopened);
+
+fn with_writer(f: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>) {
+    let Ok(mut state) = TRACE.lock() else {
+        return;
+    };
+    if let State::Unopened = *state {
+        *state = match std::env::var_os(VARIABLE) {
+            None => State::Off,
+            Some(path) => match File::create(&path) {
+                Ok(file) => {
+                    let mut w = BufWriter::new(file);
+                    let _ = writeln!(
+                        w,
+                        "/* fixedfunc trace: the GL calls one program made, as executed. */"
+                    );
+                    State::Writing(w)
+                }
+                Err(e) => {
+                    eprintln!(
+                        "fixedfunc: {VARIABLE}={}: cannot create it: {e}; no trace is written",
+                        path.to_string_lossy()
+                    );
+                    State::Off
+                }
+            },
+        };
+    }
+    if let State::Writing(w) = &mut *state {
+        if let Err(e) = f(w).and_then(|()| w.flush()) {
+            eprintln!("fixedfunc: writing the {VARIABLE} file failed: {e}; the trace stops here");
+            *state = State::Off;
+        }
+    }
+}
+
+/// Whether a trace is being written (checked once per context, so an untraced program
+/// pays nothing per call).
+pub fn enabled() -> bool {
+    std::env::var_os(VARIABLE).is_some()
+}
+
+/// One executed command.
+pub fn command(cmd: &Command) {
+    let text = print(std::slice::from_ref(cmd));
+    with_writer(|w| w.write_all(text.as_bytes()));
+}
+
+/// A note: a context made current with a buffer of this size.
+pub fn buffer(width: i32, height: i32) {
+    with_writer(|w| {
+        writeln!(
+            w,
+            "/* OSMesaMakeCurrent: a {width}x{height} buffer (replay with --size {width}x{height}) */"
+        )
+    });
+}
