@@ -120,6 +120,9 @@ pub struct Context {
     pack_alignment: usize,
     /// The depth values of OSMesaGetDepthBuffer, kept until the next call to it.
     pub depth_copy: Vec<u8>,
+    /// The largest texture name generated or bound: glGenTextures continues after it, as
+    /// Mesa's name table does (names grow; deleted ones are not reused).
+    texture_max: u32,
     /// FIXEDFUNC_TRACE is set: each executed command is written to the trace.
     tracing: bool,
 }
@@ -158,6 +161,7 @@ impl Context {
             unpack_alignment: 4,
             pack_alignment: 4,
             depth_copy: Vec::new(),
+            texture_max: 0,
             tracing: super::trace::enabled(),
         })
     }
@@ -250,6 +254,21 @@ impl Context {
                     }
                 };
             }
+            Entry::GenTextures if !inside => {
+                self.gen_textures(args);
+                return Ret::None;
+            }
+            Entry::IsTexture if !inside => {
+                let name = match args.first() {
+                    Some(CArg::Int(v)) => *v as u32,
+                    _ => 0,
+                };
+                let known = self
+                    .pipeline
+                    .as_ref()
+                    .is_some_and(|p| name != 0 && p.state().textures.contains_key(&name));
+                return Ret::Enum(u32::from(known));
+            }
             Entry::PixelStorei | Entry::PixelStoref if !inside => {
                 self.pixel_store(args);
                 return Ret::None;
@@ -275,7 +294,12 @@ impl Context {
                 self.record_error(GlErrorKind::InvalidOperation);
                 return Ret::Enum(0);
             }
-            Entry::GetError | Entry::Finish | Entry::Flush | Entry::GetString => {
+            Entry::GetError
+            | Entry::Finish
+            | Entry::Flush
+            | Entry::GetString
+            | Entry::GenTextures
+            | Entry::IsTexture => {
                 self.record_error(GlErrorKind::InvalidOperation);
                 return Ret::None;
             }
@@ -318,6 +342,9 @@ impl Context {
         if self.tracing {
             super::trace::command(cmd);
         }
+        if let Command::BindTexture { name, .. } = cmd {
+            self.texture_max = self.texture_max.max(*name);
+        }
         if let Err(e) = p.execute(&self.gpu, std::slice::from_ref(cmd)) {
             eprintln!("fixedfunc: {}: {e}", cmd.entry());
             self.record_error(GlErrorKind::InvalidOperation);
@@ -328,6 +355,29 @@ impl Context {
             if let Some(p) = self.pipeline.as_mut() {
                 let _ = p.take_gl_error();
             }
+        }
+    }
+
+    /// glGenTextures(n, names): n names after the largest in use; n < 0 is INVALID_VALUE.
+    fn gen_textures(&mut self, args: &[CArg]) {
+        let (Some(CArg::Int(n)), Some(CArg::Ptr(dst, _))) = (args.first(), args.get(1)) else {
+            return;
+        };
+        if *n < 0 {
+            return self.record_error(GlErrorKind::InvalidValue);
+        }
+        if dst.is_null() {
+            return;
+        }
+        for k in 0..*n as usize {
+            self.texture_max = self.texture_max.saturating_add(1);
+            // SAFETY: the program's array holds n names (glGenTextures' contract).
+            unsafe {
+                dst.cast::<u32>()
+                    .cast_mut()
+                    .add(k)
+                    .write_unaligned(self.texture_max)
+            };
         }
     }
 

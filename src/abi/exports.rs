@@ -34,6 +34,15 @@ impl FromRet for GLenum {
     }
 }
 
+impl FromRet for GLint {
+    fn from_ret(r: Ret) -> Self {
+        match r {
+            Ret::Enum(v) => v as GLint,
+            _ => 0,
+        }
+    }
+}
+
 impl FromRet for GLboolean {
     fn from_ret(r: Ret) -> Self {
         match r {

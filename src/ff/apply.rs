@@ -105,6 +105,20 @@ impl FixedState {
             Command::ShadeModel(m) => self.shade_model = *m,
             Command::ActiveTexture(u) => self.active_texture = check_unit(*u)?,
             Command::BindTexture { target, name } => self.bind_texture(*target, *name)?,
+            Command::DeleteTextures(names) => {
+                for &name in names.iter().filter(|n| **n != 0) {
+                    if self.textures.remove(&name).is_some() {
+                        for u in &mut self.units {
+                            if u.bound_1d == name {
+                                u.bound_1d = 0;
+                            }
+                            if u.bound_2d == name {
+                                u.bound_2d = 0;
+                            }
+                        }
+                    }
+                }
+            }
             Command::TexImage(t) => self.tex_image(t)?,
             Command::TexSubImage2D(t) => self.tex_sub_image(t)?,
             Command::CopyTexImage2D(c) => self.copy_tex_image(c)?,

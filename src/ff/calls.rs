@@ -1,7 +1,7 @@
 //! From a call to its Command, written once for both front ends (see [`Args`]): one
 //! converter per area, each returning `Ok(None)` for calls of other areas.
 
-use super::api::Entry;
+use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
 use super::glenum::Family;
 use super::*;
@@ -347,6 +347,15 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             .count(1)
             .and(c.family(0, Family::Texture))
             .map(Command::ActiveTexture)?,
+        Entry::DeleteTextures => {
+            c.count(2)?;
+            let n = c.i32(0)?;
+            if n < 0 {
+                return Err(c.bad(0, "a count of 0 or more"));
+            }
+            let names = c.array_as(1, n as usize, CType::UInt)?;
+            Command::DeleteTextures(names.into_iter().map(|v| v as u32).collect())
+        }
         Entry::BindTexture => {
             c.count(2)?;
             Command::BindTexture {

@@ -228,6 +228,9 @@ pub enum Command {
         name: u32,
     },
     TexImage(TexImage),
+    /// glDeleteTextures: the objects of these names go; a unit bound to one reverts to
+    /// the default texture 0 (GL 1.5 §3.8.12); 0 and unused names are ignored.
+    DeleteTextures(Vec<u32>),
     TexSubImage2D(TexSubImage),
     CopyTexImage2D(CopyTexImage),
     TexParameter {

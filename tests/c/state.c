@@ -220,6 +220,23 @@ int main(void) {
   ints("list mode", GL_LIST_MODE, 1);
   glEndList();
 
+  /* Texture names: generated, bound, deleted (a bound name reverts to 0). */
+  GLuint names[3];
+  glGenTextures(3, names);
+  printf("%-28s %u %u %u  err 0x%x\n", "generated names", names[0], names[1], names[2],
+         glGetError());
+  printf("%-28s %d\n", "is texture before bind", glIsTexture(names[1]));
+  glBindTexture(GL_TEXTURE_2D, names[1]);
+  printf("%-28s %d\n", "is texture after bind", glIsTexture(names[1]));
+  ints("binding after bind", GL_TEXTURE_BINDING_2D, 1);
+  glDeleteTextures(2, names);
+  ints("binding after delete", GL_TEXTURE_BINDING_2D, 1);
+  printf("%-28s %d\n", "is texture after delete", glIsTexture(names[1]));
+  glGenTextures(1, names);
+  printf("%-28s %u  err 0x%x\n", "next generated name", names[0], glGetError());
+  glGenTextures(-1, names);
+  printf("%-28s err 0x%x\n", "glGenTextures(-1)", glGetError());
+
   /* Errors of the getters. */
   ints("unknown pname", 0x1234, 1);
   enabled("unknown cap", 0x1234);

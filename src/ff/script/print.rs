@@ -113,6 +113,16 @@ fn call(c: &Command) -> String {
         Command::LoadMatrix(m) => format!("{}({})", Entry::LoadMatrixf, arr(&m.to_cols_array())),
         Command::MultMatrix(m) => format!("{}({})", Entry::MultMatrixf, arr(&m.to_cols_array())),
         Command::PushMatrix => format!("{}()", Entry::PushMatrix),
+        Command::DeleteTextures(names) => format!(
+            "{}({}, (GLuint[]){{{}}})",
+            Entry::DeleteTextures,
+            names.len(),
+            names
+                .iter()
+                .map(u32::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
         Command::PopMatrix => format!("{}()", Entry::PopMatrix),
         Command::Translate(v) => format!("{}({})", Entry::Translatef, fs(&v.to_array())),
         Command::Rotate { angle_deg, axis } => {

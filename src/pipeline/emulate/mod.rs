@@ -170,6 +170,7 @@ impl Issue for Emulate {
             }
             Command::Clear(mask) => self.clear(gl, state, *mask),
             Command::TexImage(t) => self.textures.upload_level(gl, state, t.target, t.level)?,
+            Command::DeleteTextures(names) => self.textures.delete(gl, names),
             Command::TexSubImage2D(t) => self.textures.sub_image(gl, state, t)?,
             Command::CopyTexImage2D(c) => self.textures.copy_level(gl, state, c)?,
             Command::TexParameter { target, .. } => {

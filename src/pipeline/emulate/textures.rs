@@ -44,6 +44,19 @@ impl Textures {
         Ok(t)
     }
 
+    /// Deletes the GL objects of these model names (the model has reverted the units bound
+    /// to them to texture 0; draws bind from the model).
+    pub fn delete(&mut self, gl: &glow::Context, names: &[u32]) {
+        for name in names.iter().filter(|n| **n != 0) {
+            for target in [TextureTarget::Texture1D, TextureTarget::Texture2D] {
+                if let Some(t) = self.objects.remove(&(target, *name)) {
+                    self.bound.retain(|_, (_, b)| *b != t);
+                    unsafe { gl.delete_texture(t) };
+                }
+            }
+        }
+    }
+
     /// Binds the GL object for `id` on a scratch unit (the last one) for editing.
     fn edit(&mut self, gl: &glow::Context, id: TextureId) -> Result<u32, PipelineError> {
         let t = self.object(gl, id)?;

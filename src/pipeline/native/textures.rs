@@ -44,6 +44,16 @@ impl Textures {
         self.objects.len()
     }
 
+    /// glDeleteTextures of these model names (GL reverts units bound to them to 0).
+    pub fn delete(&mut self, g: &gl::Gl, names: &[u32]) {
+        for name in names {
+            if let Some(id) = self.objects.remove(name) {
+                // SAFETY: `id` came from GenTextures on this context.
+                unsafe { g.DeleteTextures(1, &id) };
+            }
+        }
+    }
+
     /// glDeleteTextures on every object made.
     pub fn delete_all(&mut self, g: &gl::Gl) {
         for (_, id) in self.objects.drain() {
