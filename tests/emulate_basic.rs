@@ -121,3 +121,40 @@ glReadPixels(0, 0, 2, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, readback_7);"
         assert!(c.state_calls_skipped > 0, "{c:?}");
     });
 }
+
+/// Geometry drawn once and dropped (immediate mode through the C library: a new geometry
+/// every glEnd) does not pile up: the upload cache keeps what something still holds.
+#[test]
+fn dropped_geometry_does_not_accumulate() {
+    use fixedfunc::ff::{Command, Geometry, Primitive};
+    use glam::Vec4;
+    use std::sync::Arc;
+
+    let ctx = context(fixedfunc::gpu::Backend::Egl, Profile::Core33);
+    let _t = target(&ctx, 16, 16, DepthBits::D24, false);
+    let mut p = EmulatedPipeline::new(&ctx).unwrap();
+    let triangle = || {
+        Arc::new(Geometry::new(
+            Primitive::Triangles,
+            vec![
+                Vec4::new(-1.0, -1.0, 0.0, 1.0),
+                Vec4::new(1.0, -1.0, 0.0, 1.0),
+                Vec4::W,
+            ],
+        ))
+    };
+    let kept = triangle();
+    for _ in 0..2000 {
+        p.execute(
+            &ctx,
+            &[Command::Draw(triangle()), Command::Draw(kept.clone())],
+        )
+        .unwrap();
+    }
+    assert_no_gl_error(&ctx);
+    let n = p.uploaded_geometries();
+    assert!(
+        (1..=200).contains(&n),
+        "{n} geometries still uploaded after 2000 dropped ones"
+    );
+}

@@ -324,14 +324,24 @@ fn count(n: usize) -> i32 {
 #[derive(Default)]
 pub struct GeometryCache {
     entries: HashMap<usize, GpuGeometry>,
+    /// Entries after the last sweep; the next sweep comes when the cache has doubled.
+    live_after_sweep: usize,
 }
 
 impl GeometryCache {
+    /// The uploaded form of `g`, uploaded on its first draw. A geometry drawn again (a
+    /// scene's mesh, frame after frame) is uploaded once; one that only the cache still
+    /// holds can never be drawn again (an immediate-mode draw of the C library, whose
+    /// geometry is new each time) and is deleted when the cache has doubled since the
+    /// last sweep, so memory stays proportional to the geometry alive.
     pub fn get(
         &mut self,
         gl: &glow::Context,
         g: &Arc<Geometry>,
     ) -> Result<&GpuGeometry, PipelineError> {
+        if self.entries.len() >= 2 * self.live_after_sweep + 64 {
+            self.sweep(gl);
+        }
         let key = Arc::as_ptr(g) as usize;
         match self.entries.entry(key) {
             std::collections::hash_map::Entry::Occupied(e) => Ok(e.into_mut()),
@@ -341,10 +351,32 @@ impl GeometryCache {
         }
     }
 
+    /// Deletes the entries whose geometry only the cache holds.
+    fn sweep(&mut self, gl: &glow::Context) {
+        let dead: Vec<usize> = self
+            .entries
+            .iter()
+            .filter(|(_, e)| Arc::strong_count(&e.source) == 1)
+            .map(|(k, _)| *k)
+            .collect();
+        for k in dead {
+            if let Some(e) = self.entries.remove(&k) {
+                e.delete(gl);
+            }
+        }
+        self.live_after_sweep = self.entries.len();
+    }
+
+    /// How many geometries are uploaded.
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
     pub fn release(&mut self, gl: &glow::Context) {
         for (_, g) in self.entries.drain() {
             g.delete(gl);
         }
+        self.live_after_sweep = 0;
     }
 }
 

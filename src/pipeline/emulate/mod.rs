@@ -85,6 +85,11 @@ impl EmulatedPipeline {
         self.path.raster.invalidate();
     }
 
+    /// How many geometries are uploaded (each kept while something else holds it).
+    pub fn uploaded_geometries(&self) -> usize {
+        self.path.geometry.len()
+    }
+
     /// The key the next draw would use (for `fixedfunc shaders` and tests).
     pub fn current_key(&self) -> ShaderKey {
         ShaderKey::from_state(&self.core.state, self.path.precision)
