@@ -1015,3 +1015,36 @@ fn fog_calls_in_every_form() {
         ScriptError::UnknownEnum { .. }
     ));
 }
+
+#[test]
+fn draws_from_a_buffer_object_through_offsets() {
+    // Buffer 1: a 2-float header to skip, then three xy vertices; buffer 2: indices
+    // after one unused GLushort. Both pointers are offsets into the bound buffers.
+    let src = "glGenBuffers(2, (GLuint[]){0, 0});\n\
+               glBindBuffer(GL_ARRAY_BUFFER, 1);\n\
+               glBufferData(GL_ARRAY_BUFFER, 32, (GLfloat[]){9, 9, 0, 0, 1, 0, 0, 1}, \
+               GL_STATIC_DRAW);\n\
+               glBufferSubData(GL_ARRAY_BUFFER, 16, 4, (GLfloat[]){0.5f});\n\
+               glVertexPointer(2, GL_FLOAT, 0, 8);\n\
+               glEnableClientState(GL_VERTEX_ARRAY);\n\
+               glDrawArrays(GL_TRIANGLES, 0, 3);\n\
+               glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 2);\n\
+               glBufferData(GL_ELEMENT_ARRAY_BUFFER, 8, (GLushort[]){7, 2, 1, 0}, \
+               GL_STATIC_DRAW);\n\
+               glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_SHORT, (const GLvoid *)2);\n\
+               glMapBuffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY);\n\
+               glUnmapBuffer(GL_ARRAY_BUFFER);\n";
+    let cmds = parse(src).unwrap();
+    let draws: Vec<_> = cmds
+        .iter()
+        .filter_map(|c| match c {
+            Command::Draw(g) => Some(g.clone()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(draws.len(), 2, "{cmds:?}");
+    let xy = |g: &Geometry| -> Vec<(f32, f32)> { g.positions.iter().map(|p| (p.x, p.y)).collect() };
+    assert_eq!(xy(&draws[0]), [(0.0, 0.0), (0.5, 0.0), (0.0, 1.0)]);
+    assert_eq!(xy(&draws[1]), [(0.0, 0.0), (0.5, 0.0), (0.0, 1.0)]);
+    assert_eq!(draws[1].indices, Some(vec![2, 1, 0]));
+}
