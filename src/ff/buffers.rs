@@ -210,10 +210,12 @@ impl Buffers {
         Ok(match c.entry() {
             GenBuffers | GenBuffersARB => {
                 let n = count(c, 0)?;
-                Reply::Write {
-                    arg: 1,
-                    bytes: self.generate(n).flat_map(u32::to_ne_bytes).collect(),
-                }
+                let mut bytes = Vec::new();
+                bytes
+                    .try_reserve_exact(n.saturating_mul(4))
+                    .map_err(|_| c.bad(0, "a count that can be allocated"))?;
+                bytes.extend(self.generate(n).flat_map(u32::to_ne_bytes));
+                Reply::Write { arg: 1, bytes }
             }
             DeleteBuffers | DeleteBuffersARB => {
                 let n = count(c, 0)?;
@@ -246,9 +248,18 @@ impl Buffers {
                 let usage: Usage = c.enm(3)?;
                 let source = c.array_data(2)?;
                 let size = usize::try_from(size).map_err(|_| c.bad(1, "a size"))?;
+                // A store that cannot be allocated is GL's OUT_OF_MEMORY, which the layer
+                // has not got: INVALID_VALUE, and the buffer is left as it was.
+                let mut store = Vec::new();
+                store
+                    .try_reserve_exact(size)
+                    .map_err(|_| c.bad(1, "a size that can be allocated"))?;
                 let data: Box<[u8]> = match source {
                     // NULL: a store of `size` bytes whose contents GL leaves undefined.
-                    ArrayData::Null => vec![0; size].into(),
+                    ArrayData::Null => {
+                        store.resize(size, 0);
+                        store.into()
+                    }
                     src => mem
                         .read(&src, 0, size)
                         .ok_or_else(|| c.bad(2, "at least `size` bytes of data"))?
@@ -389,9 +400,9 @@ impl Buffers {
         .max()
         .copied()
         .unwrap_or(0);
-        let names: Vec<u32> = (1..=n as u32).map(|k| last.saturating_add(k)).collect();
-        self.reserved.extend(names.iter().copied());
-        names.into_iter()
+        let names = (1..=n as u32).map(move |k| last.saturating_add(k));
+        self.reserved.extend(names.clone());
+        names
     }
 
     /// glDeleteBuffers of one name: 0 and unused names are ignored; a deleted bound
