@@ -138,6 +138,9 @@ impl Client {
         if draws && self.immediate.is_open() {
             return Err(c.immediate("a draw inside glBegin/glEnd"));
         }
+        // A draw from a mapped buffer: GL 1.5 §2.9.3 makes it INVALID_OPERATION, llvmpipe's
+        // Mesa draws it without an error (tests/c/buffers.c). Followed: Mesa; the draw
+        // reads the store as it is.
         let mem = WithBuffers {
             mem,
             buffers: &self.buffers,

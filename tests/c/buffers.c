@@ -168,6 +168,17 @@ int main(int argc, char **argv) {
   report("second glMapBuffer");
   glBufferSubData(GL_ARRAY_BUFFER, 0, 4, quad);
   report("glBufferSubData while mapped");
+  /* Mesa draws from the mapped buffer (a small white triangle on panel 5). */
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(3, GL_FLOAT, sizeof(struct vertex), (const GLvoid *)0);
+  glColor3f(1, 1, 1);
+  glScalef(0.3f, 0.3f, 1);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glLoadIdentity();
+  report("glDrawArrays from a mapped buffer");
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  report("glDrawArrays, the array disabled");
   glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_MAPPED, &size);
   printf("GL_BUFFER_MAPPED %d\n", size);
   printf("glUnmapBuffer: %d\n", glUnmapBuffer(GL_ARRAY_BUFFER));

@@ -1048,3 +1048,29 @@ fn draws_from_a_buffer_object_through_offsets() {
     assert_eq!(xy(&draws[1]), [(0.0, 0.0), (0.5, 0.0), (0.0, 1.0)]);
     assert_eq!(draws[1].indices, Some(vec![2, 1, 0]));
 }
+
+#[test]
+fn a_list_keeps_what_a_buffer_held_at_compile_time() {
+    // GL 1.5 §5.4: a compiled draw holds the vertex data read when it was compiled; a
+    // later glBufferSubData changes what a new draw reads, not the list.
+    let src = "glBindBuffer(GL_ARRAY_BUFFER, 5);\n\
+               glBufferData(GL_ARRAY_BUFFER, 24, (GLfloat[]){0, 0, 1, 0, 0, 1}, \
+               GL_DYNAMIC_DRAW);\n\
+               glVertexPointer(2, GL_FLOAT, 0, NULL);\n\
+               glEnableClientState(GL_VERTEX_ARRAY);\n\
+               glNewList(1, GL_COMPILE);\n\
+               glDrawArrays(GL_TRIANGLES, 0, 3);\n\
+               glEndList();\n\
+               glBufferSubData(GL_ARRAY_BUFFER, 0, 8, (GLfloat[]){-1, -1});\n\
+               glCallList(1);\n\
+               glDrawArrays(GL_TRIANGLES, 0, 3);\n";
+    let firsts: Vec<(f32, f32)> = parse(src)
+        .unwrap()
+        .iter()
+        .filter_map(|c| match c {
+            Command::Draw(g) => Some((g.positions[0].x, g.positions[0].y)),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(firsts, [(0.0, 0.0), (-1.0, -1.0)]);
+}
