@@ -15,7 +15,7 @@
 //! glGetBufferSubData's bytes, glMapBuffer's address) return them as a [`Reply`]; the C
 //! library writes them out, a script ignores them.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 
 use super::api::{CType, Entry};
 use super::args::Args;
@@ -138,9 +138,10 @@ pub struct Buffers {
     /// Buffer objects: names that have been bound (GL 1.5 §2.9.1: glBindBuffer of an
     /// unused name creates the object).
     objects: BTreeMap<u32, Buffer>,
-    /// Names glGenBuffers returned that are not yet objects (glIsBuffer is false for
-    /// them, as in Mesa).
-    reserved: BTreeSet<u32>,
+    /// The largest name glGenBuffers has returned: names up to it are never handed out
+    /// again. A generated name is not an object until bound (glIsBuffer is false for it,
+    /// as in Mesa).
+    generated: u32,
     pub bound: Bindings,
 }
 
@@ -214,7 +215,11 @@ impl Buffers {
                 bytes
                     .try_reserve_exact(n.saturating_mul(4))
                     .map_err(|_| c.bad(0, "a count that can be allocated"))?;
-                bytes.extend(self.generate(n).flat_map(u32::to_ne_bytes));
+                // Names past 2³² − 1: GL's OUT_OF_MEMORY, INVALID_VALUE here.
+                let names = self
+                    .generate(n)
+                    .ok_or_else(|| c.bad(0, "a count of names still free"))?;
+                bytes.extend(names.flat_map(u32::to_ne_bytes));
                 Reply::Write { arg: 1, bytes }
             }
             DeleteBuffers | DeleteBuffersARB => {
@@ -233,7 +238,6 @@ impl Buffers {
                 let target: Target = c.enm(0)?;
                 let name = c.u32(1)?;
                 if name != 0 {
-                    self.reserved.remove(&name);
                     self.objects.entry(name).or_default();
                 }
                 *self.binding(target) = name;
@@ -388,27 +392,25 @@ impl Buffers {
         Ok(offset as usize..end as usize)
     }
 
-    /// glGenBuffers: `n` names never used, after the largest in use (as Mesa's
-    /// _mesa_HashFindFreeKeyBlock finds them); they are reserved until bound.
-    fn generate(&mut self, n: usize) -> impl Iterator<Item = u32> + '_ {
-        let last = [
-            self.objects.keys().next_back(),
-            self.reserved.iter().next_back(),
-        ]
-        .into_iter()
-        .flatten()
-        .max()
-        .copied()
-        .unwrap_or(0);
-        let names = (1..=n as u32).map(move |k| last.saturating_add(k));
-        self.reserved.extend(names.clone());
-        names
+    /// glGenBuffers: `n` names never used, after the largest in use or generated (as
+    /// Mesa's _mesa_HashFindFreeKeyBlock finds them); `None` when they would pass
+    /// 2³² − 1.
+    fn generate(&mut self, n: usize) -> Option<impl Iterator<Item = u32>> {
+        let last = self
+            .objects
+            .keys()
+            .next_back()
+            .copied()
+            .unwrap_or(0)
+            .max(self.generated);
+        let end = last.checked_add(u32::try_from(n).ok()?)?;
+        self.generated = end;
+        Some((last..end).map(|k| k + 1))
     }
 
     /// glDeleteBuffers of one name: 0 and unused names are ignored; a deleted bound
     /// buffer's bindings revert to 0 (GL 1.5 §2.9.1), a mapped one is unmapped.
     fn delete(&mut self, name: u32) {
-        self.reserved.remove(&name);
         if self.objects.remove(&name).is_some() {
             for b in [&mut self.bound.array, &mut self.bound.element] {
                 if *b == name {
@@ -519,6 +521,35 @@ mod tests {
         );
         assert_eq!(
             run(&mut b, Entry::DeleteBuffers, &[Int(-1), NULL]),
+            Err(GlErrorKind::InvalidValue)
+        );
+    }
+
+    #[test]
+    fn names_are_not_handed_out_twice() {
+        let mut b = Buffers::default();
+        run(&mut b, Entry::BindBuffer, &[Int(ARRAY), Int(7)]).unwrap();
+        let Ok(Reply::Write { bytes, .. }) = run(&mut b, Entry::GenBuffersARB, &[Int(1), NULL])
+        else {
+            panic!("glGenBuffers writes names");
+        };
+        assert_eq!(bytes, 8u32.to_ne_bytes());
+        let Ok(Reply::Write { bytes, .. }) = run(&mut b, Entry::GenBuffers, &[Int(1), NULL]) else {
+            panic!("glGenBuffers writes names");
+        };
+        assert_eq!(
+            bytes,
+            9u32.to_ne_bytes(),
+            "a generated, unbound name stays taken"
+        );
+        run(
+            &mut b,
+            Entry::BindBuffer,
+            &[Int(ARRAY), Int(u32::MAX as i64 - 1)],
+        )
+        .unwrap();
+        assert_eq!(
+            run(&mut b, Entry::GenBuffers, &[Int(2), NULL]),
             Err(GlErrorKind::InvalidValue)
         );
     }
