@@ -307,7 +307,7 @@ impl Buffers {
                 let name = self.bound_name(c)?;
                 let buffer = self.object(name);
                 if buffer.mapped.is_some() {
-                    return Err(c.immediate("mapping a buffer that is mapped"));
+                    return Err(c.immediate("the buffer is already mapped"));
                 }
                 buffer.mapped = Some(access);
                 Reply::Address(buffer.data.as_mut_ptr() as usize)
@@ -316,7 +316,7 @@ impl Buffers {
                 let name = self.bound_name(c)?;
                 let buffer = self.object(name);
                 if buffer.mapped.take().is_none() {
-                    return Err(c.immediate("unmapping a buffer that is not mapped"));
+                    return Err(c.immediate("the buffer is not mapped"));
                 }
                 // The store never moves or changes behind the program's back: TRUE.
                 Reply::Value(1)
@@ -361,7 +361,7 @@ impl Buffers {
     fn bound_name<A: Args>(&mut self, c: &A) -> Result<u32, A::Error> {
         let target: Target = c.enm(0)?;
         match *self.binding(target) {
-            0 => Err(c.immediate("a buffer object bound to the target")),
+            0 => Err(c.immediate("no buffer object is bound to the target")),
             name => Ok(name),
         }
     }
@@ -387,7 +387,7 @@ impl Buffers {
             return Err(c.bad(2, "a range inside the buffer"));
         }
         if buffer.mapped.is_some() {
-            return Err(c.immediate("a buffer that is not mapped"));
+            return Err(c.immediate("the buffer is mapped"));
         }
         Ok(offset as usize..end as usize)
     }

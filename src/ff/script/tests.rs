@@ -1074,3 +1074,22 @@ fn a_list_keeps_what_a_buffer_held_at_compile_time() {
         .collect();
     assert_eq!(firsts, [(0.0, 0.0), (-1.0, -1.0)]);
 }
+
+#[test]
+fn buffer_object_misuse_names_the_line_and_the_rule() {
+    let e = err("glBindBuffer(GL_ARRAY_BUFFER, 3);\n\
+                 glBufferData(GL_ARRAY_BUFFER, 4, NULL, GL_STATIC_DRAW);\n\
+                 glMapBuffer(GL_ARRAY_BUFFER, GL_READ_WRITE);\n\
+                 glMapBuffer(GL_ARRAY_BUFFER, GL_READ_WRITE);\n")
+    .to_string();
+    assert!(e.contains("line 4") && e.contains("already mapped"), "{e}");
+    let e = err("glBufferData(GL_ELEMENT_ARRAY_BUFFER, 4, NULL, GL_STATIC_DRAW);\n").to_string();
+    assert!(
+        e.contains("line 1") && e.contains("no buffer object"),
+        "{e}"
+    );
+    let e = err("glBindBuffer(GL_ARRAY_BUFFER, 3);\n\
+                 glBufferData(GL_ARRAY_BUFFER, 4, NULL, GL_STATIC_DROW);\n")
+    .to_string();
+    assert!(e.contains("GL_STATIC_DRAW"), "{e}");
+}
