@@ -1093,3 +1093,27 @@ fn buffer_object_misuse_names_the_line_and_the_rule() {
     .to_string();
     assert!(e.contains("GL_STATIC_DRAW"), "{e}");
 }
+
+#[test]
+fn interleaved_arrays_read_a_buffer_from_an_offset() {
+    // GL_C3F_V3F from byte 4 of the buffer: the colour at +0, the vertex at +12 of each
+    // 24-byte element.
+    let src = "glBindBuffer(GL_ARRAY_BUFFER, 1);\n\
+               glBufferData(GL_ARRAY_BUFFER, 52, (GLfloat[]){99, 1, 0, 0, 0, 0, 0, \
+               0, 1, 0, 1, 0, 0}, GL_STATIC_DRAW);\n\
+               glInterleavedArrays(GL_C3F_V3F, 0, (GLvoid *)4);\n\
+               glDrawArrays(GL_LINES, 0, 2);\n";
+    let cmds = parse(src).unwrap();
+    let Some(Command::Draw(g)) = cmds.last() else {
+        panic!("a draw: {cmds:?}");
+    };
+    let xy: Vec<(f32, f32)> = g.positions.iter().map(|p| (p.x, p.y)).collect();
+    assert_eq!(xy, [(0.0, 0.0), (1.0, 0.0)]);
+    assert_eq!(
+        g.colors,
+        Some(vec![
+            Vec4::new(1.0, 0.0, 0.0, 1.0),
+            Vec4::new(0.0, 1.0, 0.0, 1.0)
+        ])
+    );
+}
