@@ -181,7 +181,12 @@ int main(int argc, char **argv) {
   report("glDrawArrays, the array disabled");
   glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_MAPPED, &size);
   printf("GL_BUFFER_MAPPED %d\n", size);
+  glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_ACCESS, &size);
+  printf("GL_BUFFER_ACCESS mapped 0x%04x\n", (unsigned)size);
   printf("glUnmapBuffer: %d\n", glUnmapBuffer(GL_ARRAY_BUFFER));
+  /* GL 1.5 keeps the last access; Mesa answers READ_WRITE once unmapped. */
+  glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_ACCESS, &size);
+  printf("GL_BUFFER_ACCESS unmapped 0x%04x\n", (unsigned)size);
   report("glUnmapBuffer");
   glMapBuffer(GL_ARRAY_BUFFER, GL_RGBA);
   report("glMapBuffer(access GL_RGBA)");
