@@ -329,3 +329,38 @@ fn a_trace_replays_to_the_same_image() {
         );
     }
 }
+
+#[test]
+fn buffer_objects_draw_and_fail_as_on_mesa() {
+    let exe = compile("buffers", Linking::Direct);
+    let dir = work_dir("buffers");
+    let run_on = |library: Library| {
+        let out = dir.join(format!("{library:?}.ppm"));
+        let text = run(&exe, library, &[out.to_str().unwrap()]).stdout;
+        (String::from_utf8_lossy(&text).into_owned(), read_ppm(&out))
+    };
+    let (mesa_text, mesa) = run_on(Library::Mesa);
+    let (ours_text, ours) = run_on(Library::Fixedfunc);
+    assert!(
+        mesa_text.contains("second glMapBuffer                       0x0502"),
+        "mapping a mapped buffer raised no error on Mesa:\n{mesa_text}"
+    );
+    assert_eq!(
+        ours_text, mesa_text,
+        "glGetError, glIsBuffer or glGetBufferParameteriv answers differ"
+    );
+    // Six 64×64 panels, each drawn through buffers another way: each must show something.
+    let background = Rgba([26, 26, 26, 255]);
+    for panel in 0..6u32 {
+        let (x0, y0) = ((panel % 3) * 64, 64 - (panel / 3) * 64);
+        let drawn = (0..64)
+            .flat_map(|y| (0..64).map(move |x| (x0 + x, y0 + y)))
+            .filter(|&(x, y)| *mesa.get_pixel(x, y) != background)
+            .count();
+        assert!(
+            drawn > 200,
+            "panel {panel} is empty on Mesa ({drawn} pixels)"
+        );
+    }
+    assert_images_match("buffers", &ours, &mesa, within_3_on_99_percent(&mesa));
+}

@@ -820,7 +820,8 @@ fn pushed_attributes_agree() {
     }
 }
 
-/// Draws leave the current values the model computes: the last vertex's attributes.
+/// A draw from arrays leaves the current values as they were, in the model and (restored
+/// by the native path) in the driver.
 #[test]
 fn current_values_after_a_draw_agree() {
     let mut g = Geometry::new(

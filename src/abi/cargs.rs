@@ -312,6 +312,13 @@ impl Args for CCall<'_> {
             _ => Err(GlErrorKind::InvalidValue),
         }
     }
+    fn offset(&self, i: usize) -> Result<usize, GlErrorKind> {
+        match self.args.get(i) {
+            Some(CArg::Ptr(p, _)) => Ok(*p as usize),
+            Some(CArg::Int(v)) => usize::try_from(*v).map_err(|_| GlErrorKind::InvalidValue),
+            _ => Err(GlErrorKind::InvalidValue),
+        }
+    }
     fn slot(&self, _i: usize) -> Result<u32, GlErrorKind> {
         Ok(CALLER_SLOT)
     }
@@ -331,7 +338,7 @@ impl ClientMemory for ProgramMemory {
                 Some(Cow::Borrowed(bytes))
             }
             ArrayData::Bytes(b) => b.get(offset..offset.checked_add(len)?).map(Cow::Borrowed),
-            ArrayData::Null => None,
+            ArrayData::Null | ArrayData::Buffer { .. } => None,
         }
     }
 }

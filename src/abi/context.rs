@@ -13,7 +13,7 @@ use std::ffi::c_void;
 use super::cargs::{CArg, CCall, ProgramMemory, CALLER_SLOT};
 use super::AbiError;
 use crate::ff::api::Entry;
-use crate::ff::front::Client;
+use crate::ff::front::{Client, Reply};
 use crate::ff::{Command, CurrentValues, GlErrorKind};
 use crate::gpu::{Backend, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec};
 use crate::pipeline::emulate::EmulatedPipeline;
@@ -315,7 +315,7 @@ impl Context {
         let mut made = std::mem::take(&mut self.made);
         let current = current.unwrap_or(CurrentValues::DEFAULT);
         let outcome = self.client.call(&c, &current, &ProgramMemory, &mut made);
-        let value = *outcome.as_ref().unwrap_or(&0);
+        let reply = outcome.as_ref().cloned().unwrap_or(Reply::None);
         if let Err(kind) = outcome {
             if c.was_unsupported() && self.warned.insert(entry) {
                 eprintln!(
@@ -332,7 +332,27 @@ impl Context {
         if entry == Entry::ReadPixels {
             self.copy_read_pixels(args);
         }
-        Ret::Enum(value)
+        match reply {
+            Reply::None => Ret::Enum(0),
+            Reply::Value(v) => Ret::Enum(v),
+            Reply::Address(a) => Ret::Ptr(a as *const u8),
+            Reply::Write { arg, bytes } => {
+                if let Some(CArg::Ptr(dst, _)) = args.get(arg).copied() {
+                    if !dst.is_null() {
+                        // SAFETY: the program's array holds what the call stores (n names,
+                        // one integer, `size` bytes), as GL requires of it.
+                        unsafe {
+                            std::ptr::copy_nonoverlapping(
+                                bytes.as_ptr(),
+                                dst.cast::<u8>().cast_mut(),
+                                bytes.len(),
+                            );
+                        }
+                    }
+                }
+                Ret::None
+            }
+        }
     }
 
     fn execute(&mut self, cmd: &Command) {

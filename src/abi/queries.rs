@@ -220,6 +220,20 @@ fn client_get(pname: u32, f: &ClientState) -> Option<Queried> {
             None => int(0),
         },
         r::MAX_LIST_NESTING => int(MAX_LIST_NESTING as i64),
+        r::ARRAY_BUFFER_BINDING => int(i64::from(c.buffers.bound.array)),
+        r::ELEMENT_ARRAY_BUFFER_BINDING => int(i64::from(c.buffers.bound.element)),
+        r::VERTEX_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.vertex.data))),
+        r::NORMAL_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.normal.data))),
+        r::COLOR_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.color.data))),
+        r::TEXTURE_COORD_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&unit.data))),
         _ => None,
+    }
+}
+
+/// The buffer an array pointer was given in (GL 1.5 Table 6.8), 0 for client memory.
+fn buffer_of(data: &crate::ff::client::ArrayData) -> u32 {
+    match data {
+        crate::ff::client::ArrayData::Buffer { name, .. } => *name,
+        _ => 0,
     }
 }

@@ -345,6 +345,27 @@ macro_rules! gl_entry_table {
         DeleteLists = glDeleteLists(Script; list: GLuint, range: GLsizei);
         IsList = glIsList(Script; list: GLuint) -> GLboolean;
         ListBase = glListBase(Script; base: GLuint);
+        // Buffer objects (ff::buffers).
+        GenBuffers = glGenBuffers(Script; n: GLsizei, buffers: *mut GLuint);
+        GenBuffersARB = glGenBuffersARB(Script; n: GLsizei, buffers: *mut GLuint);
+        DeleteBuffers = glDeleteBuffers(Script; n: GLsizei, buffers: *const GLuint);
+        DeleteBuffersARB = glDeleteBuffersARB(Script; n: GLsizei, buffers: *const GLuint);
+        BindBuffer = glBindBuffer(Script; target: GLenum, buffer: GLuint);
+        BindBufferARB = glBindBufferARB(Script; target: GLenum, buffer: GLuint);
+        BufferData = glBufferData(Script; target: GLenum, size: GLsizeiptr, data: *const c_void, usage: GLenum);
+        BufferDataARB = glBufferDataARB(Script; target: GLenum, size: GLsizeiptr, data: *const c_void, usage: GLenum);
+        BufferSubData = glBufferSubData(Script; target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *const c_void);
+        BufferSubDataARB = glBufferSubDataARB(Script; target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *const c_void);
+        GetBufferSubData = glGetBufferSubData(Script; target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *mut c_void);
+        GetBufferSubDataARB = glGetBufferSubDataARB(Script; target: GLenum, offset: GLintptr, size: GLsizeiptr, data: *mut c_void);
+        MapBuffer = glMapBuffer(Script; target: GLenum, access: GLenum) -> *mut c_void;
+        MapBufferARB = glMapBufferARB(Script; target: GLenum, access: GLenum) -> *mut c_void;
+        UnmapBuffer = glUnmapBuffer(Script; target: GLenum) -> GLboolean;
+        UnmapBufferARB = glUnmapBufferARB(Script; target: GLenum) -> GLboolean;
+        IsBuffer = glIsBuffer(Script; buffer: GLuint) -> GLboolean;
+        IsBufferARB = glIsBufferARB(Script; buffer: GLuint) -> GLboolean;
+        GetBufferParameteriv = glGetBufferParameteriv(Script; target: GLenum, pname: GLenum, params: *mut GLint);
+        GetBufferParameterivARB = glGetBufferParameterivARB(Script; target: GLenum, pname: GLenum, params: *mut GLint);
         // Not implemented by the layer (README, "Left out"): each records
         // GL_INVALID_OPERATION and warns once, naming itself. Selection, feedback and
         // evaluators are left out by design; the others are not implemented yet.

@@ -469,22 +469,13 @@ impl FixedState {
         Ok(())
     }
 
-    /// A draw changes no state except the current values, which become the last vertex's
-    /// (what glBegin/glEnd leaves behind).
+    /// A draw changes no state: the current values stay as glColor, glNormal and
+    /// glMultiTexCoord left them, as Mesa leaves them after glDrawArrays/glDrawElements
+    /// (GL 1.5 §2.8 makes them indeterminate; `tests/c/state.c` checks Mesa's). What
+    /// glBegin/glEnd leaves current is set by the commands immediate mode emits after its
+    /// draw (`ff::immediate`).
     fn draw(&mut self, g: &Geometry) -> GlResult {
-        g.validate()?;
-        if let Some(n) = Geometry::last(&g.normals) {
-            self.current.normal = n;
-        }
-        for (u, coords) in g.texcoords.iter().enumerate() {
-            if let Some(t) = Geometry::last(coords) {
-                self.current.texcoords[u] = t;
-            }
-        }
-        if let Some(c) = Geometry::last(&g.colors) {
-            self.set_color(c)?;
-        }
-        Ok(())
+        g.validate()
     }
 }
 

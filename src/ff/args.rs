@@ -119,6 +119,10 @@ pub trait Args {
     /// script), or an address in the program (C).
     fn array_data(&self, i: usize) -> Result<ArrayData, Self::Error>;
 
+    /// A pointer argument read as a byte offset into a bound buffer object (C: the
+    /// pointer's value, `(void *)12`; a script: an integer literal or NULL).
+    fn offset(&self, i: usize) -> Result<usize, Self::Error>;
+
     /// The readback slot glReadPixels writes to.
     fn slot(&self, i: usize) -> Result<u32, Self::Error>;
 

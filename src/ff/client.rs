@@ -19,6 +19,7 @@ use glam::{Vec3, Vec4};
 
 use super::api::{CType, Entry};
 use super::args::Args;
+use super::buffers::{Bindings, Buffers};
 use super::geometry::{Geometry, Primitive};
 use super::glenum::Family;
 use super::state::MAX_TEXTURE_UNITS;
@@ -32,6 +33,9 @@ pub enum ArrayData {
     Bytes(Arc<[u8]>),
     /// An address in the calling program's memory (the C library).
     Address(usize),
+    /// A byte offset into a buffer object (ff::buffers), captured when the pointer was
+    /// given with the buffer bound (GL 1.5 §2.9.4).
+    Buffer { name: u32, offset: usize },
 }
 
 /// Reads the memory an [`ArrayData`] names: a front end that holds addresses says how.
@@ -47,7 +51,7 @@ impl ClientMemory for BytesOnly {
     fn read<'d>(&self, data: &'d ArrayData, offset: usize, len: usize) -> Option<Cow<'d, [u8]>> {
         match data {
             ArrayData::Bytes(b) => b.get(offset..offset.checked_add(len)?).map(Cow::Borrowed),
-            ArrayData::Null | ArrayData::Address(_) => None,
+            ArrayData::Null | ArrayData::Address(_) | ArrayData::Buffer { .. } => None,
         }
     }
 }
@@ -195,10 +199,12 @@ impl ClientArrays {
 
     /// Runs one client-array call. GL errors: a size, stride or count out of range is
     /// INVALID_VALUE; a type or mode outside the set INVALID_ENUM (GL 1.5 §2.8).
+    /// `bound` says which buffer objects pointers and indices are offsets into.
     pub fn call<A: Args>(
         &mut self,
         c: &A,
         mem: &dyn ClientMemory,
+        bound: Bindings,
     ) -> Result<ClientEffect, A::Error> {
         match c.entry() {
             Entry::VertexPointer => {
@@ -207,6 +213,7 @@ impl ClientArrays {
                     0,
                     &[2, 3, 4],
                     &[CType::Short, CType::Int, CType::Float, CType::Double],
+                    bound,
                 )?;
                 self.vertex = ArrayPointer {
                     enabled: self.vertex.enabled,
@@ -231,7 +238,7 @@ impl ClientArrays {
                     size: 3,
                     ty,
                     stride,
-                    data: c.array_data(2)?,
+                    data: Buffers::source(c, 2, bound.array)?,
                 };
             }
             Entry::ColorPointer => {
@@ -249,6 +256,7 @@ impl ClientArrays {
                         CType::Float,
                         CType::Double,
                     ],
+                    bound,
                 )?;
                 self.color = ArrayPointer {
                     enabled: self.color.enabled,
@@ -261,6 +269,7 @@ impl ClientArrays {
                     0,
                     &[1, 2, 3, 4],
                     &[CType::Short, CType::Int, CType::Float, CType::Double],
+                    bound,
                 )?;
                 let unit = &mut self.texcoord[usize::from(self.client_active)];
                 *unit = ArrayPointer {
@@ -323,7 +332,9 @@ impl ClientArrays {
                     return Err(c.bad(1 + k, "a count of 0 or more"));
                 }
                 let ty = index_type(c, 2 + k)?;
-                let data = c.array_data(3 + k)?;
+                // With a buffer bound to ELEMENT_ARRAY_BUFFER, `indices` is an offset
+                // into it (GL 1.5 §2.9.5).
+                let data = Buffers::source(c, 3 + k, bound.element)?;
                 let size = ctype_size(ty);
                 let bytes = mem
                     .read(&data, 0, count as usize * size)
@@ -344,7 +355,7 @@ impl ClientArrays {
                 }
                 return Ok(ClientEffect::Element(self.element(i as usize, mem)));
             }
-            Entry::InterleavedArrays => self.interleaved(c)?,
+            Entry::InterleavedArrays => self.interleaved(c, bound)?,
             _ => return Err(c.unsupported()),
         }
         Ok(ClientEffect::State)
@@ -371,6 +382,7 @@ impl ClientArrays {
         from: usize,
         sizes: &[i32],
         types: &[CType],
+        bound: Bindings,
     ) -> Result<ArrayPointer, A::Error> {
         let size = c.i32(from)?;
         if !sizes.contains(&size) {
@@ -383,8 +395,37 @@ impl ClientArrays {
             size,
             ty,
             stride,
-            data: c.array_data(from + 3)?,
+            data: Buffers::source(c, from + 3, bound.array)?,
         })
+    }
+
+    /// Pointers into buffer `name`, deleted, point nowhere: GL reverts the arrays'
+    /// buffer bindings to 0 (GL 1.5 §2.9.1). Mesa then reads the kept offset as a client
+    /// address; here such an array reads nothing.
+    pub fn forget_buffer(&mut self, name: u32) {
+        for a in self.pointers_mut() {
+            if matches!(a.data, ArrayData::Buffer { name: n, .. } if n == name) {
+                a.data = ArrayData::Null;
+            }
+        }
+    }
+
+    /// The buffers the arrays point into.
+    pub fn buffer_names(&self) -> Vec<u32> {
+        [&self.vertex, &self.normal, &self.color]
+            .into_iter()
+            .chain(self.texcoord.iter())
+            .filter_map(|a| match a.data {
+                ArrayData::Buffer { name, .. } => Some(name),
+                _ => None,
+            })
+            .collect()
+    }
+
+    fn pointers_mut(&mut self) -> impl Iterator<Item = &mut ArrayPointer> {
+        [&mut self.vertex, &mut self.normal, &mut self.color]
+            .into_iter()
+            .chain(self.texcoord.iter_mut())
     }
 
     /// The geometry of vertices `which` (each an element index), drawn through `indices`
@@ -485,7 +526,7 @@ impl ClientArrays {
     /// glInterleavedArrays(format, stride, pointer): sets and enables the arrays the
     /// format names, disables the others (GL 1.5 §2.8, Table 2.5), on the client-active
     /// unit.
-    fn interleaved<A: Args>(&mut self, c: &A) -> Result<(), A::Error> {
+    fn interleaved<A: Args>(&mut self, c: &A, bound: Bindings) -> Result<(), A::Error> {
         // (name, texcoord size, colour size, colour type, normal, vertex size).
         const FORMATS: [(&str, i32, i32, CType, bool, i32); 14] = [
             ("GL_V2F", 0, 0, CType::Float, false, 2),
@@ -510,7 +551,7 @@ impl ClientArrays {
             .find(|f| f.0 == name)
             .expect("pname returned a listed name");
         let given = stride(c, 1)?;
-        let data = c.array_data(2)?;
+        let data = Buffers::source(c, 2, bound.array)?;
         // Offsets in bytes: texcoord, colour, normal, vertex (floats are 4 bytes; a
         // C4UB colour takes 4 bytes).
         let colour_bytes = if cty == CType::UByte { 4 } else { 4 * cc };
@@ -525,6 +566,10 @@ impl ClientArrays {
                     .map_or_else(|| Arc::from(Vec::new()), Arc::from),
             ),
             ArrayData::Address(a) => ArrayData::Address(a + offset as usize),
+            ArrayData::Buffer { name, offset: o } => ArrayData::Buffer {
+                name: *name,
+                offset: o + offset as usize,
+            },
             ArrayData::Null => ArrayData::Null,
         };
         let make = |size: i32, ty: CType, offset: i32, on: bool| ArrayPointer {

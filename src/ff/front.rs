@@ -3,10 +3,12 @@
 //! Both front ends run every call through [`Client::call`], so a call means the same from
 //! either door.
 
+use std::borrow::Cow;
 use std::sync::Arc;
 
 use super::args::Args;
-use super::client::{ClientArrays, ClientEffect, ClientMemory};
+use super::buffers::Buffers;
+use super::client::{ArrayData, ClientArrays, ClientEffect, ClientMemory};
 use super::command::Command;
 use super::error::GlErrorKind;
 use super::immediate::{decode, Immediate, Op};
@@ -14,28 +16,77 @@ use super::lists::{compiled, follow, Item, ListMode, Lists, MAX_LIST_NESTING};
 use super::state::CurrentValues;
 use crate::ff::api::{CType, Entry};
 
-/// Immediate mode, client arrays and display lists.
+/// Immediate mode, client arrays, display lists and buffer objects.
 #[derive(Debug, Default)]
 pub struct Client {
     pub immediate: Immediate,
     pub arrays: ClientArrays,
     pub lists: Lists,
+    pub buffers: Buffers,
+}
+
+/// What a call gives back to its caller. The C library returns or writes it out; a script
+/// has no variable to put it in and ignores it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Reply {
+    /// Nothing (most calls).
+    None,
+    /// The returned value: glGenLists' first name; glIsList's, glIsBuffer's and
+    /// glUnmapBuffer's GLboolean.
+    Value(u32),
+    /// glMapBuffer's returned pointer: the address of the buffer's store.
+    Address(usize),
+    /// Bytes the call stores through its pointer argument `arg`: glGenBuffers' names,
+    /// glGetBufferParameteriv's integer, glGetBufferSubData's data.
+    Write { arg: usize, bytes: Vec<u8> },
+}
+
+impl Reply {
+    /// The returned value of calls that return one (0 for the others).
+    pub fn value(&self) -> u32 {
+        match self {
+            Reply::Value(v) => *v,
+            _ => 0,
+        }
+    }
+}
+
+/// The front end's memory with buffer objects: an array or index pointer given with a
+/// buffer bound reads the buffer's store.
+struct WithBuffers<'a> {
+    mem: &'a dyn ClientMemory,
+    buffers: &'a Buffers,
+}
+
+impl ClientMemory for WithBuffers<'_> {
+    fn read<'d>(&self, data: &'d ArrayData, offset: usize, len: usize) -> Option<Cow<'d, [u8]>> {
+        match data {
+            ArrayData::Buffer { name, offset: at } => self
+                .buffers
+                .read(*name, at.checked_add(offset)?, len)
+                .map(|b| Cow::Owned(b.to_vec())),
+            _ => self.mem.read(data, offset, len),
+        }
+    }
 }
 
 impl Client {
     /// One call; the Commands it yields are appended to `out`. `current` is the model's
-    /// current values; `mem` reads what client arrays point at. Returns the call's value
-    /// (glGenLists, glIsList; 0 for the others).
+    /// current values; `mem` reads what client arrays point at. Returns what the call
+    /// gives back.
     pub fn call<A: Args>(
         &mut self,
         c: &A,
         current: &CurrentValues,
         mem: &dyn ClientMemory,
         out: &mut Vec<Command>,
-    ) -> Result<u32, A::Error> {
+    ) -> Result<Reply, A::Error> {
         let entry = c.entry();
         if let Some(value) = self.list_call(c)? {
-            return Ok(value);
+            return Ok(Reply::Value(value));
+        }
+        if Buffers::handles(entry) {
+            return self.buffer_call(c, mem);
         }
         if let Some(mode) = self.lists.compiling() {
             if compiled(entry) {
@@ -43,7 +94,7 @@ impl Client {
                     Ok(Some(item)) => item,
                     // A draw without a vertex array: GL draws nothing, the list keeps
                     // nothing.
-                    Ok(None) => return Ok(0),
+                    Ok(None) => return Ok(Reply::None),
                     Err(e) => match c.deferred(&e) {
                         Some(error) => Item::Command(Command::Raise { error, call: entry }),
                         None => return Err(e),
@@ -53,29 +104,29 @@ impl Client {
                     self.run(std::slice::from_ref(&item), 0, *current, out);
                 }
                 self.lists.record(item);
-                return Ok(0);
+                return Ok(Reply::None);
             }
         }
         match entry {
             Entry::CallList => {
                 let item = Item::Call(c.u32(0)?);
                 self.run(&[item], 0, *current, out);
-                return Ok(0);
+                return Ok(Reply::None);
             }
             Entry::CallLists => {
                 let item = Item::CallMany(list_names(c)?);
                 self.run(&[item], 0, *current, out);
-                return Ok(0);
+                return Ok(Reply::None);
             }
             Entry::ListBase => {
                 self.lists.base = c.u32(0)?;
-                return Ok(0);
+                return Ok(Reply::None);
             }
             _ => {}
         }
         if !ClientArrays::handles(entry) {
             self.immediate.call(c, current, out)?;
-            return Ok(0);
+            return Ok(Reply::None);
         }
         let draws = matches!(
             entry,
@@ -87,7 +138,14 @@ impl Client {
         if draws && self.immediate.is_open() {
             return Err(c.immediate("a draw inside glBegin/glEnd"));
         }
-        match self.arrays.call(c, mem)? {
+        // A draw from a mapped buffer: GL 1.5 §2.9.3 makes it INVALID_OPERATION, llvmpipe's
+        // Mesa draws it without an error (tests/c/buffers.c). Followed: Mesa; the draw
+        // reads the store as it is.
+        let mem = WithBuffers {
+            mem,
+            buffers: &self.buffers,
+        };
+        match self.arrays.call(c, &mem, self.buffers.bound)? {
             ClientEffect::State | ClientEffect::Draw(None) => {}
             ClientEffect::Draw(Some(g)) => out.push(Command::Draw(Arc::new(g))),
             ClientEffect::Element(e) => self
@@ -95,7 +153,24 @@ impl Client {
                 .apply(&Op::Element(Box::new(e)), current, out)
                 .map_err(|rule| c.immediate(rule))?,
         }
-        Ok(0)
+        Ok(Reply::None)
+    }
+
+    /// A buffer-object call: run at once, never compiled (GL 1.5 §5.4), and not allowed
+    /// inside glBegin/glEnd.
+    fn buffer_call<A: Args>(&mut self, c: &A, mem: &dyn ClientMemory) -> Result<Reply, A::Error> {
+        if self.immediate.is_open() {
+            return Err(c.immediate("a buffer-object call inside glBegin/glEnd"));
+        }
+        let reply = self.buffers.call(c, mem)?;
+        if matches!(c.entry(), Entry::DeleteBuffers | Entry::DeleteBuffersARB) {
+            for name in self.arrays.buffer_names() {
+                if self.buffers.get(name).is_none() {
+                    self.arrays.forget_buffer(name);
+                }
+            }
+        }
+        Ok(reply)
     }
 
     /// glNewList, glEndList, glGenLists, glDeleteLists, glIsList: run at once, never
@@ -161,7 +236,14 @@ impl Client {
             Entry::CallList => Item::Call(c.u32(0)?),
             Entry::CallLists => Item::CallMany(list_names(c)?),
             Entry::ListBase => Item::Base(c.u32(0)?),
-            e if ClientArrays::handles(e) => match self.arrays.call(c, mem)? {
+            e if ClientArrays::handles(e) => match self.arrays.call(
+                c,
+                &WithBuffers {
+                    mem,
+                    buffers: &self.buffers,
+                },
+                self.buffers.bound,
+            )? {
                 ClientEffect::Element(el) => Item::Immediate(Op::Element(Box::new(el))),
                 ClientEffect::Draw(Some(g)) => Item::Command(Command::Draw(Arc::new(g))),
                 ClientEffect::Draw(None) | ClientEffect::State => return Ok(None),

@@ -4,8 +4,9 @@
 //! An attribute called inside the pair becomes a per-vertex array; vertices before its
 //! first call take the value current at glBegin (GL 1.5 §2.7: the current value is what
 //! each vertex copies). Outside the pair an attribute call is a plain state command
-//! (`Command::Color`…). After the Draw, any value set after the last vertex follows as
-//! its own command, so the state after the commands equals GL's after glEnd. Inside the
+//! (`Command::Color`…). A draw changes no state, so after it the values the pair left
+//! current follow as their own commands, and the state after the commands equals GL's
+//! after glEnd. Inside the
 //! pair only the attribute calls are allowed (§2.6.3: anything else is INVALID_OPERATION).
 
 use std::sync::Arc;
@@ -260,21 +261,20 @@ impl Immediate {
         Ok(())
     }
 
-    /// glEnd: emits the Draw, then any value set after the last vertex.
+    /// glEnd: emits the Draw, then the current values the calls inside the pair left,
+    /// where they differ from those at glBegin (a draw itself changes no state).
     fn end(&mut self, out: &mut Vec<Command>) -> Result<(), Rule> {
         let open = self.open.take().ok_or("glEnd without glBegin")?;
-        let g = open.geometry;
-        let cur = open.current;
-        let after = after_draw(&g, open.begin);
-        out.push(Command::Draw(Arc::new(g)));
-        if after.color != cur.color {
+        let (begin, cur) = (open.begin, open.current);
+        out.push(Command::Draw(Arc::new(open.geometry)));
+        if begin.color != cur.color {
             out.push(Command::Color(cur.color));
         }
-        if after.normal != cur.normal {
+        if begin.normal != cur.normal {
             out.push(Command::Normal(cur.normal));
         }
         for u in 0..MAX_TEXTURE_UNITS {
-            if after.texcoords[u] != cur.texcoords[u] {
+            if begin.texcoords[u] != cur.texcoords[u] {
                 out.push(Command::TexCoord {
                     unit: u as u8,
                     coord: cur.texcoords[u],
@@ -283,18 +283,6 @@ impl Immediate {
         }
         Ok(())
     }
-}
-
-/// What FixedState holds after the Draw: the last vertex's values where arrays exist, else
-/// the values current at glBegin (attributes without arrays were not called inside the
-/// pair, or only after the last vertex).
-fn after_draw(g: &Geometry, mut v: CurrentValues) -> CurrentValues {
-    v.color = Geometry::last(&g.colors).unwrap_or(v.color);
-    v.normal = Geometry::last(&g.normals).unwrap_or(v.normal);
-    for (u, t) in g.texcoords.iter().enumerate() {
-        v.texcoords[u] = Geometry::last(t).unwrap_or(v.texcoords[u]);
-    }
-    v
 }
 
 impl Open {

@@ -147,7 +147,7 @@ impl Lists {
 }
 
 /// Follows the current values through a command, so that a glBegin later in the same
-/// list reads what the list's own glColor, glNormal or draw left current.
+/// list reads what the list's own glColor, glNormal or glEnd left current.
 pub fn follow(current: &mut CurrentValues, cmd: &Command) {
     match cmd {
         Command::Color(c) => current.color = *c,
@@ -155,14 +155,6 @@ pub fn follow(current: &mut CurrentValues, cmd: &Command) {
         Command::TexCoord { unit, coord } => {
             if let Some(t) = current.texcoords.get_mut(usize::from(*unit)) {
                 *t = *coord;
-            }
-        }
-        Command::Draw(g) => {
-            use super::geometry::Geometry;
-            current.color = Geometry::last(&g.colors).unwrap_or(current.color);
-            current.normal = Geometry::last(&g.normals).unwrap_or(current.normal);
-            for (u, t) in g.texcoords.iter().enumerate() {
-                current.texcoords[u] = Geometry::last(t).unwrap_or(current.texcoords[u]);
             }
         }
         _ => {}

@@ -20,6 +20,7 @@ pub mod api;
 pub mod apply;
 pub mod args;
 pub mod attrib;
+pub mod buffers;
 pub mod calls;
 pub mod calls_attrib;
 pub mod calls_raster;

@@ -365,11 +365,15 @@ fn texture_table() {
 }
 
 #[test]
-fn draw_leaves_the_last_vertex_values_current() {
+fn draw_leaves_the_current_values_alone() {
     let mut g = Geometry::new(Primitive::Triangles, vec![Vec4::W; 3]);
     g.colors = Some(vec![Vec4::ONE, Vec4::ONE, Vec4::new(0.0, 1.0, 0.0, 1.0)]);
-    let s = run(&[Command::Draw(g.clone().into())]);
-    assert_eq!(s.current.color, Vec4::new(0.0, 1.0, 0.0, 1.0));
+    let grey = Vec4::new(0.5, 0.5, 0.5, 1.0);
+    let s = run(&[Command::Color(grey), Command::Draw(g.clone().into())]);
+    assert_eq!(
+        s.current.color, grey,
+        "as Mesa after glDrawArrays (tests/c/state.c)"
+    );
     g.normals = Some(vec![Vec3::X]);
     let mut s = FixedState::new();
     assert_eq!(

@@ -5,7 +5,9 @@
  * outputs must be the same.
  *
  * usage: state */
+#define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
+#include <GL/glext.h>
 #include <stdio.h>
 
 static void ints(const char *what, GLenum pname, int n) {
@@ -236,6 +238,30 @@ int main(void) {
   printf("%-28s %u  err 0x%x\n", "next generated name", names[0], glGetError());
   glGenTextures(-1, names);
   printf("%-28s err 0x%x\n", "glGenTextures(-1)", glGetError());
+
+  /* Buffer bindings. */
+  GLuint vbo[2];
+  glGenBuffers(2, vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo[1]);
+  glBufferData(GL_ARRAY_BUFFER, 64, NULL, GL_STATIC_DRAW);
+  glVertexPointer(3, GL_FLOAT, 0, (const GLvoid *)16);
+  ints("array buffer binding", GL_ARRAY_BUFFER_BINDING, 1);
+  ints("vertex array binding", GL_VERTEX_ARRAY_BUFFER_BINDING, 1);
+  ints("element buffer binding", GL_ELEMENT_ARRAY_BUFFER_BINDING, 1);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  ints("array buffer unbound", GL_ARRAY_BUFFER_BINDING, 1);
+  ints("vertex array binding kept", GL_VERTEX_ARRAY_BUFFER_BINDING, 1);
+
+  /* A draw from arrays leaves the current colour as glColor set it (Mesa). */
+  static const GLfloat tri3[] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  static const GLubyte cols[] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255};
+  glVertexPointer(3, GL_FLOAT, 0, tri3);
+  glColorPointer(4, GL_UNSIGNED_BYTE, 0, cols);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glColor4f(0.25f, 0.5f, 0.75f, 1);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  floats("current color after arrays", GL_CURRENT_COLOR, 4);
+  glDisableClientState(GL_COLOR_ARRAY);
 
   /* Errors of the getters. */
   ints("unknown pname", 0x1234, 1);

@@ -692,6 +692,12 @@ impl Args for Call<'_, '_> {
             .pixels(i, shape)?
             .map_or(ArrayData::Null, ArrayData::Bytes))
     }
+    fn offset(&self, i: usize) -> Res<usize> {
+        if let Some(("NULL", 0)) = self.name(i) {
+            return Ok(0);
+        }
+        usize::try_from(self.int(i)?).map_err(|_| self.bad(i, "a byte offset of 0 or more"))
+    }
     fn slot(&self, i: usize) -> Res<u32> {
         self.name(i)
             .filter(|(_, off)| *off == 0)

@@ -657,7 +657,12 @@ fn tex_image(out: &mut String, t: &TexImage) {
 /// glBegin/glEnd; indexed geometry as glDrawElements over client arrays.
 fn draw(out: &mut String, g: &Geometry) {
     if let Some(idx) = &g.indices {
-        return draw_elements(out, g, idx);
+        return draw_arrays(out, g, Some(idx));
+    }
+    // A draw with attribute arrays prints as client arrays too: glColor and its kin inside
+    // glBegin/glEnd would also set the current values, which a draw does not.
+    if g.colors.is_some() || g.normals.is_some() || g.texcoords.iter().any(Option::is_some) {
+        return draw_arrays(out, g, None);
     }
     line(out, format_args!("{}({})", Entry::Begin, n(g.primitive)));
     for i in 0..g.positions.len() {
@@ -704,10 +709,11 @@ fn draw(out: &mut String, g: &Geometry) {
     line(out, format_args!("{}()", Entry::End));
 }
 
-/// Indexed geometry as the era drew it: client arrays over the vertices, then
-/// glDrawElements, then the arrays disabled again. (Mesa splits indexed quads differently
-/// from glBegin/glEnd ones, so an indexed draw stays indexed.)
-fn draw_elements(out: &mut String, g: &Geometry, idx: &[u32]) {
+/// Geometry with attribute arrays or indices as the era drew it: client arrays over the
+/// vertices, then glDrawArrays or glDrawElements, then the arrays disabled again. (Mesa
+/// splits indexed quads differently from glBegin/glEnd ones, so an indexed draw stays
+/// indexed.)
+fn draw_arrays(out: &mut String, g: &Geometry, indices: Option<&[u32]>) {
     let flat4 = |v: &[glam::Vec4]| -> Vec<f32> { v.iter().flat_map(|x| x.to_array()).collect() };
     let mut enabled = vec!["GL_VERTEX_ARRAY"];
     line(
@@ -762,17 +768,30 @@ fn draw_elements(out: &mut String, g: &Geometry, idx: &[u32]) {
             format_args!("{}(GL_TEXTURE_COORD_ARRAY)", Entry::EnableClientState),
         );
     }
-    let list: Vec<String> = idx.iter().map(u32::to_string).collect();
-    line(
-        out,
-        format_args!(
-            "{}({}, {}, GL_UNSIGNED_INT, (GLuint[]){{{}}})",
-            Entry::DrawElements,
-            n(g.primitive),
-            idx.len(),
-            list.join(", ")
+    match indices {
+        Some(idx) => {
+            let list: Vec<String> = idx.iter().map(u32::to_string).collect();
+            line(
+                out,
+                format_args!(
+                    "{}({}, {}, GL_UNSIGNED_INT, (GLuint[]){{{}}})",
+                    Entry::DrawElements,
+                    n(g.primitive),
+                    idx.len(),
+                    list.join(", ")
+                ),
+            );
+        }
+        None => line(
+            out,
+            format_args!(
+                "{}({}, 0, {})",
+                Entry::DrawArrays,
+                n(g.primitive),
+                g.positions.len()
+            ),
         ),
-    );
+    }
     for (u, _) in &units {
         let unit = Family::Texture.print(*u as u8);
         line(out, format_args!("{}({unit})", Entry::ClientActiveTexture));

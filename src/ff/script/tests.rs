@@ -123,7 +123,8 @@ fn immediate_mode_folds_into_one_draw() {
                glNormal3f(0, 1, 0);\n\
                glEnd();\n";
     let cmds = parse(src).unwrap();
-    assert_eq!(cmds.len(), 3, "{cmds:?}");
+    // The colour before, the draw, then what the pair left current (a draw changes none).
+    assert_eq!(cmds.len(), 5, "{cmds:?}");
     let Command::Draw(g) = &cmds[1] else {
         panic!("{cmds:?}")
     };
@@ -139,7 +140,8 @@ fn immediate_mode_folds_into_one_draw() {
     );
     assert!(g.normals.is_none(), "the normal came after the last vertex");
     // ... so it is kept as the current normal after the draw.
-    assert_eq!(cmds[2], Command::Normal(Vec3::Y));
+    assert_eq!(cmds[2], Command::Color(green));
+    assert_eq!(cmds[3], Command::Normal(Vec3::Y));
 }
 
 #[test]
@@ -1017,4 +1019,106 @@ fn fog_calls_in_every_form() {
         err("glFogi(GL_FOG_MODE, GL_NEAREST);"),
         ScriptError::UnknownEnum { .. }
     ));
+}
+
+#[test]
+fn draws_from_a_buffer_object_through_offsets() {
+    // Buffer 1: a 2-float header to skip, then three xy vertices; buffer 2: indices
+    // after one unused GLushort. Both pointers are offsets into the bound buffers.
+    let src = "glGenBuffers(2, (GLuint[]){0, 0});\n\
+               glBindBuffer(GL_ARRAY_BUFFER, 1);\n\
+               glBufferData(GL_ARRAY_BUFFER, 32, (GLfloat[]){9, 9, 0, 0, 1, 0, 0, 1}, \
+               GL_STATIC_DRAW);\n\
+               glBufferSubData(GL_ARRAY_BUFFER, 16, 4, (GLfloat[]){0.5f});\n\
+               glVertexPointer(2, GL_FLOAT, 0, 8);\n\
+               glEnableClientState(GL_VERTEX_ARRAY);\n\
+               glDrawArrays(GL_TRIANGLES, 0, 3);\n\
+               glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 2);\n\
+               glBufferData(GL_ELEMENT_ARRAY_BUFFER, 8, (GLushort[]){7, 2, 1, 0}, \
+               GL_STATIC_DRAW);\n\
+               glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_SHORT, (const GLvoid *)2);\n\
+               glMapBuffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY);\n\
+               glUnmapBuffer(GL_ARRAY_BUFFER);\n";
+    let cmds = parse(src).unwrap();
+    let draws: Vec<_> = cmds
+        .iter()
+        .filter_map(|c| match c {
+            Command::Draw(g) => Some(g.clone()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(draws.len(), 2, "{cmds:?}");
+    let xy = |g: &Geometry| -> Vec<(f32, f32)> { g.positions.iter().map(|p| (p.x, p.y)).collect() };
+    assert_eq!(xy(&draws[0]), [(0.0, 0.0), (0.5, 0.0), (0.0, 1.0)]);
+    assert_eq!(xy(&draws[1]), [(0.0, 0.0), (0.5, 0.0), (0.0, 1.0)]);
+    assert_eq!(draws[1].indices, Some(vec![2, 1, 0]));
+}
+
+#[test]
+fn a_list_keeps_what_a_buffer_held_at_compile_time() {
+    // GL 1.5 §5.4: a compiled draw holds the vertex data read when it was compiled; a
+    // later glBufferSubData changes what a new draw reads, not the list.
+    let src = "glBindBuffer(GL_ARRAY_BUFFER, 5);\n\
+               glBufferData(GL_ARRAY_BUFFER, 24, (GLfloat[]){0, 0, 1, 0, 0, 1}, \
+               GL_DYNAMIC_DRAW);\n\
+               glVertexPointer(2, GL_FLOAT, 0, NULL);\n\
+               glEnableClientState(GL_VERTEX_ARRAY);\n\
+               glNewList(1, GL_COMPILE);\n\
+               glDrawArrays(GL_TRIANGLES, 0, 3);\n\
+               glEndList();\n\
+               glBufferSubData(GL_ARRAY_BUFFER, 0, 8, (GLfloat[]){-1, -1});\n\
+               glCallList(1);\n\
+               glDrawArrays(GL_TRIANGLES, 0, 3);\n";
+    let firsts: Vec<(f32, f32)> = parse(src)
+        .unwrap()
+        .iter()
+        .filter_map(|c| match c {
+            Command::Draw(g) => Some((g.positions[0].x, g.positions[0].y)),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(firsts, [(0.0, 0.0), (-1.0, -1.0)]);
+}
+
+#[test]
+fn buffer_object_misuse_names_the_line_and_the_rule() {
+    let e = err("glBindBuffer(GL_ARRAY_BUFFER, 3);\n\
+                 glBufferData(GL_ARRAY_BUFFER, 4, NULL, GL_STATIC_DRAW);\n\
+                 glMapBuffer(GL_ARRAY_BUFFER, GL_READ_WRITE);\n\
+                 glMapBuffer(GL_ARRAY_BUFFER, GL_READ_WRITE);\n")
+    .to_string();
+    assert!(e.contains("line 4") && e.contains("already mapped"), "{e}");
+    let e = err("glBufferData(GL_ELEMENT_ARRAY_BUFFER, 4, NULL, GL_STATIC_DRAW);\n").to_string();
+    assert!(
+        e.contains("line 1") && e.contains("no buffer object"),
+        "{e}"
+    );
+    let e = err("glBindBuffer(GL_ARRAY_BUFFER, 3);\n\
+                 glBufferData(GL_ARRAY_BUFFER, 4, NULL, GL_STATIC_DROW);\n")
+    .to_string();
+    assert!(e.contains("GL_STATIC_DRAW"), "{e}");
+}
+
+#[test]
+fn interleaved_arrays_read_a_buffer_from_an_offset() {
+    // GL_C3F_V3F from byte 4 of the buffer: the colour at +0, the vertex at +12 of each
+    // 24-byte element.
+    let src = "glBindBuffer(GL_ARRAY_BUFFER, 1);\n\
+               glBufferData(GL_ARRAY_BUFFER, 52, (GLfloat[]){99, 1, 0, 0, 0, 0, 0, \
+               0, 1, 0, 1, 0, 0}, GL_STATIC_DRAW);\n\
+               glInterleavedArrays(GL_C3F_V3F, 0, (GLvoid *)4);\n\
+               glDrawArrays(GL_LINES, 0, 2);\n";
+    let cmds = parse(src).unwrap();
+    let Some(Command::Draw(g)) = cmds.last() else {
+        panic!("a draw: {cmds:?}");
+    };
+    let xy: Vec<(f32, f32)> = g.positions.iter().map(|p| (p.x, p.y)).collect();
+    assert_eq!(xy, [(0.0, 0.0), (1.0, 0.0)]);
+    assert_eq!(
+        g.colors,
+        Some(vec![
+            Vec4::new(1.0, 0.0, 0.0, 1.0),
+            Vec4::new(0.0, 1.0, 0.0, 1.0)
+        ])
+    );
 }

@@ -368,7 +368,7 @@ impl GeometryCache {
     }
 
     /// How many geometries are uploaded.
-    pub fn len(&self) -> usize {
+    pub fn uploaded(&self) -> usize {
         self.entries.len()
     }
 

@@ -87,7 +87,7 @@ impl EmulatedPipeline {
 
     /// How many geometries are uploaded (each kept while something else holds it).
     pub fn uploaded_geometries(&self) -> usize {
-        self.path.geometry.len()
+        self.path.geometry.uploaded()
     }
 
     /// The key the next draw would use (for `fixedfunc shaders` and tests).

@@ -5,8 +5,8 @@
 //! compatibility context.
 //!
 //! After a draw GL leaves the current normal, colour and texture coordinates of an enabled
-//! array indeterminate (§2.8); the model makes them the last vertex's, as glBegin/glEnd
-//! would. [`restore_current`] sends the model's values so both agree.
+//! array indeterminate (§2.8); the model keeps them, as Mesa does. [`restore_current`]
+//! sends the model's values so both agree whatever the driver did.
 
 use std::ffi::c_void;
 
@@ -103,7 +103,7 @@ fn count(n: usize) -> GLsizei {
 
 /// Sends the model's current normal, colour and texture coordinates after a draw whose
 /// arrays made GL's values indeterminate. The colour goes last: under COLOR_MATERIAL it
-/// also sets the tracked material, as the model's draw did.
+/// also sets the tracked material from the current colour, as the model has it.
 pub fn restore_current(g: &gl::Gl, state: &FixedState, geometry: &Geometry) {
     let c = &state.current;
     // SAFETY: plain GL calls on the current context.
