@@ -15,6 +15,8 @@
 //! - No Rust panic crosses the boundary: one is caught, printed on stderr, and recorded as
 //!   GL_INVALID_OPERATION.
 
+#[cfg(test)]
+mod buffer_tests;
 pub mod cargs;
 pub mod context;
 pub mod exports;
