@@ -25,6 +25,7 @@ impl PipelineChoice {
 
 /// A technique's name into its id; clap lists the names as possible values.
 pub fn technique_parser() -> impl TypedValueParser<Value = TechniqueId> {
-    clap::builder::PossibleValuesParser::new(TechniqueId::names())
-        .map(|name| TechniqueId::from_name(&name).expect("clap accepts only the possible values"))
+    clap::builder::PossibleValuesParser::new(TechniqueId::names()).try_map(|name| {
+        TechniqueId::from_name(&name).ok_or_else(|| format!("unknown technique {name}"))
+    })
 }

@@ -549,7 +549,7 @@ impl ClientArrays {
         let &(_, tc, cc, cty, normal, vc) = FORMATS
             .iter()
             .find(|f| f.0 == name)
-            .expect("pname returned a listed name");
+            .ok_or_else(|| c.unknown(0, names.clone()))?;
         let given = stride(c, 1)?;
         let data = Buffers::source(c, 2, bound.array)?;
         // Offsets in bytes: texcoord, colour, normal, vertex (floats are 4 bytes; a

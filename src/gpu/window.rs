@@ -108,7 +108,8 @@ impl WindowContext {
                 &*event_loop,
                 ConfigTemplateBuilder::new().with_alpha_size(8),
                 |mut configs| {
-                    // glutin reports an error instead of calling the picker with no config.
+                    // Cannot fail: glutin reports "no config" as the build's error and calls
+                    // the picker only with at least one config.
                     configs.next().expect("glutin passes at least one config")
                 },
             )

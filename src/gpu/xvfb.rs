@@ -310,6 +310,8 @@ impl VirtualDisplay {
         let pid = child.id() as i32;
         remember(pid, number);
         drop(blocked);
+        // Cannot fail: the command above sets stderr to Stdio::piped(), and this is the one
+        // take() of it.
         let log = keep_log(child.stderr.take().expect("stderr is piped"));
         let running = Running {
             child,
@@ -326,6 +328,8 @@ impl VirtualDisplay {
         // may have started a server on the same number at the same moment, and the socket
         // alone would be that server's) and listens on its socket.
         while !(lock_owner(number) == Some(pid) && socket(number).exists()) {
+            // Cannot fail: `guard` was made above and no clone of its Arc exists before this
+            // loop returns it.
             let running = Arc::get_mut(&mut guard.running).expect("not shared yet");
             if let Ok(Some(status)) = running.child.try_wait() {
                 forget(pid);

@@ -26,7 +26,8 @@ pub trait Named: Copy + PartialEq + Sized + 'static {
         ""
     }
 
-    /// The printed name.
+    /// The printed name. Cannot fail for a value of the type: each `Named` impl lists every
+    /// variant of its enum in NAMES beside the enum (no input builds a value, only code).
     fn name(self) -> &'static str {
         Self::NAMES
             .iter()
