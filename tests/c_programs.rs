@@ -164,6 +164,52 @@ fn within_3_on_99_percent(img: &RgbaImage) -> Tolerance {
     }
 }
 
+/// What a program printed on stdout, on Mesa and on the layer.
+fn texts(name: &str) -> (String, String) {
+    let exe = compile(name, Linking::Direct);
+    let text = |library| String::from_utf8_lossy(&run(&exe, library, &[]).stdout).into_owned();
+    (text(Library::Mesa), text(Library::Fixedfunc))
+}
+
+/// What a program printed and the image it wrote, on Mesa and on the layer.
+fn texts_and_images(name: &str) -> [(String, RgbaImage); 2] {
+    let exe = compile(name, Linking::Direct);
+    let dir = work_dir(name);
+    [Library::Mesa, Library::Fixedfunc].map(|library| {
+        let out = dir.join(format!("{library:?}.ppm"));
+        let text = run(&exe, library, &[out.to_str().unwrap()]).stdout;
+        (String::from_utf8_lossy(&text).into_owned(), read_ppm(&out))
+    })
+}
+
+/// The layer printed what Mesa printed, line by line (at least `min_lines` of it).
+fn assert_same_text(mesa: &str, ours: &str, min_lines: usize, what: &str) {
+    assert!(
+        mesa.lines().count() > min_lines,
+        "the program printed too little:\n{mesa}"
+    );
+    for (m, o) in mesa.lines().zip(ours.lines()) {
+        assert_eq!(o, m, "{what} differs from Mesa's");
+    }
+    assert_eq!(ours.lines().count(), mesa.lines().count());
+}
+
+/// Each of the six 64×64 panels (three across, two up) shows something on Mesa.
+fn assert_six_panels_drawn(mesa: &RgbaImage) {
+    let background = Rgba([26, 26, 26, 255]);
+    for panel in 0..6u32 {
+        let (x0, y0) = ((panel % 3) * 64, 64 - (panel / 3) * 64);
+        let drawn = (0..64)
+            .flat_map(|y| (0..64).map(move |x| (x0 + x, y0 + y)))
+            .filter(|&(x, y)| *mesa.get_pixel(x, y) != background)
+            .count();
+        assert!(
+            drawn > 200,
+            "panel {panel} is empty on Mesa ({drawn} pixels)"
+        );
+    }
+}
+
 #[test]
 fn the_classic_osmesa_demo_renders_as_on_mesa() {
     for linking in [Linking::Direct, Linking::ProcAddress] {
@@ -186,54 +232,22 @@ fn the_classic_osmesa_demo_renders_as_on_mesa() {
 
 #[test]
 fn errors_follow_mesa_call_by_call() {
-    let exe = compile("errors", Linking::Direct);
-    let mesa = run(&exe, Library::Mesa, &[]);
-    let ours = run(&exe, Library::Fixedfunc, &[]);
-    let (mesa, ours) = (
-        String::from_utf8_lossy(&mesa.stdout),
-        String::from_utf8_lossy(&ours.stdout),
-    );
-    assert!(
-        mesa.lines().count() > 30,
-        "the program checked too little:\n{mesa}"
-    );
-    for (m, o) in mesa.lines().zip(ours.lines()) {
-        assert_eq!(o, m, "the layer's error differs from Mesa's");
-    }
-    assert_eq!(ours.lines().count(), mesa.lines().count());
+    let (mesa, ours) = texts("errors");
+    assert_same_text(&mesa, &ours, 30, "the layer's error");
 }
 
 #[test]
 fn client_arrays_draw_as_on_mesa() {
     let mesa = render("arrays", Linking::Direct, Library::Mesa, &[]);
     let ours = render("arrays", Linking::Direct, Library::Fixedfunc, &[]);
-    // Six 64×64 panels, each drawn through another path: each must show something.
-    let background = Rgba([26, 26, 26, 255]);
-    for panel in 0..6u32 {
-        let (x0, y0) = ((panel % 3) * 64, 64 - (panel / 3) * 64);
-        let drawn = (0..64)
-            .flat_map(|y| (0..64).map(move |x| (x0 + x, y0 + y)))
-            .filter(|&(x, y)| *mesa.get_pixel(x, y) != background)
-            .count();
-        assert!(
-            drawn > 200,
-            "panel {panel} is empty on Mesa ({drawn} pixels)"
-        );
-    }
+    // Each panel is drawn through another path.
+    assert_six_panels_drawn(&mesa);
     assert_images_match("arrays", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
 
 #[test]
 fn display_lists_run_as_on_mesa() {
-    let exe = compile("lists", Linking::Direct);
-    let dir = work_dir("lists");
-    let run_on = |library: Library| {
-        let out = dir.join(format!("{library:?}.ppm"));
-        let text = run(&exe, library, &[out.to_str().unwrap()]).stdout;
-        (String::from_utf8_lossy(&text).into_owned(), read_ppm(&out))
-    };
-    let (mesa_text, mesa) = run_on(Library::Mesa);
-    let (ours_text, ours) = run_on(Library::Fixedfunc);
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("lists");
     assert!(
         mesa_text.contains("glCallLists through the base       0x0500"),
         "the recorded bad call raised no error on Mesa:\n{mesa_text}"
@@ -249,17 +263,8 @@ fn display_lists_run_as_on_mesa() {
 
 #[test]
 fn state_queries_answer_as_on_mesa() {
-    let exe = compile("state", Linking::Direct);
-    let mesa = String::from_utf8_lossy(&run(&exe, Library::Mesa, &[]).stdout).into_owned();
-    let ours = String::from_utf8_lossy(&run(&exe, Library::Fixedfunc, &[]).stdout).into_owned();
-    assert!(
-        mesa.lines().count() > 70,
-        "the program read too little:\n{mesa}"
-    );
-    for (m, o) in mesa.lines().zip(ours.lines()) {
-        assert_eq!(o, m, "the layer's answer differs from Mesa's");
-    }
-    assert_eq!(ours.lines().count(), mesa.lines().count());
+    let (mesa, ours) = texts("state");
+    assert_same_text(&mesa, &ours, 70, "the layer's answer");
 }
 
 /// A program traced with FIXEDFUNC_TRACE replays to the image it rendered, and `fixedfunc
@@ -332,15 +337,7 @@ fn a_trace_replays_to_the_same_image() {
 
 #[test]
 fn buffer_objects_draw_and_fail_as_on_mesa() {
-    let exe = compile("buffers", Linking::Direct);
-    let dir = work_dir("buffers");
-    let run_on = |library: Library| {
-        let out = dir.join(format!("{library:?}.ppm"));
-        let text = run(&exe, library, &[out.to_str().unwrap()]).stdout;
-        (String::from_utf8_lossy(&text).into_owned(), read_ppm(&out))
-    };
-    let (mesa_text, mesa) = run_on(Library::Mesa);
-    let (ours_text, ours) = run_on(Library::Fixedfunc);
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("buffers");
     assert!(
         mesa_text.contains("second glMapBuffer                       0x0502"),
         "mapping a mapped buffer raised no error on Mesa:\n{mesa_text}"
@@ -349,18 +346,7 @@ fn buffer_objects_draw_and_fail_as_on_mesa() {
         ours_text, mesa_text,
         "glGetError, glIsBuffer or glGetBufferParameteriv answers differ"
     );
-    // Six 64×64 panels, each drawn through buffers another way: each must show something.
-    let background = Rgba([26, 26, 26, 255]);
-    for panel in 0..6u32 {
-        let (x0, y0) = ((panel % 3) * 64, 64 - (panel / 3) * 64);
-        let drawn = (0..64)
-            .flat_map(|y| (0..64).map(move |x| (x0 + x, y0 + y)))
-            .filter(|&(x, y)| *mesa.get_pixel(x, y) != background)
-            .count();
-        assert!(
-            drawn > 200,
-            "panel {panel} is empty on Mesa ({drawn} pixels)"
-        );
-    }
+    // Each panel is drawn through buffers another way.
+    assert_six_panels_drawn(&mesa);
     assert_images_match("buffers", &ours, &mesa, within_3_on_99_percent(&mesa));
 }

@@ -205,6 +205,9 @@ impl Context {
 
     /// Releases the GL objects (the context must be current).
     pub fn release(&mut self) {
+        if self.tracing {
+            super::trace::flush();
+        }
         if let Some(mut p) = self.pipeline.take() {
             p.release(&self.gpu);
         }
@@ -453,13 +456,16 @@ impl Context {
         }
     }
 
-    /// The image so far into the caller's buffer.
+    /// The image so far into the caller's buffer (and the trace to its file).
     pub fn write_back(&mut self) {
+        if self.tracing {
+            super::trace::flush();
+        }
         let (Some(target), Some(buffer)) = (&self.target, self.buffer) else {
             return;
         };
-        let image = match target.read_color(&self.gpu) {
-            Ok(i) => i,
+        let rows = match target.read_color_rows(&self.gpu) {
+            Ok(r) => r,
             Err(e) => {
                 eprintln!("fixedfunc: reading the image back failed: {e}");
                 return;
@@ -472,19 +478,19 @@ impl Context {
         } else {
             w
         };
-        let raw = image.as_raw();
-        for y in 0..h {
-            // `image` is top row first; GL's row y counts from the bottom.
-            let src_row = h - 1 - y;
+        // `rows` is GL's order, row y from the bottom; Y_UP keeps that order.
+        for (y, src) in rows.chunks_exact(w * 4).enumerate().take(h) {
             let dst_row = if self.y_up { y } else { h - 1 - y };
-            for x in 0..w {
-                let s = (src_row * w + x) * 4;
-                let d = (dst_row * row_pixels + x) * bpp;
-                // SAFETY: the caller's buffer holds height rows of ROW_LENGTH pixels in
-                // its format (OSMesaMakeCurrent's contract).
-                let out =
-                    unsafe { std::slice::from_raw_parts_mut(buffer.ptr.cast::<u8>().add(d), bpp) };
-                self.format.write(&raw[s..s + 4], out);
+            // SAFETY: the caller's buffer holds height rows of ROW_LENGTH pixels in its
+            // format (OSMesaMakeCurrent's contract).
+            let dst = unsafe {
+                std::slice::from_raw_parts_mut(
+                    buffer.ptr.cast::<u8>().add(dst_row * row_pixels * bpp),
+                    w * bpp,
+                )
+            };
+            for (s, d) in src.chunks_exact(4).zip(dst.chunks_exact_mut(bpp)) {
+                self.format.write(s, d);
             }
         }
     }

@@ -6,8 +6,9 @@
 
 use super::cargs::CArg;
 use crate::ff::api::Entry;
+use crate::ff::client::type_token;
 use crate::ff::front::Client;
-use crate::ff::glenum::registry as r;
+use crate::ff::glenum::{registry as r, value_of};
 use crate::ff::lists::{ListMode, MAX_LIST_NESTING};
 use crate::ff::query::{Queried, QueryValue};
 use crate::ff::{FixedState, GlErrorKind};
@@ -179,19 +180,7 @@ fn client_get(pname: u32, f: &ClientState) -> Option<Queried> {
     let a = &c.arrays;
     let int = |v: i64| Some(vec![QueryValue::Int(v as i32)]);
     let enm = |v: u32| Some(vec![QueryValue::Enum(v)]);
-    let ty = |t: crate::ff::api::CType| {
-        use crate::ff::api::CType;
-        match t {
-            CType::Byte => r::BYTE,
-            CType::UByte => r::UNSIGNED_BYTE,
-            CType::Short => r::SHORT,
-            CType::UShort => r::UNSIGNED_SHORT,
-            CType::Int => r::INT,
-            CType::UInt => r::UNSIGNED_INT,
-            CType::Float => r::FLOAT,
-            CType::Double => r::DOUBLE,
-        }
-    };
+    let ty = |t| value_of(type_token(t)).unwrap_or(r::FLOAT);
     let unit = &a.texcoord[usize::from(a.client_active)];
     if let Some(on) = client_enable(pname, c) {
         return Some(vec![QueryValue::Bool(on)]);

@@ -6,6 +6,9 @@
 //! data as compound literals, a recorded error as a comment. One file per process; each
 //! context and buffer size is announced in a comment.
 //!
+//! Writes are buffered and flushed where the program's image is complete (glFinish,
+//! glFlush, OSMesaMakeCurrent, OSMesaDestroyContext), not per call.
+//!
 //! A write that fails stops the trace with one message on stderr (the program itself goes
 //! on: a trace is an observer, not part of the GL contract).
 
@@ -54,7 +57,7 @@ fn with_writer(f: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>) {
         };
     }
     if let State::Writing(w) = &mut *state {
-        if let Err(e) = f(w).and_then(|()| w.flush()) {
+        if let Err(e) = f(w) {
             eprintln!("fixedfunc: writing the {VARIABLE} file failed: {e}; the trace stops here");
             *state = State::Off;
         }
@@ -71,6 +74,12 @@ pub fn enabled() -> bool {
 pub fn command(cmd: &Command) {
     let text = print(std::slice::from_ref(cmd));
     with_writer(|w| w.write_all(text.as_bytes()));
+}
+
+/// Writes out what is buffered: at glFinish, glFlush, a make-current and a context's end,
+/// the points where the program's image is complete.
+pub fn flush() {
+    with_writer(|w| w.flush());
 }
 
 /// A note: a context made current with a buffer of this size.

@@ -120,6 +120,14 @@ fn decode(t: CType, b: &[u8]) -> f64 {
 }
 
 /// The GL type tokens of array data.
+/// The GL token of an array's element type (for glGet of *_ARRAY_TYPE).
+pub fn type_token(t: CType) -> &'static str {
+    TYPE_NAMES
+        .iter()
+        .find(|(_, c)| *c == t)
+        .map_or("GL_FLOAT", |(n, _)| n)
+}
+
 const TYPE_NAMES: [(&str, CType); 8] = [
     ("GL_BYTE", CType::Byte),
     ("GL_UNSIGNED_BYTE", CType::UByte),

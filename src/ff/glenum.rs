@@ -140,10 +140,11 @@ impl Family {
     /// The index a GLenum value names: `GL_LIGHT0 + 3` → 3. Only the named range counts
     /// (a value beyond it is another token: GL_TEXTURE0 + 110 is GL_SPARE0_NV).
     pub fn from_value(self, value: u32) -> Option<u8> {
+        let (_, _, named) = self.parts();
         let (base, count) = match self {
-            Family::Light => (registry::LIGHT0, 8),
-            Family::Texture => (registry::TEXTURE0, 32),
-            Family::Combiner => (registry::COMBINER0_NV, 8),
+            Family::Light => (registry::LIGHT0, named),
+            Family::Texture => (registry::TEXTURE0, named),
+            Family::Combiner => (registry::COMBINER0_NV, named),
             // GL_CLIP_PLANE0 + i up to MAX_CLIP_PLANES (8 on Mesa), beyond the six named.
             Family::ClipPlane => (registry::CLIP_PLANE0, super::state::MAX_CLIP_PLANES as u32),
         };

@@ -185,11 +185,18 @@ impl RenderTarget {
         }
     }
 
-    /// The colour buffer as RGBA8, top row first.
-    pub fn read_color(&self, ctx: &GpuContext) -> Result<image::RgbaImage, GpuError> {
+    /// The colour buffer as RGBA8 bytes in GL's order, bottom row first.
+    pub fn read_color_rows(&self, ctx: &GpuContext) -> Result<Vec<u8>, GpuError> {
         let (w, h) = (self.spec.width, self.spec.height);
         let mut data = vec![0u8; (w * h * 4) as usize];
         self.read(ctx, glow::RGBA, glow::UNSIGNED_BYTE, &mut data)?;
+        Ok(data)
+    }
+
+    /// The colour buffer as RGBA8, top row first.
+    pub fn read_color(&self, ctx: &GpuContext) -> Result<image::RgbaImage, GpuError> {
+        let (w, h) = (self.spec.width, self.spec.height);
+        let data = self.read_color_rows(ctx)?;
         let row = (w * 4) as usize;
         let flipped: Vec<u8> = data.chunks_exact(row).rev().flatten().copied().collect();
         image::RgbaImage::from_raw(w, h, flipped).ok_or(GpuError::Object(
