@@ -350,3 +350,24 @@ fn buffer_objects_draw_and_fail_as_on_mesa() {
     assert_six_panels_drawn(&mesa);
     assert_images_match("buffers", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+#[test]
+fn framebuffer_objects_answer_and_draw_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("fbo");
+    // Mesa's own answers that the program is built around.
+    for line in [
+        "empty fbo                                0x8cd7",
+        "texture without image                    0x8cd6",
+        "depth only, draw buffer 0                0x8cd5",
+        "fbo pixel at the overlap                 255 0 0 255",
+    ] {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    assert_same_text(&mesa_text, &ours_text, 100, "a framebuffer answer");
+    // The window shows the texture drawn through the FBO: red and green quads on blue.
+    assert!(count_dominant(&mesa, 0) > 200 && count_dominant(&mesa, 1) > 200);
+    assert_images_match("fbo", &ours, &mesa, within_3_on_99_percent(&mesa));
+}

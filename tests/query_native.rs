@@ -1010,13 +1010,7 @@ fn mesa_integer_getters_truncate_and_scale() {
 
 /// The GL error code of a model error.
 fn code(e: GlErrorKind) -> u32 {
-    match e {
-        GlErrorKind::InvalidEnum => gl::INVALID_ENUM,
-        GlErrorKind::InvalidValue => gl::INVALID_VALUE,
-        GlErrorKind::InvalidOperation => gl::INVALID_OPERATION,
-        GlErrorKind::StackOverflow => gl::STACK_OVERFLOW,
-        GlErrorKind::StackUnderflow => gl::STACK_UNDERFLOW,
-    }
+    e.code()
 }
 
 /// Bad arguments raise the same error in the model and in Mesa: FRONT_AND_BACK for a

@@ -125,6 +125,8 @@ pub struct Context {
     texture_max: u32,
     /// FIXEDFUNC_TRACE is set: each executed command is written to the trace.
     tracing: bool,
+    /// The framebuffer and renderbuffer names glGen* handed out.
+    generated: super::framebuffers::Generated,
 }
 
 /// The largest buffer side (llvmpipe's MAX_TEXTURE_SIZE, which Mesa's OSMesa reports as
@@ -163,6 +165,7 @@ impl Context {
             depth_copy: Vec::new(),
             texture_max: 0,
             tracing: super::trace::enabled(),
+            generated: Default::default(),
         })
     }
 
@@ -190,10 +193,14 @@ impl Context {
             }
             let target = RenderTarget::new(&self.gpu, spec)?;
             target.bind(&self.gpu);
+            let framebuffer = target.framebuffer();
             self.target = Some(target);
             match &mut self.pipeline {
                 None => self.pipeline = Some(EmulatedPipeline::new(&self.gpu)?),
-                Some(p) => p.forget_sent_state(),
+                Some(p) => {
+                    p.forget_sent_state();
+                    p.set_window_framebuffer(Some(framebuffer));
+                }
             }
         }
         self.buffer = Some(buffer);
@@ -276,11 +283,33 @@ impl Context {
                 self.pixel_store(args);
                 return Ret::None;
             }
+            _ if super::framebuffers::handles(entry) && !inside => {
+                let Some(p) = self.pipeline.as_ref() else {
+                    return Ret::None;
+                };
+                return match super::framebuffers::answer(
+                    entry,
+                    args,
+                    p.state(),
+                    &mut self.generated,
+                ) {
+                    Ok(v) => Ret::Enum(v),
+                    Err(kind) => {
+                        self.record_error(kind);
+                        Ret::Enum(0)
+                    }
+                };
+            }
+            _ if super::framebuffers::handles(entry) => {
+                self.record_error(GlErrorKind::InvalidOperation);
+                return Ret::Enum(0);
+            }
             _ if super::queries::handles(entry) && !inside => {
                 let Some(p) = self.pipeline.as_ref() else {
                     return Ret::None;
                 };
                 let front = super::queries::ClientState {
+                    window: self.window_bits(),
                     client: &self.client,
                     pack_alignment: self.pack_alignment,
                     unpack_alignment: self.unpack_alignment,
@@ -464,7 +493,12 @@ impl Context {
         let (Some(target), Some(buffer)) = (&self.target, self.buffer) else {
             return;
         };
-        let rows = match target.read_color_rows(&self.gpu) {
+        let rows = target.read_color_rows(&self.gpu);
+        // The read bound the target: the pipeline binds the program's framebuffers again.
+        if let Some(p) = self.pipeline.as_mut() {
+            p.forget_sent_state();
+        }
+        let rows = match rows {
             Ok(r) => r,
             Err(e) => {
                 eprintln!("fixedfunc: reading the image back failed: {e}");
@@ -492,6 +526,22 @@ impl Context {
             for (s, d) in src.chunks_exact(4).zip(dst.chunks_exact_mut(bpp)) {
                 self.format.write(s, d);
             }
+        }
+    }
+
+    /// The window's bits: RGBA8 and the depth and stencil buffers made.
+    fn window_bits(&self) -> crate::ff::framebuffer::Bits {
+        crate::ff::framebuffer::Bits {
+            red: 8,
+            green: 8,
+            blue: 8,
+            alpha: 8,
+            depth: match self.depth {
+                DepthBits::D16 => 16,
+                DepthBits::D24 => 24,
+                DepthBits::D32F => 32,
+            },
+            stencil: if self.stencil { 8 } else { 0 },
         }
     }
 
@@ -527,11 +577,5 @@ impl Context {
 
 /// The GLenum glGetError returns for a kind.
 pub fn error_code(kind: GlErrorKind) -> u32 {
-    match kind {
-        GlErrorKind::InvalidEnum => 0x0500,
-        GlErrorKind::InvalidValue => 0x0501,
-        GlErrorKind::InvalidOperation => 0x0502,
-        GlErrorKind::StackOverflow => 0x0503,
-        GlErrorKind::StackUnderflow => 0x0504,
-    }
+    kind.code()
 }

@@ -20,6 +20,7 @@ mod buffer_tests;
 pub mod cargs;
 pub mod context;
 pub mod exports;
+pub mod framebuffers;
 pub mod osmesa;
 pub mod queries;
 pub mod strings;

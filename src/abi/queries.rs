@@ -41,6 +41,8 @@ impl Out {
 
 /// What the front end keeps that glGet reads besides the model.
 pub struct ClientState<'a> {
+    /// The window's bits (GL_RED_BITS … GL_STENCIL_BITS with framebuffer 0 bound).
+    pub window: crate::ff::framebuffer::Bits,
     pub client: &'a Client,
     pub pack_alignment: usize,
     pub unpack_alignment: usize,
@@ -96,7 +98,7 @@ pub fn answer(
     let (values, out_at) = match entry {
         Entry::GetBooleanv | Entry::GetIntegerv | Entry::GetFloatv | Entry::GetDoublev => {
             let pname = arg(args, 0);
-            let v = match client_get(pname, front) {
+            let v = match client_get(pname, front).or_else(|| bits(pname, state, front)) {
                 Some(v) => v,
                 None => state.get(pname)?,
             };
@@ -136,6 +138,21 @@ pub fn answer(
     };
     write(args.get(out_at), &values, Out::of(entry));
     Ok(0)
+}
+
+/// GL_RED_BITS … GL_STENCIL_BITS of the framebuffer bound for drawing.
+fn bits(pname: u32, state: &FixedState, front: &ClientState) -> Option<Queried> {
+    let b = state.draw_bits(front.window);
+    let v = match pname {
+        r::RED_BITS => b.red,
+        r::GREEN_BITS => b.green,
+        r::BLUE_BITS => b.blue,
+        r::ALPHA_BITS => b.alpha,
+        r::DEPTH_BITS => b.depth,
+        r::STENCIL_BITS => b.stencil,
+        _ => return None,
+    };
+    Some(vec![QueryValue::Int(i32::from(v))])
 }
 
 /// Writes the values in the getter's type (GL 1.5 §6.1.2 conversions, `QueryValue`).

@@ -366,6 +366,41 @@ macro_rules! gl_entry_table {
         IsBufferARB = glIsBufferARB(Script; buffer: GLuint) -> GLboolean;
         GetBufferParameteriv = glGetBufferParameteriv(Script; target: GLenum, pname: GLenum, params: *mut GLint);
         GetBufferParameterivARB = glGetBufferParameterivARB(Script; target: GLenum, pname: GLenum, params: *mut GLint);
+        // Framebuffer objects (ff::framebuffer): the core/ARB names and the EXT ones.
+        GenFramebuffers = glGenFramebuffers(Abi; n: GLsizei, framebuffers: *mut GLuint);
+        GenFramebuffersEXT = glGenFramebuffersEXT(Abi; n: GLsizei, framebuffers: *mut GLuint);
+        BindFramebuffer = glBindFramebuffer(Script; target: GLenum, framebuffer: GLuint);
+        BindFramebufferEXT = glBindFramebufferEXT(Script; target: GLenum, framebuffer: GLuint);
+        DeleteFramebuffers = glDeleteFramebuffers(Script; n: GLsizei, framebuffers: *const GLuint);
+        DeleteFramebuffersEXT = glDeleteFramebuffersEXT(Script; n: GLsizei, framebuffers: *const GLuint);
+        IsFramebuffer = glIsFramebuffer(Abi; framebuffer: GLuint) -> GLboolean;
+        IsFramebufferEXT = glIsFramebufferEXT(Abi; framebuffer: GLuint) -> GLboolean;
+        CheckFramebufferStatus = glCheckFramebufferStatus(Abi; target: GLenum) -> GLenum;
+        CheckFramebufferStatusEXT = glCheckFramebufferStatusEXT(Abi; target: GLenum) -> GLenum;
+        FramebufferTexture1D = glFramebufferTexture1D(Script; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint);
+        FramebufferTexture1DEXT = glFramebufferTexture1DEXT(Script; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint);
+        FramebufferTexture2D = glFramebufferTexture2D(Script; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint);
+        FramebufferTexture2DEXT = glFramebufferTexture2DEXT(Script; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint);
+        FramebufferRenderbuffer = glFramebufferRenderbuffer(Script; target: GLenum, attachment: GLenum, renderbuffertarget: GLenum, renderbuffer: GLuint);
+        FramebufferRenderbufferEXT = glFramebufferRenderbufferEXT(Script; target: GLenum, attachment: GLenum, renderbuffertarget: GLenum, renderbuffer: GLuint);
+        GetFramebufferAttachmentParameteriv = glGetFramebufferAttachmentParameteriv(Abi; target: GLenum, attachment: GLenum, pname: GLenum, params: *mut GLint);
+        GetFramebufferAttachmentParameterivEXT = glGetFramebufferAttachmentParameterivEXT(Abi; target: GLenum, attachment: GLenum, pname: GLenum, params: *mut GLint);
+        GenRenderbuffers = glGenRenderbuffers(Abi; n: GLsizei, renderbuffers: *mut GLuint);
+        GenRenderbuffersEXT = glGenRenderbuffersEXT(Abi; n: GLsizei, renderbuffers: *mut GLuint);
+        BindRenderbuffer = glBindRenderbuffer(Script; target: GLenum, renderbuffer: GLuint);
+        BindRenderbufferEXT = glBindRenderbufferEXT(Script; target: GLenum, renderbuffer: GLuint);
+        DeleteRenderbuffers = glDeleteRenderbuffers(Script; n: GLsizei, renderbuffers: *const GLuint);
+        DeleteRenderbuffersEXT = glDeleteRenderbuffersEXT(Script; n: GLsizei, renderbuffers: *const GLuint);
+        IsRenderbuffer = glIsRenderbuffer(Abi; renderbuffer: GLuint) -> GLboolean;
+        IsRenderbufferEXT = glIsRenderbufferEXT(Abi; renderbuffer: GLuint) -> GLboolean;
+        RenderbufferStorage = glRenderbufferStorage(Script; target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei);
+        RenderbufferStorageEXT = glRenderbufferStorageEXT(Script; target: GLenum, internalformat: GLenum, width: GLsizei, height: GLsizei);
+        GetRenderbufferParameteriv = glGetRenderbufferParameteriv(Abi; target: GLenum, pname: GLenum, params: *mut GLint);
+        GetRenderbufferParameterivEXT = glGetRenderbufferParameterivEXT(Abi; target: GLenum, pname: GLenum, params: *mut GLint);
+        GenerateMipmap = glGenerateMipmap(Script; target: GLenum);
+        GenerateMipmapEXT = glGenerateMipmapEXT(Script; target: GLenum);
+        DrawBuffer = glDrawBuffer(Script; mode: GLenum);
+        ReadBuffer = glReadBuffer(Script; mode: GLenum);
         // Not implemented by the layer (README, "Left out"): each records
         // GL_INVALID_OPERATION and warns once, naming itself. Selection, feedback and
         // evaluators are left out by design; the others are not implemented yet.
@@ -413,8 +448,6 @@ macro_rules! gl_entry_table {
         PixelZoom = glPixelZoom(Abi; xfactor: GLfloat, yfactor: GLfloat);
         LineStipple = glLineStipple(Abi; factor: GLint, pattern: GLushort);
         PolygonStipple = glPolygonStipple(Abi; mask: *const GLubyte);
-        DrawBuffer = glDrawBuffer(Abi; mode: GLenum);
-        ReadBuffer = glReadBuffer(Abi; mode: GLenum);
         CopyTexSubImage2D = glCopyTexSubImage2D(Abi; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
         TexSubImage1D = glTexSubImage1D(Abi; target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
         GetTexImage = glGetTexImage(Abi; target: GLenum, level: GLint, format: GLenum, r#type: GLenum, pixels: *mut c_void);
@@ -847,6 +880,19 @@ impl Command {
             Command::Raise { call, .. } => *call,
             Command::PushAttrib(_) => Entry::PushAttrib,
             Command::PopAttrib => Entry::PopAttrib,
+            Command::BindFramebuffer { .. } => Entry::BindFramebuffer,
+            Command::DeleteFramebuffers(_) => Entry::DeleteFramebuffers,
+            Command::BindRenderbuffer(_) => Entry::BindRenderbuffer,
+            Command::DeleteRenderbuffers(_) => Entry::DeleteRenderbuffers,
+            Command::RenderbufferStorage { .. } => Entry::RenderbufferStorage,
+            Command::FramebufferTexture { texture, .. } => match texture {
+                Some((super::texture::TextureTarget::Texture1D, _)) => Entry::FramebufferTexture1D,
+                _ => Entry::FramebufferTexture2D,
+            },
+            Command::FramebufferRenderbuffer { .. } => Entry::FramebufferRenderbuffer,
+            Command::DrawBuffer(_) => Entry::DrawBuffer,
+            Command::ReadBuffer(_) => Entry::ReadBuffer,
+            Command::GenerateMipmap(_) => Entry::GenerateMipmap,
         }
     }
 }

@@ -47,6 +47,9 @@ impl FixedState {
     }
 
     fn execute(&mut self, cmd: &Command) -> GlResult {
+        if self.apply_framebuffer(cmd)? {
+            return Ok(());
+        }
         let mv = self.modelview.top();
         let unit = self.active_unit();
         match cmd {
@@ -106,6 +109,7 @@ impl FixedState {
             Command::ActiveTexture(u) => self.active_texture = check_unit(*u)?,
             Command::BindTexture { target, name } => self.bind_texture(*target, *name)?,
             Command::DeleteTextures(names) => {
+                self.framebuffers.detach_textures(names);
                 for &name in names.iter().filter(|n| **n != 0) {
                     if self.textures.remove(&name).is_some() {
                         for u in &mut self.units {
@@ -121,7 +125,10 @@ impl FixedState {
             }
             Command::TexImage(t) => self.tex_image(t)?,
             Command::TexSubImage2D(t) => self.tex_sub_image(t)?,
-            Command::CopyTexImage2D(c) => self.copy_tex_image(c)?,
+            Command::CopyTexImage2D(c) => {
+                self.check_read_framebuffer(None)?;
+                self.copy_tex_image(c)?
+            }
             Command::TexParameter { target, param } => {
                 let name = self.units[unit].bound(*target);
                 let tex = self
@@ -261,16 +268,32 @@ impl FixedState {
                 fog.set(*p)?;
                 self.fog.value = fog;
             }
-            Command::Clear(_) => {}
+            Command::Clear(_) => self.check_draw_framebuffer()?,
             // Clamped to [0, 1]: ±∞ → 1, 0; NaN → 0 (glam's clamp is max then min, and
             // Rust's max drops a NaN). Mesa measured alike (`tests/fidelity_nonfinite.rs`).
             Command::ClearColor(c) => self.clear.color = c.clamp(Vec4::ZERO, Vec4::ONE),
             Command::ClearDepth(d) => self.clear.depth = unit_clamp(*d),
             Command::ClearStencil(s) => self.clear.stencil = *s,
-            Command::ReadPixels(r) => check_read_pixels(r)?,
-            Command::Draw(g) => self.draw(g)?,
+            Command::ReadPixels(r) => {
+                check_read_pixels(r)?;
+                self.check_read_framebuffer(Some(r.format))?
+            }
+            Command::Draw(g) => {
+                self.check_draw_framebuffer()?;
+                self.draw(g)?
+            }
             Command::PushAttrib(mask) => self.push_attrib(*mask)?,
             Command::PopAttrib => self.pop_attrib()?,
+            Command::BindFramebuffer { .. }
+            | Command::DeleteFramebuffers(_)
+            | Command::BindRenderbuffer(_)
+            | Command::DeleteRenderbuffers(_)
+            | Command::RenderbufferStorage { .. }
+            | Command::FramebufferTexture { .. }
+            | Command::FramebufferRenderbuffer { .. }
+            | Command::DrawBuffer(_)
+            | Command::ReadBuffer(_)
+            | Command::GenerateMipmap(_) => {}
         }
         Ok(())
     }

@@ -26,6 +26,7 @@ use super::fragment::{
     BlendEquation, BlendFactor, ClearMask, ColorMask, CompareFunc, Face, FrontFace, HintMode,
     HintTarget, LogicOp, PolygonMode, ScissorBox, ShadeModel, StencilOp, Viewport,
 };
+use super::framebuffer::{AttachmentPoint, ColorBuffer, FramebufferTarget, RenderbufferFormat};
 use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
 use super::matrix::{MatrixMode, ViewVolume};
@@ -348,4 +349,43 @@ pub enum Command {
     PushAttrib(AttribMask),
     /// STACK_UNDERFLOW on an empty stack.
     PopAttrib,
+
+    // Framebuffer objects (ff::framebuffer); never compiled into display lists.
+    /// glBindFramebuffer: a name never bound makes the object.
+    BindFramebuffer {
+        target: FramebufferTarget,
+        name: u32,
+    },
+    /// glDeleteFramebuffers: a bound one leaves its binding at 0.
+    DeleteFramebuffers(Vec<u32>),
+    /// glBindRenderbuffer(GL_RENDERBUFFER, name).
+    BindRenderbuffer(u32),
+    /// glDeleteRenderbuffers: each is detached from the bound framebuffers.
+    DeleteRenderbuffers(Vec<u32>),
+    /// glRenderbufferStorage of the bound renderbuffer: none bound is INVALID_OPERATION,
+    /// a size below 0 or above MAX_RENDERBUFFER_SIZE INVALID_VALUE.
+    RenderbufferStorage {
+        format: RenderbufferFormat,
+        width: i32,
+        height: i32,
+    },
+    /// glFramebufferTexture1D/2D; `texture` `None` (name 0) detaches.
+    FramebufferTexture {
+        target: FramebufferTarget,
+        attachment: AttachmentPoint,
+        texture: Option<(TextureTarget, u32)>,
+        level: i32,
+    },
+    /// glFramebufferRenderbuffer; 0 detaches.
+    FramebufferRenderbuffer {
+        target: FramebufferTarget,
+        attachment: AttachmentPoint,
+        renderbuffer: u32,
+    },
+    /// glDrawBuffer of the bound draw framebuffer.
+    DrawBuffer(ColorBuffer),
+    /// glReadBuffer of the bound read framebuffer.
+    ReadBuffer(ColorBuffer),
+    /// glGenerateMipmap of the active unit's texture: levels 1… from level 0.
+    GenerateMipmap(TextureTarget),
 }

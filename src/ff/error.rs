@@ -18,6 +18,23 @@ pub enum GlErrorKind {
     StackOverflow,
     /// GL_STACK_UNDERFLOW: PopMatrix on a stack holding one matrix.
     StackUnderflow,
+    /// GL_INVALID_FRAMEBUFFER_OPERATION: drawing, clearing, reading or copying with an
+    /// incomplete framebuffer bound (GL 3.0 §4.4.4).
+    InvalidFramebufferOperation,
+}
+
+impl GlErrorKind {
+    /// The GLenum glGetError returns.
+    pub fn code(self) -> u32 {
+        match self {
+            GlErrorKind::InvalidEnum => 0x0500,
+            GlErrorKind::InvalidValue => 0x0501,
+            GlErrorKind::InvalidOperation => 0x0502,
+            GlErrorKind::StackOverflow => 0x0503,
+            GlErrorKind::StackUnderflow => 0x0504,
+            GlErrorKind::InvalidFramebufferOperation => 0x0506,
+        }
+    }
 }
 
 /// A GL error with the rule that raised it (the evidence; `kind` is what glGetError returns).
@@ -51,6 +68,12 @@ impl GlError {
     pub const fn stack_overflow(rule: &'static str) -> Self {
         Self {
             kind: GlErrorKind::StackOverflow,
+            rule,
+        }
+    }
+    pub const fn invalid_framebuffer_operation(rule: &'static str) -> Self {
+        Self {
+            kind: GlErrorKind::InvalidFramebufferOperation,
             rule,
         }
     }

@@ -10,6 +10,7 @@
 //! the first entry is the canonical one). Indexed families (GL_LIGHTi, GL_TEXTUREi,
 //! GL_COMBINERi_NV, GL_CLIP_PLANEi) are not tables: `LIGHT0 + i`.
 
+use super::framebuffer::{AttachmentPoint, ColorBuffer, FramebufferTarget, RenderbufferFormat};
 use super::*;
 
 /// Every enumerant of the registry, as `pub const NAME: u32`.
@@ -545,6 +546,112 @@ gl_enums!(AttribGroup {
     TEXTURE_BIT => AttribGroup::Texture,
     SCISSOR_BIT => AttribGroup::Scissor,
     MULTISAMPLE_BIT => AttribGroup::Multisample,
+});
+
+// Framebuffer objects (ff::framebuffer). FRAMEBUFFER_EXT and the other EXT tokens have
+// the same values and are read as these.
+gl_enums!(FramebufferTarget {
+    FRAMEBUFFER => FramebufferTarget::Both,
+    DRAW_FRAMEBUFFER => FramebufferTarget::Draw,
+    READ_FRAMEBUFFER => FramebufferTarget::Read,
+});
+
+gl_enums!(AttachmentPoint {
+    COLOR_ATTACHMENT0 => AttachmentPoint::Color(0),
+    COLOR_ATTACHMENT1 => AttachmentPoint::Color(1),
+    COLOR_ATTACHMENT2 => AttachmentPoint::Color(2),
+    COLOR_ATTACHMENT3 => AttachmentPoint::Color(3),
+    COLOR_ATTACHMENT4 => AttachmentPoint::Color(4),
+    COLOR_ATTACHMENT5 => AttachmentPoint::Color(5),
+    COLOR_ATTACHMENT6 => AttachmentPoint::Color(6),
+    COLOR_ATTACHMENT7 => AttachmentPoint::Color(7),
+    COLOR_ATTACHMENT8 => AttachmentPoint::Color(8),
+    COLOR_ATTACHMENT9 => AttachmentPoint::Color(9),
+    COLOR_ATTACHMENT10 => AttachmentPoint::Color(10),
+    COLOR_ATTACHMENT11 => AttachmentPoint::Color(11),
+    COLOR_ATTACHMENT12 => AttachmentPoint::Color(12),
+    COLOR_ATTACHMENT13 => AttachmentPoint::Color(13),
+    COLOR_ATTACHMENT14 => AttachmentPoint::Color(14),
+    COLOR_ATTACHMENT15 => AttachmentPoint::Color(15),
+    DEPTH_ATTACHMENT => AttachmentPoint::Depth,
+    STENCIL_ATTACHMENT => AttachmentPoint::Stencil,
+    DEPTH_STENCIL_ATTACHMENT => AttachmentPoint::DepthStencil,
+});
+
+gl_enums!(ColorBuffer {
+    NONE => ColorBuffer::None,
+    FRONT => ColorBuffer::Front,
+    BACK => ColorBuffer::Back,
+    LEFT => ColorBuffer::Left,
+    RIGHT => ColorBuffer::Right,
+    FRONT_LEFT => ColorBuffer::FrontLeft,
+    FRONT_RIGHT => ColorBuffer::FrontRight,
+    BACK_LEFT => ColorBuffer::BackLeft,
+    BACK_RIGHT => ColorBuffer::BackRight,
+    FRONT_AND_BACK => ColorBuffer::FrontAndBack,
+    AUX0 => ColorBuffer::Aux(0),
+    AUX1 => ColorBuffer::Aux(1),
+    AUX2 => ColorBuffer::Aux(2),
+    AUX3 => ColorBuffer::Aux(3),
+    COLOR_ATTACHMENT0 => ColorBuffer::Attachment(0),
+    COLOR_ATTACHMENT1 => ColorBuffer::Attachment(1),
+    COLOR_ATTACHMENT2 => ColorBuffer::Attachment(2),
+    COLOR_ATTACHMENT3 => ColorBuffer::Attachment(3),
+    COLOR_ATTACHMENT4 => ColorBuffer::Attachment(4),
+    COLOR_ATTACHMENT5 => ColorBuffer::Attachment(5),
+    COLOR_ATTACHMENT6 => ColorBuffer::Attachment(6),
+    COLOR_ATTACHMENT7 => ColorBuffer::Attachment(7),
+    COLOR_ATTACHMENT8 => ColorBuffer::Attachment(8),
+    COLOR_ATTACHMENT9 => ColorBuffer::Attachment(9),
+    COLOR_ATTACHMENT10 => ColorBuffer::Attachment(10),
+    COLOR_ATTACHMENT11 => ColorBuffer::Attachment(11),
+    COLOR_ATTACHMENT12 => ColorBuffer::Attachment(12),
+    COLOR_ATTACHMENT13 => ColorBuffer::Attachment(13),
+    COLOR_ATTACHMENT14 => ColorBuffer::Attachment(14),
+    COLOR_ATTACHMENT15 => ColorBuffer::Attachment(15),
+});
+
+gl_enums!(RenderbufferFormat {
+    RGBA => RenderbufferFormat::Rgba,
+    RGBA8 => RenderbufferFormat::Rgba8,
+    RGB => RenderbufferFormat::Rgb,
+    RGB8 => RenderbufferFormat::Rgb8,
+    RGBA4 => RenderbufferFormat::Rgba4,
+    RGB5_A1 => RenderbufferFormat::Rgb5A1,
+    RGB565 => RenderbufferFormat::Rgb565,
+    RGBA2 => RenderbufferFormat::Rgba2,
+    RGB4 => RenderbufferFormat::Rgb4,
+    RGB5 => RenderbufferFormat::Rgb5,
+    RGB10 => RenderbufferFormat::Rgb10,
+    RGB10_A2 => RenderbufferFormat::Rgb10A2,
+    RGBA12 => RenderbufferFormat::Rgba12,
+    RGBA16 => RenderbufferFormat::Rgba16,
+    RGBA16F => RenderbufferFormat::Rgba16F,
+    RGBA32F => RenderbufferFormat::Rgba32F,
+    RED => RenderbufferFormat::Red,
+    R8 => RenderbufferFormat::R8,
+    RG8 => RenderbufferFormat::Rg8,
+    ALPHA => RenderbufferFormat::Alpha,
+    ALPHA8 => RenderbufferFormat::Alpha8,
+    LUMINANCE => RenderbufferFormat::Luminance,
+    LUMINANCE8 => RenderbufferFormat::Luminance8,
+    INTENSITY => RenderbufferFormat::Intensity,
+    INTENSITY8 => RenderbufferFormat::Intensity8,
+    LUMINANCE_ALPHA => RenderbufferFormat::LuminanceAlpha,
+    LUMINANCE8_ALPHA8 => RenderbufferFormat::Luminance8Alpha8,
+    DEPTH_COMPONENT => RenderbufferFormat::DepthComponent,
+    DEPTH_COMPONENT16 => RenderbufferFormat::DepthComponent16,
+    DEPTH_COMPONENT24 => RenderbufferFormat::DepthComponent24,
+    DEPTH_COMPONENT32 => RenderbufferFormat::DepthComponent32,
+    DEPTH_COMPONENT32F => RenderbufferFormat::DepthComponent32F,
+    STENCIL_INDEX => RenderbufferFormat::StencilIndex,
+    STENCIL_INDEX1 => RenderbufferFormat::StencilIndex1,
+    STENCIL_INDEX4 => RenderbufferFormat::StencilIndex4,
+    STENCIL_INDEX8 => RenderbufferFormat::StencilIndex8,
+    STENCIL_INDEX16 => RenderbufferFormat::StencilIndex16,
+    DEPTH_STENCIL => RenderbufferFormat::DepthStencil,
+    DEPTH24_STENCIL8 => RenderbufferFormat::Depth24Stencil8,
+    DEPTH32F_STENCIL8 => RenderbufferFormat::Depth32FStencil8,
 });
 
 #[cfg(test)]

@@ -70,7 +70,7 @@ pub fn compiled(entry: Entry) -> bool {
             | Entry::EnableClientState
             | Entry::DisableClientState
             | Entry::InterleavedArrays
-    )
+    ) && !super::framebuffer::never_compiled(entry)
 }
 
 impl Lists {

@@ -18,11 +18,13 @@
 
 pub mod api;
 pub mod apply;
+mod apply_framebuffer;
 pub mod args;
 pub mod attrib;
 pub mod buffers;
 pub mod calls;
 pub mod calls_attrib;
+pub mod calls_framebuffer;
 pub mod calls_raster;
 pub mod client;
 pub mod combiner_model;
@@ -31,6 +33,7 @@ pub mod command;
 pub mod error;
 pub mod fog;
 pub mod fragment;
+pub mod framebuffer;
 pub mod front;
 pub mod geometry;
 pub mod glenum;

@@ -50,6 +50,7 @@ use super::combiners::MAX_GENERAL_COMBINERS;
 use super::command::Capability;
 use super::error::GlErrorKind;
 use super::fragment::STENCIL_BITS;
+use super::framebuffer;
 use super::glenum::{gl, registry as r, GlEnum};
 use super::light::MAX_LIGHTS;
 use super::matrix::MatrixStack;
@@ -308,6 +309,15 @@ pnames! {
     FRONT_FACE => |s| enm(s.front_face),
     LINE_WIDTH => |s| floats(&[s.line_width]),
     POINT_SIZE => |s| floats(&[s.point_size]),
+
+    // Framebuffer objects (GL 3.0 Table 6.23, 6.34) and the colour buffers (Table 6.21).
+    DRAW_FRAMEBUFFER_BINDING => |s| int(s.framebuffers.draw as i32),
+    READ_FRAMEBUFFER_BINDING => |s| int(s.framebuffers.read as i32),
+    RENDERBUFFER_BINDING => |s| int(s.framebuffers.renderbuffer as i32),
+    MAX_COLOR_ATTACHMENTS => |_| int(i32::from(framebuffer::MAX_COLOR_ATTACHMENTS)),
+    MAX_RENDERBUFFER_SIZE => |_| int(framebuffer::MAX_RENDERBUFFER_SIZE),
+    DRAW_BUFFER => |s| enm(s.framebuffers.color_buffer(framebuffer::FramebufferTarget::Draw)),
+    READ_BUFFER => |s| enm(s.framebuffers.color_buffer(framebuffer::FramebufferTarget::Read)),
 
     // Attribute stack (Table 6.39).
     ATTRIB_STACK_DEPTH => |s| count(s.attrib_depth()),

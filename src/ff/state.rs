@@ -16,6 +16,7 @@ use super::fragment::{
     AlphaTest, Blend, ClearValues, ColorMask, DepthRange, DepthTest, Face, FrontFace, Hints,
     LogicOp, OffsetEnables, PolygonMode, ScissorBox, ShadeModel, StencilTest, Toggle, Viewport,
 };
+use super::framebuffer::Framebuffers;
 use super::light::{ColorMaterial, Light, LightModel, Materials, MAX_LIGHTS};
 use super::matrix::{
     MatrixMode, MatrixStack, MODELVIEW_STACK_DEPTH, PROJECTION_STACK_DEPTH, TEXTURE_STACK_DEPTH,
@@ -157,6 +158,9 @@ pub struct FixedState {
     pub units: [TextureUnit; MAX_TEXTURE_UNITS],
     /// Texture objects by name (≠ 0), created by their first glBindTexture.
     pub textures: BTreeMap<u32, TextureObject>,
+    /// Framebuffer objects, renderbuffers, their bindings and the colour buffers drawn
+    /// and read. GL default: the window bound, FRONT.
+    pub framebuffers: Framebuffers,
     /// The default (name 0) textures of TEXTURE_1D and TEXTURE_2D.
     pub default_1d: TextureObject,
     pub default_2d: TextureObject,
@@ -248,6 +252,7 @@ impl FixedState {
             active_texture: 0,
             units: [TextureUnit::new(); MAX_TEXTURE_UNITS],
             textures: BTreeMap::new(),
+            framebuffers: Framebuffers::default(),
             default_1d: TextureObject::new(TextureTarget::Texture1D),
             default_2d: TextureObject::new(TextureTarget::Texture2D),
             register_combiners: Toggle::off(RegisterCombiners::DEFAULT),
@@ -327,6 +332,18 @@ impl FixedState {
             (0, TextureTarget::Texture2D) => Some(&self.default_2d),
             _ => self.textures.get(&name).filter(|t| t.target == target),
         }
+    }
+
+    /// The texture bound to `target` on the active unit.
+    pub(crate) fn bound_texture_mut(
+        &mut self,
+        target: TextureTarget,
+    ) -> super::GlResult<&mut TextureObject> {
+        let name = self.units[self.active_unit()].bound(target);
+        self.texture_mut(target, name)
+            .ok_or(super::GlError::invalid_operation(
+                "bound name belongs to another target",
+            ))
     }
 
     pub(crate) fn texture_mut(

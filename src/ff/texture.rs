@@ -381,9 +381,14 @@ impl TextureObject {
     /// texels are the GL's to compute (a box filter is typical), so the model records the
     /// levels with unknown texels.
     pub(crate) fn base_level_changed(&mut self) {
-        if !self.params.generate_mipmap {
-            return;
+        if self.params.generate_mipmap {
+            self.generate_levels();
         }
+    }
+
+    /// Levels 1..=p derived from level 0 (glGenerateMipmap, GENERATE_MIPMAP): halved
+    /// sizes down to 1×1, the base internal format, texels unknown to the model.
+    pub(crate) fn generate_levels(&mut self) {
         let Some(base) = self.level(0) else {
             return;
         };

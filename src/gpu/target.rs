@@ -295,6 +295,8 @@ impl RenderTarget {
         let gl = ctx.gl();
         unsafe {
             gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.framebuffer));
+            // The target reads its one colour buffer, whatever a program selected before.
+            gl.read_buffer(glow::COLOR_ATTACHMENT0);
             gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
             gl.read_pixels(
                 0,

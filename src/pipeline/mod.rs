@@ -10,6 +10,7 @@
 pub mod core;
 pub mod emulate;
 pub mod error;
+pub mod framebuffers;
 pub mod native;
 
 use std::borrow::Cow;

@@ -113,16 +113,7 @@ fn call(c: &Command) -> String {
         Command::LoadMatrix(m) => format!("{}({})", Entry::LoadMatrixf, arr(&m.to_cols_array())),
         Command::MultMatrix(m) => format!("{}({})", Entry::MultMatrixf, arr(&m.to_cols_array())),
         Command::PushMatrix => format!("{}()", Entry::PushMatrix),
-        Command::DeleteTextures(names) => format!(
-            "{}({}, (GLuint[]){{{}}})",
-            Entry::DeleteTextures,
-            names.len(),
-            names
-                .iter()
-                .map(u32::to_string)
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
+        Command::DeleteTextures(names) => name_list(Entry::DeleteTextures, names),
         Command::PopMatrix => format!("{}()", Entry::PopMatrix),
         Command::Translate(v) => format!("{}({})", Entry::Translatef, fs(&v.to_array())),
         Command::Rotate { angle_deg, axis } => {
@@ -405,12 +396,67 @@ fn call(c: &Command) -> String {
         ),
         Command::PushAttrib(m) => format!("{}({})", Entry::PushAttrib, attrib_mask(*m)),
         Command::PopAttrib => format!("{}()", Entry::PopAttrib),
+        Command::BindFramebuffer { target, name } => {
+            format!("{}({}, {name})", Entry::BindFramebuffer, n(*target))
+        }
+        Command::DeleteFramebuffers(names) => name_list(Entry::DeleteFramebuffers, names),
+        Command::BindRenderbuffer(name) => {
+            format!("{}(GL_RENDERBUFFER, {name})", Entry::BindRenderbuffer)
+        }
+        Command::DeleteRenderbuffers(names) => name_list(Entry::DeleteRenderbuffers, names),
+        Command::RenderbufferStorage {
+            format,
+            width,
+            height,
+        } => format!(
+            "{}(GL_RENDERBUFFER, {}, {width}, {height})",
+            Entry::RenderbufferStorage,
+            n(*format)
+        ),
+        Command::FramebufferTexture {
+            target,
+            attachment,
+            texture,
+            level,
+        } => {
+            let (textarget, name) = texture.unwrap_or((crate::ff::TextureTarget::Texture2D, 0));
+            format!(
+                "{}({}, {}, {}, {name}, {level})",
+                c.entry(),
+                n(*target),
+                n(*attachment),
+                n(textarget)
+            )
+        }
+        Command::FramebufferRenderbuffer {
+            target,
+            attachment,
+            renderbuffer,
+        } => format!(
+            "{}({}, {}, GL_RENDERBUFFER, {renderbuffer})",
+            Entry::FramebufferRenderbuffer,
+            n(*target),
+            n(*attachment)
+        ),
+        Command::DrawBuffer(b) => format!("{}({})", Entry::DrawBuffer, n(*b)),
+        Command::ReadBuffer(b) => format!("{}({})", Entry::ReadBuffer, n(*b)),
+        Command::GenerateMipmap(t) => format!("{}({})", Entry::GenerateMipmap, n(*t)),
         // Printed by `command`.
         Command::Draw(_)
         | Command::TexImage(_)
         | Command::TexSubImage2D(_)
         | Command::Raise { .. } => String::new(),
     }
+}
+
+/// `glDelete…(n, (GLuint[]){a, b})`.
+fn name_list(entry: Entry, names: &[u32]) -> String {
+    let list: Vec<String> = names.iter().map(u32::to_string).collect();
+    format!(
+        "{entry}({}, (GLuint[]){{{}}})",
+        names.len(),
+        list.join(", ")
+    )
 }
 
 fn fog(p: &FogParam) -> String {

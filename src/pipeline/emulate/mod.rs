@@ -33,6 +33,7 @@ use self::program::Program;
 use self::sync::{LogicOpCall, RasterSync};
 use self::textures::Textures;
 use super::core::{Core, Issue, PathPipeline};
+use super::framebuffers::FramebufferMirror;
 use super::{Counters, PipelineError, Readback};
 use crate::ff::{Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels};
 use crate::gpu::{GpuContext, Profile};
@@ -46,6 +47,7 @@ pub struct Emulate {
     textures: Textures,
     raster: RasterSync,
     precision: Precision,
+    framebuffers: FramebufferMirror,
 }
 
 /// Commands executed by generated programs on a core 3.3 context.
@@ -69,6 +71,7 @@ impl EmulatedPipeline {
             textures: Textures::default(),
             raster: RasterSync::new(LogicOpCall::load(ctx)),
             precision: Precision::Float,
+            framebuffers: FramebufferMirror::new(true),
         };
         Ok(PathPipeline::from_parts(core, path))
     }
@@ -83,6 +86,13 @@ impl EmulatedPipeline {
     /// that changed GL state behind the pipeline (bound another target).
     pub fn forget_sent_state(&mut self) {
         self.path.raster.invalidate();
+        self.path.framebuffers.invalidate();
+    }
+
+    /// The framebuffer that stands for the window (framebuffer 0) from now on: for a
+    /// caller that replaced its render target.
+    pub fn set_window_framebuffer(&mut self, window: Option<glow::Framebuffer>) {
+        self.path.framebuffers.set_window(window);
     }
 
     /// How many geometries are uploaded (each kept while something else holds it).
@@ -168,7 +178,24 @@ impl Issue for Emulate {
     ) -> Result<(), PipelineError> {
         let gl = ctx.gl();
         let state = &core.state;
+        let textures = &mut self.textures;
+        if self
+            .framebuffers
+            .issue(gl, state, cmd, &mut |t, n| textures.gl_name(gl, t, n))?
+        {
+            return Ok(());
+        }
+        if matches!(
+            cmd,
+            Command::Draw(_)
+                | Command::Clear(_)
+                | Command::ReadPixels(_)
+                | Command::CopyTexImage2D(_)
+        ) {
+            self.framebuffers.sync(gl, state)?;
+        }
         match cmd {
+            Command::GenerateMipmap(t) => self.textures.generate_mipmap(gl, state, *t)?,
             Command::Draw(g) => {
                 self.draw(gl, state, g)?;
                 core.counters.draws += 1;
@@ -210,6 +237,7 @@ impl Issue for Emulate {
         }
         self.geometry.release(gl);
         self.textures.release(gl);
+        self.framebuffers.release(gl);
         self.raster.invalidate();
     }
 }

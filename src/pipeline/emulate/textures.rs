@@ -44,6 +44,27 @@ impl Textures {
         Ok(t)
     }
 
+    /// The GL name of the object for (target, model name), made if it is not yet.
+    /// A name glGenTextures gave is an object only once bound: it is bound here on the
+    /// scratch unit, so that a framebuffer can attach it.
+    pub fn gl_name(&mut self, gl: &glow::Context, target: TextureTarget, name: u32) -> Option<u32> {
+        self.edit(gl, (target, name)).ok()?;
+        self.objects.get(&(target, name)).map(|t| t.0.get())
+    }
+
+    /// glGenerateMipmap of the active unit's texture bound to `target`.
+    pub fn generate_mipmap(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        target: TextureTarget,
+    ) -> Result<(), PipelineError> {
+        let name = state.units[state.active_unit()].bound(target);
+        let gl_t = self.edit(gl, (target, name))?;
+        unsafe { gl.generate_mipmap(gl_t) };
+        Ok(())
+    }
+
     /// Deletes the GL objects of these model names (the model has reverted the units bound
     /// to them to texture 0; draws bind from the model).
     pub fn delete(&mut self, gl: &glow::Context, names: &[u32]) {

@@ -210,6 +210,17 @@ impl Native {
                 draw::restore_current(g, &core.state, geometry);
                 core.counters.draws += 1;
             }
+            // Issued by the framebuffer mirror (`pipeline::framebuffers`).
+            Command::BindFramebuffer { .. }
+            | Command::DeleteFramebuffers(_)
+            | Command::BindRenderbuffer(_)
+            | Command::DeleteRenderbuffers(_)
+            | Command::RenderbufferStorage { .. }
+            | Command::FramebufferTexture { .. }
+            | Command::FramebufferRenderbuffer { .. }
+            | Command::DrawBuffer(_)
+            | Command::ReadBuffer(_) => {}
+            Command::GenerateMipmap(t) => unsafe { g.GenerateMipmap(conv::value(*t)) },
             Command::PushAttrib(mask) => {
                 unsafe { g.PushAttrib(mask.0) };
                 self.attrib_masks.push(*mask);

@@ -29,6 +29,7 @@ use crate::gpu::{GpuContext, Profile};
 use crate::vocab::PipelineKind;
 
 use super::core::{Core, Issue, PathPipeline};
+use super::framebuffers::FramebufferMirror;
 use super::PipelineError;
 
 /// The legacy entry points of one compatibility context.
@@ -58,6 +59,7 @@ impl NativeGl {
 pub struct Native {
     gl: NativeGl,
     textures: textures::Textures,
+    framebuffers: FramebufferMirror,
     /// The masks of the glPushAttrib calls issued and not yet popped.
     attrib_masks: Vec<crate::ff::AttribMask>,
 }
@@ -76,6 +78,7 @@ impl NativePipeline {
         let path = Native {
             gl,
             textures: textures::Textures::default(),
+            framebuffers: FramebufferMirror::new(false),
             attrib_masks: Vec::new(),
         };
         // The model's viewport and scissor box start as GL's (the bound target), as on the
@@ -118,12 +121,28 @@ impl Issue for Native {
         core: &mut Core,
         cmd: &Command,
     ) -> Result<(), PipelineError> {
-        self.issue_calls(core, cmd)?;
+        let textures = &self.textures;
+        let handled = self
+            .framebuffers
+            .issue(ctx.gl(), &core.state, cmd, &mut |_, n| textures.id(n))?;
+        if !handled {
+            if matches!(
+                cmd,
+                Command::Draw(_)
+                    | Command::Clear(_)
+                    | Command::ReadPixels(_)
+                    | Command::CopyTexImage2D(_)
+            ) {
+                self.framebuffers.sync(ctx.gl(), &core.state)?;
+            }
+            self.issue_calls(core, cmd)?;
+        }
         ctx.check_error(execute::gl_call(cmd))?;
         Ok(())
     }
 
-    fn release(&mut self, _ctx: &GpuContext) {
+    fn release(&mut self, ctx: &GpuContext) {
+        self.framebuffers.release(ctx.gl());
         self.textures.delete_all(self.gl.raw());
     }
 }

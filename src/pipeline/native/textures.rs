@@ -39,6 +39,11 @@ impl Textures {
         unsafe { g.BindTexture(conv::value(target), object) };
     }
 
+    /// The GL object of a model name, if one was made.
+    pub fn id(&self, name: u32) -> Option<GLuint> {
+        self.objects.get(&name).copied()
+    }
+
     /// How many GL objects exist.
     pub fn len(&self) -> usize {
         self.objects.len()

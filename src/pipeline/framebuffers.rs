@@ -1,0 +1,297 @@
+//! Framebuffer objects on either path: the model's framebuffer and renderbuffer names
+//! (`ff::framebuffer`) mapped to GL objects made on this context, and the bindings and
+//! colour buffers GL has brought up to the model's before anything draws, clears, reads
+//! or copies.
+//!
+//! The model's framebuffer 0 is the window: whatever framebuffer was bound when the
+//! first framebuffer command arrived (the caller's render target; the C library names a
+//! new one with [`FramebufferMirror::set_window`] when its buffer changes size). Until a
+//! framebuffer command arrives the mirror touches nothing, so callers that bind their own
+//! targets between executions see no change. The window's colour buffers FRONT, BACK,
+//! LEFT and FRONT_AND_BACK all draw into the target's one colour attachment (Mesa's
+//! OSMesa buffer does the same).
+//!
+//! Renderbuffer formats a core context lacks are stored as their nearest core format on
+//! the emulated path: luminance, intensity and alpha as R8, luminance-alpha as RG8, the
+//! unsized depth, stencil and depth-stencil formats as 24-bit depth and 8-bit stencil
+//! (llvmpipe allocates the same sizes for them).
+
+use std::collections::HashMap;
+use std::num::NonZeroU32;
+
+use glow::HasContext;
+
+use super::PipelineError;
+use crate::ff::framebuffer::{
+    Attached, AttachmentPoint, ColorBuffer, FramebufferTarget, RenderbufferFormat,
+};
+use crate::ff::glenum::gl;
+use crate::ff::{Command, FixedState, TextureTarget};
+
+/// The GL objects of the model's framebuffers and renderbuffers.
+#[derive(Default)]
+pub struct FramebufferMirror {
+    /// Set by the first framebuffer command: the GL framebuffer standing for name 0.
+    window: Option<Option<glow::Framebuffer>>,
+    objects: HashMap<u32, glow::Framebuffer>,
+    renderbuffers: HashMap<u32, glow::Renderbuffer>,
+    /// (draw framebuffer, read framebuffer, draw buffer, read buffer) as GL has them.
+    sent: Option<(u32, u32, u32, u32)>,
+    /// Whether renderbuffer formats must be core ones.
+    core_formats: bool,
+}
+
+/// A GL texture object of the path, by the model's target and name.
+pub type TextureLookup<'a> = &'a mut dyn FnMut(TextureTarget, u32) -> Option<u32>;
+
+impl FramebufferMirror {
+    /// A mirror for a core context (`core_formats`) or a compatibility one.
+    pub fn new(core_formats: bool) -> Self {
+        FramebufferMirror {
+            core_formats,
+            ..Default::default()
+        }
+    }
+
+    /// The framebuffer that stands for the window from now on.
+    pub fn set_window(&mut self, window: Option<glow::Framebuffer>) {
+        if self.window.is_some() {
+            self.window = Some(window);
+        }
+        self.sent = None;
+    }
+
+    /// Forgets what GL has bound (a caller bound something else behind the pipeline).
+    pub fn invalidate(&mut self) {
+        self.sent = None;
+    }
+
+    /// The GL work of a framebuffer command the model accepted; `false` for other
+    /// commands.
+    pub fn issue(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        cmd: &Command,
+        texture: TextureLookup,
+    ) -> Result<bool, PipelineError> {
+        match cmd {
+            Command::BindFramebuffer { .. } | Command::DrawBuffer(_) | Command::ReadBuffer(_) => {
+                self.activate(gl);
+            }
+            Command::DeleteFramebuffers(names) => {
+                for name in names {
+                    if let Some(fb) = self.objects.remove(name) {
+                        unsafe { gl.delete_framebuffer(fb) };
+                    }
+                }
+            }
+            Command::BindRenderbuffer(name) => {
+                self.activate(gl);
+                if *name != 0 {
+                    self.renderbuffer(gl, *name)?;
+                }
+            }
+            Command::DeleteRenderbuffers(names) => {
+                for name in names {
+                    if let Some(rb) = self.renderbuffers.remove(name) {
+                        unsafe { gl.delete_renderbuffer(rb) };
+                    }
+                }
+            }
+            Command::RenderbufferStorage { format, .. } => {
+                let name = state.framebuffers.renderbuffer;
+                let rb = self.renderbuffer(gl, name)?;
+                let stored = state.framebuffers.renderbuffers.get(&name);
+                let (w, h) = stored.map_or((0, 0), |r| (r.width, r.height));
+                unsafe {
+                    gl.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
+                    gl.renderbuffer_storage(glow::RENDERBUFFER, self.storage(*format), w, h);
+                }
+            }
+            Command::FramebufferTexture {
+                target, attachment, ..
+            }
+            | Command::FramebufferRenderbuffer {
+                target, attachment, ..
+            } => self.reattach(gl, state, *target, *attachment, texture)?,
+            _ => return Ok(false),
+        }
+        self.sent = None;
+        Ok(true)
+    }
+
+    /// Brings GL's bindings and colour buffers up to the model's (nothing until a
+    /// framebuffer command has arrived).
+    pub fn sync(&mut self, gl: &glow::Context, state: &FixedState) -> Result<(), PipelineError> {
+        let Some(window) = self.window else {
+            return Ok(());
+        };
+        let f = &state.framebuffers;
+        let buffer = |name: u32, b: ColorBuffer| match (name, b) {
+            (_, ColorBuffer::None) => glow::NONE,
+            (0, _) => glow::COLOR_ATTACHMENT0,
+            (_, ColorBuffer::Attachment(i)) => glow::COLOR_ATTACHMENT0 + u32::from(i),
+            // The model allows nothing else on an FBO.
+            _ => glow::NONE,
+        };
+        let want = (
+            f.draw,
+            f.read,
+            buffer(f.draw, f.color_buffer(FramebufferTarget::Draw)),
+            buffer(f.read, f.color_buffer(FramebufferTarget::Read)),
+        );
+        if self.sent == Some(want) {
+            return Ok(());
+        }
+        let draw = self.framebuffer(gl, want.0, window)?;
+        let read = self.framebuffer(gl, want.1, window)?;
+        unsafe {
+            gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, draw);
+            gl.draw_buffer(want.2);
+            gl.bind_framebuffer(glow::READ_FRAMEBUFFER, read);
+            gl.read_buffer(want.3);
+        }
+        self.sent = Some(want);
+        Ok(())
+    }
+
+    /// Deletes every GL object made.
+    pub fn release(&mut self, gl: &glow::Context) {
+        for (_, fb) in self.objects.drain() {
+            unsafe { gl.delete_framebuffer(fb) };
+        }
+        for (_, rb) in self.renderbuffers.drain() {
+            unsafe { gl.delete_renderbuffer(rb) };
+        }
+        self.sent = None;
+    }
+
+    fn activate(&mut self, gl: &glow::Context) {
+        if self.window.is_none() {
+            let bound = unsafe { gl.get_parameter_framebuffer(glow::DRAW_FRAMEBUFFER_BINDING) };
+            self.window = Some(bound);
+        }
+    }
+
+    fn framebuffer(
+        &mut self,
+        gl: &glow::Context,
+        name: u32,
+        window: Option<glow::Framebuffer>,
+    ) -> Result<Option<glow::Framebuffer>, PipelineError> {
+        if name == 0 {
+            return Ok(window);
+        }
+        if let Some(fb) = self.objects.get(&name) {
+            return Ok(Some(*fb));
+        }
+        let fb = unsafe { gl.create_framebuffer() }.map_err(PipelineError::Object)?;
+        self.objects.insert(name, fb);
+        Ok(Some(fb))
+    }
+
+    fn renderbuffer(
+        &mut self,
+        gl: &glow::Context,
+        name: u32,
+    ) -> Result<glow::Renderbuffer, PipelineError> {
+        if let Some(rb) = self.renderbuffers.get(&name) {
+            return Ok(*rb);
+        }
+        let rb = unsafe { gl.create_renderbuffer() }.map_err(PipelineError::Object)?;
+        self.renderbuffers.insert(name, rb);
+        Ok(rb)
+    }
+
+    /// The internal format GL stores a renderbuffer in (module note).
+    fn storage(&self, format: RenderbufferFormat) -> u32 {
+        use RenderbufferFormat as F;
+        if !self.core_formats {
+            return gl(format);
+        }
+        match format {
+            F::Rgba => glow::RGBA8,
+            F::Rgb => glow::RGB8,
+            F::Red => glow::R8,
+            F::Alpha | F::Alpha8 | F::Luminance | F::Luminance8 | F::Intensity | F::Intensity8 => {
+                glow::R8
+            }
+            F::LuminanceAlpha | F::Luminance8Alpha8 => glow::RG8,
+            F::DepthComponent => glow::DEPTH_COMPONENT24,
+            F::StencilIndex
+            | F::StencilIndex1
+            | F::StencilIndex4
+            | F::StencilIndex8
+            | F::StencilIndex16 => glow::STENCIL_INDEX8,
+            F::DepthStencil => glow::DEPTH24_STENCIL8,
+            other => gl(other),
+        }
+    }
+
+    /// Attaches to the GL object what the model has at `point` of the bound framebuffer.
+    fn reattach(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        target: FramebufferTarget,
+        point: AttachmentPoint,
+        texture: TextureLookup,
+    ) -> Result<(), PipelineError> {
+        self.activate(gl);
+        let name = state.framebuffers.bound(target);
+        let Some(model) = state.framebuffers.objects.get(&name).filter(|_| name != 0) else {
+            return Ok(());
+        };
+        let fb = self.framebuffer(gl, name, None)?;
+        let points: &[(AttachmentPoint, u32)] = match point {
+            AttachmentPoint::Color(i) => &[(AttachmentPoint::Color(i), 0)],
+            AttachmentPoint::Depth => &[(AttachmentPoint::Depth, glow::DEPTH_ATTACHMENT)],
+            AttachmentPoint::Stencil => &[(AttachmentPoint::Stencil, glow::STENCIL_ATTACHMENT)],
+            AttachmentPoint::DepthStencil => &[
+                (AttachmentPoint::Depth, glow::DEPTH_ATTACHMENT),
+                (AttachmentPoint::Stencil, glow::STENCIL_ATTACHMENT),
+            ],
+        };
+        unsafe { gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, fb) };
+        for (p, gl_point) in points {
+            let gl_point = match p {
+                AttachmentPoint::Color(i) => glow::COLOR_ATTACHMENT0 + u32::from(*i),
+                _ => *gl_point,
+            };
+            match model.attachment(*p) {
+                None => unsafe {
+                    gl.framebuffer_renderbuffer(
+                        glow::DRAW_FRAMEBUFFER,
+                        gl_point,
+                        glow::RENDERBUFFER,
+                        None,
+                    )
+                },
+                Some(Attached::Renderbuffer(r)) => {
+                    let rb = self.renderbuffer(gl, r)?;
+                    unsafe {
+                        gl.framebuffer_renderbuffer(
+                            glow::DRAW_FRAMEBUFFER,
+                            gl_point,
+                            glow::RENDERBUFFER,
+                            Some(rb),
+                        )
+                    }
+                }
+                Some(Attached::Texture {
+                    target: tt,
+                    name,
+                    level,
+                }) => {
+                    let t = texture(tt, name)
+                        .and_then(NonZeroU32::new)
+                        .map(glow::NativeTexture);
+                    unsafe { gl.framebuffer_texture(glow::DRAW_FRAMEBUFFER, gl_point, t, level) }
+                }
+            }
+        }
+        self.sent = None;
+        Ok(())
+    }
+}
