@@ -276,63 +276,68 @@ fn a_trace_replays_to_the_same_image() {
         ("arrays", vec![], "192x128"),
         ("lists", vec![], "160x160"),
     ] {
-        let exe = compile(name, Linking::Direct);
-        let dir = work_dir(name);
-        let (image, trace, replayed) = (
-            dir.join("traced.ppm"),
-            dir.join("calls.c"),
-            dir.join("replayed.png"),
-        );
-        let mut cmd = Command::new(&exe);
-        cmd.arg(&image)
-            .args(&args)
-            .env("LD_LIBRARY_PATH", fixedfunc_dir())
-            .env("FIXEDFUNC_TRACE", &trace);
-        let out = cmd.output().expect("the program runs");
-        assert!(
-            out.status.success(),
-            "{name}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let text = std::fs::read_to_string(&trace).expect("the trace was written");
-        assert!(
-            text.contains(&format!("--size {size}")),
-            "{name}: {text:.300}"
-        );
-        let replay = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
-            .arg("replay")
-            .arg(&trace)
-            .args(["--size", size, "--out"])
-            .arg(&replayed)
-            .output()
-            .expect("fixedfunc runs");
-        assert!(
-            replay.status.success(),
-            "{name}: replay failed: {}",
-            String::from_utf8_lossy(&replay.stderr)
-        );
-        let traced = read_ppm(&image);
-        // The PPM carries no alpha: compare colours only.
-        let mut back = image::open(&replayed).expect("a PNG").to_rgba8();
-        back.pixels_mut().for_each(|p| p.0[3] = 255);
-        assert_images_match(
-            &format!("trace-{name}"),
-            &back,
-            &traced,
-            within_3_on_99_percent(&traced),
-        );
-        let shaders = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
-            .arg("shaders")
-            .arg(&trace)
-            .output()
-            .expect("fixedfunc runs");
-        let listing = String::from_utf8_lossy(&shaders.stdout);
-        assert!(
-            shaders.status.success() && listing.contains("#version 330"),
-            "{name}: shaders failed: {}",
-            String::from_utf8_lossy(&shaders.stderr)
-        );
+        assert_trace_replays(name, &compile(name, Linking::Direct), &args, size);
     }
+}
+
+/// The program run on the layer with FIXEDFUNC_TRACE writes a script that `replay`
+/// renders to the image the program rendered (3/255 on 99%), and `shaders` reads.
+fn assert_trace_replays(name: &str, exe: &Path, args: &[&str], size: &str) {
+    let dir = work_dir(name);
+    let (image, trace, replayed) = (
+        dir.join("traced.ppm"),
+        dir.join("calls.c"),
+        dir.join("replayed.png"),
+    );
+    let mut cmd = Command::new(exe);
+    cmd.arg(&image)
+        .args(args)
+        .env("LD_LIBRARY_PATH", fixedfunc_dir())
+        .env("FIXEDFUNC_TRACE", &trace);
+    let out = cmd.output().expect("the program runs");
+    assert!(
+        out.status.success(),
+        "{name}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&trace).expect("the trace was written");
+    assert!(
+        text.contains(&format!("--size {size}")),
+        "{name}: {text:.300}"
+    );
+    let replay = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
+        .arg("replay")
+        .arg(&trace)
+        .args(["--size", size, "--out"])
+        .arg(&replayed)
+        .output()
+        .expect("fixedfunc runs");
+    assert!(
+        replay.status.success(),
+        "{name}: replay failed: {}",
+        String::from_utf8_lossy(&replay.stderr)
+    );
+    let traced = read_ppm(&image);
+    // The PPM carries no alpha: compare colours only.
+    let mut back = image::open(&replayed).expect("a PNG").to_rgba8();
+    back.pixels_mut().for_each(|p| p.0[3] = 255);
+    assert_images_match(
+        &format!("trace-{name}"),
+        &back,
+        &traced,
+        within_3_on_99_percent(&traced),
+    );
+    let shaders = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
+        .arg("shaders")
+        .arg(&trace)
+        .output()
+        .expect("fixedfunc runs");
+    let listing = String::from_utf8_lossy(&shaders.stdout);
+    assert!(
+        shaders.status.success() && listing.contains("#version 330"),
+        "{name}: shaders failed: {}",
+        String::from_utf8_lossy(&shaders.stderr)
+    );
 }
 
 #[test]
@@ -370,4 +375,44 @@ fn framebuffer_objects_answer_and_draw_as_on_mesa() {
     // The window shows the texture drawn through the FBO: red and green quads on blue.
     assert!(count_dominant(&mesa, 0) > 200 && count_dominant(&mesa, 1) > 200);
     assert_images_match("fbo", &ours, &mesa, within_3_on_99_percent(&mesa));
+}
+
+/// `tests/c/shadow.c` links no library: it dlopen()s libOSMesa.so.8 and resolves every
+/// GL call through OSMesaGetProcAddress.
+fn build_dlopen(name: &str) -> PathBuf {
+    let exe = work_dir(name).join(format!("{name}-dlopen"));
+    let out = Command::new("cc")
+        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-O1", "-o"])
+        .arg(&exe)
+        .arg(source(&format!("{name}.c")))
+        .args(["-lm", "-ldl"])
+        .output()
+        .expect("cc runs");
+    assert!(
+        out.status.success(),
+        "cc {name}.c failed (needs gcc and libosmesa6-dev):\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    exe
+}
+
+#[test]
+fn a_dlopened_shadow_map_program_renders_as_on_mesa_and_replays() {
+    let exe = build_dlopen("shadow");
+    let dir = work_dir("shadow");
+    let [(mesa_text, mesa), (ours_text, ours)] = [Library::Mesa, Library::Fixedfunc].map(|lib| {
+        let out = dir.join(format!("{lib:?}.ppm"));
+        let text = run(&exe, lib, &[out.to_str().unwrap()]).stdout;
+        (String::from_utf8_lossy(&text).into_owned(), read_ppm(&out))
+    });
+    // On Mesa each panel shows the box's shadow, the lit ground and the tinted box, with
+    // no GL error, whether the map was copied or drawn through the FBO.
+    assert_eq!(
+        mesa_text.matches("shadow  lit  tinted  err 0x0").count(),
+        4,
+        "Mesa's panels:\n{mesa_text}"
+    );
+    assert_same_text(&mesa_text, &ours_text, 6, "a shadow-map panel");
+    assert_images_match("shadow", &ours, &mesa, within_3_on_99_percent(&mesa));
+    assert_trace_replays("shadow", &exe, &[], "128x128");
 }
