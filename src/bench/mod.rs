@@ -3,8 +3,10 @@
 //! backend's contexts and producing the first read-back frame) and `pipeline` (the same
 //! frame through the emulated and the native path, interleaved), `truth` and `techniques`
 //! (every shadow technique on both paths, split into light pass, readback + upload and eye
-//! passes).
+//! passes), and `abi` (an OSMesa C program on the layer's C library against Mesa's own,
+//! interleaved).
 
+pub mod abi;
 pub mod context;
 pub mod pipeline;
 pub mod techniques;
@@ -21,6 +23,8 @@ pub enum BenchGroup {
     Truth,
     /// Every technique on the default scene, both paths, frame time split by pass kind.
     Techniques,
+    /// The C library against Mesa's OSMesa: one C program, five drawing paths.
+    Abi,
 }
 
 impl crate::vocab::Named for BenchGroup {
@@ -29,6 +33,7 @@ impl crate::vocab::Named for BenchGroup {
         ("pipeline", BenchGroup::Pipeline),
         ("truth", BenchGroup::Truth),
         ("techniques", BenchGroup::Techniques),
+        ("abi", BenchGroup::Abi),
     ];
 
     fn help(self) -> &'static str {
@@ -41,15 +46,20 @@ impl crate::vocab::Named for BenchGroup {
             BenchGroup::Techniques => {
                 "every technique on the default scene, both paths, split by pass kind"
             }
+            BenchGroup::Abi => {
+                "an OSMesa C program on the C library against Mesa's OSMesa: immediate mode, \
+                 arrays, lists, buffers, a shadow-map frame"
+            }
         }
     }
 }
 
 impl BenchGroup {
-    pub const ALL: [BenchGroup; 4] = [
+    pub const ALL: [BenchGroup; 5] = [
         BenchGroup::Context,
         BenchGroup::Pipeline,
         BenchGroup::Truth,
         BenchGroup::Techniques,
+        BenchGroup::Abi,
     ];
 }

@@ -39,6 +39,8 @@ pub enum BenchError {
     Technique(#[from] techniques::TechniqueError),
     #[error("no samples")]
     NoSamples,
+    #[error("bench abi: {0}")]
+    Abi(#[from] super::abi::AbiError),
 }
 
 struct Path {

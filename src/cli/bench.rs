@@ -1,7 +1,10 @@
 //! `fixedfunc bench`: repeated timings with medians, a progress bar while they run.
 
+use fixedfunc::bench::abi::{self, AbiError, AbiMode, AbiRow, Verdict};
+use fixedfunc::bench::pipeline::BenchError;
 use fixedfunc::bench::{context, pipeline, BenchGroup};
 use fixedfunc::gpu::{Backend, Profile, VirtualDisplay};
+use fixedfunc::vocab::Named;
 use std::io::IsTerminal;
 
 use indicatif::ProgressBar;
@@ -13,8 +16,8 @@ use super::error::CliError;
 /// The most repetitions `--repeats` takes. A median of 1000 runs moves by less than the
 /// machine's own noise when more are added, so more would only lengthen the run, without
 /// a word: each repeat renders every technique on both paths (the techniques group),
-/// creates every backend's contexts (context) and ray-casts the default scene and a million
-/// triangles (truth).
+/// creates every backend's contexts (context), ray-casts the default scene and a million
+/// triangles (truth) and runs a C program ten times (abi).
 pub const MAX_REPEATS: usize = 1000;
 
 /// `--repeats N`: 1 to [`MAX_REPEATS`]. Zero is refused rather than run once.
@@ -26,7 +29,8 @@ pub fn parse_repeats(text: &str) -> Result<usize, String> {
     match n {
         0 => Err("0 repeats measure nothing: give 1 or more".to_string()),
         n if n > MAX_REPEATS => Err(format!(
-            "at most {MAX_REPEATS} repeats: a median of {MAX_REPEATS} runs is already as              steady as the machine, and more would only make the run longer"
+            "at most {MAX_REPEATS} repeats: a median of {MAX_REPEATS} runs is already as \
+             steady as the machine, and more would only make the run longer"
         )),
         n => Ok(n),
     }
@@ -40,6 +44,7 @@ pub fn run(only: Option<BenchGroup>, repeats: usize, json: bool) -> Result<(), C
             BenchGroup::Pipeline => run_pipeline(repeats, json)?,
             BenchGroup::Truth => run_truth(repeats, json)?,
             BenchGroup::Techniques => run_techniques(repeats, json)?,
+            BenchGroup::Abi => run_abi(repeats, json, only.is_none())?,
         }
     }
     Ok(())
@@ -264,6 +269,115 @@ fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {
             s.technique,
             fixedfunc::render::pipeline_name(s.pipeline),
             s.reason
+        )?;
+    }
+    Ok(())
+}
+
+/// `bench --only abi`. Run with the other groups (no `--only`), a machine without the C
+/// compiler, Mesa's OSMesa or the layer's library skips the group and says why; asked for
+/// alone, that is an error.
+fn run_abi(repeats: usize, json: bool, among_all: bool) -> Result<(), CliError> {
+    match measure_abi(repeats) {
+        Ok(rows) => print_abi(&rows, repeats, json),
+        Err(
+            e @ (AbiError::CompilerMissing { .. }
+            | AbiError::HeaderMissing { .. }
+            | AbiError::MesaMissing { .. }
+            | AbiError::LibraryMissing { .. }),
+        ) if among_all => {
+            eprintln!("bench abi skipped: {e}");
+            Ok(())
+        }
+        Err(e) => Err(BenchError::from(e).into()),
+    }
+}
+
+fn measure_abi(repeats: usize) -> Result<Vec<AbiRow>, AbiError> {
+    let folder = fixedfunc_folder().map_err(|e| AbiError::Io {
+        what: "the C library's folder".into(),
+        reason: e.to_string(),
+    })?;
+    let libraries = abi::Libraries {
+        fixedfunc_dir: folder,
+    };
+    let modes = AbiMode::all();
+    let total = (repeats.max(1) * modes.len() * 2) as u64;
+    let mut bar = CountBar::new("bench abi", total, "runs");
+    bar.set_what("compiling abi_bench.c".into());
+    let program = abi::Program::compile()?;
+    let rows = abi::measure(&program, &libraries, &modes, repeats, |mode, library| {
+        bar.set_what(format!("{mode} on {library}"));
+        bar.inc();
+    });
+    bar.finish();
+    rows
+}
+
+/// The folder `fixedfunc osmesa-dir` prints, beside this binary.
+fn fixedfunc_folder() -> Result<std::path::PathBuf, CliError> {
+    let exe = std::env::current_exe().map_err(|e| CliError::Osmesa(e.to_string()))?;
+    let dir = exe
+        .parent()
+        .ok_or_else(|| CliError::Osmesa("the binary has no folder".into()))?;
+    super::osmesa_dir::osmesa_folder(dir)
+}
+
+fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError> {
+    if json {
+        outln!("{}", serde_json::to_string_pretty(rows)?)?;
+        return Ok(());
+    }
+    outln!(
+        "abi: benches/c/abi_bench.c (256×256 RGBA, 24 depth, 8 stencil) on Mesa's \
+         libOSMesa.so.8 and on fixedfunc's, runs interleaved; {} runs each of {} frames \
+         after {} warm-up; per run its median frame; medians [min–max] over the runs",
+        repeats.max(1),
+        abi::STEADY_FRAMES,
+        abi::WARMUP_FRAMES
+    )?;
+    if let Some(r) = rows.first() {
+        outln!(
+            "Mesa: {} · fixedfunc: {}",
+            r.mesa.renderer,
+            r.fixedfunc.renderer
+        )?;
+    }
+    outln!(
+        "{:<10} {:>7} {:>5} {:>22} {:>22} {:>10} {:>7} {:>15} {:>15} {:>9} {:>9}",
+        "mode",
+        "verts",
+        "draws",
+        "Mesa frame ms",
+        "fixedfunc frame ms",
+        "ours/Mesa",
+        "target",
+        "Mesa Mvert/s",
+        "ours Mvert/s",
+        "Mesa dr/s",
+        "ours dr/s"
+    )?;
+    let range =
+        |s: &fixedfunc::stats::Summary| format!("{:.2} [{:.2}–{:.2}]", s.median, s.min, s.max);
+    for r in rows {
+        let target = match (r.target, r.verdict) {
+            (Some(t), Verdict::Met) => format!("≤{t:.1} ✓"),
+            (Some(t), _) => format!("≤{t:.1} ✗"),
+            (None, _) => "—".to_string(),
+        };
+        outln!(
+            "{:<10} {:>7} {:>5} {:>22} {:>22} {:>9.2}× {:>7} {:>15.1} {:>15.1} {:>9.0} {:>9.0}",
+            r.mode.name(),
+            r.vertices_per_frame,
+            r.draws_per_frame,
+            range(&r.mesa.frame_ms),
+            range(&r.fixedfunc.frame_ms),
+            r.ratio,
+            target,
+            r.mesa.mvertices_per_s.median,
+            r.fixedfunc.mvertices_per_s.median,
+            r.mesa.draws_per_s.median,
+            r.fixedfunc.draws_per_s.median
         )?;
     }
     Ok(())

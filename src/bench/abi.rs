@@ -1,0 +1,327 @@
+//! `bench --only abi`: the C library against Mesa's own OSMesa, through one unmodified C
+//! program of the era (`benches/c/abi_bench.c`, see [`program`]) that renders a fixed
+//! workload per mode — immediate mode, client arrays, display lists, buffer objects, and a
+//! depth-texture shadow-map frame — into a 256×256 OSMesa buffer and prints each frame's
+//! time (clear … glFinish).
+//!
+//! Runs are interleaved, Mesa then the layer, mode by mode, repeat by repeat, so that the
+//! machine's noise (other builds, frequency steps) hits both alike. A run's figure is the
+//! median of its frames after [`WARMUP_FRAMES`] (the first compiles programs and uploads);
+//! a row reports, per library, the median and range of those figures over the repeats, the
+//! vertices and draw calls per second they mean, and the layer's median over Mesa's against
+//! the target (≤ 1.0× for arrays, lists and buffers, ≤ 2.0× for immediate mode).
+//!
+//! A fast time counts only from a run that drew the workload: the program exits non-zero
+//! on a GL error or an image without it (a shadow frame without shadow), and here the two
+//! libraries' last frames must agree within [`IMAGE_AGREEMENT`] of the pixels in what they
+//! drew and what lies in shadow.
+
+pub mod output;
+pub mod program;
+
+use serde::Serialize;
+
+use crate::stats::Summary;
+use crate::vocab::Named;
+
+pub use output::RunOutput;
+pub use program::{Libraries, Program};
+
+/// Frames of each run left out of its median.
+pub const WARMUP_FRAMES: u32 = 3;
+/// Frames of each run that count.
+pub const STEADY_FRAMES: u32 = 20;
+/// The program's buffer, in pixels (256×256).
+pub const PIXELS: u64 = 256 * 256;
+/// How far the two libraries' pixel counts (drawn, dark) may differ, as a fraction of the
+/// image: 2%.
+pub const IMAGE_AGREEMENT: f64 = 0.02;
+
+/// What a run draws, through which of the era's paths.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum AbiMode {
+    /// glBegin/glNormal3fv/glVertex3fv/glEnd.
+    Immediate,
+    /// Client vertex and normal arrays, glDrawElements.
+    Arrays,
+    /// A display list compiled from the immediate calls, glCallList.
+    Lists,
+    /// The arrays in GL 1.5 buffer objects.
+    Buffers,
+    /// Light pass, glCopyTexImage2D into a compared depth texture, eye pass with texgen.
+    Shadow,
+}
+
+impl Named for AbiMode {
+    const NAMES: &'static [(&'static str, Self)] = &[
+        ("immediate", AbiMode::Immediate),
+        ("arrays", AbiMode::Arrays),
+        ("lists", AbiMode::Lists),
+        ("buffers", AbiMode::Buffers),
+        ("shadow", AbiMode::Shadow),
+    ];
+}
+
+impl std::fmt::Display for AbiMode {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl AbiMode {
+    /// The largest ratio (the layer's frame over Mesa's) the project aims for, if any.
+    pub fn target(self) -> Option<f64> {
+        match self {
+            AbiMode::Immediate => Some(2.0),
+            AbiMode::Arrays | AbiMode::Lists | AbiMode::Buffers => Some(1.0),
+            AbiMode::Shadow => None,
+        }
+    }
+}
+
+/// Which `libOSMesa.so.8` a run loads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Library {
+    /// Mesa's own OSMesa (Debian: libosmesa6).
+    Mesa,
+    /// The layer's C library.
+    Fixedfunc,
+}
+
+impl std::fmt::Display for Library {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Library::Mesa => "Mesa",
+            Library::Fixedfunc => "fixedfunc",
+        })
+    }
+}
+
+/// Whether a row's ratio is within its mode's target.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Verdict {
+    Met,
+    Missed,
+    /// The mode has no target.
+    None,
+}
+
+/// One library's figures for one mode, over the repeats.
+#[derive(Clone, Debug, Serialize)]
+pub struct LibraryFigures {
+    pub library: Library,
+    pub vendor: String,
+    pub renderer: String,
+    /// Each run's median steady frame, ms: their median, min and max.
+    pub frame_ms: Summary,
+    /// Vertices per second each run's median frame means, in millions.
+    pub mvertices_per_s: Summary,
+    /// Draw calls per second.
+    pub draws_per_s: Summary,
+}
+
+/// One mode on both libraries.
+#[derive(Clone, Debug, Serialize)]
+pub struct AbiRow {
+    pub mode: AbiMode,
+    pub vertices_per_frame: u64,
+    pub draws_per_frame: u64,
+    pub mesa: LibraryFigures,
+    pub fixedfunc: LibraryFigures,
+    /// The layer's median frame / Mesa's.
+    pub ratio: f64,
+    pub target: Option<f64>,
+    pub verdict: Verdict,
+}
+
+/// Why the group could not run; a missing tool or library names its Debian package.
+#[derive(Debug, thiserror::Error)]
+pub enum AbiError {
+    #[error(
+        "cannot run the C compiler `{compiler}` ({reason}): install gcc and libosmesa6-dev \
+         (apt-get install gcc libosmesa6-dev), or name another compiler in CC"
+    )]
+    CompilerMissing { compiler: String, reason: String },
+    #[error(
+        "Mesa's OSMesa header or library is missing: install gcc and libosmesa6-dev (apt-get \
+         install gcc libosmesa6-dev; OSMesa is gone from Mesa ≥ 25.1, where this group cannot \
+         run):\n{stderr}"
+    )]
+    HeaderMissing { stderr: String },
+    #[error("`{compiler}` failed on abi_bench.c:\n{stderr}")]
+    Compile { compiler: String, stderr: String },
+    #[error(
+        "Mesa's libOSMesa.so.8 cannot be loaded: install libosmesa6 (apt-get install \
+         libosmesa6); OSMesa is gone from Mesa ≥ 25.1, so there is nothing to compare \
+         against there:\n{stderr}"
+    )]
+    MesaMissing { stderr: String },
+    #[error(
+        "{path} is missing: build the library with `cargo build --release` (it is built with \
+         the binary)",
+        path = path.display()
+    )]
+    LibraryMissing { path: std::path::PathBuf },
+    #[error("the {mode} run on {library} failed ({status}):\n{stderr}")]
+    Failed {
+        library: Library,
+        mode: AbiMode,
+        status: String,
+        stderr: String,
+    },
+    #[error("the {mode} run on {library} took over {seconds} s and was killed:\n{stderr}")]
+    Timeout {
+        library: Library,
+        mode: AbiMode,
+        seconds: u64,
+        stderr: String,
+    },
+    #[error("the {mode} run on {library}: {source}")]
+    Run {
+        library: Library,
+        mode: AbiMode,
+        #[source]
+        source: Box<AbiError>,
+    },
+    #[error("line {line} `{text}`: {reason}")]
+    Output {
+        line: usize,
+        text: String,
+        reason: String,
+    },
+    #[error("the output ends without its `{missing}` record")]
+    Incomplete { missing: &'static str },
+    #[error(
+        "the {mode} run meant for {library} ran on vendor `{vendor}` ({renderer}): the \
+         loader took another libOSMesa.so.8 (LD_PRELOAD, or a folder in the loader's path)"
+    )]
+    WrongLibrary {
+        library: Library,
+        mode: AbiMode,
+        vendor: String,
+        renderer: String,
+    },
+    #[error(
+        "the {mode} images differ: {what} pixels {mesa} on Mesa, {ours} on fixedfunc (more \
+         than {percent}% of the image apart)",
+        percent = IMAGE_AGREEMENT * 100.0
+    )]
+    ImagesDiffer {
+        mode: AbiMode,
+        what: &'static str,
+        mesa: u64,
+        ours: u64,
+    },
+    #[error("{what}: {reason}")]
+    Io { what: String, reason: String },
+}
+
+/// Runs every mode `repeats` times on each library, interleaved; `done` is told of each
+/// finished run.
+pub fn measure(
+    program: &Program,
+    libraries: &Libraries,
+    modes: &[AbiMode],
+    repeats: usize,
+    mut done: impl FnMut(AbiMode, Library),
+) -> Result<Vec<AbiRow>, AbiError> {
+    let frames = WARMUP_FRAMES + STEADY_FRAMES;
+    // runs[mode][library]: each repeat's output.
+    let mut runs: Vec<[Vec<RunOutput>; 2]> = modes.iter().map(|_| [vec![], vec![]]).collect();
+    for _ in 0..repeats.max(1) {
+        for (m, &mode) in modes.iter().enumerate() {
+            for (l, library) in [Library::Mesa, Library::Fixedfunc].into_iter().enumerate() {
+                let out = program.run(libraries, library, mode, frames, None)?;
+                runs[m][l].push(out);
+                done(mode, library);
+            }
+        }
+    }
+    modes
+        .iter()
+        .zip(runs)
+        .map(|(&mode, [mesa, ours])| row(mode, &mesa, &ours))
+        .collect()
+}
+
+/// The median of a run's frames after the warm-up.
+pub fn steady_median(run: &RunOutput) -> Option<f64> {
+    let steady = run.frame_ms.get(WARMUP_FRAMES as usize..).unwrap_or(&[]);
+    Summary::of(steady).map(|s| s.median)
+}
+
+fn row(mode: AbiMode, mesa: &[RunOutput], ours: &[RunOutput]) -> Result<AbiRow, AbiError> {
+    let (Some(m), Some(o)) = (mesa.first(), ours.first()) else {
+        return Err(AbiError::Incomplete { missing: "frame" });
+    };
+    agree(mode, m, o)?;
+    let mesa = figures(Library::Mesa, mesa)?;
+    let fixedfunc = figures(Library::Fixedfunc, ours)?;
+    let ratio = fixedfunc.frame_ms.median / mesa.frame_ms.median;
+    let target = mode.target();
+    let verdict = match target {
+        None => Verdict::None,
+        Some(t) if ratio <= t => Verdict::Met,
+        Some(_) => Verdict::Missed,
+    };
+    Ok(AbiRow {
+        mode,
+        vertices_per_frame: m.vertices,
+        draws_per_frame: m.draws,
+        mesa,
+        fixedfunc,
+        ratio,
+        target,
+        verdict,
+    })
+}
+
+/// Both libraries drew the same workload: the same counts, and drawn and dark pixels
+/// within [`IMAGE_AGREEMENT`] of the image.
+fn agree(mode: AbiMode, mesa: &RunOutput, ours: &RunOutput) -> Result<(), AbiError> {
+    let differ = |what, m: u64, o: u64| AbiError::ImagesDiffer {
+        mode,
+        what,
+        mesa: m,
+        ours: o,
+    };
+    if (mesa.vertices, mesa.draws) != (ours.vertices, ours.draws) {
+        return Err(differ("vertex", mesa.vertices, ours.vertices));
+    }
+    let limit = (IMAGE_AGREEMENT * PIXELS as f64) as u64;
+    for (what, m, o) in [
+        ("drawn", mesa.drawn, ours.drawn),
+        ("dark", mesa.dark, ours.dark),
+    ] {
+        if m.abs_diff(o) > limit {
+            return Err(differ(what, m, o));
+        }
+    }
+    Ok(())
+}
+
+fn figures(library: Library, runs: &[RunOutput]) -> Result<LibraryFigures, AbiError> {
+    let first = runs
+        .first()
+        .ok_or(AbiError::Incomplete { missing: "frame" })?;
+    let frame_ms: Vec<f64> = runs.iter().filter_map(steady_median).collect();
+    // Per run: count / (median frame in seconds).
+    let rate = |count: u64, scale: f64| -> Vec<f64> {
+        frame_ms
+            .iter()
+            .map(|ms| count as f64 / (ms / 1e3) / scale)
+            .collect()
+    };
+    let summary = |v: &[f64]| Summary::of(v).ok_or(AbiError::Incomplete { missing: "frame" });
+    Ok(LibraryFigures {
+        library,
+        vendor: first.vendor.clone(),
+        renderer: first.renderer.clone(),
+        frame_ms: summary(&frame_ms)?,
+        mvertices_per_s: summary(&rate(first.vertices, 1e6))?,
+        draws_per_s: summary(&rate(first.draws, 1.0))?,
+    })
+}
