@@ -12,13 +12,38 @@ use super::names::{Family, GlEnum};
 use crate::ff::api::Entry;
 use crate::ff::*;
 
-/// Prints commands as a script.
+/// Prints commands as a script (read back with GL's default GL_UNPACK_ALIGNMENT, 4).
 pub fn print(cmds: &[Command]) -> String {
+    print_aligned(cmds, 4)
+}
+
+/// Prints commands as a script read with GL_UNPACK_ALIGNMENT `unpack_alignment`: pixel
+/// data (held as tightly packed rows) is printed with each row padded to it by zeros
+/// (GL 1.5 §3.6.4), so that parsing reads the same rows back.
+pub fn print_aligned(cmds: &[Command], unpack_alignment: usize) -> String {
     let mut out = String::new();
     for c in cmds {
-        command(&mut out, c);
+        command(&mut out, c, unpack_alignment);
     }
     out
+}
+
+/// `data`'s rows of `row` bytes each padded to `alignment` (the last row is not padded:
+/// GL reads only its pixels).
+fn padded(data: &[u8], row: usize, alignment: usize) -> std::borrow::Cow<'_, [u8]> {
+    let stride = crate::ff::pixel_store::PixelStore::stride(row, alignment);
+    if row == 0 || stride == row || data.len() <= row {
+        return std::borrow::Cow::Borrowed(data);
+    }
+    let mut out = Vec::with_capacity(data.len() / row * stride);
+    let rows: Vec<&[u8]> = data.chunks(row).collect();
+    for (k, r) in rows.iter().enumerate() {
+        out.extend_from_slice(r);
+        if k + 1 < rows.len() {
+            out.resize(out.len() + stride - row, 0);
+        }
+    }
+    std::borrow::Cow::Owned(out)
 }
 
 fn f(v: f32) -> String {
@@ -79,10 +104,10 @@ fn line(out: &mut String, s: std::fmt::Arguments) {
     out.push_str(";\n");
 }
 
-fn command(out: &mut String, c: &Command) {
+fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
     match c {
         Command::Draw(g) => draw(out, g),
-        Command::TexImage(t) => tex_image(out, t),
+        Command::TexImage(t) => tex_image(out, t, unpack_alignment),
         Command::TexSubImage2D(t) => line(
             out,
             format_args!(
@@ -95,7 +120,14 @@ fn command(out: &mut String, c: &Command) {
                 t.height,
                 n(t.format),
                 n(t.ty),
-                pixels(t.ty, &t.data)
+                pixels(
+                    t.ty,
+                    &padded(
+                        &t.data,
+                        t.width.max(0) as usize * t.format.components() * t.ty.size(),
+                        unpack_alignment
+                    )
+                )
             ),
         ),
         Command::Raise { error, call } => out.push_str(&format!(
@@ -620,10 +652,11 @@ fn pixels(ty: PixelType, data: &[u8]) -> String {
     format!("({name}[]){{{}}}", v.join(", "))
 }
 
-fn tex_image(out: &mut String, t: &TexImage) {
+fn tex_image(out: &mut String, t: &TexImage, unpack_alignment: usize) {
+    let row = t.width.max(0) as usize * t.format.components() * t.ty.size();
     let data = match &t.data {
         TexData::Null => "NULL".to_string(),
-        TexData::Bytes(d) => pixels(t.ty, d),
+        TexData::Bytes(d) => pixels(t.ty, &padded(d, row, unpack_alignment)),
         TexData::Readback(slot) => format!("readback_{slot}"),
         TexData::ConvertedDepth { slot, ty, rule } => {
             let name = super::parse::DEPTH_HELPERS
