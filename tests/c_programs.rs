@@ -350,3 +350,69 @@ fn buffer_objects_draw_and_fail_as_on_mesa() {
     assert_six_panels_drawn(&mesa);
     assert_images_match("buffers", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+/// tests/c/calls.c: pixel storage, the client attribute stack, the GL 1.1 texture calls
+/// (glGetTexImage's bytes with GL_PACK_ALIGNMENT, glTexSubImage1D, the 1D and 2D copies)
+/// and the integer and transposed variants print what Mesa prints, line by line; the
+/// framebuffer copied into a texture with glCopyTexSubImage2D and drawn back is Mesa's
+/// image within 3/255 on 99%; and the program's trace replays to its image.
+#[test]
+fn texture_calls_client_attrib_stack_and_variants_answer_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("calls");
+    assert!(
+        mesa_text.contains("the 17th push                                0x0503")
+            && mesa_text.contains("texel row 2                                  128 128 128 128 128 128 128 128 255 0 0 255"),
+        "Mesa printed something else:\n{mesa_text}"
+    );
+    assert_same_text(&mesa_text, &ours_text, 80, "the layer's answer");
+    // The copied quadrants fill the middle of the drawn texture: red, green, blue, yellow.
+    for channel in [0, 1, 2] {
+        assert!(count_dominant(&mesa, channel) > 1000, "channel {channel}");
+    }
+    assert_images_match("calls", &ours, &mesa, within_3_on_99_percent(&mesa));
+
+    let exe = compile("calls", Linking::Direct);
+    let dir = work_dir("calls");
+    let (image, trace, replayed) = (
+        dir.join("traced.ppm"),
+        dir.join("calls.c"),
+        dir.join("replayed.png"),
+    );
+    let out = Command::new(&exe)
+        .arg(&image)
+        .env("LD_LIBRARY_PATH", fixedfunc_dir())
+        .env("FIXEDFUNC_TRACE", &trace)
+        .output()
+        .expect("the program runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&trace).expect("the trace was written");
+    assert!(
+        text.contains("glPixelStorei(GL_UNPACK_ALIGNMENT, 1);"),
+        "the trace lacks the unpack alignment: {text:.400}"
+    );
+    let replay = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
+        .arg("replay")
+        .arg(&trace)
+        .args(["--size", "128x128", "--out"])
+        .arg(&replayed)
+        .output()
+        .expect("fixedfunc runs");
+    assert!(
+        replay.status.success(),
+        "replay failed: {}",
+        String::from_utf8_lossy(&replay.stderr)
+    );
+    let traced = read_ppm(&image);
+    let mut back = image::open(&replayed).expect("a PNG").to_rgba8();
+    back.pixels_mut().for_each(|p| p.0[3] = 255);
+    assert_images_match(
+        "trace-calls",
+        &back,
+        &traced,
+        within_3_on_99_percent(&traced),
+    );
+}

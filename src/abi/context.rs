@@ -283,8 +283,10 @@ impl Context {
             self.execute(&cmd);
         }
         self.made = made;
-        if entry == Entry::ReadPixels {
-            self.copy_read_pixels(args);
+        match entry {
+            Entry::ReadPixels => self.copy_pixels_out(args.get(6)),
+            Entry::GetTexImage => self.copy_pixels_out(args.get(4)),
+            _ => {}
         }
         match reply {
             Reply::None => Ret::Enum(0),
@@ -355,13 +357,18 @@ impl Context {
         }
     }
 
-    /// glReadPixels into the caller's memory: the bytes the pipeline read, rows padded to
-    /// GL_PACK_ALIGNMENT.
-    fn copy_read_pixels(&mut self, args: &[CArg]) {
-        let Some(CArg::Ptr(dst, _)) = args.get(6).copied() else {
+    /// glReadPixels and glGetTexImage into the caller's memory: the bytes the pipeline
+    /// read, rows padded to GL_PACK_ALIGNMENT. A call that failed, or a glGetTexImage of a
+    /// level never specified, stored nothing and leaves the memory alone.
+    fn copy_pixels_out(&mut self, dst: Option<&CArg>) {
+        let Some(CArg::Ptr(dst, _)) = dst.copied() else {
             return;
         };
-        let Some(r) = self.pipeline.as_ref().and_then(|p| p.readback(CALLER_SLOT)) else {
+        let Some(r) = self
+            .pipeline
+            .as_mut()
+            .and_then(|p| p.take_readback(CALLER_SLOT))
+        else {
             return;
         };
         if dst.is_null() {

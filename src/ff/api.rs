@@ -452,11 +452,11 @@ macro_rules! gl_entry_table {
         PushClientAttrib = glPushClientAttrib(Script; mask: GLbitfield);
         PopClientAttrib = glPopClientAttrib(Script; );
         GetPointerv = glGetPointerv(Script; pname: GLenum, params: *mut *mut c_void);
-        TexSubImage1D = glTexSubImage1D(Left; target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
-        CopyTexImage1D = glCopyTexImage1D(Left; target: GLenum, level: GLint, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint);
-        CopyTexSubImage1D = glCopyTexSubImage1D(Left; target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei);
-        CopyTexSubImage2D = glCopyTexSubImage2D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
-        GetTexImage = glGetTexImage(Left; target: GLenum, level: GLint, format: GLenum, r#type: GLenum, pixels: *mut c_void);
+        TexSubImage1D = glTexSubImage1D(Script; target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
+        CopyTexImage1D = glCopyTexImage1D(Script; target: GLenum, level: GLint, internalformat: GLenum, x: GLint, y: GLint, width: GLsizei, border: GLint);
+        CopyTexSubImage1D = glCopyTexSubImage1D(Script; target: GLenum, level: GLint, xoffset: GLint, x: GLint, y: GLint, width: GLsizei);
+        CopyTexSubImage2D = glCopyTexSubImage2D(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+        GetTexImage = glGetTexImage(Script; target: GLenum, level: GLint, format: GLenum, r#type: GLenum, pixels: *mut c_void);
         AreTexturesResident = glAreTexturesResident(Script; n: GLsizei, textures: *const GLuint, residences: *mut GLboolean) -> GLboolean;
         PrioritizeTextures = glPrioritizeTextures(Script; n: GLsizei, textures: *const GLuint, priorities: *const GLclampf);
         Lightiv = glLightiv(Script; light: GLenum, pname: GLenum, params: *const GLint);
@@ -875,6 +875,13 @@ impl Command {
             Command::Raise { call, .. } => *call,
             Command::PushAttrib(_) => Entry::PushAttrib,
             Command::PopAttrib => Entry::PopAttrib,
+            Command::TexSubImage1D(_) => Entry::TexSubImage1D,
+            Command::CopyTexImage1D(_) => Entry::CopyTexImage1D,
+            Command::CopyTexSubImage(c) => match c.target {
+                super::texture::TextureTarget::Texture1D => Entry::CopyTexSubImage1D,
+                super::texture::TextureTarget::Texture2D => Entry::CopyTexSubImage2D,
+            },
+            Command::GetTexImage(_) => Entry::GetTexImage,
         }
     }
 }

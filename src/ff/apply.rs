@@ -120,7 +120,7 @@ impl FixedState {
                 }
             }
             Command::TexImage(t) => self.tex_image(t)?,
-            Command::TexSubImage2D(t) => self.tex_sub_image(t)?,
+            Command::TexSubImage2D(t) => self.tex_sub_image(t, TextureTarget::Texture2D)?,
             Command::CopyTexImage2D(c) => self.copy_tex_image(c)?,
             Command::TexParameter { target, param } => {
                 let name = self.units[unit].bound(*target);
@@ -270,6 +270,12 @@ impl FixedState {
             Command::ReadPixels(r) => check_read_pixels(r)?,
             Command::Draw(g) => self.draw(g)?,
             Command::PushAttrib(mask) => self.push_attrib(*mask)?,
+            Command::TexSubImage1D(t) => self.tex_sub_image(t, TextureTarget::Texture1D)?,
+            Command::CopyTexImage1D(c) => self.copy_tex_image_1d(c)?,
+            Command::CopyTexSubImage(c) => self.copy_tex_sub_image(c)?,
+            Command::GetTexImage(g) => {
+                self.check_get_tex_image(g)?;
+            }
             Command::PopAttrib => self.pop_attrib()?,
         }
         Ok(())
@@ -405,8 +411,8 @@ impl FixedState {
         Ok(())
     }
 
-    fn tex_sub_image(&mut self, t: &TexSubImage) -> GlResult {
-        let tex = self.bound_mut(TextureTarget::Texture2D)?;
+    fn tex_sub_image(&mut self, t: &TexSubImage, target: TextureTarget) -> GlResult {
+        let tex = self.bound_mut(target)?;
         let level = tex.level_mut(t.level).ok_or(GlError::invalid_operation(
             "TexSubImage2D on an unspecified level",
         ))?;

@@ -23,6 +23,7 @@ fn volume<A: Args>(c: &A) -> Result<ViewVolume, A::Error> {
 pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
     for area in [
         super::calls_variants::variants,
+        super::texture_calls::texture_calls,
         transform_and_fragment,
         lighting,
         texturing,

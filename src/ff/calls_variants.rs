@@ -73,14 +73,20 @@ pub fn variants<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 super::calls::lighting(&scalar)?.ok_or_else(|| c.unsupported())?
             }
         }
-        Entry::Materiali => {
+        // GL 1.5 Table 2.10 gives the scalar forms SHININESS only (else INVALID_ENUM);
+        // Mesa takes a colour pname without an error, reading the other components from
+        // beyond the argument (tests/c/calls.c pins the missing error). Followed: Mesa's
+        // acceptance, with the colour (param, 0, 0, 0).
+        Entry::Materiali | Entry::Materialf => {
             c.count(3)?;
             let face = c.enm(0)?;
-            c.pname(1, &["GL_SHININESS"])?;
-            Command::Material {
-                face,
-                param: MaterialParam::Shininess(c.int(2)? as f32),
-            }
+            let all = [MATERIAL_VECTORS, &["GL_SHININESS"]].concat();
+            let v = c.f32(2)?;
+            let param = match c.pname(1, &all)? {
+                "GL_SHININESS" => MaterialParam::Shininess(v),
+                p => material_vector(p, glam::Vec4::new(v, 0.0, 0.0, 0.0)),
+            };
+            Command::Material { face, param }
         }
         Entry::Materialiv => {
             c.count(3)?;
@@ -267,5 +273,66 @@ impl<A: Args> Args for ScalarAt<'_, A> {
     }
     fn slot(&self, i: usize) -> Result<u32, A::Error> {
         self.inner.slot(i)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::ff::script::parse;
+    use crate::ff::{Command, LightParam, MaterialParam};
+    use glam::{Mat4, Vec4};
+
+    #[test]
+    fn mesa_scalar_material_sets_a_vector_pname_as_v000() {
+        let cmds = parse("glMateriali(GL_FRONT, GL_DIFFUSE, 3);").unwrap();
+        assert!(matches!(
+            cmds[0],
+            Command::Material { param: MaterialParam::Diffuse(v), .. } if v == Vec4::new(3.0, 0.0, 0.0, 0.0)
+        ));
+    }
+
+    #[test]
+    fn integer_colours_are_normalised_and_positions_kept() {
+        let cmds = parse(
+            "glLightiv(GL_LIGHT0, GL_DIFFUSE, (GLint[]){2147483647, 0, -2147483647, 0});\n\
+             glLightiv(GL_LIGHT0, GL_POSITION, (GLint[]){1, 2, 3, 0});\n\
+             glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint[]){0x2600});",
+        )
+        .unwrap();
+        match (&cmds[0], &cmds[1]) {
+            (
+                Command::Light {
+                    param: LightParam::Diffuse(d),
+                    ..
+                },
+                Command::Light {
+                    param: LightParam::Position(p),
+                    ..
+                },
+            ) => {
+                assert_eq!(
+                    *d,
+                    Vec4::new(
+                        1.0,
+                        (1.0 / 4294967295.0) as f32,
+                        -1.0,
+                        (1.0 / 4294967295.0) as f32
+                    )
+                );
+                assert_eq!(*p, Vec4::new(1.0, 2.0, 3.0, 0.0));
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(matches!(cmds[2], Command::TexParameter { .. }));
+    }
+
+    #[test]
+    fn transposed_matrices_load_their_rows_as_columns() {
+        let cmds = parse(
+            "glLoadTransposeMatrixf((GLfloat[]){1, 0, 0, 5, 0, 1, 0, 6, 0, 0, 1, 7, 0, 0, 0, 1});",
+        )
+        .unwrap();
+        let want = Mat4::from_translation(glam::Vec3::new(5.0, 6.0, 7.0));
+        assert_eq!(cmds, vec![Command::LoadMatrix(want)]);
     }
 }

@@ -348,4 +348,12 @@ pub enum Command {
     PushAttrib(AttribMask),
     /// STACK_UNDERFLOW on an empty stack.
     PopAttrib,
+
+    // Texture calls of GL 1.1 beyond the 2D image (ff::texture_calls).
+    /// glTexSubImage1D (target TEXTURE_1D): `y` 0, `height` 1.
+    TexSubImage1D(TexSubImage),
+    /// glCopyTexImage1D (target TEXTURE_1D): a row of `width` pixels from (x, y); `height` 1.
+    CopyTexImage1D(CopyTexImage),
+    CopyTexSubImage(super::texture_calls::CopyTexSubImage),
+    GetTexImage(super::texture_calls::GetTexImage),
 }

@@ -51,6 +51,7 @@ pub mod calls_variants;
 pub mod client_attrib;
 pub mod front_state;
 pub mod pixel_store;
+pub mod texture_calls;
 
 #[cfg(test)]
 mod state_tests;

@@ -83,6 +83,12 @@ impl<P: Issue> PathPipeline<P> {
     pub(crate) fn from_parts(core: Core, path: P) -> Self {
         PathPipeline { core, path }
     }
+
+    /// Takes the bytes of readback slot `slot` out (the C library's caller slot is filled
+    /// anew by each glReadPixels or glGetTexImage that stores something).
+    pub fn take_readback(&mut self, slot: u32) -> Option<Readback> {
+        self.core.readbacks.remove(&slot)
+    }
 }
 
 impl<P: Issue> Pipeline for PathPipeline<P> {

@@ -130,6 +130,19 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
                 )
             ),
         ),
+        Command::TexSubImage1D(t) => line(
+            out,
+            format_args!(
+                "{}(GL_TEXTURE_1D, {}, {}, {}, {}, {}, {})",
+                Entry::TexSubImage1D,
+                t.level,
+                t.x,
+                t.width,
+                n(t.format),
+                n(t.ty),
+                pixels(t.ty, &t.data)
+            ),
+        ),
         Command::Raise { error, call } => out.push_str(&format!(
             "/* {call}: {error:?} raised here by a display list */\n"
         )),
@@ -437,10 +450,52 @@ fn call(c: &Command) -> String {
         ),
         Command::PushAttrib(m) => format!("{}({})", Entry::PushAttrib, attrib_mask(*m)),
         Command::PopAttrib => format!("{}()", Entry::PopAttrib),
+        Command::CopyTexImage1D(c) => format!(
+            "{}(GL_TEXTURE_1D, {}, {}, {}, {}, {}, {})",
+            Entry::CopyTexImage1D,
+            c.level,
+            n(c.internal_format),
+            c.x,
+            c.y,
+            c.width,
+            c.border
+        ),
+        Command::CopyTexSubImage(c) => match c.target {
+            TextureTarget::Texture1D => format!(
+                "{}(GL_TEXTURE_1D, {}, {}, {}, {}, {})",
+                Entry::CopyTexSubImage1D,
+                c.level,
+                c.xoffset,
+                c.x,
+                c.y,
+                c.width
+            ),
+            TextureTarget::Texture2D => format!(
+                "{}(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {})",
+                Entry::CopyTexSubImage2D,
+                c.level,
+                c.xoffset,
+                c.yoffset,
+                c.x,
+                c.y,
+                c.width,
+                c.height
+            ),
+        },
+        Command::GetTexImage(g) => format!(
+            "{}({}, {}, {}, {}, readback_{})",
+            Entry::GetTexImage,
+            n(g.target),
+            g.level,
+            n(g.format),
+            n(g.ty),
+            g.slot
+        ),
         // Printed by `command`.
         Command::Draw(_)
         | Command::TexImage(_)
         | Command::TexSubImage2D(_)
+        | Command::TexSubImage1D(_)
         | Command::Raise { .. } => String::new(),
     }
 }
