@@ -94,4 +94,6 @@ fn closest(names: &[&str]) -> String {
 }
 
 #[cfg(test)]
+mod every_row;
+#[cfg(test)]
 mod tests;

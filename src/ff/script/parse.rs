@@ -228,6 +228,18 @@ impl<'a> Cursor<'_, 'a> {
         self.eat(Tok::LBrace, "'{'")?;
         let mut values = Vec::new();
         while self.peek() != Some(Tok::RBrace) {
+            // A GL token is its value, as in C: (GLint[]){GL_NEAREST}.
+            if let Some(Tok::Ident(name)) = self.peek() {
+                if crate::ff::glenum::value_of(name).is_some() {
+                    self.pos += 1;
+                    values.push((false, name));
+                    if self.peek() == Some(Tok::Comma) {
+                        self.pos += 1;
+                        continue;
+                    }
+                    break;
+                }
+            }
             values.push(self.number(false)?);
             if self.peek() == Some(Tok::Comma) {
                 self.pos += 1;
@@ -274,8 +286,12 @@ fn describe(t: Tok<'_>) -> String {
     t.describe()
 }
 
-/// C integer literal: decimal or hex, optional u/U/l/L suffixes.
+/// C integer literal: decimal or hex, optional u/U/l/L suffixes; a GL token in an array
+/// is its value.
 fn int_literal(text: &str) -> Option<i64> {
+    if text.starts_with("GL_") {
+        return crate::ff::glenum::value_of(text).map(i64::from);
+    }
     let t = text.trim_end_matches(['u', 'U', 'l', 'L']);
     if let Some(hex) = t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
         i64::from_str_radix(hex, 16).ok()
