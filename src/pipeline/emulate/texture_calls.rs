@@ -275,13 +275,15 @@ fn convert(stored: &[u8], f: TexFormat, format: PixelFormat, ty: PixelType) -> V
     out
 }
 
-/// A unorm8 component in `ty`: exact widening (c·257, c·16843009) or c/255.
+/// A unorm8 component in `ty`: exact widening (c·257, c·16843009), or c·(1/255) in f32
+/// (Mesa's product, which can differ from the quotient c/255 by one ulp: 51 gives
+/// 0x3E4CCCCE, not 0x3E4CCCCD).
 fn push_unorm8(out: &mut Vec<u8>, c: u8, ty: PixelType) {
     match ty {
         PixelType::UnsignedByte => out.push(c),
         PixelType::UnsignedShort => out.extend((u16::from(c) * 257).to_ne_bytes()),
         PixelType::UnsignedInt => out.extend((u32::from(c) * 16_843_009).to_ne_bytes()),
-        PixelType::Float => out.extend((f32::from(c) / 255.0).to_ne_bytes()),
+        PixelType::Float => out.extend((f32::from(c) * (1.0f32 / 255.0)).to_ne_bytes()),
     }
 }
 
