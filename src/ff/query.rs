@@ -590,6 +590,12 @@ impl FixedState {
             r::TEXTURE_MAX_LEVEL => int(1000),
             r::TEXTURE_MIN_LOD => floats(&[-1000.0]),
             r::TEXTURE_MAX_LOD => floats(&[1000.0]),
+            // Not kept by the model either: their GL 1.5 defaults (Table 6.16; every
+            // texture is resident).
+            r::TEXTURE_WRAP_R => enm(super::texture::Wrap::Repeat),
+            r::TEXTURE_LOD_BIAS => floats(&[0.0]),
+            r::TEXTURE_PRIORITY => floats(&[1.0]),
+            r::TEXTURE_RESIDENT => boolean(true),
             _ => return Err(GlErrorKind::InvalidEnum),
         })
     }

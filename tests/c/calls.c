@@ -166,6 +166,15 @@ static void variants(void) {
   glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint[]){GL_LINEAR_MIPMAP_LINEAR});
   report("glTexParameteriv mag filter mipmap");
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_LINEAR);
+  GLint wrap_r = 0, resident = 0;
+  GLfloat priority = 0, bias = -1;
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_R, &wrap_r);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_RESIDENT, &resident);
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, &priority);
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, &bias);
+  printf("%-44s 0x%04x %d %.5f %.5f\n", "wrap r, resident, priority, lod bias", (unsigned)wrap_r,
+         resident, priority, bias);
+  report("glGetTexParameter of the defaults");
 
   static const GLfloat rows[16] = {1, 0, 0, 5, 0, 2, 0, 6, 0, 0, 3, 7, 0, 0, 0, 1};
   glMatrixMode(GL_MODELVIEW);
