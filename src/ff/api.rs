@@ -474,6 +474,8 @@ macro_rules! gl_entry_table {
         MultTransposeMatrixfARB = glMultTransposeMatrixfARB(Script; m: *const GLfloat);
         MultTransposeMatrixdARB = glMultTransposeMatrixdARB(Script; m: *const GLdouble);
         EdgeFlagv = glEdgeFlagv(Left; flag: *const GLboolean);
+        GetBufferPointerv = glGetBufferPointerv(Script; target: GLenum, pname: GLenum, params: *mut *mut c_void);
+        GetBufferPointervARB = glGetBufferPointervARB(Script; target: GLenum, pname: GLenum, params: *mut *mut c_void);
         }
     };
 }

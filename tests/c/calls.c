@@ -107,6 +107,17 @@ static void client_attrib_stack(void) {
   glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
   glEnd();
   report("glPushClientAttrib inside glBegin");
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, 16, NULL, GL_STATIC_DRAW);
+  GLvoid *mapped = glMapBuffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY);
+  glGetBufferPointerv(GL_ARRAY_BUFFER, GL_BUFFER_MAP_POINTER, &p);
+  printf("%-44s %d\n", "glGetBufferPointerv is the mapping", p == mapped && p != NULL);
+  glUnmapBuffer(GL_ARRAY_BUFFER);
+  glGetBufferPointerv(GL_ARRAY_BUFFER, GL_BUFFER_MAP_POINTER, &p);
+  printf("%-44s %d\n", "glGetBufferPointerv unmapped is NULL", p == NULL);
+  glGetBufferPointerv(GL_ARRAY_BUFFER, GL_BUFFER_SIZE, &p);
+  report("glGetBufferPointerv(GL_BUFFER_SIZE)");
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
   glDeleteBuffers(1, &buffer);
 }
 

@@ -153,6 +153,8 @@ glGetBufferSubDataARB(GL_ARRAY_BUFFER, 0, 4, (GLubyte[]){0, 0, 0, 0});
 glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_SIZE, (GLint[]){0});
 glGetBufferParameterivARB(GL_ARRAY_BUFFER, GL_BUFFER_SIZE, (GLint[]){0});
 glMapBuffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY);
+glGetBufferPointerv(GL_ARRAY_BUFFER, GL_BUFFER_MAP_POINTER, NULL);
+glGetBufferPointervARB(GL_ARRAY_BUFFER, GL_BUFFER_MAP_POINTER, NULL);
 glUnmapBuffer(GL_ARRAY_BUFFER);
 glMapBufferARB(GL_ARRAY_BUFFER, GL_READ_ONLY);
 glUnmapBufferARB(GL_ARRAY_BUFFER);
