@@ -151,3 +151,23 @@ fn pixel_literals_are_read_with_the_unpack_alignment() {
     .unwrap_err();
     assert!(short.to_string().contains("GL_UNPACK_ALIGNMENT"), "{short}");
 }
+
+#[test]
+fn queries_and_readbacks_run_at_once_inside_a_list() {
+    use crate::ff::Command;
+    // GL 1.5 §5.4: glGetTexImage and glPushClientAttrib are not compiled; the list
+    // holds only the copy.
+    let cmds = parse(
+        "glNewList(1, GL_COMPILE);\n\
+         glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, readback_0);\n\
+         glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);\n\
+         glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1);\n\
+         glEndList();\n\
+         glPopClientAttrib();",
+    )
+    .unwrap();
+    assert!(
+        matches!(cmds.as_slice(), [Command::GetTexImage(g)] if g.slot == 0),
+        "{cmds:?}"
+    );
+}
