@@ -416,3 +416,32 @@ fn a_dlopened_shadow_map_program_renders_as_on_mesa_and_replays() {
     assert_images_match("shadow", &ours, &mesa, within_3_on_99_percent(&mesa));
     assert_trace_replays("shadow", &exe, &[], "128x128");
 }
+
+/// tests/c/calls.c: pixel storage, the client attribute stack, the GL 1.1 texture calls
+/// (glGetTexImage's bytes with GL_PACK_ALIGNMENT, glTexSubImage1D, the 1D and 2D copies)
+/// and the integer and transposed variants print what Mesa prints, line by line; the
+/// framebuffer copied into a texture with glCopyTexSubImage2D and drawn back is Mesa's
+/// image within 3/255 on 99%; and the program's trace replays to its image.
+#[test]
+fn texture_calls_client_attrib_stack_and_variants_answer_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("calls");
+    assert!(
+        mesa_text.contains("the 17th push                                0x0503")
+            && mesa_text.contains("texel row 2                                  128 128 128 128 128 128 128 128 255 0 0 255"),
+        "Mesa printed something else:\n{mesa_text}"
+    );
+    assert_same_text(&mesa_text, &ours_text, 80, "the layer's answer");
+    // The copied quadrants fill the middle of the drawn texture: red, green, blue, yellow.
+    for channel in [0, 1, 2] {
+        assert!(count_dominant(&mesa, channel) > 1000, "channel {channel}");
+    }
+    assert_images_match("calls", &ours, &mesa, within_3_on_99_percent(&mesa));
+
+    assert_trace_replays("calls", &compile("calls", Linking::Direct), &[], "128x128");
+    let trace =
+        std::fs::read_to_string(work_dir("calls").join("calls.c")).expect("the trace was written");
+    assert!(
+        trace.contains("glPixelStorei(GL_UNPACK_ALIGNMENT, 1);"),
+        "the trace lacks the unpack alignment: {trace:.400}"
+    );
+}

@@ -119,3 +119,27 @@ fn replay_names_the_line_of_each_gl_error() {
     assert!(err.contains("replay-errors.c:5: glLineWidth:"), "{err}");
     assert!(!stdout.contains("GL error"), "{stdout}");
 }
+
+/// tests/scripts/every_call.c calls every implemented non-attribute entry point once;
+/// `fixedfunc replay` runs it on both pipelines without a GL error.
+#[test]
+fn every_implemented_call_replays_without_a_gl_error() {
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/scripts/every_call.c");
+    for pipeline in ["emulate", "native"] {
+        let out_png = support::output_dir().join(format!("every-call-{pipeline}.png"));
+        let out_str = out_png.to_str().expect("utf-8 path");
+        let (ok, stdout, err) = fixedfunc(&[
+            "replay",
+            script,
+            "--size",
+            "8x8",
+            "--pipeline",
+            pipeline,
+            "--out",
+            out_str,
+        ]);
+        assert!(ok, "{pipeline}: {err}");
+        assert!(stdout.contains("4 draws"), "{pipeline}: {stdout}");
+        assert!(!err.contains("GL error"), "{pipeline}: {err}");
+    }
+}

@@ -197,6 +197,7 @@ fn q_zero_and_negative_at_vertices_give_only_texel_colours() {
         "glClearColor(0, 0, 0, 1);
 glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 {}glBindTexture(GL_TEXTURE_2D, 1);
+glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
 glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, (GLubyte[]){{255,0,0, 0,255,0, 0,0,255, 255,255,255}});
 glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
 glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -45,7 +45,7 @@ macro_rules! elements {
     };
 }
 elements!(i8 => Byte, u8 => UByte, i16 => Short, u16 => UShort, i32 => Int, u32 => UInt,
-          f32 => Float, f64 => Double, c_void => Void);
+          f32 => Float, f64 => Double, c_void => Void, *mut c_void => Void);
 
 /// One argument of a C call.
 #[derive(Clone, Copy, Debug)]
@@ -227,6 +227,9 @@ impl Args for CCall<'_> {
         self.token(i)
             .and_then(T::from_gl_value)
             .ok_or(GlErrorKind::InvalidEnum)
+    }
+    fn token(&self, i: usize) -> Result<u32, GlErrorKind> {
+        CCall::token(self, i).ok_or(GlErrorKind::InvalidEnum)
     }
     fn pname(&self, i: usize, pnames: &[&'static str]) -> Result<&'static str, GlErrorKind> {
         let v = self.token(i).ok_or(GlErrorKind::InvalidEnum)?;

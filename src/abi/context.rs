@@ -14,7 +14,7 @@ use super::cargs::{CArg, CCall, ProgramMemory, CALLER_SLOT};
 use super::AbiError;
 use crate::ff::api::Entry;
 use crate::ff::front::{Client, Reply};
-use crate::ff::{Command, CurrentValues, GlErrorKind};
+use crate::ff::{Command, GlErrorKind};
 use crate::gpu::{Backend, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec};
 use crate::pipeline::emulate::EmulatedPipeline;
 use crate::pipeline::Pipeline;
@@ -115,9 +115,6 @@ pub struct Context {
     /// glBegin/glEnd), kept until glGetError as GL keeps its flag.
     error: Option<GlErrorKind>,
     warned: HashSet<Entry>,
-    /// GL_UNPACK_ALIGNMENT and GL_PACK_ALIGNMENT. GL default: 4.
-    unpack_alignment: usize,
-    pack_alignment: usize,
     /// The depth values of OSMesaGetDepthBuffer, kept until the next call to it.
     pub depth_copy: Vec<u8>,
     /// The largest texture name generated or bound: glGenTextures continues after it, as
@@ -160,8 +157,6 @@ impl Context {
             made: Vec::new(),
             error: None,
             warned: HashSet::new(),
-            unpack_alignment: 4,
-            pack_alignment: 4,
             depth_copy: Vec::new(),
             texture_max: 0,
             tracing: super::trace::enabled(),
@@ -268,21 +263,6 @@ impl Context {
                 self.gen_textures(args);
                 return Ret::None;
             }
-            Entry::IsTexture if !inside => {
-                let name = match args.first() {
-                    Some(CArg::Int(v)) => *v as u32,
-                    _ => 0,
-                };
-                let known = self
-                    .pipeline
-                    .as_ref()
-                    .is_some_and(|p| name != 0 && p.state().textures.contains_key(&name));
-                return Ret::Enum(u32::from(known));
-            }
-            Entry::PixelStorei | Entry::PixelStoref if !inside => {
-                self.pixel_store(args);
-                return Ret::None;
-            }
             _ if super::framebuffers::handles(entry) && !inside => {
                 let Some(p) = self.pipeline.as_ref() else {
                     return Ret::None;
@@ -304,49 +284,19 @@ impl Context {
                 self.record_error(GlErrorKind::InvalidOperation);
                 return Ret::Enum(0);
             }
-            _ if super::queries::handles(entry) && !inside => {
-                let Some(p) = self.pipeline.as_ref() else {
-                    return Ret::None;
-                };
-                let front = super::queries::ClientState {
-                    window: self.window_bits(),
-                    client: &self.client,
-                    pack_alignment: self.pack_alignment,
-                    unpack_alignment: self.unpack_alignment,
-                };
-                return match super::queries::answer(entry, args, p.state(), &front) {
-                    Ok(v) => Ret::Enum(v),
-                    Err(kind) => {
-                        self.record_error(kind);
-                        Ret::Enum(0)
-                    }
-                };
-            }
-            _ if super::queries::handles(entry) => {
-                self.record_error(GlErrorKind::InvalidOperation);
-                return Ret::Enum(0);
-            }
-            Entry::GetError
-            | Entry::Finish
-            | Entry::Flush
-            | Entry::GetString
-            | Entry::GenTextures
-            | Entry::IsTexture => {
-                self.record_error(GlErrorKind::InvalidOperation);
-                return Ret::None;
-            }
             _ => {}
         }
         let c = CCall {
             entry,
             args,
-            unpack_alignment: self.unpack_alignment,
+            unpack_alignment: self.client.pixel_store.unpack_alignment,
             unsupported: Default::default(),
         };
-        let current = self.pipeline.as_ref().map(|p| p.state().current);
         let mut made = std::mem::take(&mut self.made);
-        let current = current.unwrap_or(CurrentValues::DEFAULT);
-        let outcome = self.client.call(&c, &current, &ProgramMemory, &mut made);
+        let Some(p) = self.pipeline.as_ref() else {
+            return Ret::None;
+        };
+        let outcome = self.client.call(&c, p.state(), &ProgramMemory, &mut made);
         let reply = outcome.as_ref().cloned().unwrap_or(Reply::None);
         if let Err(kind) = outcome {
             if c.was_unsupported() && self.warned.insert(entry) {
@@ -361,8 +311,10 @@ impl Context {
             self.execute(&cmd);
         }
         self.made = made;
-        if entry == Entry::ReadPixels {
-            self.copy_read_pixels(args);
+        match entry {
+            Entry::ReadPixels => self.copy_pixels_out(args.get(6)),
+            Entry::GetTexImage => self.copy_pixels_out(args.get(4)),
+            _ => {}
         }
         match reply {
             Reply::None => Ret::Enum(0),
@@ -392,7 +344,7 @@ impl Context {
             return;
         };
         if self.tracing {
-            super::trace::command(cmd);
+            super::trace::command(cmd, self.client.pixel_store);
         }
         if let Command::BindTexture { name, .. } = cmd {
             self.texture_max = self.texture_max.max(*name);
@@ -433,44 +385,25 @@ impl Context {
         }
     }
 
-    /// glPixelStore{i,f}: GL_PACK_ALIGNMENT and GL_UNPACK_ALIGNMENT (1, 2, 4 or 8, else
-    /// INVALID_VALUE); other names: INVALID_ENUM.
-    fn pixel_store(&mut self, args: &[CArg]) {
-        const PACK_ALIGNMENT: i64 = 0x0D05;
-        const UNPACK_ALIGNMENT: i64 = 0x0CF5;
-        let (CArg::Int(pname), value) = (args[0], args[1]) else {
+    /// glReadPixels and glGetTexImage into the caller's memory: the bytes the pipeline
+    /// read, rows padded to GL_PACK_ALIGNMENT. A call that failed, or a glGetTexImage of a
+    /// level never specified, stored nothing and leaves the memory alone.
+    fn copy_pixels_out(&mut self, dst: Option<&CArg>) {
+        let Some(CArg::Ptr(dst, _)) = dst.copied() else {
             return;
         };
-        let value = match value {
-            CArg::Int(v) => v,
-            CArg::Float(f) if f.is_finite() => f.round() as i64,
-            _ => 0,
-        };
-        let slot = match pname {
-            PACK_ALIGNMENT => &mut self.pack_alignment,
-            UNPACK_ALIGNMENT => &mut self.unpack_alignment,
-            _ => return self.record_error(GlErrorKind::InvalidEnum),
-        };
-        match value {
-            1 | 2 | 4 | 8 => *slot = value as usize,
-            _ => self.record_error(GlErrorKind::InvalidValue),
-        }
-    }
-
-    /// glReadPixels into the caller's memory: the bytes the pipeline read, rows padded to
-    /// GL_PACK_ALIGNMENT.
-    fn copy_read_pixels(&mut self, args: &[CArg]) {
-        let Some(CArg::Ptr(dst, _)) = args.get(6).copied() else {
-            return;
-        };
-        let Some(r) = self.pipeline.as_ref().and_then(|p| p.readback(CALLER_SLOT)) else {
+        let Some(r) = self
+            .pipeline
+            .as_mut()
+            .and_then(|p| p.take_readback(CALLER_SLOT))
+        else {
             return;
         };
         if dst.is_null() {
             return;
         }
         let row = r.width as usize * r.format.components() * r.ty.size();
-        let align = self.pack_alignment;
+        let align = self.client.pixel_store.pack_alignment;
         let stride = row.div_ceil(align) * align;
         for (y, src) in r.bytes.chunks_exact(row.max(1)).enumerate() {
             // SAFETY: the program's buffer holds height rows of `stride` bytes, as GL
@@ -526,22 +459,6 @@ impl Context {
             for (s, d) in src.chunks_exact(4).zip(dst.chunks_exact_mut(bpp)) {
                 self.format.write(s, d);
             }
-        }
-    }
-
-    /// The window's bits: RGBA8 and the depth and stencil buffers made.
-    fn window_bits(&self) -> crate::ff::framebuffer::Bits {
-        crate::ff::framebuffer::Bits {
-            red: 8,
-            green: 8,
-            blue: 8,
-            alpha: 8,
-            depth: match self.depth {
-                DepthBits::D16 => 16,
-                DepthBits::D24 => 24,
-                DepthBits::D32F => 32,
-            },
-            stencil: if self.stencil { 8 } else { 0 },
         }
     }
 

@@ -7,8 +7,7 @@
 use super::cargs::CArg;
 use crate::ff::api::Entry;
 use crate::ff::framebuffer::{
-    texture_bits, Attached, AttachmentPoint, Bits, Completeness, FramebufferTarget,
-    MAX_COLOR_ATTACHMENTS,
+    texture_bits, Attached, AttachmentPoint, Bits, FramebufferTarget, MAX_COLOR_ATTACHMENTS,
 };
 use crate::ff::glenum::{gl, registry as r, GlEnum};
 use crate::ff::{FixedState, GlErrorKind};
@@ -22,24 +21,7 @@ pub struct Generated {
 
 /// Whether this module answers `entry`.
 pub fn handles(entry: Entry) -> bool {
-    use Entry as E;
-    matches!(
-        entry,
-        E::GenFramebuffers
-            | E::GenFramebuffersEXT
-            | E::GenRenderbuffers
-            | E::GenRenderbuffersEXT
-            | E::IsFramebuffer
-            | E::IsFramebufferEXT
-            | E::IsRenderbuffer
-            | E::IsRenderbufferEXT
-            | E::CheckFramebufferStatus
-            | E::CheckFramebufferStatusEXT
-            | E::GetFramebufferAttachmentParameteriv
-            | E::GetFramebufferAttachmentParameterivEXT
-            | E::GetRenderbufferParameteriv
-            | E::GetRenderbufferParameterivEXT
-    )
+    crate::ff::framebuffer::answered_by_front_end(entry)
 }
 
 fn int(args: &[CArg], i: usize) -> i64 {
@@ -91,13 +73,7 @@ pub fn answer(
             Ok(u32::from(name != 0 && f.renderbuffers.contains_key(&name)))
         }
         E::CheckFramebufferStatus | E::CheckFramebufferStatusEXT => {
-            let target = target(args)?;
-            Ok(match state.framebuffer_status(target) {
-                Completeness::Complete => r::FRAMEBUFFER_COMPLETE,
-                Completeness::IncompleteAttachment => r::FRAMEBUFFER_INCOMPLETE_ATTACHMENT,
-                Completeness::MissingAttachment => r::FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT,
-                Completeness::Unsupported => r::FRAMEBUFFER_UNSUPPORTED,
-            })
+            Ok(state.framebuffer_status(target(args)?).code())
         }
         E::GetRenderbufferParameteriv | E::GetRenderbufferParameterivEXT => {
             if int(args, 0) as u32 != r::RENDERBUFFER {

@@ -8,8 +8,9 @@
 //! - [`exports`]: one C function per row of the entry-point table (`ff::api`), expanded
 //!   from the table itself. Each converts its arguments ([`cargs`]) with the converters the
 //!   script reader uses (`ff::calls`, `ff::immediate`) and executes the Commands on the
-//!   current context's pipeline; GL's queries and client state that the model does not
-//!   hold (glGetError, glGetString, glPixelStore, glFinish) are answered here.
+//!   current context's pipeline. What only a C program can receive is answered here:
+//!   glGetError's flag, glGetString's strings, glGenTextures' names, the image at
+//!   glFinish; queries and pixel storage are the shared front end's (`ff::front_state`).
 //! - [`trace`]: with `FIXEDFUNC_TRACE=calls.c`, every executed call as the script
 //!   dialect, replayable with `fixedfunc replay`.
 //! - No Rust panic crosses the boundary: one is caught, printed on stderr, and recorded as
@@ -22,7 +23,6 @@ pub mod context;
 pub mod exports;
 pub mod framebuffers;
 pub mod osmesa;
-pub mod queries;
 pub mod strings;
 pub mod trace;
 

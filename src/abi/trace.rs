@@ -4,7 +4,10 @@
 //! the file is what the pipeline executed: client arrays, buffer and display-list data
 //! appear inlined where they were drawn (as glBegin/glEnd with the values read), texture
 //! data as compound literals, a recorded error as a comment. One file per process; each
-//! context and buffer size is announced in a comment.
+//! context and buffer size is announced in a comment. The pixel storage a command was read
+//! with is written before it whenever it differs from what the file last set
+//! (`glPixelStorei`), and pixel data is printed with its rows padded to that unpack
+//! alignment, so the script reads the data back as the program gave it.
 //!
 //! Writes are buffered and flushed where the program's image is complete (glFinish,
 //! glFlush, OSMesaMakeCurrent, OSMesaDestroyContext), not per call.
@@ -16,7 +19,8 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::sync::Mutex;
 
-use crate::ff::script::print;
+use crate::ff::pixel_store::PixelStore;
+use crate::ff::script::print_aligned;
 use crate::ff::Command;
 
 /// The environment variable naming the trace file.
@@ -24,13 +28,14 @@ pub const VARIABLE: &str = "FIXEDFUNC_TRACE";
 
 enum State {
     Unopened,
-    Writing(BufWriter<File>),
+    /// The file, and the pixel storage its calls have set so far.
+    Writing(BufWriter<File>, PixelStore),
     Off,
 }
 
 static TRACE: Mutex<State> = Mutex::new(State::Unopened);
 
-fn with_writer(f: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>) {
+fn with_writer(f: impl FnOnce(&mut BufWriter<File>, &mut PixelStore) -> std::io::Result<()>) {
     let Ok(mut state) = TRACE.lock() else {
         return;
     };
@@ -44,7 +49,7 @@ fn with_writer(f: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>) {
                         w,
                         "/* fixedfunc trace: the GL calls one program made, as executed. */"
                     );
-                    State::Writing(w)
+                    State::Writing(w, PixelStore::default())
                 }
                 Err(e) => {
                     eprintln!(
@@ -56,8 +61,8 @@ fn with_writer(f: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>) {
             },
         };
     }
-    if let State::Writing(w) = &mut *state {
-        if let Err(e) = f(w) {
+    if let State::Writing(w, store) = &mut *state {
+        if let Err(e) = f(w, store) {
             eprintln!("fixedfunc: writing the {VARIABLE} file failed: {e}; the trace stops here");
             *state = State::Off;
         }
@@ -70,21 +75,41 @@ pub fn enabled() -> bool {
     std::env::var_os(VARIABLE).is_some()
 }
 
-/// One executed command.
-pub fn command(cmd: &Command) {
-    let text = print(std::slice::from_ref(cmd));
-    with_writer(|w| w.write_all(text.as_bytes()));
+/// One executed command, read with the pixel storage `now`.
+pub fn command(cmd: &Command, now: PixelStore) {
+    with_writer(|w, written| {
+        let names = [
+            (
+                "GL_PACK_ALIGNMENT",
+                now.pack_alignment,
+                written.pack_alignment,
+            ),
+            (
+                "GL_UNPACK_ALIGNMENT",
+                now.unpack_alignment,
+                written.unpack_alignment,
+            ),
+        ];
+        for (name, value, before) in names {
+            if value != before {
+                writeln!(w, "glPixelStorei({name}, {value});")?;
+            }
+        }
+        *written = now;
+        let text = print_aligned(std::slice::from_ref(cmd), now.unpack_alignment);
+        w.write_all(text.as_bytes())
+    });
 }
 
 /// Writes out what is buffered: at glFinish, glFlush, a make-current and a context's end,
 /// the points where the program's image is complete.
 pub fn flush() {
-    with_writer(|w| w.flush());
+    with_writer(|w, _| w.flush());
 }
 
 /// A note: a context made current with a buffer of this size.
 pub fn buffer(width: i32, height: i32) {
-    with_writer(|w| {
+    with_writer(|w, _| {
         writeln!(
             w,
             "/* OSMesaMakeCurrent: a {width}x{height} buffer (replay with --size {width}x{height}) */"

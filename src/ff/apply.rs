@@ -124,7 +124,7 @@ impl FixedState {
                 }
             }
             Command::TexImage(t) => self.tex_image(t)?,
-            Command::TexSubImage2D(t) => self.tex_sub_image(t)?,
+            Command::TexSubImage2D(t) => self.tex_sub_image(t, TextureTarget::Texture2D)?,
             Command::CopyTexImage2D(c) => {
                 self.check_read_framebuffer(None)?;
                 self.copy_tex_image(c)?
@@ -283,6 +283,12 @@ impl FixedState {
                 self.draw(g)?
             }
             Command::PushAttrib(mask) => self.push_attrib(*mask)?,
+            Command::TexSubImage1D(t) => self.tex_sub_image(t, TextureTarget::Texture1D)?,
+            Command::CopyTexImage1D(c) => self.copy_tex_image_1d(c)?,
+            Command::CopyTexSubImage(c) => self.copy_tex_sub_image(c)?,
+            Command::GetTexImage(g) => {
+                self.check_get_tex_image(g)?;
+            }
             Command::PopAttrib => self.pop_attrib()?,
             Command::BindFramebuffer { .. }
             | Command::DeleteFramebuffers(_)
@@ -428,8 +434,8 @@ impl FixedState {
         Ok(())
     }
 
-    fn tex_sub_image(&mut self, t: &TexSubImage) -> GlResult {
-        let tex = self.bound_mut(TextureTarget::Texture2D)?;
+    fn tex_sub_image(&mut self, t: &TexSubImage, target: TextureTarget) -> GlResult {
+        let tex = self.bound_mut(target)?;
         let level = tex.level_mut(t.level).ok_or(GlError::invalid_operation(
             "TexSubImage2D on an unspecified level",
         ))?;

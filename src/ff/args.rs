@@ -81,6 +81,10 @@ pub trait Args {
     /// A token of the model enum `T`.
     fn enm<T: GlEnum>(&self, i: usize) -> Result<T, Self::Error>;
 
+    /// A token as its GL value, whatever it names (the queries check it against the
+    /// model: a token of the wrong set is then GL's INVALID_ENUM in either front end).
+    fn token(&self, i: usize) -> Result<u32, Self::Error>;
+
     /// A token naming one of `pnames` (a parameter name).
     fn pname(&self, i: usize, pnames: &[&'static str]) -> Result<&'static str, Self::Error>;
 

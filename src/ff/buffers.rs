@@ -171,6 +171,8 @@ impl Buffers {
                 | IsBufferARB
                 | GetBufferParameteriv
                 | GetBufferParameterivARB
+                | GetBufferPointerv
+                | GetBufferPointervARB
         )
     }
 
@@ -343,6 +345,20 @@ impl Buffers {
                 Reply::Write {
                     arg: 2,
                     bytes: value.to_ne_bytes().to_vec(),
+                }
+            }
+            // GL 1.5 §2.9.3: BUFFER_MAP_POINTER, the mapping's address, NULL unmapped.
+            GetBufferPointerv | GetBufferPointervARB => {
+                let name = self.bound_name(c)?;
+                c.pname(1, &["GL_BUFFER_MAP_POINTER"])?;
+                let b = self.object(name);
+                let address = match b.mapped {
+                    Some(_) => b.data.as_ptr() as usize,
+                    None => 0,
+                };
+                Reply::Write {
+                    arg: 2,
+                    bytes: address.to_ne_bytes().to_vec(),
                 }
             }
             _ => return Err(c.unsupported()),

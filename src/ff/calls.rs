@@ -22,6 +22,8 @@ fn volume<A: Args>(c: &A) -> Result<ViewVolume, A::Error> {
 /// [`Immediate`](super::immediate::Immediate)'s).
 pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
     for area in [
+        super::calls_variants::variants,
+        super::texture_calls::texture_calls,
         transform_and_fragment,
         lighting,
         texturing,
@@ -187,21 +189,21 @@ pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Erro
     }))
 }
 
-const LIGHT_VECTORS: &[&str] = &[
+pub(super) const LIGHT_VECTORS: &[&str] = &[
     "GL_AMBIENT",
     "GL_DIFFUSE",
     "GL_SPECULAR",
     "GL_POSITION",
     "GL_SPOT_DIRECTION",
 ];
-const LIGHT_SCALARS: &[&str] = &[
+pub(super) const LIGHT_SCALARS: &[&str] = &[
     "GL_SPOT_EXPONENT",
     "GL_SPOT_CUTOFF",
     "GL_CONSTANT_ATTENUATION",
     "GL_LINEAR_ATTENUATION",
     "GL_QUADRATIC_ATTENUATION",
 ];
-const MATERIAL_VECTORS: &[&str] = &[
+pub(super) const MATERIAL_VECTORS: &[&str] = &[
     "GL_AMBIENT",
     "GL_DIFFUSE",
     "GL_AMBIENT_AND_DIFFUSE",
@@ -282,7 +284,7 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
     }))
 }
 
-fn light_scalar(pname: &str, v: f32) -> LightParam {
+pub(super) fn light_scalar(pname: &str, v: f32) -> LightParam {
     match pname {
         "GL_SPOT_EXPONENT" => LightParam::SpotExponent(v),
         "GL_SPOT_CUTOFF" => LightParam::SpotCutoff(v),
@@ -292,7 +294,7 @@ fn light_scalar(pname: &str, v: f32) -> LightParam {
     }
 }
 
-fn material_vector(pname: &str, v: glam::Vec4) -> MaterialParam {
+pub(super) fn material_vector(pname: &str, v: glam::Vec4) -> MaterialParam {
     match pname {
         "GL_AMBIENT" => MaterialParam::Ambient(v),
         "GL_DIFFUSE" => MaterialParam::Diffuse(v),
@@ -509,7 +511,7 @@ fn env_target<A: Args>(c: &A) -> Result<(), A::Error> {
     c.pname(0, &["GL_TEXTURE_ENV"]).map(|_| ())
 }
 
-fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
+pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
     Ok(match c.pname(1, TEX_PARAMS)? {
         "GL_TEXTURE_MIN_FILTER" => TexParam::MinFilter(c.enm(2)?),
         "GL_TEXTURE_MAG_FILTER" => TexParam::MagFilter(c.enm(2)?),
@@ -523,7 +525,7 @@ fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
     })
 }
 
-fn tex_env<A: Args>(c: &A) -> Result<TexEnvParam, A::Error> {
+pub(super) fn tex_env<A: Args>(c: &A) -> Result<TexEnvParam, A::Error> {
     let pname = c.pname(1, ENV_PARAMS)?;
     // GL_SOURCE1_RGB, GL_SRC1_ALPHA, GL_OPERAND2_RGB: the first digit is the argument.
     let digit_arg = |p: &str| {

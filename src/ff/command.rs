@@ -388,4 +388,11 @@ pub enum Command {
     ReadBuffer(ColorBuffer),
     /// glGenerateMipmap of the active unit's texture: levels 1… from level 0.
     GenerateMipmap(TextureTarget),
+    // Texture calls of GL 1.1 beyond the 2D image (ff::texture_calls).
+    /// glTexSubImage1D (target TEXTURE_1D): `y` 0, `height` 1.
+    TexSubImage1D(TexSubImage),
+    /// glCopyTexImage1D (target TEXTURE_1D): a row of `width` pixels from (x, y); `height` 1.
+    CopyTexImage1D(CopyTexImage),
+    CopyTexSubImage(super::texture_calls::CopyTexSubImage),
+    GetTexImage(super::texture_calls::GetTexImage),
 }

@@ -368,6 +368,9 @@ pub struct Framebuffers {
     /// The window's draw and read buffers. GL default: FRONT (a single-buffered
     /// window, as Mesa's OSMesa buffer).
     pub window_draw: WindowBuffers,
+    /// The window's bits (GL_RED_BITS … GL_STENCIL_BITS with framebuffer 0 bound): the
+    /// pipelines read them from the target bound when they start.
+    pub window_bits: Bits,
     /// The largest framebuffer and renderbuffer names bound so far (glGen* continues
     /// after them, as Mesa's name tables do).
     pub max_framebuffer: u32,
@@ -655,6 +658,91 @@ pub fn never_compiled(entry: Entry) -> bool {
             | E::GenerateMipmap
             | E::GenerateMipmapEXT
     )
+}
+
+/// The framebuffer calls whose answer is a value or written memory: names (glGen*),
+/// glIs*, glCheckFramebufferStatus and the two getters. The C library answers them from
+/// the model (`abi::framebuffers`); a script names its objects and cannot read memory
+/// back, so there each checks its arguments ([`script_answer`]).
+pub fn answered_by_front_end(entry: Entry) -> bool {
+    use Entry as E;
+    matches!(
+        entry,
+        E::GenFramebuffers
+            | E::GenFramebuffersEXT
+            | E::GenRenderbuffers
+            | E::GenRenderbuffersEXT
+            | E::IsFramebuffer
+            | E::IsFramebufferEXT
+            | E::IsRenderbuffer
+            | E::IsRenderbufferEXT
+            | E::CheckFramebufferStatus
+            | E::CheckFramebufferStatusEXT
+            | E::GetFramebufferAttachmentParameteriv
+            | E::GetFramebufferAttachmentParameterivEXT
+            | E::GetRenderbufferParameteriv
+            | E::GetRenderbufferParameterivEXT
+    )
+}
+
+/// One of [`answered_by_front_end`]'s calls in a script: the arguments checked as GL
+/// checks them, glIs* and glCheckFramebufferStatus answered from the model.
+pub fn script_answer<A: super::args::Args>(
+    c: &A,
+    state: &super::FixedState,
+) -> Result<Result<super::front::Reply, super::GlErrorKind>, A::Error> {
+    use super::front::Reply;
+    use Entry as E;
+    let f = &state.framebuffers;
+    Ok(Ok(match c.entry() {
+        E::GenFramebuffers
+        | E::GenFramebuffersEXT
+        | E::GenRenderbuffers
+        | E::GenRenderbuffersEXT => {
+            c.count(2)?;
+            if c.i32(0)? < 0 {
+                return Err(c.bad(0, "a count of 0 or more"));
+            }
+            Reply::None
+        }
+        E::IsFramebuffer | E::IsFramebufferEXT => {
+            c.count(1)?;
+            let name = c.u32(0)?;
+            Reply::Value(u32::from(name != 0 && f.objects.contains_key(&name)))
+        }
+        E::IsRenderbuffer | E::IsRenderbufferEXT => {
+            c.count(1)?;
+            let name = c.u32(0)?;
+            Reply::Value(u32::from(name != 0 && f.renderbuffers.contains_key(&name)))
+        }
+        E::CheckFramebufferStatus | E::CheckFramebufferStatusEXT => {
+            c.count(1)?;
+            Reply::Value(state.framebuffer_status(c.enm(0)?).code())
+        }
+        E::GetFramebufferAttachmentParameteriv | E::GetFramebufferAttachmentParameterivEXT => {
+            c.count(4)?;
+            let _: FramebufferTarget = c.enm(0)?;
+            Reply::None
+        }
+        _ => {
+            c.count(3)?;
+            c.pname(0, &["GL_RENDERBUFFER"])?;
+            Reply::None
+        }
+    }))
+}
+
+impl Completeness {
+    /// The GLenum glCheckFramebufferStatus returns.
+    pub fn code(self) -> u32 {
+        use super::glenum::registry as r;
+        match self {
+            Completeness::Complete => r::FRAMEBUFFER_COMPLETE,
+            Completeness::IncompleteAttachment => r::FRAMEBUFFER_INCOMPLETE_ATTACHMENT,
+            Completeness::MissingAttachment => r::FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT,
+            Completeness::Unsupported => r::FRAMEBUFFER_UNSUPPORTED,
+        }
+    }
 }
 
 /// The kind and size of a texture image, for completeness.

@@ -9,20 +9,27 @@ use std::sync::Arc;
 use super::args::Args;
 use super::buffers::Buffers;
 use super::client::{ArrayData, ClientArrays, ClientEffect, ClientMemory};
+use super::client_attrib::ClientAttribStack;
 use super::command::Command;
 use super::error::GlErrorKind;
 use super::immediate::{decode, Immediate, Op};
 use super::lists::{compiled, follow, Item, ListMode, Lists, MAX_LIST_NESTING};
-use super::state::CurrentValues;
+use super::pixel_store::PixelStore;
+use super::state::{CurrentValues, FixedState};
 use crate::ff::api::{CType, Entry};
 
-/// Immediate mode, client arrays, display lists and buffer objects.
+/// Immediate mode, client arrays, display lists, buffer objects, pixel storage and the
+/// client attribute stack.
 #[derive(Debug, Default)]
 pub struct Client {
     pub immediate: Immediate,
     pub arrays: ClientArrays,
     pub lists: Lists,
     pub buffers: Buffers,
+    /// GL_PACK_ALIGNMENT and GL_UNPACK_ALIGNMENT: every pixel read or write of either
+    /// front end uses these.
+    pub pixel_store: PixelStore,
+    pub client_attrib: ClientAttribStack,
 }
 
 /// What a call gives back to its caller. The C library returns or writes it out; a script
@@ -71,17 +78,21 @@ impl ClientMemory for WithBuffers<'_> {
 }
 
 impl Client {
-    /// One call; the Commands it yields are appended to `out`. `current` is the model's
-    /// current values; `mem` reads what client arrays point at. Returns what the call
-    /// gives back.
+    /// One call; the Commands it yields are appended to `out`. `state` is the model as
+    /// the commands so far left it (current values, textures, what queries read); `mem`
+    /// reads what client arrays point at. Returns what the call gives back.
     pub fn call<A: Args>(
         &mut self,
         c: &A,
-        current: &CurrentValues,
+        state: &FixedState,
         mem: &dyn ClientMemory,
         out: &mut Vec<Command>,
     ) -> Result<Reply, A::Error> {
         let entry = c.entry();
+        let current = &state.current;
+        if super::front_state::handles(entry) {
+            return self.front_state_call(c, state, out);
+        }
         if let Some(value) = self.list_call(c)? {
             return Ok(Reply::Value(value));
         }

@@ -60,6 +60,7 @@ pub fn compiled(entry: Entry) -> bool {
             | Entry::DeleteLists
             | Entry::IsList
             | Entry::ReadPixels
+            | Entry::GetTexImage
             | Entry::DeleteTextures
             | Entry::VertexPointer
             | Entry::NormalPointer

@@ -48,6 +48,13 @@ pub mod state;
 pub mod texenv;
 pub mod texgen;
 pub mod texture;
+// Client pixel storage and attribute stack, the queries' answers, GL 1.0–1.5 variants.
+pub mod answer;
+pub mod calls_variants;
+pub mod client_attrib;
+pub mod front_state;
+pub mod pixel_store;
+pub mod texture_calls;
 
 #[cfg(test)]
 mod state_tests;

@@ -316,6 +316,12 @@ pnames! {
     RENDERBUFFER_BINDING => |s| int(s.framebuffers.renderbuffer as i32),
     MAX_COLOR_ATTACHMENTS => |_| int(i32::from(framebuffer::MAX_COLOR_ATTACHMENTS)),
     MAX_RENDERBUFFER_SIZE => |_| int(framebuffer::MAX_RENDERBUFFER_SIZE),
+    RED_BITS => |s| int(i32::from(s.draw_bits(s.framebuffers.window_bits).red)),
+    GREEN_BITS => |s| int(i32::from(s.draw_bits(s.framebuffers.window_bits).green)),
+    BLUE_BITS => |s| int(i32::from(s.draw_bits(s.framebuffers.window_bits).blue)),
+    ALPHA_BITS => |s| int(i32::from(s.draw_bits(s.framebuffers.window_bits).alpha)),
+    DEPTH_BITS => |s| int(i32::from(s.draw_bits(s.framebuffers.window_bits).depth)),
+    STENCIL_BITS => |s| int(i32::from(s.draw_bits(s.framebuffers.window_bits).stencil)),
     DRAW_BUFFER => |s| enm(s.framebuffers.color_buffer(framebuffer::FramebufferTarget::Draw)),
     READ_BUFFER => |s| enm(s.framebuffers.color_buffer(framebuffer::FramebufferTarget::Read)),
 
@@ -600,6 +606,12 @@ impl FixedState {
             r::TEXTURE_MAX_LEVEL => int(1000),
             r::TEXTURE_MIN_LOD => floats(&[-1000.0]),
             r::TEXTURE_MAX_LOD => floats(&[1000.0]),
+            // Not kept by the model either: their GL 1.5 defaults (Table 6.16; every
+            // texture is resident).
+            r::TEXTURE_WRAP_R => enm(super::texture::Wrap::Repeat),
+            r::TEXTURE_LOD_BIAS => floats(&[0.0]),
+            r::TEXTURE_PRIORITY => floats(&[1.0]),
+            r::TEXTURE_RESIDENT => boolean(true),
             _ => return Err(GlErrorKind::InvalidEnum),
         })
     }

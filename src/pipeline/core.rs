@@ -37,6 +37,7 @@ impl Core {
             width: v[2],
             height: v[3],
         }));
+        core.state.framebuffers.window_bits = super::framebuffers::bound_bits(ctx.gl());
         let _ = core.state.apply(&Command::Scissor(crate::ff::ScissorBox {
             x: v[0],
             y: v[1],
@@ -82,6 +83,12 @@ pub struct PathPipeline<P: Issue> {
 impl<P: Issue> PathPipeline<P> {
     pub(crate) fn from_parts(core: Core, path: P) -> Self {
         PathPipeline { core, path }
+    }
+
+    /// Takes the bytes of readback slot `slot` out (the C library's caller slot is filled
+    /// anew by each glReadPixels or glGetTexImage that stores something).
+    pub fn take_readback(&mut self, slot: u32) -> Option<Readback> {
+        self.core.readbacks.remove(&slot)
     }
 }
 

@@ -23,10 +23,53 @@ use glow::HasContext;
 
 use super::PipelineError;
 use crate::ff::framebuffer::{
-    Attached, AttachmentPoint, ColorBuffer, FramebufferTarget, RenderbufferFormat,
+    Attached, AttachmentPoint, Bits, ColorBuffer, FramebufferTarget, RenderbufferFormat,
 };
 use crate::ff::glenum::gl;
 use crate::ff::{Command, FixedState, TextureTarget};
+
+/// The bits of the framebuffer bound now, which stands for the window: its colour,
+/// depth and stencil attachments' sizes (a default framebuffer's FRONT_LEFT, DEPTH and
+/// STENCIL).
+pub fn bound_bits(gl: &glow::Context) -> Bits {
+    let bound = unsafe { gl.get_parameter_i32(glow::DRAW_FRAMEBUFFER_BINDING) } != 0;
+    let (color, depth, stencil) = if bound {
+        (
+            glow::COLOR_ATTACHMENT0,
+            glow::DEPTH_ATTACHMENT,
+            glow::STENCIL_ATTACHMENT,
+        )
+    } else {
+        (glow::BACK_LEFT, glow::DEPTH, glow::STENCIL)
+    };
+    let size = |attachment: u32, pname: u32| -> u8 {
+        let kind = unsafe {
+            gl.get_framebuffer_attachment_parameter_i32(
+                glow::DRAW_FRAMEBUFFER,
+                attachment,
+                glow::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
+            )
+        };
+        if kind == glow::NONE as i32 {
+            return 0;
+        }
+        let v = unsafe {
+            gl.get_framebuffer_attachment_parameter_i32(glow::DRAW_FRAMEBUFFER, attachment, pname)
+        };
+        u8::try_from(v).unwrap_or(0)
+    };
+    let bits = Bits {
+        red: size(color, glow::FRAMEBUFFER_ATTACHMENT_RED_SIZE),
+        green: size(color, glow::FRAMEBUFFER_ATTACHMENT_GREEN_SIZE),
+        blue: size(color, glow::FRAMEBUFFER_ATTACHMENT_BLUE_SIZE),
+        alpha: size(color, glow::FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE),
+        depth: size(depth, glow::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE),
+        stencil: size(stencil, glow::FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE),
+    };
+    // A query GL refused (no such attachment) leaves an error the pipeline must not see.
+    unsafe { while gl.get_error() != glow::NO_ERROR {} }
+    bits
+}
 
 /// The GL objects of the model's framebuffers and renderbuffers.
 #[derive(Default)]

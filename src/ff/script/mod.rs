@@ -21,7 +21,7 @@ mod parse;
 mod print;
 
 pub use parse::{parse, parse_lines};
-pub use print::print;
+pub use print::{print, print_aligned};
 
 /// A script error, with the line and the valid alternatives where there are any.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -55,6 +55,10 @@ pub enum ScriptError {
         name: String,
         expected: Vec<&'static str>,
     },
+    /// A call of the table the layer leaves out (selection, feedback, evaluators…): the
+    /// C library exports it and records GL_INVALID_OPERATION; a script stops here.
+    #[error("line {line}: {call} is not implemented by fixedfunc (the C library records GL_INVALID_OPERATION for it)")]
+    NotImplemented { line: usize, call: &'static str },
     #[error("line {line}: {call} takes {expected} arguments, found {found}")]
     ArgCount {
         line: usize,
@@ -89,5 +93,7 @@ fn closest(names: &[&str]) -> String {
     names.iter().take(5).copied().collect::<Vec<_>>().join(", ")
 }
 
+#[cfg(test)]
+mod every_row;
 #[cfg(test)]
 mod tests;

@@ -219,11 +219,27 @@ impl<'a> Cursor<'_, 'a> {
         }
         let ty = self.ident("an array type such as GLfloat")?;
         self.eat(Tok::LBracket, "'['")?;
+        // C99 allows the length: (GLint[4]){0}.
+        if let Some(Tok::Num(_)) = self.peek() {
+            self.pos += 1;
+        }
         self.eat(Tok::RBracket, "']'")?;
         self.eat(Tok::RParen, "')'")?;
         self.eat(Tok::LBrace, "'{'")?;
         let mut values = Vec::new();
         while self.peek() != Some(Tok::RBrace) {
+            // A GL token is its value, as in C: (GLint[]){GL_NEAREST}.
+            if let Some(Tok::Ident(name)) = self.peek() {
+                if crate::ff::glenum::value_of(name).is_some() {
+                    self.pos += 1;
+                    values.push((false, name));
+                    if self.peek() == Some(Tok::Comma) {
+                        self.pos += 1;
+                        continue;
+                    }
+                    break;
+                }
+            }
             values.push(self.number(false)?);
             if self.peek() == Some(Tok::Comma) {
                 self.pos += 1;
@@ -270,8 +286,12 @@ fn describe(t: Tok<'_>) -> String {
     t.describe()
 }
 
-/// C integer literal: decimal or hex, optional u/U/l/L suffixes.
+/// C integer literal: decimal or hex, optional u/U/l/L suffixes; a GL token in an array
+/// is its value.
 fn int_literal(text: &str) -> Option<i64> {
+    if text.starts_with("GL_") {
+        return crate::ff::glenum::value_of(text).map(i64::from);
+    }
     let t = text.trim_end_matches(['u', 'U', 'l', 'L']);
     if let Some(hex) = t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
         i64::from_str_radix(hex, 16).ok()
@@ -346,6 +366,8 @@ pub(super) struct Call<'s, 'a> {
     pub(super) name: &'static str,
     pub(super) entry: Entry,
     args: &'s [Arg<'a>],
+    /// GL_UNPACK_ALIGNMENT when the call is read: pixel arrays have rows padded to it.
+    unpack_alignment: usize,
 }
 
 impl Call<'_, '_> {
@@ -562,6 +584,12 @@ impl Args for Call<'_, '_> {
             .ok_or_else(|| self.unknown(i, T::names()))
     }
 
+    fn token(&self, i: usize) -> Res<u32> {
+        self.name(i)
+            .and_then(|(n, off)| crate::ff::glenum::value_of(n)?.checked_add(off))
+            .ok_or_else(|| self.bad(i, "a GL token"))
+    }
+
     /// A GL token naming one of `pnames` (a parameter name).
     fn pname(&self, i: usize, pnames: &[&'static str]) -> Res<&'static str> {
         self.name(i)
@@ -624,8 +652,60 @@ impl Args for Call<'_, '_> {
         }
     }
 
-    /// Pixel data: NULL, or a compound literal whose element type gives the byte encoding.
-    fn pixels(&self, i: usize, _shape: PixelShape) -> Res<Option<Arc<[u8]>>> {
+    /// Pixel data: NULL, or a compound literal whose element type gives the byte encoding,
+    /// its rows padded to GL_UNPACK_ALIGNMENT as a C program's are (GL 1.5 §3.6.4).
+    fn pixels(&self, i: usize, shape: PixelShape) -> Res<Option<Arc<[u8]>>> {
+        let Some(bytes) = self.literal_bytes(i)? else {
+            return Ok(None);
+        };
+        let (w, h) = (shape.width.max(0) as usize, shape.height.max(0) as usize);
+        let row = w * shape.format.components() * shape.ty.size();
+        let stride = row.div_ceil(self.unpack_alignment) * self.unpack_alignment;
+        if h < 2 || stride == row {
+            return Ok(Some(Arc::from(bytes)));
+        }
+        if bytes.len() < stride * (h - 1) + row {
+            return Err(self.bad(
+                i,
+                "pixel rows padded to GL_UNPACK_ALIGNMENT (glPixelStorei sets it; 4 by default)",
+            ));
+        }
+        let rows: Vec<u8> = (0..h)
+            .flat_map(|y| bytes[y * stride..y * stride + row].iter().copied())
+            .collect();
+        Ok(Some(Arc::from(rows)))
+    }
+    fn array_as(&self, i: usize, n: usize, _ty: CType) -> Res<Vec<f64>> {
+        self.array_f64(i, n)
+    }
+    fn deferred(&self, _err: &ScriptError) -> Option<GlErrorKind> {
+        None
+    }
+    fn array_data(&self, i: usize) -> Res<ArrayData> {
+        Ok(self
+            .literal_bytes(i)?
+            .map_or(ArrayData::Null, |b| ArrayData::Bytes(Arc::from(b))))
+    }
+    fn offset(&self, i: usize) -> Res<usize> {
+        if let Some(("NULL", 0)) = self.name(i) {
+            return Ok(0);
+        }
+        usize::try_from(self.int(i)?).map_err(|_| self.bad(i, "a byte offset of 0 or more"))
+    }
+    fn slot(&self, i: usize) -> Res<u32> {
+        self.name(i)
+            .filter(|(_, off)| *off == 0)
+            .and_then(|(n, _)| n.strip_prefix("readback_"))
+            .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+            .and_then(|d| d.parse().ok())
+            .ok_or_else(|| self.bad(i, "a readback slot readback_<n>"))
+    }
+}
+
+impl Call<'_, '_> {
+    /// The bytes of a compound literal (its element type gives the encoding), or `None`
+    /// for NULL.
+    fn literal_bytes(&self, i: usize) -> Res<Option<Vec<u8>>> {
         if let Some(("NULL", 0)) = self.name(i) {
             return Ok(None);
         }
@@ -673,38 +753,7 @@ impl Args for Call<'_, '_> {
             };
             ok.ok_or_else(|| self.bad(i, "array values that fit the element type"))?;
         }
-        Ok(Some(Arc::from(bytes)))
-    }
-    fn array_as(&self, i: usize, n: usize, _ty: CType) -> Res<Vec<f64>> {
-        self.array_f64(i, n)
-    }
-    fn deferred(&self, _err: &ScriptError) -> Option<GlErrorKind> {
-        None
-    }
-    fn array_data(&self, i: usize) -> Res<ArrayData> {
-        let shape = PixelShape {
-            width: 0,
-            height: 0,
-            format: PixelFormat::Rgba,
-            ty: PixelType::UnsignedByte,
-        };
-        Ok(self
-            .pixels(i, shape)?
-            .map_or(ArrayData::Null, ArrayData::Bytes))
-    }
-    fn offset(&self, i: usize) -> Res<usize> {
-        if let Some(("NULL", 0)) = self.name(i) {
-            return Ok(0);
-        }
-        usize::try_from(self.int(i)?).map_err(|_| self.bad(i, "a byte offset of 0 or more"))
-    }
-    fn slot(&self, i: usize) -> Res<u32> {
-        self.name(i)
-            .filter(|(_, off)| *off == 0)
-            .and_then(|(n, _)| n.strip_prefix("readback_"))
-            .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
-            .and_then(|d| d.parse().ok())
-            .ok_or_else(|| self.bad(i, "a readback slot readback_<n>"))
+        Ok(Some(bytes))
     }
 }
 
@@ -735,23 +784,28 @@ pub fn parse_lines(src: &str) -> Result<Vec<(usize, Command)>, ScriptError> {
             continue;
         }
         let stmt = cur.statement()?;
-        let entry = Entry::from_name(stmt.name)
-            .filter(|e| e.form() == Form::Script)
-            .ok_or_else(|| ScriptError::UnknownCall {
+        let entry = Entry::from_name(stmt.name).ok_or_else(|| ScriptError::UnknownCall {
+            line: stmt.line,
+            name: stmt.name.to_string(),
+            expected: ranked(stmt.name, &Entry::script_names()),
+        })?;
+        if entry.form() == Form::Left {
+            return Err(ScriptError::NotImplemented {
                 line: stmt.line,
-                name: stmt.name.to_string(),
-                expected: ranked(stmt.name, &Entry::script_names()),
-            })?;
+                call: entry.name(),
+            });
+        }
         let call = Call {
             line: stmt.line,
             name: entry.name(),
             entry,
             args: &stmt.args,
+            unpack_alignment: client.pixel_store.unpack_alignment,
         };
         if entry == Entry::Begin {
             open_line = stmt.line;
         }
-        client.call(&call, &state.current, &BytesOnly, &mut made)?;
+        client.call(&call, &state, &BytesOnly, &mut made)?;
         for cmd in made.drain(..) {
             // Errors are the executing pipeline's to report; here only the values count.
             let _ = state.apply(&cmd);

@@ -12,13 +12,38 @@ use super::names::{Family, GlEnum};
 use crate::ff::api::Entry;
 use crate::ff::*;
 
-/// Prints commands as a script.
+/// Prints commands as a script (read back with GL's default GL_UNPACK_ALIGNMENT, 4).
 pub fn print(cmds: &[Command]) -> String {
+    print_aligned(cmds, 4)
+}
+
+/// Prints commands as a script read with GL_UNPACK_ALIGNMENT `unpack_alignment`: pixel
+/// data (held as tightly packed rows) is printed with each row padded to it by zeros
+/// (GL 1.5 §3.6.4), so that parsing reads the same rows back.
+pub fn print_aligned(cmds: &[Command], unpack_alignment: usize) -> String {
     let mut out = String::new();
     for c in cmds {
-        command(&mut out, c);
+        command(&mut out, c, unpack_alignment);
     }
     out
+}
+
+/// `data`'s rows of `row` bytes each padded to `alignment` (the last row is not padded:
+/// GL reads only its pixels).
+fn padded(data: &[u8], row: usize, alignment: usize) -> std::borrow::Cow<'_, [u8]> {
+    let stride = crate::ff::pixel_store::PixelStore::stride(row, alignment);
+    if row == 0 || stride == row || data.len() <= row {
+        return std::borrow::Cow::Borrowed(data);
+    }
+    let mut out = Vec::with_capacity(data.len() / row * stride);
+    let rows: Vec<&[u8]> = data.chunks(row).collect();
+    for (k, r) in rows.iter().enumerate() {
+        out.extend_from_slice(r);
+        if k + 1 < rows.len() {
+            out.resize(out.len() + stride - row, 0);
+        }
+    }
+    std::borrow::Cow::Owned(out)
 }
 
 fn f(v: f32) -> String {
@@ -79,10 +104,10 @@ fn line(out: &mut String, s: std::fmt::Arguments) {
     out.push_str(";\n");
 }
 
-fn command(out: &mut String, c: &Command) {
+fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
     match c {
         Command::Draw(g) => draw(out, g),
-        Command::TexImage(t) => tex_image(out, t),
+        Command::TexImage(t) => tex_image(out, t, unpack_alignment),
         Command::TexSubImage2D(t) => line(
             out,
             format_args!(
@@ -93,6 +118,26 @@ fn command(out: &mut String, c: &Command) {
                 t.y,
                 t.width,
                 t.height,
+                n(t.format),
+                n(t.ty),
+                pixels(
+                    t.ty,
+                    &padded(
+                        &t.data,
+                        t.width.max(0) as usize * t.format.components() * t.ty.size(),
+                        unpack_alignment
+                    )
+                )
+            ),
+        ),
+        Command::TexSubImage1D(t) => line(
+            out,
+            format_args!(
+                "{}(GL_TEXTURE_1D, {}, {}, {}, {}, {}, {})",
+                Entry::TexSubImage1D,
+                t.level,
+                t.x,
+                t.width,
                 n(t.format),
                 n(t.ty),
                 pixels(t.ty, &t.data)
@@ -441,10 +486,52 @@ fn call(c: &Command) -> String {
         Command::DrawBuffer(b) => format!("{}({})", Entry::DrawBuffer, n(*b)),
         Command::ReadBuffer(b) => format!("{}({})", Entry::ReadBuffer, n(*b)),
         Command::GenerateMipmap(t) => format!("{}({})", Entry::GenerateMipmap, n(*t)),
+        Command::CopyTexImage1D(c) => format!(
+            "{}(GL_TEXTURE_1D, {}, {}, {}, {}, {}, {})",
+            Entry::CopyTexImage1D,
+            c.level,
+            n(c.internal_format),
+            c.x,
+            c.y,
+            c.width,
+            c.border
+        ),
+        Command::CopyTexSubImage(c) => match c.target {
+            TextureTarget::Texture1D => format!(
+                "{}(GL_TEXTURE_1D, {}, {}, {}, {}, {})",
+                Entry::CopyTexSubImage1D,
+                c.level,
+                c.xoffset,
+                c.x,
+                c.y,
+                c.width
+            ),
+            TextureTarget::Texture2D => format!(
+                "{}(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {})",
+                Entry::CopyTexSubImage2D,
+                c.level,
+                c.xoffset,
+                c.yoffset,
+                c.x,
+                c.y,
+                c.width,
+                c.height
+            ),
+        },
+        Command::GetTexImage(g) => format!(
+            "{}({}, {}, {}, {}, readback_{})",
+            Entry::GetTexImage,
+            n(g.target),
+            g.level,
+            n(g.format),
+            n(g.ty),
+            g.slot
+        ),
         // Printed by `command`.
         Command::Draw(_)
         | Command::TexImage(_)
         | Command::TexSubImage2D(_)
+        | Command::TexSubImage1D(_)
         | Command::Raise { .. } => String::new(),
     }
 }
@@ -666,10 +753,11 @@ fn pixels(ty: PixelType, data: &[u8]) -> String {
     format!("({name}[]){{{}}}", v.join(", "))
 }
 
-fn tex_image(out: &mut String, t: &TexImage) {
+fn tex_image(out: &mut String, t: &TexImage, unpack_alignment: usize) {
+    let row = t.width.max(0) as usize * t.format.components() * t.ty.size();
     let data = match &t.data {
         TexData::Null => "NULL".to_string(),
-        TexData::Bytes(d) => pixels(t.ty, d),
+        TexData::Bytes(d) => pixels(t.ty, &padded(d, row, unpack_alignment)),
         TexData::Readback(slot) => format!("readback_{slot}"),
         TexData::ConvertedDepth { slot, ty, rule } => {
             let name = super::parse::DEPTH_HELPERS

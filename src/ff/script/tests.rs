@@ -88,6 +88,7 @@ fn error_table() {
         ("glClear(GL_COLOR_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);", 1, "UnknownEnum"),
         ("\n\n\n  @", 4, "UnexpectedChar"),
         ("/* a\n b", 1, "UnterminatedComment"),
+        ("glClear(0);\nglRenderMode(GL_SELECT);", 2, "NotImplemented"),
     ];
     for (src, want_line, want_kind) in table {
         let e = err(src);
@@ -102,6 +103,7 @@ fn error_table() {
             ScriptError::BadArgument { line, .. } => (*line, "BadArgument"),
             ScriptError::ArrayLength { line, .. } => (*line, "ArrayLength"),
             ScriptError::Immediate { line, .. } => (*line, "Immediate"),
+            ScriptError::NotImplemented { line, .. } => (*line, "NotImplemented"),
         };
         assert_eq!((line, kind), (want_line, want_kind), "{src:?}: {e}");
         assert!(

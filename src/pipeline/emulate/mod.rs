@@ -19,6 +19,7 @@ pub mod polygon;
 pub mod program;
 pub mod shadergen;
 pub mod sync;
+pub mod texture_calls;
 pub mod textures;
 pub mod uniforms;
 
@@ -210,6 +211,14 @@ impl Issue for Emulate {
             }
             Command::ReadPixels(r) => {
                 core.readbacks.insert(r.slot, read_pixels(gl, r));
+            }
+            Command::TexSubImage1D(t) => self.textures.sub_image_1d(ctx, state, t)?,
+            Command::CopyTexImage1D(c) => self.textures.copy_image_1d(ctx, state, c)?,
+            Command::CopyTexSubImage(c) => self.textures.copy_sub_image(ctx, state, c)?,
+            Command::GetTexImage(g) => {
+                if let Some(r) = self.textures.get_image(gl, state, g)? {
+                    core.readbacks.insert(g.slot, r);
+                }
             }
             // The model restored the groups; the raster state and uniforms follow it at the
             // next draw, the texture objects' parameters now.

@@ -79,7 +79,7 @@ impl Textures {
     }
 
     /// Binds the GL object for `id` on a scratch unit (the last one) for editing.
-    fn edit(&mut self, gl: &glow::Context, id: TextureId) -> Result<u32, PipelineError> {
+    pub(super) fn edit(&mut self, gl: &glow::Context, id: TextureId) -> Result<u32, PipelineError> {
         let t = self.object(gl, id)?;
         let target = gl_target(id.0);
         unsafe {
@@ -288,7 +288,7 @@ fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel) {
 /// GENERATE_MIPMAP (GL 1.4): a change to the base level rebuilds levels 1..=p. The model
 /// has recorded those levels (`TextureObject::base_level_changed`); glGenerateMipmap makes
 /// their texels, with MAX_LEVEL already covering them.
-fn generate_mipmap(gl: &glow::Context, target: u32, object: &TextureObject, level: i32) {
+pub(super) fn generate_mipmap(gl: &glow::Context, target: u32, object: &TextureObject, level: i32) {
     if level == 0 && object.params.generate_mipmap && object.level(0).is_some() {
         unsafe { gl.generate_mipmap(target) };
     }
@@ -298,7 +298,7 @@ fn generate_mipmap(gl: &glow::Context, target: u32, object: &TextureObject, leve
 /// is the highest level the model holds: a texture the model calls complete
 /// (`TextureObject::completeness`) is complete for GL too; one it calls incomplete is
 /// never sampled (its unit leaves the key), whatever GL would make of it.
-fn apply_params(gl: &glow::Context, target: u32, object: &TextureObject) {
+pub(super) fn apply_params(gl: &glow::Context, target: u32, object: &TextureObject) {
     let p = &object.params;
     let max_level = object.levels.iter().rposition(Option::is_some).unwrap_or(0) as i32;
     let (_, swizzle) = object.format().map(conv::tex_format).unwrap_or((

@@ -26,7 +26,7 @@ use crate::pipeline::PipelineError;
 
 use super::bindings as gl;
 use super::bindings::types::GLbitfield;
-use super::{conv, draw, lighting, readback, texenv, textures, Native};
+use super::{conv, draw, lighting, readback, texenv, texture_calls, textures, Native};
 use crate::pipeline::core::Core;
 
 impl Native {
@@ -199,6 +199,23 @@ impl Native {
             }
             // The model rejects it before anything is issued.
             Command::Raise { .. } => {}
+            Command::TexSubImage1D(t) => {
+                texture_calls::tex_sub_image_1d(g, t);
+                core.counters.texture_uploads += 1;
+            }
+            Command::CopyTexImage1D(c) => {
+                texture_calls::copy_tex_image_1d(g, c);
+                core.counters.texture_uploads += 1;
+            }
+            Command::CopyTexSubImage(c) => {
+                texture_calls::copy_tex_sub_image(g, c);
+                core.counters.texture_uploads += 1;
+            }
+            Command::GetTexImage(r) => {
+                if let Some(read) = texture_calls::get_tex_image(g, &core.state, r) {
+                    core.readbacks.insert(r.slot, read);
+                }
+            }
             Command::Draw(geometry) => {
                 if core.state.register_combiners.enabled {
                     return Err(PipelineError::Unsupported {

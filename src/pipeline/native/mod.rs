@@ -20,6 +20,7 @@ mod execute;
 mod lighting;
 mod readback;
 mod texenv;
+mod texture_calls;
 mod textures;
 
 use glow::HasContext;

@@ -11,6 +11,8 @@ glOrtho(-2, 2, -1, 1, -4, 4);
 glMatrixMode(GL_MODELVIEW);
 glLoadIdentity();
 glBindTexture(GL_TEXTURE_2D, 1);
+/* Rows of 2 texels are not 4-byte aligned: the pixels are packed. */
+glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
 glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, (GLubyte[]){96,48,32, 32,96,48, 48,32,96, 96,96,32});
 glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
 glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);

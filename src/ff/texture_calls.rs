@@ -1,0 +1,309 @@
+//! The texture calls of GL 1.1 beyond the 2D image and sub-image: glTexSubImage1D,
+//! glCopyTexImage1D, glCopyTexSubImage1D, glCopyTexSubImage2D (GL 1.5 §3.8.2) and
+//! glGetTexImage (§6.1.4): their Commands, converters and model rules. A copy leaves the
+//! level's texels known only to the GPU (the model's CPU copy goes); glGetTexImage reads a
+//! level into a readback slot (a C program's memory, packed with GL_PACK_ALIGNMENT, or a
+//! script's `readback_<n>`).
+//!
+//! Errors, in Mesa's order: a target other than the call's INVALID_ENUM; a level outside
+//! [0, log2(MAX_TEXTURE_SIZE)] INVALID_VALUE; a negative size INVALID_VALUE; a sub-image
+//! of a level never specified INVALID_OPERATION; a region outside the level INVALID_VALUE.
+//! glGetTexImage: STENCIL_INDEX INVALID_ENUM, DEPTH_COMPONENT of a colour texture or a
+//! colour format of a depth texture INVALID_OPERATION; a level never specified stores
+//! nothing, without an error (Mesa).
+
+use super::api::Entry;
+use super::args::{Args, PixelShape};
+use super::error::{GlError, GlResult};
+use super::state::FixedState;
+use super::texture::{
+    check_format_pair, check_image_size, PixelFormat, PixelType, TexLevel, TextureTarget,
+    MAX_TEXTURE_LEVEL,
+};
+use super::{Command, CopyTexImage, TexSubImage};
+
+/// glCopyTexSubImage1D/2D: the framebuffer rectangle at (x, y) into the bound texture's
+/// level at (xoffset, yoffset) (1D: yoffset 0, height 1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct CopyTexSubImage {
+    pub target: TextureTarget,
+    pub level: i32,
+    pub xoffset: i32,
+    pub yoffset: i32,
+    pub x: i32,
+    pub y: i32,
+    pub width: i32,
+    pub height: i32,
+}
+
+/// glGetTexImage of the bound texture's level, into readback slot `slot`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct GetTexImage {
+    pub target: TextureTarget,
+    pub level: i32,
+    pub format: PixelFormat,
+    pub ty: PixelType,
+    pub slot: u32,
+}
+
+fn target<A: Args>(c: &A, want: TextureTarget) -> Result<TextureTarget, A::Error> {
+    let t: TextureTarget = c.enm(0)?;
+    if t == want {
+        Ok(t)
+    } else {
+        Err(c.unknown(
+            0,
+            vec![match want {
+                TextureTarget::Texture1D => "GL_TEXTURE_1D",
+                TextureTarget::Texture2D => "GL_TEXTURE_2D",
+            }],
+        ))
+    }
+}
+
+/// The calls' Commands (`Ok(None)` for other calls).
+pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
+    Ok(Some(match c.entry() {
+        Entry::TexSubImage1D => {
+            c.count(7)?;
+            target(c, TextureTarget::Texture1D)?;
+            let shape = PixelShape {
+                width: c.i32(3)?,
+                height: 1,
+                format: c.enm(4)?,
+                ty: c.enm(5)?,
+            };
+            Command::TexSubImage1D(TexSubImage {
+                level: c.i32(1)?,
+                x: c.i32(2)?,
+                y: 0,
+                width: shape.width,
+                height: 1,
+                format: shape.format,
+                ty: shape.ty,
+                data: c
+                    .pixels(6, shape)?
+                    .ok_or_else(|| c.bad(6, "a pixel array"))?,
+            })
+        }
+        Entry::CopyTexImage1D => {
+            c.count(7)?;
+            target(c, TextureTarget::Texture1D)?;
+            Command::CopyTexImage1D(CopyTexImage {
+                level: c.i32(1)?,
+                internal_format: c.enm(2)?,
+                x: c.i32(3)?,
+                y: c.i32(4)?,
+                width: c.i32(5)?,
+                height: 1,
+                border: c.i32(6)?,
+            })
+        }
+        Entry::CopyTexSubImage1D => {
+            c.count(6)?;
+            Command::CopyTexSubImage(CopyTexSubImage {
+                target: target(c, TextureTarget::Texture1D)?,
+                level: c.i32(1)?,
+                xoffset: c.i32(2)?,
+                yoffset: 0,
+                x: c.i32(3)?,
+                y: c.i32(4)?,
+                width: c.i32(5)?,
+                height: 1,
+            })
+        }
+        Entry::CopyTexSubImage2D => {
+            c.count(8)?;
+            Command::CopyTexSubImage(CopyTexSubImage {
+                target: target(c, TextureTarget::Texture2D)?,
+                level: c.i32(1)?,
+                xoffset: c.i32(2)?,
+                yoffset: c.i32(3)?,
+                x: c.i32(4)?,
+                y: c.i32(5)?,
+                width: c.i32(6)?,
+                height: c.i32(7)?,
+            })
+        }
+        Entry::GetTexImage => {
+            c.count(5)?;
+            Command::GetTexImage(GetTexImage {
+                target: c.enm(0)?,
+                level: c.i32(1)?,
+                format: c.enm(2)?,
+                ty: c.enm(3)?,
+                slot: c.slot(4)?,
+            })
+        }
+        _ => return Ok(None),
+    }))
+}
+
+fn level_in_range(level: i32) -> GlResult {
+    if (0..=MAX_TEXTURE_LEVEL).contains(&level) {
+        Ok(())
+    } else {
+        Err(GlError::invalid_value(
+            "level must be in [0, log2(MAX_TEXTURE_SIZE)]",
+        ))
+    }
+}
+
+impl FixedState {
+    fn bound_object_mut(
+        &mut self,
+        target: TextureTarget,
+    ) -> GlResult<&mut super::texture::TextureObject> {
+        let name = self.units[self.active_unit()].bound(target);
+        self.texture_mut(target, name)
+            .ok_or(GlError::invalid_operation(
+                "bound name belongs to another target",
+            ))
+    }
+
+    /// glCopyTexImage1D: a new level of `width` × 1 texels whose values only the GPU holds.
+    pub(crate) fn copy_tex_image_1d(&mut self, c: &CopyTexImage) -> GlResult {
+        check_image_size(c.level, c.width, 1, c.border)?;
+        let tex = self.bound_object_mut(TextureTarget::Texture1D)?;
+        tex.set_level(
+            c.level,
+            TexLevel {
+                internal_format: c.internal_format,
+                width: c.width,
+                height: 1,
+                data: None,
+            },
+        );
+        if c.level == 0 {
+            tex.base_level_changed();
+        }
+        Ok(())
+    }
+
+    /// glCopyTexSubImage1D/2D: the level must exist and hold the region.
+    pub(crate) fn copy_tex_sub_image(&mut self, c: &CopyTexSubImage) -> GlResult {
+        level_in_range(c.level)?;
+        if c.width < 0 || c.height < 0 {
+            return Err(GlError::invalid_value("negative width or height"));
+        }
+        let tex = self.bound_object_mut(c.target)?;
+        let level = tex.level_mut(c.level).ok_or(GlError::invalid_operation(
+            "glCopyTexSubImage of a level never specified",
+        ))?;
+        if c.xoffset < 0
+            || c.yoffset < 0
+            || c.xoffset + c.width > level.width
+            || c.yoffset + c.height > level.height
+        {
+            return Err(GlError::invalid_value(
+                "glCopyTexSubImage region outside the level",
+            ));
+        }
+        level.data = None;
+        if c.level == 0 {
+            tex.base_level_changed();
+        }
+        Ok(())
+    }
+
+    /// glGetTexImage's checks; `Ok(false)` when the level was never specified (nothing is
+    /// stored).
+    pub fn check_get_tex_image(&self, g: &GetTexImage) -> GlResult<bool> {
+        level_in_range(g.level)?;
+        if g.format == PixelFormat::StencilIndex {
+            return Err(GlError::invalid_enum(
+                "STENCIL_INDEX is not a texture image format",
+            ));
+        }
+        let name = self.units[self.active_unit()].bound(g.target);
+        let Some(level) = self.texture(g.target, name).and_then(|t| t.level(g.level)) else {
+            return Ok(false);
+        };
+        check_format_pair(level.internal_format, g.format)
+            .map_err(|e| GlError::invalid_operation(e.rule))?;
+        Ok(true)
+    }
+
+    /// The level glGetTexImage reads, if it was specified.
+    pub fn get_tex_image_level(&self, g: &GetTexImage) -> Option<&TexLevel> {
+        let name = self.units[self.active_unit()].bound(g.target);
+        self.texture(g.target, name)?.level(g.level)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ff::{GlErrorKind, TexData, TexFormat, TexImage};
+
+    fn with_2d(w: i32, h: i32) -> FixedState {
+        let mut s = FixedState::default();
+        s.apply(&Command::TexImage(TexImage {
+            target: TextureTarget::Texture2D,
+            level: 0,
+            internal_format: TexFormat::Rgba8,
+            width: w,
+            height: h,
+            border: 0,
+            format: PixelFormat::Rgba,
+            ty: PixelType::UnsignedByte,
+            data: TexData::Bytes(vec![7u8; (w * h * 4) as usize].into()),
+        }))
+        .unwrap();
+        s
+    }
+
+    fn copy(level: i32, xoffset: i32, width: i32, height: i32) -> Command {
+        Command::CopyTexSubImage(CopyTexSubImage {
+            target: TextureTarget::Texture2D,
+            level,
+            xoffset,
+            yoffset: 0,
+            x: 0,
+            y: 0,
+            width,
+            height,
+        })
+    }
+
+    #[test]
+    fn copies_need_a_level_that_holds_the_region() {
+        let mut s = with_2d(4, 4);
+        let kind = |s: &mut FixedState, c| s.apply(&c).unwrap_err().kind;
+        assert_eq!(
+            kind(&mut s, copy(1, 0, 2, 2)),
+            GlErrorKind::InvalidOperation
+        );
+        assert_eq!(kind(&mut s, copy(0, 3, 2, 2)), GlErrorKind::InvalidValue);
+        assert_eq!(kind(&mut s, copy(0, 0, -1, 2)), GlErrorKind::InvalidValue);
+        assert_eq!(kind(&mut s, copy(15, 0, 1, 1)), GlErrorKind::InvalidValue);
+        // A failed copy keeps the CPU copy; a copy drops it.
+        assert!(s.default_2d.level(0).unwrap().data.is_some());
+        s.apply(&copy(0, 2, 2, 4)).unwrap();
+        assert!(s.default_2d.level(0).unwrap().data.is_none());
+    }
+
+    #[test]
+    fn get_tex_image_checks_format_against_the_level() {
+        let s = with_2d(2, 2);
+        let get = |level, format| GetTexImage {
+            target: TextureTarget::Texture2D,
+            level,
+            format,
+            ty: PixelType::UnsignedByte,
+            slot: 0,
+        };
+        assert_eq!(s.check_get_tex_image(&get(0, PixelFormat::Rgb)), Ok(true));
+        assert_eq!(s.check_get_tex_image(&get(3, PixelFormat::Rgb)), Ok(false));
+        let kind = |g| s.check_get_tex_image(&g).unwrap_err().kind;
+        assert_eq!(kind(get(-1, PixelFormat::Rgb)), GlErrorKind::InvalidValue);
+        assert_eq!(
+            kind(get(0, PixelFormat::StencilIndex)),
+            GlErrorKind::InvalidEnum
+        );
+        assert_eq!(
+            kind(get(0, PixelFormat::DepthComponent)),
+            GlErrorKind::InvalidOperation
+        );
+    }
+}

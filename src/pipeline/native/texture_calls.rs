@@ -1,0 +1,99 @@
+//! glTexSubImage1D, glCopyTexImage1D, glCopyTexSubImage1D/2D and glGetTexImage as the real
+//! legacy calls on the bound texture (the model checked them first). glGetTexImage reads
+//! with PACK_ALIGNMENT 1 into a readback slot: the driver's own conversions from each
+//! legacy internal format to the asked format and type are the oracle.
+
+use std::ffi::c_void;
+
+use crate::ff::texture::{image_size, TextureTarget};
+use crate::ff::texture_calls::{CopyTexSubImage, GetTexImage};
+use crate::ff::{CopyTexImage, FixedState, TexSubImage};
+use crate::pipeline::Readback;
+
+use super::bindings as gl;
+use super::conv;
+
+/// glTexSubImage1D into the bound 1D texture.
+pub fn tex_sub_image_1d(g: &gl::Gl, t: &TexSubImage) {
+    // SAFETY: the model checked that `data` holds the row's bytes.
+    unsafe {
+        g.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
+        g.TexSubImage1D(
+            gl::TEXTURE_1D,
+            t.level,
+            t.x,
+            t.width,
+            conv::value(t.format),
+            conv::value(t.ty),
+            t.data.as_ptr().cast::<c_void>(),
+        );
+    }
+}
+
+/// glCopyTexImage1D from the current read framebuffer.
+pub fn copy_tex_image_1d(g: &gl::Gl, c: &CopyTexImage) {
+    // SAFETY: plain GL call on the current context.
+    unsafe {
+        g.CopyTexImage1D(
+            gl::TEXTURE_1D,
+            c.level,
+            conv::value(c.internal_format),
+            c.x,
+            c.y,
+            c.width,
+            c.border,
+        );
+    }
+}
+
+/// glCopyTexSubImage1D/2D from the current read framebuffer.
+pub fn copy_tex_sub_image(g: &gl::Gl, c: &CopyTexSubImage) {
+    // SAFETY: plain GL calls on the current context.
+    unsafe {
+        match c.target {
+            TextureTarget::Texture1D => {
+                g.CopyTexSubImage1D(gl::TEXTURE_1D, c.level, c.xoffset, c.x, c.y, c.width)
+            }
+            TextureTarget::Texture2D => g.CopyTexSubImage2D(
+                gl::TEXTURE_2D,
+                c.level,
+                c.xoffset,
+                c.yoffset,
+                c.x,
+                c.y,
+                c.width,
+                c.height,
+            ),
+        }
+    }
+}
+
+/// glGetTexImage of a specified level (`None` for a level never specified: GL stores
+/// nothing).
+pub fn get_tex_image(g: &gl::Gl, state: &FixedState, r: &GetTexImage) -> Option<Readback> {
+    let level = state.get_tex_image_level(r)?;
+    let (w, h) = (level.width, level.height);
+    let mut bytes = vec![0u8; image_size(r.format, r.ty, w, h)];
+    let target = match r.target {
+        TextureTarget::Texture1D => gl::TEXTURE_1D,
+        TextureTarget::Texture2D => gl::TEXTURE_2D,
+    };
+    // SAFETY: `bytes` holds the level's width·height groups and PACK_ALIGNMENT is 1.
+    unsafe {
+        g.PixelStorei(gl::PACK_ALIGNMENT, 1);
+        g.GetTexImage(
+            target,
+            r.level,
+            conv::value(r.format),
+            conv::value(r.ty),
+            bytes.as_mut_ptr().cast::<c_void>(),
+        );
+    }
+    Some(Readback {
+        width: w as u32,
+        height: h as u32,
+        format: r.format,
+        ty: r.ty,
+        bytes,
+    })
+}
