@@ -271,6 +271,15 @@ impl FixedState {
             Command::Draw(g) => self.draw(g)?,
             Command::PushAttrib(mask) => self.push_attrib(*mask)?,
             Command::PopAttrib => self.pop_attrib()?,
+            Command::RasterPos(p) => self.set_raster_pos(*p),
+            Command::WindowPos(p) => self.set_window_pos(*p),
+            Command::Bitmap(b) => self.bitmap(b)?,
+            Command::DrawPixels(d) => d.check()?,
+            Command::CopyPixels(c) => super::pixels::check_rect("CopyPixels", c.width, c.height)?,
+            Command::PixelTransfer(p) => self.pixel_transfer.set(*p),
+            Command::PixelZoom { x, y } => {
+                self.pixel_zoom = super::pixels::PixelZoom { x: *x, y: *y }
+            }
         }
         Ok(())
     }

@@ -19,6 +19,7 @@ mod lexer;
 pub mod names;
 mod parse;
 mod print;
+mod print_pixels;
 
 pub use parse::{parse, parse_lines};
 pub use print::print;

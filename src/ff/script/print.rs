@@ -21,7 +21,7 @@ pub fn print(cmds: &[Command]) -> String {
     out
 }
 
-fn f(v: f32) -> String {
+pub(super) fn f(v: f32) -> String {
     if v.is_nan() {
         "NAN".into()
     } else if v.is_infinite() {
@@ -31,7 +31,7 @@ fn f(v: f32) -> String {
     }
 }
 
-fn fs(vs: &[f32]) -> String {
+pub(super) fn fs(vs: &[f32]) -> String {
     vs.iter().map(|v| f(*v)).collect::<Vec<_>>().join(", ")
 }
 
@@ -44,7 +44,7 @@ fn v4(v: Vec4) -> String {
 }
 
 /// The token of a value; every table covers its enum, so the fallback is never printed.
-fn n<T: GlEnum>(v: T) -> &'static str {
+pub(super) fn n<T: GlEnum>(v: T) -> &'static str {
     v.gl_name().unwrap_or("GL_NONE")
 }
 
@@ -405,6 +405,13 @@ fn call(c: &Command) -> String {
         ),
         Command::PushAttrib(m) => format!("{}({})", Entry::PushAttrib, attrib_mask(*m)),
         Command::PopAttrib => format!("{}()", Entry::PopAttrib),
+        Command::RasterPos(_)
+        | Command::WindowPos(_)
+        | Command::Bitmap(_)
+        | Command::DrawPixels(_)
+        | Command::CopyPixels(_)
+        | Command::PixelTransfer(_)
+        | Command::PixelZoom { .. } => super::print_pixels::call(c),
         // Printed by `command`.
         Command::Draw(_)
         | Command::TexImage(_)
@@ -584,7 +591,7 @@ fn combiner_input(i: &CombinerInput) -> String {
 
 /// A compound literal for pixel bytes: the element type of `ty` when the length allows,
 /// else GLubyte (both parse back to the same bytes).
-fn pixels(ty: PixelType, data: &[u8]) -> String {
+pub(super) fn pixels(ty: PixelType, data: &[u8]) -> String {
     let size = ty.size();
     // C has no literal for a NaN with another payload: such floats go out as their bytes.
     let odd_nan = ty == PixelType::Float

@@ -18,6 +18,7 @@ mod conv;
 mod draw;
 mod execute;
 mod lighting;
+mod pixels;
 mod readback;
 mod texenv;
 mod textures;
