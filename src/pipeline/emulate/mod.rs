@@ -15,6 +15,7 @@ pub mod conv;
 pub mod draw;
 pub mod glsl;
 pub mod key;
+pub mod pixels;
 pub mod polygon;
 pub mod program;
 pub mod shadergen;
@@ -46,6 +47,11 @@ pub struct Emulate {
     textures: Textures,
     raster: RasterSync,
     precision: Precision,
+    /// The bound target's size (the viewport GL starts with): pixel rectangles are drawn
+    /// with it as the viewport (`pixels`).
+    target: crate::ff::Viewport,
+    /// The texture holding the last pixel rectangle's image (`pixels`).
+    pixel_image: Option<glow::Texture>,
 }
 
 /// Commands executed by generated programs on a core 3.3 context.
@@ -63,7 +69,10 @@ impl EmulatedPipeline {
             });
         }
         let core = Core::for_bound_target(ctx);
+        let target = core.state.viewport;
         let path = Emulate {
+            target,
+            pixel_image: None,
             programs: ProgramCache::default(),
             geometry: GeometryCache::default(),
             textures: Textures::default(),
@@ -187,6 +196,9 @@ impl Issue for Emulate {
             // The model restored the groups; the raster state and uniforms follow it at the
             // next draw, the texture objects' parameters now.
             Command::PopAttrib => self.textures.sync_bound_params(gl, state)?,
+            Command::Bitmap(_) | Command::DrawPixels(_) | Command::CopyPixels(_) => {
+                self.pixel_command(gl, state, cmd)?
+            }
             _ => {}
         }
         Ok(())
@@ -210,6 +222,9 @@ impl Issue for Emulate {
         }
         self.geometry.release(gl);
         self.textures.release(gl);
+        if let Some(t) = self.pixel_image.take() {
+            unsafe { gl.delete_texture(t) };
+        }
         self.raster.invalidate();
     }
 }
