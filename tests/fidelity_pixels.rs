@@ -304,3 +304,136 @@ fn mesa_fogs_rectangles_at_distance_zero() {
         probe_gl(&p.native.image, 40, 20, [128, 0, 128, 255], 1);
     }
 }
+
+const STENCIL_FRAME: Frame = Frame::new(64, 48).with_stencil();
+
+/// A red quad at window depth `z` over the whole frame, drawn with `test`: where it shows,
+/// the depth (or stencil) buffer passed it.
+fn reveal(z: f32, color: &str) -> String {
+    format!(
+        "glColor3f({color});\nglBegin(GL_QUADS);\nglVertex3f(0, 0, {d});\nglVertex3f(64, 0, {d});\nglVertex3f(64, 48, {d});\nglVertex3f(0, 48, {d});\nglEnd();\n",
+        d = -(2.0 * z - 1.0)
+    )
+}
+
+/// DEPTH_COMPONENT images in every type, with DEPTH_SCALE and DEPTH_BIAS and a zoom: the
+/// depth buffers agree within 2⁻¹⁶ and a quad drawn at depth ½ with LESS shows the same.
+#[test]
+fn depth_images_match() {
+    let (w, h) = (12usize, 8usize);
+    let depths: Vec<f32> = (0..w * h)
+        .map(|i| ((i % w) as f32 / (w - 1) as f32 + (i / w) as f32 / h as f32) / 2.0)
+        .collect();
+    let ushorts: Vec<String> = depths
+        .iter()
+        .map(|d| ((d * 65535.0).round() as u32).to_string())
+        .collect();
+    let src = format!(
+        "{}glEnable(GL_DEPTH_TEST);\nglDepthFunc(GL_ALWAYS);\nglColor3f(0, 1, 0);\n\
+         glRasterPos2i(2, 2);\nglDrawPixels({w}, {h}, GL_DEPTH_COMPONENT, GL_FLOAT, {});\n\
+         glRasterPos2i(20, 2);\nglDrawPixels({w}, {h}, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, (GLushort[]){{{}}});\n\
+         glPixelTransferf(GL_DEPTH_SCALE, 0.5);\nglPixelTransferf(GL_DEPTH_BIAS, 0.4);\nglPixelZoom(2, 2);\n\
+         glRasterPos2i(36, 20);\nglDrawPixels({w}, {h}, GL_DEPTH_COMPONENT, GL_FLOAT, {});\n\
+         glPixelTransferf(GL_DEPTH_SCALE, 1);\nglPixelTransferf(GL_DEPTH_BIAS, 0);\nglPixelZoom(1, 1);\n\
+         glDepthFunc(GL_LESS);\n{}",
+        opening(),
+        floats(&depths),
+        ushorts.join(", "),
+        floats(&depths),
+        reveal(0.5, "1, 0, 0")
+    );
+    let pairs = compare("draw-pixels-depth", &src, STENCIL_FRAME, close());
+    for p in pairs {
+        assert_eq!(p.native.depth.len(), p.emulate.depth.len());
+        let worst = p
+            .native
+            .depth
+            .iter()
+            .zip(&p.emulate.depth)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0f32, f32::max);
+        assert!(
+            worst <= 1.0 / 65536.0,
+            "{}: depth differs by {worst}",
+            p.backend
+        );
+    }
+}
+
+/// STENCIL_INDEX images (UNSIGNED_BYTE and UNSIGNED_SHORT, a flipped zoom, the stencil
+/// write mask) write the stencil buffer only; quads with EQUAL tests show the values,
+/// identical on both paths. Mesa deviation, pinned: INDEX_SHIFT and INDEX_OFFSET are not
+/// applied to stencil images (GL 1.5 §3.6.4 applies them); the layer follows Mesa.
+#[test]
+fn stencil_images_match_and_mesa_ignores_index_shift_and_offset_for_stencil() {
+    let (w, h) = (10usize, 6usize);
+    let values: Vec<u32> = (0..w * h).map(|i| (i % 5) as u32).collect();
+    let list = |v: &[u32]| v.iter().map(u32::to_string).collect::<Vec<_>>().join(", ");
+    let mut src = format!(
+        "{}glColor3f(1, 1, 1);\nglRasterPos2i(2, 2);\nglDrawPixels({w}, {h}, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, (GLubyte[]){{{}}});\n\
+         glPixelTransferi(GL_INDEX_SHIFT, 1);\nglPixelTransferi(GL_INDEX_OFFSET, 1);\nglPixelZoom(2, -2);\n\
+         glRasterPos2i(20, 40);\nglDrawPixels({w}, {h}, GL_STENCIL_INDEX, GL_UNSIGNED_SHORT, (GLushort[]){{{}}});\n\
+         glPixelTransferi(GL_INDEX_SHIFT, 0);\nglPixelTransferi(GL_INDEX_OFFSET, 0);\nglPixelZoom(1, 1);\n\
+         glStencilMask(6);\nglRasterPos2i(44, 2);\nglDrawPixels({w}, {h}, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, (GLubyte[]){{{}}});\n\
+         glStencilMask(255);\nglEnable(GL_STENCIL_TEST);\nglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);\n",
+        opening(),
+        list(&values),
+        list(&values),
+        list(&values.iter().map(|v| v * 3).collect::<Vec<_>>()),
+    );
+    for (k, c) in [
+        (1, "1, 0, 0"),
+        (2, "0, 1, 0"),
+        (3, "0, 0, 1"),
+        (4, "1, 1, 0"),
+        (5, "0, 1, 1"),
+        (6, "1, 0, 1"),
+        (7, "1, 1, 1"),
+        (9, "0.5, 0.5, 0.5"),
+    ] {
+        src.push_str(&format!(
+            "glStencilFunc(GL_EQUAL, {k}, 255);\n{}",
+            reveal(0.0, c)
+        ));
+    }
+    let pairs = compare("draw-pixels-stencil", &src, STENCIL_FRAME, EXACT);
+    for p in pairs {
+        // mesa_ignores_index_shift_and_offset_for_stencil: value 1 stays 1 (red) under
+        // shift 1 and offset 1, where GL would make it 3 (blue).
+        for img in [&p.native.image, &p.emulate.image] {
+            probe_gl(img, 22, 39, [255, 0, 0, 255], 0);
+        }
+    }
+}
+
+/// glCopyPixels of colour (with zoom, a flip and transfer), depth and stencil, from
+/// rectangles drawn first; an invalid raster position copies nothing.
+#[test]
+fn copy_pixels_match() {
+    let img = ubytes(&gradient(8, 6, 4));
+    let mut src = format!(
+        "{}glRasterPos2i(1, 1);\nglDrawPixels(8, 6, GL_RGBA, GL_UNSIGNED_BYTE, {img});\n\
+         glRasterPos2i(12, 1);\nglCopyPixels(1, 1, 8, 6, GL_COLOR);\n\
+         glPixelZoom(2, -1);\nglRasterPos2i(24, 12);\nglCopyPixels(1, 1, 8, 6, GL_COLOR);\n\
+         glPixelZoom(1, 1);\nglPixelTransferf(GL_RED_SCALE, 0.5);\nglRasterPos2i(44, 1);\nglCopyPixels(1, 1, 8, 6, GL_COLOR);\n\
+         glPixelTransferf(GL_RED_SCALE, 1);\n\
+         glRasterPos2i(100, 100);\nglCopyPixels(1, 1, 8, 6, GL_COLOR);\n\
+         glEnable(GL_DEPTH_TEST);\nglDepthFunc(GL_ALWAYS);\nglRasterPos3f(1, 20, 0.5);\n\
+         glDrawPixels(2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, (GLfloat[]){{0.2, 0.4, 0.6, 0.8}});\n\
+         glRasterPos2i(30, 30);\nglCopyPixels(1, 20, 2, 2, GL_DEPTH);\n\
+         glRasterPos2i(2, 40);\nglDrawPixels(3, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, (GLubyte[]){{1, 2, 3}});\n\
+         glRasterPos2i(10, 40);\nglCopyPixels(2, 40, 3, 1, GL_STENCIL);\n\
+         glDepthFunc(GL_LESS);\n{}\
+         glEnable(GL_STENCIL_TEST);\nglStencilFunc(GL_EQUAL, 2, 255);\n",
+        opening(),
+        reveal(0.5, "1, 0, 0")
+    );
+    src.push_str(&reveal(0.0, "0, 0, 1"));
+    let pairs = compare("copy-pixels", &src, STENCIL_FRAME, EXACT);
+    for p in pairs {
+        // The stencil copy's middle value 2 passes EQUAL 2: blue at (11, 40) on both.
+        for img in [&p.native.image, &p.emulate.image] {
+            probe_gl(img, 11, 40, [0, 0, 255, 255], 0);
+        }
+    }
+}

@@ -9,8 +9,8 @@
 //! 2. conversion to RGBA: L → (L, L, L, 1), LA → (L, L, L, A), A → (0, 0, 0, A),
 //!    RGB → (R, G, B, 1) (Table 3.8: missing colour components are 0, alpha 1);
 //! 3. arithmetic: c·c_SCALE + c_BIAS on all four components (the filled-in ones too), depth
-//!    d·DEPTH_SCALE + DEPTH_BIAS, stencil shifted by INDEX_SHIFT (left for > 0, right for
-//!    < 0) plus INDEX_OFFSET;
+//!    d·DEPTH_SCALE + DEPTH_BIAS; stencil shifted by INDEX_SHIFT (left for > 0, right for
+//!    < 0) plus INDEX_OFFSET by GL — which Mesa skips, and so does the layer;
 //! 4. final conversion: colours and depth clamped to [0, 1] (§3.6.5); stencil masked to
 //!    the stencil bits, 2⁸ − 1.
 //!
@@ -319,9 +319,15 @@ impl DrawPixels {
         let stencil = self.format == PixelFormat::StencilIndex;
         let v = components(&self.data, self.ty, !stencil);
         match self.format {
-            PixelFormat::StencilIndex => {
-                Converted::Stencil(v.iter().map(|s| t.stencil(*s as i64)).collect())
-            }
+            // Mesa 22.3 draws stencil images without INDEX_SHIFT and INDEX_OFFSET (measured:
+            // `tests/fidelity_pixels.rs`, mesa_ignores_index_shift_and_offset_for_stencil);
+            // followed, masked to the stencil bits. GL 1.5 §3.6.4 would apply
+            // `PixelTransfer::stencil`.
+            PixelFormat::StencilIndex => Converted::Stencil(
+                v.iter()
+                    .map(|s| (*s as i64 & ((1 << STENCIL_BITS) - 1)) as u8)
+                    .collect(),
+            ),
             PixelFormat::DepthComponent => {
                 Converted::Depth(v.iter().map(|d| t.depth(*d as f32)).collect())
             }
