@@ -350,3 +350,16 @@ fn buffer_objects_draw_and_fail_as_on_mesa() {
     assert_six_panels_drawn(&mesa);
     assert_images_match("buffers", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+#[test]
+fn pixel_rectangles_draw_and_answer_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("pixels");
+    assert!(
+        mesa_text.contains("glDrawPixels negative width                  0x0501"),
+        "a negative width raised no INVALID_VALUE on Mesa:\n{mesa_text}"
+    );
+    assert_same_text(&mesa_text, &ours_text, 25, "a query or error answer");
+    // Each panel shows its rectangle on Mesa.
+    assert_six_panels_drawn(&mesa);
+    assert_images_match("pixels", &ours, &mesa, within_3_on_99_percent(&mesa));
+}
