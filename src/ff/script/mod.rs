@@ -92,3 +92,6 @@ fn closest(names: &[&str]) -> String {
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod tests_pixels;
