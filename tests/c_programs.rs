@@ -363,3 +363,58 @@ fn pixel_rectangles_draw_and_answer_as_on_mesa() {
     assert_six_panels_drawn(&mesa);
     assert_images_match("pixels", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+/// tests/c/pixels.c traced with FIXEDFUNC_TRACE replays to the image it rendered: the
+/// trace writes its raster positions, bitmaps, images (unpacked from the program's rows),
+/// copies, transfer and zoom calls as the script dialect, and `replay` draws them again.
+#[test]
+fn a_pixels_trace_replays_to_the_same_image() {
+    let exe = compile("pixels", Linking::Direct);
+    let dir = work_dir("pixels");
+    let (image, trace, replayed) = (
+        dir.join("traced.ppm"),
+        dir.join("calls.c"),
+        dir.join("replayed.png"),
+    );
+    let out = Command::new(&exe)
+        .arg(&image)
+        .env("LD_LIBRARY_PATH", fixedfunc_dir())
+        .env("FIXEDFUNC_TRACE", &trace)
+        .output()
+        .expect("the program runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&trace).expect("the trace was written");
+    for call in [
+        "glDrawPixels(19, 12, GL_RGB",
+        "glBitmap(10, 10",
+        "glCopyPixels(5, 5, 19, 12, GL_COLOR)",
+        "glPixelZoom(2.0, -2.0)",
+    ] {
+        assert!(text.contains(call), "the trace lacks {call}: {text:.400}");
+    }
+    let replay = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
+        .arg("replay")
+        .arg(&trace)
+        .args(["--size", "192x128", "--out"])
+        .arg(&replayed)
+        .output()
+        .expect("fixedfunc runs");
+    assert!(
+        replay.status.success(),
+        "replay failed: {}",
+        String::from_utf8_lossy(&replay.stderr)
+    );
+    let traced = read_ppm(&image);
+    let mut back = image::open(&replayed).expect("a PNG").to_rgba8();
+    back.pixels_mut().for_each(|p| p.0[3] = 255);
+    assert_images_match(
+        "trace-pixels",
+        &back,
+        &traced,
+        within_3_on_99_percent(&traced),
+    );
+}
