@@ -179,3 +179,32 @@ fn printed_pixel_calls_are_valid_c() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// A display list keeps a bitmap's bits and a raster position's object coordinates; each
+/// glCallList draws the bitmap and moves the position again (GL 1.5 §5.4: both are
+/// compiled).
+#[test]
+fn lists_keep_bitmaps_and_positions() {
+    let cmds = parse(
+        "glNewList(1, GL_COMPILE);\nglRasterPos2f(0.2, 0.4);\nglBitmap(8, 1, 0, 0, 5, 0, (GLubyte[]){255});\nglEndList();\n\
+         glCallList(1);\nglBitmap(0, 0, 0, 0, 0, 3, NULL);\nglCallList(1);\n",
+    )
+    .unwrap();
+    let bitmaps = cmds
+        .iter()
+        .filter(|c| matches!(c, Command::Bitmap(b) if b.bits.is_some()))
+        .count();
+    assert_eq!(bitmaps, 2, "{cmds:?}");
+    let mut s = FixedState::new();
+    s.apply(&Command::Viewport(Viewport {
+        x: 0,
+        y: 0,
+        width: 10,
+        height: 10,
+    }))
+    .unwrap();
+    s.apply_all(&cmds).unwrap();
+    // (0.2, 0.4) in NDC is window (6, 7); the second list sets it again, then moves it by 5.
+    assert!(s.raster.valid);
+    assert_eq!(s.raster.window.truncate(), Vec3::new(11.0, 7.0, 0.5));
+}
