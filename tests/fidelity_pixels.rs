@@ -437,3 +437,57 @@ fn copy_pixels_match() {
         }
     }
 }
+
+/// glReadPixels applies the transfer too (GL 1.5 §4.3.2): colours in UNSIGNED_BYTE (RGBA,
+/// and LUMINANCE summed after the transfer) and FLOAT, depths in FLOAT, the same bytes on
+/// both paths (floats within 1e-6).
+#[test]
+fn read_pixels_applies_the_transfer() {
+    let img = ubytes(&gradient(8, 4, 4));
+    let src = format!(
+        "{}glEnable(GL_DEPTH_TEST);\nglDepthFunc(GL_ALWAYS);\nglRasterPos2i(0, 0);\n\
+         glDrawPixels(8, 4, GL_RGBA, GL_UNSIGNED_BYTE, {img});\n\
+         glDrawPixels(2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, (GLfloat[]){{0.25, 0.5}});\n\
+         glPixelTransferf(GL_RED_SCALE, 0.5);\nglPixelTransferf(GL_GREEN_BIAS, 0.25);\nglPixelTransferf(GL_ALPHA_SCALE, 2);\n\
+         glPixelTransferf(GL_DEPTH_SCALE, 2);\nglPixelTransferf(GL_DEPTH_BIAS, -0.25);\n\
+         glReadPixels(0, 0, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, readback_1);\n\
+         glReadPixels(0, 0, 8, 4, GL_LUMINANCE, GL_UNSIGNED_BYTE, readback_2);\n\
+         glReadPixels(0, 0, 8, 4, GL_RGB, GL_FLOAT, readback_3);\n\
+         glReadPixels(0, 0, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, readback_4);\n\
+         glPixelTransferf(GL_RED_SCALE, 1);\nglPixelTransferf(GL_GREEN_BIAS, 0);\nglPixelTransferf(GL_ALPHA_SCALE, 1);\n\
+         glPixelTransferf(GL_DEPTH_SCALE, 1);\nglPixelTransferf(GL_DEPTH_BIAS, 0);\n",
+        opening()
+    );
+    for p in fidelity::run_both(&src, STENCIL_FRAME) {
+        for slot in [1, 2] {
+            assert_eq!(
+                p.emulate.readbacks[&slot].bytes, p.native.readbacks[&slot].bytes,
+                "{}: readback {slot}",
+                p.backend
+            );
+        }
+        for slot in [3, 4] {
+            let f = |b: &[u8]| -> Vec<f32> {
+                b.chunks_exact(4)
+                    .map(|c| f32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+                    .collect()
+            };
+            let (e, n) = (
+                f(&p.emulate.readbacks[&slot].bytes),
+                f(&p.native.readbacks[&slot].bytes),
+            );
+            assert_eq!(e.len(), n.len());
+            for (a, b) in e.iter().zip(&n) {
+                assert!(
+                    (a - b).abs() <= 1e-6,
+                    "{}: readback {slot}: {a} vs {b}",
+                    p.backend
+                );
+            }
+        }
+        // The depths 0.25 and 0.5 read as 2·d − 0.25.
+        let d = &p.native.readbacks[&4].bytes;
+        let d0 = f32::from_ne_bytes([d[0], d[1], d[2], d[3]]);
+        assert!((d0 - 0.25).abs() < 1e-6, "native depth {d0}");
+    }
+}

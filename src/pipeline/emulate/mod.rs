@@ -191,7 +191,11 @@ impl Issue for Emulate {
                 self.textures.sync_params(gl, state, *target)?
             }
             Command::ReadPixels(r) => {
-                core.readbacks.insert(r.slot, read_pixels(gl, r));
+                let mut readback = read_pixels(gl, r);
+                if let Some(bytes) = pixels::transferred_read(gl, r, &state.pixel_transfer) {
+                    readback.bytes = bytes;
+                }
+                core.readbacks.insert(r.slot, readback);
             }
             // The model restored the groups; the raster state and uniforms follow it at the
             // next draw, the texture objects' parameters now.

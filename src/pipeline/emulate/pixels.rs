@@ -32,8 +32,8 @@ use super::program::Program;
 use super::Emulate;
 use crate::ff::{
     ColorMask, Command, CompareFunc, Converted, CopyKind, CopyPixels, DrawPixels, FixedState,
-    Geometry, PixelFormat, PixelType, PixelZoom, PolygonMode, PolygonModes, Primitive, ReadPixels,
-    StencilOp, StencilTest, Viewport, MAX_CLIP_PLANES,
+    Geometry, PixelFormat, PixelTransfer, PixelType, PixelZoom, PolygonMode, PolygonModes,
+    Primitive, ReadPixels, StencilOp, StencilTest, Viewport, MAX_CLIP_PLANES,
 };
 use crate::pipeline::PipelineError;
 
@@ -153,6 +153,76 @@ fn stencil_pass(s: &FixedState, bit: u32) -> FixedState {
         a: false,
     };
     p
+}
+
+/// glReadPixels under a pixel transfer that is not the identity (GL 1.5 §4.3.2: the
+/// scales and biases apply to colours read, DEPTH_SCALE and DEPTH_BIAS to depths): the
+/// colour read as RGBA floats, scaled and biased on the CPU, clamped for fixed-point types,
+/// L = min(R + G + B, 1) and stored in the requested type ([`encode_even`]); depth
+/// read as floats in FLOAT only. `None` for the identity transfer or another format or
+/// type (read as they are).
+pub fn transferred_read(gl: &glow::Context, r: &ReadPixels, t: &PixelTransfer) -> Option<Vec<u8>> {
+    let colour_identity = t.scale == Vec4::ONE && t.bias == Vec4::ZERO;
+    let depth_identity = t.depth_scale == 1.0 && t.depth_bias == 0.0;
+    let read_as = |format, ty| super::read(gl, &ReadPixels { format, ty, ..*r });
+    let f32s = |b: Vec<u8>| -> Vec<f32> {
+        b.chunks_exact(4)
+            .map(|c| f32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+            .collect()
+    };
+    match r.format {
+        PixelFormat::DepthComponent if !depth_identity && r.ty == PixelType::Float => Some(
+            f32s(read_as(PixelFormat::DepthComponent, PixelType::Float))
+                .into_iter()
+                .flat_map(|d| t.depth(d).to_ne_bytes())
+                .collect(),
+        ),
+        PixelFormat::DepthComponent | PixelFormat::StencilIndex => None,
+        _ if colour_identity => None,
+        format => {
+            let rgba = f32s(read_as(PixelFormat::Rgba, PixelType::Float));
+            let mut out = Vec::new();
+            for p in rgba.chunks_exact(4) {
+                // FLOAT reads are not clamped (Mesa, as GL 3.0's CLAMP_READ_COLOR =
+                // FIXED_ONLY: measured, RED_SCALE 2 on 0.625 reads 1.25); fixed-point ones are.
+                let c = Vec4::from_slice(p) * t.scale + t.bias;
+                let (c, l) = if r.ty == PixelType::Float {
+                    (c, c.x + c.y + c.z)
+                } else {
+                    let c = c.clamp(Vec4::ZERO, Vec4::ONE);
+                    (c, (c.x + c.y + c.z).min(1.0))
+                };
+                let values: Vec<f32> = match format {
+                    PixelFormat::Rgba => c.to_array().to_vec(),
+                    PixelFormat::Rgb => vec![c.x, c.y, c.z],
+                    PixelFormat::Luminance => vec![l],
+                    PixelFormat::LuminanceAlpha => vec![l, c.w],
+                    _ => vec![c.w],
+                };
+                for v in values {
+                    out.extend(encode_even(v, r.ty));
+                }
+            }
+            Some(out)
+        }
+    }
+}
+
+/// A transferred colour component in the pixel type: unorm v·M rounded half to even, as
+/// Mesa's `_mesa_float_to_unorm` stores it (measured: 145/255 · 0.5 reads as 72, where
+/// ⌊v·255 + ½⌋ gives 73), clamped to [0, 1] first; a FLOAT as it is.
+fn encode_even(v: f32, ty: PixelType) -> Vec<u8> {
+    let u = v.clamp(0.0, 1.0);
+    match ty {
+        PixelType::UnsignedByte => vec![(u * 255.0).round_ties_even() as u8],
+        PixelType::UnsignedShort => ((u * 65535.0).round_ties_even() as u16)
+            .to_ne_bytes()
+            .to_vec(),
+        PixelType::UnsignedInt => ((f64::from(u) * f64::from(u32::MAX)).round_ties_even() as u32)
+            .to_ne_bytes()
+            .to_vec(),
+        PixelType::Float => v.to_ne_bytes().to_vec(),
+    }
 }
 
 /// The image as a texture's bytes: (internal format, format, type, bytes).
