@@ -85,12 +85,14 @@ int main(int argc, char **argv) {
                                        {0xc0, 0xc0}, {0xc0, 0xc0}, {0xe1, 0xc0}, {0xf3, 0xc0},
                                        {0xff, 0xc0}, {0xff, 0xc0}};
   glColor3f(1, 0.75f, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1); /* rows of 2 bytes, unpadded */
   glRasterPos2i(2, 40);
   for (int i = 0; i < 5; i++) glBitmap(10, 10, 0, 0, 11, 0, &glyph[0][0]);
   floats("raster position after 5 glyphs", GL_CURRENT_RASTER_POSITION, 4);
   glBitmap(0, 0, 0, 0, -44, -20, NULL);
   glBitmap(10, 10, 0, 0, 0, 0, &glyph[0][0]);
   floats("raster position after the move", GL_CURRENT_RASTER_POSITION, 4);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   report("glBitmap");
 
   /* 3: a lit raster colour, drawn by a bitmap. */

@@ -40,3 +40,38 @@ pub fn emit(w: &mut GlslWriter, source: PixelSource) {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::ff::FixedState;
+    use crate::pipeline::emulate::key::{PixelSource, ShaderKey};
+    use crate::pipeline::emulate::shadergen::generate;
+    use crate::vocab::Precision;
+
+    /// Each source changes the fragment code, and only the fragment code; no source, no
+    /// image code.
+    #[test]
+    fn each_source_has_its_own_fragment_code() {
+        let base = ShaderKey::from_state(&FixedState::new(), Precision::Float);
+        let plain = generate(&base);
+        assert!(!plain.fragment.contains("texelFetch"));
+        let mut seen = vec![plain.fragment.clone()];
+        for (source, line) in [
+            (PixelSource::Color, "primary = image;"),
+            (PixelSource::Depth, "gl_FragDepth = image.r;"),
+            (PixelSource::Bitmap, "if (image.r == 0.0) discard;"),
+            (
+                PixelSource::StencilBit,
+                "u_pixel_stencil_bit) == 0) discard;",
+            ),
+        ] {
+            let mut key = base.clone();
+            key.fragment.pixels = Some(source);
+            let p = generate(&key);
+            assert!(p.fragment.contains(line), "{source:?}:\n{}", p.fragment);
+            assert_eq!(p.vertex, plain.vertex, "{source:?}");
+            assert!(!seen.contains(&p.fragment), "{source:?}");
+            seen.push(p.fragment);
+        }
+    }
+}
