@@ -92,7 +92,7 @@ fn floats(v: &[f32]) -> String {
 }
 
 /// Every colour format with every type, each at its own place: the conversion of Tables
-/// 2.9 and 3.8 (unorm c/(2ⁿ − 1), L → RGB, A alone, RGB's alpha 1).
+/// 2.9 and 3.8 (unorm c/(2ⁿ − 1), L → RGB, A alone, RGB's alpha 1, R, G or B alone).
 #[test]
 fn every_colour_format_and_type_matches() {
     let formats = [
@@ -101,6 +101,9 @@ fn every_colour_format_and_type_matches() {
         ("GL_LUMINANCE", 1),
         ("GL_LUMINANCE_ALPHA", 2),
         ("GL_ALPHA", 1),
+        ("GL_RED", 1),
+        ("GL_GREEN", 1),
+        ("GL_BLUE", 1),
     ];
     let (w, h) = (5usize, 4usize);
     let mut src = opening();
@@ -145,7 +148,7 @@ fn every_colour_format_and_type_matches() {
             src.push_str(&format!(
                 "glRasterPos2i({}, {});\nglDrawPixels({w}, {h}, {format}, {ty}, {data});\n",
                 2 + 7 * j,
-                2 + 9 * i
+                2 + 5 * i
             ));
         }
     }
@@ -439,7 +442,8 @@ fn copy_pixels_match() {
 }
 
 /// glReadPixels applies the transfer too (GL 1.5 §4.3.2): colours in UNSIGNED_BYTE (RGBA,
-/// and LUMINANCE summed after the transfer) and FLOAT, depths in FLOAT, the same bytes on
+/// and LUMINANCE summed after the transfer), GREEN in UNSIGNED_SHORT and RGB in FLOAT,
+/// depths in FLOAT, the same bytes on
 /// both paths (floats within 1e-6).
 #[test]
 fn read_pixels_applies_the_transfer() {
@@ -454,12 +458,13 @@ fn read_pixels_applies_the_transfer() {
          glReadPixels(0, 0, 8, 4, GL_LUMINANCE, GL_UNSIGNED_BYTE, readback_2);\n\
          glReadPixels(0, 0, 8, 4, GL_RGB, GL_FLOAT, readback_3);\n\
          glReadPixels(0, 0, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, readback_4);\n\
+         glReadPixels(0, 0, 8, 4, GL_GREEN, GL_UNSIGNED_SHORT, readback_5);\n\
          glPixelTransferf(GL_RED_SCALE, 1);\nglPixelTransferf(GL_GREEN_BIAS, 0);\nglPixelTransferf(GL_ALPHA_SCALE, 1);\n\
          glPixelTransferf(GL_DEPTH_SCALE, 1);\nglPixelTransferf(GL_DEPTH_BIAS, 0);\n",
         opening()
     );
     for p in fidelity::run_both(&src, STENCIL_FRAME) {
-        for slot in [1, 2] {
+        for slot in [1, 2, 5] {
             assert_eq!(
                 p.emulate.readbacks[&slot].bytes, p.native.readbacks[&slot].bytes,
                 "{}: readback {slot}",

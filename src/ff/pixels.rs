@@ -7,7 +7,8 @@
 //! 1. unpack: each component of type UNSIGNED_BYTE/SHORT/INT becomes c/(2ⁿ − 1) (Table
 //!    2.9), a FLOAT as it is; STENCIL_INDEX values stay integers;
 //! 2. conversion to RGBA: L → (L, L, L, 1), LA → (L, L, L, A), A → (0, 0, 0, A),
-//!    RGB → (R, G, B, 1) (Table 3.8: missing colour components are 0, alpha 1);
+//!    RGB → (R, G, B, 1), R → (R, 0, 0, 1), G → (0, G, 0, 1), B → (0, 0, B, 1) (Table 3.8:
+//!    missing colour components are 0, alpha 1);
 //! 3. arithmetic: c·c_SCALE + c_BIAS on all four components (the filled-in ones too), depth
 //!    d·DEPTH_SCALE + DEPTH_BIAS; stencil shifted by INDEX_SHIFT (left for > 0, right for
 //!    < 0) plus INDEX_OFFSET by GL — which Mesa skips, and so does the layer;
@@ -354,6 +355,9 @@ fn to_rgba(format: PixelFormat, c: &[f32]) -> Vec4 {
         PixelFormat::Luminance => Vec4::new(c[0], c[0], c[0], 1.0),
         PixelFormat::LuminanceAlpha => Vec4::new(c[0], c[0], c[0], c[1]),
         PixelFormat::Alpha => Vec4::new(0.0, 0.0, 0.0, c[0]),
+        PixelFormat::Red => Vec4::new(c[0], 0.0, 0.0, 1.0),
+        PixelFormat::Green => Vec4::new(0.0, c[0], 0.0, 1.0),
+        PixelFormat::Blue => Vec4::new(0.0, 0.0, c[0], 1.0),
         // Not colour formats: the caller handles them.
         PixelFormat::DepthComponent | PixelFormat::StencilIndex => Vec4::ZERO,
     }

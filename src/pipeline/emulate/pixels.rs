@@ -197,6 +197,9 @@ pub fn transferred_read(gl: &glow::Context, r: &ReadPixels, t: &PixelTransfer) -
                     PixelFormat::Rgb => vec![c.x, c.y, c.z],
                     PixelFormat::Luminance => vec![l],
                     PixelFormat::LuminanceAlpha => vec![l, c.w],
+                    PixelFormat::Red => vec![c.x],
+                    PixelFormat::Green => vec![c.y],
+                    PixelFormat::Blue => vec![c.z],
                     _ => vec![c.w],
                 };
                 for v in values {
