@@ -445,3 +445,39 @@ fn texture_calls_client_attrib_stack_and_variants_answer_as_on_mesa() {
         "the trace lacks the unpack alignment: {trace:.400}"
     );
 }
+
+#[test]
+fn pixel_rectangles_draw_and_answer_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("pixels");
+    assert!(
+        mesa_text.contains("glDrawPixels negative width                  0x0501"),
+        "a negative width raised no INVALID_VALUE on Mesa:\n{mesa_text}"
+    );
+    assert_same_text(&mesa_text, &ours_text, 25, "a query or error answer");
+    // Each panel shows its rectangle on Mesa.
+    assert_six_panels_drawn(&mesa);
+    assert_images_match("pixels", &ours, &mesa, within_3_on_99_percent(&mesa));
+}
+
+/// tests/c/pixels.c traced with FIXEDFUNC_TRACE replays to the image it rendered: the
+/// trace writes its raster positions, bitmaps, images (unpacked from the program's rows),
+/// copies, transfer and zoom calls as the script dialect, and `replay` draws them again.
+#[test]
+fn a_pixels_trace_replays_to_the_same_image() {
+    assert_trace_replays(
+        "pixels",
+        &compile("pixels", Linking::Direct),
+        &[],
+        "192x128",
+    );
+    let text =
+        std::fs::read_to_string(work_dir("pixels").join("calls.c")).expect("the trace was written");
+    for call in [
+        "glDrawPixels(19, 12, GL_RGB",
+        "glBitmap(10, 10",
+        "glCopyPixels(5, 5, 19, 12, GL_COLOR)",
+        "glPixelZoom(2.0, -2.0)",
+    ] {
+        assert!(text.contains(call), "the trace lacks {call}: {text:.400}");
+    }
+}

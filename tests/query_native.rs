@@ -1111,3 +1111,174 @@ fn argument_errors_agree() {
         }
     }
 }
+
+// The raster position (GL 1.5 §2.13) and the pixel-transfer state, against Mesa's answers
+// after the same commands: CURRENT_RASTER_POSITION, _VALID, _COLOR (lit on the CPU by
+// `ff::raster_light`), _TEXTURE_COORDS (texgen and texture matrix) and _DISTANCE on every
+// unit, within the file's float tolerance.
+
+/// A perspective view with the lighting scene's lights, a point in view lit by them.
+fn lit_raster_scene() -> Vec<Command> {
+    let mut s = vec![
+        Command::MatrixMode(MatrixMode::Projection),
+        Command::Frustum(ViewVolume {
+            left: -1.0,
+            right: 1.0,
+            bottom: -1.0,
+            top: 1.0,
+            near: 1.0,
+            far: 20.0,
+        }),
+    ];
+    s.extend(lighting_scene());
+    // The scene's two-sided, separate-specular model: the raster colour is the front
+    // primary colour (Mesa keeps the secondary apart).
+    s.push(Command::RasterPos(Vec4::new(-1.0, 2.5, -4.0, 1.0)));
+    s
+}
+
+#[test]
+fn lit_raster_position_agrees() {
+    assert_agree("lit raster position", &lit_raster_scene());
+}
+
+#[test]
+fn lit_raster_position_single_colour_agrees() {
+    let mut s = lit_raster_scene();
+    s.pop();
+    s.push(Command::LightModel(LightModelParam::ColorControl(
+        ColorControl::SingleColor,
+    )));
+    s.push(Command::LightModel(LightModelParam::LocalViewer(false)));
+    s.push(Command::Disable(Capability::ColorMaterial));
+    s.push(Command::RasterPos(Vec4::new(0.5, 1.5, -5.0, 1.0)));
+    assert_agree("lit raster position, single colour", &s);
+}
+
+#[test]
+fn raster_texcoords_with_texgen_and_matrices_agree() {
+    let mut s = vec![
+        Command::MatrixMode(MatrixMode::Projection),
+        Command::Ortho(ViewVolume {
+            left: -2.0,
+            right: 2.0,
+            bottom: -2.0,
+            top: 2.0,
+            near: -3.0,
+            far: 3.0,
+        }),
+        Command::MatrixMode(MatrixMode::Modelview),
+        Command::Rotate {
+            angle_deg: 20.0,
+            axis: Vec3::new(1.0, 1.0, 0.0),
+        },
+        Command::DepthRange {
+            near: 0.25,
+            far: 0.75,
+        },
+        Command::Color(Vec4::new(0.2, 0.4, 0.6, 0.8)),
+        Command::Normal(Vec3::new(0.0, 0.6, 0.8)),
+        Command::TexCoord {
+            unit: 0,
+            coord: Vec4::new(0.1, 0.2, 0.3, 0.5),
+        },
+        Command::TexCoord {
+            unit: 2,
+            coord: Vec4::new(0.7, 0.6, 0.5, 1.0),
+        },
+        Command::ActiveTexture(0),
+        Command::TexGen {
+            coord: TexCoord::S,
+            param: TexGenParam::Mode(TexGenMode::ObjectLinear),
+        },
+        Command::TexGen {
+            coord: TexCoord::S,
+            param: TexGenParam::ObjectPlane(Vec4::new(1.0, 2.0, 0.0, 0.5)),
+        },
+        Command::TexGen {
+            coord: TexCoord::T,
+            param: TexGenParam::EyePlane(Vec4::new(0.0, 1.0, 1.0, 0.0)),
+        },
+        Command::Enable(Capability::TextureGen(TexCoord::S)),
+        Command::Enable(Capability::TextureGen(TexCoord::T)),
+        Command::ActiveTexture(2),
+        Command::TexGen {
+            coord: TexCoord::S,
+            param: TexGenParam::Mode(TexGenMode::SphereMap),
+        },
+        Command::TexGen {
+            coord: TexCoord::T,
+            param: TexGenParam::Mode(TexGenMode::SphereMap),
+        },
+        Command::Enable(Capability::TextureGen(TexCoord::S)),
+        Command::Enable(Capability::TextureGen(TexCoord::T)),
+        Command::MatrixMode(MatrixMode::Texture),
+        Command::Translate(Vec3::new(0.5, -0.25, 0.0)),
+        Command::Scale(Vec3::new(2.0, 1.0, 1.0)),
+        Command::MatrixMode(MatrixMode::Modelview),
+        Command::RasterPos(Vec4::new(0.5, -0.75, 0.25, 1.0)),
+    ];
+    assert_agree("raster texcoords", &s);
+    // Moved by a NULL bitmap (the idiom), then invalid: VALID is FALSE and Mesa keeps the
+    // other values.
+    s.push(Command::Bitmap(fixedfunc::ff::Bitmap {
+        width: 0,
+        height: 0,
+        origin: (0.0, 0.0),
+        advance: (3.5, -2.25),
+        bits: None,
+    }));
+    assert_agree("moved by glBitmap", &s);
+    s.push(Command::RasterPos(Vec4::new(9.0, 0.0, 0.0, 1.0)));
+    assert_agree("invalid raster position", &s);
+}
+
+#[test]
+fn raster_position_clipping_and_window_pos_agree() {
+    let planes = vec![
+        Command::ClipPlane {
+            plane: 1,
+            equation: Vec4::new(1.0, 0.0, 0.0, -0.25),
+        },
+        Command::Enable(Capability::ClipPlane(1)),
+    ];
+    let mut clipped = planes.clone();
+    clipped.push(Command::RasterPos(Vec4::new(0.0, 0.0, 0.0, 1.0)));
+    assert_agree("clipped by a user plane", &clipped);
+    let mut kept = planes;
+    kept.push(Command::RasterPos(Vec4::new(0.5, 0.5, 0.0, 2.0)));
+    assert_agree("kept by a user plane, w = 2", &kept);
+    let window = vec![
+        Command::DepthRange {
+            near: 0.5,
+            far: 0.25,
+        },
+        Command::Color(Vec4::new(1.5, -0.5, 0.25, 1.0)),
+        Command::RasterPos(Vec4::new(5.0, 5.0, 0.0, 1.0)),
+        Command::WindowPos(Vec3::new(-3.5, 40.25, 0.75)),
+    ];
+    assert_agree("window position", &window);
+}
+
+#[test]
+fn pixel_transfer_zoom_and_their_attribute_groups_agree() {
+    use fixedfunc::ff::PixelTransferParam as P;
+    let mut s = vec![
+        Command::PushAttrib(AttribMask::of(&[
+            AttribGroup::PixelMode,
+            AttribGroup::Current,
+        ])),
+        Command::PixelZoom { x: -1.5, y: 2.0 },
+        Command::PixelTransfer(P::Scale(1, 0.5)),
+        Command::PixelTransfer(P::Bias(3, -0.25)),
+        Command::PixelTransfer(P::DepthScale(2.0)),
+        Command::PixelTransfer(P::DepthBias(0.125)),
+        Command::PixelTransfer(P::IndexShift(-3)),
+        Command::PixelTransfer(P::IndexOffset(7)),
+        Command::PixelTransfer(P::MapColor(true)),
+        Command::RasterPos(Vec4::new(0.25, 0.5, 0.0, 1.0)),
+    ];
+    assert_agree("pixel transfer", &s);
+    s.push(Command::PopAttrib);
+    assert_agree("pixel transfer popped", &s);
+}

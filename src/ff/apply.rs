@@ -284,8 +284,14 @@ impl FixedState {
             }
             Command::PushAttrib(mask) => self.push_attrib(*mask)?,
             Command::TexSubImage1D(t) => self.tex_sub_image(t, TextureTarget::Texture1D)?,
-            Command::CopyTexImage1D(c) => self.copy_tex_image_1d(c)?,
-            Command::CopyTexSubImage(c) => self.copy_tex_sub_image(c)?,
+            Command::CopyTexImage1D(c) => {
+                self.check_read_framebuffer(None)?;
+                self.copy_tex_image_1d(c)?
+            }
+            Command::CopyTexSubImage(c) => {
+                self.check_read_framebuffer(None)?;
+                self.copy_tex_sub_image(c)?
+            }
             Command::GetTexImage(g) => {
                 self.check_get_tex_image(g)?;
             }
@@ -300,6 +306,25 @@ impl FixedState {
             | Command::DrawBuffer(_)
             | Command::ReadBuffer(_)
             | Command::GenerateMipmap(_) => {}
+            Command::RasterPos(p) => self.set_raster_pos(*p),
+            Command::WindowPos(p) => self.set_window_pos(*p),
+            Command::Bitmap(b) => {
+                self.check_draw_framebuffer()?;
+                self.bitmap(b)?
+            }
+            Command::DrawPixels(d) => {
+                d.check()?;
+                self.check_draw_framebuffer()?
+            }
+            Command::CopyPixels(c) => {
+                super::pixels::check_rect("CopyPixels", c.width, c.height)?;
+                self.check_draw_framebuffer()?;
+                self.check_read_framebuffer(None)?
+            }
+            Command::PixelTransfer(p) => self.pixel_transfer.set(*p),
+            Command::PixelZoom { x, y } => {
+                self.pixel_zoom = super::pixels::PixelZoom { x: *x, y: *y }
+            }
         }
         Ok(())
     }

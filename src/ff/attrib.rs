@@ -4,7 +4,7 @@
 //! A push records the whole model state with the mask; a pop copies back the fields of the
 //! groups the mask names, and only those. Each group's fields are listed once, in
 //! `FixedState::restore_group`. Groups whose state the model does not hold yet (FOG,
-//! SCISSOR, EVAL, HINT, LIST, PIXEL_MODE, ACCUM_BUFFER, MULTISAMPLE, POLYGON_STIPPLE) are
+//! SCISSOR, EVAL, HINT, LIST, ACCUM_BUFFER, MULTISAMPLE, POLYGON_STIPPLE) are
 //! accepted and restore nothing; a field added to the model for one of them is added to
 //! its arm there. What GL puts in two groups (LIGHTING's enables are also ENABLE's) is
 //! restored by either, from the same snapshot.
@@ -162,9 +162,12 @@ impl FixedState {
     /// Copies one group's fields back from `s` (GL 1.5 Tables 6.5–6.28, "attribute").
     fn restore_group(&mut self, group: AttribGroup, s: &FixedState) {
         match group {
-            // Current colour, normal, texture coordinates (the raster position and edge
-            // flag are not modelled).
-            AttribGroup::Current => self.current = s.current,
+            // Current colour, normal, texture coordinates and the raster position (the edge
+            // flag is not modelled).
+            AttribGroup::Current => {
+                self.current = s.current;
+                self.raster = s.raster;
+            }
             AttribGroup::Enable => self.restore_enables(s),
             AttribGroup::Lighting => {
                 self.lighting = s.lighting;
@@ -220,9 +223,13 @@ impl FixedState {
             AttribGroup::Fog => self.fog = s.fog,
             AttribGroup::Scissor => self.scissor = s.scissor,
             AttribGroup::Hint => self.hints = s.hints,
+            // glPixelTransfer and glPixelZoom (Table 6.16; the pixel maps are not modelled).
+            AttribGroup::PixelMode => {
+                self.pixel_transfer = s.pixel_transfer;
+                self.pixel_zoom = s.pixel_zoom;
+            }
             // Not modelled yet: nothing saved, nothing restored.
             AttribGroup::PolygonStipple
-            | AttribGroup::PixelMode
             | AttribGroup::AccumBuffer
             | AttribGroup::Eval
             | AttribGroup::List
@@ -437,8 +444,8 @@ impl FixedState {
                     out.push(Command::Hint { target, mode });
                 }
             }
+            AttribGroup::PixelMode => self.pixel_mode_commands(out),
             AttribGroup::PolygonStipple
-            | AttribGroup::PixelMode
             | AttribGroup::AccumBuffer
             | AttribGroup::Eval
             | AttribGroup::List

@@ -31,6 +31,7 @@ pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
         super::calls_attrib::attrib,
         super::calls_raster::raster,
         super::calls_framebuffer::framebuffer,
+        super::calls_pixels::pixels,
     ] {
         if let Some(cmd) = area(c)? {
             return Ok(cmd);

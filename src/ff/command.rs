@@ -30,6 +30,7 @@ use super::framebuffer::{AttachmentPoint, ColorBuffer, FramebufferTarget, Render
 use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
 use super::matrix::{MatrixMode, ViewVolume};
+use super::pixels::{Bitmap, CopyPixels, DrawPixels, PixelTransferParam};
 use super::texenv::TexEnvParam;
 use super::texgen::{TexCoord, TexGenParam};
 use super::texture::{PixelFormat, PixelType, TexFormat, TexParam, TextureTarget};
@@ -395,4 +396,21 @@ pub enum Command {
     CopyTexImage1D(CopyTexImage),
     CopyTexSubImage(super::texture_calls::CopyTexSubImage),
     GetTexImage(super::texture_calls::GetTexImage),
+    // Raster position and pixel rectangles (ff::raster, ff::pixels).
+    /// glRasterPos4f: the point in object coordinates (§2.13).
+    RasterPos(Vec4),
+    /// glWindowPos3f (GL 1.4): window x, y and a depth in [0, 1] mapped by the depth range.
+    WindowPos(Vec3),
+    /// glBitmap (§3.7): negative sizes are INVALID_VALUE.
+    Bitmap(Bitmap),
+    /// glDrawPixels (§3.6.4).
+    DrawPixels(DrawPixels),
+    /// glCopyPixels (§4.3.3).
+    CopyPixels(CopyPixels),
+    PixelTransfer(PixelTransferParam),
+    /// glPixelZoom(x, y).
+    PixelZoom {
+        x: f32,
+        y: f32,
+    },
 }

@@ -370,6 +370,9 @@ gl_enums!(PixelFormat {
     ALPHA => PixelFormat::Alpha,
     DEPTH_COMPONENT => PixelFormat::DepthComponent,
     STENCIL_INDEX => PixelFormat::StencilIndex,
+    RED => PixelFormat::Red,
+    GREEN => PixelFormat::Green,
+    BLUE => PixelFormat::Blue,
 });
 
 gl_enums!(PixelType {

@@ -25,6 +25,7 @@ pub mod buffers;
 pub mod calls;
 pub mod calls_attrib;
 pub mod calls_framebuffer;
+pub mod calls_pixels;
 pub mod calls_raster;
 pub mod client;
 pub mod combiner_model;
@@ -41,8 +42,11 @@ pub mod immediate;
 pub mod light;
 pub mod lists;
 pub mod matrix;
+pub mod pixels;
 pub mod precision;
 pub mod query;
+pub mod raster;
+pub mod raster_light;
 pub mod script;
 pub mod state;
 pub mod texenv;
@@ -79,7 +83,12 @@ pub use light::{
     Material, MaterialParam, Materials, MAX_LIGHTS,
 };
 pub use matrix::{MatrixMode, MatrixStack, ViewVolume};
+pub use pixels::{
+    Bitmap, Converted, CopyKind, CopyPixels, DrawPixels, PixelTransfer, PixelTransferParam,
+    PixelZoom,
+};
 pub use query::QueryValue;
+pub use raster::RasterPos;
 pub use state::{
     CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_CLIP_PLANES, MAX_TEXTURE_UNITS,
 };

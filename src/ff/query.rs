@@ -258,6 +258,31 @@ pnames! {
     CURRENT_NORMAL => |s| normalized(&s.current.normal.to_array()),
     CURRENT_TEXTURE_COORDS => |s| floats(&s.current.texcoords[s.active_unit()].to_array()),
 
+    // The raster position (Table 6.5, `raster`): the active unit's texture coordinates.
+    CURRENT_RASTER_POSITION => |s| floats(&s.raster.window.to_array()),
+    CURRENT_RASTER_POSITION_VALID => |s| boolean(s.raster.valid),
+    CURRENT_RASTER_COLOR => |s| normalized(&s.raster.color.to_array()),
+    CURRENT_RASTER_TEXTURE_COORDS => |s| floats(&s.raster.texcoords[s.active_unit()].to_array()),
+    CURRENT_RASTER_DISTANCE => |s| floats(&[s.raster.distance]),
+
+    // Pixel transfer and zoom (Table 6.16, `pixels`).
+    ZOOM_X => |s| floats(&[s.pixel_zoom.x]),
+    ZOOM_Y => |s| floats(&[s.pixel_zoom.y]),
+    RED_SCALE => |s| floats(&[s.pixel_transfer.scale.x]),
+    GREEN_SCALE => |s| floats(&[s.pixel_transfer.scale.y]),
+    BLUE_SCALE => |s| floats(&[s.pixel_transfer.scale.z]),
+    ALPHA_SCALE => |s| floats(&[s.pixel_transfer.scale.w]),
+    RED_BIAS => |s| floats(&[s.pixel_transfer.bias.x]),
+    GREEN_BIAS => |s| floats(&[s.pixel_transfer.bias.y]),
+    BLUE_BIAS => |s| floats(&[s.pixel_transfer.bias.z]),
+    ALPHA_BIAS => |s| floats(&[s.pixel_transfer.bias.w]),
+    DEPTH_SCALE => |s| floats(&[s.pixel_transfer.depth_scale]),
+    DEPTH_BIAS => |s| floats(&[s.pixel_transfer.depth_bias]),
+    INDEX_SHIFT => |s| int(s.pixel_transfer.index_shift),
+    INDEX_OFFSET => |s| int(s.pixel_transfer.index_offset),
+    MAP_COLOR => |s| boolean(s.pixel_transfer.map_color),
+    MAP_STENCIL => |s| boolean(s.pixel_transfer.map_stencil),
+
     // Lighting (Tables 6.9, 6.10).
     LIGHT_MODEL_AMBIENT => |s| normalized(&s.light_model.ambient.to_array()),
     LIGHT_MODEL_LOCAL_VIEWER => |s| boolean(s.light_model.local_viewer),

@@ -21,6 +21,8 @@ use super::light::{ColorMaterial, Light, LightModel, Materials, MAX_LIGHTS};
 use super::matrix::{
     MatrixMode, MatrixStack, MODELVIEW_STACK_DEPTH, PROJECTION_STACK_DEPTH, TEXTURE_STACK_DEPTH,
 };
+use super::pixels::{PixelTransfer, PixelZoom};
+use super::raster::RasterPos;
 use super::texenv::TexEnv;
 use super::texgen::{TexCoord, TexGen};
 use super::texture::{TextureObject, TextureTarget};
@@ -221,6 +223,12 @@ pub struct FixedState {
     pub dither: bool,
     /// glHint. GL default: DONT_CARE for every target; state only.
     pub hints: Hints,
+    /// CURRENT_RASTER_* (`raster`). GL default: [`RasterPos::DEFAULT`].
+    pub raster: RasterPos,
+    /// glPixelTransfer (`pixels`). GL default: [`PixelTransfer::DEFAULT`].
+    pub pixel_transfer: PixelTransfer,
+    /// glPixelZoom. GL default: (1, 1).
+    pub pixel_zoom: PixelZoom,
 }
 
 impl Default for FixedState {
@@ -284,6 +292,9 @@ impl FixedState {
             index_logic_op: false,
             dither: true,
             hints: Hints::DEFAULT,
+            raster: RasterPos::DEFAULT,
+            pixel_transfer: PixelTransfer::DEFAULT,
+            pixel_zoom: PixelZoom::DEFAULT,
         }
     }
 

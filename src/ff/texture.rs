@@ -83,6 +83,11 @@ pub enum PixelFormat {
     Alpha,
     DepthComponent,
     StencilIndex,
+    /// RED, GREEN, BLUE: one colour component (GL 1.5 Table 3.6), the others 0 and alpha 1
+    /// when converted to RGBA. Read by glDrawPixels and glReadPixels; not texture data here.
+    Red,
+    Green,
+    Blue,
 }
 
 impl PixelFormat {
@@ -95,7 +100,10 @@ impl PixelFormat {
             PixelFormat::Luminance
             | PixelFormat::Alpha
             | PixelFormat::DepthComponent
-            | PixelFormat::StencilIndex => 1,
+            | PixelFormat::StencilIndex
+            | PixelFormat::Red
+            | PixelFormat::Green
+            | PixelFormat::Blue => 1,
         }
     }
 }
@@ -460,6 +468,14 @@ pub fn check_format_pair(internal: TexFormat, format: PixelFormat) -> GlResult {
     if format == PixelFormat::StencilIndex {
         return Err(GlError::invalid_enum(
             "STENCIL_INDEX is not a texture image format",
+        ));
+    }
+    if matches!(
+        format,
+        PixelFormat::Red | PixelFormat::Green | PixelFormat::Blue
+    ) {
+        return Err(GlError::invalid_enum(
+            "RED, GREEN and BLUE texture data are not modelled (glDrawPixels and glReadPixels take them)",
         ));
     }
     if internal.is_depth() != (format == PixelFormat::DepthComponent) {

@@ -19,6 +19,7 @@ mod lexer;
 pub mod names;
 mod parse;
 mod print;
+mod print_pixels;
 
 pub use parse::{parse, parse_lines};
 pub use print::{print, print_aligned};
@@ -97,3 +98,6 @@ fn closest(names: &[&str]) -> String {
 mod every_row;
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod tests_pixels;

@@ -30,7 +30,7 @@ pub fn print_aligned(cmds: &[Command], unpack_alignment: usize) -> String {
 
 /// `data`'s rows of `row` bytes each padded to `alignment` (the last row is not padded:
 /// GL reads only its pixels).
-fn padded(data: &[u8], row: usize, alignment: usize) -> std::borrow::Cow<'_, [u8]> {
+pub(super) fn padded(data: &[u8], row: usize, alignment: usize) -> std::borrow::Cow<'_, [u8]> {
     let stride = crate::ff::pixel_store::PixelStore::stride(row, alignment);
     if row == 0 || stride == row || data.len() <= row {
         return std::borrow::Cow::Borrowed(data);
@@ -46,7 +46,7 @@ fn padded(data: &[u8], row: usize, alignment: usize) -> std::borrow::Cow<'_, [u8
     std::borrow::Cow::Owned(out)
 }
 
-fn f(v: f32) -> String {
+pub(super) fn f(v: f32) -> String {
     if v.is_nan() {
         "NAN".into()
     } else if v.is_infinite() {
@@ -56,7 +56,7 @@ fn f(v: f32) -> String {
     }
 }
 
-fn fs(vs: &[f32]) -> String {
+pub(super) fn fs(vs: &[f32]) -> String {
     vs.iter().map(|v| f(*v)).collect::<Vec<_>>().join(", ")
 }
 
@@ -69,7 +69,7 @@ fn v4(v: Vec4) -> String {
 }
 
 /// The token of a value; every table covers its enum, so the fallback is never printed.
-fn n<T: GlEnum>(v: T) -> &'static str {
+pub(super) fn n<T: GlEnum>(v: T) -> &'static str {
     v.gl_name().unwrap_or("GL_NONE")
 }
 
@@ -146,6 +146,10 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
         Command::Raise { error, call } => out.push_str(&format!(
             "/* {call}: {error:?} raised here by a display list */\n"
         )),
+        Command::Bitmap(_) | Command::DrawPixels(_) => line(
+            out,
+            format_args!("{}", super::print_pixels::call(c, unpack_alignment)),
+        ),
         other => line(out, format_args!("{}", call(other))),
     }
 }
@@ -527,6 +531,13 @@ fn call(c: &Command) -> String {
             n(g.ty),
             g.slot
         ),
+        Command::RasterPos(_)
+        | Command::WindowPos(_)
+        | Command::Bitmap(_)
+        | Command::DrawPixels(_)
+        | Command::CopyPixels(_)
+        | Command::PixelTransfer(_)
+        | Command::PixelZoom { .. } => super::print_pixels::call(c, 1),
         // Printed by `command`.
         Command::Draw(_)
         | Command::TexImage(_)
@@ -717,7 +728,7 @@ fn combiner_input(i: &CombinerInput) -> String {
 
 /// A compound literal for pixel bytes: the element type of `ty` when the length allows,
 /// else GLubyte (both parse back to the same bytes).
-fn pixels(ty: PixelType, data: &[u8]) -> String {
+pub(super) fn pixels(ty: PixelType, data: &[u8]) -> String {
     let size = ty.size();
     // C has no literal for a NaN with another payload: such floats go out as their bytes.
     let odd_nan = ty == PixelType::Float

@@ -47,5 +47,8 @@ pub fn pixel_format(f: PixelFormat) -> u32 {
         PixelFormat::LuminanceAlpha => glow::RG,
         PixelFormat::DepthComponent => glow::DEPTH_COMPONENT,
         PixelFormat::StencilIndex => glow::STENCIL_INDEX,
+        PixelFormat::Red => glow::RED,
+        PixelFormat::Green => glow::GREEN,
+        PixelFormat::Blue => glow::BLUE,
     }
 }

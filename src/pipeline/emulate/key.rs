@@ -163,6 +163,24 @@ pub struct FragmentKey {
     /// Which fragments of a split quad or polygon survive in LINE or POINT mode
     /// (`polygon`); set per draw pass, `None` from the state alone.
     pub edges: Option<EdgeRule>,
+    /// A pixel rectangle's draw (glBitmap, glDrawPixels, glCopyPixels: `pixels`): what the
+    /// image gives the fragment; set per draw, `None` from the state alone.
+    pub pixels: Option<PixelSource>,
+}
+
+/// What a pixel rectangle's image gives its fragments (GL 1.5 §3.6.4, §3.7), read with
+/// texelFetch at the fragment's pixel of the zoomed rectangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PixelSource {
+    /// A colour image: the fragment colour is the image's (in place of the primary colour).
+    Color,
+    /// DEPTH_COMPONENT: the fragment depth is the image's; the colour the raster colour.
+    Depth,
+    /// glBitmap: fragments at unset bits are discarded; the colour the raster colour.
+    Bitmap,
+    /// One bit plane of a STENCIL_INDEX image: fragments whose value lacks the pass's bit
+    /// are discarded (the pass writes that bit through the stencil write mask).
+    StencilBit,
 }
 
 /// The whole key: the generator sees nothing else.
@@ -246,6 +264,7 @@ impl ShaderKey {
                 .map(|AlphaTest { func, .. }| func)
                 .filter(|f| *f != CompareFunc::Always),
             edges: None,
+            pixels: None,
         };
         ShaderKey { vertex, fragment }
     }

@@ -15,6 +15,7 @@ pub mod conv;
 pub mod draw;
 pub mod glsl;
 pub mod key;
+pub mod pixels;
 pub mod polygon;
 pub mod program;
 pub mod shadergen;
@@ -49,6 +50,11 @@ pub struct Emulate {
     raster: RasterSync,
     precision: Precision,
     framebuffers: FramebufferMirror,
+    /// The bound target's size (the viewport GL starts with): pixel rectangles are drawn
+    /// with it as the viewport (`pixels`).
+    target: crate::ff::Viewport,
+    /// The texture holding the last pixel rectangle's image (`pixels`).
+    pixel_image: Option<glow::Texture>,
 }
 
 /// Commands executed by generated programs on a core 3.3 context.
@@ -66,7 +72,10 @@ impl EmulatedPipeline {
             });
         }
         let core = Core::for_bound_target(ctx);
+        let target = core.state.viewport;
         let path = Emulate {
+            target,
+            pixel_image: None,
             programs: ProgramCache::default(),
             geometry: GeometryCache::default(),
             textures: Textures::default(),
@@ -192,6 +201,11 @@ impl Issue for Emulate {
                 | Command::Clear(_)
                 | Command::ReadPixels(_)
                 | Command::CopyTexImage2D(_)
+                | Command::CopyTexImage1D(_)
+                | Command::CopyTexSubImage(_)
+                | Command::Bitmap(_)
+                | Command::DrawPixels(_)
+                | Command::CopyPixels(_)
         ) {
             self.framebuffers.sync(gl, state)?;
         }
@@ -210,7 +224,11 @@ impl Issue for Emulate {
                 self.textures.sync_params(gl, state, *target)?
             }
             Command::ReadPixels(r) => {
-                core.readbacks.insert(r.slot, read_pixels(gl, r));
+                let mut readback = read_pixels(gl, r);
+                if let Some(bytes) = pixels::transferred_read(gl, r, &state.pixel_transfer) {
+                    readback.bytes = bytes;
+                }
+                core.readbacks.insert(r.slot, readback);
             }
             Command::TexSubImage1D(t) => self.textures.sub_image_1d(ctx, state, t)?,
             Command::CopyTexImage1D(c) => self.textures.copy_image_1d(ctx, state, c)?,
@@ -223,6 +241,9 @@ impl Issue for Emulate {
             // The model restored the groups; the raster state and uniforms follow it at the
             // next draw, the texture objects' parameters now.
             Command::PopAttrib => self.textures.sync_bound_params(gl, state)?,
+            Command::Bitmap(_) | Command::DrawPixels(_) | Command::CopyPixels(_) => {
+                self.pixel_command(gl, state, cmd)?
+            }
             _ => {}
         }
         Ok(())
@@ -247,6 +268,9 @@ impl Issue for Emulate {
         self.geometry.release(gl);
         self.textures.release(gl);
         self.framebuffers.release(gl);
+        if let Some(t) = self.pixel_image.take() {
+            unsafe { gl.delete_texture(t) };
+        }
         self.raster.invalidate();
     }
 }

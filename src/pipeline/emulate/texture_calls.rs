@@ -266,6 +266,9 @@ fn convert(stored: &[u8], f: TexFormat, format: PixelFormat, ty: PixelType) -> V
             PixelFormat::Luminance => &[0],
             PixelFormat::LuminanceAlpha => &[0, 3],
             PixelFormat::Alpha => &[3],
+            PixelFormat::Red => &[0],
+            PixelFormat::Green => &[1],
+            PixelFormat::Blue => &[2],
             PixelFormat::DepthComponent | PixelFormat::StencilIndex => &[],
         };
         for &k in picked {

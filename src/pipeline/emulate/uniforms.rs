@@ -84,6 +84,14 @@ pub enum UniformSource {
     FogParams,
     /// FOG_COLOR, clamped when set.
     FogColor,
+    /// A pixel rectangle's image (`pixels::PIXEL_IMAGE_UNIT`).
+    PixelImage,
+    /// A pixel rectangle's lower-left window corner and zoom, (x, y, z_x, z_y): the raster
+    /// position and zoom of the draw's state (`pixels::rect_state`).
+    PixelRect,
+    /// The bit a STENCIL_INDEX pass writes: its state's stencil value mask, which the pass's
+    /// ALWAYS test does not read (`pixels`).
+    PixelStencilBit,
 }
 
 impl UniformSource {
@@ -111,6 +119,9 @@ impl UniformSource {
             UniformSource::ClipPlane(i) => format!("u_clip_plane{i}"),
             UniformSource::FogParams => "u_fog_params".into(),
             UniformSource::FogColor => "u_fog_color".into(),
+            UniformSource::PixelImage => "u_pixel_image".into(),
+            UniformSource::PixelRect => "u_pixel_rect".into(),
+            UniformSource::PixelStencilBit => "u_pixel_stencil_bit".into(),
         }
     }
 
@@ -127,7 +138,9 @@ impl UniformSource {
             | UniformSource::AlphaRef
             | UniformSource::PointSize
             | UniformSource::Material(_, MaterialValue::Shininess) => UniformType::Float,
-            UniformSource::Sampler(_) => UniformType::Int,
+            UniformSource::Sampler(_)
+            | UniformSource::PixelImage
+            | UniformSource::PixelStencilBit => UniformType::Int,
             _ => UniformType::Vec4,
         }
     }
@@ -230,6 +243,14 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
         ),
         UniformSource::FogParams => Vec4(state.fog.value.factor_params()),
         UniformSource::FogColor => Vec4(state.fog.value.color),
+        UniformSource::PixelImage => Int(super::pixels::PIXEL_IMAGE_UNIT as i32),
+        UniformSource::PixelRect => Vec4(glam::Vec4::new(
+            state.raster.window.x,
+            state.raster.window.y,
+            state.pixel_zoom.x,
+            state.pixel_zoom.y,
+        )),
+        UniformSource::PixelStencilBit => Int(state.stencil_test.value.value_mask as i32),
     }
 }
 

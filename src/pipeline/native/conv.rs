@@ -64,3 +64,40 @@ pub fn operand_rgb(arg: usize) -> GLenum {
 pub fn operand_alpha(arg: usize) -> GLenum {
     registry::OPERAND0_ALPHA + arg as GLenum
 }
+
+/// glCopyPixels' type (§4.3.3).
+pub fn copy_kind(k: crate::ff::CopyKind) -> GLenum {
+    match k {
+        crate::ff::CopyKind::Color => registry::COLOR,
+        crate::ff::CopyKind::Depth => registry::DEPTH,
+        crate::ff::CopyKind::Stencil => registry::STENCIL,
+    }
+}
+
+/// glPixelTransfer's pname and value (the integer ones as floats, which glPixelTransferf
+/// reads as Mesa's glPixelTransferi passes them).
+pub fn pixel_transfer(p: crate::ff::PixelTransferParam) -> (GLenum, f32) {
+    use crate::ff::PixelTransferParam as P;
+    const SCALE: [GLenum; 4] = [
+        registry::RED_SCALE,
+        registry::GREEN_SCALE,
+        registry::BLUE_SCALE,
+        registry::ALPHA_SCALE,
+    ];
+    const BIAS: [GLenum; 4] = [
+        registry::RED_BIAS,
+        registry::GREEN_BIAS,
+        registry::BLUE_BIAS,
+        registry::ALPHA_BIAS,
+    ];
+    match p {
+        P::Scale(i, v) => (SCALE[usize::from(i.min(3))], v),
+        P::Bias(i, v) => (BIAS[usize::from(i.min(3))], v),
+        P::DepthScale(v) => (registry::DEPTH_SCALE, v),
+        P::DepthBias(v) => (registry::DEPTH_BIAS, v),
+        P::IndexShift(v) => (registry::INDEX_SHIFT, v as f32),
+        P::IndexOffset(v) => (registry::INDEX_OFFSET, v as f32),
+        P::MapColor(b) => (registry::MAP_COLOR, f32::from(u8::from(b))),
+        P::MapStencil(b) => (registry::MAP_STENCIL, f32::from(u8::from(b))),
+    }
+}

@@ -242,6 +242,15 @@ impl Native {
                 unsafe { g.PushAttrib(mask.0) };
                 self.attrib_masks.push(*mask);
             }
+            Command::RasterPos(_)
+            | Command::WindowPos(_)
+            | Command::Bitmap(_)
+            | Command::DrawPixels(_)
+            | Command::CopyPixels(_)
+            | Command::PixelTransfer(_)
+            | Command::PixelZoom { .. } => {
+                super::pixels::issue(g, cmd);
+            }
             Command::PopAttrib => {
                 unsafe { g.PopAttrib() };
                 // The model accepted the pop, so a mask was pushed; the groups are sent

@@ -18,6 +18,7 @@ mod conv;
 mod draw;
 mod execute;
 mod lighting;
+mod pixels;
 mod readback;
 mod texenv;
 mod texture_calls;
@@ -133,6 +134,11 @@ impl Issue for Native {
                     | Command::Clear(_)
                     | Command::ReadPixels(_)
                     | Command::CopyTexImage2D(_)
+                    | Command::CopyTexImage1D(_)
+                    | Command::CopyTexSubImage(_)
+                    | Command::Bitmap(_)
+                    | Command::DrawPixels(_)
+                    | Command::CopyPixels(_)
             ) {
                 self.framebuffers.sync(ctx.gl(), &core.state)?;
             }

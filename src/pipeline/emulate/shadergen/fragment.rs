@@ -28,6 +28,9 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
         w.line("vec4 primary = v_color;");
     }
     w.line("primary = clamp(primary, 0.0, 1.0);");
+    if let Some(source) = key.pixels {
+        super::pixels::emit(&mut w, source);
+    }
     if key.color_sum {
         emit_secondary(&mut w, key, flat);
     }

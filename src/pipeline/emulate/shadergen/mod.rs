@@ -10,6 +10,7 @@
 
 mod combiners;
 mod fragment;
+mod pixels;
 mod vertex;
 
 use super::key::ShaderKey;
