@@ -71,6 +71,23 @@ pub fn bound_bits(gl: &glow::Context) -> Bits {
     bits
 }
 
+/// Whether `cmd` draws into or reads from the bound framebuffers (GL must bind what the
+/// model binds before it is issued).
+pub fn uses_framebuffer(cmd: &Command) -> bool {
+    matches!(
+        cmd,
+        Command::Draw(_)
+            | Command::Clear(_)
+            | Command::ReadPixels(_)
+            | Command::CopyTexImage2D(_)
+            | Command::CopyTexImage1D(_)
+            | Command::CopyTexSubImage(_)
+            | Command::Bitmap(_)
+            | Command::DrawPixels(_)
+            | Command::CopyPixels(_)
+    )
+}
+
 /// The GL objects of the model's framebuffers and renderbuffers.
 #[derive(Default)]
 pub struct FramebufferMirror {

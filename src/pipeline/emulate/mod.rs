@@ -195,18 +195,7 @@ impl Issue for Emulate {
         {
             return Ok(());
         }
-        if matches!(
-            cmd,
-            Command::Draw(_)
-                | Command::Clear(_)
-                | Command::ReadPixels(_)
-                | Command::CopyTexImage2D(_)
-                | Command::CopyTexImage1D(_)
-                | Command::CopyTexSubImage(_)
-                | Command::Bitmap(_)
-                | Command::DrawPixels(_)
-                | Command::CopyPixels(_)
-        ) {
+        if super::framebuffers::uses_framebuffer(cmd) {
             self.framebuffers.sync(gl, state)?;
         }
         match cmd {

@@ -128,18 +128,7 @@ impl Issue for Native {
             .framebuffers
             .issue(ctx.gl(), &core.state, cmd, &mut |_, n| textures.id(n))?;
         if !handled {
-            if matches!(
-                cmd,
-                Command::Draw(_)
-                    | Command::Clear(_)
-                    | Command::ReadPixels(_)
-                    | Command::CopyTexImage2D(_)
-                    | Command::CopyTexImage1D(_)
-                    | Command::CopyTexSubImage(_)
-                    | Command::Bitmap(_)
-                    | Command::DrawPixels(_)
-                    | Command::CopyPixels(_)
-            ) {
+            if super::framebuffers::uses_framebuffer(cmd) {
                 self.framebuffers.sync(ctx.gl(), &core.state)?;
             }
             self.issue_calls(core, cmd)?;
