@@ -25,6 +25,9 @@ const MODEL_EXTENSIONS: &[&str] = &[
     "GL_EXT_stencil_wrap",
     "GL_NV_register_combiners",
     "GL_ARB_framebuffer_object",
+    "GL_EXT_framebuffer_object",
+    "GL_EXT_framebuffer_blit",
+    "GL_EXT_packed_depth_stencil",
 ];
 
 fn main() {

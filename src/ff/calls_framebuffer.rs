@@ -24,7 +24,7 @@ pub fn framebuffer<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         E::DeleteFramebuffers | E::DeleteFramebuffersEXT => Command::DeleteFramebuffers(names(c)?),
         E::BindRenderbuffer | E::BindRenderbufferEXT => {
             c.count(2)?;
-            c.pname(0, &["GL_RENDERBUFFER"])?;
+            c.pname(0, RENDERBUFFER)?;
             Command::BindRenderbuffer(c.u32(1)?)
         }
         E::DeleteRenderbuffers | E::DeleteRenderbuffersEXT => {
@@ -32,7 +32,7 @@ pub fn framebuffer<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         E::RenderbufferStorage | E::RenderbufferStorageEXT => {
             c.count(4)?;
-            c.pname(0, &["GL_RENDERBUFFER"])?;
+            c.pname(0, RENDERBUFFER)?;
             Command::RenderbufferStorage {
                 format: c.enm(1)?,
                 width: c.i32(2)?,
@@ -71,7 +71,7 @@ pub fn framebuffer<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(4)?;
             let target = c.enm(0)?;
             let attachment = c.enm(1)?;
-            c.pname(2, &["GL_RENDERBUFFER"])?;
+            c.pname(2, RENDERBUFFER)?;
             Command::FramebufferRenderbuffer {
                 target,
                 attachment,
@@ -93,6 +93,9 @@ pub fn framebuffer<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         _ => return Ok(None),
     }))
 }
+
+/// GL_RENDERBUFFER and its EXT name.
+const RENDERBUFFER: &[&str] = &["GL_RENDERBUFFER", "GL_RENDERBUFFER_EXT"];
 
 /// (n, names): n below 0 is INVALID_VALUE.
 fn names<A: Args>(c: &A) -> Result<Vec<u32>, A::Error> {

@@ -726,7 +726,7 @@ pub fn script_answer<A: super::args::Args>(
         }
         _ => {
             c.count(3)?;
-            c.pname(0, &["GL_RENDERBUFFER"])?;
+            c.pname(0, &["GL_RENDERBUFFER", "GL_RENDERBUFFER_EXT"])?;
             Reply::None
         }
     }))

@@ -557,6 +557,9 @@ gl_enums!(FramebufferTarget {
     FRAMEBUFFER => FramebufferTarget::Both,
     DRAW_FRAMEBUFFER => FramebufferTarget::Draw,
     READ_FRAMEBUFFER => FramebufferTarget::Read,
+    FRAMEBUFFER_EXT => FramebufferTarget::Both,
+    DRAW_FRAMEBUFFER_EXT => FramebufferTarget::Draw,
+    READ_FRAMEBUFFER_EXT => FramebufferTarget::Read,
 });
 
 gl_enums!(AttachmentPoint {
@@ -579,6 +582,24 @@ gl_enums!(AttachmentPoint {
     DEPTH_ATTACHMENT => AttachmentPoint::Depth,
     STENCIL_ATTACHMENT => AttachmentPoint::Stencil,
     DEPTH_STENCIL_ATTACHMENT => AttachmentPoint::DepthStencil,
+    COLOR_ATTACHMENT0_EXT => AttachmentPoint::Color(0),
+    COLOR_ATTACHMENT1_EXT => AttachmentPoint::Color(1),
+    COLOR_ATTACHMENT2_EXT => AttachmentPoint::Color(2),
+    COLOR_ATTACHMENT3_EXT => AttachmentPoint::Color(3),
+    COLOR_ATTACHMENT4_EXT => AttachmentPoint::Color(4),
+    COLOR_ATTACHMENT5_EXT => AttachmentPoint::Color(5),
+    COLOR_ATTACHMENT6_EXT => AttachmentPoint::Color(6),
+    COLOR_ATTACHMENT7_EXT => AttachmentPoint::Color(7),
+    COLOR_ATTACHMENT8_EXT => AttachmentPoint::Color(8),
+    COLOR_ATTACHMENT9_EXT => AttachmentPoint::Color(9),
+    COLOR_ATTACHMENT10_EXT => AttachmentPoint::Color(10),
+    COLOR_ATTACHMENT11_EXT => AttachmentPoint::Color(11),
+    COLOR_ATTACHMENT12_EXT => AttachmentPoint::Color(12),
+    COLOR_ATTACHMENT13_EXT => AttachmentPoint::Color(13),
+    COLOR_ATTACHMENT14_EXT => AttachmentPoint::Color(14),
+    COLOR_ATTACHMENT15_EXT => AttachmentPoint::Color(15),
+    DEPTH_ATTACHMENT_EXT => AttachmentPoint::Depth,
+    STENCIL_ATTACHMENT_EXT => AttachmentPoint::Stencil,
 });
 
 gl_enums!(ColorBuffer {
@@ -655,6 +676,12 @@ gl_enums!(RenderbufferFormat {
     DEPTH_STENCIL => RenderbufferFormat::DepthStencil,
     DEPTH24_STENCIL8 => RenderbufferFormat::Depth24Stencil8,
     DEPTH32F_STENCIL8 => RenderbufferFormat::Depth32FStencil8,
+    STENCIL_INDEX1_EXT => RenderbufferFormat::StencilIndex1,
+    STENCIL_INDEX4_EXT => RenderbufferFormat::StencilIndex4,
+    STENCIL_INDEX8_EXT => RenderbufferFormat::StencilIndex8,
+    STENCIL_INDEX16_EXT => RenderbufferFormat::StencilIndex16,
+    DEPTH_STENCIL_EXT => RenderbufferFormat::DepthStencil,
+    DEPTH24_STENCIL8_EXT => RenderbufferFormat::Depth24Stencil8,
 });
 
 #[cfg(test)]

@@ -61,6 +61,11 @@ impl Textures {
     ) -> Result<(), PipelineError> {
         let name = state.units[state.active_unit()].bound(target);
         let gl_t = self.edit(gl, (target, name))?;
+        // MAX_LEVEL first: the model now holds levels 1…p, and GL generates only up to
+        // MAX_LEVEL, which was the base level's when it was uploaded.
+        if let Some(object) = state.texture(target, name) {
+            apply_params(gl, gl_t, object);
+        }
         unsafe { gl.generate_mipmap(gl_t) };
         Ok(())
     }
