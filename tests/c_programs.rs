@@ -481,3 +481,17 @@ fn a_pixels_trace_replays_to_the_same_image() {
         assert!(text.contains(call), "the trace lacks {call}: {text:.400}");
     }
 }
+
+/// tests/c/formats.c: GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT and GL_FLOAT buffers in RGBA,
+/// BGRA and ARGB, each at its own precision (RED_BITS 8, 16, 32), print the pixels Mesa's
+/// OSMesa gives, to the last bit of a 16-bit component and the fourth decimal of a float.
+#[test]
+fn short_and_float_buffers_hold_what_mesa_writes() {
+    let (mesa, ours) = texts("formats");
+    assert!(
+        mesa.contains("RGBA float: make current 1")
+            && mesa.contains("flat                     0.1000 0.2000 0.7000 1.0000"),
+        "Mesa printed something else:\n{mesa}"
+    );
+    assert_same_text(&mesa, &ours, 40, "a pixel of a short or float buffer");
+}

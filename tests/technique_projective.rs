@@ -336,10 +336,8 @@ fn mask_of(plan: &Plan, kind: PipelineKind) -> Mask {
     let target = RenderTarget::new(
         &ctx,
         TargetSpec {
-            width: fb.width,
-            height: fb.height,
-            depth: fb.depth,
             stencil: fb.stencil,
+            ..TargetSpec::new(fb.width, fb.height, fb.depth)
         },
     )
     .expect("target");

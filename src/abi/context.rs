@@ -15,7 +15,9 @@ use super::AbiError;
 use crate::ff::api::Entry;
 use crate::ff::front::{Client, Reply};
 use crate::ff::{Command, GlErrorKind};
-use crate::gpu::{Backend, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec};
+use crate::gpu::{
+    Backend, ColorStorage, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec,
+};
 use crate::pipeline::emulate::EmulatedPipeline;
 use crate::pipeline::Pipeline;
 use crate::vocab::DepthBits;
@@ -66,15 +68,58 @@ impl ColorFormat {
         }
     }
 
-    /// An RGBA pixel in this order.
-    fn write(self, rgba: &[u8], out: &mut [u8]) {
-        let [r, g, b, a] = [rgba[0], rgba[1], rgba[2], rgba[3]];
+    /// The RGBA components this format stores, in its order.
+    fn order(self) -> &'static [usize] {
         match self {
-            ColorFormat::Rgba => out.copy_from_slice(&[r, g, b, a]),
-            ColorFormat::Bgra => out.copy_from_slice(&[b, g, r, a]),
-            ColorFormat::Argb => out.copy_from_slice(&[a, r, g, b]),
-            ColorFormat::Rgb => out.copy_from_slice(&[r, g, b]),
-            ColorFormat::Bgr => out.copy_from_slice(&[b, g, r]),
+            ColorFormat::Rgba => &[0, 1, 2, 3],
+            ColorFormat::Bgra => &[2, 1, 0, 3],
+            ColorFormat::Argb => &[3, 0, 1, 2],
+            ColorFormat::Rgb => &[0, 1, 2],
+            ColorFormat::Bgr => &[2, 1, 0],
+        }
+    }
+
+    /// An RGBA pixel of `size`-byte components in this order. Mesa's OSMesa orders only
+    /// byte components: GL_UNSIGNED_SHORT and GL_FLOAT buffers hold R, G, B (and A) in
+    /// that order whatever the format asked (measured, `tests/c/formats.c`: OSMESA_BGRA and
+    /// OSMESA_ARGB with GL_FLOAT give RGBA).
+    fn write(self, rgba: &[u8], out: &mut [u8], size: usize) {
+        let order = match (self, size) {
+            (_, 1) => self.order(),
+            (ColorFormat::Rgb | ColorFormat::Bgr, _) => &[0, 1, 2],
+            _ => &[0, 1, 2, 3],
+        };
+        for (k, c) in order.iter().enumerate() {
+            out[k * size..(k + 1) * size].copy_from_slice(&rgba[c * size..(c + 1) * size]);
+        }
+    }
+}
+
+/// The component type of the caller's buffer (OSMesaMakeCurrent's `type`), as Mesa's
+/// OSMesa takes them: each is rendered at its own precision (a GL_FLOAT buffer is an
+/// RGBA32F colour buffer, GL_UNSIGNED_SHORT an RGBA16 one; RED_BITS reports 32 or 16).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorType {
+    UnsignedByte,
+    UnsignedShort,
+    Float,
+}
+
+impl ColorType {
+    pub fn from_gl(ty: u32) -> Option<ColorType> {
+        Some(match ty {
+            0x1401 => ColorType::UnsignedByte,
+            0x1403 => ColorType::UnsignedShort,
+            0x1406 => ColorType::Float,
+            _ => return None,
+        })
+    }
+
+    fn storage(self) -> ColorStorage {
+        match self {
+            ColorType::UnsignedByte => ColorStorage::Rgba8,
+            ColorType::UnsignedShort => ColorStorage::Rgba16,
+            ColorType::Float => ColorStorage::Rgba32F,
         }
     }
 }
@@ -174,15 +219,16 @@ impl Context {
     pub fn bind_buffer(&mut self, buffer: ClientBuffer) -> Result<(), AbiError> {
         self.write_back();
         let (w, h) = (buffer.width as u32, buffer.height as u32);
+        let storage = ColorType::from_gl(buffer.ty).map_or(ColorStorage::Rgba8, ColorType::storage);
         let same = self
             .target
             .as_ref()
-            .is_some_and(|t| (t.width(), t.height()) == (w, h));
+            .is_some_and(|t| (t.width(), t.height()) == (w, h) && t.spec().color == storage);
         if !same {
             if let Some(old) = self.target.take() {
                 old.delete(&self.gpu);
             }
-            let mut spec = TargetSpec::new(w, h, self.depth);
+            let mut spec = TargetSpec::new(w, h, self.depth).with_color(storage);
             if self.stencil {
                 spec = spec.with_stencil();
             }
@@ -426,7 +472,8 @@ impl Context {
         let (Some(target), Some(buffer)) = (&self.target, self.buffer) else {
             return;
         };
-        let rows = target.read_color_rows(&self.gpu);
+        let rows = target.read_color_stored(&self.gpu);
+        let size = target.spec().color.component_bytes();
         // The read bound the target: the pipeline binds the program's framebuffers again.
         if let Some(p) = self.pipeline.as_mut() {
             p.forget_sent_state();
@@ -439,14 +486,14 @@ impl Context {
             }
         };
         let (w, h) = (buffer.width as usize, buffer.height as usize);
-        let bpp = self.format.bytes();
+        let bpp = self.format.bytes() * size;
         let row_pixels = if self.row_length > 0 {
             self.row_length as usize
         } else {
             w
         };
         // `rows` is GL's order, row y from the bottom; Y_UP keeps that order.
-        for (y, src) in rows.chunks_exact(w * 4).enumerate().take(h) {
+        for (y, src) in rows.chunks_exact(w * 4 * size).enumerate().take(h) {
             let dst_row = if self.y_up { y } else { h - 1 - y };
             // SAFETY: the caller's buffer holds height rows of ROW_LENGTH pixels in its
             // format (OSMesaMakeCurrent's contract).
@@ -456,8 +503,8 @@ impl Context {
                     w * bpp,
                 )
             };
-            for (s, d) in src.chunks_exact(4).zip(dst.chunks_exact_mut(bpp)) {
-                self.format.write(s, d);
+            for (s, d) in src.chunks_exact(4 * size).zip(dst.chunks_exact_mut(bpp)) {
+                self.format.write(s, d, size);
             }
         }
     }

@@ -4,14 +4,15 @@
 //! current per thread.
 //!
 //! Refusals follow Mesa (a null context, a null buffer, a size outside 1…OSMESA_MAX_WIDTH,
-//! a type other than GL_UNSIGNED_BYTE: OSMesaMakeCurrent returns GL_FALSE), and each prints
+//! a type other than GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT or GL_FLOAT: OSMesaMakeCurrent
+//! returns GL_FALSE), and each prints
 //! why on stderr, since a C program only sees the GL_FALSE.
 #![allow(clippy::missing_safety_doc, non_snake_case)]
 
 use std::collections::HashMap;
 use std::ffi::{c_char, c_void, CStr};
 
-use super::context::{ClientBuffer, ColorFormat, Context, MAX_SIZE};
+use super::context::{ClientBuffer, ColorFormat, ColorType, Context, MAX_SIZE};
 use crate::ff::api::ctypes::*;
 
 const OSMESA_ROW_LENGTH: GLint = 0x10;
@@ -30,7 +31,6 @@ const OSMESA_CORE_PROFILE: i32 = 0x34;
 const OSMESA_COMPAT_PROFILE: i32 = 0x35;
 const OSMESA_CONTEXT_MAJOR_VERSION: i32 = 0x36;
 const OSMESA_CONTEXT_MINOR_VERSION: i32 = 0x37;
-const GL_UNSIGNED_BYTE: GLenum = 0x1401;
 
 /// The opaque handle C programs hold.
 pub type OSMesaContext = *mut Context;
@@ -169,10 +169,10 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
         eprintln!("fixedfunc: OSMesaMakeCurrent: size {width}×{height} outside 1…{MAX_SIZE}");
         return 0;
     }
-    if ty != GL_UNSIGNED_BYTE {
+    if ColorType::from_gl(ty).is_none() {
         eprintln!(
-            "fixedfunc: OSMesaMakeCurrent: type {ty:#x}; this library writes GL_UNSIGNED_BYTE \
-             buffers"
+            "fixedfunc: OSMesaMakeCurrent: type {ty:#x}; this library writes GL_UNSIGNED_BYTE, \
+             GL_UNSIGNED_SHORT and GL_FLOAT buffers"
         );
         return 0;
     }

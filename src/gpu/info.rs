@@ -100,10 +100,8 @@ impl ContextInfo {
         for bits in DepthBits::ALL {
             for stencil in [false, true] {
                 let spec = TargetSpec {
-                    width: 4,
-                    height: 4,
-                    depth: bits,
                     stencil,
+                    ..TargetSpec::new(4, 4, bits)
                 };
                 let result = RenderTarget::new(ctx, spec).map(|t| {
                     let obtained = (t.depth_bits(), t.stencil_bits());

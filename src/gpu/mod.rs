@@ -37,7 +37,7 @@ pub use egl::EglPlatform;
 pub use error::GpuError;
 pub use info::{ContextInfo, DepthReport, ExtensionReport, Limits, SHADOW_EXTENSIONS};
 pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8};
-pub use target::{RenderTarget, TargetSpec};
+pub use target::{ColorStorage, RenderTarget, TargetSpec};
 pub use trivial::FlatProgram;
 pub use xvfb::{stop_private_displays, VirtualDisplay};
 

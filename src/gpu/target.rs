@@ -1,5 +1,6 @@
-//! Render targets: a framebuffer object with an RGBA8 colour renderbuffer and a depth
-//! attachment chosen by `DepthBits`, plus pixel readback.
+//! Render targets: a framebuffer object with a colour renderbuffer (RGBA8 unless asked
+//! for RGBA16 or RGBA32F, `ColorStorage`) and a depth attachment chosen by `DepthBits`,
+//! plus pixel readback.
 //!
 //! Row order: `read_color` returns an image with the top row first (image convention);
 //! depth and stencil readbacks keep GL's order, bottom row first, because they feed
@@ -12,6 +13,34 @@ use super::readback::{depth_to_u16, depth_to_u32, depth_to_u8};
 use super::{conv, GpuContext, GpuError};
 use crate::vocab::{DepthBits, ReadbackRule};
 
+/// The colour buffer's storage.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum ColorStorage {
+    /// RGBA8 (the default).
+    #[default]
+    Rgba8,
+    /// RGBA16, 16-bit unsigned normalised (an OSMesa GL_UNSIGNED_SHORT buffer).
+    Rgba16,
+    /// RGBA32F (an OSMesa GL_FLOAT buffer).
+    Rgba32F,
+}
+
+impl ColorStorage {
+    /// The GL internal format, and the type and bytes per component a readback uses.
+    fn gl(self) -> (u32, u32, usize) {
+        match self {
+            ColorStorage::Rgba8 => (glow::RGBA8, glow::UNSIGNED_BYTE, 1),
+            ColorStorage::Rgba16 => (glow::RGBA16, glow::UNSIGNED_SHORT, 2),
+            ColorStorage::Rgba32F => (glow::RGBA32F, glow::FLOAT, 4),
+        }
+    }
+
+    /// Bytes per component.
+    pub fn component_bytes(self) -> usize {
+        self.gl().2
+    }
+}
+
 /// Size and buffers of a target.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct TargetSpec {
@@ -20,6 +49,8 @@ pub struct TargetSpec {
     pub depth: DepthBits,
     /// Ask for 8 stencil bits. D24 always has them; D16 has none.
     pub stencil: bool,
+    /// GL default here: RGBA8.
+    pub color: ColorStorage,
 }
 
 impl TargetSpec {
@@ -29,11 +60,17 @@ impl TargetSpec {
             height,
             depth,
             stencil: false,
+            color: ColorStorage::Rgba8,
         }
     }
 
     pub fn with_stencil(mut self) -> Self {
         self.stencil = true;
+        self
+    }
+
+    pub fn with_color(mut self, color: ColorStorage) -> Self {
+        self.color = color;
         self
     }
 }
@@ -78,7 +115,7 @@ impl RenderTarget {
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(framebuffer));
             let color = gl.create_renderbuffer().map_err(GpuError::Object)?;
             gl.bind_renderbuffer(glow::RENDERBUFFER, Some(color));
-            gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, w, h);
+            gl.renderbuffer_storage(glow::RENDERBUFFER, spec.color.gl().0, w, h);
             gl.framebuffer_renderbuffer(
                 glow::FRAMEBUFFER,
                 glow::COLOR_ATTACHMENT0,
@@ -183,6 +220,16 @@ impl RenderTarget {
             gl.delete_renderbuffer(self.color);
             gl.delete_renderbuffer(self.depth);
         }
+    }
+
+    /// The colour buffer in its own storage (RGBA of 1, 2 or 4 bytes per component:
+    /// unorm8, unorm16 or f32, native byte order), GL's order, bottom row first.
+    pub fn read_color_stored(&self, ctx: &GpuContext) -> Result<Vec<u8>, GpuError> {
+        let (_, ty, size) = self.spec.color.gl();
+        let (w, h) = (self.spec.width, self.spec.height);
+        let mut data = vec![0u8; (w * h * 4) as usize * size];
+        self.read(ctx, glow::RGBA, ty, &mut data)?;
+        Ok(data)
     }
 
     /// The colour buffer as RGBA8 bytes in GL's order, bottom row first.

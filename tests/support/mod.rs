@@ -23,10 +23,8 @@ pub fn context(backend: Backend, profile: Profile) -> GpuContext {
 /// A target, bound, with the viewport covering it.
 pub fn target(ctx: &GpuContext, w: u32, h: u32, depth: DepthBits, stencil: bool) -> RenderTarget {
     let spec = TargetSpec {
-        width: w,
-        height: h,
-        depth,
         stencil,
+        ..TargetSpec::new(w, h, depth)
     };
     RenderTarget::new(ctx, spec).unwrap_or_else(|e| panic!("target {spec:?}: {e}"))
 }
