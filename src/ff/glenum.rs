@@ -206,6 +206,7 @@ gl_enums!(Capability {
     COLOR_LOGIC_OP => Capability::ColorLogicOp,
     INDEX_LOGIC_OP => Capability::IndexLogicOp,
     LOGIC_OP => Capability::IndexLogicOp,
+    POLYGON_STIPPLE => Capability::PolygonStipple,
 });
 
 gl_enums!(LogicOp {

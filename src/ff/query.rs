@@ -519,6 +519,7 @@ impl FixedState {
             Capability::ColorLogicOp => self.logic_op.enabled,
             Capability::IndexLogicOp => self.index_logic_op,
             Capability::Dither => self.dither,
+            Capability::PolygonStipple => self.polygon_stipple.enabled,
         })
     }
 

@@ -23,6 +23,7 @@ use super::matrix::{
 };
 use super::pixels::{PixelTransfer, PixelZoom};
 use super::raster::RasterPos;
+use super::stipple::PolygonStipple;
 use super::texenv::TexEnv;
 use super::texgen::{TexCoord, TexGen};
 use super::texture::{TextureObject, TextureTarget};
@@ -192,6 +193,9 @@ pub struct FixedState {
     pub cull_face: Toggle<Face>,
     /// GL default: CCW.
     pub front_face: FrontFace,
+    /// POLYGON_STIPPLE with glPolygonStipple's mask (`stipple`). GL default: disabled,
+    /// every bit 1.
+    pub polygon_stipple: Toggle<PolygonStipple>,
     /// GL default: 1.
     pub line_width: f32,
     /// GL default: 1.
@@ -281,6 +285,7 @@ impl FixedState {
             },
             cull_face: Toggle::off(Face::Back),
             front_face: FrontFace::Ccw,
+            polygon_stipple: Toggle::off(PolygonStipple::DEFAULT),
             line_width: 1.0,
             point_size: 1.0,
             clear: ClearValues::DEFAULT,

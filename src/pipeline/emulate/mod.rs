@@ -135,6 +135,7 @@ impl Emulate {
         for pass in passes {
             let mut key = base.clone();
             key.fragment.edges = pass.edges;
+            key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
             let program = self
                 .programs
                 .get_or_build(&key, |k| Program::build(gl, k))?;

@@ -440,6 +440,7 @@ impl Emulate {
             cull: None,
             offset: false,
             edges: None,
+            fills_polygons: false,
         };
         for s in &passes {
             let mut key = ShaderKey::from_state(s, self.precision);
