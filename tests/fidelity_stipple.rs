@@ -148,3 +148,40 @@ fn polygon_stipple_matches_mesa_for_every_polygon_primitive() {
         }
     }
 }
+
+/// Mesa's line stipple, measured on the native path (GL 1.5 §3.4.2): an x-major line from
+/// pixel centre x = 0.5 draws pixel x iff bit ⌊x/factor⌋ mod 16 of the pattern is set; the
+/// counter restarts at each segment of GL_LINES and runs on along a GL_LINE_STRIP.
+#[test]
+fn mesa_line_stipple_counts_window_pixels_along_the_line() {
+    use fidelity::run_one;
+    use fixedfunc::ff::LineStipple;
+    use fixedfunc::vocab::{PipelineKind, Precision};
+    let s = LineStipple::new(2, 0x0F3D);
+    let script = format!(
+        "{}glClearColor(0, 0, 0, 1);\nglClear(GL_COLOR_BUFFER_BIT);\nglLineStipple(2, 0x0F3D);\nglEnable(GL_LINE_STIPPLE);\nglColor3f(1, 1, 1);\n\
+         glBegin(GL_LINES);\nglVertex2f(0, 2.5); glVertex2f(80, 2.5);\nglVertex2f(0, 6.5); glVertex2f(40, 6.5);\nglVertex2f(40, 6.5); glVertex2f(80, 6.5);\nglEnd();\n\
+         glBegin(GL_LINE_STRIP);\nglVertex2f(0, 10.5); glVertex2f(40, 10.5); glVertex2f(80, 10.5);\nglEnd();\n",
+        fidelity::ortho(80, 16)
+    );
+    let commands = fidelity::parse(&script);
+    for backend in support::HEADLESS {
+        let out = run_one(
+            PipelineKind::Native,
+            Precision::Float,
+            backend,
+            Frame::new(80, 16),
+            &commands,
+        );
+        let lit = |x: u32, y: u32| out.image.get_pixel(x, 15 - y).0[0] == 255;
+        for x in 0..80 {
+            assert_eq!(lit(x, 2), s.passes(x), "{backend}: one segment, x {x}");
+            assert_eq!(
+                lit(x, 6),
+                s.passes(x % 40),
+                "{backend}: two segments, x {x}"
+            );
+            assert_eq!(lit(x, 10), s.passes(x), "{backend}: a strip, x {x}");
+        }
+    }
+}

@@ -519,7 +519,6 @@ macro_rules! gl_entry_table {
         GetMapiv = glGetMapiv(Left; target: GLenum, query: GLenum, v: *mut GLint);
         Accum = glAccum(Left; op: GLenum, value: GLfloat);
         ClearAccum = glClearAccum(Left; red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
-        LineStipple = glLineStipple(Left; factor: GLint, pattern: GLushort);
 
         EdgeFlag = glEdgeFlag(Left; flag: GLboolean);
         // Synchronisation, the error flag and strings (the C library answers them; a
@@ -583,6 +582,7 @@ macro_rules! gl_entry_table {
         // Polygon and line stipple, edge flags (ff::stipple).
         PolygonStipple = glPolygonStipple(Script; mask: *const GLubyte);
         GetPolygonStipple = glGetPolygonStipple(Script; mask: *mut GLubyte);
+        LineStipple = glLineStipple(Script; factor: GLint, pattern: GLushort);
         }
     };
 }
@@ -1018,6 +1018,7 @@ impl Command {
             },
             Command::PixelZoom { .. } => Entry::PixelZoom,
             Command::PolygonStipple(_) => Entry::PolygonStipple,
+            Command::LineStipple(_) => Entry::LineStipple,
         }
     }
 }

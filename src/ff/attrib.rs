@@ -220,7 +220,11 @@ impl FixedState {
                 self.polygon_stipple.enabled = s.polygon_stipple.enabled;
             }
             AttribGroup::PolygonStipple => self.polygon_stipple.value = s.polygon_stipple.value,
-            AttribGroup::Line => self.line_width = s.line_width,
+            // Width and the stipple with its enable (Table 6.11).
+            AttribGroup::Line => {
+                self.line_width = s.line_width;
+                self.line_stipple = s.line_stipple;
+            }
             AttribGroup::Point => self.point_size = s.point_size,
             AttribGroup::Fog => self.fog = s.fog,
             AttribGroup::Scissor => self.scissor = s.scissor,
@@ -270,6 +274,7 @@ impl FixedState {
         self.index_logic_op = s.index_logic_op;
         self.dither = s.dither;
         self.polygon_stipple.enabled = s.polygon_stipple.enabled;
+        self.line_stipple.enabled = s.line_stipple.enabled;
     }
 
     /// TEXTURE_BIT: the active unit, every unit's enables, bindings, environment and
@@ -427,7 +432,11 @@ impl FixedState {
             AttribGroup::PolygonStipple => {
                 out.push(Command::PolygonStipple(self.polygon_stipple.value))
             }
-            AttribGroup::Line => out.push(Command::LineWidth(self.line_width)),
+            AttribGroup::Line => {
+                out.push(Command::LineWidth(self.line_width));
+                out.push(toggle(Capability::LineStipple, self.line_stipple.enabled));
+                out.push(Command::LineStipple(self.line_stipple.value));
+            }
             AttribGroup::Point => out.push(Command::PointSize(self.point_size)),
             AttribGroup::Fog => {
                 let f = self.fog;
@@ -497,6 +506,7 @@ impl FixedState {
             Capability::PolygonStipple,
             self.polygon_stipple.enabled,
         ));
+        out.push(toggle(Capability::LineStipple, self.line_stipple.enabled));
     }
 
     fn unit_enable_commands(&self, unit: &TextureUnit, out: &mut Vec<Command>) {

@@ -12,7 +12,7 @@ use super::args::{Args, PixelShape};
 use super::pixels::{
     Bitmap, CopyKind, CopyPixels, DrawPixels, PixelTransferParam, MAX_RECT_PIXELS,
 };
-use super::stipple::PolygonStipple;
+use super::stipple::{LineStipple, PolygonStipple};
 use super::texture::{PixelFormat, PixelType};
 use super::Command;
 
@@ -150,6 +150,11 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             Command::PolygonStipple(
                 PolygonStipple::from_bytes(&bytes).ok_or_else(|| c.bad(0, "a 32×32 mask"))?,
             )
+        }
+        // GLushort: C converts the pattern modulo 2^16; the factor is clamped (§3.4.2).
+        Entry::LineStipple => {
+            c.count(2)?;
+            Command::LineStipple(LineStipple::new(c.i32(0)?, c.int(1)? as u16))
         }
         Entry::Bitmap => {
             c.count(7)?;

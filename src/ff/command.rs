@@ -31,7 +31,7 @@ use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
 use super::matrix::{MatrixMode, ViewVolume};
 use super::pixels::{Bitmap, CopyPixels, DrawPixels, PixelTransferParam};
-use super::stipple::PolygonStipple;
+use super::stipple::{LineStipple, PolygonStipple};
 use super::texenv::TexEnvParam;
 use super::texgen::{TexCoord, TexGenParam};
 use super::texture::{PixelFormat, PixelType, TexFormat, TexParam, TextureTarget};
@@ -76,6 +76,8 @@ pub enum Capability {
     IndexLogicOp,
     /// POLYGON_STIPPLE (§3.5.2).
     PolygonStipple,
+    /// LINE_STIPPLE (§3.4.2).
+    LineStipple,
 }
 
 /// glTexImage1D / glTexImage2D.
@@ -419,4 +421,6 @@ pub enum Command {
     // Stipple (ff::stipple).
     /// glPolygonStipple (§3.5.2): the unpacked 32×32 mask.
     PolygonStipple(PolygonStipple),
+    /// glLineStipple (§3.4.2): the factor already clamped to [1, 256].
+    LineStipple(LineStipple),
 }

@@ -207,6 +207,7 @@ gl_enums!(Capability {
     INDEX_LOGIC_OP => Capability::IndexLogicOp,
     LOGIC_OP => Capability::IndexLogicOp,
     POLYGON_STIPPLE => Capability::PolygonStipple,
+    LINE_STIPPLE => Capability::LineStipple,
 });
 
 gl_enums!(LogicOp {

@@ -93,7 +93,7 @@ pub use raster::RasterPos;
 pub use state::{
     CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_CLIP_PLANES, MAX_TEXTURE_UNITS,
 };
-pub use stipple::PolygonStipple;
+pub use stipple::{LineStipple, PolygonStipple};
 pub use texenv::{
     Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,
     TexEnvMode, TexEnvParam,

@@ -23,7 +23,7 @@ use super::matrix::{
 };
 use super::pixels::{PixelTransfer, PixelZoom};
 use super::raster::RasterPos;
-use super::stipple::PolygonStipple;
+use super::stipple::{LineStipple, PolygonStipple};
 use super::texenv::TexEnv;
 use super::texgen::{TexCoord, TexGen};
 use super::texture::{TextureObject, TextureTarget};
@@ -198,6 +198,9 @@ pub struct FixedState {
     pub polygon_stipple: Toggle<PolygonStipple>,
     /// GL default: 1.
     pub line_width: f32,
+    /// LINE_STIPPLE with glLineStipple's factor and pattern (`stipple`). GL default:
+    /// disabled, factor 1, pattern 0xFFFF.
+    pub line_stipple: Toggle<LineStipple>,
     /// GL default: 1.
     pub point_size: f32,
     /// GL default: colour (0,0,0,0), depth 1, stencil 0.
@@ -287,6 +290,7 @@ impl FixedState {
             front_face: FrontFace::Ccw,
             polygon_stipple: Toggle::off(PolygonStipple::DEFAULT),
             line_width: 1.0,
+            line_stipple: Toggle::off(LineStipple::DEFAULT),
             point_size: 1.0,
             clear: ClearValues::DEFAULT,
             attrib_stack: Vec::new(),

@@ -45,6 +45,38 @@ impl PolygonStipple {
     }
 }
 
+/// glLineStipple (§3.4.2): a fragment of a line is drawn iff bit ⌊s/factor⌋ mod 16 of
+/// `pattern` is 1, s counting window pixels along the line. GL default: factor 1, pattern
+/// 0xFFFF.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LineStipple {
+    /// LINE_STIPPLE_REPEAT, in [1, 256].
+    pub factor: u16,
+    /// LINE_STIPPLE_PATTERN.
+    pub pattern: u16,
+}
+
+impl LineStipple {
+    /// Factor 1, every bit set (GL 1.5 Table 6.11).
+    pub const DEFAULT: LineStipple = LineStipple {
+        factor: 1,
+        pattern: 0xFFFF,
+    };
+
+    /// The stipple of glLineStipple(factor, pattern): the factor clamped to [1, 256].
+    pub fn new(factor: i32, pattern: u16) -> LineStipple {
+        LineStipple {
+            factor: factor.clamp(1, 256) as u16,
+            pattern,
+        }
+    }
+
+    /// Whether the fragment at stipple counter `s` is drawn.
+    pub fn passes(&self, s: u32) -> bool {
+        self.pattern >> (s / u32::from(self.factor) % 16) & 1 == 1
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -60,5 +92,20 @@ mod tests {
         assert_eq!(s.to_bytes(), bytes);
         assert!(PolygonStipple::from_bytes(&bytes[1..]).is_none());
         assert!(PolygonStipple::DEFAULT.passes(17, 5));
+    }
+
+    #[test]
+    fn line_stipple_clamps_its_factor_and_repeats_each_bit() {
+        assert_eq!(LineStipple::new(0, 1).factor, 1);
+        assert_eq!(LineStipple::new(-5, 1).factor, 1);
+        assert_eq!(LineStipple::new(1000, 1).factor, 256);
+        let s = LineStipple::new(3, 0b101);
+        let drawn: Vec<bool> = (0..10).map(|i| s.passes(i)).collect();
+        assert_eq!(
+            drawn,
+            [true, true, true, false, false, false, true, true, true, false]
+        );
+        // Bit 15 is followed by bit 0 again.
+        assert!(LineStipple::new(1, 0x8001).passes(15) && LineStipple::new(1, 0x8001).passes(16));
     }
 }

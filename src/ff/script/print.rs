@@ -539,6 +539,9 @@ fn call(c: &Command) -> String {
         | Command::PixelTransfer(_)
         | Command::PixelZoom { .. }
         | Command::PolygonStipple(_) => super::print_pixels::call(c, 1),
+        Command::LineStipple(l) => {
+            format!("{}({}, 0x{:04X})", Entry::LineStipple, l.factor, l.pattern)
+        }
         // Printed by `command`.
         Command::Draw(_)
         | Command::TexImage(_)

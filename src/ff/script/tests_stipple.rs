@@ -43,3 +43,48 @@ fn get_polygon_stipple_is_a_script_call() {
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(ok.is_empty(), "queries change nothing: {ok:?}");
 }
+
+#[test]
+fn line_stipple_prints_and_parses_back_with_its_factor_clamped() {
+    let cmds = parse(
+        "glLineStipple(0, 0x0F0F);\nglLineStipple(300, 65535);\nglLineStipple(3, 0x10001);\nglEnable(GL_LINE_STIPPLE);",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        cmds,
+        [
+            Command::LineStipple(LineStipple::new(1, 0x0F0F)),
+            Command::LineStipple(LineStipple::new(256, 0xFFFF)),
+            // GLushort: C keeps the low 16 bits.
+            Command::LineStipple(LineStipple::new(3, 1)),
+            Command::Enable(Capability::LineStipple),
+        ]
+    );
+    let text = print(&cmds);
+    assert!(text.contains("glLineStipple(256, 0xFFFF);"), "{text}");
+    assert_eq!(parse(&text).unwrap_or_else(|e| panic!("{e}\n{text}")), cmds);
+}
+
+#[test]
+fn stipple_state_is_queried_and_pushed() {
+    use crate::ff::glenum::registry as r;
+    let mut s = FixedState::new();
+    let zeros = vec!["0"; 128].join(", ");
+    for c in parse(&format!(
+        "glPushAttrib(GL_LINE_BIT | GL_POLYGON_STIPPLE_BIT);\nglLineStipple(4, 0xAAAA);\nglEnable(GL_LINE_STIPPLE);\nglPolygonStipple((GLubyte[]){{{zeros}}});",
+    ))
+    .unwrap_or_else(|e| panic!("{e}"))
+    {
+        s.apply(&c).unwrap();
+    }
+    let int = |s: &FixedState, pname| s.get(pname).unwrap()[0].as_int();
+    assert_eq!(int(&s, r::LINE_STIPPLE_PATTERN), 0xAAAA);
+    assert_eq!(int(&s, r::LINE_STIPPLE_REPEAT), 4);
+    assert_eq!(s.is_enabled(r::LINE_STIPPLE), Ok(true));
+    assert!(!s.polygon_stipple.value.passes(3, 3));
+    s.apply(&Command::PopAttrib).unwrap();
+    assert_eq!(int(&s, r::LINE_STIPPLE_PATTERN), 0xFFFF);
+    assert_eq!(int(&s, r::LINE_STIPPLE_REPEAT), 1);
+    assert_eq!(s.is_enabled(r::LINE_STIPPLE), Ok(false));
+    assert_eq!(s.polygon_stipple.value, PolygonStipple::DEFAULT);
+}

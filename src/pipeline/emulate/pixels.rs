@@ -441,6 +441,7 @@ impl Emulate {
             offset: false,
             edges: None,
             fills_polygons: false,
+            draws_lines: false,
         };
         for s in &passes {
             let mut key = ShaderKey::from_state(s, self.precision);

@@ -56,6 +56,8 @@ pub struct PolygonPass {
     /// The pass rasterises polygons filled: the only fragments POLYGON_STIPPLE applies to
     /// (§3.5.2; a polygon drawn in LINE or POINT mode is stippled as lines or not at all).
     pub fills_polygons: bool,
+    /// The pass rasterises lines: line primitives, or polygons in LINE mode.
+    pub draws_lines: bool,
 }
 
 /// True for the primitives GL rasterises as polygons.
@@ -96,6 +98,7 @@ pub fn passes(
             PolygonMode::Point => Some(EdgeRule::OwnedVertices),
         },
         fills_polygons: mode == PolygonMode::Fill,
+        draws_lines: mode == PolygonMode::Line,
     };
     if !is_polygonal(primitive) {
         return vec![PolygonPass {
@@ -104,6 +107,7 @@ pub fn passes(
             offset: false,
             edges: None,
             fills_polygons: false,
+            draws_lines: primitive != Primitive::Points,
         }];
     }
     match cull {
