@@ -71,6 +71,7 @@ pub fn handles(entry: Entry) -> bool {
             | Entry::GetTexLevelParameterfv
             | Entry::GetTexLevelParameteriv
             | Entry::GetClipPlane
+            | Entry::GetPolygonStipple
     )
 }
 
@@ -145,6 +146,14 @@ pub fn answer<A: Args>(
                     let p = state.clip_planes[usize::from(i)].value;
                     (p.to_array().map(QueryValue::Float).to_vec(), 1)
                 })
+        }
+        // Packed as a 32×32 bitmap (§6.1.7); PACK_LSB_FIRST is not modelled.
+        Entry::GetPolygonStipple => {
+            c.count(1)?;
+            return Ok(Ok(Reply::Write {
+                arg: 0,
+                bytes: state.polygon_stipple.value.to_bytes(),
+            }));
         }
         _ => return Err(c.unsupported()),
     };

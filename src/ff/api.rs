@@ -519,8 +519,7 @@ macro_rules! gl_entry_table {
         GetMapiv = glGetMapiv(Left; target: GLenum, query: GLenum, v: *mut GLint);
         Accum = glAccum(Left; op: GLenum, value: GLfloat);
         ClearAccum = glClearAccum(Left; red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
-        LineStipple = glLineStipple(Left; factor: GLint, pattern: GLushort);
-        PolygonStipple = glPolygonStipple(Left; mask: *const GLubyte);
+
         EdgeFlag = glEdgeFlag(Left; flag: GLboolean);
         // Synchronisation, the error flag and strings (the C library answers them; a
         // script checks their arguments).
@@ -580,6 +579,10 @@ macro_rules! gl_entry_table {
         EdgeFlagv = glEdgeFlagv(Left; flag: *const GLboolean);
         GetBufferPointerv = glGetBufferPointerv(Script; target: GLenum, pname: GLenum, params: *mut *mut c_void);
         GetBufferPointervARB = glGetBufferPointervARB(Script; target: GLenum, pname: GLenum, params: *mut *mut c_void);
+        // Polygon and line stipple, edge flags (ff::stipple).
+        PolygonStipple = glPolygonStipple(Script; mask: *const GLubyte);
+        GetPolygonStipple = glGetPolygonStipple(Script; mask: *mut GLubyte);
+        LineStipple = glLineStipple(Script; factor: GLint, pattern: GLushort);
         }
     };
 }
@@ -1014,6 +1017,8 @@ impl Command {
                 _ => Entry::PixelTransferf,
             },
             Command::PixelZoom { .. } => Entry::PixelZoom,
+            Command::PolygonStipple(_) => Entry::PolygonStipple,
+            Command::LineStipple(_) => Entry::LineStipple,
         }
     }
 }

@@ -243,6 +243,8 @@ impl FixedState {
                 };
             }
             Command::CullFace(f) => self.cull_face.value = *f,
+            Command::PolygonStipple(p) => self.polygon_stipple.value = *p,
+            Command::LineStipple(l) => self.line_stipple.value = *l,
             Command::FrontFace(f) => self.front_face = *f,
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
             Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
@@ -372,6 +374,8 @@ impl FixedState {
             Capability::ColorLogicOp => self.logic_op.enabled = on,
             Capability::IndexLogicOp => self.index_logic_op = on,
             Capability::Dither => self.dither = on,
+            Capability::PolygonStipple => self.polygon_stipple.enabled = on,
+            Capability::LineStipple => self.line_stipple.enabled = on,
             Capability::ClipPlane(i) => {
                 let plane = self
                     .clip_planes

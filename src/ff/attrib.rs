@@ -217,8 +217,14 @@ impl FixedState {
                 self.polygon_mode = s.polygon_mode;
                 self.polygon_offset = s.polygon_offset;
                 self.offset_enables = s.offset_enables;
+                self.polygon_stipple.enabled = s.polygon_stipple.enabled;
             }
-            AttribGroup::Line => self.line_width = s.line_width,
+            AttribGroup::PolygonStipple => self.polygon_stipple.value = s.polygon_stipple.value,
+            // Width and the stipple with its enable (Table 6.11).
+            AttribGroup::Line => {
+                self.line_width = s.line_width;
+                self.line_stipple = s.line_stipple;
+            }
             AttribGroup::Point => self.point_size = s.point_size,
             AttribGroup::Fog => self.fog = s.fog,
             AttribGroup::Scissor => self.scissor = s.scissor,
@@ -229,8 +235,7 @@ impl FixedState {
                 self.pixel_zoom = s.pixel_zoom;
             }
             // Not modelled yet: nothing saved, nothing restored.
-            AttribGroup::PolygonStipple
-            | AttribGroup::AccumBuffer
+            AttribGroup::AccumBuffer
             | AttribGroup::Eval
             | AttribGroup::List
             | AttribGroup::Multisample => {}
@@ -268,6 +273,8 @@ impl FixedState {
         self.logic_op.enabled = s.logic_op.enabled;
         self.index_logic_op = s.index_logic_op;
         self.dither = s.dither;
+        self.polygon_stipple.enabled = s.polygon_stipple.enabled;
+        self.line_stipple.enabled = s.line_stipple.enabled;
     }
 
     /// TEXTURE_BIT: the active unit, every unit's enables, bindings, environment and
@@ -417,8 +424,19 @@ impl FixedState {
                 out.push(toggle(Capability::PolygonOffsetFill, e.fill));
                 out.push(toggle(Capability::PolygonOffsetLine, e.line));
                 out.push(toggle(Capability::PolygonOffsetPoint, e.point));
+                out.push(toggle(
+                    Capability::PolygonStipple,
+                    self.polygon_stipple.enabled,
+                ));
             }
-            AttribGroup::Line => out.push(Command::LineWidth(self.line_width)),
+            AttribGroup::PolygonStipple => {
+                out.push(Command::PolygonStipple(self.polygon_stipple.value))
+            }
+            AttribGroup::Line => {
+                out.push(Command::LineWidth(self.line_width));
+                out.push(toggle(Capability::LineStipple, self.line_stipple.enabled));
+                out.push(Command::LineStipple(self.line_stipple.value));
+            }
             AttribGroup::Point => out.push(Command::PointSize(self.point_size)),
             AttribGroup::Fog => {
                 let f = self.fog;
@@ -445,8 +463,7 @@ impl FixedState {
                 }
             }
             AttribGroup::PixelMode => self.pixel_mode_commands(out),
-            AttribGroup::PolygonStipple
-            | AttribGroup::AccumBuffer
+            AttribGroup::AccumBuffer
             | AttribGroup::Eval
             | AttribGroup::List
             | AttribGroup::Multisample => {}
@@ -485,6 +502,11 @@ impl FixedState {
         out.push(toggle(Capability::ColorLogicOp, self.logic_op.enabled));
         out.push(toggle(Capability::IndexLogicOp, self.index_logic_op));
         out.push(toggle(Capability::Dither, self.dither));
+        out.push(toggle(
+            Capability::PolygonStipple,
+            self.polygon_stipple.enabled,
+        ));
+        out.push(toggle(Capability::LineStipple, self.line_stipple.enabled));
     }
 
     fn unit_enable_commands(&self, unit: &TextureUnit, out: &mut Vec<Command>) {

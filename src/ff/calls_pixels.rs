@@ -12,6 +12,7 @@ use super::args::{Args, PixelShape};
 use super::pixels::{
     Bitmap, CopyKind, CopyPixels, DrawPixels, PixelTransferParam, MAX_RECT_PIXELS,
 };
+use super::stipple::{LineStipple, PolygonStipple};
 use super::texture::{PixelFormat, PixelType};
 use super::Command;
 
@@ -134,6 +135,27 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }));
     }
     Ok(Some(match c.entry() {
+        // The mask is unpacked as a 32×32 bitmap (§3.5.2): rows of 4 bytes.
+        Entry::PolygonStipple => {
+            c.count(1)?;
+            let shape = PixelShape {
+                width: 4,
+                height: 32,
+                format: PixelFormat::Luminance,
+                ty: PixelType::UnsignedByte,
+            };
+            let bytes = c
+                .pixels(0, shape)?
+                .ok_or_else(|| c.bad(0, "a 32×32 mask"))?;
+            Command::PolygonStipple(
+                PolygonStipple::from_bytes(&bytes).ok_or_else(|| c.bad(0, "a 32×32 mask"))?,
+            )
+        }
+        // GLushort: C converts the pattern modulo 2^16; the factor is clamped (§3.4.2).
+        Entry::LineStipple => {
+            c.count(2)?;
+            Command::LineStipple(LineStipple::new(c.i32(0)?, c.int(1)? as u16))
+        }
         Entry::Bitmap => {
             c.count(7)?;
             let (width, height) = (c.i32(0)?, c.i32(1)?);

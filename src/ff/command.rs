@@ -31,6 +31,7 @@ use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
 use super::matrix::{MatrixMode, ViewVolume};
 use super::pixels::{Bitmap, CopyPixels, DrawPixels, PixelTransferParam};
+use super::stipple::{LineStipple, PolygonStipple};
 use super::texenv::TexEnvParam;
 use super::texgen::{TexCoord, TexGenParam};
 use super::texture::{PixelFormat, PixelType, TexFormat, TexParam, TextureTarget};
@@ -73,6 +74,10 @@ pub enum Capability {
     /// INDEX_LOGIC_OP (= GL 1.0's LOGIC_OP): colour-index mode only; recorded, no effect
     /// in RGBA.
     IndexLogicOp,
+    /// POLYGON_STIPPLE (§3.5.2).
+    PolygonStipple,
+    /// LINE_STIPPLE (§3.4.2).
+    LineStipple,
 }
 
 /// glTexImage1D / glTexImage2D.
@@ -413,4 +418,9 @@ pub enum Command {
         x: f32,
         y: f32,
     },
+    // Stipple (ff::stipple).
+    /// glPolygonStipple (§3.5.2): the unpacked 32×32 mask.
+    PolygonStipple(PolygonStipple),
+    /// glLineStipple (§3.4.2): the factor already clamped to [1, 256].
+    LineStipple(LineStipple),
 }

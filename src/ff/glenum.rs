@@ -206,6 +206,8 @@ gl_enums!(Capability {
     COLOR_LOGIC_OP => Capability::ColorLogicOp,
     INDEX_LOGIC_OP => Capability::IndexLogicOp,
     LOGIC_OP => Capability::IndexLogicOp,
+    POLYGON_STIPPLE => Capability::PolygonStipple,
+    LINE_STIPPLE => Capability::LineStipple,
 });
 
 gl_enums!(LogicOp {

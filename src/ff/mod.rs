@@ -49,6 +49,7 @@ pub mod raster;
 pub mod raster_light;
 pub mod script;
 pub mod state;
+pub mod stipple;
 pub mod texenv;
 pub mod texgen;
 pub mod texture;
@@ -92,6 +93,7 @@ pub use raster::RasterPos;
 pub use state::{
     CurrentValues, FixedState, PolygonModes, TextureUnit, MAX_CLIP_PLANES, MAX_TEXTURE_UNITS,
 };
+pub use stipple::{LineStipple, PolygonStipple};
 pub use texenv::{
     Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,
     TexEnvMode, TexEnvParam,

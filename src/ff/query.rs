@@ -333,6 +333,8 @@ pnames! {
     CULL_FACE_MODE => |s| enm(s.cull_face.value),
     FRONT_FACE => |s| enm(s.front_face),
     LINE_WIDTH => |s| floats(&[s.line_width]),
+    LINE_STIPPLE_PATTERN => |s| int(i32::from(s.line_stipple.value.pattern)),
+    LINE_STIPPLE_REPEAT => |s| int(i32::from(s.line_stipple.value.factor)),
     POINT_SIZE => |s| floats(&[s.point_size]),
 
     // Framebuffer objects (GL 3.0 Table 6.23, 6.34) and the colour buffers (Table 6.21).
@@ -519,6 +521,8 @@ impl FixedState {
             Capability::ColorLogicOp => self.logic_op.enabled,
             Capability::IndexLogicOp => self.index_logic_op,
             Capability::Dither => self.dither,
+            Capability::PolygonStipple => self.polygon_stipple.enabled,
+            Capability::LineStipple => self.line_stipple.enabled,
         })
     }
 

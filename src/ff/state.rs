@@ -23,6 +23,7 @@ use super::matrix::{
 };
 use super::pixels::{PixelTransfer, PixelZoom};
 use super::raster::RasterPos;
+use super::stipple::{LineStipple, PolygonStipple};
 use super::texenv::TexEnv;
 use super::texgen::{TexCoord, TexGen};
 use super::texture::{TextureObject, TextureTarget};
@@ -192,8 +193,14 @@ pub struct FixedState {
     pub cull_face: Toggle<Face>,
     /// GL default: CCW.
     pub front_face: FrontFace,
+    /// POLYGON_STIPPLE with glPolygonStipple's mask (`stipple`). GL default: disabled,
+    /// every bit 1.
+    pub polygon_stipple: Toggle<PolygonStipple>,
     /// GL default: 1.
     pub line_width: f32,
+    /// LINE_STIPPLE with glLineStipple's factor and pattern (`stipple`). GL default:
+    /// disabled, factor 1, pattern 0xFFFF.
+    pub line_stipple: Toggle<LineStipple>,
     /// GL default: 1.
     pub point_size: f32,
     /// GL default: colour (0,0,0,0), depth 1, stencil 0.
@@ -281,7 +288,9 @@ impl FixedState {
             },
             cull_face: Toggle::off(Face::Back),
             front_face: FrontFace::Ccw,
+            polygon_stipple: Toggle::off(PolygonStipple::DEFAULT),
             line_width: 1.0,
+            line_stipple: Toggle::off(LineStipple::DEFAULT),
             point_size: 1.0,
             clear: ClearValues::DEFAULT,
             attrib_stack: Vec::new(),

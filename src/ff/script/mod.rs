@@ -101,3 +101,5 @@ mod tests;
 
 #[cfg(test)]
 mod tests_pixels;
+#[cfg(test)]
+mod tests_stipple;

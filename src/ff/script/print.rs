@@ -146,7 +146,7 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
         Command::Raise { error, call } => out.push_str(&format!(
             "/* {call}: {error:?} raised here by a display list */\n"
         )),
-        Command::Bitmap(_) | Command::DrawPixels(_) => line(
+        Command::Bitmap(_) | Command::DrawPixels(_) | Command::PolygonStipple(_) => line(
             out,
             format_args!("{}", super::print_pixels::call(c, unpack_alignment)),
         ),
@@ -537,7 +537,11 @@ fn call(c: &Command) -> String {
         | Command::DrawPixels(_)
         | Command::CopyPixels(_)
         | Command::PixelTransfer(_)
-        | Command::PixelZoom { .. } => super::print_pixels::call(c, 1),
+        | Command::PixelZoom { .. }
+        | Command::PolygonStipple(_) => super::print_pixels::call(c, 1),
+        Command::LineStipple(l) => {
+            format!("{}({}, 0x{:04X})", Entry::LineStipple, l.factor, l.pattern)
+        }
         // Printed by `command`.
         Command::Draw(_)
         | Command::TexImage(_)

@@ -56,6 +56,15 @@ pub(super) fn call(c: &Command, alignment: usize) -> String {
         ),
         Command::PixelTransfer(p) => transfer(*p),
         Command::PixelZoom { x, y } => format!("{}({})", Entry::PixelZoom, fs(&[*x, *y])),
+        // The mask's rows of 4 bytes, as glBitmap's of width 32.
+        Command::PolygonStipple(s) => format!(
+            "{}({})",
+            Entry::PolygonStipple,
+            pixels(
+                PixelType::UnsignedByte,
+                &padded(&s.to_bytes(), 4, alignment)
+            )
+        ),
         _ => String::new(),
     }
 }

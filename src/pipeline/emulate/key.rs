@@ -163,6 +163,10 @@ pub struct FragmentKey {
     /// Which fragments of a split quad or polygon survive in LINE or POINT mode
     /// (`polygon`); set per draw pass, `None` from the state alone.
     pub edges: Option<EdgeRule>,
+    /// POLYGON_STIPPLE on a pass that fills polygons (§3.5.2): fragments at unset bits of
+    /// the pattern (a uniform) are discarded; set per draw pass, `false` from the state
+    /// alone.
+    pub polygon_stipple: bool,
     /// A pixel rectangle's draw (glBitmap, glDrawPixels, glCopyPixels: `pixels`): what the
     /// image gives the fragment; set per draw, `None` from the state alone.
     pub pixels: Option<PixelSource>,
@@ -264,6 +268,7 @@ impl ShaderKey {
                 .map(|AlphaTest { func, .. }| func)
                 .filter(|f| *f != CompareFunc::Always),
             edges: None,
+            polygon_stipple: false,
             pixels: None,
         };
         ShaderKey { vertex, fragment }

@@ -132,9 +132,18 @@ impl Emulate {
             state.offset_enables,
             geometry.primitive,
         );
+        // The line stipple's counter runs along each line on the CPU in Mesa; the emulated
+        // path does not draw it yet and refuses the draw rather than draw solid lines.
+        if state.line_stipple.enabled && passes.iter().any(|p| p.draws_lines) {
+            return Err(PipelineError::Unsupported {
+                what: "LINE_STIPPLE (enabled at a draw of lines)",
+                path: "emulate",
+            });
+        }
         for pass in passes {
             let mut key = base.clone();
             key.fragment.edges = pass.edges;
+            key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
             let program = self
                 .programs
                 .get_or_build(&key, |k| Program::build(gl, k))?;

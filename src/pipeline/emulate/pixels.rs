@@ -440,6 +440,8 @@ impl Emulate {
             cull: None,
             offset: false,
             edges: None,
+            fills_polygons: false,
+            draws_lines: false,
         };
         for s in &passes {
             let mut key = ShaderKey::from_state(s, self.precision);

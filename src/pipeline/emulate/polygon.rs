@@ -53,6 +53,11 @@ pub struct PolygonPass {
     /// and lines, which polygon offset never moves (§3.5.5).
     pub offset: bool,
     pub edges: Option<EdgeRule>,
+    /// The pass rasterises polygons filled: the only fragments POLYGON_STIPPLE applies to
+    /// (§3.5.2; a polygon drawn in LINE or POINT mode is stippled as lines or not at all).
+    pub fills_polygons: bool,
+    /// The pass rasterises lines: line primitives, or polygons in LINE mode.
+    pub draws_lines: bool,
 }
 
 /// True for the primitives GL rasterises as polygons.
@@ -92,6 +97,8 @@ pub fn passes(
             PolygonMode::Line => Some(EdgeRule::BoundaryEdges),
             PolygonMode::Point => Some(EdgeRule::OwnedVertices),
         },
+        fills_polygons: mode == PolygonMode::Fill,
+        draws_lines: mode == PolygonMode::Line,
     };
     if !is_polygonal(primitive) {
         return vec![PolygonPass {
@@ -99,6 +106,8 @@ pub fn passes(
             cull,
             offset: false,
             edges: None,
+            fills_polygons: false,
+            draws_lines: primitive != Primitive::Points,
         }];
     }
     match cull {

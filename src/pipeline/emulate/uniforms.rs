@@ -15,6 +15,8 @@ pub enum UniformType {
     Mat3,
     Mat4,
     Int,
+    /// 32 words (a stipple pattern's rows).
+    Rows,
 }
 
 impl UniformType {
@@ -25,6 +27,7 @@ impl UniformType {
             UniformType::Mat3 => "mat3",
             UniformType::Mat4 => "mat4",
             UniformType::Int => "int",
+            UniformType::Rows => "uint[32]",
         }
     }
 }
@@ -92,6 +95,8 @@ pub enum UniformSource {
     /// The bit a STENCIL_INDEX pass writes: its state's stencil value mask, which the pass's
     /// ALWAYS test does not read (`pixels`).
     PixelStencilBit,
+    /// The polygon stipple's rows, bit 31 − x of row y for pixel (x, y) (`ff::stipple`).
+    PolygonStipple,
 }
 
 impl UniformSource {
@@ -122,6 +127,7 @@ impl UniformSource {
             UniformSource::PixelImage => "u_pixel_image".into(),
             UniformSource::PixelRect => "u_pixel_rect".into(),
             UniformSource::PixelStencilBit => "u_pixel_stencil_bit".into(),
+            UniformSource::PolygonStipple => "u_polygon_stipple".into(),
         }
     }
 
@@ -141,6 +147,7 @@ impl UniformSource {
             UniformSource::Sampler(_)
             | UniformSource::PixelImage
             | UniformSource::PixelStencilBit => UniformType::Int,
+            UniformSource::PolygonStipple => UniformType::Rows,
             _ => UniformType::Vec4,
         }
     }
@@ -154,6 +161,7 @@ pub enum UniformValue {
     Mat3(Mat3),
     Mat4(Mat4),
     Int(i32),
+    Rows([u32; 32]),
 }
 
 fn material(state: &FixedState, face: u8) -> &Material {
@@ -251,6 +259,7 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
             state.pixel_zoom.y,
         )),
         UniformSource::PixelStencilBit => Int(state.stencil_test.value.value_mask as i32),
+        UniformSource::PolygonStipple => Rows(state.polygon_stipple.value.rows),
     }
 }
 

@@ -162,6 +162,12 @@ impl Native {
             Command::CullFace(f) => unsafe { g.CullFace(conv::value(*f)) },
             Command::FrontFace(f) => unsafe { g.FrontFace(conv::value(*f)) },
             Command::LineWidth(w) => unsafe { g.LineWidth(*w) },
+            Command::LineStipple(l) => unsafe { g.LineStipple(i32::from(l.factor), l.pattern) },
+            // The mask's 128 bytes, rows of 4 (the native path keeps UNPACK_ALIGNMENT 1).
+            Command::PolygonStipple(s) => unsafe {
+                g.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
+                g.PolygonStipple(s.to_bytes().as_ptr())
+            },
             Command::PointSize(s) => unsafe { g.PointSize(*s) },
             Command::Fog(p) => fog(g, *p),
             // GL transforms the plane by the inverse modelview itself, as the model did.

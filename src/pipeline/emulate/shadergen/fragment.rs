@@ -21,6 +21,9 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
     if let Some(rule) = key.edges {
         emit_edge_rule(&mut w, rule);
     }
+    if key.polygon_stipple {
+        emit_polygon_stipple(&mut w);
+    }
     if key.two_side {
         w.declare(&format!("{flat}in vec4 v_back_color;"));
         w.line("vec4 primary = gl_FrontFacing ? v_color : v_back_color;");
@@ -131,6 +134,16 @@ fn emit_edge_rule(w: &mut GlslWriter, rule: EdgeRule) {
         }
         EdgeRule::OwnedVertices => w.line("if (v_edge.w == 0.0) discard;"),
     }
+}
+
+/// Polygon stipple (GL 1.5 §3.5.2): the fragment at window (x_w, y_w) survives iff bit
+/// (x_w mod 32, y_w mod 32) of the pattern is 1; row y_w mod 32 holds pixel x in bit 31 − x.
+fn emit_polygon_stipple(w: &mut GlslWriter) {
+    let rows = w.uniform(UniformSource::PolygonStipple);
+    w.line("uvec2 stipple_at = uvec2(gl_FragCoord.xy) & 31u;");
+    w.line(format!(
+        "if (((({rows}[stipple_at.y]) >> (31u - stipple_at.x)) & 1u) == 0u) discard;"
+    ));
 }
 
 fn has_color(base: BaseFormat) -> bool {
