@@ -481,3 +481,31 @@ fn a_pixels_trace_replays_to_the_same_image() {
         assert!(text.contains(call), "the trace lacks {call}: {text:.400}");
     }
 }
+
+/// `tests/c/accum.c`: the accumulation buffer's arithmetic, errors and answers printed as
+/// Mesa prints them, and its motion-blurred, scissored and masked image.
+#[test]
+fn the_accumulation_buffer_blurs_and_answers_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("accum");
+    // Mesa's own answers that the program is built around (ff::accum's rules).
+    for line in [
+        "no accum: glAccum                        err 0x502",
+        "ACCUM_RED_BITS                           16  err 0x0",
+        "fbo: glAccum                             err 0x502",
+        "two frames at 0.5                        127 191 32 127  err 0x0",
+        "ADD 1.5 wraps                            0 0 13 38  err 0x0",
+    ] {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    assert_same_text(&mesa_text, &ours_text, 30, "an accumulation answer");
+    // The layer computes Mesa's 16-bit arithmetic exactly (measured: no pixel differs),
+    // so the image is held to equality, beyond the usual 3/255 on 99%.
+    let exact = Tolerance {
+        per_channel: 0,
+        max_bad_pixels: 0,
+    };
+    assert_images_match("accum", &ours, &mesa, exact);
+}
