@@ -305,9 +305,16 @@ fn assert_trace_replays(name: &str, exe: &Path, args: &[&str], size: &str) {
         text.contains(&format!("--size {size}")),
         "{name}: {text:.300}"
     );
+    // A window with an accumulation buffer is replayed with one.
+    let accum: &[&str] = if text.contains(&format!("--size {size} --accum")) {
+        &["--accum"]
+    } else {
+        &[]
+    };
     let replay = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
         .arg("replay")
         .arg(&trace)
+        .args(accum)
         .args(["--size", size, "--out"])
         .arg(&replayed)
         .output()
@@ -508,4 +515,19 @@ fn the_accumulation_buffer_blurs_and_answers_as_on_mesa() {
         max_bad_pixels: 0,
     };
     assert_images_match("accum", &ours, &mesa, exact);
+}
+
+/// A traced run of `tests/c/accum.c` replays (with `--accum`) to the image it rendered.
+#[test]
+fn an_accumulation_trace_replays_to_the_same_image() {
+    let exe = compile("accum", Linking::Direct);
+    assert_trace_replays("accum", &exe, &[], "64x64");
+    let trace = std::fs::read_to_string(work_dir("accum").join("calls.c")).expect("a trace");
+    for call in [
+        "--size 64x64 --accum",
+        "glAccum(GL_ACCUM, 0.125)",
+        "glAccum(GL_RETURN, 1.0)",
+    ] {
+        assert!(trace.contains(call), "the trace lacks {call:?}");
+    }
 }

@@ -212,7 +212,7 @@ impl Context {
         }
         self.buffer = Some(buffer);
         if self.tracing {
-            super::trace::buffer(buffer.width, buffer.height);
+            super::trace::buffer(buffer.width, buffer.height, self.accum);
         }
         Ok(())
     }
