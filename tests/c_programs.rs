@@ -305,9 +305,16 @@ fn assert_trace_replays(name: &str, exe: &Path, args: &[&str], size: &str) {
         text.contains(&format!("--size {size}")),
         "{name}: {text:.300}"
     );
+    // A window with an accumulation buffer is replayed with one.
+    let accum: &[&str] = if text.contains(&format!("--size {size} --accum")) {
+        &["--accum"]
+    } else {
+        &[]
+    };
     let replay = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
         .arg("replay")
         .arg(&trace)
+        .args(accum)
         .args(["--size", size, "--out"])
         .arg(&replayed)
         .output()
@@ -494,4 +501,47 @@ fn short_and_float_buffers_hold_what_mesa_writes() {
         "Mesa printed something else:\n{mesa}"
     );
     assert_same_text(&mesa, &ours, 40, "a pixel of a short or float buffer");
+}
+
+/// `tests/c/accum.c`: the accumulation buffer's arithmetic, errors and answers printed as
+/// Mesa prints them, and its motion-blurred, scissored and masked image.
+#[test]
+fn the_accumulation_buffer_blurs_and_answers_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("accum");
+    // Mesa's own answers that the program is built around (ff::accum's rules).
+    for line in [
+        "no accum: glAccum                        err 0x502",
+        "ACCUM_RED_BITS                           16  err 0x0",
+        "fbo: glAccum                             err 0x502",
+        "two frames at 0.5                        127 191 32 127  err 0x0",
+        "ADD 1.5 wraps                            0 0 13 38  err 0x0",
+    ] {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    assert_same_text(&mesa_text, &ours_text, 30, "an accumulation answer");
+    // The layer computes Mesa's 16-bit arithmetic exactly (measured: no pixel differs),
+    // so the image is held to equality, beyond the usual 3/255 on 99%.
+    let exact = Tolerance {
+        per_channel: 0,
+        max_bad_pixels: 0,
+    };
+    assert_images_match("accum", &ours, &mesa, exact);
+}
+
+/// A traced run of `tests/c/accum.c` replays (with `--accum`) to the image it rendered.
+#[test]
+fn an_accumulation_trace_replays_to_the_same_image() {
+    let exe = compile("accum", Linking::Direct);
+    assert_trace_replays("accum", &exe, &[], "64x64");
+    let trace = std::fs::read_to_string(work_dir("accum").join("calls.c")).expect("a trace");
+    for call in [
+        "--size 64x64 --accum",
+        "glAccum(GL_ACCUM, 0.125)",
+        "glAccum(GL_RETURN, 1.0)",
+    ] {
+        assert!(trace.contains(call), "the trace lacks {call:?}");
+    }
 }

@@ -129,6 +129,7 @@ fn written(
             color: true,
             depth: false,
             stencil: false,
+            accum: false,
         }),
         Command::Enable(Capability::AlphaTest),
         Command::AlphaFunc {

@@ -149,6 +149,9 @@ pub struct Context {
     pub format: ColorFormat,
     depth: DepthBits,
     stencil: bool,
+    /// Accumulation bits were asked for: the window has an accumulation buffer of 16 bits
+    /// per channel whatever was asked beyond 0 (Mesa's OSMesa measured alike).
+    accum: bool,
     pub buffer: Option<ClientBuffer>,
     /// OSMESA_ROW_LENGTH in pixels (0: the buffer's width).
     pub row_length: i32,
@@ -179,7 +182,12 @@ impl Context {
     /// A context whose buffers have `depth_bits` and `stencil_bits` as asked: depth 16 or
     /// less without stencil is a 16-bit buffer, up to 24 (or any with stencil) a 24-bit
     /// one with 8 stencil bits, more a 32-bit float one.
-    pub fn new(format: ColorFormat, depth_bits: i32, stencil_bits: i32) -> Result<Self, AbiError> {
+    pub fn new(
+        format: ColorFormat,
+        depth_bits: i32,
+        stencil_bits: i32,
+        accum_bits: i32,
+    ) -> Result<Self, AbiError> {
         let gpu = GpuContext::new(&ContextRequest::new(Backend::Egl, Profile::Core33))?;
         let stencil = stencil_bits > 0;
         let depth = match depth_bits {
@@ -195,6 +203,7 @@ impl Context {
             format,
             depth,
             stencil,
+            accum: accum_bits > 0,
             buffer: None,
             row_length: 0,
             y_up: true,
@@ -243,10 +252,13 @@ impl Context {
                     p.set_window_framebuffer(Some(framebuffer));
                 }
             }
+            if let Some(p) = &mut self.pipeline {
+                p.set_accum_buffer(self.accum.then_some((w as usize, h as usize)));
+            }
         }
         self.buffer = Some(buffer);
         if self.tracing {
-            super::trace::buffer(buffer.width, buffer.height);
+            super::trace::buffer(buffer.width, buffer.height, self.accum);
         }
         Ok(())
     }

@@ -40,7 +40,7 @@ fn refuse(why: &str) -> OSMesaContext {
     std::ptr::null_mut()
 }
 
-fn create(format: GLenum, depth: GLint, stencil: GLint) -> OSMesaContext {
+fn create(format: GLenum, depth: GLint, stencil: GLint, accum: GLint) -> OSMesaContext {
     let Some(format) = ColorFormat::from_osmesa(format) else {
         return refuse(&format!(
             "OSMesaCreateContext: format {format:#x} is not one of OSMESA_RGBA, OSMESA_BGRA, \
@@ -49,7 +49,7 @@ fn create(format: GLenum, depth: GLint, stencil: GLint) -> OSMesaContext {
     };
     // Creating the EGL context makes it current on this thread.
     let previous = super::current();
-    match std::panic::catch_unwind(|| Context::new(format, depth, stencil)) {
+    match std::panic::catch_unwind(|| Context::new(format, depth, stencil, accum)) {
         Ok(Ok(ctx)) => {
             let ptr = Box::into_raw(Box::new(ctx));
             super::note_gl_current(ptr);
@@ -69,7 +69,7 @@ pub unsafe extern "C" fn OSMesaCreateContext(
     _sharelist: OSMesaContext,
 ) -> OSMesaContext {
     // Mesa's default buffers: 24 depth bits, 8 stencil bits.
-    create(format, 24, 8)
+    create(format, 24, 8, 0)
 }
 
 #[no_mangle]
@@ -77,10 +77,10 @@ pub unsafe extern "C" fn OSMesaCreateContextExt(
     format: GLenum,
     depth_bits: GLint,
     stencil_bits: GLint,
-    _accum_bits: GLint,
+    accum_bits: GLint,
     _sharelist: OSMesaContext,
 ) -> OSMesaContext {
-    create(format, depth_bits, stencil_bits)
+    create(format, depth_bits, stencil_bits, accum_bits)
 }
 
 #[no_mangle]
@@ -88,7 +88,7 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     attrib_list: *const i32,
     _sharelist: OSMesaContext,
 ) -> OSMesaContext {
-    let (mut format, mut depth, mut stencil) = (ColorFormat::RGBA, 24, 8);
+    let (mut format, mut depth, mut stencil, mut accum) = (ColorFormat::RGBA, 24, 8, 0);
     let (mut major, mut minor) = (1, 0);
     let mut k = 0;
     while !attrib_list.is_null() {
@@ -102,7 +102,7 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
             OSMESA_FORMAT => format = value as GLenum,
             OSMESA_DEPTH_BITS => depth = value,
             OSMESA_STENCIL_BITS => stencil = value,
-            OSMESA_ACCUM_BITS => {}
+            OSMESA_ACCUM_BITS => accum = value,
             OSMESA_PROFILE => {
                 if value == OSMESA_CORE_PROFILE {
                     return refuse(
@@ -130,7 +130,7 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
              implements OpenGL 1.5"
         ));
     }
-    create(format, depth, stencil)
+    create(format, depth, stencil, accum)
 }
 
 #[no_mangle]

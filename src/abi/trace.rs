@@ -108,11 +108,12 @@ pub fn flush() {
 }
 
 /// A note: a context made current with a buffer of this size.
-pub fn buffer(width: i32, height: i32) {
+pub fn buffer(width: i32, height: i32, accum: bool) {
+    let accum = if accum { " --accum" } else { "" };
     with_writer(|w, _| {
         writeln!(
             w,
-            "/* OSMesaMakeCurrent: a {width}x{height} buffer (replay with --size {width}x{height}) */"
+            "/* OSMesaMakeCurrent: a {width}x{height} buffer (replay with --size {width}x{height}{accum}) */"
         )
     });
 }

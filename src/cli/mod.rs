@@ -149,6 +149,10 @@ enum Command {
         /// The PNG to write.
         #[arg(long, default_value = "replay.png")]
         out: PathBuf,
+        /// Give the window an accumulation buffer (the emulated path only: the native
+        /// path's target is a framebuffer object, which has none).
+        #[arg(long)]
+        accum: bool,
     },
     /// Print each distinct program a script needs: its key and its generated GLSL.
     Shaders {
@@ -194,7 +198,8 @@ pub fn run() -> ExitCode {
             backend,
             size,
             out,
-        } => replay::run(&file, pipeline, backend, size, &out),
+            accum,
+        } => replay::run(&file, pipeline, backend, size, &out, accum),
         Command::Shaders {
             file,
             scene,

@@ -19,6 +19,7 @@ pub fn run(
     backend: Backend,
     size: ImageSize,
     out: &Path,
+    accum: bool,
 ) -> Result<(), CliError> {
     let commands = script_io::load_lines(file)?;
     super::scene_arg::check_png_outputs(&[("--out", out)])?;
@@ -35,7 +36,15 @@ pub fn run(
         &ctx,
         TargetSpec::new(size.width, size.height, DepthBits::D24).with_stencil(),
     )?;
-    let mut p = pipeline::create(kind, &ctx)?;
+    let mut p = match (accum, kind) {
+        (false, _) => pipeline::create(kind, &ctx)?,
+        (true, PipelineKind::Emulate) => {
+            let mut e = pipeline::emulate::EmulatedPipeline::new(&ctx)?;
+            e.set_accum_buffer(Some((size.width as usize, size.height as usize)));
+            Box::new(e)
+        }
+        (true, PipelineKind::Native) => return Err(CliError::NoAccum(kind)),
+    };
     // One command at a time, so a GL error names the script line that raised it (GL keeps
     // only the first error until glGetError; a script has no glGetError, so each is read
     // and reported as it happens).

@@ -517,9 +517,8 @@ macro_rules! gl_entry_table {
         GetMapfv = glGetMapfv(Left; target: GLenum, query: GLenum, v: *mut GLfloat);
         GetMapdv = glGetMapdv(Left; target: GLenum, query: GLenum, v: *mut GLdouble);
         GetMapiv = glGetMapiv(Left; target: GLenum, query: GLenum, v: *mut GLint);
-        Accum = glAccum(Left; op: GLenum, value: GLfloat);
-        ClearAccum = glClearAccum(Left; red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
-
+        Accum = glAccum(Script; op: GLenum, value: GLfloat);
+        ClearAccum = glClearAccum(Script; red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
         EdgeFlag = glEdgeFlag(Left; flag: GLboolean);
         // Synchronisation, the error flag and strings (the C library answers them; a
         // script checks their arguments).
@@ -976,6 +975,8 @@ impl Command {
             Command::ClearColor(_) => Entry::ClearColor,
             Command::ClearDepth(_) => Entry::ClearDepth,
             Command::ClearStencil(_) => Entry::ClearStencil,
+            Command::ClearAccum(_) => Entry::ClearAccum,
+            Command::Accum { .. } => Entry::Accum,
             Command::ReadPixels(_) => Entry::ReadPixels,
             Command::Draw(g) => match g.indices {
                 Some(_) => Entry::DrawElements,

@@ -276,6 +276,17 @@ impl FixedState {
             Command::ClearColor(c) => self.clear.color = c.clamp(Vec4::ZERO, Vec4::ONE),
             Command::ClearDepth(d) => self.clear.depth = unit_clamp(*d),
             Command::ClearStencil(s) => self.clear.stencil = *s,
+            // Clamped to [−1, 1] (§4.2.3); NaN → −1 as Mesa's CLAMP gives (measured: 2, −3
+            // read back as 1, −1).
+            Command::ClearAccum(c) => self.clear.accum = c.clamp(Vec4::NEG_ONE, Vec4::ONE),
+            Command::Accum { .. } => {
+                if self.accum_bits() == 0 {
+                    return Err(GlError::invalid_operation(
+                        "glAccum without an accumulation buffer (none with a framebuffer \
+                         object bound)",
+                    ));
+                }
+            }
             Command::ReadPixels(r) => {
                 check_read_pixels(r)?;
                 self.check_read_framebuffer(Some(r.format))?

@@ -164,6 +164,17 @@ impl FixedState {
         })
     }
 
+    /// ACCUM_RED_BITS … ACCUM_ALPHA_BITS of the framebuffer bound for drawing: the window's,
+    /// 0 with a framebuffer object bound (objects have no accumulation buffer; Mesa
+    /// measured alike).
+    pub fn accum_bits(&self) -> u8 {
+        if self.framebuffers.draw == 0 {
+            self.framebuffers.window_accum_bits
+        } else {
+            0
+        }
+    }
+
     /// Before a draw or a clear: the draw framebuffer must be complete.
     pub(crate) fn check_draw_framebuffer(&self) -> GlResult {
         match self.framebuffer_status(FramebufferTarget::Draw) {

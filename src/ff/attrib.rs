@@ -4,7 +4,7 @@
 //! A push records the whole model state with the mask; a pop copies back the fields of the
 //! groups the mask names, and only those. Each group's fields are listed once, in
 //! `FixedState::restore_group`. Groups whose state the model does not hold yet (FOG,
-//! SCISSOR, EVAL, HINT, LIST, ACCUM_BUFFER, MULTISAMPLE, POLYGON_STIPPLE) are
+//! SCISSOR, EVAL, HINT, LIST, MULTISAMPLE, POLYGON_STIPPLE) are
 //! accepted and restore nothing; a field added to the model for one of them is added to
 //! its arm there. What GL puts in two groups (LIGHTING's enables are also ENABLE's) is
 //! restored by either, from the same snapshot.
@@ -234,11 +234,10 @@ impl FixedState {
                 self.pixel_transfer = s.pixel_transfer;
                 self.pixel_zoom = s.pixel_zoom;
             }
+            // ACCUM_CLEAR_VALUE (Table 6.20).
+            AttribGroup::AccumBuffer => self.clear.accum = s.clear.accum,
             // Not modelled yet: nothing saved, nothing restored.
-            AttribGroup::AccumBuffer
-            | AttribGroup::Eval
-            | AttribGroup::List
-            | AttribGroup::Multisample => {}
+            AttribGroup::Eval | AttribGroup::List | AttribGroup::Multisample => {}
         }
     }
 
@@ -463,10 +462,8 @@ impl FixedState {
                 }
             }
             AttribGroup::PixelMode => self.pixel_mode_commands(out),
-            AttribGroup::AccumBuffer
-            | AttribGroup::Eval
-            | AttribGroup::List
-            | AttribGroup::Multisample => {}
+            AttribGroup::AccumBuffer => out.push(Command::ClearAccum(self.clear.accum)),
+            AttribGroup::Eval | AttribGroup::List | AttribGroup::Multisample => {}
         }
     }
 

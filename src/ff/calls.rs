@@ -41,16 +41,18 @@ pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
 }
 
 fn clear_mask<A: Args>(c: &A) -> Result<ClearMask, A::Error> {
-    const BITS: [&str; 3] = [
+    const BITS: [&str; 4] = [
         "GL_COLOR_BUFFER_BIT",
         "GL_DEPTH_BUFFER_BIT",
         "GL_STENCIL_BUFFER_BIT",
+        "GL_ACCUM_BUFFER_BIT",
     ];
     let mut m = ClearMask::default();
     for n in c.bits(0, &BITS)? {
         match n {
             "GL_COLOR_BUFFER_BIT" => m.color = true,
             "GL_DEPTH_BUFFER_BIT" => m.depth = true,
+            "GL_ACCUM_BUFFER_BIT" => m.accum = true,
             _ => m.stencil = true,
         }
     }
@@ -174,6 +176,11 @@ pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Erro
         Entry::ClearColor => n(4).and(c.vec4_args(0)).map(Command::ClearColor)?,
         Entry::ClearDepth => n(1).and(c.f32(0)).map(Command::ClearDepth)?,
         Entry::ClearStencil => n(1).and(c.i32(0)).map(Command::ClearStencil)?,
+        Entry::ClearAccum => n(4).and(c.vec4_args(0)).map(Command::ClearAccum)?,
+        Entry::Accum => n(2).and(c.enm(0)).and_then(|op| {
+            let value = c.f32(1)?;
+            Ok(Command::Accum { op, value })
+        })?,
         Entry::ReadPixels => {
             n(7)?;
             Command::ReadPixels(ReadPixels {

@@ -17,6 +17,7 @@ use crate::vocab::DepthRule;
 use super::api::Entry;
 use super::error::GlErrorKind;
 
+use super::accum::AccumOp;
 use super::attrib::AttribMask;
 use super::combiners::{
     CombinerInput, CombinerOutput, CombinerParam, FinalVariable, Portion, Variable,
@@ -340,6 +341,14 @@ pub enum Command {
     ClearDepth(f32),
     ClearStencil(i32),
     ReadPixels(ReadPixels),
+    /// glClearAccum: clamped to [−1, 1] (GL 1.5 §4.2.3).
+    ClearAccum(Vec4),
+    /// glAccum (GL 1.5 §4.2.4): INVALID_OPERATION without an accumulation buffer (none
+    /// with a framebuffer object bound); the rules in `ff::accum`.
+    Accum {
+        op: AccumOp,
+        value: f32,
+    },
 
     /// glBegin … glEnd, or glDrawArrays/glDrawElements.
     Draw(Arc<Geometry>),

@@ -414,6 +414,8 @@ pub struct ClearMask {
     pub color: bool,
     pub depth: bool,
     pub stencil: bool,
+    /// ACCUM_BUFFER_BIT: the accumulation buffer (`ff::accum`); nothing without one.
+    pub accum: bool,
 }
 
 impl ClearMask {
@@ -421,16 +423,19 @@ impl ClearMask {
         color: true,
         depth: true,
         stencil: true,
+        accum: false,
     };
 }
 
-/// glClearColor / glClearDepth / glClearStencil. GL default: (0,0,0,0), 1, 0. Colour and depth
-/// are clamped to [0, 1] when set.
+/// glClearColor / glClearDepth / glClearStencil / glClearAccum. GL default: (0,0,0,0), 1, 0,
+/// (0,0,0,0). Colour and depth are clamped to [0, 1] when set, the accumulation value to
+/// [−1, 1] (GL 1.5 §4.2.3).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ClearValues {
     pub color: Vec4,
     pub depth: f32,
     pub stencil: i32,
+    pub accum: Vec4,
 }
 
 impl ClearValues {
@@ -438,6 +443,7 @@ impl ClearValues {
         color: Vec4::ZERO,
         depth: 1.0,
         stencil: 0,
+        accum: Vec4::ZERO,
     };
 }
 

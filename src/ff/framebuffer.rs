@@ -371,6 +371,9 @@ pub struct Framebuffers {
     /// The window's bits (GL_RED_BITS … GL_STENCIL_BITS with framebuffer 0 bound): the
     /// pipelines read them from the target bound when they start.
     pub window_bits: Bits,
+    /// The window's accumulation bits per channel (GL_ACCUM_RED_BITS …): 0 unless the
+    /// window was made with an accumulation buffer (`ff::accum::ACCUM_BITS`). GL default: 0.
+    pub window_accum_bits: u8,
     /// The largest framebuffer and renderbuffer names bound so far (glGen* continues
     /// after them, as Mesa's name tables do).
     pub max_framebuffer: u32,

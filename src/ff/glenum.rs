@@ -529,6 +529,14 @@ gl_enums!(SumOrMux { FALSE => SumOrMux::Sum, TRUE => SumOrMux::Mux });
 
 gl_enums!(bool { FALSE => false, TRUE => true });
 
+gl_enums!(super::accum::AccumOp {
+    ACCUM => super::accum::AccumOp::Accum,
+    LOAD => super::accum::AccumOp::Load,
+    RETURN => super::accum::AccumOp::Return,
+    MULT => super::accum::AccumOp::Mult,
+    ADD => super::accum::AccumOp::Add,
+});
+
 gl_enums!(AttribGroup {
     CURRENT_BIT => AttribGroup::Current,
     POINT_BIT => AttribGroup::Point,

@@ -16,6 +16,7 @@
 //! set (GL 1.5 §2.11.4, §2.14.1), never at draw time. Depth readback conversions belong to
 //! the `gpu` layer.
 
+pub mod accum;
 pub mod api;
 pub mod apply;
 mod apply_framebuffer;

@@ -349,6 +349,12 @@ pnames! {
     ALPHA_BITS => |s| int(i32::from(s.draw_bits(s.framebuffers.window_bits).alpha)),
     DEPTH_BITS => |s| int(i32::from(s.draw_bits(s.framebuffers.window_bits).depth)),
     STENCIL_BITS => |s| int(i32::from(s.draw_bits(s.framebuffers.window_bits).stencil)),
+    ACCUM_RED_BITS => |s| int(i32::from(s.accum_bits())),
+    ACCUM_GREEN_BITS => |s| int(i32::from(s.accum_bits())),
+    ACCUM_BLUE_BITS => |s| int(i32::from(s.accum_bits())),
+    ACCUM_ALPHA_BITS => |s| int(i32::from(s.accum_bits())),
+    // Read as integers like COLOR_CLEAR_VALUE (Mesa measured: 0.3 → 644245119).
+    ACCUM_CLEAR_VALUE => |s| normalized(&s.clear.accum.to_array()),
     DRAW_BUFFER => |s| enm(s.framebuffers.color_buffer(framebuffer::FramebufferTarget::Draw)),
     READ_BUFFER => |s| enm(s.framebuffers.color_buffer(framebuffer::FramebufferTarget::Read)),
 
@@ -784,7 +790,8 @@ mod tests {
         assert_eq!(s.get_doublev(r::DEPTH_RANGE), Ok(vec![0.0, 1.0]));
         assert_eq!(s.is_enabled(r::LIGHT0 + 7), Ok(false));
         assert_eq!(s.is_enabled(r::LIGHT0 + 8), Err(GlErrorKind::InvalidEnum));
-        assert_eq!(s.get(r::ACCUM_CLEAR_VALUE), Err(GlErrorKind::InvalidEnum));
+        assert_eq!(s.get_floatv(r::ACCUM_CLEAR_VALUE), Ok(vec![0.0; 4]));
+        assert_eq!(s.get_integerv(r::ACCUM_RED_BITS), Ok(vec![0]));
         assert_eq!(s.get(0xFFFF_FFFF), Err(GlErrorKind::InvalidEnum));
         // Every table entry answers, with a distinct pname.
         let all = pnames();

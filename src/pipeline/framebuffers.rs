@@ -85,6 +85,7 @@ pub fn uses_framebuffer(cmd: &Command) -> bool {
             | Command::Bitmap(_)
             | Command::DrawPixels(_)
             | Command::CopyPixels(_)
+            | Command::Accum { .. }
     )
 }
 

@@ -265,6 +265,7 @@ pub fn eye_start(scene: &Scene, look: Look, stencil: bool) -> Vec<Command> {
             color: true,
             depth: true,
             stencil,
+            accum: false,
         }),
         Command::Enable(Capability::DepthTest),
     ];
@@ -403,6 +404,7 @@ pub fn map_pass_start(size: u32, colour: bool) -> Vec<Command> {
         color: colour,
         depth: true,
         stencil: false,
+        accum: false,
     }));
     commands
 }

@@ -113,7 +113,12 @@ glHint(GL_FOG_HINT, GL_DONT_CARE);
 glClearColor(0, 0, 0, 1);
 glClearDepth(1);
 glClearStencil(0);
-glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+glClearAccum(0, 0, 0, 0);
+glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
+/* glAccum needs an accumulation buffer, which a replay's target lacks: compiled only. */
+glNewList(90, GL_COMPILE);
+glAccum(GL_RETURN, 1);
+glEndList();
 glPushAttrib(GL_ALL_ATTRIB_BITS);
 glPopAttrib();
 glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS);

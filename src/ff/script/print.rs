@@ -432,6 +432,8 @@ fn call(c: &Command) -> String {
         Command::ClearColor(c) => format!("{}({})", Entry::ClearColor, fs(&c.to_array())),
         Command::ClearDepth(d) => format!("{}({})", Entry::ClearDepth, f(*d)),
         Command::ClearStencil(s) => format!("{}({s})", Entry::ClearStencil),
+        Command::ClearAccum(c) => format!("{}({})", Entry::ClearAccum, fs(&c.to_array())),
+        Command::Accum { op, value } => format!("{}({}, {})", Entry::Accum, n(*op), f(*value)),
         Command::ReadPixels(r) => format!(
             "{}({}, {}, {}, {}, {}, {}, readback_{})",
             Entry::ReadPixels,
@@ -582,6 +584,7 @@ fn clear_mask(m: ClearMask) -> String {
         (m.color, "GL_COLOR_BUFFER_BIT"),
         (m.depth, "GL_DEPTH_BUFFER_BIT"),
         (m.stencil, "GL_STENCIL_BUFFER_BIT"),
+        (m.accum, "GL_ACCUM_BUFFER_BIT"),
     ]
     .iter()
     .filter(|(on, _)| *on)

@@ -85,7 +85,7 @@ fn error_table() {
         ("glVertex3f(0, 0, 0);", 1, "Immediate"),
         ("glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, buffer);", 1, "BadArgument"),
         ("glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, (GLubyte[]){256, 0, 0, 0});", 1, "BadArgument"),
-        ("glClear(GL_COLOR_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);", 1, "UnknownEnum"),
+        ("glClear(GL_COLOR_BUFFER_BIT | GL_POINT_BIT);", 1, "UnknownEnum"),
         ("\n\n\n  @", 4, "UnexpectedChar"),
         ("/* a\n b", 1, "UnterminatedComment"),
         ("glClear(0);\nglRenderMode(GL_SELECT);", 2, "NotImplemented"),

@@ -619,6 +619,7 @@ fn same_code() -> Vec<Case> {
                     color: true,
                     depth: true,
                     stencil: false,
+                    accum: false,
                 }),
                 Command::Enable(Capability::DepthTest),
                 Command::DepthFunc(CompareFunc::Equal),

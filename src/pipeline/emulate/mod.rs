@@ -9,6 +9,7 @@
 //! `Fixed8` computes the stages on 8-bit integers and the register combiners on 9-bit
 //! signed values, as the era's hardware did.
 
+pub mod accum;
 pub mod assembly;
 pub mod cache;
 pub mod conv;
@@ -55,6 +56,8 @@ pub struct Emulate {
     target: crate::ff::Viewport,
     /// The texture holding the last pixel rectangle's image (`pixels`).
     pixel_image: Option<glow::Texture>,
+    /// The window's accumulation buffer, when it has one (`accum`).
+    accum: Option<crate::ff::accum::AccumBuffer>,
 }
 
 /// Commands executed by generated programs on a core 3.3 context.
@@ -76,6 +79,7 @@ impl EmulatedPipeline {
         let path = Emulate {
             target,
             pixel_image: None,
+            accum: None,
             programs: ProgramCache::default(),
             geometry: GeometryCache::default(),
             textures: Textures::default(),
@@ -103,6 +107,21 @@ impl EmulatedPipeline {
     /// caller that replaced its render target.
     pub fn set_window_framebuffer(&mut self, window: Option<glow::Framebuffer>) {
         self.path.framebuffers.set_window(window);
+    }
+
+    /// Gives the window an accumulation buffer of `size` (zeroed; kept when the size is
+    /// unchanged), or none: ACCUM_RED_BITS … follow (`ff::accum::ACCUM_BITS` or 0).
+    pub fn set_accum_buffer(&mut self, size: Option<(usize, usize)>) {
+        use crate::ff::accum::{AccumBuffer, ACCUM_BITS};
+        self.path.accum = match (self.path.accum.take(), size) {
+            (Some(b), Some(s)) if b.size() == s => Some(b),
+            (_, Some((w, h))) => Some(AccumBuffer::new(w, h)),
+            (_, None) => None,
+        };
+        self.core.state.framebuffers.window_accum_bits = match size {
+            Some(_) => ACCUM_BITS,
+            None => 0,
+        };
     }
 
     /// How many geometries are uploaded (each kept while something else holds it).
@@ -213,7 +232,19 @@ impl Issue for Emulate {
                 self.draw(gl, state, g)?;
                 core.counters.draws += 1;
             }
-            Command::Clear(mask) => self.clear(gl, state, *mask),
+            Command::Clear(mask) => {
+                self.clear(gl, state, *mask);
+                if let (true, Some(b)) = (mask.accum && state.accum_bits() > 0, &mut self.accum) {
+                    accum::clear(b, state);
+                }
+            }
+            Command::Accum { op, value } => {
+                if let Some(b) = &mut self.accum {
+                    accum::accum(gl, b, state, *op, *value)?;
+                    // RETURN set the scissor and the colour mask behind the shadow copy.
+                    self.raster.invalidate();
+                }
+            }
             Command::TexImage(t) => self.textures.upload_level(gl, state, t.target, t.level)?,
             Command::DeleteTextures(names) => self.textures.delete(gl, names),
             Command::TexSubImage2D(t) => self.textures.sub_image(gl, state, t)?,

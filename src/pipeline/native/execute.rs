@@ -199,6 +199,8 @@ impl Native {
             Command::ClearColor(c) => unsafe { g.ClearColor(c.x, c.y, c.z, c.w) },
             Command::ClearDepth(d) => unsafe { g.ClearDepth((*d).into()) },
             Command::ClearStencil(s) => unsafe { g.ClearStencil(*s) },
+            Command::ClearAccum(c) => unsafe { g.ClearAccum(c.x, c.y, c.z, c.w) },
+            Command::Accum { op, value } => unsafe { g.Accum(conv::value(*op), *value) },
             Command::ReadPixels(r) => {
                 let bytes = readback::read_pixels(g, r);
                 core.readbacks.insert(r.slot, bytes);
@@ -309,6 +311,7 @@ fn clear_bits(mask: ClearMask) -> GLbitfield {
     bit(mask.color, gl::COLOR_BUFFER_BIT)
         | bit(mask.depth, gl::DEPTH_BUFFER_BIT)
         | bit(mask.stencil, gl::STENCIL_BUFFER_BIT)
+        | bit(mask.accum, gl::ACCUM_BUFFER_BIT)
 }
 
 /// The GL entry point a command becomes, named in errors GL raises for it.
