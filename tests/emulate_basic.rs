@@ -158,3 +158,16 @@ fn dropped_geometry_does_not_accumulate() {
         "{n} geometries still uploaded after 2000 dropped ones"
     );
 }
+
+/// A display list's glBegin … glEnd is assembled at glEndList: every glCallList draws the
+/// same geometry, uploaded once; a redefined list uploads its new vertices.
+#[test]
+fn a_display_list_is_uploaded_once_until_it_is_redefined() {
+    let list = format!("glNewList(1, GL_COMPILE);\nglColor3f(0, 1, 0);\n{QUAD}\nglEndList();\n");
+    let src = format!("{list}glCallList(1);\nglCallList(1);\nglCallList(1);\n{list}glCallList(1);");
+    run(&src, |img, p| {
+        probe(img, 8, 8, [0, 255, 0, 255], 0);
+        assert_eq!(p.counters().draws, 4);
+        assert_eq!(p.counters().geometry_uploads, 2);
+    });
+}

@@ -307,6 +307,13 @@ impl Client {
                     }
                 }
                 Item::Base(b) => self.lists.base = *b,
+                Item::Pair(pair) => {
+                    if self.immediate.is_open() {
+                        self.run(&pair.items, depth, current, out);
+                    } else {
+                        pair.replay(&current, out);
+                    }
+                }
             }
             for cmd in &out[before..] {
                 follow(&mut current, cmd);

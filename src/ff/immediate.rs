@@ -267,21 +267,27 @@ impl Immediate {
         let open = self.open.take().ok_or("glEnd without glBegin")?;
         let (begin, cur) = (open.begin, open.current);
         out.push(Command::Draw(Arc::new(open.geometry)));
-        if begin.color != cur.color {
-            out.push(Command::Color(cur.color));
-        }
-        if begin.normal != cur.normal {
-            out.push(Command::Normal(cur.normal));
-        }
-        for u in 0..MAX_TEXTURE_UNITS {
-            if begin.texcoords[u] != cur.texcoords[u] {
-                out.push(Command::TexCoord {
-                    unit: u as u8,
-                    coord: cur.texcoords[u],
-                });
-            }
-        }
+        changed_current(&begin, &cur, out);
         Ok(())
+    }
+}
+
+/// The current values `now` holds that differ from `begin`, as the commands glEnd leaves
+/// after its draw.
+pub fn changed_current(begin: &CurrentValues, now: &CurrentValues, out: &mut Vec<Command>) {
+    if begin.color != now.color {
+        out.push(Command::Color(now.color));
+    }
+    if begin.normal != now.normal {
+        out.push(Command::Normal(now.normal));
+    }
+    for u in 0..MAX_TEXTURE_UNITS {
+        if begin.texcoords[u] != now.texcoords[u] {
+            out.push(Command::TexCoord {
+                unit: u as u8,
+                coord: now.texcoords[u],
+            });
+        }
     }
 }
 

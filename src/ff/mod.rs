@@ -40,6 +40,7 @@ pub mod geometry;
 pub mod glenum;
 pub mod immediate;
 pub mod light;
+pub mod list_pairs;
 pub mod lists;
 pub mod matrix;
 pub mod pixels;
