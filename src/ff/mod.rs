@@ -21,6 +21,7 @@ pub mod apply;
 mod apply_framebuffer;
 pub mod args;
 pub mod attrib;
+mod buffer_draws;
 pub mod buffers;
 pub mod calls;
 pub mod calls_attrib;
