@@ -158,3 +158,35 @@ fn dropped_geometry_does_not_accumulate() {
         "{n} geometries still uploaded after 2000 dropped ones"
     );
 }
+
+/// A display list's glBegin … glEnd is assembled at glEndList: every glCallList draws the
+/// same geometry, uploaded once; a redefined list uploads its new vertices.
+#[test]
+fn a_display_list_is_uploaded_once_until_it_is_redefined() {
+    let list = format!("glNewList(1, GL_COMPILE);\nglColor3f(0, 1, 0);\n{QUAD}\nglEndList();\n");
+    let src = format!("{list}glCallList(1);\nglCallList(1);\nglCallList(1);\n{list}glCallList(1);");
+    run(&src, |img, p| {
+        probe(img, 8, 8, [0, 255, 0, 255], 0);
+        assert_eq!(p.counters().draws, 4);
+        assert_eq!(p.counters().geometry_uploads, 2);
+    });
+}
+
+/// A draw from buffer objects that nothing changed since the last such draw uploads
+/// nothing; glBufferSubData makes the next draw upload again.
+#[test]
+fn a_draw_from_unchanged_buffers_is_uploaded_once() {
+    let src = "glColor3f(0, 0, 1);\n\
+        glBindBuffer(GL_ARRAY_BUFFER, 1);\n\
+        glBufferData(GL_ARRAY_BUFFER, 32, (GLfloat[]){-1, -1, 1, -1, 1, 1, -1, 1}, GL_STATIC_DRAW);\n\
+        glVertexPointer(2, GL_FLOAT, 0, NULL);\n\
+        glEnableClientState(GL_VERTEX_ARRAY);\n\
+        glDrawArrays(GL_QUADS, 0, 4);\nglDrawArrays(GL_QUADS, 0, 4);\nglDrawArrays(GL_QUADS, 0, 4);\n\
+        glBufferSubData(GL_ARRAY_BUFFER, 0, 8, (GLfloat[]){-1, -1});\n\
+        glDrawArrays(GL_QUADS, 0, 4);";
+    run(src, |img, p| {
+        probe(img, 8, 8, [0, 0, 255, 255], 0);
+        assert_eq!(p.counters().draws, 4);
+        assert_eq!(p.counters().geometry_uploads, 2);
+    });
+}

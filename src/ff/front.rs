@@ -7,6 +7,7 @@ use std::borrow::Cow;
 use std::sync::Arc;
 
 use super::args::Args;
+use super::buffer_draws::BufferDraws;
 use super::buffers::Buffers;
 use super::client::{ArrayData, ClientArrays, ClientEffect, ClientMemory};
 use super::client_attrib::ClientAttribStack;
@@ -30,6 +31,8 @@ pub struct Client {
     /// front end uses these.
     pub pixel_store: PixelStore,
     pub client_attrib: ClientAttribStack,
+    /// The last draw from buffer objects, drawn again while nothing it reads changed.
+    buffer_draws: BufferDraws,
 }
 
 /// What a call gives back to its caller. The C library returns or writes it out; a script
@@ -156,9 +159,18 @@ impl Client {
             mem,
             buffers: &self.buffers,
         };
+        if let Some(g) = self.buffer_draws.get(c, &self.arrays, &self.buffers) {
+            out.push(Command::Draw(g));
+            return Ok(Reply::None);
+        }
         match self.arrays.call(c, &mem, self.buffers.bound)? {
             ClientEffect::State | ClientEffect::Draw(None) => {}
-            ClientEffect::Draw(Some(g)) => out.push(Command::Draw(Arc::new(g))),
+            ClientEffect::Draw(Some(g)) => {
+                let g = Arc::new(g);
+                self.buffer_draws
+                    .remember(c, &self.arrays, &self.buffers, &g);
+                out.push(Command::Draw(g));
+            }
             ClientEffect::Element(e) => self
                 .immediate
                 .apply(&Op::Element(Box::new(e)), current, out)
@@ -173,6 +185,7 @@ impl Client {
         if self.immediate.is_open() {
             return Err(c.immediate("a buffer-object call inside glBegin/glEnd"));
         }
+        self.buffer_draws.forget();
         let reply = self.buffers.call(c, mem)?;
         if matches!(c.entry(), Entry::DeleteBuffers | Entry::DeleteBuffersARB) {
             for name in self.arrays.buffer_names() {
@@ -307,6 +320,13 @@ impl Client {
                     }
                 }
                 Item::Base(b) => self.lists.base = *b,
+                Item::Pair(pair) => {
+                    if self.immediate.is_open() {
+                        self.run(&pair.items, depth, current, out);
+                    } else {
+                        pair.replay(&current, out);
+                    }
+                }
             }
             for cmd in &out[before..] {
                 follow(&mut current, cmd);

@@ -87,7 +87,8 @@ pub fn decode<A: Args>(c: &A) -> Result<Option<Op>, A::Error> {
 /// alpha = 1).
 fn family<A: Args>(c: &A, form: AttribCall) -> Result<Op, A::Error> {
     let from = usize::from(form.attrib == Attrib::MultiTexCoord);
-    let v = attrib_values(c, form, from)?;
+    let (values, len) = attrib_values(c, form, from)?;
+    let v = &values[..len];
     let f = |k: usize, default: f32| v.get(k).map_or(default, |x| *x as f32);
     let n = |k: usize, default: f32| v.get(k).map_or(default, |x| form.ty.normalized(*x));
     let coords = Vec4::new(f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 1.0));
@@ -267,21 +268,27 @@ impl Immediate {
         let open = self.open.take().ok_or("glEnd without glBegin")?;
         let (begin, cur) = (open.begin, open.current);
         out.push(Command::Draw(Arc::new(open.geometry)));
-        if begin.color != cur.color {
-            out.push(Command::Color(cur.color));
-        }
-        if begin.normal != cur.normal {
-            out.push(Command::Normal(cur.normal));
-        }
-        for u in 0..MAX_TEXTURE_UNITS {
-            if begin.texcoords[u] != cur.texcoords[u] {
-                out.push(Command::TexCoord {
-                    unit: u as u8,
-                    coord: cur.texcoords[u],
-                });
-            }
-        }
+        changed_current(&begin, &cur, out);
         Ok(())
+    }
+}
+
+/// The current values `now` holds that differ from `begin`, as the commands glEnd leaves
+/// after its draw.
+pub fn changed_current(begin: &CurrentValues, now: &CurrentValues, out: &mut Vec<Command>) {
+    if begin.color != now.color {
+        out.push(Command::Color(now.color));
+    }
+    if begin.normal != now.normal {
+        out.push(Command::Normal(now.normal));
+    }
+    for u in 0..MAX_TEXTURE_UNITS {
+        if begin.texcoords[u] != now.texcoords[u] {
+            out.push(Command::TexCoord {
+                unit: u as u8,
+                coord: now.texcoords[u],
+            });
+        }
     }
 }
 
@@ -307,21 +314,33 @@ impl Open {
 
 /// The values of an attribute-family call from argument `from` on: `count` scalars, or
 /// one array (two for glRect's corners) of at least that many, each converted to the
-/// parameter type as C converts an argument.
-fn attrib_values<A: Args>(c: &A, form: AttribCall, from: usize) -> Result<Vec<f64>, A::Error> {
+/// parameter type as C converts an argument. At most four (a family's widest form), held
+/// in place rather than allocated: this runs once per glVertex.
+fn attrib_values<A: Args>(
+    c: &A,
+    form: AttribCall,
+    from: usize,
+) -> Result<([f64; 4], usize), A::Error> {
+    let mut out = [0.0; 4];
+    let count = form.count.min(4);
     if !form.vector {
         c.count(from + form.count)?;
-        return (0..form.count)
-            .map(|k| c.f64(from + k).map(|v| form.ty.convert(v)))
-            .collect();
+        for (k, slot) in out.iter_mut().enumerate().take(count) {
+            *slot = form.ty.convert(c.f64(from + k)?);
+        }
+        return Ok((out, count));
     }
     let arrays = if form.attrib == Attrib::Rect { 2 } else { 1 };
     c.count(from + arrays)?;
     let per = form.count / arrays;
-    let mut out = Vec::with_capacity(form.count);
+    let mut len = 0;
     for k in 0..arrays {
-        let values = c.array_f64(from + k, per)?;
-        out.extend(values.iter().map(|v| form.ty.convert(*v)));
+        for v in c.array_f64(from + k, per)? {
+            if let Some(slot) = out.get_mut(len) {
+                *slot = form.ty.convert(v);
+                len += 1;
+            }
+        }
     }
-    Ok(out)
+    Ok((out, len))
 }

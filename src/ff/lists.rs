@@ -16,6 +16,7 @@ use std::sync::Arc;
 use super::api::Entry;
 use super::command::Command;
 use super::immediate::Op;
+use super::list_pairs::{assemble, Pair};
 use super::state::CurrentValues;
 
 /// GL_MAX_LIST_NESTING as Mesa sets it.
@@ -32,6 +33,8 @@ pub enum Item {
     CallMany(Vec<u32>),
     /// glListBase(b).
     Base(u32),
+    /// A glBegin … glEnd assembled at glEndList (`list_pairs`).
+    Pair(Box<Pair>),
 }
 
 /// GL_COMPILE or GL_COMPILE_AND_EXECUTE.
@@ -94,10 +97,11 @@ impl Lists {
         Ok(())
     }
 
-    /// glEndList: the list replaces any list of that name.
+    /// glEndList: the list replaces any list of that name, its glBegin … glEnd pairs
+    /// assembled.
     pub fn end(&mut self) -> Result<(), &'static str> {
         let (name, _, items) = self.compiling.take().ok_or("glEndList without glNewList")?;
-        self.lists.insert(name, Arc::new(items));
+        self.lists.insert(name, Arc::new(assemble(items)));
         Ok(())
     }
 

@@ -142,6 +142,8 @@ pub struct Counters {
     pub state_calls_skipped: u64,
     /// Texture images uploaded or copied (TexImage, TexSubImage, CopyTexImage).
     pub texture_uploads: u64,
+    /// Draw geometries uploaded into GL buffers (emulate only; 0 on native).
+    pub geometry_uploads: u64,
 }
 
 /// One way of executing Commands. The context must be current and stay the same for the

@@ -326,6 +326,8 @@ pub struct GeometryCache {
     entries: HashMap<usize, GpuGeometry>,
     /// Entries after the last sweep; the next sweep comes when the cache has doubled.
     live_after_sweep: usize,
+    /// Geometries uploaded since the pipeline began.
+    uploads: u64,
 }
 
 impl GeometryCache {
@@ -346,6 +348,7 @@ impl GeometryCache {
         match self.entries.entry(key) {
             std::collections::hash_map::Entry::Occupied(e) => Ok(e.into_mut()),
             std::collections::hash_map::Entry::Vacant(e) => {
+                self.uploads += 1;
                 Ok(e.insert(GpuGeometry::upload(gl, g)?))
             }
         }
@@ -365,6 +368,11 @@ impl GeometryCache {
             }
         }
         self.live_after_sweep = self.entries.len();
+    }
+
+    /// How many geometries were uploaded since the pipeline began.
+    pub fn uploads(&self) -> u64 {
+        self.uploads
     }
 
     /// How many geometries are uploaded.

@@ -285,6 +285,7 @@ impl Issue for Emulate {
             state_calls_sent: sent,
             state_calls_skipped: skipped + self.textures.binds_skipped,
             texture_uploads: self.textures.uploads,
+            geometry_uploads: self.geometry.uploads(),
             ..*core
         }
     }
