@@ -32,13 +32,15 @@ const fn case(name: &'static str, w: u32, h: u32, per_channel: u8, max_bad: usiz
 }
 
 /// The table. Tolerances are per channel (of 255) and a count of pixels allowed beyond it.
-const CASES: [Case; 18] = [
+const CASES: [Case; 19] = [
     case("alpha_test_boundaries", 8, 1, 0, 0),
     // Fixed-point vs fp32 combine arithmetic: 1/255.
     case("combine_bugs_crossbar", 8, 1, 1, 0),
     case("depth_tex_compare", 128, 16, 0, 0),
     // fp32 fog factors on both paths; 3/255 on 99% as in tests/fidelity_fog.rs.
     case("fog", 64, 32, 3, 20),
+    // The same llvmpipe rasterises both paths; NEAREST sampling (tests/fidelity_framebuffers.rs).
+    case("framebuffer_objects", 64, 32, 1, 0),
     // Mesa 22.3 fails configurations 3 and 4 natively (tests/fidelity_polygon_mode.rs):
     // their outlines, 4 × 61 pixels each, are blue there and white on the emulated path.
     case("polygon_mode_offset", 448, 64, 0, 2 * 4 * 61),

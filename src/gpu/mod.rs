@@ -278,6 +278,8 @@ impl GpuContext {
     /// Presents `target` in the window and returns what the window shows, top row first.
     /// Only the window backend has something to present to.
     pub fn present(&mut self, target: &RenderTarget) -> Result<image::RgbaImage, GpuError> {
+        #[cfg(not(feature = "window"))]
+        let _ = target;
         match &mut self.handle {
             #[cfg(feature = "window")]
             Handle::Window(w) => w.present(&self.gl, target),
