@@ -95,11 +95,11 @@ fn closest(names: &[&str]) -> String {
 }
 
 #[cfg(test)]
-mod every_row;
+mod every_row_tests;
 #[cfg(test)]
 mod tests;
 
 #[cfg(test)]
-mod tests_pixels;
+mod pixels_tests;
 #[cfg(test)]
-mod tests_stipple;
+mod stipple_tests;
