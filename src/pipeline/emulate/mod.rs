@@ -163,20 +163,32 @@ impl Emulate {
             let mut key = base.clone();
             key.fragment.edges = pass.edges;
             key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
-            let program = self
-                .programs
-                .get_or_build(&key, |k| Program::build(gl, k))?;
-            program.bind(gl, state);
-            let units: Vec<_> = key
-                .fragment
-                .units
-                .iter()
-                .map(|u| (u.unit, u.target))
-                .collect();
-            self.textures.bind_units(gl, state, &units)?;
-            self.raster.sync(gl, state, Some(&pass));
-            self.geometry.get(gl, geometry)?.draw(gl, state);
+            self.draw_pass(gl, state, &key, &pass, geometry)?;
         }
+        Ok(())
+    }
+
+    /// One pass of a draw: the key's program bound with its uniforms, the units' textures,
+    /// the raster state synced, the geometry drawn (primitives and pixel rectangles alike).
+    fn draw_pass(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        key: &ShaderKey,
+        pass: &polygon::PolygonPass,
+        geometry: &Arc<Geometry>,
+    ) -> Result<(), PipelineError> {
+        let program = self.programs.get_or_build(key, |k| Program::build(gl, k))?;
+        program.bind(gl, state);
+        let units: Vec<_> = key
+            .fragment
+            .units
+            .iter()
+            .map(|u| (u.unit, u.target))
+            .collect();
+        self.textures.bind_units(gl, state, &units)?;
+        self.raster.sync(gl, state, Some(pass));
+        self.geometry.get(gl, geometry)?.draw(gl, state);
         Ok(())
     }
 

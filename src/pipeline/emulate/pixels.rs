@@ -28,7 +28,6 @@ use glow::HasContext;
 
 use super::key::{PixelSource, ShaderKey};
 use super::polygon::PolygonPass;
-use super::program::Program;
 use super::Emulate;
 use crate::ff::{
     ColorMask, Command, CompareFunc, Converted, CopyKind, CopyPixels, DrawPixels, FixedState,
@@ -446,19 +445,7 @@ impl Emulate {
         for s in &passes {
             let mut key = ShaderKey::from_state(s, self.precision);
             key.fragment.pixels = Some(source);
-            let program = self
-                .programs
-                .get_or_build(&key, |k| Program::build(gl, k))?;
-            program.bind(gl, s);
-            let units: Vec<_> = key
-                .fragment
-                .units
-                .iter()
-                .map(|u| (u.unit, u.target))
-                .collect();
-            self.textures.bind_units(gl, s, &units)?;
-            self.raster.sync(gl, s, Some(&pass));
-            self.geometry.get(gl, &quad)?.draw(gl, s);
+            self.draw_pass(gl, s, &key, &pass, &quad)?;
         }
         Ok(())
     }
