@@ -90,6 +90,28 @@ impl<T: CElement> From<*mut T> for CArg {
     }
 }
 
+/// `out.len()` elements of type `elem` from `p`, each as its C type holds it.
+///
+/// # Safety
+/// `p` points to at least `out.len()` elements of `elem`'s type.
+unsafe fn read_elements(p: *const c_void, elem: CElem, out: &mut [f64]) {
+    unsafe fn each<T: Copy>(p: *const c_void, out: &mut [f64], f: impl Fn(T) -> f64) {
+        for (k, slot) in out.iter_mut().enumerate() {
+            *slot = f(p.cast::<T>().add(k).read_unaligned());
+        }
+    }
+    match elem {
+        CElem::Byte => each(p, out, |x: i8| f64::from(x)),
+        CElem::UByte | CElem::Void => each(p, out, |x: u8| f64::from(x)),
+        CElem::Short => each(p, out, |x: i16| f64::from(x)),
+        CElem::UShort => each(p, out, |x: u16| f64::from(x)),
+        CElem::Int => each(p, out, |x: i32| f64::from(x)),
+        CElem::UInt => each(p, out, |x: u32| f64::from(x)),
+        CElem::Float => each(p, out, |x: f32| f64::from(x)),
+        CElem::Double => each(p, out, |x: f64| x),
+    }
+}
+
 /// The readback slot a C glReadPixels uses before its bytes are copied out.
 pub const CALLER_SLOT: u32 = u32::MAX;
 
@@ -138,24 +160,19 @@ impl CCall<'_> {
 
     /// `n` values from pointer argument `i`, each as its C element type holds it.
     fn read(&self, i: usize, n: usize) -> Result<Vec<f64>, GlErrorKind> {
-        let (p, elem) = self.pointer(i)?;
-        // SAFETY: the caller passed a pointer to at least `n` elements of this type, as the
-        // GL prototype and the parameter name require (GL's contract with the program).
-        let v = unsafe {
-            (0..n)
-                .map(|k| match elem {
-                    CElem::Byte => f64::from(*p.cast::<i8>().add(k)),
-                    CElem::UByte | CElem::Void => f64::from(*p.cast::<u8>().add(k)),
-                    CElem::Short => f64::from(p.cast::<i16>().add(k).read_unaligned()),
-                    CElem::UShort => f64::from(p.cast::<u16>().add(k).read_unaligned()),
-                    CElem::Int => f64::from(p.cast::<i32>().add(k).read_unaligned()),
-                    CElem::UInt => f64::from(p.cast::<u32>().add(k).read_unaligned()),
-                    CElem::Float => f64::from(p.cast::<f32>().add(k).read_unaligned()),
-                    CElem::Double => p.cast::<f64>().add(k).read_unaligned(),
-                })
-                .collect()
-        };
+        let mut v = vec![0.0; n];
+        self.read_into(i, &mut v)?;
         Ok(v)
+    }
+
+    /// `out.len()` values from pointer argument `i` into `out`.
+    fn read_into(&self, i: usize, out: &mut [f64]) -> Result<(), GlErrorKind> {
+        let (p, elem) = self.pointer(i)?;
+        // SAFETY: the caller passed a pointer to at least `out.len()` elements of this type,
+        // as the GL prototype and the parameter name require (GL's contract with the
+        // program).
+        unsafe { read_elements(p, elem, out) };
+        Ok(())
     }
 
     /// The pixels of `shape` from pointer `i`, unpacked with the unpack alignment
@@ -277,6 +294,9 @@ impl Args for CCall<'_> {
     }
     fn array_f64(&self, i: usize, n: usize) -> Result<Vec<f64>, GlErrorKind> {
         self.read(i, n)
+    }
+    fn array_f64_into(&self, i: usize, out: &mut [f64]) -> Result<(), GlErrorKind> {
+        self.read_into(i, out)
     }
     fn tex_data(&self, i: usize, shape: PixelShape) -> Result<TexData, GlErrorKind> {
         Ok(self.unpack(i, shape)?.map_or(TexData::Null, TexData::Bytes))

@@ -79,6 +79,43 @@ impl ColorFormat {
         }
     }
 
+    /// A row of RGBA pixels of `size`-byte components in this order ([`write`]); byte
+    /// rows take a loop per format, the others the general one.
+    ///
+    /// [`write`]: ColorFormat::write
+    fn write_row(self, src: &[u8], dst: &mut [u8], size: usize) {
+        let pixels = src.chunks_exact(4);
+        match (self, size) {
+            (ColorFormat::Rgba, 1) => dst.copy_from_slice(&src[..dst.len()]),
+            (ColorFormat::Bgra, 1) => {
+                for (s, d) in pixels.zip(dst.chunks_exact_mut(4)) {
+                    d.copy_from_slice(&[s[2], s[1], s[0], s[3]]);
+                }
+            }
+            (ColorFormat::Argb, 1) => {
+                for (s, d) in pixels.zip(dst.chunks_exact_mut(4)) {
+                    d.copy_from_slice(&[s[3], s[0], s[1], s[2]]);
+                }
+            }
+            (ColorFormat::Rgb, 1) => {
+                for (s, d) in pixels.zip(dst.chunks_exact_mut(3)) {
+                    d.copy_from_slice(&[s[0], s[1], s[2]]);
+                }
+            }
+            (ColorFormat::Bgr, 1) => {
+                for (s, d) in pixels.zip(dst.chunks_exact_mut(3)) {
+                    d.copy_from_slice(&[s[2], s[1], s[0]]);
+                }
+            }
+            _ => {
+                let bpp = self.bytes() * size;
+                for (s, d) in src.chunks_exact(4 * size).zip(dst.chunks_exact_mut(bpp)) {
+                    self.write(s, d, size);
+                }
+            }
+        }
+    }
+
     /// An RGBA pixel of `size`-byte components in this order. Mesa's OSMesa orders only
     /// byte components: GL_UNSIGNED_SHORT and GL_FLOAT buffers hold R, G, B (and A) in
     /// that order whatever the format asked (measured, `tests/c/formats.c`: OSMESA_BGRA and
@@ -159,6 +196,8 @@ pub struct Context {
     pub y_up: bool,
     client: Client,
     made: Vec<Command>,
+    /// The image as read back at the last glFinish, kept for the next.
+    readback: Vec<u8>,
     /// The first error of a call the model never saw (a bad token, a call inside
     /// glBegin/glEnd), kept until glGetError as GL keeps its flag.
     error: Option<GlErrorKind>,
@@ -209,6 +248,7 @@ impl Context {
             y_up: true,
             client: Client::default(),
             made: Vec::new(),
+            readback: Vec::new(),
             error: None,
             warned: HashSet::new(),
             depth_copy: Vec::new(),
@@ -397,6 +437,23 @@ impl Context {
         }
     }
 
+    /// A vertex attribute inside glBegin/glEnd, straight to the open pair
+    /// (`vertex_calls`); `false` when the call takes the general path. Inside the pair an
+    /// attribute or a vertex yields no command.
+    #[inline]
+    pub fn attribute_in_pair(&mut self, entry: Entry, args: &[CArg]) -> bool {
+        let Some(form) = entry.attrib_call() else {
+            return false;
+        };
+        if !self.client.immediate.is_open() || self.client.lists.compiling().is_some() {
+            return false;
+        }
+        match super::vertex_calls::read(form, args) {
+            Some((unit, c)) => self.client.immediate.in_pair(form.attrib, unit, c),
+            None => false,
+        }
+    }
+
     fn execute(&mut self, cmd: &Command) {
         let Some(p) = self.pipeline.as_mut() else {
             return;
@@ -484,19 +541,18 @@ impl Context {
         let (Some(target), Some(buffer)) = (&self.target, self.buffer) else {
             return;
         };
-        let rows = target.read_color_stored(&self.gpu);
+        let mut rows = std::mem::take(&mut self.readback);
+        let read = target.read_color_stored_into(&self.gpu, &mut rows);
         let size = target.spec().color.component_bytes();
         // The read bound the target: the pipeline binds the program's framebuffers again.
         if let Some(p) = self.pipeline.as_mut() {
             p.forget_sent_state();
         }
-        let rows = match rows {
-            Ok(r) => r,
-            Err(e) => {
-                eprintln!("fixedfunc: reading the image back failed: {e}");
-                return;
-            }
-        };
+        if let Err(e) = read {
+            eprintln!("fixedfunc: reading the image back failed: {e}");
+            self.readback = rows;
+            return;
+        }
         let (w, h) = (buffer.width as usize, buffer.height as usize);
         let bpp = self.format.bytes() * size;
         let row_pixels = if self.row_length > 0 {
@@ -515,10 +571,9 @@ impl Context {
                     w * bpp,
                 )
             };
-            for (s, d) in src.chunks_exact(4 * size).zip(dst.chunks_exact_mut(bpp)) {
-                self.format.write(s, d, size);
-            }
+            self.format.write_row(src, dst, size);
         }
+        self.readback = rows;
     }
 
     /// The depth buffer as OSMesaGetDepthBuffer gives it: (width, height, bytes per value).

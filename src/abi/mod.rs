@@ -25,6 +25,7 @@ pub mod framebuffers;
 pub mod osmesa;
 pub mod strings;
 pub mod trace;
+pub mod vertex_calls;
 
 use std::cell::Cell;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -44,56 +45,76 @@ pub enum AbiError {
     Pipeline(#[from] crate::pipeline::PipelineError),
 }
 
+/// This thread's contexts: the one OSMesaMakeCurrent made current, and the one whose EGL
+/// context is current (creating a context makes its EGL context current; the GL calls
+/// then restore the OSMesa one). One thread-local, read once per call.
+struct ThreadContexts {
+    osmesa: Cell<*mut Context>,
+    gl: Cell<*mut Context>,
+}
+
 thread_local! {
-    /// The context OSMesaMakeCurrent made current on this thread.
-    static CURRENT: Cell<*mut Context> = const { Cell::new(std::ptr::null_mut()) };
-    /// The context whose EGL context is current on this thread (creating a context makes
-    /// its EGL context current; the GL calls then restore the OSMesa one).
-    static GL_CURRENT: Cell<*mut Context> = const { Cell::new(std::ptr::null_mut()) };
+    static CURRENT: ThreadContexts = const {
+        ThreadContexts {
+            osmesa: Cell::new(std::ptr::null_mut()),
+            gl: Cell::new(std::ptr::null_mut()),
+        }
+    };
 }
 
 pub(crate) fn current() -> *mut Context {
-    CURRENT.with(Cell::get)
+    CURRENT.with(|c| c.osmesa.get())
 }
 
 pub(crate) fn set_current(ctx: *mut Context) {
-    CURRENT.with(|c| c.set(ctx));
+    CURRENT.with(|c| c.osmesa.set(ctx));
 }
 
 /// Makes `ctx`'s EGL context current on this thread unless it already is.
 pub(crate) fn ensure_gl_current(ctx: *mut Context) -> bool {
-    if GL_CURRENT.with(Cell::get) == ctx {
+    if CURRENT.with(|c| c.gl.get()) == ctx {
         return true;
     }
+    make_gl_current(ctx)
+}
+
+fn make_gl_current(ctx: *mut Context) -> bool {
     // SAFETY: `ctx` is a live context (OSMesaDestroyContext clears both thread-locals).
     let ok = unsafe { (*ctx).make_gl_current() };
     if ok {
-        GL_CURRENT.with(|c| c.set(ctx));
+        note_gl_current(ctx);
     }
     ok
 }
 
 pub(crate) fn forget_gl_current(ctx: *mut Context) {
-    GL_CURRENT.with(|c| {
-        if c.get() == ctx {
-            c.set(std::ptr::null_mut())
+    CURRENT.with(|c| {
+        if c.gl.get() == ctx {
+            c.gl.set(std::ptr::null_mut())
         }
     });
 }
 
 pub(crate) fn note_gl_current(ctx: *mut Context) {
-    GL_CURRENT.with(|c| c.set(ctx));
+    CURRENT.with(|c| c.gl.set(ctx));
 }
 
 /// One GL call from C on the current context; nothing without one (GL's calls have no
 /// effect without a current context).
 pub(crate) fn dispatch(entry: Entry, args: &[CArg]) -> Ret {
-    let ctx = current();
-    if ctx.is_null() || !ensure_gl_current(ctx) {
+    let (ctx, gl) = CURRENT.with(|c| (c.osmesa.get(), c.gl.get()));
+    if ctx.is_null() || (gl != ctx && !make_gl_current(ctx)) {
         return Ret::None;
     }
-    // SAFETY: the current context is live and used by this thread only.
-    let outcome = catch_unwind(AssertUnwindSafe(|| unsafe { (*ctx).call(entry, args) }));
+    let outcome = catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: the current context is live and used by this thread only.
+        let ctx = unsafe { &mut *ctx };
+        if ctx.attribute_in_pair(entry, args) {
+            Ret::Enum(0)
+        } else {
+            ctx.call(entry, args)
+        }
+    }));
     match outcome {
         Ok(r) => r,
         Err(panic) => {

@@ -791,6 +791,11 @@ impl CType {
         }
     }
 
+    /// Whether this is one of the integer types (not GLfloat or GLdouble).
+    pub fn is_integer(self) -> bool {
+        !matches!(self, CType::Float | CType::Double)
+    }
+
     /// A colour or normal component from this type (GL 1.5 Table 2.9, Mesa's
     /// BYTE_TO_FLOAT…): unsigned c/(2ⁿ − 1); signed (2c + 1)/(2ⁿ − 1); floats as they are.
     pub fn normalized(self, c: f64) -> f32 {

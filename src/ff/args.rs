@@ -104,6 +104,17 @@ pub trait Args {
     /// the caller's element type holds it.
     fn array_f64(&self, i: usize, n: usize) -> Result<Vec<f64>, Self::Error>;
 
+    /// The first `out.len()` numbers of an array argument into `out`, as [`array_f64`]
+    /// reads them; a front end that can read in place (the C library, once per glVertex3fv)
+    /// does so without allocating.
+    ///
+    /// [`array_f64`]: Args::array_f64
+    fn array_f64_into(&self, i: usize, out: &mut [f64]) -> Result<(), Self::Error> {
+        let v = self.array_f64(i, out.len())?;
+        out.copy_from_slice(&v[..out.len()]);
+        Ok(())
+    }
+
     /// The first `n` values of an untyped array argument (`const void *`) read as `ty`
     /// (a script's compound literal carries its own element type and is read as written).
     fn array_as(&self, i: usize, n: usize, ty: CType) -> Result<Vec<f64>, Self::Error>;

@@ -78,22 +78,50 @@ impl ArrayPointer {
         }
     }
 
-    /// Element `i`'s components as stored, or `None` when the memory does not hold it.
-    fn element(&self, mem: &dyn ClientMemory, i: usize) -> Option<Vec<f64>> {
-        let size = self.size.max(0) as usize;
+    /// The components of elements `which`, each over `default` and taken by `take` (a
+    /// normalisation, or the float as it is); an element the memory does not hold is
+    /// `default`. The span from the first to the last element named is read once, as GL
+    /// reads an array, and decoded in place; only when the memory does not hold the whole
+    /// span is each element read alone.
+    fn components(
+        &self,
+        mem: &dyn ClientMemory,
+        which: &[usize],
+        default: [f32; 4],
+        take: impl Fn(f64) -> f32,
+    ) -> Vec<[f32; 4]> {
+        let size = (self.size.max(0) as usize).min(4);
         let elem = ctype_size(self.ty);
         let stride = if self.stride > 0 {
             self.stride as usize
         } else {
             size * elem
         };
-        let bytes = mem.read(&self.data, i.checked_mul(stride)?, size * elem)?;
-        Some(
-            bytes
-                .chunks_exact(elem)
-                .map(|b| decode(self.ty, b))
-                .collect(),
-        )
+        let decode_one = |bytes: &[u8]| decode_element(self.ty, bytes, size, default, &take);
+        let (Some(&lo), Some(&hi)) = (which.iter().min(), which.iter().max()) else {
+            return Vec::new();
+        };
+        let span = lo
+            .checked_mul(stride)
+            .zip((hi - lo).checked_mul(stride))
+            .and_then(|(start, len)| Some((start, len.checked_add(size * elem)?)));
+        if let Some(bytes) = span.and_then(|(start, len)| mem.read(&self.data, start, len)) {
+            return which
+                .iter()
+                .map(|&i| {
+                    let at = (i - lo) * stride;
+                    bytes.get(at..at + size * elem).map_or(default, decode_one)
+                })
+                .collect();
+        }
+        which
+            .iter()
+            .map(|&i| {
+                i.checked_mul(stride)
+                    .and_then(|at| mem.read(&self.data, at, size * elem))
+                    .map_or(default, |b| decode_one(&b))
+            })
+            .collect()
     }
 }
 
@@ -103,6 +131,79 @@ fn ctype_size(t: CType) -> usize {
         CType::Short | CType::UShort => 2,
         CType::Int | CType::UInt | CType::Float => 4,
         CType::Double => 8,
+    }
+}
+
+/// One element of `size` components of type `t` from `bytes` (at least that long), each
+/// taken by `take` over `default`. The type is matched once per element, not per component.
+#[inline]
+fn decode_element(
+    t: CType,
+    bytes: &[u8],
+    size: usize,
+    default: [f32; 4],
+    take: &impl Fn(f64) -> f32,
+) -> [f32; 4] {
+    #[inline(always)]
+    fn each<const N: usize>(
+        bytes: &[u8],
+        size: usize,
+        mut c: [f32; 4],
+        read: impl Fn([u8; N]) -> f64,
+        take: &impl Fn(f64) -> f32,
+    ) -> [f32; 4] {
+        for (slot, b) in c.iter_mut().zip(bytes.chunks_exact(N)).take(size) {
+            if let Ok(b) = <[u8; N]>::try_from(b) {
+                *slot = take(read(b));
+            }
+        }
+        c
+    }
+    match t {
+        CType::Byte => each(
+            bytes,
+            size,
+            default,
+            |b: [u8; 1]| f64::from(b[0] as i8),
+            take,
+        ),
+        CType::UByte => each(bytes, size, default, |b: [u8; 1]| f64::from(b[0]), take),
+        CType::Short => each(
+            bytes,
+            size,
+            default,
+            |b| f64::from(i16::from_ne_bytes(b)),
+            take,
+        ),
+        CType::UShort => each(
+            bytes,
+            size,
+            default,
+            |b| f64::from(u16::from_ne_bytes(b)),
+            take,
+        ),
+        CType::Int => each(
+            bytes,
+            size,
+            default,
+            |b| f64::from(i32::from_ne_bytes(b)),
+            take,
+        ),
+        CType::UInt => each(
+            bytes,
+            size,
+            default,
+            |b| f64::from(u32::from_ne_bytes(b)),
+            take,
+        ),
+        CType::Float => each(
+            bytes,
+            size,
+            default,
+            |b| f64::from(f32::from_ne_bytes(b)),
+            take,
+        ),
+        CType::Double => each(bytes, size, default, f64::from_ne_bytes, take),
     }
 }
 
@@ -448,58 +549,27 @@ impl ClientArrays {
         if !self.vertex.enabled || which.is_empty() {
             return None;
         }
-        let vec4 = |v: Option<Vec<f64>>, d: Vec4| {
-            let v = v.unwrap_or_default();
-            let g = |k: usize, dk: f32| v.get(k).map_or(dk, |x| *x as f32);
-            Vec4::new(g(0, d.x), g(1, d.y), g(2, d.z), g(3, d.w))
-        };
-        let mut g = Geometry::new(mode, Vec::with_capacity(which.len()));
-        for &i in which {
-            g.positions.push(vec4(
-                self.vertex.element(mem, i),
-                Vec4::new(0.0, 0.0, 0.0, 1.0),
-            ));
-        }
+        const XYZW: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
+        let float = |x: f64| x as f32;
+        let vec4s = |c: Vec<[f32; 4]>| c.into_iter().map(Vec4::from_array).collect::<Vec<_>>();
+        let mut g = Geometry::new(mode, vec4s(self.vertex.components(mem, which, XYZW, float)));
         if self.normal.enabled {
             let ty = self.normal.ty;
-            g.normals = Some(
-                which
-                    .iter()
-                    .map(|&i| {
-                        let v = self
-                            .normal
-                            .element(mem, i)
-                            .unwrap_or_else(|| vec![0.0, 0.0, 1.0]);
-                        Vec3::new(
-                            ty.normalized(v[0]),
-                            ty.normalized(v[1]),
-                            ty.normalized(v[2]),
-                        )
-                    })
-                    .collect(),
-            );
+            let c = self
+                .normal
+                .components(mem, which, [0.0, 0.0, 1.0, 0.0], |x| ty.normalized(x));
+            g.normals = Some(c.into_iter().map(|n| Vec3::new(n[0], n[1], n[2])).collect());
         }
         if self.color.enabled {
             let ty = self.color.ty;
-            g.colors = Some(
-                which
-                    .iter()
-                    .map(|&i| {
-                        let v = self.color.element(mem, i).unwrap_or_default();
-                        let n = |k: usize, d: f32| v.get(k).map_or(d, |x| ty.normalized(*x));
-                        Vec4::new(n(0, 0.0), n(1, 0.0), n(2, 0.0), n(3, 1.0))
-                    })
-                    .collect(),
-            );
+            let c = self
+                .color
+                .components(mem, which, XYZW, |x| ty.normalized(x));
+            g.colors = Some(vec4s(c));
         }
         for (unit, t) in self.texcoord.iter().enumerate() {
             if t.enabled {
-                g.texcoords[unit] = Some(
-                    which
-                        .iter()
-                        .map(|&i| vec4(t.element(mem, i), Vec4::new(0.0, 0.0, 0.0, 1.0)))
-                        .collect(),
-                );
+                g.texcoords[unit] = Some(vec4s(t.components(mem, which, XYZW, float)));
             }
         }
         g.indices = indices.map(|ix| ix.iter().map(|&i| i as u32).collect());

@@ -25,6 +25,9 @@ use super::state::{CurrentValues, MAX_TEXTURE_UNITS};
 #[derive(Debug, Default)]
 pub struct Immediate {
     open: Option<Open>,
+    /// The vertex count of the last pair: the arrays of the next are sized for it (a
+    /// program draws the same shapes frame after frame).
+    last_vertices: usize,
 }
 
 /// A glBegin not yet ended.
@@ -38,7 +41,14 @@ struct Open {
     /// Attributes called inside the pair (colour, normal, texcoord per unit): each gets an
     /// array at the next vertex, so a value set after the last vertex only stays current.
     called: [bool; 2 + MAX_TEXTURE_UNITS],
+    /// Some attribute was called whose array the next vertex creates.
+    pending: bool,
+    /// Some texture unit has an array (the vertex loop over the units is skipped if not).
+    texcoord_arrays: bool,
 }
+
+/// The most vertices a pair's arrays are sized for ahead of its calls.
+const MAX_RESERVED_VERTICES: usize = 1 << 16;
 
 /// A vertex attribute as an immediate-mode call sets it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -88,25 +98,50 @@ pub fn decode<A: Args>(c: &A) -> Result<Option<Op>, A::Error> {
 fn family<A: Args>(c: &A, form: AttribCall) -> Result<Op, A::Error> {
     let from = usize::from(form.attrib == Attrib::MultiTexCoord);
     let (values, len) = attrib_values(c, form, from)?;
-    let v = &values[..len];
-    let f = |k: usize, default: f32| v.get(k).map_or(default, |x| *x as f32);
-    let n = |k: usize, default: f32| v.get(k).map_or(default, |x| form.ty.normalized(*x));
-    let coords = Vec4::new(f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 1.0));
-    Ok(match form.attrib {
-        Attrib::Vertex => Op::Vertex(coords),
-        Attrib::Rect => Op::Rect([f(0, 0.0), f(1, 0.0), f(2, 0.0), f(3, 0.0)]),
-        Attrib::Color => Op::Attribute(Attr::Color(Vec4::new(
-            n(0, 0.0),
-            n(1, 0.0),
-            n(2, 0.0),
-            n(3, 1.0),
-        ))),
-        Attrib::Normal => Op::Attribute(Attr::Normal(Vec3::new(n(0, 0.0), n(1, 0.0), n(2, 1.0)))),
-        Attrib::TexCoord => Op::Attribute(Attr::TexCoord(0, coords)),
-        Attrib::MultiTexCoord => {
-            Op::Attribute(Attr::TexCoord(c.family(0, Family::Texture)?, coords))
-        }
-    })
+    let unit = match form.attrib {
+        Attrib::MultiTexCoord => c.family(0, Family::Texture)?,
+        _ => 0,
+    };
+    Ok(family_op(form, &values[..len], unit))
+}
+
+/// The call of `form` with its values `v` (already of the parameter type) and, for
+/// glMultiTexCoord, its unit: integer colours and normals normalised (GL 1.5 Table 2.9),
+/// missing components GL's defaults (z = 0, w = 1, q = 1, alpha = 1).
+pub fn family_op(form: AttribCall, v: &[f64], unit: u8) -> Op {
+    let mut c = DEFAULT_COMPONENTS;
+    for (slot, x) in c.iter_mut().zip(v) {
+        *slot = component(form, *x);
+    }
+    op_of(form.attrib, unit, c)
+}
+
+/// The components a family call leaves unsaid: (x, y, z, w) = (0, 0, 0, 1).
+pub const DEFAULT_COMPONENTS: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
+
+/// One value of a family call as the attribute holds it: integer colours and normals
+/// normalised (GL 1.5 Table 2.9), everything else as the float it is.
+#[inline]
+pub fn component(form: AttribCall, x: f64) -> f32 {
+    if form.ty.is_integer() && matches!(form.attrib, Attrib::Color | Attrib::Normal) {
+        form.ty.normalized(x)
+    } else {
+        x as f32
+    }
+}
+
+/// The Op of an attribute family with its components `c` (defaults filled in).
+fn op_of(attrib: Attrib, unit: u8, c: [f32; 4]) -> Op {
+    match attrib {
+        Attrib::Vertex => Op::Vertex(Vec4::from_array(c)),
+        // glRect's four values are all given.
+        Attrib::Rect => Op::Rect(c),
+        Attrib::Color => Op::Attribute(Attr::Color(Vec4::from_array(c))),
+        // glNormal3 gives all three.
+        Attrib::Normal => Op::Attribute(Attr::Normal(Vec3::new(c[0], c[1], c[2]))),
+        Attrib::TexCoord => Op::Attribute(Attr::TexCoord(0, Vec4::from_array(c))),
+        Attrib::MultiTexCoord => Op::Attribute(Attr::TexCoord(unit, Vec4::from_array(c))),
+    }
 }
 
 /// A broken immediate-mode rule, in words (the front end makes it its error).
@@ -145,6 +180,32 @@ impl Immediate {
                 out.push(super::calls::command(c)?);
                 Ok(())
             }
+        }
+    }
+
+    /// A vertex or an attribute of family `attrib` inside the open pair, with its
+    /// components `c` (defaults filled in): what [`apply`](Self::apply) does with the
+    /// call's Op, for a front end's per-vertex path. `false` when no pair is open or the
+    /// call is not one the pair takes this way (glRect; a unit beyond the texture units):
+    /// the front end then takes its general path, which gives the error.
+    #[inline]
+    pub fn in_pair(&mut self, attrib: Attrib, unit: u8, c: [f32; 4]) -> bool {
+        let Some(open) = &mut self.open else {
+            return false;
+        };
+        match attrib {
+            Attrib::Vertex => open.vertex(Vec4::from_array(c)),
+            Attrib::Color => open.attribute(Attr::Color(Vec4::from_array(c))).is_ok(),
+            Attrib::Normal => open
+                .attribute(Attr::Normal(Vec3::new(c[0], c[1], c[2])))
+                .is_ok(),
+            Attrib::TexCoord => open
+                .attribute(Attr::TexCoord(0, Vec4::from_array(c)))
+                .is_ok(),
+            Attrib::MultiTexCoord => open
+                .attribute(Attr::TexCoord(unit, Vec4::from_array(c)))
+                .is_ok(),
+            Attrib::Rect => false,
         }
     }
 
@@ -200,10 +261,12 @@ impl Immediate {
             return Err("glBegin inside glBegin/glEnd");
         }
         self.open = Some(Open {
-            geometry: Geometry::new(primitive, Vec::new()),
+            geometry: Geometry::new(primitive, Vec::with_capacity(self.last_vertices)),
             begin: *current,
             current: *current,
             called: [false; 2 + MAX_TEXTURE_UNITS],
+            pending: false,
+            texcoord_arrays: false,
         });
         Ok(())
     }
@@ -211,21 +274,7 @@ impl Immediate {
     /// glVertex: a vertex with the current values of every attribute with an array.
     fn vertex(&mut self, p: Vec4) -> Result<(), Rule> {
         let open = self.open.as_mut().ok_or("glVertex outside glBegin/glEnd")?;
-        open.arrays_for_called();
-        let cur = open.current;
-        let g = &mut open.geometry;
-        g.positions.push(p);
-        if let Some(v) = &mut g.colors {
-            v.push(cur.color);
-        }
-        if let Some(v) = &mut g.normals {
-            v.push(cur.normal);
-        }
-        for (u, t) in g.texcoords.iter_mut().enumerate() {
-            if let Some(v) = t {
-                v.push(cur.texcoords[u]);
-            }
-        }
+        open.vertex(p);
         Ok(())
     }
 
@@ -240,32 +289,14 @@ impl Immediate {
             });
             return Ok(());
         };
-        let index = match attr {
-            Attr::Color(v) => {
-                open.current.color = v;
-                0
-            }
-            Attr::Normal(v) => {
-                open.current.normal = v;
-                1
-            }
-            Attr::TexCoord(unit, coord) => {
-                let u = usize::from(unit);
-                if u >= MAX_TEXTURE_UNITS {
-                    return Err("texture unit beyond MAX_TEXTURE_UNITS");
-                }
-                open.current.texcoords[u] = coord;
-                2 + u
-            }
-        };
-        open.called[index] = true;
-        Ok(())
+        open.attribute(attr)
     }
 
     /// glEnd: emits the Draw, then the current values the calls inside the pair left,
     /// where they differ from those at glBegin (a draw itself changes no state).
     fn end(&mut self, out: &mut Vec<Command>) -> Result<(), Rule> {
         let open = self.open.take().ok_or("glEnd without glBegin")?;
+        self.last_vertices = open.geometry.positions.len().min(MAX_RESERVED_VERTICES);
         let (begin, cur) = (open.begin, open.current);
         out.push(Command::Draw(Arc::new(open.geometry)));
         changed_current(&begin, &cur, out);
@@ -293,20 +324,82 @@ pub fn changed_current(begin: &CurrentValues, now: &CurrentValues, out: &mut Vec
 }
 
 impl Open {
+    /// A vertex with the current values of every attribute with an array.
+    #[inline]
+    fn vertex(&mut self, p: Vec4) -> bool {
+        if self.pending {
+            self.arrays_for_called();
+        }
+        let (cur, g) = (&self.current, &mut self.geometry);
+        g.positions.push(p);
+        if let Some(v) = &mut g.colors {
+            v.push(cur.color);
+        }
+        if let Some(v) = &mut g.normals {
+            v.push(cur.normal);
+        }
+        if self.texcoord_arrays {
+            for (u, t) in g.texcoords.iter_mut().enumerate() {
+                if let Some(v) = t {
+                    v.push(cur.texcoords[u]);
+                }
+            }
+        }
+        true
+    }
+
+    /// An attribute inside the pair: the current value, and an array from the next vertex.
+    #[inline]
+    fn attribute(&mut self, attr: Attr) -> Result<(), Rule> {
+        let index = match attr {
+            Attr::Color(v) => {
+                self.current.color = v;
+                0
+            }
+            Attr::Normal(v) => {
+                self.current.normal = v;
+                1
+            }
+            Attr::TexCoord(unit, coord) => {
+                let u = usize::from(unit);
+                if u >= MAX_TEXTURE_UNITS {
+                    return Err("texture unit beyond MAX_TEXTURE_UNITS");
+                }
+                self.current.texcoords[u] = coord;
+                2 + u
+            }
+        };
+        if !self.called[index] {
+            self.called[index] = true;
+            self.pending = true;
+        }
+        Ok(())
+    }
+
     /// Creates the arrays of attributes called since glBegin, filled with the glBegin
     /// values for the vertices already emitted.
     fn arrays_for_called(&mut self) {
+        self.pending = false;
+        self.texcoord_arrays |= self.called[2..].iter().any(|c| *c);
         let n = self.geometry.positions.len();
         let g = &mut self.geometry;
-        if self.called[0] {
-            g.colors.get_or_insert_with(|| vec![self.begin.color; n]);
+        // Each new array is sized like the positions will be.
+        let filled = |value| {
+            let mut v = Vec::with_capacity(g.positions.capacity());
+            v.resize(n, value);
+            v
+        };
+        if self.called[0] && g.colors.is_none() {
+            g.colors = Some(filled(self.begin.color));
         }
-        if self.called[1] {
-            g.normals.get_or_insert_with(|| vec![self.begin.normal; n]);
+        if self.called[1] && g.normals.is_none() {
+            let mut v = Vec::with_capacity(g.positions.capacity());
+            v.resize(n, self.begin.normal);
+            g.normals = Some(v);
         }
         for (u, t) in g.texcoords.iter_mut().enumerate() {
-            if self.called[2 + u] {
-                t.get_or_insert_with(|| vec![self.begin.texcoords[u]; n]);
+            if self.called[2 + u] && t.is_none() {
+                *t = Some(filled(self.begin.texcoords[u]));
             }
         }
     }
@@ -332,15 +425,13 @@ fn attrib_values<A: Args>(
     }
     let arrays = if form.attrib == Attrib::Rect { 2 } else { 1 };
     c.count(from + arrays)?;
-    let per = form.count / arrays;
-    let mut len = 0;
+    let per = (form.count / arrays).min(4 / arrays);
     for k in 0..arrays {
-        for v in c.array_f64(from + k, per)? {
-            if let Some(slot) = out.get_mut(len) {
-                *slot = form.ty.convert(v);
-                len += 1;
-            }
-        }
+        c.array_f64_into(from + k, &mut out[k * per..(k + 1) * per])?;
+    }
+    let len = per * arrays;
+    for slot in &mut out[..len] {
+        *slot = form.ty.convert(*slot);
     }
     Ok((out, len))
 }

@@ -232,6 +232,18 @@ impl RenderTarget {
         Ok(data)
     }
 
+    /// [`read_color_stored`](Self::read_color_stored) into `out`, resized to fit (a
+    /// buffer kept from frame to frame is not allocated again).
+    pub fn read_color_stored_into(
+        &self,
+        ctx: &GpuContext,
+        out: &mut Vec<u8>,
+    ) -> Result<(), GpuError> {
+        let (_, ty, size) = self.spec.color.gl();
+        out.resize(self.pixel_count() * 4 * size, 0);
+        self.read(ctx, glow::RGBA, ty, out)
+    }
+
     /// The colour buffer as RGBA8 bytes in GL's order, bottom row first.
     pub fn read_color_rows(&self, ctx: &GpuContext) -> Result<Vec<u8>, GpuError> {
         let (w, h) = (self.spec.width, self.spec.height);

@@ -43,6 +43,8 @@ pub struct GpuGeometry {
 enum Shape {
     /// A core mode over the element buffer.
     Elements { mode: u32, count: i32 },
+    /// A core mode over the vertices in order (a geometry without indices).
+    Arrays { mode: u32, count: i32 },
     /// Triangle corners of split polygons, drawn as TRIANGLES: each uploaded split with its
     /// first corner; every split has `count` corners.
     Corners {
@@ -87,53 +89,51 @@ fn corners_of(g: &Geometry, base: &[u32]) -> (Vec<Corner>, Vec<(Diagonal, i32)>)
     (corners, blocks)
 }
 
-/// One attribute array as floats, `size` per vertex.
-struct Floats {
+/// One attribute array: the vertices' floats as bytes, `size` floats per vertex.
+struct Floats<'a> {
     size: usize,
-    data: Vec<f32>,
+    data: &'a [u8],
 }
 
-impl Floats {
-    fn of4(v: &[Vec4]) -> Floats {
+impl<'a> Floats<'a> {
+    fn of4(v: &'a [Vec4]) -> Floats<'a> {
         Floats {
             size: 4,
-            data: v.iter().flat_map(|p| p.to_array()).collect(),
+            data: bytemuck::cast_slice(v),
         }
     }
 
-    fn of3(v: &[Vec3]) -> Floats {
+    fn of3(v: &'a [Vec3]) -> Floats<'a> {
         Floats {
             size: 3,
-            data: v.iter().flat_map(|p| p.to_array()).collect(),
+            data: bytemuck::cast_slice(v),
         }
     }
 
     /// The bytes of the vertices in `order` (vertex indices; out of range gives nothing),
-    /// or of all of them.
-    fn bytes(&self, order: Option<&[u32]>) -> Vec<u8> {
-        let floats: Vec<f32> = match order {
-            Some(order) => order
-                .iter()
-                .flat_map(|&i| {
-                    let i = i as usize * self.size;
-                    self.data.get(i..i + self.size).unwrap_or_default()
-                })
-                .copied()
-                .collect(),
-            None => self.data.clone(),
+    /// or of all of them as they are.
+    fn bytes(&self, order: Option<&[u32]>) -> std::borrow::Cow<'a, [u8]> {
+        let Some(order) = order else {
+            return std::borrow::Cow::Borrowed(self.data);
         };
-        floats.iter().flat_map(|f| f.to_ne_bytes()).collect()
+        let vertex = self.size * 4;
+        let mut out = Vec::with_capacity(order.len() * vertex);
+        for &i in order {
+            let at = i as usize * vertex;
+            out.extend_from_slice(self.data.get(at..at + vertex).unwrap_or_default());
+        }
+        std::borrow::Cow::Owned(out)
     }
 }
 
 impl GpuGeometry {
     pub fn upload(gl: &glow::Context, g: &Arc<Geometry>) -> Result<GpuGeometry, PipelineError> {
-        let base: Vec<u32> = g
-            .indices
-            .clone()
-            .unwrap_or_else(|| (0..g.positions.len() as u32).collect());
         let split = core_mode(g.primitive).is_none();
         let (corners, blocks) = if split {
+            let base: Vec<u32> = g
+                .indices
+                .clone()
+                .unwrap_or_else(|| (0..g.positions.len() as u32).collect());
             corners_of(g, &base)
         } else {
             (Vec::new(), Vec::new())
@@ -150,10 +150,10 @@ impl GpuGeometry {
         unsafe {
             let vao = gl.create_vertex_array().map_err(PipelineError::Object)?;
             gl.bind_vertex_array(Some(vao));
-            let mut buffer = |data: Vec<u8>| -> Result<glow::Buffer, PipelineError> {
+            let mut buffer = |data: &[u8]| -> Result<glow::Buffer, PipelineError> {
                 let b = gl.create_buffer().map_err(PipelineError::Object)?;
                 gl.bind_buffer(glow::ARRAY_BUFFER, Some(b));
-                gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &data, glow::STATIC_DRAW);
+                gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, data, glow::STATIC_DRAW);
                 buffers.push(b);
                 Ok(b)
             };
@@ -166,11 +166,11 @@ impl GpuGeometry {
             // types core GL draws — the same buffer (core GL's provoking vertex is GL 1.x's).
             let mut upload = |a: Floats, location: u32, shade: Option<u32>| {
                 let size = a.size as i32;
-                let own = buffer(a.bytes(order))?;
+                let own = buffer(&a.bytes(order))?;
                 point(own, location, size);
                 if let Some(shade) = shade {
                     let b = match provoking {
-                        Some(p) => buffer(a.bytes(Some(p)))?,
+                        Some(p) => buffer(&a.bytes(Some(p)))?,
                         None => own,
                     };
                     point(b, shade, size);
@@ -196,26 +196,30 @@ impl GpuGeometry {
                 }
             }
             if split {
-                let edges = corners
-                    .iter()
-                    .flat_map(|c| c.edge)
-                    .flat_map(f32::to_ne_bytes);
-                let b = buffer(edges.collect())?;
+                let edges: Vec<f32> = corners.iter().flat_map(|c| c.edge).collect();
+                let b = buffer(bytemuck::cast_slice(&edges))?;
                 point(b, ATTRIB_EDGE, 4);
             }
-            let shape = match core_mode(g.primitive) {
-                Some(mode) => {
+            let shape = match (core_mode(g.primitive), &g.indices) {
+                (Some(mode), Some(indices)) => {
                     let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
                     gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
-                    let bytes: Vec<u8> = base.iter().flat_map(|i| i.to_ne_bytes()).collect();
-                    gl.buffer_data_u8_slice(glow::ELEMENT_ARRAY_BUFFER, &bytes, glow::STATIC_DRAW);
+                    gl.buffer_data_u8_slice(
+                        glow::ELEMENT_ARRAY_BUFFER,
+                        bytemuck::cast_slice(indices),
+                        glow::STATIC_DRAW,
+                    );
                     buffers.push(ebo);
                     Shape::Elements {
                         mode,
-                        count: count(base.len()),
+                        count: count(indices.len()),
                     }
                 }
-                None => Shape::Corners {
+                (Some(mode), None) => Shape::Arrays {
+                    mode,
+                    count: count(g.positions.len()),
+                },
+                (None, _) => Shape::Corners {
                     count: count(corners.len() / blocks.len().max(1)),
                     blocks,
                 },
@@ -263,7 +267,10 @@ impl GpuGeometry {
                 Shape::Elements { mode, count } if *count > 0 => {
                     gl.draw_elements(*mode, *count, glow::UNSIGNED_INT, 0);
                 }
-                Shape::Elements { .. } => {}
+                Shape::Arrays { mode, count } if *count > 0 => {
+                    gl.draw_arrays(*mode, 0, *count);
+                }
+                Shape::Elements { .. } | Shape::Arrays { .. } => {}
                 Shape::Corners { blocks, count } => {
                     for (first, n) in self.corner_ranges(blocks, *count, state) {
                         if n > 0 {
