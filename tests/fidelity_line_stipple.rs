@@ -193,3 +193,104 @@ fn a_strip_counts_whole_pixels_per_segment() {
     );
     check("line-stipple-whole-pixels", &body);
 }
+
+/// Renders `body` on the native path only.
+fn native(body: &str) -> Vec<image::RgbaImage> {
+    use fixedfunc::vocab::{PipelineKind, Precision};
+    let commands = fidelity::parse(&format!("{}{body}", header()));
+    support::HEADLESS
+        .iter()
+        .map(|&b| {
+            fidelity::run_one(
+                PipelineKind::Native,
+                Precision::Float,
+                b,
+                Frame::new(W, H),
+                &commands,
+            )
+            .image
+        })
+        .collect()
+}
+
+/// Mesa's stipple of polygons in LINE mode, measured on the native path: the draw module
+/// turns each triangle of its split into its boundary edges in the order v2→v0, v0→v1,
+/// v1→v2 with the counter running on, reset at the start of each polygon. So a GL_QUADS
+/// quad is stippled as the loop v3, v0, v1, v2 (its triangles (v0,v1,v3), (v1,v2,v3)), a
+/// GL_POLYGON as the loop of its vertices from v0, and a GL_TRIANGLES triangle as the loop
+/// v2, v0, v1 — pixel for pixel. The emulated path does not cut polygon edges into dashes
+/// yet and refuses such a draw (`emulated_path_refuses_stippled_polygon_outlines`).
+#[test]
+fn mesa_stipples_polygon_outlines_as_loops_from_its_split() {
+    let quad = [(10.0, 8.0), (80.0, 12.5), (70.5, 55.0), (15.25, 50.0)];
+    let tri = [(20.0, 20.0), (60.5, 25.0), (30.0, 58.0)];
+    let pent = [
+        (48.0, 4.0),
+        (90.0, 30.0),
+        (70.0, 60.0),
+        (25.0, 60.0),
+        (6.0, 30.0),
+    ];
+    let pick = |v: &[(f32, f32)], order: &[usize]| -> Vec<(f32, f32)> {
+        order.iter().map(|&i| v[i]).collect()
+    };
+    for (prim, v, order) in [
+        ("GL_QUADS", &quad[..], vec![3, 0, 1, 2]),
+        ("GL_POLYGON", &pent[..], vec![0, 1, 2, 3, 4]),
+        ("GL_TRIANGLES", &tri[..], vec![2, 0, 1]),
+    ] {
+        let stipple = "glLineStipple(1, 0x1F3D);\nglColor3f(1, 1, 1);\n";
+        let outline = native(&format!(
+            "{stipple}glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);\n{}",
+            lines(prim, v, false)
+        ));
+        let as_loop = native(&format!(
+            "{stipple}{}",
+            lines("GL_LINE_LOOP", &pick(v, &order), false)
+        ));
+        let as_other_loop = native(&format!("{stipple}{}", lines("GL_LINE_LOOP", v, false)));
+        for ((a, b), c) in outline.iter().zip(&as_loop).zip(&as_other_loop) {
+            assert!(a == b, "{prim}: the outline is the loop {order:?}");
+            if order[0] != 0 {
+                assert!(
+                    a != c,
+                    "{prim}: the loop from v0 differs (the order is seen)"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn emulated_path_refuses_stippled_polygon_outlines() {
+    use fixedfunc::pipeline::{Pipeline, PipelineError};
+    use fixedfunc::vocab::PipelineKind;
+    let ctx = support::context(
+        support::HEADLESS[0],
+        fixedfunc::pipeline::profile(PipelineKind::Emulate),
+    );
+    let _target = support::target(&ctx, W, H, fixedfunc::vocab::DepthBits::D24, false);
+    let mut p = fixedfunc::pipeline::emulate::EmulatedPipeline::new(&ctx).expect("pipeline");
+    let commands = fidelity::parse(&format!(
+        "{}glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);\n{}",
+        header(),
+        lines(
+            "GL_QUADS",
+            &[(10.0, 8.0), (80.0, 12.5), (70.5, 55.0), (15.25, 50.0)],
+            false
+        )
+    ));
+    let e = p
+        .execute(&ctx, &commands)
+        .expect_err("the stippled outline is refused, not drawn solid");
+    assert!(
+        matches!(
+            e,
+            PipelineError::Unsupported {
+                path: "emulate",
+                ..
+            }
+        ),
+        "{e}"
+    );
+}

@@ -326,9 +326,8 @@ pub fn set_current_values(
                 gl.vertex_attrib_4_f32(location, c.x, c.y, c.z, c.w);
             }
         }
-        for u in 0..MAX_TEXTURE_UNITS {
-            if !has_texcoords[u] {
-                let t = cur.texcoords[u];
+        for (u, (has, t)) in has_texcoords.iter().zip(&cur.texcoords).enumerate() {
+            if !has {
                 gl.vertex_attrib_4_f32(ATTRIB_TEXCOORD0 + u as u32, t.x, t.y, t.z, t.w);
             }
         }
