@@ -244,25 +244,13 @@ impl GpuGeometry {
         // buffers (counts come from the upload).
         unsafe {
             gl.bind_vertex_array(Some(self.vao));
-            let cur = &state.current;
-            if !self.has_normals {
-                let n = cur.normal;
-                for location in [ATTRIB_NORMAL, ATTRIB_SHADE_NORMAL] {
-                    gl.vertex_attrib_4_f32(location, n.x, n.y, n.z, 0.0);
-                }
-            }
-            if !self.has_colors {
-                let c = cur.color;
-                for location in [ATTRIB_COLOR, ATTRIB_SHADE_COLOR] {
-                    gl.vertex_attrib_4_f32(location, c.x, c.y, c.z, c.w);
-                }
-            }
-            for u in 0..MAX_TEXTURE_UNITS {
-                if !self.has_texcoords[u] {
-                    let t = cur.texcoords[u];
-                    gl.vertex_attrib_4_f32(ATTRIB_TEXCOORD0 + u as u32, t.x, t.y, t.z, t.w);
-                }
-            }
+            set_current_values(
+                gl,
+                state,
+                self.has_normals,
+                self.has_colors,
+                &self.has_texcoords,
+            );
             match &self.shape {
                 Shape::Elements { mode, count } if *count > 0 => {
                     gl.draw_elements(*mode, *count, glow::UNSIGNED_INT, 0);
@@ -316,6 +304,38 @@ impl GpuGeometry {
             gl.delete_vertex_array(self.vao);
             for b in self.buffers {
                 gl.delete_buffer(b);
+            }
+        }
+    }
+}
+
+/// The current values standing in for the arrays a draw lacks (constant attributes of the
+/// bound vertex array object).
+pub fn set_current_values(
+    gl: &glow::Context,
+    state: &FixedState,
+    has_normals: bool,
+    has_colors: bool,
+    has_texcoords: &[bool; MAX_TEXTURE_UNITS],
+) {
+    let cur = &state.current;
+    // SAFETY: constant attribute values on the current context.
+    unsafe {
+        if !has_normals {
+            let n = cur.normal;
+            for location in [ATTRIB_NORMAL, ATTRIB_SHADE_NORMAL] {
+                gl.vertex_attrib_4_f32(location, n.x, n.y, n.z, 0.0);
+            }
+        }
+        if !has_colors {
+            let c = cur.color;
+            for location in [ATTRIB_COLOR, ATTRIB_SHADE_COLOR] {
+                gl.vertex_attrib_4_f32(location, c.x, c.y, c.z, c.w);
+            }
+        }
+        for (u, (has, t)) in has_texcoords.iter().zip(&cur.texcoords).enumerate() {
+            if !has {
+                gl.vertex_attrib_4_f32(ATTRIB_TEXCOORD0 + u as u32, t.x, t.y, t.z, t.w);
             }
         }
     }

@@ -63,6 +63,9 @@ pub struct VertexUnitKey {
 
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct VertexKey {
+    /// Where gl_Position comes from: the transform, or window coordinates the CPU computed
+    /// (the dashes of stippled lines, `line_stipple`). Set per pass, like the edge rule.
+    pub positions: PositionSource,
     pub lighting: Option<LightingKey>,
     /// The enabled user clip planes, ascending: each writes gl_ClipDistance[i] (the plane
     /// itself is a uniform).
@@ -70,6 +73,18 @@ pub struct VertexKey {
     pub normalize: bool,
     pub rescale_normal: bool,
     pub units: Vec<VertexUnitKey>,
+}
+
+/// The source of a vertex's clip coordinates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum PositionSource {
+    /// projection · modelview · position (GL 1.5 §2.10).
+    #[default]
+    Transformed,
+    /// The window coordinates of the window attribute, mapped back through the fixed
+    /// viewport of `shadergen::WINDOW_SPAN` so that llvmpipe's viewport transform gives
+    /// them back bit for bit (a power-of-two scale and no translation).
+    Window,
 }
 
 /// How the texel of a unit is formed from the texture.
@@ -224,6 +239,7 @@ impl ShaderKey {
             .map(|i| i as u8)
             .collect();
         let vertex = VertexKey {
+            positions: PositionSource::Transformed,
             clip_planes,
             normalize: normal_used && state.normalize,
             rescale_normal: normal_used && state.rescale_normal && !state.normalize,

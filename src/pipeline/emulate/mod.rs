@@ -13,13 +13,16 @@ pub mod accum;
 pub mod assembly;
 pub mod cache;
 pub mod conv;
+pub mod dashes;
 pub mod draw;
 pub mod glsl;
 pub mod key;
+pub mod line_stipple;
 pub mod pixels;
 pub mod polygon;
 pub mod program;
 pub mod shadergen;
+pub mod stipple_dashes;
 pub mod sync;
 pub mod texture_calls;
 pub mod textures;
@@ -31,7 +34,7 @@ use glow::HasContext;
 
 use self::cache::ProgramCache;
 use self::draw::GeometryCache;
-use self::key::ShaderKey;
+use self::key::{PositionSource, ShaderKey};
 use self::program::Program;
 use self::sync::{LogicOpCall, RasterSync};
 use self::textures::Textures;
@@ -41,6 +44,13 @@ use super::{Counters, PipelineError, Readback};
 use crate::ff::{Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels};
 use crate::gpu::{GpuContext, Profile};
 use crate::vocab::{PipelineKind, Precision};
+
+/// What a draw pass sends: an uploaded (cached) geometry, or the dashes of a stippled
+/// line draw.
+enum Drawn<'a> {
+    Geometry(&'a Arc<Geometry>),
+    Dashes(&'a Geometry, &'a [line_stipple::Dash]),
+}
 
 /// The emulated path's half of execution: programs, uploaded geometry and textures, and
 /// the shadow copy of the raster state GL has.
@@ -137,7 +147,8 @@ impl EmulatedPipeline {
 
 impl Emulate {
     /// One draw: one pass, or two when the faces have different polygon modes
-    /// (`polygon`); each pass's edge rule is part of its key.
+    /// (`polygon`); each pass's edge rule is part of its key. Stippled line primitives are
+    /// drawn as the dashes Mesa cuts them into (`line_stipple`).
     fn draw(
         &mut self,
         gl: &glow::Context,
@@ -151,11 +162,21 @@ impl Emulate {
             state.offset_enables,
             geometry.primitive,
         );
-        // The line stipple's counter runs along each line on the CPU in Mesa; the emulated
-        // path does not draw it yet and refuses the draw rather than draw solid lines.
-        if state.line_stipple.enabled && passes.iter().any(|p| p.draws_lines) {
+        let stipple = state.line_stipple.get();
+        if let (Some(stipple), true) = (stipple, stipple_dashes::is_line(geometry.primitive)) {
+            let dashes = stipple_dashes::of_draw(state, stipple, geometry);
+            let mut pass = passes[0];
+            pass.positions = PositionSource::Window;
+            let mut key = base;
+            key.vertex.positions = PositionSource::Window;
+            return self.draw_pass(gl, state, &key, &pass, Drawn::Dashes(geometry, &dashes));
+        }
+        // Polygons in LINE mode are stippled by Mesa edge by edge; the emulated path does
+        // not cut polygon edges into dashes and refuses the draw rather than draw solid
+        // outlines.
+        if stipple.is_some() && passes.iter().any(|p| p.draws_lines) {
             return Err(PipelineError::Unsupported {
-                what: "LINE_STIPPLE (enabled at a draw of lines)",
+                what: "LINE_STIPPLE (enabled at a draw of polygons in LINE mode)",
                 path: "emulate",
             });
         }
@@ -163,7 +184,7 @@ impl Emulate {
             let mut key = base.clone();
             key.fragment.edges = pass.edges;
             key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
-            self.draw_pass(gl, state, &key, &pass, geometry)?;
+            self.draw_pass(gl, state, &key, &pass, Drawn::Geometry(geometry))?;
         }
         Ok(())
     }
@@ -176,7 +197,7 @@ impl Emulate {
         state: &FixedState,
         key: &ShaderKey,
         pass: &polygon::PolygonPass,
-        geometry: &Arc<Geometry>,
+        drawn: Drawn,
     ) -> Result<(), PipelineError> {
         let program = self.programs.get_or_build(key, |k| Program::build(gl, k))?;
         program.bind(gl, state);
@@ -188,7 +209,10 @@ impl Emulate {
             .collect();
         self.textures.bind_units(gl, state, &units)?;
         self.raster.sync(gl, state, Some(pass));
-        self.geometry.get(gl, geometry)?.draw(gl, state);
+        match drawn {
+            Drawn::Geometry(g) => self.geometry.get(gl, g)?.draw(gl, state),
+            Drawn::Dashes(g, d) => dashes::draw(gl, state, g, d)?,
+        }
         Ok(())
     }
 

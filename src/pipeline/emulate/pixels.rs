@@ -441,11 +441,12 @@ impl Emulate {
             edges: None,
             fills_polygons: false,
             draws_lines: false,
+            positions: super::key::PositionSource::Transformed,
         };
         for s in &passes {
             let mut key = ShaderKey::from_state(s, self.precision);
             key.fragment.pixels = Some(source);
-            self.draw_pass(gl, s, &key, &pass, &quad)?;
+            self.draw_pass(gl, s, &key, &pass, super::Drawn::Geometry(&quad))?;
         }
         Ok(())
     }

@@ -32,6 +32,7 @@
 //! lines).
 
 use super::assembly::{self, Diagonal};
+use super::key::PositionSource;
 use crate::ff::{Face, OffsetEnables, PolygonMode, PolygonModes, Primitive};
 
 /// Which rasterised fragments of split polygons are kept (`None` in the key: all).
@@ -58,6 +59,9 @@ pub struct PolygonPass {
     pub fills_polygons: bool,
     /// The pass rasterises lines: line primitives, or polygons in LINE mode.
     pub draws_lines: bool,
+    /// Where the pass's clip coordinates come from; `Window` passes draw with the fixed
+    /// viewport of `shadergen::WINDOW_SPAN` and depth range [0, 1].
+    pub positions: PositionSource,
 }
 
 /// True for the primitives GL rasterises as polygons.
@@ -99,6 +103,7 @@ pub fn passes(
         },
         fills_polygons: mode == PolygonMode::Fill,
         draws_lines: mode == PolygonMode::Line,
+        positions: PositionSource::Transformed,
     };
     if !is_polygonal(primitive) {
         return vec![PolygonPass {
@@ -108,6 +113,7 @@ pub fn passes(
             edges: None,
             fills_polygons: false,
             draws_lines: primitive != Primitive::Points,
+            positions: PositionSource::Transformed,
         }];
     }
     match cull {

@@ -9,7 +9,9 @@ use glam::Vec4;
 use glow::HasContext;
 
 use super::conv;
+use super::key::PositionSource;
 use super::polygon::PolygonPass;
+use super::shadergen::WINDOW_SPAN;
 use crate::ff::{
     Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, LogicOp, OffsetEnables,
     PolygonMode, ScissorBox, StencilTest, Viewport, MAX_CLIP_PLANES,
@@ -40,6 +42,14 @@ impl LogicOpCall {
         }
     }
 }
+
+/// The viewport of a `PositionSource::Window` pass: scale S, translation 0.
+const WINDOW_VIEWPORT: Viewport = Viewport {
+    x: -WINDOW_SPAN,
+    y: -WINDOW_SPAN,
+    width: 2 * WINDOW_SPAN,
+    height: 2 * WINDOW_SPAN,
+};
 
 /// One piece of state as last sent (`None` = never sent).
 struct Sent<T>(Option<T>);
@@ -118,7 +128,13 @@ impl RasterSync {
     /// state's front mode and cull face (neither affects it).
     pub fn sync(&mut self, gl: &glow::Context, s: &FixedState, pass: Option<&PolygonPass>) {
         let c = &mut self.counts;
-        self.viewport.sync(s.viewport, c, |v| unsafe {
+        let window = pass.is_some_and(|p| p.positions == PositionSource::Window);
+        let (viewport, depth_range) = if window {
+            (WINDOW_VIEWPORT, DepthRange::DEFAULT)
+        } else {
+            (s.viewport, s.depth_range)
+        };
+        self.viewport.sync(viewport, c, |v| unsafe {
             gl.viewport(v.x, v.y, v.width, v.height)
         });
         let planes = s
@@ -139,7 +155,7 @@ impl RasterSync {
                 gl.scissor(b.x, b.y, b.width, b.height);
             }
         });
-        self.depth_range.sync(s.depth_range, c, |r| unsafe {
+        self.depth_range.sync(depth_range, c, |r| unsafe {
             gl.depth_range_f64(f64::from(r.near), f64::from(r.far))
         });
         self.color_mask.sync(s.color_mask, c, |m| unsafe {

@@ -4,7 +4,8 @@
 //!
 //! Attribute locations are fixed: 0 position (vec4), 1 normal, 2 colour, 3 + u texture
 //! coordinate of unit u, then the edge attribute of split polygons, then the shade position,
-//! normal and colour (the provoking vertex's, read under flat shading). A vertex array that a
+//! normal and colour (the provoking vertex's, read under flat shading), then the window
+//! position of a line stipple's dash ends. A vertex array that a
 //! draw lacks is disabled and its current value is set as a constant attribute, so "per
 //! vertex or per draw" never changes the key.
 
@@ -27,6 +28,13 @@ pub const ATTRIB_EDGE: u32 = ATTRIB_TEXCOORD0 + crate::ff::MAX_TEXTURE_UNITS as 
 pub const ATTRIB_SHADE_POSITION: u32 = ATTRIB_EDGE + 1;
 pub const ATTRIB_SHADE_NORMAL: u32 = ATTRIB_EDGE + 2;
 pub const ATTRIB_SHADE_COLOR: u32 = ATTRIB_EDGE + 3;
+/// Window coordinates computed on the CPU (`key::PositionSource::Window`).
+pub const ATTRIB_WINDOW: u32 = ATTRIB_EDGE + 4;
+
+/// Half the side of the viewport a `PositionSource::Window` pass draws with: the viewport
+/// (−S, −S, 2S, 2S) has scale S and translation 0, so x_w = (x_w / S) · S exactly for a
+/// power of two S. 2S is llvmpipe's MAX_VIEWPORT_DIMS; windows beyond S pixels are clipped.
+pub const WINDOW_SPAN: i32 = 8192;
 
 /// A generated program: both sources and the uniforms each declared.
 #[derive(Clone, Debug, PartialEq, Eq)]

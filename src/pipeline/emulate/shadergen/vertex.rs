@@ -11,13 +11,14 @@
 use crate::ff::{ColorMaterialMode, TexCoord, TexGenMode};
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{
-    ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, VertexKey, VertexUnitKey,
+    ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, PositionSource, VertexKey,
+    VertexUnitKey,
 };
 use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
 
 use super::{
     ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR,
-    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0,
+    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0, ATTRIB_WINDOW, WINDOW_SPAN,
 };
 
 pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
@@ -30,10 +31,24 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     ));
     let flat = if fragment.flat { "flat " } else { "" };
     w.declare(&format!("{flat}out vec4 v_color;"));
-    let mv = w.uniform(UniformSource::Modelview);
-    let proj = w.uniform(UniformSource::Projection);
-    // One expression for every program, so DepthFunc(EQUAL) passes see identical depths.
-    w.line(format!("gl_Position = {proj} * ({mv} * a_position);"));
+    match key.positions {
+        // One expression for every program, so DepthFunc(EQUAL) passes see identical depths.
+        PositionSource::Transformed => {
+            let mv = w.uniform(UniformSource::Modelview);
+            let proj = w.uniform(UniformSource::Projection);
+            w.line(format!("gl_Position = {proj} * ({mv} * a_position);"))
+        }
+        // Window coordinates back through the viewport (−S, −S, 2S, 2S) and depth range
+        // [0, 1]: x_c = x_w / S, z_c = 2·z_w − 1, w_c = 1.
+        PositionSource::Window => {
+            w.declare(&format!(
+                "layout(location = {ATTRIB_WINDOW}) in vec4 a_window;"
+            ));
+            w.line(format!(
+                "gl_Position = vec4(a_window.xy / {WINDOW_SPAN}.0, a_window.z * 2.0 - 1.0, 1.0);"
+            ));
+        }
+    }
     // Points (and polygons in POINT mode) take glPointSize's value; core GL reads it
     // from here with PROGRAM_POINT_SIZE on. Lines and triangles ignore it.
     let size = w.uniform(UniformSource::PointSize);

@@ -1,0 +1,172 @@
+//! Drawing the dashes of a stippled line draw (`line_stipple`): each dash is one GL_LINES
+//! segment whose ends carry the draw's attributes interpolated at their parameter, the
+//! provoking vertex's values as the shade attributes (so a flat dash has its segment's
+//! colour, GL 1.5 Table 2.8), and the window coordinates the CPU computed. The dashes
+//! depend on the matrices and the viewport, so they are uploaded for one draw and deleted
+//! after it, unlike the cached geometry of `draw`.
+
+use glam::{Vec3, Vec4};
+use glow::HasContext;
+
+use super::draw::set_current_values;
+use super::line_stipple::{Dash, DashEnd};
+use super::shadergen::{
+    ATTRIB_COLOR, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR, ATTRIB_SHADE_NORMAL,
+    ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0, ATTRIB_WINDOW,
+};
+use crate::ff::{FixedState, Geometry, MAX_TEXTURE_UNITS};
+use crate::pipeline::PipelineError;
+
+/// One attribute array's floats for the dash ends, and for their provoking vertices.
+struct Array {
+    size: i32,
+    own: Vec<f32>,
+    shade: Option<(u32, Vec<f32>)>,
+}
+
+/// `a + s·(b − a)` per component.
+fn mix<const N: usize>(a: [f32; N], b: [f32; N], s: f32) -> [f32; N] {
+    std::array::from_fn(|k| a[k] + s * (b[k] - a[k]))
+}
+
+/// The values of `values` (one per vertex) at each dash end, and at each dash's provoking
+/// vertex; `None` when an index is out of range (the model validated the draw).
+fn gather<const N: usize, T: Copy>(
+    values: &[T],
+    dashes: &[Dash],
+    flat: impl Fn(T) -> [f32; N],
+) -> Option<(Vec<f32>, Vec<f32>)> {
+    let at = |i: u32| values.get(i as usize).copied().map(&flat);
+    let mut own = Vec::with_capacity(dashes.len() * 2 * N);
+    let mut shade = Vec::with_capacity(dashes.len() * 2 * N);
+    for d in dashes {
+        let p = at(d.provoking)?;
+        for e in &d.ends {
+            own.extend(mix(at(e.from)?, at(e.to)?, e.s));
+            shade.extend(p);
+        }
+    }
+    Some((own, shade))
+}
+
+/// The arrays of the dashes of `g`: position, normal, colour and texture coordinates that
+/// `g` has, each with its shade copy where flat shading reads one.
+fn arrays(g: &Geometry, dashes: &[Dash]) -> Option<Vec<(u32, Array)>> {
+    let mut out = Vec::new();
+    let (own, shade) = gather(&g.positions, dashes, |v: Vec4| v.to_array())?;
+    out.push((
+        ATTRIB_POSITION,
+        Array {
+            size: 4,
+            own,
+            shade: Some((ATTRIB_SHADE_POSITION, shade)),
+        },
+    ));
+    if let Some(n) = &g.normals {
+        let (own, shade) = gather(n, dashes, |v: Vec3| v.to_array())?;
+        out.push((
+            ATTRIB_NORMAL,
+            Array {
+                size: 3,
+                own,
+                shade: Some((ATTRIB_SHADE_NORMAL, shade)),
+            },
+        ));
+    }
+    if let Some(c) = &g.colors {
+        let (own, shade) = gather(c, dashes, |v: Vec4| v.to_array())?;
+        out.push((
+            ATTRIB_COLOR,
+            Array {
+                size: 4,
+                own,
+                shade: Some((ATTRIB_SHADE_COLOR, shade)),
+            },
+        ));
+    }
+    for (u, t) in g.texcoords.iter().enumerate() {
+        if let Some(t) = t {
+            let (own, _) = gather(t, dashes, |v: Vec4| v.to_array())?;
+            let array = Array {
+                size: 4,
+                own,
+                shade: None,
+            };
+            out.push((ATTRIB_TEXCOORD0 + u as u32, array));
+        }
+    }
+    let window = dashes
+        .iter()
+        .flat_map(|d| d.ends.iter().flat_map(|e: &DashEnd| e.window.to_array()))
+        .collect();
+    out.push((
+        ATTRIB_WINDOW,
+        Array {
+            size: 4,
+            own: window,
+            shade: None,
+        },
+    ));
+    Some(out)
+}
+
+/// Uploads the dashes of `g`, draws them as GL_LINES with the bound program, and deletes
+/// what it uploaded.
+pub fn draw(
+    gl: &glow::Context,
+    state: &FixedState,
+    g: &Geometry,
+    dashes: &[Dash],
+) -> Result<(), PipelineError> {
+    if dashes.is_empty() {
+        return Ok(());
+    }
+    let Some(arrays) = arrays(g, dashes) else {
+        return Ok(());
+    };
+    let count = i32::try_from(dashes.len() * 2).unwrap_or(i32::MAX);
+    let mut buffers = Vec::new();
+    // SAFETY: plain GL calls on the current context; every buffer is sized by its data
+    // and the draw reads `count` vertices of each.
+    unsafe {
+        let vao = gl.create_vertex_array().map_err(PipelineError::Object)?;
+        gl.bind_vertex_array(Some(vao));
+        let mut result = Ok(());
+        for (location, a) in &arrays {
+            let mut send = |location: u32, data: &[f32]| -> Result<(), PipelineError> {
+                let b = gl.create_buffer().map_err(PipelineError::Object)?;
+                buffers.push(b);
+                gl.bind_buffer(glow::ARRAY_BUFFER, Some(b));
+                let bytes: Vec<u8> = data.iter().flat_map(|f| f.to_ne_bytes()).collect();
+                gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &bytes, glow::STREAM_DRAW);
+                gl.vertex_attrib_pointer_f32(location, a.size, glow::FLOAT, false, 0, 0);
+                gl.enable_vertex_attrib_array(location);
+                Ok(())
+            };
+            result = result.and(send(*location, &a.own));
+            if let Some((shade, data)) = &a.shade {
+                result = result.and(send(*shade, data));
+            }
+        }
+        if result.is_ok() {
+            let mut has_texcoords = [false; MAX_TEXTURE_UNITS];
+            for (u, t) in g.texcoords.iter().enumerate() {
+                has_texcoords[u] = t.is_some();
+            }
+            set_current_values(
+                gl,
+                state,
+                g.normals.is_some(),
+                g.colors.is_some(),
+                &has_texcoords,
+            );
+            gl.draw_arrays(glow::LINES, 0, count);
+        }
+        gl.bind_vertex_array(None);
+        gl.delete_vertex_array(vao);
+        for b in buffers {
+            gl.delete_buffer(b);
+        }
+        result
+    }
+}
