@@ -545,3 +545,37 @@ fn an_accumulation_trace_replays_to_the_same_image() {
         assert!(trace.contains(call), "the trace lacks {call:?}");
     }
 }
+
+/// `tests/c/blit.c`: glBlitFramebuffer between the window and framebuffer objects —
+/// scaled NEAREST and LINEAR, flipped, scissored, of colour, depth and stencil — and its
+/// errors, printed as Mesa prints them, with Mesa's image; and its trace replays.
+#[test]
+fn framebuffer_blits_answer_and_draw_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("blit");
+    // Mesa's own answers that the program is built around (ff::blit's rules).
+    for line in [
+        "GL_EXT_framebuffer_blit                  1",
+        "incomplete read, bad mask                err 0x506",
+        "bad filter and bad mask                  err 0x500",
+        "LINEAR depth and bad mask                err 0x501",
+        "depth D24S8 into D32F                    err 0x502",
+        "stencil D24S8 into D24                   err 0x0",
+        "window (2,40) outside scissor            0 0 255 255  err 0x0",
+        "window (60,60) colour mask               255 0 255 255  err 0x0",
+    ] {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    assert_same_text(&mesa_text, &ours_text, 75, "a blit answer");
+    assert_images_match("blit", &ours, &mesa, within_3_on_99_percent(&mesa));
+    assert_trace_replays("blit", &compile("blit", Linking::Direct), &[], "64x64");
+    let trace = std::fs::read_to_string(work_dir("blit").join("calls.c")).expect("a trace");
+    assert!(
+        trace.contains(
+            "glBlitFramebuffer(0, 0, 32, 32, 32, 64, 64, 32, GL_COLOR_BUFFER_BIT, GL_LINEAR)"
+        ),
+        "the trace lacks the flipped LINEAR blit: {trace:.400}"
+    );
+}

@@ -401,6 +401,9 @@ macro_rules! gl_entry_table {
         GetRenderbufferParameterivEXT = glGetRenderbufferParameterivEXT(Script; target: GLenum, pname: GLenum, params: *mut GLint);
         GenerateMipmap = glGenerateMipmap(Script; target: GLenum);
         GenerateMipmapEXT = glGenerateMipmapEXT(Script; target: GLenum);
+        // glBlitFramebuffer (ARB_framebuffer_object, GL 3.0) and EXT_framebuffer_blit.
+        BlitFramebuffer = glBlitFramebuffer(Script; srcX0: GLint, srcY0: GLint, srcX1: GLint, srcY1: GLint, dstX0: GLint, dstY0: GLint, dstX1: GLint, dstY1: GLint, mask: GLbitfield, filter: GLenum);
+        BlitFramebufferEXT = glBlitFramebufferEXT(Script; srcX0: GLint, srcY0: GLint, srcX1: GLint, srcY1: GLint, dstX0: GLint, dstY0: GLint, dstX1: GLint, dstY1: GLint, mask: GLbitfield, filter: GLenum);
         DrawBuffer = glDrawBuffer(Script; mode: GLenum);
         ReadBuffer = glReadBuffer(Script; mode: GLenum);
         // Raster position and pixel rectangles (ff::raster, ff::pixels; GL 1.5 §2.13, §3.6,
@@ -998,6 +1001,7 @@ impl Command {
             Command::DrawBuffer(_) => Entry::DrawBuffer,
             Command::ReadBuffer(_) => Entry::ReadBuffer,
             Command::GenerateMipmap(_) => Entry::GenerateMipmap,
+            Command::BlitFramebuffer(_) => Entry::BlitFramebuffer,
             Command::TexSubImage1D(_) => Entry::TexSubImage1D,
             Command::CopyTexImage1D(_) => Entry::CopyTexImage1D,
             Command::CopyTexSubImage(c) => match c.target {

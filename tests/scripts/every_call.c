@@ -219,6 +219,8 @@ glReadBuffer(GL_COLOR_ATTACHMENT0);
 glGenerateMipmap(GL_TEXTURE_2D);
 glGenerateMipmapEXT(GL_TEXTURE_2D);
 glBindFramebuffer(GL_FRAMEBUFFER, 0);
+glBlitFramebuffer(0, 0, 2, 2, 4, 4, 6, 6, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+glBlitFramebufferEXT(0, 0, 2, 2, 6, 6, 8, 8, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
 glDeleteFramebuffers(1, (GLuint[]){1});
 glDeleteFramebuffersEXT(1, (GLuint[]){2});
 glDeleteRenderbuffers(1, (GLuint[]){1});

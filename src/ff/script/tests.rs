@@ -557,6 +557,39 @@ fn sample_commands() -> Vec<Command> {
         Command::Fog(FogParam::Color(Vec4::new(0.1, 0.2, 0.3, 1.0))),
         Command::Clear(ClearMask::ALL),
         Command::Clear(ClearMask::default()),
+        Command::BlitFramebuffer(crate::ff::blit::Blit {
+            src: crate::ff::blit::BlitRect {
+                x0: 0,
+                y0: 0,
+                x1: 32,
+                y1: -4,
+            },
+            dst: crate::ff::blit::BlitRect {
+                x0: 64,
+                y0: 0,
+                x1: 0,
+                y1: 64,
+            },
+            mask: crate::ff::blit::BlitMask::from_bits(0x4100),
+            filter: crate::ff::blit::FilterArg::Known(crate::ff::blit::BlitFilter::Linear),
+        }),
+        // A mask bit and a filter outside the sets travel as numbers (ff::blit).
+        Command::BlitFramebuffer(crate::ff::blit::Blit {
+            src: crate::ff::blit::BlitRect {
+                x0: 0,
+                y0: 0,
+                x1: 1,
+                y1: 1,
+            },
+            dst: crate::ff::blit::BlitRect {
+                x0: 0,
+                y0: 0,
+                x1: 1,
+                y1: 1,
+            },
+            mask: crate::ff::blit::BlitMask::from_bits(0x4201),
+            filter: crate::ff::blit::FilterArg::Other(0x0DE1),
+        }),
         Command::ClearColor(Vec4::new(0.5, 0.5, 0.5, 0.0)),
         Command::ClearDepth(1.0),
         Command::ClearStencil(128),
