@@ -27,6 +27,7 @@ const MODEL_EXTENSIONS: &[&str] = &[
     "GL_ARB_framebuffer_object",
     "GL_EXT_framebuffer_object",
     "GL_EXT_framebuffer_blit",
+    "GL_EXT_framebuffer_multisample_blit_scaled",
     "GL_EXT_packed_depth_stencil",
 ];
 

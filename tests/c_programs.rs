@@ -573,3 +573,100 @@ fn stippled_lines_draw_and_answer_as_on_mesa() {
     assert_same_text(&mesa_text, &ours_text, 15, "a line stipple answer");
     assert_images_match("stipple", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+/// `tests/c/blit.c`: glBlitFramebuffer between the window and framebuffer objects —
+/// scaled NEAREST and LINEAR, flipped, scissored, of colour, depth and stencil — and its
+/// errors, printed as Mesa prints them, with Mesa's image; and its trace replays.
+#[test]
+fn framebuffer_blits_answer_and_draw_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("blit");
+    // Mesa's own answers that the program is built around (ff::blit's rules).
+    for line in [
+        "GL_EXT_framebuffer_blit                  1",
+        "incomplete read, bad mask                err 0x506",
+        "bad filter and bad mask                  err 0x500",
+        "LINEAR depth and bad mask                err 0x501",
+        "depth D24S8 into D32F                    err 0x502",
+        "stencil D24S8 into D24                   err 0x0",
+        "window (2,40) outside scissor            0 0 255 255  err 0x0",
+        "window (60,60) colour mask               255 0 255 255  err 0x0",
+    ] {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    assert_same_text(&mesa_text, &ours_text, 75, "a blit answer");
+    assert_images_match("blit", &ours, &mesa, within_3_on_99_percent(&mesa));
+    assert_trace_replays("blit", &compile("blit", Linking::Direct), &[], "64x64");
+    let trace = std::fs::read_to_string(work_dir("blit").join("calls.c")).expect("a trace");
+    assert!(
+        trace.contains(
+            "glBlitFramebuffer(0, 0, 32, 32, 32, 64, 64, 32, GL_COLOR_BUFFER_BIT, GL_LINEAR)"
+        ),
+        "the trace lacks the flipped LINEAR blit: {trace:.400}"
+    );
+}
+
+/// `tests/c/multidraw.c`: glMultiDrawArrays and glMultiDrawElements from client arrays,
+/// client index lists, an element-array buffer's offsets and a display list draw Mesa's
+/// image exactly, with Mesa's errors in Mesa's order; and the trace replays. One line
+/// differs by design: Mesa 22.3 draws nothing of a multi-draw whose first list is empty,
+/// the layer draws the other lists (GL 1.5 §2.8).
+#[test]
+fn multi_draws_answer_and_draw_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("multidraw");
+    let deviation = "first list empty: pixels drawn";
+    let (mesa_first, mesa_rest) = mesa_text.split_once('\n').expect("lines");
+    let (ours_first, ours_rest) = ours_text.split_once('\n').expect("lines");
+    assert!(
+        mesa_first.starts_with(deviation) && mesa_first.contains(" 0  err 0x0"),
+        "Mesa drew the lists after an empty first one: {mesa_first}"
+    );
+    assert!(
+        ours_first.starts_with(deviation) && !ours_first.contains(" 0  err 0x0"),
+        "the layer skipped the lists after an empty first one: {ours_first}"
+    );
+    for line in [
+        "arrays bad mode, drawcount -1            err 0x501",
+        "elements count -1, type FLOAT            err 0x500",
+        "... raised when the list runs            err 0x501",
+    ] {
+        assert!(
+            mesa_rest.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    assert_same_text(mesa_rest, ours_rest, 25, "a multi-draw answer");
+    assert_six_panels_drawn_96x64(&mesa);
+    let exact = Tolerance {
+        per_channel: 0,
+        max_bad_pixels: 0,
+    };
+    assert_images_match("multidraw", &ours, &mesa, exact);
+    assert_trace_replays(
+        "multidraw",
+        &compile("multidraw", Linking::Direct),
+        &[],
+        "96x64",
+    );
+}
+
+/// Each of the six 32×32 panels of `multidraw.c` shows something on Mesa (more than 30
+/// pixels: the sixth holds one thin triangle).
+fn assert_six_panels_drawn_96x64(img: &RgbaImage) {
+    let background = Rgba([26, 26, 26, 255]);
+    let drawn: Vec<usize> = (0..6u32)
+        .map(|panel| {
+            let (x0, y0) = ((panel % 3) * 32, 32 - (panel / 3) * 32);
+            (0..32)
+                .flat_map(|y| (0..32).map(move |x| (x0 + x, y0 + y)))
+                .filter(|&(x, y)| *img.get_pixel(x, y) != background)
+                .count()
+        })
+        .collect();
+    assert!(
+        drawn.iter().filter(|n| **n > 30).count() == 6,
+        "panels drawn: {drawn:?}"
+    );
+}

@@ -139,7 +139,7 @@ fn every_implemented_call_replays_without_a_gl_error() {
             out_str,
         ]);
         assert!(ok, "{pipeline}: {err}");
-        assert!(stdout.contains("4 draws"), "{pipeline}: {stdout}");
+        assert!(stdout.contains("6 draws"), "{pipeline}: {stdout}");
         assert!(!err.contains("GL error"), "{pipeline}: {err}");
     }
 }

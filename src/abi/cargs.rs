@@ -45,7 +45,8 @@ macro_rules! elements {
     };
 }
 elements!(i8 => Byte, u8 => UByte, i16 => Short, u16 => UShort, i32 => Int, u32 => UInt,
-          f32 => Float, f64 => Double, c_void => Void, *mut c_void => Void);
+          f32 => Float, f64 => Double, c_void => Void, *mut c_void => Void,
+          *const c_void => Void);
 
 /// One argument of a C call.
 #[derive(Clone, Copy, Debug)]
@@ -334,6 +335,33 @@ impl Args for CCall<'_> {
             // An integer where a pointer goes: an offset into no buffer object.
             _ => Err(GlErrorKind::InvalidValue),
         }
+    }
+    fn pointers(&self, i: usize, n: usize, bound: u32) -> Result<Vec<ArrayData>, GlErrorKind> {
+        let Some(CArg::Ptr(p, _)) = self.args.get(i) else {
+            return Err(GlErrorKind::InvalidValue);
+        };
+        if n == 0 {
+            return Ok(Vec::new());
+        }
+        if p.is_null() {
+            return Err(GlErrorKind::InvalidValue);
+        }
+        let list = p.cast::<*const c_void>();
+        Ok((0..n)
+            .map(|k| {
+                // SAFETY: the program's array holds the `drawcount` pointers the call names
+                // (glMultiDrawElements' contract).
+                let q = unsafe { list.add(k).read_unaligned() };
+                match (bound, q.is_null()) {
+                    (0, true) => ArrayData::Null,
+                    (0, false) => ArrayData::Address(q as usize),
+                    (name, _) => ArrayData::Buffer {
+                        name,
+                        offset: q as usize,
+                    },
+                }
+            })
+            .collect())
     }
     fn offset(&self, i: usize) -> Result<usize, GlErrorKind> {
         match self.args.get(i) {

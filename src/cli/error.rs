@@ -36,10 +36,6 @@ pub enum CliError {
     Study(#[from] fixedfunc::study::StudyError),
     #[error(transparent)]
     Report(#[from] fixedfunc::report::ReportError),
-    #[error(
-        "--accum: the {0:?} path has no accumulation buffer (its target is a framebuffer object)"
-    )]
-    NoAccum(fixedfunc::vocab::PipelineKind),
     #[error("osmesa-dir: {0}")]
     Osmesa(String),
     #[error("cannot write to standard output: {0}")]

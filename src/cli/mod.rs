@@ -149,8 +149,9 @@ enum Command {
         /// The PNG to write.
         #[arg(long, default_value = "replay.png")]
         out: PathBuf,
-        /// Give the window an accumulation buffer (the emulated path only: the native
-        /// path's target is a framebuffer object, which has none).
+        /// Give the window an accumulation buffer (the native path: with --backend
+        /// osmesa only, drawing into OSMesa's own buffer, since Mesa gives framebuffer
+        /// objects none).
         #[arg(long)]
         accum: bool,
     },

@@ -5,7 +5,7 @@ use fixedfunc::vocab::{DepthBits, PipelineKind};
 use std::path::Path;
 
 use fixedfunc::gpu::{
-    Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay,
+    Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay, WindowBuffer,
 };
 use fixedfunc::pipeline;
 
@@ -28,22 +28,37 @@ pub fn run(
     } else {
         None
     };
-    let ctx = GpuContext::new(&ContextRequest::new(
-        backend,
-        fixedfunc::pipeline::profile(kind),
-    ))?;
-    let target = RenderTarget::new(
-        &ctx,
-        TargetSpec::new(size.width, size.height, DepthBits::D24).with_stencil(),
-    )?;
-    let mut p = match (accum, kind) {
+    // The native path's accumulation buffer is OSMesa's window buffer (framebuffer 0):
+    // Mesa gives framebuffer objects none.
+    let window = accum && kind == PipelineKind::Native;
+    if window && backend != Backend::OsMesa {
+        return Err(pipeline::PipelineError::NoAccumBuffer { backend }.into());
+    }
+    let mut request = ContextRequest::new(backend, fixedfunc::pipeline::profile(kind));
+    if window {
+        request = request.with_window(WindowBuffer {
+            width: size.width,
+            height: size.height,
+        });
+    }
+    let ctx = GpuContext::new(&request)?;
+    let target = match window {
+        true => None,
+        false => Some(RenderTarget::new(
+            &ctx,
+            TargetSpec::new(size.width, size.height, DepthBits::D24).with_stencil(),
+        )?),
+    };
+    let mut p: Box<dyn pipeline::Pipeline> = match (accum, kind) {
         (false, _) => pipeline::create(kind, &ctx)?,
         (true, PipelineKind::Emulate) => {
             let mut e = pipeline::emulate::EmulatedPipeline::new(&ctx)?;
             e.set_accum_buffer(Some((size.width as usize, size.height as usize)));
             Box::new(e)
         }
-        (true, PipelineKind::Native) => return Err(CliError::NoAccum(kind)),
+        (true, PipelineKind::Native) => {
+            Box::new(pipeline::native::NativePipeline::with_window_accum(&ctx)?)
+        }
     };
     // One command at a time, so a GL error names the script line that raised it (GL keeps
     // only the first error until glGetError; a script has no glGetError, so each is read
@@ -56,7 +71,10 @@ pub fn run(
             eprintln!("{}:{line}: {}: {e}", file.display(), cmd.entry().name());
         }
     }
-    let image = target.read_color(&ctx)?;
+    let image = match &target {
+        Some(t) => t.read_color(&ctx)?,
+        None => ctx.read_window_color(size.width, size.height)?,
+    };
     super::scene_arg::save(&image, out)?;
     let c = p.counters();
     outln!(

@@ -317,6 +317,8 @@ macro_rules! gl_entry_table {
         DrawArrays = glDrawArrays(Script; mode: GLenum, first: GLint, count: GLsizei);
         DrawElements = glDrawElements(Script; mode: GLenum, count: GLsizei, r#type: GLenum, indices: *const c_void);
         DrawRangeElements = glDrawRangeElements(Script; mode: GLenum, start: GLuint, end: GLuint, count: GLsizei, r#type: GLenum, indices: *const c_void);
+        MultiDrawArrays = glMultiDrawArrays(Script; mode: GLenum, first: *const GLint, count: *const GLsizei, drawcount: GLsizei);
+        MultiDrawElements = glMultiDrawElements(Script; mode: GLenum, count: *const GLsizei, r#type: GLenum, indices: *const *const c_void, drawcount: GLsizei);
         ArrayElement = glArrayElement(Script; i: GLint);
         InterleavedArrays = glInterleavedArrays(Script; format: GLenum, stride: GLsizei, pointer: *const c_void);
         // Fog, scissor, clip planes, logic op, blending (GL 1.0–1.4), hints.
@@ -401,6 +403,9 @@ macro_rules! gl_entry_table {
         GetRenderbufferParameterivEXT = glGetRenderbufferParameterivEXT(Script; target: GLenum, pname: GLenum, params: *mut GLint);
         GenerateMipmap = glGenerateMipmap(Script; target: GLenum);
         GenerateMipmapEXT = glGenerateMipmapEXT(Script; target: GLenum);
+        // glBlitFramebuffer (ARB_framebuffer_object, GL 3.0) and EXT_framebuffer_blit.
+        BlitFramebuffer = glBlitFramebuffer(Script; srcX0: GLint, srcY0: GLint, srcX1: GLint, srcY1: GLint, dstX0: GLint, dstY0: GLint, dstX1: GLint, dstY1: GLint, mask: GLbitfield, filter: GLenum);
+        BlitFramebufferEXT = glBlitFramebufferEXT(Script; srcX0: GLint, srcY0: GLint, srcX1: GLint, srcY1: GLint, dstX0: GLint, dstY0: GLint, dstX1: GLint, dstY1: GLint, mask: GLbitfield, filter: GLenum);
         DrawBuffer = glDrawBuffer(Script; mode: GLenum);
         ReadBuffer = glReadBuffer(Script; mode: GLenum);
         // Raster position and pixel rectangles (ff::raster, ff::pixels; GL 1.5 §2.13, §3.6,
@@ -694,14 +699,22 @@ impl Entry {
     }
 }
 
-/// The C spelling of a table type: `*const GLfloat` → `const GLfloat *`, `c_void` → `void`.
+/// The C spelling of a table type: `*const GLfloat` → `const GLfloat *`, `c_void` → `void`,
+/// `*const *const c_void` → `const void *const *`.
 fn c_type(rust: &str) -> String {
     let rust = rust.replace("c_void", "void");
     let rust = rust.replace("* const", "*const").replace("* mut", "*mut");
+    let pointer_to = |inner: String, qualifier: &str| {
+        if inner.ends_with('*') {
+            format!("{inner}{qualifier}*")
+        } else {
+            format!("{}{inner} *", qualifier)
+        }
+    };
     if let Some(t) = rust.strip_prefix("*const ") {
-        format!("const {t} *")
+        pointer_to(c_type(t), "const ")
     } else if let Some(t) = rust.strip_prefix("*mut ") {
-        format!("{t} *")
+        pointer_to(c_type(t), "")
     } else {
         rust
     }
@@ -1003,6 +1016,7 @@ impl Command {
             Command::DrawBuffer(_) => Entry::DrawBuffer,
             Command::ReadBuffer(_) => Entry::ReadBuffer,
             Command::GenerateMipmap(_) => Entry::GenerateMipmap,
+            Command::BlitFramebuffer(_) => Entry::BlitFramebuffer,
             Command::TexSubImage1D(_) => Entry::TexSubImage1D,
             Command::CopyTexImage1D(_) => Entry::CopyTexImage1D,
             Command::CopyTexSubImage(c) => match c.target {
@@ -1094,6 +1108,11 @@ mod tests {
     #[test]
     fn prototypes_read_like_gl_h() {
         assert_eq!(Entry::LoadIdentity.prototype(), "void glLoadIdentity(void)");
+        assert_eq!(
+            Entry::MultiDrawElements.prototype(),
+            "void glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type, \
+             const void *const *indices, GLsizei drawcount)"
+        );
         assert_eq!(
             Entry::AlphaFunc.prototype(),
             "void glAlphaFunc(GLenum func, GLfloat ref)"

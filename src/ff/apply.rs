@@ -334,6 +334,7 @@ impl FixedState {
                 self.check_draw_framebuffer()?;
                 self.check_read_framebuffer(None)?
             }
+            Command::BlitFramebuffer(b) => self.check_blit(b)?,
             Command::PixelTransfer(p) => self.pixel_transfer.set(*p),
             Command::PixelZoom { x, y } => {
                 self.pixel_zoom = super::pixels::PixelZoom { x: *x, y: *y }

@@ -134,6 +134,13 @@ pub trait Args {
     /// script), or an address in the program (C).
     fn array_data(&self, i: usize) -> Result<ArrayData, Self::Error>;
 
+    /// The first `n` pointers of a pointer-array argument (`const void *const *`,
+    /// glMultiDrawElements' index lists), each read as a pointer argument is: with
+    /// `bound` a buffer object (not 0), a byte offset into it (GL 1.5 §2.9.5); without,
+    /// the memory it names (C: an address; a script: a compound literal of compound
+    /// literals, `(const void *[]){(GLushort[]){0, 1, 2}, NULL}`, or of offsets).
+    fn pointers(&self, i: usize, n: usize, bound: u32) -> Result<Vec<ArrayData>, Self::Error>;
+
     /// A pointer argument read as a byte offset into a bound buffer object (C: the
     /// pointer's value, `(void *)12`; a script: an integer literal or NULL).
     fn offset(&self, i: usize) -> Result<usize, Self::Error>;

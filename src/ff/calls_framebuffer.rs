@@ -6,6 +6,7 @@
 
 use super::api::{CType, Entry};
 use super::args::Args;
+use super::blit::{Blit, BlitFilter, BlitMask, BlitRect, FilterArg};
 use super::error::GlErrorKind;
 use super::texture::TextureTarget;
 use super::Command;
@@ -82,6 +83,26 @@ pub fn framebuffer<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(1)?;
             Command::GenerateMipmap(c.enm(0)?)
         }
+        E::BlitFramebuffer | E::BlitFramebufferEXT => {
+            c.count(10)?;
+            let int = |k: usize| c.i32(k);
+            Command::BlitFramebuffer(Blit {
+                src: BlitRect {
+                    x0: int(0)?,
+                    y0: int(1)?,
+                    x1: int(2)?,
+                    y1: int(3)?,
+                },
+                dst: BlitRect {
+                    x0: int(4)?,
+                    y0: int(5)?,
+                    x1: int(6)?,
+                    y1: int(7)?,
+                },
+                mask: blit_mask(c)?,
+                filter: blit_filter(c)?,
+            })
+        }
         E::DrawBuffer => {
             c.count(1)?;
             Command::DrawBuffer(c.enm(0)?)
@@ -92,6 +113,38 @@ pub fn framebuffer<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         _ => return Ok(None),
     }))
+}
+
+/// The buffer bits of a blit mask.
+const BLIT_BITS: [&str; 3] = [
+    "GL_COLOR_BUFFER_BIT",
+    "GL_DEPTH_BUFFER_BIT",
+    "GL_STENCIL_BUFFER_BIT",
+];
+
+/// glBlitFramebuffer's mask: the buffer bits joined by '|', or (any other bit set) the
+/// value as given, checked by the model after completeness (`ff::blit`).
+fn blit_mask<A: Args>(c: &A) -> Result<BlitMask, A::Error> {
+    let value = match c.bits(8, &BLIT_BITS) {
+        Ok(names) => names
+            .iter()
+            .filter_map(|n| crate::ff::glenum::value_of(n))
+            .fold(0, |m, b| m | b),
+        Err(e) => c.u32(8).map_err(|_| e)?,
+    };
+    Ok(BlitMask::from_bits(value))
+}
+
+/// glBlitFramebuffer's filter: a token outside NEAREST, LINEAR and the SCALED_RESOLVE pair
+/// is kept as its value for the model to refuse after completeness (`ff::blit`).
+fn blit_filter<A: Args>(c: &A) -> Result<FilterArg, A::Error> {
+    match c.enm::<BlitFilter>(9) {
+        Ok(f) => Ok(FilterArg::Known(f)),
+        Err(e) => {
+            let value = c.token(9).or_else(|_| c.u32(9)).map_err(|_| e)?;
+            Ok(FilterArg::Other(value))
+        }
+    }
 }
 
 /// GL_RENDERBUFFER and its EXT name.

@@ -268,6 +268,9 @@ impl<A: Args> Args for ScalarAt<'_, A> {
     fn array_data(&self, i: usize) -> Result<ArrayData, A::Error> {
         self.inner.array_data(i)
     }
+    fn pointers(&self, i: usize, n: usize, bound: u32) -> Result<Vec<ArrayData>, A::Error> {
+        self.inner.pointers(i, n, bound)
+    }
     fn offset(&self, i: usize) -> Result<usize, A::Error> {
         self.inner.offset(i)
     }

@@ -1,7 +1,8 @@
 //! Client vertex arrays (GL 1.5 §2.8): the pointers a program sets with glVertexPointer,
 //! glNormalPointer, glColorPointer and glTexCoordPointer (per client-active unit), their
 //! enables, and the draws that read them (glDrawArrays, glDrawElements,
-//! glDrawRangeElements, glArrayElement, glInterleavedArrays). This is client state: it
+//! glDrawRangeElements, glMultiDrawArrays, glMultiDrawElements, glArrayElement,
+//! glInterleavedArrays). This is client state: it
 //! belongs to the front end (a script or the C library), not to the server state the
 //! pipelines execute; a draw reads the arrays when it is called and becomes one
 //! `Command::Draw` whose geometry holds the values read.
@@ -281,6 +282,9 @@ pub enum ClientEffect {
     /// A draw: the geometry read from the arrays (`None` when the vertex array is
     /// disabled or the count is 0: GL draws nothing).
     Draw(Option<Geometry>),
+    /// glMultiDrawArrays / glMultiDrawElements: one draw per list, in order (GL 1.5
+    /// §2.8: as that many glDrawArrays or glDrawElements), the empty ones left out.
+    Draws(Vec<Geometry>),
     /// glArrayElement: the element's values, for immediate mode.
     Element(Element),
 }
@@ -301,6 +305,8 @@ impl ClientArrays {
                 | Entry::DrawArrays
                 | Entry::DrawElements
                 | Entry::DrawRangeElements
+                | Entry::MultiDrawArrays
+                | Entry::MultiDrawElements
                 | Entry::ArrayElement
                 | Entry::InterleavedArrays
         )
@@ -444,18 +450,44 @@ impl ClientArrays {
                 // With a buffer bound to ELEMENT_ARRAY_BUFFER, `indices` is an offset
                 // into it (GL 1.5 §2.9.5).
                 let data = Buffers::source(c, 3 + k, bound.element)?;
-                let size = ctype_size(ty);
-                let bytes = mem
-                    .read(&data, 0, count as usize * size)
+                let indices = read_indices(mem, &data, count as usize, ty)
                     .ok_or_else(|| c.bad(3 + k, "indices"))?;
-                let indices: Vec<usize> = bytes
-                    .chunks_exact(size)
-                    .map(|b| decode(ty, b) as usize)
+                return Ok(ClientEffect::Draw(self.indexed(mode, &indices, mem)));
+            }
+            // Checked in Mesa's order (measured with tests/c/multidraw.c): a drawcount
+            // below 0 is INVALID_VALUE before the mode (and the index type) are
+            // INVALID_ENUM, a count below 0 INVALID_VALUE after them. A first index below 0
+            // is no error on Mesa; the draw would read before the array, so the layer
+            // leaves that one out.
+            Entry::MultiDrawArrays => {
+                let n = draw_count(c, 3)?;
+                let mode: Primitive = c.enm(0)?;
+                let first = ints(c, 1, n)?;
+                let counts = counts(c, 2, n)?;
+                let draws = first
+                    .iter()
+                    .zip(counts)
+                    .filter(|(f, _)| **f >= 0.0)
+                    .filter_map(|(f, k)| {
+                        let which: Vec<usize> = (*f as usize..*f as usize + k).collect();
+                        self.geometry(mode, &which, None, mem)
+                    })
                     .collect();
-                let n = indices.iter().max().map_or(0, |m| m + 1);
-                let all: Vec<usize> = (0..n).collect();
-                let g = self.geometry(mode, &all, Some(&indices), mem);
-                return Ok(ClientEffect::Draw(g));
+                return Ok(ClientEffect::Draws(draws));
+            }
+            Entry::MultiDrawElements => {
+                let n = draw_count(c, 4)?;
+                let mode: Primitive = c.enm(0)?;
+                let ty = index_type(c, 2)?;
+                let counts = counts(c, 1, n)?;
+                let lists = c.pointers(3, n, bound.element)?;
+                let mut draws = Vec::with_capacity(n);
+                for (data, k) in lists.iter().zip(counts) {
+                    let indices =
+                        read_indices(mem, data, k, ty).ok_or_else(|| c.bad(3, "indices"))?;
+                    draws.extend(self.indexed(mode, &indices, mem));
+                }
+                return Ok(ClientEffect::Draws(draws));
             }
             Entry::ArrayElement => {
                 let i = c.i32(0)?;
@@ -576,6 +608,18 @@ impl ClientArrays {
         Some(g)
     }
 
+    /// The geometry of `indices` into the arrays (glDrawElements).
+    fn indexed(
+        &self,
+        mode: Primitive,
+        indices: &[usize],
+        mem: &dyn ClientMemory,
+    ) -> Option<Geometry> {
+        let n = indices.iter().max().map_or(0, |m| m + 1);
+        let all: Vec<usize> = (0..n).collect();
+        self.geometry(mode, &all, Some(indices), mem)
+    }
+
     /// glArrayElement(i): the values of element i of every enabled array.
     fn element(&self, i: usize, mem: &dyn ClientMemory) -> Element {
         let mut e = Element::default();
@@ -693,6 +737,49 @@ fn stride<A: Args>(c: &A, i: usize) -> Result<i32, A::Error> {
         return Err(c.bad(i, "a stride of 0 or more"));
     }
     Ok(s)
+}
+
+/// `count` indices of type `ty` from `data`, or `None` when the memory does not hold them.
+fn read_indices(
+    mem: &dyn ClientMemory,
+    data: &ArrayData,
+    count: usize,
+    ty: CType,
+) -> Option<Vec<usize>> {
+    let size = ctype_size(ty);
+    let bytes = mem.read(data, 0, count.checked_mul(size)?)?;
+    Some(
+        bytes
+            .chunks_exact(size)
+            .map(|b| decode(ty, b) as usize)
+            .collect(),
+    )
+}
+
+/// glMultiDraw*'s drawcount: below 0 is INVALID_VALUE.
+fn draw_count<A: Args>(c: &A, i: usize) -> Result<usize, A::Error> {
+    let n = c.i32(i)?;
+    if n < 0 {
+        return Err(c.bad(i, "a draw count of 0 or more"));
+    }
+    Ok(n as usize)
+}
+
+/// `n` GLint or GLsizei values of an array argument (none read for `n` = 0).
+fn ints<A: Args>(c: &A, i: usize, n: usize) -> Result<Vec<f64>, A::Error> {
+    if n == 0 {
+        return Ok(Vec::new());
+    }
+    c.array_as(i, n, CType::Int)
+}
+
+/// glMultiDraw*'s `n` counts: one below 0 is INVALID_VALUE.
+fn counts<A: Args>(c: &A, i: usize, n: usize) -> Result<Vec<usize>, A::Error> {
+    let counts = ints(c, i, n)?;
+    if counts.iter().any(|k| *k < 0.0) {
+        return Err(c.bad(i, "counts of 0 or more"));
+    }
+    Ok(counts.into_iter().map(|k| k as usize).collect())
 }
 
 /// glDrawElements' index type: UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT.

@@ -19,6 +19,7 @@ use super::error::GlErrorKind;
 
 use super::accum::AccumOp;
 use super::attrib::AttribMask;
+use super::blit::Blit;
 use super::combiners::{
     CombinerInput, CombinerOutput, CombinerParam, FinalVariable, Portion, Variable,
 };
@@ -419,6 +420,9 @@ pub enum Command {
     Bitmap(Bitmap),
     /// glDrawPixels (§3.6.4).
     DrawPixels(DrawPixels),
+    /// glBlitFramebuffer (GL 3.0 §4.3.3, `ff::blit`): compiled into display lists, as
+    /// Mesa does.
+    BlitFramebuffer(Blit),
     /// glCopyPixels (§4.3.3).
     CopyPixels(CopyPixels),
     PixelTransfer(PixelTransferParam),

@@ -104,20 +104,20 @@ impl Client {
         }
         if let Some(mode) = self.lists.compiling() {
             if compiled(entry) {
-                let item = match self.compile(c, mem) {
-                    Ok(Some(item)) => item,
-                    // A draw without a vertex array: GL draws nothing, the list keeps
-                    // nothing.
-                    Ok(None) => return Ok(Reply::None),
+                // A draw without a vertex array: GL draws nothing, the list keeps nothing.
+                let items = match self.compile(c, mem) {
+                    Ok(items) => items,
                     Err(e) => match c.deferred(&e) {
-                        Some(error) => Item::Command(Command::Raise { error, call: entry }),
+                        Some(error) => vec![Item::Command(Command::Raise { error, call: entry })],
                         None => return Err(e),
                     },
                 };
                 if mode == ListMode::CompileAndExecute {
-                    self.run(std::slice::from_ref(&item), 0, *current, out);
+                    self.run(&items, 0, *current, out);
                 }
-                self.lists.record(item);
+                for item in items {
+                    self.lists.record(item);
+                }
                 return Ok(Reply::None);
             }
         }
@@ -147,6 +147,8 @@ impl Client {
             Entry::DrawArrays
                 | Entry::DrawElements
                 | Entry::DrawRangeElements
+                | Entry::MultiDrawArrays
+                | Entry::MultiDrawElements
                 | Entry::InterleavedArrays
         );
         if draws && self.immediate.is_open() {
@@ -170,6 +172,9 @@ impl Client {
                 self.buffer_draws
                     .remember(c, &self.arrays, &self.buffers, &g);
                 out.push(Command::Draw(g));
+            }
+            ClientEffect::Draws(draws) => {
+                out.extend(draws.into_iter().map(|g| Command::Draw(Arc::new(g))));
             }
             ClientEffect::Element(e) => self
                 .immediate
@@ -247,16 +252,13 @@ impl Client {
         }))
     }
 
-    /// What a list keeps of a call: data read now, as GL reads it at compile time.
-    fn compile<A: Args>(
-        &mut self,
-        c: &A,
-        mem: &dyn ClientMemory,
-    ) -> Result<Option<Item>, A::Error> {
+    /// What a list keeps of a call: data read now, as GL reads it at compile time (a
+    /// glMultiDraw* keeps one draw per list).
+    fn compile<A: Args>(&mut self, c: &A, mem: &dyn ClientMemory) -> Result<Vec<Item>, A::Error> {
         if let Some(op) = decode(c)? {
-            return Ok(Some(Item::Immediate(op)));
+            return Ok(vec![Item::Immediate(op)]);
         }
-        Ok(Some(match c.entry() {
+        Ok(vec![match c.entry() {
             Entry::CallList => Item::Call(c.u32(0)?),
             Entry::CallLists => Item::CallMany(list_names(c)?),
             Entry::ListBase => Item::Base(c.u32(0)?),
@@ -270,10 +272,16 @@ impl Client {
             )? {
                 ClientEffect::Element(el) => Item::Immediate(Op::Element(Box::new(el))),
                 ClientEffect::Draw(Some(g)) => Item::Command(Command::Draw(Arc::new(g))),
-                ClientEffect::Draw(None) | ClientEffect::State => return Ok(None),
+                ClientEffect::Draws(draws) => {
+                    return Ok(draws
+                        .into_iter()
+                        .map(|g| Item::Command(Command::Draw(Arc::new(g))))
+                        .collect())
+                }
+                ClientEffect::Draw(None) | ClientEffect::State => return Ok(Vec::new()),
             },
             _ => Item::Command(super::calls::command(c)?),
-        }))
+        }])
     }
 
     /// Runs list items: commands go to `out` (a command inside glBegin/glEnd raises

@@ -563,6 +563,13 @@ gl_enums!(AttribGroup {
 
 // Framebuffer objects (ff::framebuffer). FRAMEBUFFER_EXT and the other EXT tokens have
 // the same values and are read as these.
+gl_enums!(super::blit::BlitFilter {
+    NEAREST => super::blit::BlitFilter::Nearest,
+    LINEAR => super::blit::BlitFilter::Linear,
+    SCALED_RESOLVE_FASTEST_EXT => super::blit::BlitFilter::ScaledResolveFastest,
+    SCALED_RESOLVE_NICEST_EXT => super::blit::BlitFilter::ScaledResolveNicest,
+});
+
 gl_enums!(FramebufferTarget {
     FRAMEBUFFER => FramebufferTarget::Both,
     DRAW_FRAMEBUFFER => FramebufferTarget::Draw,
@@ -764,6 +771,13 @@ mod tests {
             Wrap::Clamp,
             Wrap::ClampToEdge,
             Wrap::ClampToBorder,
+        ]);
+        use super::super::blit::BlitFilter;
+        covers(&[
+            BlitFilter::Nearest,
+            BlitFilter::Linear,
+            BlitFilter::ScaledResolveFastest,
+            BlitFilter::ScaledResolveNicest,
         ]);
     }
 }

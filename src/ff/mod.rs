@@ -22,6 +22,7 @@ pub mod apply;
 mod apply_framebuffer;
 pub mod args;
 pub mod attrib;
+pub mod blit;
 mod buffer_draws;
 pub mod buffers;
 pub mod calls;

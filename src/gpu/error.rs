@@ -33,6 +33,10 @@ pub enum GpuError {
         backend: Backend,
         feature: &'static str,
     },
+    /// A window buffer (framebuffer 0 with an accumulation buffer) asked of a backend whose
+    /// framebuffer 0 is no buffer of ours: EGL surfaceless has no window at all.
+    #[error("the {backend} backend has no window buffer with an accumulation buffer; use --backend osmesa (Mesa gives framebuffer objects no accumulation buffer)")]
+    NoWindowBuffer { backend: Backend },
     /// EGL has neither the surfaceless nor the device platform.
     #[error("EGL offers no headless platform (neither EGL_MESA_platform_surfaceless nor EGL_EXT_platform_device); client extensions: {extensions}\n  install Mesa's EGL: apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri")]
     NoHeadlessPlatform { extensions: String },

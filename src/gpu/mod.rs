@@ -6,7 +6,9 @@
 //!   platform. No window system, no surface: rendering goes to framebuffer objects.
 //! - `Backend::OsMesa`: `libOSMesa.so.8` through libloading (`OSMesaCreateContextAttribs`).
 //!   The context gets a 1×1 client buffer it never draws to; rendering goes to FBOs, so the
-//!   same frame reads back identically on both headless backends.
+//!   same frame reads back identically on both headless backends. The exception: a
+//!   [`WindowBuffer`] request, a window-sized buffer with an accumulation buffer that the
+//!   native path's glAccum draws into (Mesa gives FBOs none).
 //! - `Backend::Window`: glutin + winit on X11, a real window that can present a rendered
 //!   target (a framebuffer blit) and save what it shows.
 //!
@@ -36,6 +38,7 @@ use crate::vocab::Named;
 pub use egl::EglPlatform;
 pub use error::GpuError;
 pub use info::{ContextInfo, DepthReport, ExtensionReport, Limits, SHADOW_EXTENSIONS};
+pub use osmesa::WindowBuffer;
 pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8};
 pub use target::{ColorStorage, RenderTarget, TargetSpec};
 pub use trivial::FlatProgram;
@@ -126,6 +129,9 @@ pub struct ContextRequest {
     pub profile: Profile,
     pub library: Option<String>,
     pub egl_platform: Option<EglPlatform>,
+    /// OSMesa only: framebuffer 0 is a window-sized buffer with an accumulation buffer
+    /// (`osmesa::WindowBuffer`), for the native path's glAccum.
+    pub window: Option<WindowBuffer>,
 }
 
 impl ContextRequest {
@@ -135,7 +141,15 @@ impl ContextRequest {
             profile,
             library: None,
             egl_platform: None,
+            window: None,
         }
+    }
+
+    /// OSMesa with a window-sized client buffer and an accumulation buffer as
+    /// framebuffer 0 (the other backends refuse it: their framebuffer 0 is no window).
+    pub fn with_window(mut self, window: WindowBuffer) -> Self {
+        self.window = Some(window);
+        self
     }
 
     pub fn with_egl_platform(mut self, platform: EglPlatform) -> Self {
@@ -172,6 +186,11 @@ impl GpuContext {
     /// Creates a context as requested and makes it current on this thread.
     pub fn new(request: &ContextRequest) -> Result<GpuContext, GpuError> {
         let lib = request.library.as_deref();
+        if let (Some(_), Backend::Egl | Backend::Window) = (request.window, request.backend) {
+            return Err(GpuError::NoWindowBuffer {
+                backend: request.backend,
+            });
+        }
         let (gl, handle, path) = match request.backend {
             Backend::Egl => {
                 let (ctx, gl) =
@@ -185,7 +204,8 @@ impl GpuContext {
                 (gl, Handle::Egl(Box::new(ctx)), path)
             }
             Backend::OsMesa => {
-                let (ctx, gl) = osmesa::OsMesaContext::create(request.profile, lib)?;
+                let (ctx, gl) =
+                    osmesa::OsMesaContext::create(request.profile, lib, request.window)?;
                 (
                     gl,
                     Handle::OsMesa(ctx),
@@ -259,6 +279,37 @@ impl GpuContext {
     /// time includes the driver's work (llvmpipe renders asynchronously).
     pub fn finish(&self) {
         unsafe { self.gl.finish() }
+    }
+
+    /// Framebuffer 0's colour (a [`WindowBuffer`]'s) as RGBA8, top row first.
+    pub fn read_window_color(&self, width: u32, height: u32) -> Result<image::RgbaImage, GpuError> {
+        let mut rows = vec![0u8; 4 * width as usize * height as usize];
+        // SAFETY: plain GL calls; `rows` holds width × height RGBA8 pixels, packed.
+        unsafe {
+            self.gl.bind_framebuffer(glow::READ_FRAMEBUFFER, None);
+            self.gl.read_buffer(glow::FRONT);
+            self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
+            self.gl.read_pixels(
+                0,
+                0,
+                width as i32,
+                height as i32,
+                glow::RGBA,
+                glow::UNSIGNED_BYTE,
+                glow::PixelPackData::Slice(Some(&mut rows)),
+            );
+        }
+        self.check_error("glReadPixels (framebuffer 0)")?;
+        let row = 4 * width as usize;
+        let flipped: Vec<u8> = rows
+            .chunks_exact(row.max(1))
+            .rev()
+            .flatten()
+            .copied()
+            .collect();
+        image::RgbaImage::from_raw(width, height, flipped).ok_or(GpuError::Object(
+            "window readback has the wrong length".into(),
+        ))
     }
 
     /// Reads and clears GL's error flag: `Err` names the call that raised it.

@@ -4,6 +4,12 @@
 //! `OSMesaCreateContextAttribs` gives a core 3.3 or a compatibility context. OSMesa needs a
 //! client buffer to make a context current; ours is 1×1 and never drawn to — every frame goes
 //! to a framebuffer object, exactly as on EGL, so both backends read back the same pixels.
+//!
+//! The one exception is the native path's accumulation buffer: Mesa gives framebuffer
+//! objects none, so the oracle of glAccum draws into OSMesa's own buffer. A
+//! [`WindowBuffer`] request makes the client buffer window-sized, with 24 depth, 8 stencil
+//! and 16 accumulation bits per channel (`OSMESA_ACCUM_BITS`), and framebuffer 0 is then a
+//! window GL draws to.
 
 use std::ffi::{c_char, c_int, c_uint, c_void, CString};
 
@@ -26,6 +32,16 @@ const OSMESA_CONTEXT_MAJOR_VERSION: c_int = 0x36;
 const OSMESA_CONTEXT_MINOR_VERSION: c_int = 0x37;
 const GL_UNSIGNED_BYTE: c_uint = 0x1401;
 
+/// A window-sized client buffer that framebuffer 0 draws to, with an accumulation buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct WindowBuffer {
+    pub width: u32,
+    pub height: u32,
+}
+
+/// Accumulation bits per channel of a [`WindowBuffer`] (Mesa's OSMesa: signed 16-bit).
+const WINDOW_ACCUM_BITS: c_int = 16;
+
 type RawContext = *mut c_void;
 type CreateContextAttribs = unsafe extern "C" fn(*const c_int, RawContext) -> RawContext;
 type MakeCurrent = unsafe extern "C" fn(RawContext, *mut c_void, c_uint, c_int, c_int) -> u8;
@@ -37,8 +53,10 @@ pub struct OsMesaContext {
     make_current: MakeCurrent,
     destroy: DestroyContext,
     get_proc: GetProcAddress,
-    /// The client buffer OSMesa requires; never rendered to.
-    buffer: Box<[u8; 4]>,
+    /// The client buffer OSMesa requires: 1×1 and never rendered to, or the window's.
+    buffer: Vec<u8>,
+    width: c_int,
+    height: c_int,
     // Last: the function pointers above point into it.
     _library: Library,
 }
@@ -57,6 +75,7 @@ impl OsMesaContext {
     pub fn create(
         profile: Profile,
         library: Option<&str>,
+        window: Option<WindowBuffer>,
     ) -> Result<(OsMesaContext, glow::Context), GpuError> {
         let name = library.unwrap_or(DEFAULT_LIBRARY);
         // SAFETY: loading libOSMesa runs Mesa's initialisers, which have no preconditions.
@@ -77,15 +96,28 @@ impl OsMesaContext {
             // Mesa grants the highest compatibility version it has for 1.0.
             Profile::Compatibility => (OSMESA_COMPAT_PROFILE, 1, 0),
         };
+        let (depth, stencil, accum, width, height) = match window {
+            None => (0, 0, 0, 1, 1),
+            Some(w) => {
+                let side = |v: u32| c_int::try_from(v).ok().filter(|v| (1..=16384).contains(v));
+                let (Some(width), Some(height)) = (side(w.width), side(w.height)) else {
+                    return Err(GpuError::OsMesa {
+                        call: "OSMesaMakeCurrent",
+                        detail: format!("a {}x{} buffer (1 to 16384 a side)", w.width, w.height),
+                    });
+                };
+                (24, 8, WINDOW_ACCUM_BITS, width, height)
+            }
+        };
         let attribs = [
             OSMESA_FORMAT,
             OSMESA_RGBA,
             OSMESA_DEPTH_BITS,
-            0,
+            depth,
             OSMESA_STENCIL_BITS,
-            0,
+            stencil,
             OSMESA_ACCUM_BITS,
-            0,
+            accum,
             OSMESA_PROFILE,
             profile_value,
             OSMESA_CONTEXT_MAJOR_VERSION,
@@ -107,7 +139,9 @@ impl OsMesaContext {
             make_current,
             destroy,
             get_proc,
-            buffer: Box::new([0; 4]),
+            buffer: vec![0; 4 * width as usize * height as usize],
+            width,
+            height,
             _library: library,
         };
         ctx.make_current()?;
@@ -125,14 +159,14 @@ impl OsMesaContext {
     }
 
     pub fn make_current(&self) -> Result<(), GpuError> {
-        // SAFETY: the buffer is 1×1 RGBA8 and lives as long as the context.
+        // SAFETY: the buffer is width × height RGBA8 and lives as long as the context.
         let ok = unsafe {
             (self.make_current)(
                 self.context,
                 self.buffer.as_ptr() as *mut c_void,
                 GL_UNSIGNED_BYTE,
-                1,
-                1,
+                self.width,
+                self.height,
             )
         };
         if ok == 0 {

@@ -44,6 +44,10 @@ pub enum PipelineError {
         what: &'static str,
         path: &'static str,
     },
+    /// The native path's glAccum needs a window with an accumulation buffer (Mesa gives
+    /// framebuffer objects none): only OSMesa's own buffer has one.
+    #[error("the native pipeline has no accumulation buffer on the {backend} backend: its framebuffers are objects, which Mesa gives none; run it with --backend osmesa, whose window buffer has one")]
+    NoAccumBuffer { backend: crate::gpu::Backend },
     /// glTexImage named a readback buffer no ReadPixels has filled.
     #[error("glTexImage reads readback_{slot}, which no glReadPixels has filled")]
     MissingReadback { slot: u32 },

@@ -86,6 +86,7 @@ pub fn uses_framebuffer(cmd: &Command) -> bool {
             | Command::DrawPixels(_)
             | Command::CopyPixels(_)
             | Command::Accum { .. }
+            | Command::BlitFramebuffer(_)
     )
 }
 

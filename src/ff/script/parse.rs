@@ -36,6 +36,9 @@ enum Arg<'a> {
         ty: &'a str,
         values: Vec<(bool, &'a str)>,
     },
+    /// `(const void *[]){a, b, …}`: an array of pointers, each a compound literal, NULL or
+    /// (into a bound buffer) an offset.
+    Pointers(Vec<Arg<'a>>),
 }
 
 struct Stmt<'a> {
@@ -189,6 +192,13 @@ impl<'a> Cursor<'_, 'a> {
         if at(k + 1) == Some(Tok::LBracket) {
             return self.array();
         }
+        let mut star = k + 1;
+        while matches!(at(star), Some(Tok::Star | Tok::Ident("const"))) {
+            star += 1;
+        }
+        if star > k + 1 && at(star) == Some(Tok::LBracket) {
+            return self.pointer_array(star);
+        }
         self.pos += k + 1;
         let mut pointer = false;
         while self.peek() == Some(Tok::Star) || self.peek() == Some(Tok::Ident("const")) {
@@ -210,6 +220,28 @@ impl<'a> Cursor<'_, 'a> {
             },
             other => other,
         })
+    }
+
+    /// `(const void *[]){a, b}`, the type's tokens ending before `bracket`.
+    fn pointer_array(&mut self, bracket: usize) -> Res<Arg<'a>> {
+        self.pos += bracket + 1;
+        if let Some(Tok::Num(_)) = self.peek() {
+            self.pos += 1;
+        }
+        self.eat(Tok::RBracket, "']'")?;
+        self.eat(Tok::RParen, "')'")?;
+        self.eat(Tok::LBrace, "'{'")?;
+        let mut items = Vec::new();
+        while self.peek() != Some(Tok::RBrace) {
+            items.push(self.arg()?);
+            if self.peek() == Some(Tok::Comma) {
+                self.pos += 1;
+            } else {
+                break;
+            }
+        }
+        self.eat(Tok::RBrace, "',' or '}'")?;
+        Ok(Arg::Pointers(items))
     }
 
     fn array(&mut self) -> Res<Arg<'a>> {
@@ -522,6 +554,7 @@ impl Args for Call<'_, '_> {
             Arg::Name { name, offset } => format!("{name} + {offset}"),
             Arg::Or(names) => names.join(" | "),
             Arg::Array { ty, .. } => format!("a ({ty}[]) array"),
+            Arg::Pointers(items) => format!("an array of {} pointers", items.len()),
             Arg::Call { func, arg } => format!("{func}({arg})"),
         });
         ScriptError::BadArgument {
@@ -685,6 +718,32 @@ impl Args for Call<'_, '_> {
         Ok(self
             .literal_bytes(i)?
             .map_or(ArrayData::Null, |b| ArrayData::Bytes(Arc::from(b))))
+    }
+    fn pointers(&self, i: usize, n: usize, bound: u32) -> Res<Vec<ArrayData>> {
+        let items = match self.args.get(i) {
+            Some(Arg::Pointers(items)) => items.as_slice(),
+            _ if n == 0 => &[],
+            _ => {
+                return Err(self.bad(
+                    i,
+                    "an array of pointers such as (const void *[]){(GLushort[]){0, 1, 2}}",
+                ))
+            }
+        };
+        if items.len() < n {
+            return Err(self.array_length(n, items.len()));
+        }
+        items[..n]
+            .iter()
+            .map(|item| {
+                // Each pointer read as a pointer argument of its own.
+                let one = Call {
+                    args: std::slice::from_ref(item),
+                    ..*self
+                };
+                crate::ff::buffers::Buffers::source(&one, 0, bound)
+            })
+            .collect()
     }
     fn offset(&self, i: usize) -> Res<usize> {
         if let Some(("NULL", 0)) = self.name(i) {

@@ -492,6 +492,7 @@ fn call(c: &Command) -> String {
         Command::DrawBuffer(b) => format!("{}({})", Entry::DrawBuffer, n(*b)),
         Command::ReadBuffer(b) => format!("{}({})", Entry::ReadBuffer, n(*b)),
         Command::GenerateMipmap(t) => format!("{}({})", Entry::GenerateMipmap, n(*t)),
+        Command::BlitFramebuffer(b) => blit(b),
         Command::CopyTexImage1D(c) => format!(
             "{}(GL_TEXTURE_1D, {}, {}, {}, {}, {}, {})",
             Entry::CopyTexImage1D,
@@ -551,6 +552,39 @@ fn call(c: &Command) -> String {
         | Command::TexSubImage1D(_)
         | Command::Raise { .. } => String::new(),
     }
+}
+
+/// `glBlitFramebuffer(…)`: a mask with bits of no buffer, or a filter outside the set, as
+/// the number given (the model refuses it; a replay refuses it alike).
+fn blit(b: &crate::ff::blit::Blit) -> String {
+    use crate::ff::blit::FilterArg;
+    let (s, d) = (b.src, b.dst);
+    let mask = if b.mask.other != 0 {
+        format!("0x{:X}", b.mask.bits())
+    } else {
+        clear_mask(ClearMask {
+            color: b.mask.color,
+            depth: b.mask.depth,
+            stencil: b.mask.stencil,
+            accum: false,
+        })
+    };
+    let filter = match b.filter {
+        FilterArg::Known(f) => n(f).to_string(),
+        FilterArg::Other(v) => format!("0x{v:04X}"),
+    };
+    format!(
+        "{}({}, {}, {}, {}, {}, {}, {}, {}, {mask}, {filter})",
+        Entry::BlitFramebuffer,
+        s.x0,
+        s.y0,
+        s.x1,
+        s.y1,
+        d.x0,
+        d.y0,
+        d.x1,
+        d.y1
+    )
 }
 
 /// `glDelete…(n, (GLuint[]){a, b})`.

@@ -557,6 +557,39 @@ fn sample_commands() -> Vec<Command> {
         Command::Fog(FogParam::Color(Vec4::new(0.1, 0.2, 0.3, 1.0))),
         Command::Clear(ClearMask::ALL),
         Command::Clear(ClearMask::default()),
+        Command::BlitFramebuffer(crate::ff::blit::Blit {
+            src: crate::ff::blit::BlitRect {
+                x0: 0,
+                y0: 0,
+                x1: 32,
+                y1: -4,
+            },
+            dst: crate::ff::blit::BlitRect {
+                x0: 64,
+                y0: 0,
+                x1: 0,
+                y1: 64,
+            },
+            mask: crate::ff::blit::BlitMask::from_bits(0x4100),
+            filter: crate::ff::blit::FilterArg::Known(crate::ff::blit::BlitFilter::Linear),
+        }),
+        // A mask bit and a filter outside the sets travel as numbers (ff::blit).
+        Command::BlitFramebuffer(crate::ff::blit::Blit {
+            src: crate::ff::blit::BlitRect {
+                x0: 0,
+                y0: 0,
+                x1: 1,
+                y1: 1,
+            },
+            dst: crate::ff::blit::BlitRect {
+                x0: 0,
+                y0: 0,
+                x1: 1,
+                y1: 1,
+            },
+            mask: crate::ff::blit::BlitMask::from_bits(0x4201),
+            filter: crate::ff::blit::FilterArg::Other(0x0DE1),
+        }),
         Command::ClearColor(Vec4::new(0.5, 0.5, 0.5, 0.0)),
         Command::ClearDepth(1.0),
         Command::ClearStencil(128),
@@ -1123,4 +1156,38 @@ fn interleaved_arrays_read_a_buffer_from_an_offset() {
             Vec4::new(0.0, 1.0, 0.0, 1.0)
         ])
     );
+}
+
+#[test]
+fn multi_draws_read_pointer_arrays_and_become_one_draw_per_list() {
+    let head = "glVertexPointer(2, GL_FLOAT, 0, (GLfloat[]){0, 0, 1, 0, 0, 1, 1, 1});\n\
+                glEnableClientState(GL_VERTEX_ARRAY);\n";
+    let draws = |text: &str| {
+        parse(&format!("{head}{text}"))
+            .unwrap_or_else(|e| panic!("{text}: {e}"))
+            .into_iter()
+            .filter(|c| matches!(c, Command::Draw(_)))
+            .count()
+    };
+    assert_eq!(
+        draws("glMultiDrawElements(GL_TRIANGLES, (GLsizei[]){3, 3}, GL_UNSIGNED_BYTE, (const void *[]){(GLubyte[]){0, 1, 2}, (GLubyte[]){1, 3, 2}}, 2);"),
+        2
+    );
+    // An empty list draws nothing of its own (GL 1.5 §2.8).
+    assert_eq!(
+        draws("glMultiDrawArrays(GL_TRIANGLES, (GLint[]){0, 1}, (GLsizei[]){0, 3}, 2);"),
+        1
+    );
+    assert_eq!(
+        draws("glMultiDrawArrays(GL_TRIANGLES, (GLint[]){0}, (GLsizei[]){3}, 0);"),
+        0
+    );
+    for bad in [
+        "glMultiDrawArrays(GL_TRIANGLES, (GLint[]){0}, (GLsizei[]){3}, -1);",
+        "glMultiDrawArrays(GL_TRIANGLES, (GLint[]){0}, (GLsizei[]){-3}, 1);",
+        "glMultiDrawElements(GL_TRIANGLES, (GLsizei[]){3}, GL_UNSIGNED_BYTE, (const void *[]){(GLubyte[]){0, 1, 2}}, 2);",
+        "glMultiDrawElements(GL_TRIANGLES, (GLsizei[]){3}, GL_FLOAT, (const void *[]){(GLubyte[]){0, 1, 2}}, 1);",
+    ] {
+        assert!(parse(&format!("{head}{bad}")).is_err(), "{bad}");
+    }
 }

@@ -274,6 +274,25 @@ impl Issue for Emulate {
                     accum::clear(b, state);
                 }
             }
+            Command::BlitFramebuffer(b) => {
+                // The scissor box clips the blit (and no other raster state applies).
+                self.raster.sync(gl, state, None);
+                let (s, d) = (b.src, b.dst);
+                unsafe {
+                    gl.blit_framebuffer(
+                        s.x0,
+                        s.y0,
+                        s.x1,
+                        s.y1,
+                        d.x0,
+                        d.y0,
+                        d.x1,
+                        d.y1,
+                        b.mask.bits(),
+                        b.filter.value(),
+                    )
+                }
+            }
             Command::Accum { op, value } => {
                 if let Some(b) = &mut self.accum {
                     accum::accum(gl, b, state, *op, *value)?;

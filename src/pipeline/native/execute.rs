@@ -246,6 +246,23 @@ impl Native {
             | Command::DrawBuffer(_)
             | Command::ReadBuffer(_) => {}
             Command::GenerateMipmap(t) => unsafe { g.GenerateMipmap(conv::value(*t)) },
+            Command::BlitFramebuffer(b) => {
+                let (s, d) = (b.src, b.dst);
+                unsafe {
+                    g.BlitFramebuffer(
+                        s.x0,
+                        s.y0,
+                        s.x1,
+                        s.y1,
+                        d.x0,
+                        d.y0,
+                        d.x1,
+                        d.y1,
+                        b.mask.bits(),
+                        b.filter.value(),
+                    )
+                }
+            }
             Command::PushAttrib(mask) => {
                 unsafe { g.PushAttrib(mask.0) };
                 self.attrib_masks.push(*mask);

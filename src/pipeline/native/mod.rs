@@ -89,6 +89,28 @@ impl NativePipeline {
         Ok(PathPipeline::from_parts(core, path))
     }
 
+    /// A pipeline drawing into framebuffer 0 of `ctx` and its accumulation buffer: the
+    /// oracle of glAccum, since Mesa gives framebuffer objects no accumulation buffer. Only
+    /// an OSMesa context made with a window buffer (`gpu::WindowBuffer`) has one; on any
+    /// other, [`PipelineError::NoAccumBuffer`] names the backend to use. Binds
+    /// framebuffer 0.
+    pub fn with_window_accum(ctx: &GpuContext) -> Result<NativePipeline, PipelineError> {
+        let gl = ctx.gl();
+        // SAFETY: plain GL calls on the current context.
+        unsafe { gl.bind_framebuffer(glow::FRAMEBUFFER, None) };
+        let mut pipeline = Self::new(ctx)?;
+        // SAFETY: ACCUM_RED_BITS is one integer (compatibility profile, checked above).
+        let bits = unsafe { gl.get_parameter_i32(bindings::ACCUM_RED_BITS) };
+        let bits = u8::try_from(bits).unwrap_or(0);
+        if bits == 0 {
+            return Err(PipelineError::NoAccumBuffer {
+                backend: ctx.backend(),
+            });
+        }
+        pipeline.core.state.framebuffers.window_accum_bits = bits;
+        Ok(pipeline)
+    }
+
     /// How many GL texture objects the pipeline holds.
     pub fn texture_objects(&self) -> usize {
         self.path.textures.len()
