@@ -84,13 +84,14 @@ impl ArrayPointer {
     /// `default`. The span from the first to the last element named is read once, as GL
     /// reads an array, and decoded in place; only when the memory does not hold the whole
     /// span is each element read alone.
-    fn components(
+    fn components<T>(
         &self,
         mem: &dyn ClientMemory,
         which: &[usize],
         default: [f32; 4],
         take: impl Fn(f64) -> f32,
-    ) -> Vec<[f32; 4]> {
+        make: impl Fn([f32; 4]) -> T,
+    ) -> Vec<T> {
         let size = (self.size.max(0) as usize).min(4);
         let elem = ctype_size(self.ty);
         let stride = if self.stride > 0 {
@@ -98,7 +99,7 @@ impl ArrayPointer {
         } else {
             size * elem
         };
-        let decode_one = |bytes: &[u8]| decode_element(self.ty, bytes, size, default, &take);
+        let decode_one = |bytes: &[u8]| make(decode_element(self.ty, bytes, size, default, &take));
         let (Some(&lo), Some(&hi)) = (which.iter().min(), which.iter().max()) else {
             return Vec::new();
         };
@@ -111,7 +112,9 @@ impl ArrayPointer {
                 .iter()
                 .map(|&i| {
                     let at = (i - lo) * stride;
-                    bytes.get(at..at + size * elem).map_or(default, decode_one)
+                    bytes
+                        .get(at..at + size * elem)
+                        .map_or_else(|| make(default), decode_one)
                 })
                 .collect();
         }
@@ -120,7 +123,7 @@ impl ArrayPointer {
             .map(|&i| {
                 i.checked_mul(stride)
                     .and_then(|at| mem.read(&self.data, at, size * elem))
-                    .map_or(default, |b| decode_one(&b))
+                    .map_or_else(|| make(default), |b| decode_one(&b))
             })
             .collect()
     }
@@ -583,25 +586,31 @@ impl ClientArrays {
         }
         const XYZW: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
         let float = |x: f64| x as f32;
-        let vec4s = |c: Vec<[f32; 4]>| c.into_iter().map(Vec4::from_array).collect::<Vec<_>>();
-        let mut g = Geometry::new(mode, vec4s(self.vertex.components(mem, which, XYZW, float)));
+        let vec3 = |n: [f32; 4]| Vec3::new(n[0], n[1], n[2]);
+        let positions = self
+            .vertex
+            .components(mem, which, XYZW, float, Vec4::from_array);
+        let mut g = Geometry::new(mode, positions);
         if self.normal.enabled {
             let ty = self.normal.ty;
-            let c = self
-                .normal
-                .components(mem, which, [0.0, 0.0, 1.0, 0.0], |x| ty.normalized(x));
-            g.normals = Some(c.into_iter().map(|n| Vec3::new(n[0], n[1], n[2])).collect());
+            let default = [0.0, 0.0, 1.0, 0.0];
+            let normalized = |x| ty.normalized(x);
+            g.normals = Some(
+                self.normal
+                    .components(mem, which, default, normalized, vec3),
+            );
         }
         if self.color.enabled {
             let ty = self.color.ty;
+            let normalized = |x| ty.normalized(x);
             let c = self
                 .color
-                .components(mem, which, XYZW, |x| ty.normalized(x));
-            g.colors = Some(vec4s(c));
+                .components(mem, which, XYZW, normalized, Vec4::from_array);
+            g.colors = Some(c);
         }
         for (unit, t) in self.texcoord.iter().enumerate() {
             if t.enabled {
-                g.texcoords[unit] = Some(vec4s(t.components(mem, which, XYZW, float)));
+                g.texcoords[unit] = Some(t.components(mem, which, XYZW, float, Vec4::from_array));
             }
         }
         g.indices = indices.map(|ix| ix.iter().map(|&i| i as u32).collect());
@@ -748,12 +757,19 @@ fn read_indices(
 ) -> Option<Vec<usize>> {
     let size = ctype_size(ty);
     let bytes = mem.read(data, 0, count.checked_mul(size)?)?;
-    Some(
-        bytes
+    // The index types are UNSIGNED_BYTE, _SHORT and _INT (`index_type`), each read by its
+    // own loop.
+    Some(match ty {
+        CType::UByte | CType::Byte => bytes.iter().map(|&b| usize::from(b)).collect(),
+        CType::UShort | CType::Short => bytes
+            .chunks_exact(2)
+            .map(|b| usize::from(u16::from_ne_bytes([b[0], b[1]])))
+            .collect(),
+        _ => bytes
             .chunks_exact(size)
             .map(|b| decode(ty, b) as usize)
             .collect(),
-    )
+    })
 }
 
 /// glMultiDraw*'s drawcount: below 0 is INVALID_VALUE.

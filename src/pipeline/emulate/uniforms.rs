@@ -44,6 +44,23 @@ pub enum LightValue {
     Spot,
     /// (constant, linear, quadratic, 0).
     Attenuation,
+    /// A directional light's unit direction VP = P̂ (GL 1.5 §2.14.1), computed once per
+    /// draw as Mesa computes it on the CPU (`normalized_as_mesa`).
+    Direction,
+    /// A directional light's half vector for an infinite viewer, ĥ = normalize(P̂ + (0, 0, 1)),
+    /// also computed once per draw as Mesa does.
+    HalfVector,
+}
+
+/// v / |v| as Mesa's lighting normalises on the CPU: a zero vector stays zero (its length
+/// is tested before the division); a NaN one stays NaN.
+pub fn normalized_as_mesa(v: glam::Vec3) -> glam::Vec3 {
+    let len = v.length();
+    if len != 0.0 {
+        v * (1.0 / len)
+    } else {
+        v
+    }
 }
 
 /// A material parameter of one face.
@@ -212,6 +229,13 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
                     0.0,
                     0.0,
                 )),
+                LightValue::Direction => {
+                    Vec4(normalized_as_mesa(l.position.truncate()).extend(0.0))
+                }
+                LightValue::HalfVector => {
+                    let vp = normalized_as_mesa(l.position.truncate());
+                    Vec4(normalized_as_mesa(vp + glam::Vec3::Z).extend(0.0))
+                }
                 LightValue::Attenuation => Vec4(glam::Vec4::new(
                     l.constant_attenuation,
                     l.linear_attenuation,

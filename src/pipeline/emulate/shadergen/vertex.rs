@@ -308,7 +308,6 @@ fn emit_light(
     let (e, color) = (inputs.eye, inputs.color);
     let i = l.index;
     let u = |w: &mut GlslWriter, v| w.uniform(UniformSource::Light(i, v));
-    let pos = u(w, LightValue::Position);
     let la = u(w, LightValue::Ambient);
     let ld = u(w, LightValue::Diffuse);
     let ls = u(w, LightValue::Specular);
@@ -323,9 +322,11 @@ fn emit_light(
         ["front", "back"][face as usize]
     ));
     if l.directional {
-        w.line(format!("vec3 {v}_dir = normalize({pos}.xyz);"));
+        let dir = u(w, LightValue::Direction);
+        w.line(format!("vec3 {v}_dir = {dir}.xyz;"));
         w.line(format!("float {v}_att = 1.0;"));
     } else {
+        let pos = u(w, LightValue::Position);
         let k = u(w, LightValue::Attenuation);
         w.line(format!(
             "vec3 {v}_d = {pos}.xyz / {pos}.w - {e}.xyz / {e}.w;"
@@ -365,10 +366,15 @@ fn emit_light(
     } else {
         format!("{v}_c")
     };
+    // The half vector: constant for a directional light and an infinite viewer (computed
+    // on the CPU, as Mesa does), per vertex otherwise.
+    let half = if l.directional && !lighting.local_viewer {
+        format!("{}.xyz", u(w, LightValue::HalfVector))
+    } else {
+        format!("normalize({v}_dir + view_dir)")
+    };
     w.line(format!("if ({v}_ndl > 0.0) {{"));
-    w.line(format!(
-        "    float {v}_ndh = max(dot({n}, normalize({v}_dir + view_dir)), 0.0);"
-    ));
+    w.line(format!("    float {v}_ndh = max(dot({n}, {half}), 0.0);"));
     w.line(format!(
         "    {specular} += (({shin} == 0.0) ? 1.0 : pow({v}_ndh, {shin})) * {ms}.rgb * {ls}.rgb;"
     ));
