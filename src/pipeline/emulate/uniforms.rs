@@ -76,7 +76,9 @@ pub enum MaterialValue {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum UniformSource {
     Modelview,
-    Projection,
+    /// P · M, multiplied on the CPU as Mesa's fixed-function vertex program takes it
+    /// (`STATE_MVP_MATRIX`), so clip coordinates round as Mesa's do.
+    ModelviewProjection,
     /// Inverse transpose of the modelview's upper 3×3 (GL 1.5 §2.11.3).
     NormalMatrix,
     /// RESCALE_NORMAL's factor: 1 / length of the third row of that inverse.
@@ -121,7 +123,7 @@ impl UniformSource {
         let c = |c: TexCoord| ["s", "t", "r", "q"][c.index()];
         match self {
             UniformSource::Modelview => "u_modelview".into(),
-            UniformSource::Projection => "u_projection".into(),
+            UniformSource::ModelviewProjection => "u_mvp".into(),
             UniformSource::NormalMatrix => "u_normal_matrix".into(),
             UniformSource::RescaleFactor => "u_rescale".into(),
             UniformSource::TextureMatrix(u) => format!("u_texmat{u}"),
@@ -153,7 +155,7 @@ impl UniformSource {
     pub fn ty(self) -> UniformType {
         match self {
             UniformSource::Modelview
-            | UniformSource::Projection
+            | UniformSource::ModelviewProjection
             | UniformSource::TextureMatrix(_) => UniformType::Mat4,
             UniformSource::NormalMatrix => UniformType::Mat3,
             UniformSource::RescaleFactor
@@ -194,7 +196,9 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
     use UniformValue::*;
     match source {
         UniformSource::Modelview => Mat4(state.modelview_matrix()),
-        UniformSource::Projection => Mat4(state.projection_matrix()),
+        UniformSource::ModelviewProjection => {
+            Mat4(state.projection_matrix() * state.modelview_matrix())
+        }
         UniformSource::NormalMatrix => Mat3(
             glam::Mat3::from_mat4(crate::ff::matrix::inverse_or_identity(
                 state.modelview_matrix(),

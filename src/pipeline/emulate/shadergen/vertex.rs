@@ -32,11 +32,11 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     let flat = if fragment.flat { "flat " } else { "" };
     w.declare(&format!("{flat}out vec4 v_color;"));
     match key.positions {
-        // One expression for every program, so DepthFunc(EQUAL) passes see identical depths.
+        // One expression for every program, so DepthFunc(EQUAL) passes see identical
+        // depths: P·M applied at once, as Mesa's fixed-function program does.
         PositionSource::Transformed => {
-            let mv = w.uniform(UniformSource::Modelview);
-            let proj = w.uniform(UniformSource::Projection);
-            w.line(format!("gl_Position = {proj} * ({mv} * a_position);"))
+            let mvp = w.uniform(UniformSource::ModelviewProjection);
+            w.line(format!("gl_Position = {mvp} * a_position;"))
         }
         // Window coordinates back through the viewport (−S, −S, 2S, 2S) and depth range
         // [0, 1]: x_c = x_w / S, z_c = 2·z_w − 1, w_c = 1.
