@@ -25,6 +25,14 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_NV_register_combiners",
     "GL_SGIS_generate_mipmap",
     "GL_EXT_framebuffer_blit",
+    "GL_EXT_framebuffer_object",
+    "GL_ARB_vertex_buffer_object",
+    "GL_ARB_transpose_matrix",
+    "GL_ARB_window_pos",
+    "GL_EXT_texture_edge_clamp",
+    "GL_SGIS_texture_edge_clamp",
+    "GL_ARB_texture_border_clamp",
+    "GL_EXT_separate_specular_color",
 ];
 
 struct Strings {
