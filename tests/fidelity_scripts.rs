@@ -32,7 +32,7 @@ const fn case(name: &'static str, w: u32, h: u32, per_channel: u8, max_bad: usiz
 }
 
 /// The table. Tolerances are per channel (of 255) and a count of pixels allowed beyond it.
-const CASES: [Case; 21] = [
+const CASES: [Case; 22] = [
     case("alpha_test_boundaries", 8, 1, 0, 0),
     // GL's own glBlitFramebuffer on both paths (tests/fidelity_framebuffers.rs).
     Case {
@@ -44,6 +44,9 @@ const CASES: [Case; 21] = [
     case("depth_tex_compare", 128, 16, 0, 0),
     // fp32 fog factors on both paths; 3/255 on 99% as in tests/fidelity_fog.rs.
     case("fog", 64, 32, 3, 20),
+    // Pixel rectangles into a framebuffer object smaller than the window: window
+    // coordinates are the bound framebuffer's.
+    case("fbo_pixel_rectangles", 64, 64, 0, 0),
     // The same llvmpipe rasterises both paths; NEAREST sampling (tests/fidelity_framebuffers.rs).
     case("framebuffer_objects", 64, 32, 1, 0),
     // Mesa 22.3 fails configurations 3 and 4 natively (tests/fidelity_polygon_mode.rs):

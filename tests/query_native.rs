@@ -1282,3 +1282,78 @@ fn pixel_transfer_zoom_and_their_attribute_groups_agree() {
     s.push(Command::PopAttrib);
     assert_agree("pixel transfer popped", &s);
 }
+
+/// The smoothing, COLOR_SUM and MULTISAMPLE enables: Mesa's defaults, and each restored by
+/// its own attribute group and by ENABLE_BIT, in the model as in Mesa — except COLOR_SUM,
+/// which Mesa 22.3 restores with neither FOG_BIT nor ENABLE_BIT (GL 2.1 Table 6.11 says
+/// "fog/enable"): pinned here, followed by the model.
+#[test]
+fn smoothing_and_sum_enables_follow_their_attribute_groups() {
+    let caps = [
+        (
+            gl::POINT_SMOOTH,
+            Capability::PointSmooth,
+            AttribGroup::Point,
+        ),
+        (gl::LINE_SMOOTH, Capability::LineSmooth, AttribGroup::Line),
+        (
+            gl::POLYGON_SMOOTH,
+            Capability::PolygonSmooth,
+            AttribGroup::Polygon,
+        ),
+        (gl::COLOR_SUM, Capability::ColorSum, AttribGroup::Fog),
+        (
+            gl::MULTISAMPLE,
+            Capability::Multisample,
+            AttribGroup::Multisample,
+        ),
+    ];
+    for backend in HEADLESS {
+        let (_ctx, _t, native) = raw(backend);
+        let g = native.raw();
+        for (name, cap, group) in caps {
+            for mask in [
+                AttribMask::of(&[group]),
+                AttribMask::of(&[AttribGroup::Enable]),
+            ] {
+                let mut s = FixedState::new();
+                // SAFETY: plain GL calls.
+                let mesa = unsafe {
+                    let initial = g.IsEnabled(name) != 0;
+                    g.PushAttrib(mask.0);
+                    if initial {
+                        g.Disable(name)
+                    } else {
+                        g.Enable(name)
+                    }
+                    let flipped = g.IsEnabled(name) != 0;
+                    g.PopAttrib();
+                    let after = g.IsEnabled(name) != 0;
+                    // Back to the default for the next case, whatever the pop left.
+                    if initial {
+                        g.Enable(name)
+                    } else {
+                        g.Disable(name)
+                    }
+                    (initial, flipped, after, g.GetError())
+                };
+                let initial = s.is_enabled(name).unwrap();
+                let flip = if initial {
+                    Command::Disable(cap)
+                } else {
+                    Command::Enable(cap)
+                };
+                s.apply(&Command::PushAttrib(mask)).unwrap();
+                s.apply(&flip).unwrap();
+                let flipped = s.is_enabled(name).unwrap();
+                s.apply(&Command::PopAttrib).unwrap();
+                let model = (initial, flipped, s.is_enabled(name).unwrap(), 0);
+                assert_eq!(model, mesa, "{backend}: {cap:?} under {mask:?}");
+                assert_ne!(model.0, model.1, "{backend}: {cap:?} flips");
+                let restored = model.2 == model.0;
+                let mesa_keeps = cap == Capability::ColorSum;
+                assert_eq!(restored, !mesa_keeps, "{backend}: {cap:?} under {mask:?}");
+            }
+        }
+    }
+}

@@ -386,6 +386,11 @@ impl FixedState {
             Capability::ColorLogicOp => self.logic_op.enabled = on,
             Capability::IndexLogicOp => self.index_logic_op = on,
             Capability::Dither => self.dither = on,
+            Capability::PointSmooth => self.smooth.point = on,
+            Capability::LineSmooth => self.smooth.line = on,
+            Capability::PolygonSmooth => self.smooth.polygon = on,
+            Capability::ColorSum => self.color_sum = on,
+            Capability::Multisample => self.multisample = on,
             Capability::PolygonStipple => self.polygon_stipple.enabled = on,
             Capability::LineStipple => self.line_stipple.enabled = on,
             Capability::ClipPlane(i) => {

@@ -209,9 +209,10 @@ impl FixedState {
                 self.stencil_test = s.stencil_test;
                 self.clear.stencil = s.clear.stencil;
             }
-            // Culling, front face, polygon modes, offset and its enables (smoothing and
-            // the stipple enable are not modelled).
+            // Culling, front face, polygon modes, offset and its enables, smoothing and the
+            // stipple enable.
             AttribGroup::Polygon => {
+                self.smooth.polygon = s.smooth.polygon;
                 self.cull_face = s.cull_face;
                 self.front_face = s.front_face;
                 self.polygon_mode = s.polygon_mode;
@@ -224,8 +225,15 @@ impl FixedState {
             AttribGroup::Line => {
                 self.line_width = s.line_width;
                 self.line_stipple = s.line_stipple;
+                self.smooth.line = s.smooth.line;
             }
-            AttribGroup::Point => self.point_size = s.point_size,
+            AttribGroup::Point => {
+                self.point_size = s.point_size;
+                self.smooth.point = s.smooth.point;
+            }
+            // The fog. GL 2.1's Table 6.11 puts COLOR_SUM in "fog/enable"; Mesa 22.3
+            // restores it with neither (measured, tests/query_native.rs), nor does the
+            // model.
             AttribGroup::Fog => self.fog = s.fog,
             AttribGroup::Scissor => self.scissor = s.scissor,
             AttribGroup::Hint => self.hints = s.hints,
@@ -236,8 +244,9 @@ impl FixedState {
             }
             // ACCUM_CLEAR_VALUE (Table 6.20).
             AttribGroup::AccumBuffer => self.clear.accum = s.clear.accum,
+            AttribGroup::Multisample => self.multisample = s.multisample,
             // Not modelled yet: nothing saved, nothing restored.
-            AttribGroup::Eval | AttribGroup::List | AttribGroup::Multisample => {}
+            AttribGroup::Eval | AttribGroup::List => {}
         }
     }
 
@@ -274,6 +283,8 @@ impl FixedState {
         self.dither = s.dither;
         self.polygon_stipple.enabled = s.polygon_stipple.enabled;
         self.line_stipple.enabled = s.line_stipple.enabled;
+        self.smooth = s.smooth;
+        self.multisample = s.multisample;
     }
 
     /// TEXTURE_BIT: the active unit, every unit's enables, bindings, environment and
@@ -427,6 +438,7 @@ impl FixedState {
                     Capability::PolygonStipple,
                     self.polygon_stipple.enabled,
                 ));
+                out.push(toggle(Capability::PolygonSmooth, self.smooth.polygon));
             }
             AttribGroup::PolygonStipple => {
                 out.push(Command::PolygonStipple(self.polygon_stipple.value))
@@ -435,8 +447,12 @@ impl FixedState {
                 out.push(Command::LineWidth(self.line_width));
                 out.push(toggle(Capability::LineStipple, self.line_stipple.enabled));
                 out.push(Command::LineStipple(self.line_stipple.value));
+                out.push(toggle(Capability::LineSmooth, self.smooth.line));
             }
-            AttribGroup::Point => out.push(Command::PointSize(self.point_size)),
+            AttribGroup::Point => {
+                out.push(Command::PointSize(self.point_size));
+                out.push(toggle(Capability::PointSmooth, self.smooth.point));
+            }
             AttribGroup::Fog => {
                 let f = self.fog;
                 out.push(toggle(Capability::Fog, f.enabled));
@@ -463,7 +479,8 @@ impl FixedState {
             }
             AttribGroup::PixelMode => self.pixel_mode_commands(out),
             AttribGroup::AccumBuffer => out.push(Command::ClearAccum(self.clear.accum)),
-            AttribGroup::Eval | AttribGroup::List | AttribGroup::Multisample => {}
+            AttribGroup::Multisample => out.push(toggle(Capability::Multisample, self.multisample)),
+            AttribGroup::Eval | AttribGroup::List => {}
         }
     }
 
@@ -504,6 +521,10 @@ impl FixedState {
             self.polygon_stipple.enabled,
         ));
         out.push(toggle(Capability::LineStipple, self.line_stipple.enabled));
+        out.push(toggle(Capability::PointSmooth, self.smooth.point));
+        out.push(toggle(Capability::LineSmooth, self.smooth.line));
+        out.push(toggle(Capability::PolygonSmooth, self.smooth.polygon));
+        out.push(toggle(Capability::Multisample, self.multisample));
     }
 
     fn unit_enable_commands(&self, unit: &TextureUnit, out: &mut Vec<Command>) {

@@ -80,6 +80,19 @@ pub enum Capability {
     PolygonStipple,
     /// LINE_STIPPLE (§3.4.2).
     LineStipple,
+    /// POINT_SMOOTH (§3.3): antialiased points.
+    PointSmooth,
+    /// LINE_SMOOTH (§3.4.2): antialiased lines.
+    LineSmooth,
+    /// POLYGON_SMOOTH (§3.5.4): antialiased polygons.
+    PolygonSmooth,
+    /// COLOR_SUM (GL 1.4 §3.9): adds the secondary colour after texturing when lighting
+    /// is off. The model has no secondary colour yet (it stays (0, 0, 0)), so the sum adds
+    /// nothing: state only, and exact.
+    ColorSum,
+    /// MULTISAMPLE (GL 1.3 §3.2.1): no effect on the single-sample buffers the layer has;
+    /// state only, and exact.
+    Multisample,
 }
 
 /// glTexImage1D / glTexImage2D.

@@ -208,6 +208,11 @@ gl_enums!(Capability {
     LOGIC_OP => Capability::IndexLogicOp,
     POLYGON_STIPPLE => Capability::PolygonStipple,
     LINE_STIPPLE => Capability::LineStipple,
+    POINT_SMOOTH => Capability::PointSmooth,
+    LINE_SMOOTH => Capability::LineSmooth,
+    POLYGON_SMOOTH => Capability::PolygonSmooth,
+    COLOR_SUM => Capability::ColorSum,
+    MULTISAMPLE => Capability::Multisample,
 });
 
 gl_enums!(LogicOp {

@@ -527,6 +527,11 @@ impl FixedState {
             Capability::ColorLogicOp => self.logic_op.enabled,
             Capability::IndexLogicOp => self.index_logic_op,
             Capability::Dither => self.dither,
+            Capability::PointSmooth => self.smooth.point,
+            Capability::LineSmooth => self.smooth.line,
+            Capability::PolygonSmooth => self.smooth.polygon,
+            Capability::ColorSum => self.color_sum,
+            Capability::Multisample => self.multisample,
             Capability::PolygonStipple => self.polygon_stipple.enabled,
             Capability::LineStipple => self.line_stipple.enabled,
         })

@@ -37,6 +37,14 @@ pub const MAX_TEXTURE_UNITS: usize = 8;
 /// `tests/fidelity_clip_planes.rs`; GL 1.5 asks for at least 6).
 pub const MAX_CLIP_PLANES: usize = 8;
 
+/// The antialiasing enables (GL 1.5 §3.3, §3.4.2, §3.5.4). GL default: all FALSE.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Smoothing {
+    pub point: bool,
+    pub line: bool,
+    pub polygon: bool,
+}
+
 /// The current vertex values (glColor, glNormal, glMultiTexCoord).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CurrentValues {
@@ -203,6 +211,12 @@ pub struct FixedState {
     pub line_stipple: Toggle<LineStipple>,
     /// GL default: 1.
     pub point_size: f32,
+    /// POINT_SMOOTH, LINE_SMOOTH, POLYGON_SMOOTH. GL default: all FALSE.
+    pub smooth: Smoothing,
+    /// COLOR_SUM. GL default: FALSE (no effect without a secondary colour: Capability).
+    pub color_sum: bool,
+    /// MULTISAMPLE. GL default: TRUE (no effect on single-sample buffers).
+    pub multisample: bool,
     /// GL default: colour (0,0,0,0), depth 1, stencil 0.
     pub clear: ClearValues,
 
@@ -300,6 +314,9 @@ impl FixedState {
             logic_op: Toggle::off(LogicOp::Copy),
             index_logic_op: false,
             dither: true,
+            smooth: Smoothing::default(),
+            color_sum: false,
+            multisample: true,
             hints: Hints::DEFAULT,
             raster: RasterPos::DEFAULT,
             pixel_transfer: PixelTransfer::DEFAULT,

@@ -162,6 +162,22 @@ impl Emulate {
             state.offset_enables,
             geometry.primitive,
         );
+        // Antialiased points and lines: Mesa gives each fragment its coverage (its draw
+        // module's aapoint and aaline stages); the emulated path does not, and refuses the
+        // draw rather than draw them aliased. POLYGON_SMOOTH changes nothing on llvmpipe
+        // (measured: a blended triangle is the same pixels with it), so it is state only.
+        if state.smooth.point && passes.iter().any(|p| p.draws_points()) {
+            return Err(PipelineError::Unsupported {
+                what: "POINT_SMOOTH (enabled at a draw of points)",
+                path: "emulate",
+            });
+        }
+        if state.smooth.line && passes.iter().any(|p| p.draws_lines) {
+            return Err(PipelineError::Unsupported {
+                what: "LINE_SMOOTH (enabled at a draw of lines)",
+                path: "emulate",
+            });
+        }
         let stipple = state.line_stipple.get();
         if let (Some(stipple), true) = (stipple, stipple_dashes::is_line(geometry.primitive)) {
             let dashes = stipple_dashes::of_draw(state, stipple, geometry);

@@ -64,6 +64,13 @@ pub struct PolygonPass {
     pub positions: PositionSource,
 }
 
+impl PolygonPass {
+    /// The pass rasterises points: point primitives, or polygons in POINT mode.
+    pub fn draws_points(&self) -> bool {
+        !self.fills_polygons && !self.draws_lines
+    }
+}
+
 /// True for the primitives GL rasterises as polygons.
 fn is_polygonal(p: Primitive) -> bool {
     !matches!(
