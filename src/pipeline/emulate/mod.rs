@@ -156,12 +156,16 @@ impl Emulate {
         geometry: &Arc<Geometry>,
     ) -> Result<(), PipelineError> {
         let base = ShaderKey::from_state(state, self.precision);
-        let passes = polygon::passes(
+        let mut passes = polygon::passes(
             state.polygon_mode,
             state.cull_face.get(),
             state.offset_enables,
             geometry.primitive,
+            polygon::Outline::of(geometry),
         );
+        if polygon::hides_outline(geometry, state.current.edge_flag) {
+            passes.retain(|p| p.mode == crate::ff::PolygonMode::Fill);
+        }
         let stipple = state.line_stipple.get();
         if let (Some(stipple), true) = (stipple, stipple_dashes::is_line(geometry.primitive)) {
             let dashes = stipple_dashes::of_draw(state, stipple, geometry);
