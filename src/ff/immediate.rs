@@ -94,17 +94,21 @@ pub fn decode<A: Args>(c: &A) -> Result<Option<Op>, A::Error> {
             c.count(0)?;
             Some(Op::End)
         }
-        // GLboolean: any value other than 0 is TRUE.
+        // The flag is TRUE iff the GLboolean is 1, as Mesa keeps it (the value as a float,
+        // TRUE when it equals 1.0; measured with tests/c/edgeflags.c: glEdgeFlagv of 2
+        // leaves GL_EDGE_FLAG FALSE).
         Entry::EdgeFlag => {
             c.count(1)?;
-            Some(Op::Attribute(Attr::EdgeFlag(c.boolean(0)?)))
+            let on = match c.int(0) {
+                Ok(v) => v == 1,
+                Err(_) => c.boolean(0)?,
+            };
+            Some(Op::Attribute(Attr::EdgeFlag(on)))
         }
         Entry::EdgeFlagv => {
             c.count(1)?;
             let v = c.array_as(0, 1, super::api::CType::UByte)?;
-            Some(Op::Attribute(Attr::EdgeFlag(
-                v.first().is_some_and(|f| *f != 0.0),
-            )))
+            Some(Op::Attribute(Attr::EdgeFlag(v.first() == Some(&1.0))))
         }
         _ => None,
     })

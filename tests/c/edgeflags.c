@@ -112,39 +112,39 @@ int main(int argc, char **argv) {
   glColor3f(1, 1, 1);
   glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
   glBegin(GL_QUADS);
-  glVertex2f(4.5f, 4.5f);
+  glVertex2f(4.3f, 4.3f);
   glEdgeFlag(GL_FALSE);
-  glVertex2f(36.5f, 6.5f);
+  glVertex2f(36.3f, 6.3f);
   glEdgeFlag(GL_TRUE);
-  glVertex2f(34.5f, 28.5f);
+  glVertex2f(34.3f, 28.3f);
   glEdgeFlagv(&flags[1]);
-  glVertex2f(6.5f, 26.5f);
+  glVertex2f(6.3f, 26.3f);
   glEnd();
   lit("quad, two edges hidden", 0, 0, 40, 32);
   glBegin(GL_TRIANGLES);
   glEdgeFlag(GL_TRUE);
-  glVertex2f(44.5f, 4.5f);
-  glVertex2f(76.5f, 6.5f);
+  glVertex2f(44.3f, 4.3f);
+  glVertex2f(76.3f, 6.3f);
   glEdgeFlag(GL_FALSE);
-  glVertex2f(60.5f, 28.5f);
-  glVertex2f(80.5f, 4.5f);
+  glVertex2f(60.3f, 28.3f);
+  glVertex2f(80.3f, 4.3f);
   glEdgeFlag(GL_TRUE);
-  glVertex2f(100.5f, 28.5f);
-  glVertex2f(84.5f, 28.5f);
+  glVertex2f(100.3f, 28.3f);
+  glVertex2f(84.3f, 28.3f);
   glEnd();
   lit("triangles", 40, 0, 64, 32);
 
   /* The current flag FALSE: nothing of the polygon. */
   glEdgeFlag(GL_FALSE);
   glBegin(GL_POLYGON);
-  glVertex2f(106.5f, 4.5f); glVertex2f(124.5f, 6.5f); glVertex2f(120.5f, 28.5f);
+  glVertex2f(106.3f, 4.3f); glVertex2f(124.3f, 6.3f); glVertex2f(120.3f, 28.3f);
   glEnd();
   lit("polygon, current flag FALSE", 104, 0, 24, 32);
   glEdgeFlag(GL_TRUE);
 
   /* Row 2: the array through glDrawArrays, glDrawElements and glArrayElement. */
-  static const GLfloat v[] = {4.5f, 36.5f, 36.5f, 38.5f, 34.5f, 60.5f, 6.5f, 58.5f,
-                              44.5f, 36.5f, 76.5f, 38.5f, 74.5f, 60.5f, 46.5f, 58.5f};
+  static const GLfloat v[] = {4.3f, 36.3f, 36.3f, 38.3f, 34.3f, 60.3f, 6.3f, 58.3f,
+                              44.3f, 36.3f, 76.3f, 38.3f, 74.3f, 60.3f, 46.3f, 58.3f};
   static const GLubyte order[] = {5, 6, 7, 4};
   glVertexPointer(2, GL_FLOAT, 0, v);
   glEdgeFlagPointer(0, flags);
@@ -175,10 +175,10 @@ int main(int argc, char **argv) {
   glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
   glNewList(1, GL_COMPILE);
   glBegin(GL_TRIANGLES);
-  glVertex2f(44.5f, 68.5f);
+  glVertex2f(44.3f, 68.3f);
   glEdgeFlag(GL_FALSE);
-  glVertex2f(76.5f, 70.5f);
-  glVertex2f(60.5f, 92.5f);
+  glVertex2f(76.3f, 70.3f);
+  glVertex2f(60.3f, 92.3f);
   glEnd();
   glEndList();
   flag("after compiling");
@@ -189,11 +189,11 @@ int main(int argc, char **argv) {
   glPolygonMode(GL_FRONT, GL_LINE);
   glPolygonMode(GL_BACK, GL_POINT);
   glBegin(GL_QUADS);
-  glVertex2f(84.5f, 68.5f); glVertex2f(84.5f, 92.5f);
+  glVertex2f(84.3f, 68.3f); glVertex2f(84.3f, 92.3f);
   glEdgeFlag(GL_FALSE);
-  glVertex2f(124.5f, 90.5f);
+  glVertex2f(124.3f, 90.3f);
   glEdgeFlag(GL_TRUE);
-  glVertex2f(122.5f, 70.5f);
+  glVertex2f(122.3f, 70.3f);
   glEnd();
   lit("back face in POINT mode", 80, 64, 48, 32);
   err("drawing");
