@@ -574,6 +574,37 @@ fn stippled_lines_draw_and_answer_as_on_mesa() {
     assert_images_match("stipple", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
 
+/// `tests/c/edgeflags.c`: polygons drawn in LINE and POINT mode with edges hidden by
+/// glEdgeFlag, glEdgeFlagv, the current flag, GL_EDGE_FLAG_ARRAY (arrays, elements,
+/// glArrayElement) and a display list, and the edge-flag answers, stacks and errors, printed
+/// as Mesa prints them (the lit counts included); images within 3/255 on 99%, as the other
+/// programs; and its trace replays.
+#[test]
+fn edge_flags_draw_and_answer_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("edgeflags");
+    for line in [
+        "EDGE_FLAG default                        1  err 0x0",
+        "CURRENT_BIT popped                       0  err 0x0",
+        "glEdgeFlagv(2)                           0  err 0x0",
+        "glEdgeFlagPointer stride -1              err 0x501",
+        "after glInterleavedArrays                0  err 0x0",
+        "polygon, current flag FALSE              0 lit  err 0x0",
+    ] {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    assert_same_text(&mesa_text, &ours_text, 25, "an edge-flag answer");
+    assert_images_match("edgeflags", &ours, &mesa, within_3_on_99_percent(&mesa));
+    assert_trace_replays(
+        "edgeflags",
+        &compile("edgeflags", Linking::Direct),
+        &[],
+        "128x96",
+    );
+}
+
 /// `tests/c/blit.c`: glBlitFramebuffer between the window and framebuffer objects —
 /// scaled NEAREST and LINEAR, flipped, scissored, of colour, depth and stencil — and its
 /// errors, printed as Mesa prints them, with Mesa's image; and its trace replays.

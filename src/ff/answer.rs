@@ -185,14 +185,15 @@ fn client_enable(cap: u32, c: &Client) -> Option<bool> {
         r::NORMAL_ARRAY => a.normal.enabled,
         r::COLOR_ARRAY => a.color.enabled,
         r::TEXTURE_COORD_ARRAY => a.texcoord[usize::from(a.client_active)].enabled,
-        r::INDEX_ARRAY | r::EDGE_FLAG_ARRAY => false,
+        r::EDGE_FLAG_ARRAY => a.edge_flag.enabled,
+        r::INDEX_ARRAY => false,
         _ => return None,
     })
 }
 
 /// glGetPointerv (GL 1.5 §6.1.11): an array's pointer as it was given (an offset when a
 /// buffer was bound; a script's literal has no address and answers NULL). The colour-index
-/// and edge-flag arrays are never set; feedback and selection are left out: NULL.
+/// array is never set; feedback and selection are left out: NULL.
 fn pointer(pname: u32, c: &Client) -> Result<usize, GlErrorKind> {
     const FEEDBACK_BUFFER_POINTER: u32 = 0x0DF0;
     const SELECTION_BUFFER_POINTER: u32 = 0x0DF3;
@@ -202,10 +203,10 @@ fn pointer(pname: u32, c: &Client) -> Result<usize, GlErrorKind> {
         r::NORMAL_ARRAY_POINTER => &a.normal.data,
         r::COLOR_ARRAY_POINTER => &a.color.data,
         r::TEXTURE_COORD_ARRAY_POINTER => &a.texcoord[usize::from(a.client_active)].data,
-        r::INDEX_ARRAY_POINTER
-        | r::EDGE_FLAG_ARRAY_POINTER
-        | FEEDBACK_BUFFER_POINTER
-        | SELECTION_BUFFER_POINTER => &ArrayData::Null,
+        r::EDGE_FLAG_ARRAY_POINTER => &a.edge_flag.data,
+        r::INDEX_ARRAY_POINTER | FEEDBACK_BUFFER_POINTER | SELECTION_BUFFER_POINTER => {
+            &ArrayData::Null
+        }
         _ => return Err(GlErrorKind::InvalidEnum),
     };
     Ok(match data {
@@ -243,6 +244,7 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
         r::TEXTURE_COORD_ARRAY_SIZE => int(i64::from(unit.size)),
         r::TEXTURE_COORD_ARRAY_TYPE => enm(ty(unit.ty)),
         r::TEXTURE_COORD_ARRAY_STRIDE => int(i64::from(unit.stride)),
+        r::EDGE_FLAG_ARRAY_STRIDE => int(i64::from(a.edge_flag.stride)),
         r::LIST_BASE => int(i64::from(c.lists.base)),
         r::LIST_INDEX => int(i64::from(c.lists.compiling_name().unwrap_or(0))),
         r::LIST_MODE => match c.lists.compiling() {
@@ -258,6 +260,7 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
         r::NORMAL_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.normal.data))),
         r::COLOR_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.color.data))),
         r::TEXTURE_COORD_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&unit.data))),
+        r::EDGE_FLAG_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.edge_flag.data))),
         _ => None,
     }
 }

@@ -634,7 +634,7 @@ macro_rules! gl_entry_table {
         TexSubImage3DEXT = glTexSubImage3DEXT(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
         Accum = glAccum(Script; op: GLenum, value: GLfloat);
         ClearAccum = glClearAccum(Script; red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
-        EdgeFlag = glEdgeFlag(Left; flag: GLboolean);
+        EdgeFlag = glEdgeFlag(Script; flag: GLboolean);
         // Synchronisation, the error flag and strings (the C library answers them; a
         // script checks their arguments).
         Finish = glFinish(Script; );
@@ -690,7 +690,8 @@ macro_rules! gl_entry_table {
         LoadTransposeMatrixdARB = glLoadTransposeMatrixdARB(Script; m: *const GLdouble);
         MultTransposeMatrixfARB = glMultTransposeMatrixfARB(Script; m: *const GLfloat);
         MultTransposeMatrixdARB = glMultTransposeMatrixdARB(Script; m: *const GLdouble);
-        EdgeFlagv = glEdgeFlagv(Left; flag: *const GLboolean);
+        EdgeFlagv = glEdgeFlagv(Script; flag: *const GLboolean);
+        EdgeFlagPointer = glEdgeFlagPointer(Script; stride: GLsizei, pointer: *const c_void);
         GetBufferPointerv = glGetBufferPointerv(Script; target: GLenum, pname: GLenum, params: *mut *mut c_void);
         GetBufferPointervARB = glGetBufferPointervARB(Script; target: GLenum, pname: GLenum, params: *mut *mut c_void);
         // Polygon and line stipple, edge flags (ff::stipple).
@@ -1022,6 +1023,7 @@ impl Command {
             Command::Disable(_) => Entry::Disable,
             Command::Color(_) => Entry::Color4f,
             Command::Normal(_) => Entry::Normal3f,
+            Command::EdgeFlag(_) => Entry::EdgeFlag,
             Command::TexCoord { .. } => Entry::MultiTexCoord4f,
             Command::Light { param, .. } => match param {
                 LightParam::SpotExponent(_)

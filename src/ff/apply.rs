@@ -81,6 +81,7 @@ impl FixedState {
             Command::Disable(c) => self.set_capability(*c, false)?,
             Command::Color(c) => self.set_color(*c)?,
             Command::Normal(n) => self.current.normal = *n,
+            Command::EdgeFlag(f) => self.current.edge_flag = *f,
             Command::TexCoord { unit, coord } => {
                 let u = check_unit(*unit)?;
                 self.current.texcoords[u] = *coord;

@@ -338,6 +338,7 @@ impl FixedState {
             AttribGroup::Current => {
                 out.push(Command::Color(self.current.color));
                 out.push(Command::Normal(self.current.normal));
+                out.push(Command::EdgeFlag(self.current.edge_flag));
                 for (u, t) in self.current.texcoords.iter().enumerate() {
                     out.push(Command::TexCoord {
                         unit: u as u8,

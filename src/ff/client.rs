@@ -1,5 +1,6 @@
 //! Client vertex arrays (GL 1.5 §2.8): the pointers a program sets with glVertexPointer,
-//! glNormalPointer, glColorPointer and glTexCoordPointer (per client-active unit), their
+//! glNormalPointer, glColorPointer, glTexCoordPointer (per client-active unit) and
+//! glEdgeFlagPointer (GLboolean elements, one per vertex: 0 is FALSE), their
 //! enables, and the draws that read them (glDrawArrays, glDrawElements,
 //! glDrawRangeElements, glMultiDrawArrays, glMultiDrawElements, glArrayElement,
 //! glInterleavedArrays). This is client state: it
@@ -251,6 +252,8 @@ pub struct ClientArrays {
     pub normal: ArrayPointer,
     pub color: ArrayPointer,
     pub texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
+    /// glEdgeFlagPointer: size 1, type GLboolean (UNSIGNED_BYTE).
+    pub edge_flag: ArrayPointer,
     /// glClientActiveTexture: the unit glTexCoordPointer and the TEXTURE_COORD_ARRAY
     /// enable address. GL default: 0.
     pub client_active: u8,
@@ -263,6 +266,10 @@ impl Default for ClientArrays {
             normal: ArrayPointer::new(3),
             color: ArrayPointer::new(4),
             texcoord: std::array::from_fn(|_| ArrayPointer::new(4)),
+            edge_flag: ArrayPointer {
+                ty: CType::UByte,
+                ..ArrayPointer::new(1)
+            },
             client_active: 0,
         }
     }
@@ -274,6 +281,7 @@ pub struct Element {
     pub color: Option<Vec4>,
     pub normal: Option<Vec3>,
     pub texcoords: [Option<Vec4>; MAX_TEXTURE_UNITS],
+    pub edge_flag: Option<bool>,
     pub position: Option<Vec4>,
 }
 
@@ -301,6 +309,7 @@ impl ClientArrays {
                 | Entry::NormalPointer
                 | Entry::ColorPointer
                 | Entry::TexCoordPointer
+                | Entry::EdgeFlagPointer
                 | Entry::ClientActiveTexture
                 | Entry::ClientActiveTextureARB
                 | Entry::EnableClientState
@@ -395,6 +404,16 @@ impl ClientArrays {
                     ..p
                 };
             }
+            Entry::EdgeFlagPointer => {
+                let stride = stride(c, 0)?;
+                self.edge_flag = ArrayPointer {
+                    enabled: self.edge_flag.enabled,
+                    size: 1,
+                    ty: CType::UByte,
+                    stride,
+                    data: Buffers::source(c, 1, bound.array)?,
+                };
+            }
             Entry::ClientActiveTexture | Entry::ClientActiveTextureARB => {
                 let unit = c.family(0, Family::Texture)?;
                 if usize::from(unit) >= MAX_TEXTURE_UNITS {
@@ -422,8 +441,8 @@ impl ClientArrays {
                     "GL_TEXTURE_COORD_ARRAY" => {
                         self.texcoord[usize::from(self.client_active)].enabled = on
                     }
-                    // Colour-index and edge-flag arrays: accepted, never read (RGBA mode;
-                    // polygon edges are drawn whole).
+                    "GL_EDGE_FLAG_ARRAY" => self.edge_flag.enabled = on,
+                    // The colour-index array: accepted, never read (RGBA mode).
                     _ => {}
                 }
             }
@@ -556,7 +575,7 @@ impl ClientArrays {
 
     /// The buffers the arrays point into.
     pub fn buffer_names(&self) -> Vec<u32> {
-        [&self.vertex, &self.normal, &self.color]
+        [&self.vertex, &self.normal, &self.color, &self.edge_flag]
             .into_iter()
             .chain(self.texcoord.iter())
             .filter_map(|a| match a.data {
@@ -567,9 +586,14 @@ impl ClientArrays {
     }
 
     fn pointers_mut(&mut self) -> impl Iterator<Item = &mut ArrayPointer> {
-        [&mut self.vertex, &mut self.normal, &mut self.color]
-            .into_iter()
-            .chain(self.texcoord.iter_mut())
+        [
+            &mut self.vertex,
+            &mut self.normal,
+            &mut self.color,
+            &mut self.edge_flag,
+        ]
+        .into_iter()
+        .chain(self.texcoord.iter_mut())
     }
 
     /// The geometry of vertices `which` (each an element index), drawn through `indices`
@@ -613,6 +637,11 @@ impl ClientArrays {
                 g.texcoords[unit] = Some(t.components(mem, which, XYZW, float, Vec4::from_array));
             }
         }
+        if self.edge_flag.enabled {
+            // A GLboolean per vertex; an element the memory lacks is TRUE.
+            let c = self.edge_flag.components(mem, which, [1.0; 4], float);
+            g.edge_flags = Some(c.into_iter().map(|f| f[0] != 0.0).collect());
+        }
         g.indices = indices.map(|ix| ix.iter().map(|&i| i as u32).collect());
         Some(g)
     }
@@ -639,6 +668,7 @@ impl ClientArrays {
             if let Some(g) = with_vertex.geometry(Primitive::Points, &[i], None, mem) {
                 e.color = Geometry::last(&g.colors);
                 e.normal = Geometry::last(&g.normals);
+                e.edge_flag = Geometry::last(&g.edge_flags);
                 for (u, t) in g.texcoords.iter().enumerate() {
                     e.texcoords[u] = Geometry::last(t);
                 }
@@ -647,6 +677,7 @@ impl ClientArrays {
         };
         e.color = Geometry::last(&g.colors);
         e.normal = Geometry::last(&g.normals);
+        e.edge_flag = Geometry::last(&g.edge_flags);
         for (u, t) in g.texcoords.iter().enumerate() {
             e.texcoords[u] = Geometry::last(t);
         }
@@ -655,8 +686,8 @@ impl ClientArrays {
     }
 
     /// glInterleavedArrays(format, stride, pointer): sets and enables the arrays the
-    /// format names, disables the others (GL 1.5 §2.8, Table 2.5), on the client-active
-    /// unit.
+    /// format names, disables the others — the edge-flag and colour-index arrays among
+    /// them (GL 1.5 §2.8, Table 2.5) — on the client-active unit.
     fn interleaved<A: Args>(&mut self, c: &A, bound: Bindings) -> Result<(), A::Error> {
         // (name, texcoord size, colour size, colour type, normal, vertex size).
         const FORMATS: [(&str, i32, i32, CType, bool, i32); 14] = [
@@ -736,6 +767,7 @@ impl ClientArrays {
             }
         };
         self.vertex = make(vc, CType::Float, ov, true);
+        self.edge_flag.enabled = false;
         Ok(())
     }
 }

@@ -219,6 +219,8 @@ pub enum Command {
     Disable(Capability),
     Color(Vec4),
     Normal(Vec3),
+    /// glEdgeFlag(flag).
+    EdgeFlag(bool),
     /// glMultiTexCoord4f(TEXTURE0 + unit, s, t, r, q).
     TexCoord {
         unit: u8,

@@ -34,6 +34,10 @@ pub struct Geometry {
     pub colors: Option<Vec<Vec4>>,
     /// (s, t, r, q) per unit.
     pub texcoords: [Option<Vec<Vec4>>; MAX_TEXTURE_UNITS],
+    /// Per-vertex edge flags (glEdgeFlag inside glBegin/glEnd, EDGE_FLAG_ARRAY): `false`
+    /// marks the edge starting at the vertex as no boundary edge (GL 1.5 §2.6.2); only
+    /// TRIANGLES, QUADS and POLYGON in LINE or POINT polygon mode read them.
+    pub edge_flags: Option<Vec<bool>>,
     /// Indices into the arrays; `None` draws them in order.
     pub indices: Option<Vec<u32>>,
 }
@@ -60,6 +64,7 @@ impl Geometry {
         let same = |len: Option<usize>| len.is_none_or(|l| l == n);
         let ok = same(self.normals.as_ref().map(Vec::len))
             && same(self.colors.as_ref().map(Vec::len))
+            && same(self.edge_flags.as_ref().map(Vec::len))
             && self
                 .texcoords
                 .iter()
@@ -75,6 +80,24 @@ impl Geometry {
             }
         }
         Ok(())
+    }
+
+    /// Whether GL reads edge flags for this primitive: independent triangles, independent
+    /// quads and polygons (GL 1.5 §2.6.2; strips and fans take every edge as a boundary).
+    pub fn reads_edge_flags(&self) -> bool {
+        matches!(
+            self.primitive,
+            Primitive::Triangles | Primitive::Quads | Primitive::Polygon
+        )
+    }
+
+    /// The edge flag of vertex `i` (an index into the arrays): its array's value, or
+    /// `current` (the current edge flag) when the geometry has no array.
+    pub fn edge_flag(&self, i: u32, current: bool) -> bool {
+        match &self.edge_flags {
+            Some(f) => f.get(i as usize).copied().unwrap_or(true),
+            None => current,
+        }
     }
 
     /// The last value of an attribute array, if the array exists and is not empty: what

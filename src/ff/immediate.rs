@@ -38,14 +38,20 @@ struct Open {
     begin: CurrentValues,
     /// The current values as the calls inside the pair have set them.
     current: CurrentValues,
-    /// Attributes called inside the pair (colour, normal, texcoord per unit): each gets an
-    /// array at the next vertex, so a value set after the last vertex only stays current.
-    called: [bool; 2 + MAX_TEXTURE_UNITS],
+    /// Attributes called inside the pair (colour, normal, texcoord per unit, edge flag):
+    /// each gets an array at the next vertex, so a value set after the last vertex only
+    /// stays current.
+    called: [bool; CALLED],
     /// Some attribute was called whose array the next vertex creates.
     pending: bool,
     /// Some texture unit has an array (the vertex loop over the units is skipped if not).
     texcoord_arrays: bool,
 }
+
+/// The attributes a pair tracks: colour, normal, one texture coordinate per unit, and the
+/// edge flag (at [`EDGE_FLAG`]).
+const CALLED: usize = 3 + MAX_TEXTURE_UNITS;
+const EDGE_FLAG: usize = 2 + MAX_TEXTURE_UNITS;
 
 /// The most vertices a pair's arrays are sized for ahead of its calls.
 const MAX_RESERVED_VERTICES: usize = 1 << 16;
@@ -56,6 +62,8 @@ pub enum Attr {
     Color(Vec4),
     Normal(Vec3),
     TexCoord(u8, Vec4),
+    /// glEdgeFlag (GL 1.5 §2.6.2).
+    EdgeFlag(bool),
 }
 
 /// One immediate-mode call with its values read: what a display list keeps of it.
@@ -85,6 +93,22 @@ pub fn decode<A: Args>(c: &A) -> Result<Option<Op>, A::Error> {
         Entry::End => {
             c.count(0)?;
             Some(Op::End)
+        }
+        // The flag is TRUE iff the GLboolean is 1, as Mesa keeps it (the value as a float,
+        // TRUE when it equals 1.0; measured with tests/c/edgeflags.c: glEdgeFlagv of 2
+        // leaves GL_EDGE_FLAG FALSE).
+        Entry::EdgeFlag => {
+            c.count(1)?;
+            let on = match c.int(0) {
+                Ok(v) => v == 1,
+                Err(_) => c.boolean(0)?,
+            };
+            Some(Op::Attribute(Attr::EdgeFlag(on)))
+        }
+        Entry::EdgeFlagv => {
+            c.count(1)?;
+            let v = c.array_as(0, 1, super::api::CType::UByte)?;
+            Some(Op::Attribute(Attr::EdgeFlag(v.first() == Some(&1.0))))
         }
         _ => None,
     })
@@ -250,6 +274,9 @@ impl Immediate {
                 self.attribute(Attr::TexCoord(unit as u8, *t), out)?;
             }
         }
+        if let Some(f) = e.edge_flag {
+            self.attribute(Attr::EdgeFlag(f), out)?;
+        }
         match (e.position, self.open.is_some()) {
             (Some(p), true) => self.vertex(p),
             _ => Ok(()),
@@ -264,7 +291,7 @@ impl Immediate {
             geometry: Geometry::new(primitive, Vec::with_capacity(self.last_vertices)),
             begin: *current,
             current: *current,
-            called: [false; 2 + MAX_TEXTURE_UNITS],
+            called: [false; CALLED],
             pending: false,
             texcoord_arrays: false,
         });
@@ -286,6 +313,7 @@ impl Immediate {
                 Attr::Color(v) => Command::Color(v),
                 Attr::Normal(v) => Command::Normal(v),
                 Attr::TexCoord(unit, coord) => Command::TexCoord { unit, coord },
+                Attr::EdgeFlag(f) => Command::EdgeFlag(f),
             });
             return Ok(());
         };
@@ -313,6 +341,9 @@ pub fn changed_current(begin: &CurrentValues, now: &CurrentValues, out: &mut Vec
     if begin.normal != now.normal {
         out.push(Command::Normal(now.normal));
     }
+    if begin.edge_flag != now.edge_flag {
+        out.push(Command::EdgeFlag(now.edge_flag));
+    }
     for u in 0..MAX_TEXTURE_UNITS {
         if begin.texcoords[u] != now.texcoords[u] {
             out.push(Command::TexCoord {
@@ -337,6 +368,9 @@ impl Open {
         }
         if let Some(v) = &mut g.normals {
             v.push(cur.normal);
+        }
+        if let Some(v) = &mut g.edge_flags {
+            v.push(cur.edge_flag);
         }
         if self.texcoord_arrays {
             for (u, t) in g.texcoords.iter_mut().enumerate() {
@@ -368,6 +402,10 @@ impl Open {
                 self.current.texcoords[u] = coord;
                 2 + u
             }
+            Attr::EdgeFlag(f) => {
+                self.current.edge_flag = f;
+                EDGE_FLAG
+            }
         };
         if !self.called[index] {
             self.called[index] = true;
@@ -380,7 +418,7 @@ impl Open {
     /// values for the vertices already emitted.
     fn arrays_for_called(&mut self) {
         self.pending = false;
-        self.texcoord_arrays |= self.called[2..].iter().any(|c| *c);
+        self.texcoord_arrays |= self.called[2..EDGE_FLAG].iter().any(|c| *c);
         let n = self.geometry.positions.len();
         let g = &mut self.geometry;
         // Each new array is sized like the positions will be.
@@ -401,6 +439,11 @@ impl Open {
             if self.called[2 + u] && t.is_none() {
                 *t = Some(filled(self.begin.texcoords[u]));
             }
+        }
+        if self.called[EDGE_FLAG] && g.edge_flags.is_none() {
+            let mut v = Vec::with_capacity(g.positions.capacity());
+            v.resize(n, self.begin.edge_flag);
+            g.edge_flags = Some(v);
         }
     }
 }

@@ -19,8 +19,10 @@ use super::immediate::{Attr, Immediate, Op};
 use super::lists::Item;
 use super::state::{CurrentValues, MAX_TEXTURE_UNITS};
 
-/// Attributes a pair can call: colour, normal, one texture coordinate per unit.
-const ATTRIBUTES: usize = 2 + MAX_TEXTURE_UNITS;
+/// Attributes a pair can call: colour, normal, one texture coordinate per unit, the edge
+/// flag (at [`EDGE_FLAG`]).
+const ATTRIBUTES: usize = 3 + MAX_TEXTURE_UNITS;
+const EDGE_FLAG: usize = 2 + MAX_TEXTURE_UNITS;
 
 /// One assembled glBegin … glEnd.
 #[derive(Clone, Debug, PartialEq)]
@@ -50,6 +52,9 @@ impl Pair {
             if self.called[2 + u] {
                 now.texcoords[u] = self.left.texcoords[u];
             }
+        }
+        if self.called[EDGE_FLAG] {
+            now.edge_flag = self.left.edge_flag;
         }
         super::immediate::changed_current(current, &now, out);
     }
@@ -118,6 +123,10 @@ fn assemble_pair(items: Vec<Item>) -> Option<Pair> {
                 *left.texcoords.get_mut(u)? = v;
                 2 + u
             }
+            Attr::EdgeFlag(f) => {
+                left.edge_flag = f;
+                EDGE_FLAG
+            }
         };
         if !called[index] && vertices > 0 {
             return None;
@@ -141,6 +150,9 @@ fn assemble_pair(items: Vec<Item>) -> Option<Pair> {
                     if let Some(t) = t {
                         set(Attr::TexCoord(u8::try_from(unit).ok()?, *t), vertices)?;
                     }
+                }
+                if let Some(f) = e.edge_flag {
+                    set(Attr::EdgeFlag(f), vertices)?;
                 }
                 if e.position.is_some() {
                     vertices += 1;

@@ -69,6 +69,7 @@ pub fn compiled(entry: Entry) -> bool {
             | Entry::NormalPointer
             | Entry::ColorPointer
             | Entry::TexCoordPointer
+            | Entry::EdgeFlagPointer
             | Entry::ClientActiveTexture
             | Entry::ClientActiveTextureARB
             | Entry::EnableClientState
@@ -157,6 +158,7 @@ pub fn follow(current: &mut CurrentValues, cmd: &Command) {
     match cmd {
         Command::Color(c) => current.color = *c,
         Command::Normal(n) => current.normal = *n,
+        Command::EdgeFlag(f) => current.edge_flag = *f,
         Command::TexCoord { unit, coord } => {
             if let Some(t) = current.texcoords.get_mut(usize::from(*unit)) {
                 *t = *coord;

@@ -256,6 +256,7 @@ pnames! {
     // Current values (Table 6.5): the texture coordinates of the active unit.
     CURRENT_COLOR => |s| normalized(&s.current.color.to_array()),
     CURRENT_NORMAL => |s| normalized(&s.current.normal.to_array()),
+    EDGE_FLAG => |s| boolean(s.current.edge_flag),
     CURRENT_TEXTURE_COORDS => |s| floats(&s.current.texcoords[s.active_unit()].to_array()),
 
     // The raster position (Table 6.5, `raster`): the active unit's texture coordinates.

@@ -54,6 +54,9 @@ pub struct CurrentValues {
     pub normal: Vec3,
     /// GL default: (0, 0, 0, 1) on every unit.
     pub texcoords: [Vec4; MAX_TEXTURE_UNITS],
+    /// glEdgeFlag: whether an edge starting at a vertex is a boundary edge of its
+    /// polygon (GL 1.5 §2.6.2). GL default: TRUE.
+    pub edge_flag: bool,
 }
 
 impl CurrentValues {
@@ -61,6 +64,7 @@ impl CurrentValues {
         color: Vec4::ONE,
         normal: Vec3::Z,
         texcoords: [Vec4::W; MAX_TEXTURE_UNITS],
+        edge_flag: true,
     };
 }
 

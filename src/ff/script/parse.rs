@@ -781,7 +781,7 @@ impl Call<'_, '_> {
         for (neg, text) in values {
             let int = || int_literal(text).map(|v| if *neg { -v } else { v });
             let ok = match ty {
-                "GLubyte" => int()
+                "GLubyte" | "GLboolean" => int()
                     .and_then(|v| u8::try_from(v).ok())
                     .map(|v| bytes.push(v)),
                 "GLushort" => int()
@@ -806,7 +806,7 @@ impl Call<'_, '_> {
                 _ => {
                     return Err(self.bad(
                         i,
-                        "a GLubyte, GLbyte, GLushort, GLshort, GLuint, GLint, GLfloat or GLdouble array",
+                        "a GLubyte, GLboolean, GLbyte, GLushort, GLshort, GLuint, GLint, GLfloat or GLdouble array",
                     ))
                 }
             };

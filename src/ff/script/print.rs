@@ -191,6 +191,7 @@ fn call(c: &Command) -> String {
         Command::Disable(cap) => format!("{}({})", Entry::Disable, capability(*cap)),
         Command::Color(c) => format!("{}({})", Entry::Color4f, fs(&c.to_array())),
         Command::Normal(v) => format!("{}({})", Entry::Normal3f, fs(&v.to_array())),
+        Command::EdgeFlag(on) => format!("{}({})", Entry::EdgeFlag, b(*on)),
         Command::TexCoord { unit, coord } => format!(
             "{}({}, {})",
             Entry::MultiTexCoord4f,
@@ -847,7 +848,11 @@ fn draw(out: &mut String, g: &Geometry) {
     }
     // A draw with attribute arrays prints as client arrays too: glColor and its kin inside
     // glBegin/glEnd would also set the current values, which a draw does not.
-    if g.colors.is_some() || g.normals.is_some() || g.texcoords.iter().any(Option::is_some) {
+    if g.colors.is_some()
+        || g.normals.is_some()
+        || g.edge_flags.is_some()
+        || g.texcoords.iter().any(Option::is_some)
+    {
         return draw_arrays(out, g, None);
     }
     line(out, format_args!("{}({})", Entry::Begin, n(g.primitive)));
@@ -928,6 +933,18 @@ fn draw_arrays(out: &mut String, g: &Geometry, indices: Option<&[u32]>) {
             format_args!("{}(GL_FLOAT, 0, {})", Entry::NormalPointer, arr(&flat)),
         );
         enabled.push("GL_NORMAL_ARRAY");
+    }
+    if let Some(flags) = &g.edge_flags {
+        let list: Vec<&str> = flags.iter().map(|f| if *f { "1" } else { "0" }).collect();
+        line(
+            out,
+            format_args!(
+                "{}(0, (GLboolean[]){{{}}})",
+                Entry::EdgeFlagPointer,
+                list.join(", ")
+            ),
+        );
+        enabled.push("GL_EDGE_FLAG_ARRAY");
     }
     for name in &enabled {
         line(out, format_args!("{}({name})", Entry::EnableClientState));

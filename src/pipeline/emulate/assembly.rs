@@ -58,9 +58,18 @@ pub struct Polygon {
 }
 
 /// The polygons of `primitive` over `indices` (the vertices in submission order); empty for
-/// the types core GL draws itself. Incomplete trailing polygons are dropped (GL 1.5 §2.6.1).
+/// the types core GL draws itself, TRIANGLES apart (their corners carry edge flags,
+/// `polygon`). Incomplete trailing polygons are dropped (GL 1.5 §2.6.1).
 pub fn polygons(primitive: Primitive, indices: &[u32]) -> Vec<Polygon> {
     match primitive {
+        // Triangle i: 3i, 3i+1, 3i+2; provoking 3i+2 (the last).
+        Primitive::Triangles => indices
+            .chunks_exact(3)
+            .map(|t| Polygon {
+                vertices: t.to_vec(),
+                provoking: 2,
+            })
+            .collect(),
         // Quad i: 4i, 4i+1, 4i+2, 4i+3; provoking 4i+3 (the last).
         Primitive::Quads => indices
             .chunks_exact(4)

@@ -5,6 +5,8 @@
 //! unshared triangle corners carrying the edge attribute of `polygon` (so LINE and POINT
 //! modes can drop what the split added) and their polygon's provoking vertex as the shade
 //! attributes (so a flat polygon has one colour, whichever triangle a fragment is in).
+//! TRIANGLES whose edge-flag array has a FALSE are uploaded as corners too
+//! (`polygon::Outline`).
 //!
 //! Mesa's QUADS split depends on the draw: indexed quads are split v1–v3; non-indexed ones
 //! v0–v2, except each chunk of 1024 quads that has a vertex outside the clip volume, split
@@ -18,7 +20,7 @@ use glam::{Vec3, Vec4};
 use glow::HasContext;
 
 use super::assembly::{self, Diagonal};
-use super::polygon::{split_corners, Corner};
+use super::polygon::{split_corners, Corner, Outline};
 use super::shadergen::{
     ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR,
     ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0,
@@ -84,7 +86,8 @@ fn corners_of(g: &Geometry, base: &[u32]) -> (Vec<Corner>, Vec<(Diagonal, i32)>)
     let mut blocks = Vec::new();
     for diagonal in uploaded_splits(g) {
         blocks.push((diagonal, count(corners.len())));
-        corners.extend(split_corners(g.primitive, base, diagonal).unwrap_or_default());
+        let flag = |v: u32| g.edge_flag(v, true);
+        corners.extend(split_corners(g.primitive, base, diagonal, flag).unwrap_or_default());
     }
     (corners, blocks)
 }
@@ -128,7 +131,8 @@ impl<'a> Floats<'a> {
 
 impl GpuGeometry {
     pub fn upload(gl: &glow::Context, g: &Arc<Geometry>) -> Result<GpuGeometry, PipelineError> {
-        let split = core_mode(g.primitive).is_none();
+        let split = Outline::of(g) == Outline::Corners;
+        let mode = if split { None } else { core_mode(g.primitive) };
         let (corners, blocks) = if split {
             let base: Vec<u32> = g
                 .indices
@@ -200,7 +204,7 @@ impl GpuGeometry {
                 let b = buffer(bytemuck::cast_slice(&edges))?;
                 point(b, ATTRIB_EDGE, 4);
             }
-            let shape = match (core_mode(g.primitive), &g.indices) {
+            let shape = match (mode, &g.indices) {
                 (Some(mode), Some(indices)) => {
                     let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
                     gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));

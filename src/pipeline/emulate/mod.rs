@@ -156,12 +156,16 @@ impl Emulate {
         geometry: &Arc<Geometry>,
     ) -> Result<(), PipelineError> {
         let base = ShaderKey::from_state(state, self.precision);
-        let passes = polygon::passes(
+        let mut passes = polygon::passes(
             state.polygon_mode,
             state.cull_face.get(),
             state.offset_enables,
             geometry.primitive,
+            polygon::Outline::of(geometry),
         );
+        if polygon::hides_outline(geometry, state.current.edge_flag) {
+            passes.retain(|p| p.mode == crate::ff::PolygonMode::Fill);
+        }
         // Antialiased points and lines: Mesa gives each fragment its coverage (its draw
         // module's aapoint and aaline stages); the emulated path does not, and refuses the
         // draw rather than draw them aliased. POLYGON_SMOOTH changes nothing on llvmpipe

@@ -20,6 +20,15 @@
 //!   extrapolate below 0).
 //!   e.w is 1 on the one corner that owns each polygon vertex, so POINT mode keeps a point
 //!   iff e.w ≠ 0 and a vertex shared by the two triangles of a quad is drawn once.
+//! - **Edge flags ride on the same attribute** (§2.6.2: TRIANGLES, QUADS and POLYGON read
+//!   them; strips and fans do not). The polygon edge from vertex k to k+1 is a boundary edge
+//!   only if k's flag is TRUE, so a FALSE flag makes it a split edge (1 at every corner).
+//!   POINT mode draws a vertex only if its flag is TRUE, as Mesa's draw module does
+//!   (`draw_pipe_unfilled.c` tests the vertex's flag for points as for lines; measured in
+//!   tests/fidelity_edge_flags.rs). TRIANGLES with an edge-flag array holding a FALSE are
+//!   uploaded as corners too ([`Outline::Corners`]); without an array every vertex has the
+//!   current flag, and a FALSE one leaves nothing to draw in LINE or POINT mode
+//!   ([`hides_outline`]).
 //!
 //! - **One offset enable per pass.** Each pass rasterises in one mode, so only that mode's
 //!   enable is sent (all three on or all off). This also keeps llvmpipe from offsetting
@@ -33,7 +42,35 @@
 
 use super::assembly::{self, Diagonal};
 use super::key::PositionSource;
-use crate::ff::{Face, OffsetEnables, PolygonMode, PolygonModes, Primitive};
+use crate::ff::{Face, Geometry, OffsetEnables, PolygonMode, PolygonModes, Primitive};
+
+/// How a draw's polygons reach core GL.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outline {
+    /// As core GL primitives, every edge a boundary edge.
+    Core,
+    /// As unshared triangle corners with the edge attribute.
+    Corners,
+}
+
+impl Outline {
+    /// QUADS, QUAD_STRIP and POLYGON, and TRIANGLES whose edge-flag array has a FALSE.
+    pub fn of(g: &Geometry) -> Outline {
+        let flagged = g.primitive == Primitive::Triangles
+            && g.edge_flags.as_ref().is_some_and(|f| f.contains(&false));
+        if is_split(g.primitive) || flagged {
+            Outline::Corners
+        } else {
+            Outline::Core
+        }
+    }
+}
+
+/// True when `g` has no edge-flag array, reads edge flags, and the current flag is FALSE:
+/// no edge is a boundary edge and no vertex a point, so LINE and POINT modes draw nothing.
+pub fn hides_outline(g: &Geometry, current_flag: bool) -> bool {
+    !current_flag && g.edge_flags.is_none() && g.reads_edge_flags()
+}
 
 /// Which rasterised fragments of split polygons are kept (`None` in the key: all).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -87,12 +124,14 @@ pub fn is_split(p: Primitive) -> bool {
     )
 }
 
-/// The passes that draw `primitive` under the GL 1.x `modes`, `cull` and offset state.
+/// The passes that draw `primitive`, reaching core GL as `outline`, under the GL 1.x
+/// `modes`, `cull` and offset state.
 pub fn passes(
     modes: PolygonModes,
     cull: Option<Face>,
     enables: OffsetEnables,
     primitive: Primitive,
+    outline: Outline,
 ) -> Vec<PolygonPass> {
     let pass = |mode: PolygonMode, cull: Option<Face>| PolygonPass {
         mode,
@@ -103,7 +142,7 @@ pub fn passes(
             PolygonMode::Point => enables.point,
         },
         edges: match mode {
-            _ if !is_split(primitive) => None,
+            _ if outline == Outline::Core => None,
             PolygonMode::Fill => None,
             PolygonMode::Line => Some(EdgeRule::BoundaryEdges),
             PolygonMode::Point => Some(EdgeRule::OwnedVertices),
@@ -145,33 +184,43 @@ pub struct Corner {
     pub edge: [f32; 4],
 }
 
-/// The triangle corners of the polygons of a split primitive, split as `assembly` says
-/// (`diagonal` for QUADS), with their edge attributes; `None` for primitives that are not
-/// split. An edge of a triangle is a boundary edge iff its two vertices are neighbours in
-/// the polygon (positions k and k+1 mod n); a vertex is owned by the first corner it has.
+/// The triangle corners of the polygons of a split primitive (or of TRIANGLES), split as
+/// `assembly` says (`diagonal` for QUADS), with their edge attributes; `None` for the other
+/// primitives. An edge of a triangle is a boundary edge iff its two vertices are neighbours
+/// in the polygon (positions k and k+1 mod n) and the flag of the first, `flag(vertex)`, is
+/// TRUE (read for TRIANGLES, QUADS and POLYGON only); a vertex is owned by the first corner
+/// it has, and drawn as a point only if its flag is TRUE.
 pub fn split_corners(
     primitive: Primitive,
     indices: &[u32],
     diagonal: Diagonal,
+    flag: impl Fn(u32) -> bool,
 ) -> Option<Vec<Corner>> {
-    if !is_split(primitive) {
+    if !is_split(primitive) && primitive != Primitive::Triangles {
         return None;
     }
+    let reads_flags = primitive != Primitive::QuadStrip;
     let mut out = Vec::new();
     for poly in assembly::polygons(primitive, indices) {
         let n = poly.vertices.len();
         let mut owned = vec![false; n];
         let provoking = poly.vertices[poly.provoking];
+        let flags: Vec<bool> = poly
+            .vertices
+            .iter()
+            .map(|&v| !reads_flags || flag(v))
+            .collect();
         for tri in assembly::triangles(primitive, n, diagonal) {
             for (c, &k) in tri.iter().enumerate() {
                 let mut e = [0.0; 4];
                 for m in 0..3 {
-                    // The edge opposite corner m joins the other two corners.
+                    // The edge opposite corner m joins the other two corners; it is the
+                    // polygon edge a → a+1 (or b → b+1), which a's flag marks.
                     let (a, b) = (tri[(m + 1) % 3], tri[(m + 2) % 3]);
-                    let boundary = (a + 1) % n == b || (b + 1) % n == a;
+                    let boundary = ((a + 1) % n == b && flags[a]) || ((b + 1) % n == a && flags[b]);
                     e[m] = if !boundary || m == c { 1.0 } else { 0.0 };
                 }
-                e[3] = if owned[k] { 0.0 } else { 1.0 };
+                e[3] = if owned[k] || !flags[k] { 0.0 } else { 1.0 };
                 owned[k] = true;
                 out.push(Corner {
                     vertex: poly.vertices[k],
@@ -188,6 +237,21 @@ pub fn split_corners(
 mod tests {
     use super::*;
 
+    /// The passes of `p` reaching core GL as its type does without edge flags.
+    fn passes_of(
+        modes: PolygonModes,
+        cull: Option<Face>,
+        enables: OffsetEnables,
+        p: Primitive,
+    ) -> Vec<PolygonPass> {
+        let outline = if is_split(p) {
+            Outline::Corners
+        } else {
+            Outline::Core
+        };
+        passes(modes, cull, enables, p, outline)
+    }
+
     const FILL_LINE: PolygonModes = PolygonModes {
         front: PolygonMode::Fill,
         back: PolygonMode::Line,
@@ -200,8 +264,8 @@ mod tests {
     };
 
     #[test]
-    fn separate_modes_take_two_culled_passes() {
-        let p = passes(FILL_LINE, None, OFFSETS, Primitive::Polygon);
+    fn separate_modes_take_two_culled_passes_of() {
+        let p = passes_of(FILL_LINE, None, OFFSETS, Primitive::Polygon);
         assert_eq!(p.len(), 2);
         assert_eq!(
             (p[0].mode, p[0].cull),
@@ -214,17 +278,20 @@ mod tests {
         assert_eq!(p[1].edges, Some(EdgeRule::BoundaryEdges));
         // Only the LINE pass is offset; lines themselves never are.
         assert_eq!((p[0].offset, p[1].offset), (false, true));
-        assert!(!passes(FILL_LINE, None, OFFSETS, Primitive::Lines)[0].offset);
+        assert!(!passes_of(FILL_LINE, None, OFFSETS, Primitive::Lines)[0].offset);
         // Culling one face leaves one pass in the other face's mode.
-        let back_culled = passes(FILL_LINE, Some(Face::Back), OFFSETS, Primitive::Quads);
+        let back_culled = passes_of(FILL_LINE, Some(Face::Back), OFFSETS, Primitive::Quads);
         assert_eq!(back_culled.len(), 1);
         assert_eq!(back_culled[0].mode, PolygonMode::Fill);
-        let front_culled = passes(FILL_LINE, Some(Face::Front), OFFSETS, Primitive::Triangles);
+        let front_culled = passes_of(FILL_LINE, Some(Face::Front), OFFSETS, Primitive::Triangles);
         assert_eq!(front_culled[0].mode, PolygonMode::Line);
         // Triangles are not split: every edge is a boundary, no rule needed.
         assert_eq!(front_culled[0].edges, None);
         // Lines and points ignore polygon modes.
-        assert_eq!(passes(FILL_LINE, None, OFFSETS, Primitive::Lines).len(), 1);
+        assert_eq!(
+            passes_of(FILL_LINE, None, OFFSETS, Primitive::Lines).len(),
+            1
+        );
     }
 
     /// The edges of each triangle whose attribute component is 0 at both ends (drawn in
@@ -256,7 +323,7 @@ mod tests {
             (Diagonal::V0V2, [0, 1, 2, 0, 2, 3], (0, 2)),
             (Diagonal::V1V3, [0, 1, 3, 1, 2, 3], (1, 3)),
         ] {
-            let c = split_corners(Primitive::Quads, &[0, 1, 2, 3], diagonal).unwrap();
+            let c = split_corners(Primitive::Quads, &[0, 1, 2, 3], diagonal, |_| true).unwrap();
             let got: Vec<u32> = c.iter().map(|c| c.vertex).collect();
             assert_eq!(got, order);
             assert_eq!(boundary_edges(&c), [(0, 1), (0, 3), (1, 2), (2, 3)]);
@@ -272,13 +339,21 @@ mod tests {
 
     #[test]
     fn a_polygon_fan_has_boundary_only_on_its_outline() {
-        let c = split_corners(Primitive::Polygon, &[0, 1, 2, 3, 4], Diagonal::V0V2).unwrap();
+        let c = split_corners(Primitive::Polygon, &[0, 1, 2, 3, 4], Diagonal::V0V2, |_| {
+            true
+        })
+        .unwrap();
         assert_eq!(c.len(), 9);
         assert_eq!(boundary_edges(&c).len(), 5, "a pentagon has five edges");
         assert_eq!(owned(&c).len(), 5);
         assert!(c.iter().all(|c| c.provoking == 0));
-        let strip =
-            split_corners(Primitive::QuadStrip, &[0, 1, 2, 3, 4, 5], Diagonal::V0V2).unwrap();
+        let strip = split_corners(
+            Primitive::QuadStrip,
+            &[0, 1, 2, 3, 4, 5],
+            Diagonal::V0V2,
+            |_| true,
+        )
+        .unwrap();
         let order: Vec<u32> = strip.iter().map(|c| c.vertex).collect();
         assert_eq!(order, [0, 1, 3, 0, 3, 2, 2, 3, 5, 2, 5, 4]);
         let provoking: Vec<u32> = strip.iter().map(|c| c.provoking).collect();
@@ -297,7 +372,7 @@ mod tests {
             ]
         );
         assert_eq!(
-            split_corners(Primitive::TriangleFan, &[0, 1, 2], Diagonal::V0V2),
+            split_corners(Primitive::TriangleFan, &[0, 1, 2], Diagonal::V0V2, |_| true),
             None
         );
     }

@@ -1,5 +1,5 @@
 //! Geometry as client-side vertex arrays (GL 1.1 §2.8): positions as 4 floats, optional
-//! normals, colours and per-unit texture coordinates (glClientActiveTexture selects the
+//! normals, colours, edge flags (GLboolean) and per-unit texture coordinates (glClientActiveTexture selects the
 //! unit a TexCoordPointer names), drawn with glDrawArrays or glDrawElements(UNSIGNED_INT).
 //! Every primitive of GL 1.x, QUADS, QUAD_STRIP and POLYGON included, is a valid mode on a
 //! compatibility context.
@@ -33,6 +33,7 @@ struct Arrays {
     normals: Option<Vec<f32>>,
     colors: Option<Vec<f32>>,
     texcoords: Vec<(u8, Vec<f32>)>,
+    edge_flags: Option<Vec<u8>>,
 }
 
 impl Arrays {
@@ -47,6 +48,10 @@ impl Arrays {
                 .enumerate()
                 .filter_map(|(u, t)| Some((u8::try_from(u).ok()?, flat4(t.as_deref()?))))
                 .collect(),
+            edge_flags: g
+                .edge_flags
+                .as_ref()
+                .map(|f| f.iter().map(|&on| u8::from(on)).collect()),
         }
     }
 }
@@ -70,6 +75,10 @@ pub fn draw(g: &gl::Gl, geometry: &Geometry) {
             g.EnableClientState(gl::COLOR_ARRAY);
             g.ColorPointer(4, gl::FLOAT, 0, c.as_ptr().cast::<c_void>());
         }
+        if let Some(f) = &arrays.edge_flags {
+            g.EnableClientState(gl::EDGE_FLAG_ARRAY);
+            g.EdgeFlagPointer(0, f.as_ptr().cast::<c_void>());
+        }
         for (unit, t) in &arrays.texcoords {
             g.ClientActiveTexture(conv::texture_unit(*unit));
             g.EnableClientState(gl::TEXTURE_COORD_ARRAY);
@@ -91,6 +100,7 @@ pub fn draw(g: &gl::Gl, geometry: &Geometry) {
         }
         g.ClientActiveTexture(gl::TEXTURE0);
         g.DisableClientState(gl::COLOR_ARRAY);
+        g.DisableClientState(gl::EDGE_FLAG_ARRAY);
         g.DisableClientState(gl::NORMAL_ARRAY);
         g.DisableClientState(gl::VERTEX_ARRAY);
     }
@@ -110,6 +120,9 @@ pub fn restore_current(g: &gl::Gl, state: &FixedState, geometry: &Geometry) {
     unsafe {
         if geometry.normals.is_some() {
             g.Normal3f(c.normal.x, c.normal.y, c.normal.z);
+        }
+        if geometry.edge_flags.is_some() {
+            g.EdgeFlag(u8::from(c.edge_flag));
         }
         for unit in 0..MAX_TEXTURE_UNITS {
             if geometry.texcoords[unit].is_some() {

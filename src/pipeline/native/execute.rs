@@ -92,6 +92,7 @@ impl Native {
             }
             Command::Color(c) => unsafe { g.Color4f(c.x, c.y, c.z, c.w) },
             Command::Normal(n) => unsafe { g.Normal3f(n.x, n.y, n.z) },
+            Command::EdgeFlag(on) => unsafe { g.EdgeFlag(u8::from(*on)) },
             Command::TexCoord { unit, coord: t } => unsafe {
                 g.MultiTexCoord4f(conv::texture_unit(*unit), t.x, t.y, t.z, t.w)
             },
