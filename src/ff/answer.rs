@@ -14,6 +14,7 @@ use super::client_attrib::MAX_CLIENT_ATTRIB_STACK_DEPTH;
 use super::front::{Client, Reply};
 use super::glenum::{registry as r, value_of, Family};
 use super::lists::{ListMode, MAX_LIST_NESTING};
+use super::pixel_store::PNAMES;
 use super::query::{Queried, QueryValue};
 use super::{FixedState, GlErrorKind};
 
@@ -147,7 +148,8 @@ pub fn answer<A: Args>(
                     (p.to_array().map(QueryValue::Float).to_vec(), 1)
                 })
         }
-        // Packed as a 32×32 bitmap (§6.1.7); PACK_LSB_FIRST is not modelled.
+        // Tight, most significant bit first: the C front end packs it as a 32×32 bitmap
+        // with the pack parameters (§6.1.7).
         Entry::GetPolygonStipple => {
             c.count(1)?;
             return Ok(Ok(Reply::Write {
@@ -226,9 +228,18 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
     if let Some(on) = client_enable(pname, c) {
         return Some(vec![QueryValue::Bool(on)]);
     }
+    // Table 6.20: every pixel-store parameter; SWAP_BYTES and LSB_FIRST are booleans.
+    if let Some(name) = PNAMES.iter().find(|n| value_of(n) == Some(pname)) {
+        let v = c.pixel_store.get(name)?;
+        return Some(vec![
+            if name.ends_with("SWAP_BYTES") || name.ends_with("LSB_FIRST") {
+                QueryValue::Bool(v != 0)
+            } else {
+                QueryValue::Int(v as i32)
+            },
+        ]);
+    }
     match pname {
-        r::PACK_ALIGNMENT => int(c.pixel_store.pack_alignment as i64),
-        r::UNPACK_ALIGNMENT => int(c.pixel_store.unpack_alignment as i64),
         CLIENT_ATTRIB_STACK_DEPTH => int(c.client_attrib.depth() as i64),
         MAX_CLIENT_ATTRIB_STACK_DEPTH_PNAME => int(MAX_CLIENT_ATTRIB_STACK_DEPTH as i64),
         r::CLIENT_ACTIVE_TEXTURE => enm(r::TEXTURE0 + u32::from(a.client_active)),

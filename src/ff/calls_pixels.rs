@@ -13,7 +13,6 @@ use super::pixels::{
     Bitmap, CopyKind, CopyPixels, DrawPixels, PixelTransferParam, MAX_RECT_PIXELS,
 };
 use super::stipple::{LineStipple, PolygonStipple};
-use super::texture::{PixelFormat, PixelType};
 use super::Command;
 
 /// Which position call a name is: glRasterPos{2,3,4} or glWindowPos{2,3} (with its ARB
@@ -135,15 +134,10 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }));
     }
     Ok(Some(match c.entry() {
-        // The mask is unpacked as a 32×32 bitmap (§3.5.2): rows of 4 bytes.
+        // The mask is unpacked as a 32×32 bitmap (§3.5.2), with the unpack parameters.
         Entry::PolygonStipple => {
             c.count(1)?;
-            let shape = PixelShape {
-                width: 4,
-                height: 32,
-                format: PixelFormat::Luminance,
-                ty: PixelType::UnsignedByte,
-            };
+            let shape = PixelShape::bitmap(32, 32);
             let bytes = c
                 .pixels(0, shape)?
                 .ok_or_else(|| c.bad(0, "a 32×32 mask"))?;
@@ -160,12 +154,7 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(7)?;
             let (width, height) = (c.i32(0)?, c.i32(1)?);
             budget(c, 0, width, height)?;
-            let shape = PixelShape {
-                width: Bitmap::row_bytes(width) as i32,
-                height: height.max(0),
-                format: PixelFormat::Luminance,
-                ty: PixelType::UnsignedByte,
-            };
+            let shape = PixelShape::bitmap(width.max(0), height.max(0));
             Command::Bitmap(Bitmap {
                 width,
                 height,
@@ -180,12 +169,7 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let format = c.enm(2)?;
             let ty = c.enm(3)?;
             budget(c, 0, width, height)?;
-            let shape = PixelShape {
-                width: width.max(0),
-                height: height.max(0),
-                format,
-                ty,
-            };
+            let shape = PixelShape::groups(width.max(0), height.max(0), format, ty);
             Command::DrawPixels(DrawPixels {
                 width,
                 height,

@@ -197,8 +197,8 @@ impl PixelZoom {
 }
 
 /// glBitmap (§3.7). `bits` holds `height` rows of ⌈width/8⌉ bytes, bottom row first, the
-/// most significant bit of each byte the leftmost pixel (UNPACK_LSB_FIRST = FALSE), the
-/// unpack alignment's padding removed; `None` for NULL (nothing is drawn, the position
+/// most significant bit of each byte the leftmost pixel, as the front end unpacked them
+/// (UNPACK_LSB_FIRST, the skips and the row length applied: `pixel_layout`); `None` for NULL (nothing is drawn, the position
 /// still moves).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Bitmap {
@@ -234,8 +234,8 @@ impl Bitmap {
     }
 }
 
-/// glDrawPixels (§3.6.4): tightly packed rows, bottom row first (the unpack alignment's
-/// padding removed by the front end).
+/// glDrawPixels (§3.6.4): tightly packed rows, bottom row first, in the machine's byte
+/// order (the front end applied the unpack parameters).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DrawPixels {
     pub width: i32,
