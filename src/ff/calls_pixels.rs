@@ -1,6 +1,6 @@
 //! The converter of the raster-position and pixel-rectangle calls (`raster`, `pixels`):
 //! glRasterPos and glWindowPos in every variant, glBitmap, glDrawPixels, glCopyPixels,
-//! glPixelTransfer and glPixelZoom; `Ok(None)` for calls of other areas.
+//! glPixelTransfer, glPixelMap and glPixelZoom; `Ok(None)` for calls of other areas.
 //!
 //! A rectangle's size is checked against [`MAX_RECT_PIXELS`] before its pixels are read, so
 //! a program or script asking for 2³¹ pixels is refused without reading or allocating them.
@@ -9,6 +9,7 @@ use glam::Vec4;
 
 use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
+use super::pixel_map::{MapValues, PixelMap, MAX_PIXEL_MAP_TABLE};
 use super::pixels::{
     Bitmap, CopyKind, CopyPixels, DrawPixels, PixelTransferParam, MAX_RECT_PIXELS,
 };
@@ -196,6 +197,25 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             })
         }
         Entry::PixelTransferf | Entry::PixelTransferi => Command::PixelTransfer(transfer(c)?),
+        Entry::PixelMapfv | Entry::PixelMapuiv | Entry::PixelMapusv => {
+            c.count(3)?;
+            // Mesa's order: the size (1..=MAX) before the map's name, before the values.
+            let size = c.i32(1)?;
+            if size < 1 || size as usize > MAX_PIXEL_MAP_TABLE {
+                return Err(c.bad(1, "a size of 1 to GL_MAX_PIXEL_MAP_TABLE"));
+            }
+            let map = c.enm(0)?;
+            let given = match c.entry() {
+                Entry::PixelMapfv => MapValues::Float,
+                Entry::PixelMapuiv => MapValues::UInt,
+                _ => MapValues::UShort,
+            };
+            let raw = c.array_f64(2, size as usize)?;
+            Command::PixelMap(
+                PixelMap::new(map, &raw, given)
+                    .map_err(|_| c.bad(1, "a power-of-two size for an I or S map"))?,
+            )
+        }
         Entry::PixelZoom => {
             c.count(2)?;
             Command::PixelZoom {

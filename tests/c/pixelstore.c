@@ -299,6 +299,112 @@ int main(int argc, char **argv) {
   defaults();
   report("read with pack parameters");
 
+  /* Pixel maps (GL 1.5 §3.6.3): an inverting R map, a 3-entry G map, B and A maps from
+   * unsigned shorts and ints, applied with MAP_COLOR to a glDrawPixels over panel 5 and
+   * to a glCopyPixels of it; the sizes, the stored values and the errors. */
+  panel(5);
+  GLfloat inv[5] = {1.0f, 0.75f, 0.5f, 0.25f, 0.0f};
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 5, inv);
+  glPixelMapfv(GL_PIXEL_MAP_G_TO_G, 3, (const GLfloat[]){0.2f, 1.5f, -1.0f});
+  glPixelMapusv(GL_PIXEL_MAP_B_TO_B, 2, (const GLushort[]){65535, 16384});
+  glPixelMapuiv(GL_PIXEL_MAP_A_TO_A, 1, (const GLuint[]){4294967295u});
+  glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 4, (const GLfloat[]){2.5f, 1.4f, 300.0f, -2.0f});
+  glPixelMapuiv(GL_PIXEL_MAP_I_TO_I, 2, (const GLuint[]){7, 9});
+  /* Drawn with B_TO_B as a 256-entry identity: with the 2-entry map above, Mesa 22.3
+   * draws blue 30 as 17 and 220 as 221 and glCopyPixels leaves blue as it was (measured),
+   * where GL 1.5 §3.6.5 looks up entry round(b·(size − 1)). */
+  GLfloat ident[256];
+  for (int i = 0; i < 256; i++) ident[i] = (GLfloat)i / 255.0f;
+  GLushort bmap[2] = {0, 0};
+  glGetPixelMapusv(GL_PIXEL_MAP_B_TO_B, bmap);
+  glPixelMapfv(GL_PIXEL_MAP_B_TO_B, 256, ident);
+  glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+  static GLubyte ramp[8][16][3];
+  for (int y = 0; y < 8; y++)
+    for (int x = 0; x < 16; x++) {
+      ramp[y][x][0] = (GLubyte)(x * 17);
+      ramp[y][x][1] = (GLubyte)(y * 36);
+      ramp[y][x][2] = (GLubyte)(x < 8 ? 30 : 220);
+    }
+  glRasterPos2i(40, 50);
+  glDrawPixels(16, 8, GL_RGB, GL_UNSIGNED_BYTE, ramp);
+  glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+  glRasterPos2i(40, 40);
+  glDrawPixels(16, 8, GL_RGB, GL_UNSIGNED_BYTE, ramp);
+  glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+  glRasterPos2i(40, 20);
+  glCopyPixels(128 + 40, 64 + 40, 16, 8, GL_COLOR);
+  glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+  glPixelMapusv(GL_PIXEL_MAP_B_TO_B, 2, bmap);
+  /* Red and green of the mapped rows, drawn and copied, are printed (blue differs on
+   * Mesa, above); the rectangles are then cleared, out of the image comparison. */
+  for (int y = 84; y <= 118; y += 34) {
+    GLubyte row[16][3];
+    glReadPixels(168, y, 16, 1, GL_RGB, GL_UNSIGNED_BYTE, row);
+    printf("mapped row %d R/G:", y);
+    for (int x = 0; x < 16; x += 3) printf(" %u/%u", row[x][0], row[x][1]);
+    printf("\n");
+  }
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(168, 80, 16, 44);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  report("pixel maps drawn and copied");
+  {
+    static const struct {
+      const char *name;
+      GLenum map, size;
+    } m[] = {{"I_TO_I", GL_PIXEL_MAP_I_TO_I, GL_PIXEL_MAP_I_TO_I_SIZE},
+             {"S_TO_S", GL_PIXEL_MAP_S_TO_S, GL_PIXEL_MAP_S_TO_S_SIZE},
+             {"I_TO_R", GL_PIXEL_MAP_I_TO_R, GL_PIXEL_MAP_I_TO_R_SIZE},
+             {"I_TO_A", GL_PIXEL_MAP_I_TO_A, GL_PIXEL_MAP_I_TO_A_SIZE},
+             {"R_TO_R", GL_PIXEL_MAP_R_TO_R, GL_PIXEL_MAP_R_TO_R_SIZE},
+             {"G_TO_G", GL_PIXEL_MAP_G_TO_G, GL_PIXEL_MAP_G_TO_G_SIZE},
+             {"B_TO_B", GL_PIXEL_MAP_B_TO_B, GL_PIXEL_MAP_B_TO_B_SIZE},
+             {"A_TO_A", GL_PIXEL_MAP_A_TO_A, GL_PIXEL_MAP_A_TO_A_SIZE}};
+    for (unsigned i = 0; i < sizeof m / sizeof m[0]; i++) {
+      GLint n = -1;
+      glGetIntegerv(m[i].size, &n);
+      GLfloat f[8] = {0};
+      GLuint u[8] = {0};
+      GLushort us[8] = {0};
+      glGetPixelMapfv(m[i].map, f);
+      glGetPixelMapuiv(m[i].map, u);
+      glGetPixelMapusv(m[i].map, us);
+      /* GLuint of an index map is left out: Mesa 22.3 gives I_TO_I as FLOAT_TO_UINT of
+       * the integer (7 → 2^32 − 7, a wrapped overflow) and S_TO_S as the float's bits. */
+      int index = m[i].map == GL_PIXEL_MAP_I_TO_I || m[i].map == GL_PIXEL_MAP_S_TO_S;
+      printf("%s size %d:", m[i].name, n);
+      for (int k = 0; k < n && k < 8; k++) printf(" %.4f/%u/%u", f[k], index ? 0u : u[k], us[k]);
+      printf("\n");
+    }
+    GLint max = 0;
+    glGetIntegerv(GL_MAX_PIXEL_MAP_TABLE, &max);
+    printf("GL_MAX_PIXEL_MAP_TABLE %d\n", max);
+  }
+  report("pixel map queries");
+  glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 3, inv);
+  report("S_TO_S of 3 entries");
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 6, inv);
+  report("I_TO_G of 6 entries");
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 0, inv);
+  report("R_TO_R of 0 entries");
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 257, inv);
+  report("R_TO_R of 257 entries");
+  glPixelMapfv(GL_TEXTURE_2D, 2, inv);
+  report("a bad map");
+  glGetPixelMapfv(GL_TEXTURE_2D, inv);
+  report("glGetPixelMapfv of a bad map");
+  glPushAttrib(GL_PIXEL_MODE_BIT);
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 1, (const GLfloat[]){0.5f});
+  glPopAttrib();
+  {
+    GLint n = 0;
+    glGetIntegerv(GL_PIXEL_MAP_R_TO_R_SIZE, &n);
+    printf("R_TO_R size after glPopAttrib: %d\n", n);
+  }
+  report("pixel maps on the attribute stack");
+
   /* The client attribute stack keeps every parameter. */
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 11);
   glPixelStorei(GL_PACK_SKIP_IMAGES, 3);
