@@ -118,7 +118,7 @@ fn pack_is_unpack_inverted_and_leaves_the_gaps() {
                         .flat_map(|r| {
                             let mut r = r.to_vec();
                             if let Some(l) = r.last_mut() {
-                                *l &= 0xFFu8 << (8 - shape.width as usize % 8) % 8;
+                                *l &= 0xFFu8 << ((8 - shape.width as usize % 8) % 8);
                             }
                             r
                         })

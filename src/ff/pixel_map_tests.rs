@@ -47,7 +47,11 @@ fn lookups_take_the_entry_below() {
     assert_eq!(maps.lookup(PixelMapName::RToR, 1.0), 0.0);
     assert_eq!(maps.lookup(PixelMapName::RToR, 0.2), 1.0);
     assert_eq!(maps.lookup(PixelMapName::RToR, 0.625), 0.5);
-    assert_eq!(maps.lookup(PixelMapName::RToR, 0.999), 0.75);
+    assert_eq!(
+        maps.lookup(PixelMapName::RToR, 0.999),
+        0.25,
+        "3.996 → entry 3"
+    );
     let s = PixelMap::new(PixelMapName::SToS, &[5.0, 6.0, 7.0, 8.0], MapValues::Float).unwrap();
     maps.set(&s).unwrap();
     assert_eq!(maps.stencil(6), 7.0, "6 & 3 = 2");
