@@ -489,6 +489,46 @@ fn a_pixels_trace_replays_to_the_same_image() {
     }
 }
 
+/// tests/c/pixelstore.c: every glPixelStore parameter on every reader and writer of client
+/// pixels — row lengths, skips, alignments, swapped bytes, LSB-first bitmaps and stipples
+/// — drawn as Mesa draws them, and the bytes glReadPixels, glGetTexImage and
+/// glGetPolygonStipple write into sentinel-filled memory printed as Mesa prints them.
+#[test]
+fn pixel_storage_reads_and_writes_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("pixelstore");
+    assert!(
+        mesa_text.contains("negative UNPACK_ROW_LENGTH                   0x0501")
+            && mesa_text.contains("stipple LSB first        ee ee ee ee ee ee 0f 0f"),
+        "Mesa printed something else:\n{mesa_text}"
+    );
+    assert_same_text(
+        &mesa_text,
+        &ours_text,
+        30,
+        "a pixel-store answer or packed byte",
+    );
+    assert_six_panels_drawn(&mesa);
+    assert_images_match("pixelstore", &ours, &mesa, within_3_on_99_percent(&mesa));
+}
+
+/// tests/c/pixelstore.c traced: the trace holds each image unpacked to tight rows, so the
+/// replay, reading them with the default parameters, draws the same image.
+#[test]
+fn a_pixelstore_trace_replays_to_the_same_image() {
+    assert_trace_replays(
+        "pixelstore",
+        &compile("pixelstore", Linking::Direct),
+        &[],
+        "192x128",
+    );
+    let text = std::fs::read_to_string(work_dir("pixelstore").join("calls.c"))
+        .expect("the trace was written");
+    assert!(
+        !text.contains("GL_UNPACK_ROW_LENGTH") && text.contains("glDrawPixels(17, 20, GL_RGB"),
+        "the trace is not in tight rows: {text:.400}"
+    );
+}
+
 /// tests/c/formats.c: GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT and GL_FLOAT buffers in RGBA,
 /// BGRA and ARGB, each at its own precision (RED_BITS 8, 16, 32), print the pixels Mesa's
 /// OSMesa gives, to the last bit of a 16-bit component and the fourth decimal of a float.

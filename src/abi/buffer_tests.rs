@@ -30,7 +30,7 @@ fn run(bufs: &mut Buffers, entry: Entry, args: &[c::CArg]) -> Result<Reply, GlEr
     let call = c::CCall {
         entry,
         args,
-        unpack_alignment: 4,
+        unpack: crate::ff::pixel_store::Packing::DEFAULT,
         unsupported: Default::default(),
     };
     bufs.call(&call, &crate::abi::cargs::ProgramMemory)
@@ -321,7 +321,7 @@ fn offsets_are_captured_when_a_buffer_is_bound() {
             Int(0),
             Ptr(12 as *const _, crate::abi::cargs::CElem::Void),
         ],
-        unpack_alignment: 4,
+        unpack: crate::ff::pixel_store::Packing::DEFAULT,
         unsupported: Default::default(),
     };
     assert_eq!(

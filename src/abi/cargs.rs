@@ -4,8 +4,8 @@
 //! number, bitfield or null array).
 //!
 //! Pointers are read only as far as the call's parameters say (four floats for
-//! GL_AMBIENT, three for GL_SPOT_DIRECTION, width × height pixels with the unpack
-//! alignment), never further: what a C program passes is its own contract, as with any GL.
+//! GL_AMBIENT, three for GL_SPOT_DIRECTION, width × height pixels laid out by the
+//! unpack parameters), never further: what a C program passes is its own contract, as with any GL.
 
 use std::borrow::Cow;
 use std::cell::Cell;
@@ -16,6 +16,8 @@ use crate::ff::api::{CType, Entry};
 use crate::ff::args::{Args, PixelShape};
 use crate::ff::client::{ArrayData, ClientMemory};
 use crate::ff::glenum::{value_of, Family, GlEnum};
+use crate::ff::pixel_layout;
+use crate::ff::pixel_store::Packing;
 use crate::ff::{GlErrorKind, TexData};
 
 /// The element type behind a pointer parameter.
@@ -120,8 +122,8 @@ pub const CALLER_SLOT: u32 = u32::MAX;
 pub struct CCall<'a> {
     pub entry: Entry,
     pub args: &'a [CArg],
-    /// GL_UNPACK_ALIGNMENT (1, 2, 4 or 8).
-    pub unpack_alignment: usize,
+    /// The unpack parameters of glPixelStore.
+    pub unpack: Packing,
     /// Set when no converter knew the call.
     pub unsupported: Cell<bool>,
 }
@@ -176,28 +178,21 @@ impl CCall<'_> {
         Ok(())
     }
 
-    /// The pixels of `shape` from pointer `i`, unpacked with the unpack alignment
-    /// (GL 1.5 §3.6.4: each row starts at a multiple of the alignment) into the tightly
-    /// packed rows the model holds.
+    /// The pixels of `shape` from pointer `i`, unpacked with the unpack parameters
+    /// (GL 1.5 §3.6.4, `pixel_layout`) into the tightly packed rows the model holds.
     fn unpack(&self, i: usize, shape: PixelShape) -> Result<Option<Arc<[u8]>>, GlErrorKind> {
         let p = match self.args.get(i) {
             Some(CArg::Ptr(p, _)) if p.is_null() => return Ok(None),
             Some(CArg::Ptr(p, _)) => *p,
             _ => return Err(GlErrorKind::InvalidValue),
         };
-        let (w, h) = (shape.width.max(0) as usize, shape.height.max(0) as usize);
-        let group = shape.format.components() * shape.ty.size();
-        let row = w * group;
-        let align = self.unpack_alignment.max(1);
-        let stride = row.div_ceil(align) * align;
-        let mut out = Vec::with_capacity(row * h);
-        for y in 0..h {
-            // SAFETY: the program's buffer holds `h` rows of `stride` bytes (the last row
-            // only `row`), as GL requires of the data a pixel call reads.
-            let r = unsafe { std::slice::from_raw_parts(p.cast::<u8>().add(y * stride), row) };
-            out.extend_from_slice(r);
-        }
-        Ok(Some(Arc::from(out)))
+        let extent = pixel_layout::layout(shape, &self.unpack).extent;
+        // SAFETY: the program's buffer holds the rows the unpack parameters place (up to
+        // the last row's last byte), as GL requires of the data a pixel call reads.
+        let src = unsafe { std::slice::from_raw_parts(p.cast::<u8>(), extent) };
+        pixel_layout::unpack(src, shape, &self.unpack)
+            .map(|v| Some(Arc::from(v)))
+            .ok_or(GlErrorKind::InvalidValue)
     }
 }
 
@@ -320,7 +315,7 @@ impl Args for CCall<'_> {
         let typed = CCall {
             entry: self.entry,
             args: &[CArg::Ptr(p, elem)],
-            unpack_alignment: self.unpack_alignment,
+            unpack: self.unpack,
             unsupported: Cell::new(false),
         };
         typed.read(0, n)

@@ -13,7 +13,9 @@ use std::ffi::c_void;
 use super::cargs::{CArg, CCall, ProgramMemory, CALLER_SLOT};
 use super::AbiError;
 use crate::ff::api::Entry;
+use crate::ff::args::PixelShape;
 use crate::ff::front::{Client, Reply};
+use crate::ff::pixel_layout;
 use crate::ff::{Command, GlErrorKind};
 use crate::gpu::{
     Backend, ColorStorage, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec,
@@ -387,7 +389,7 @@ impl Context {
         let c = CCall {
             entry,
             args,
-            unpack_alignment: self.client.pixel_store.unpack_alignment,
+            unpack: self.client.pixel_store.unpack,
             unsupported: Default::default(),
         };
         let mut made = std::mem::take(&mut self.made);
@@ -420,7 +422,10 @@ impl Context {
             Reply::Address(a) => Ret::Ptr(a as *const u8),
             Reply::Write { arg, bytes } => {
                 if let Some(CArg::Ptr(dst, _)) = args.get(arg).copied() {
-                    if !dst.is_null() {
+                    // The stipple is packed as a 32×32 bitmap (§6.1.7).
+                    if entry == Entry::GetPolygonStipple && !dst.is_null() {
+                        self.pack_out(dst, &bytes, PixelShape::bitmap(32, 32));
+                    } else if !dst.is_null() {
                         // SAFETY: the program's array holds what the call stores (n names,
                         // one integer, `size` bytes), as GL requires of it.
                         unsafe {
@@ -517,20 +522,26 @@ impl Context {
         if dst.is_null() {
             return;
         }
-        let row = r.width as usize * r.format.components() * r.ty.size();
-        let align = self.client.pixel_store.pack_alignment;
-        let stride = row.div_ceil(align) * align;
-        for (y, src) in r.bytes.chunks_exact(row.max(1)).enumerate() {
-            // SAFETY: the program's buffer holds height rows of `stride` bytes, as GL
-            // requires of the memory glReadPixels writes.
-            unsafe {
-                std::ptr::copy_nonoverlapping(
-                    src.as_ptr(),
-                    dst.cast::<u8>().cast_mut().add(y * stride),
-                    row,
-                );
-            }
-        }
+        let width = i32::try_from(r.width).unwrap_or(i32::MAX);
+        let shape = PixelShape::groups(width, 0, r.format, r.ty);
+        let row = shape.group_bytes() * r.width as usize;
+        let height = r.bytes.len().checked_div(row).unwrap_or(0);
+        let shape = PixelShape {
+            height: i32::try_from(height).unwrap_or(i32::MAX),
+            ..shape
+        };
+        self.pack_out(dst, &r.bytes, shape);
+    }
+
+    /// Tight rows `bytes` of `shape` into the caller's memory at `dst`, laid out by the
+    /// pack parameters (GL 1.5 §4.3.2, `pixel_layout`).
+    fn pack_out(&self, dst: *const c_void, bytes: &[u8], shape: PixelShape) {
+        let p = self.client.pixel_store.pack;
+        let extent = pixel_layout::layout(shape, &p).extent;
+        // SAFETY: the program's buffer holds the rows the pack parameters place (up to the
+        // last row's last byte), as GL requires of the memory a pixel call writes.
+        let out = unsafe { std::slice::from_raw_parts_mut(dst.cast::<u8>().cast_mut(), extent) };
+        pixel_layout::pack(bytes, out, shape, &p);
     }
 
     /// The image so far into the caller's buffer (and the trace to its file).

@@ -75,19 +75,22 @@ pub fn enabled() -> bool {
     std::env::var_os(VARIABLE).is_some()
 }
 
-/// One executed command, read with the pixel storage `now`.
+/// One executed command, read with the pixel storage `now`. Only the alignments are
+/// written: a Command holds tight rows (the front end applied ROW_LENGTH, the skips,
+/// SWAP_BYTES and LSB_FIRST), printed padded to the unpack alignment, so the replay reads
+/// them with every other parameter at its default.
 pub fn command(cmd: &Command, now: PixelStore) {
     with_writer(|w, written| {
         let names = [
             (
                 "GL_PACK_ALIGNMENT",
-                now.pack_alignment,
-                written.pack_alignment,
+                now.pack.alignment,
+                written.pack.alignment,
             ),
             (
                 "GL_UNPACK_ALIGNMENT",
-                now.unpack_alignment,
-                written.unpack_alignment,
+                now.unpack.alignment,
+                written.unpack.alignment,
             ),
         ];
         for (name, value, before) in names {
@@ -96,7 +99,7 @@ pub fn command(cmd: &Command, now: PixelStore) {
             }
         }
         *written = now;
-        let text = print_aligned(std::slice::from_ref(cmd), now.unpack_alignment);
+        let text = print_aligned(std::slice::from_ref(cmd), now.unpack.alignment);
         w.write_all(text.as_bytes())
     });
 }

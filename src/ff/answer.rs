@@ -12,8 +12,11 @@ use super::args::Args;
 use super::client::{type_token, ArrayData};
 use super::client_attrib::MAX_CLIENT_ATTRIB_STACK_DEPTH;
 use super::front::{Client, Reply};
+use super::glenum::GlEnum;
 use super::glenum::{registry as r, value_of, Family};
 use super::lists::{ListMode, MAX_LIST_NESTING};
+use super::pixel_map::PixelMapName;
+use super::pixel_store::PNAMES;
 use super::query::{Queried, QueryValue};
 use super::{FixedState, GlErrorKind};
 
@@ -72,6 +75,9 @@ pub fn handles(entry: Entry) -> bool {
             | Entry::GetTexLevelParameteriv
             | Entry::GetClipPlane
             | Entry::GetPolygonStipple
+            | Entry::GetPixelMapfv
+            | Entry::GetPixelMapuiv
+            | Entry::GetPixelMapusv
     )
 }
 
@@ -147,12 +153,24 @@ pub fn answer<A: Args>(
                     (p.to_array().map(QueryValue::Float).to_vec(), 1)
                 })
         }
-        // Packed as a 32×32 bitmap (§6.1.7); PACK_LSB_FIRST is not modelled.
+        // Tight, most significant bit first: the C front end packs it as a 32×32 bitmap
+        // with the pack parameters (§6.1.7).
         Entry::GetPolygonStipple => {
             c.count(1)?;
             return Ok(Ok(Reply::Write {
                 arg: 0,
                 bytes: state.polygon_stipple.value.to_bytes(),
+            }));
+        }
+        Entry::GetPixelMapfv | Entry::GetPixelMapuiv | Entry::GetPixelMapusv => {
+            c.count(2)?;
+            let map: PixelMapName = match PixelMapName::from_gl_value(t(0)?) {
+                Some(m) => m,
+                None => return Ok(Err(GlErrorKind::InvalidEnum)),
+            };
+            return Ok(Ok(Reply::Write {
+                arg: 1,
+                bytes: pixel_map_bytes(entry, map, state.pixel_maps.get(map)),
             }));
         }
         _ => return Err(c.unsupported()),
@@ -161,6 +179,28 @@ pub fn answer<A: Args>(
         arg,
         bytes: encode(&values, Out::of(entry)),
     }))
+}
+
+/// glGetPixelMap{f,ui,us}v's values, as Mesa's `_mesa_GetnPixelMap*` converts them: an
+/// index map's (I_TO_I, S_TO_S) integers as they are (clamped to [0, 65535] for GLushort);
+/// a colour map's c as floor(c · (2³² − 1)) for GLuint and round_even(c · 65535) for
+/// GLushort.
+fn pixel_map_bytes(entry: Entry, map: PixelMapName, values: &[f32]) -> Vec<u8> {
+    let index = map.holds_integers();
+    values
+        .iter()
+        .flat_map(|v| match entry {
+            Entry::GetPixelMapfv => v.to_ne_bytes().to_vec(),
+            Entry::GetPixelMapuiv if index => (*v as u32).to_ne_bytes().to_vec(),
+            Entry::GetPixelMapuiv => ((f64::from(*v) * 4294967295.0) as u32)
+                .to_ne_bytes()
+                .to_vec(),
+            _ if index => (v.clamp(0.0, 65535.0) as u16).to_ne_bytes().to_vec(),
+            _ => ((v * 65535.0).round_ties_even() as u16)
+                .to_ne_bytes()
+                .to_vec(),
+        })
+        .collect()
 }
 
 /// The values in the getter's type (GL 1.5 §6.1.2 conversions, `QueryValue`), as bytes.
@@ -227,9 +267,18 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
     if let Some(on) = client_enable(pname, c) {
         return Some(vec![QueryValue::Bool(on)]);
     }
+    // Table 6.20: every pixel-store parameter; SWAP_BYTES and LSB_FIRST are booleans.
+    if let Some(name) = PNAMES.iter().find(|n| value_of(n) == Some(pname)) {
+        let v = c.pixel_store.get(name)?;
+        return Some(vec![
+            if name.ends_with("SWAP_BYTES") || name.ends_with("LSB_FIRST") {
+                QueryValue::Bool(v != 0)
+            } else {
+                QueryValue::Int(v as i32)
+            },
+        ]);
+    }
     match pname {
-        r::PACK_ALIGNMENT => int(c.pixel_store.pack_alignment as i64),
-        r::UNPACK_ALIGNMENT => int(c.pixel_store.unpack_alignment as i64),
         CLIENT_ATTRIB_STACK_DEPTH => int(c.client_attrib.depth() as i64),
         MAX_CLIENT_ATTRIB_STACK_DEPTH_PNAME => int(MAX_CLIENT_ATTRIB_STACK_DEPTH as i64),
         r::CLIENT_ACTIVE_TEXTURE => enm(r::TEXTURE0 + u32::from(a.client_active)),

@@ -697,6 +697,13 @@ macro_rules! gl_entry_table {
         // Polygon and line stipple, edge flags (ff::stipple).
         PolygonStipple = glPolygonStipple(Script; mask: *const GLubyte);
         GetPolygonStipple = glGetPolygonStipple(Script; mask: *mut GLubyte);
+        // Pixel maps (ff::pixel_map).
+        PixelMapfv = glPixelMapfv(Script; map: GLenum, mapsize: GLsizei, values: *const GLfloat);
+        PixelMapuiv = glPixelMapuiv(Script; map: GLenum, mapsize: GLsizei, values: *const GLuint);
+        PixelMapusv = glPixelMapusv(Script; map: GLenum, mapsize: GLsizei, values: *const GLushort);
+        GetPixelMapfv = glGetPixelMapfv(Script; map: GLenum, values: *mut GLfloat);
+        GetPixelMapuiv = glGetPixelMapuiv(Script; map: GLenum, values: *mut GLuint);
+        GetPixelMapusv = glGetPixelMapusv(Script; map: GLenum, values: *mut GLushort);
         LineStipple = glLineStipple(Script; factor: GLint, pattern: GLushort);
         }
     };
@@ -1149,6 +1156,8 @@ impl Command {
                 _ => Entry::PixelTransferf,
             },
             Command::PixelZoom { .. } => Entry::PixelZoom,
+            // Stored as floats (normalised): printed and sent as glPixelMapfv.
+            Command::PixelMap(_) => Entry::PixelMapfv,
             Command::PolygonStipple(_) => Entry::PolygonStipple,
             Command::LineStipple(_) => Entry::LineStipple,
         }

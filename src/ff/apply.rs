@@ -337,6 +337,7 @@ impl FixedState {
             }
             Command::BlitFramebuffer(b) => self.check_blit(b)?,
             Command::PixelTransfer(p) => self.pixel_transfer.set(*p),
+            Command::PixelMap(m) => self.pixel_maps.set(m)?,
             Command::PixelZoom { x, y } => {
                 self.pixel_zoom = super::pixels::PixelZoom { x: *x, y: *y }
             }

@@ -20,14 +20,58 @@ use super::glenum::{Family, GlEnum};
 use super::texture::{PixelFormat, PixelType};
 
 /// What a pixel pointer holds, so that a front end that receives only a pointer knows how
-/// many bytes to read (GL 1.5 §3.6.4: width × height groups, rows padded to the unpack
-/// alignment).
+/// many bytes to read (GL 1.5 §3.6.4: width × height groups, or bits for a bitmap, laid
+/// out by the unpack parameters: `pixel_layout`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PixelShape {
     pub width: i32,
     pub height: i32,
+    /// For a bitmap, LUMINANCE (unused).
     pub format: PixelFormat,
+    /// For a bitmap, UNSIGNED_BYTE (unused).
     pub ty: PixelType,
+    pub kind: ShapeKind,
+}
+
+/// Whether a shape is groups of components or a bitmap (one bit a pixel, GL's BITMAP type).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShapeKind {
+    Groups,
+    Bitmap,
+}
+
+impl PixelShape {
+    /// `width × height` groups of `format` in `ty`.
+    pub fn groups(width: i32, height: i32, format: PixelFormat, ty: PixelType) -> Self {
+        Self {
+            width,
+            height,
+            format,
+            ty,
+            kind: ShapeKind::Groups,
+        }
+    }
+
+    /// `width × height` bits (glBitmap, glPolygonStipple).
+    pub fn bitmap(width: i32, height: i32) -> Self {
+        Self {
+            width,
+            height,
+            format: PixelFormat::Luminance,
+            ty: PixelType::UnsignedByte,
+            kind: ShapeKind::Bitmap,
+        }
+    }
+
+    /// Bytes of one group.
+    pub fn group_bytes(&self) -> usize {
+        self.ty.group_bytes(self.format)
+    }
+
+    /// Bytes of one element: what SWAP_BYTES reverses.
+    pub fn element_bytes(&self) -> usize {
+        self.ty.size()
+    }
 }
 
 /// Typed readers of one call's arguments, by position.

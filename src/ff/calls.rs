@@ -377,12 +377,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::TexImage1D => {
             c.count(8)?;
             target_is(c, TextureTarget::Texture1D)?;
-            let shape = PixelShape {
-                width: c.i32(3)?,
-                height: 1,
-                format: c.enm(5)?,
-                ty: c.enm(6)?,
-            };
+            let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(5)?, c.enm(6)?);
             Command::TexImage(TexImage {
                 target: TextureTarget::Texture1D,
                 level: c.i32(1)?,
@@ -398,12 +393,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::TexImage2D => {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
-            let shape = PixelShape {
-                width: c.i32(3)?,
-                height: c.i32(4)?,
-                format: c.enm(6)?,
-                ty: c.enm(7)?,
-            };
+            let shape = PixelShape::groups(c.i32(3)?, c.i32(4)?, c.enm(6)?, c.enm(7)?);
             Command::TexImage(TexImage {
                 target: TextureTarget::Texture2D,
                 level: c.i32(1)?,
@@ -419,12 +409,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::TexSubImage2D => {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
-            let shape = PixelShape {
-                width: c.i32(4)?,
-                height: c.i32(5)?,
-                format: c.enm(6)?,
-                ty: c.enm(7)?,
-            };
+            let shape = PixelShape::groups(c.i32(4)?, c.i32(5)?, c.enm(6)?, c.enm(7)?);
             Command::TexSubImage2D(TexSubImage {
                 level: c.i32(1)?,
                 x: c.i32(2)?,

@@ -1,6 +1,6 @@
 //! The converter of the raster-position and pixel-rectangle calls (`raster`, `pixels`):
 //! glRasterPos and glWindowPos in every variant, glBitmap, glDrawPixels, glCopyPixels,
-//! glPixelTransfer and glPixelZoom; `Ok(None)` for calls of other areas.
+//! glPixelTransfer, glPixelMap and glPixelZoom; `Ok(None)` for calls of other areas.
 //!
 //! A rectangle's size is checked against [`MAX_RECT_PIXELS`] before its pixels are read, so
 //! a program or script asking for 2³¹ pixels is refused without reading or allocating them.
@@ -9,11 +9,11 @@ use glam::Vec4;
 
 use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
+use super::pixel_map::{MapValues, PixelMap, MAX_PIXEL_MAP_TABLE};
 use super::pixels::{
     Bitmap, CopyKind, CopyPixels, DrawPixels, PixelTransferParam, MAX_RECT_PIXELS,
 };
 use super::stipple::{LineStipple, PolygonStipple};
-use super::texture::{PixelFormat, PixelType};
 use super::Command;
 
 /// Which position call a name is: glRasterPos{2,3,4} or glWindowPos{2,3} (with its ARB
@@ -135,15 +135,10 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }));
     }
     Ok(Some(match c.entry() {
-        // The mask is unpacked as a 32×32 bitmap (§3.5.2): rows of 4 bytes.
+        // The mask is unpacked as a 32×32 bitmap (§3.5.2), with the unpack parameters.
         Entry::PolygonStipple => {
             c.count(1)?;
-            let shape = PixelShape {
-                width: 4,
-                height: 32,
-                format: PixelFormat::Luminance,
-                ty: PixelType::UnsignedByte,
-            };
+            let shape = PixelShape::bitmap(32, 32);
             let bytes = c
                 .pixels(0, shape)?
                 .ok_or_else(|| c.bad(0, "a 32×32 mask"))?;
@@ -160,12 +155,7 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(7)?;
             let (width, height) = (c.i32(0)?, c.i32(1)?);
             budget(c, 0, width, height)?;
-            let shape = PixelShape {
-                width: Bitmap::row_bytes(width) as i32,
-                height: height.max(0),
-                format: PixelFormat::Luminance,
-                ty: PixelType::UnsignedByte,
-            };
+            let shape = PixelShape::bitmap(width.max(0), height.max(0));
             Command::Bitmap(Bitmap {
                 width,
                 height,
@@ -180,12 +170,7 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let format = c.enm(2)?;
             let ty = c.enm(3)?;
             budget(c, 0, width, height)?;
-            let shape = PixelShape {
-                width: width.max(0),
-                height: height.max(0),
-                format,
-                ty,
-            };
+            let shape = PixelShape::groups(width.max(0), height.max(0), format, ty);
             Command::DrawPixels(DrawPixels {
                 width,
                 height,
@@ -212,6 +197,25 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             })
         }
         Entry::PixelTransferf | Entry::PixelTransferi => Command::PixelTransfer(transfer(c)?),
+        Entry::PixelMapfv | Entry::PixelMapuiv | Entry::PixelMapusv => {
+            c.count(3)?;
+            // Mesa's order: the size (1..=MAX) before the map's name, before the values.
+            let size = c.i32(1)?;
+            if size < 1 || size as usize > MAX_PIXEL_MAP_TABLE {
+                return Err(c.bad(1, "a size of 1 to GL_MAX_PIXEL_MAP_TABLE"));
+            }
+            let map = c.enm(0)?;
+            let given = match c.entry() {
+                Entry::PixelMapfv => MapValues::Float,
+                Entry::PixelMapuiv => MapValues::UInt,
+                _ => MapValues::UShort,
+            };
+            let raw = c.array_f64(2, size as usize)?;
+            Command::PixelMap(
+                PixelMap::new(map, &raw, given)
+                    .map_err(|_| c.bad(1, "a power-of-two size for an I or S map"))?,
+            )
+        }
         Entry::PixelZoom => {
             c.count(2)?;
             Command::PixelZoom {

@@ -639,8 +639,8 @@ impl ClientArrays {
         }
         if self.edge_flag.enabled {
             // A GLboolean per vertex; an element the memory lacks is TRUE.
-            let c = self.edge_flag.components(mem, which, [1.0; 4], float);
-            g.edge_flags = Some(c.into_iter().map(|f| f[0] != 0.0).collect());
+            let flag = |f: [f32; 4]| f[0] != 0.0;
+            g.edge_flags = Some(self.edge_flag.components(mem, which, [1.0; 4], float, flag));
         }
         g.indices = indices.map(|ix| ix.iter().map(|&i| i as u32).collect());
         Some(g)

@@ -105,7 +105,9 @@ mod tests {
             vertex_array: false,
         };
         stack.push(mask, &now).unwrap();
-        now.pixel_store.unpack_alignment = 1;
+        now.pixel_store.unpack.alignment = 1;
+        now.pixel_store.unpack.row_length = 9;
+        now.pixel_store.pack.skip_images = 2;
         now.arrays.vertex.enabled = true;
         now.arrays.client_active = 3;
         now.bindings.array = 7;
@@ -134,8 +136,8 @@ mod tests {
         for _ in 0..MAX_CLIENT_ATTRIB_STACK_DEPTH {
             stack.pop(&mut now).unwrap();
         }
-        now.pixel_store.pack_alignment = 8;
+        now.pixel_store.pack.alignment = 8;
         assert_eq!(stack.pop(&mut now), Err(GlErrorKind::StackUnderflow));
-        assert_eq!((stack.depth(), now.pixel_store.pack_alignment), (0, 8));
+        assert_eq!((stack.depth(), now.pixel_store.pack.alignment), (0, 8));
     }
 }

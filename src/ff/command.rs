@@ -441,6 +441,8 @@ pub enum Command {
     /// glCopyPixels (§4.3.3).
     CopyPixels(CopyPixels),
     PixelTransfer(PixelTransferParam),
+    /// glPixelMap{f,ui,us}v (§3.6.3): the values as stored.
+    PixelMap(super::pixel_map::PixelMap),
     /// glPixelZoom(x, y).
     PixelZoom {
         x: f32,

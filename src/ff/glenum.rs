@@ -11,6 +11,7 @@
 //! GL_COMBINERi_NV, GL_CLIP_PLANEi) are not tables: `LIGHT0 + i`.
 
 use super::framebuffer::{AttachmentPoint, ColorBuffer, FramebufferTarget, RenderbufferFormat};
+use super::pixel_map::PixelMapName;
 use super::*;
 
 /// Every enumerant of the registry, as `pub const NAME: u32`.
@@ -786,3 +787,16 @@ mod tests {
         ]);
     }
 }
+
+gl_enums!(PixelMapName {
+    PIXEL_MAP_I_TO_I => PixelMapName::IToI,
+    PIXEL_MAP_S_TO_S => PixelMapName::SToS,
+    PIXEL_MAP_I_TO_R => PixelMapName::IToR,
+    PIXEL_MAP_I_TO_G => PixelMapName::IToG,
+    PIXEL_MAP_I_TO_B => PixelMapName::IToB,
+    PIXEL_MAP_I_TO_A => PixelMapName::IToA,
+    PIXEL_MAP_R_TO_R => PixelMapName::RToR,
+    PIXEL_MAP_G_TO_G => PixelMapName::GToG,
+    PIXEL_MAP_B_TO_B => PixelMapName::BToB,
+    PIXEL_MAP_A_TO_A => PixelMapName::AToA,
+});

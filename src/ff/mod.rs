@@ -62,6 +62,8 @@ pub mod answer;
 pub mod calls_variants;
 pub mod client_attrib;
 pub mod front_state;
+pub mod pixel_layout;
+pub mod pixel_map;
 pub mod pixel_store;
 pub mod texture_calls;
 

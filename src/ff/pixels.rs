@@ -15,14 +15,16 @@
 //! 4. final conversion: colours and depth clamped to [0, 1] (§3.6.5); stencil masked to
 //!    the stencil bits, 2⁸ − 1.
 //!
-//! Colour and stencil maps (MAP_COLOR, MAP_STENCIL) are state only: glPixelMap is not in
-//! the layer, so its maps are the identity-sized defaults and the lookup is skipped.
+//! 5. with MAP_COLOR, each colour component through its map (R_TO_R … A_TO_A,
+//!    `pixel_map`). MAP_STENCIL is state: Mesa 22.3 draws stencil images without the index
+//!    arithmetic, and the layer follows it there (see `convert`).
 
 use std::sync::Arc;
 
 use glam::Vec4;
 
 use super::error::{GlError, GlResult};
+use super::pixel_map::PixelMaps;
 use super::texture::{PixelFormat, PixelType};
 
 /// The most pixels one glDrawPixels, glBitmap or glCopyPixels may cover: 2²⁴ (4096², or a
@@ -197,8 +199,8 @@ impl PixelZoom {
 }
 
 /// glBitmap (§3.7). `bits` holds `height` rows of ⌈width/8⌉ bytes, bottom row first, the
-/// most significant bit of each byte the leftmost pixel (UNPACK_LSB_FIRST = FALSE), the
-/// unpack alignment's padding removed; `None` for NULL (nothing is drawn, the position
+/// most significant bit of each byte the leftmost pixel, as the front end unpacked them
+/// (UNPACK_LSB_FIRST, the skips and the row length applied: `pixel_layout`); `None` for NULL (nothing is drawn, the position
 /// still moves).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Bitmap {
@@ -234,8 +236,8 @@ impl Bitmap {
     }
 }
 
-/// glDrawPixels (§3.6.4): tightly packed rows, bottom row first (the unpack alignment's
-/// padding removed by the front end).
+/// glDrawPixels (§3.6.4): tightly packed rows, bottom row first, in the machine's byte
+/// order (the front end applied the unpack parameters).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DrawPixels {
     pub width: i32,
@@ -315,8 +317,9 @@ impl DrawPixels {
         Ok(())
     }
 
-    /// The fragments' values (steps 1–4 of the module note).
-    pub fn convert(&self, t: &PixelTransfer) -> Converted {
+    /// The fragments' values (steps 1–4 of the module note; with MAP_COLOR each clamped
+    /// component then goes through its map, §3.6.5).
+    pub fn convert(&self, t: &PixelTransfer, maps: &PixelMaps) -> Converted {
         let stencil = self.format == PixelFormat::StencilIndex;
         let v = components(&self.data, self.ty, !stencil);
         match self.format {
@@ -338,7 +341,12 @@ impl DrawPixels {
                     v.chunks_exact(k)
                         .map(|c| {
                             let c: Vec<f32> = c.iter().map(|x| *x as f32).collect();
-                            t.color(to_rgba(f, &c))
+                            let c = t.color(to_rgba(f, &c));
+                            if t.map_color {
+                                maps.color(c)
+                            } else {
+                                c
+                            }
                         })
                         .collect(),
                 )
@@ -386,14 +394,17 @@ mod tests {
             vec![0, 255],
             2,
         );
-        assert_eq!(ub.convert(&t), Converted::Color(vec![Vec4::W, Vec4::ONE]));
+        assert_eq!(
+            ub.convert(&t, &PixelMaps::default()),
+            Converted::Color(vec![Vec4::W, Vec4::ONE])
+        );
         let us = draw(
             PixelFormat::Alpha,
             PixelType::UnsignedShort,
             [65535u16.to_ne_bytes(), 32768u16.to_ne_bytes()].concat(),
             2,
         );
-        let Converted::Color(c) = us.convert(&t) else {
+        let Converted::Color(c) = us.convert(&t, &PixelMaps::default()) else {
             panic!("colour")
         };
         assert_eq!(c[0], Vec4::new(0.0, 0.0, 0.0, 1.0));
@@ -404,7 +415,10 @@ mod tests {
             u32::MAX.to_ne_bytes().to_vec(),
             1,
         );
-        assert_eq!(ui.convert(&t), Converted::Depth(vec![1.0]));
+        assert_eq!(
+            ui.convert(&t, &PixelMaps::default()),
+            Converted::Depth(vec![1.0])
+        );
     }
 
     #[test]
@@ -424,7 +438,7 @@ mod tests {
         );
         // R = 0.5·4 → 1 (clamped), B = 0 + 0.25, A = 1 (filled) · 0.5.
         assert_eq!(
-            rgb.convert(&t),
+            rgb.convert(&t, &PixelMaps::default()),
             Converted::Color(vec![Vec4::new(1.0, 0.0, 0.25, 0.5)])
         );
     }

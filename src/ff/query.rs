@@ -54,6 +54,7 @@ use super::framebuffer;
 use super::glenum::{gl, registry as r, GlEnum};
 use super::light::MAX_LIGHTS;
 use super::matrix::MatrixStack;
+use super::pixel_map::{PixelMapName, MAX_PIXEL_MAP_TABLE};
 use super::state::{FixedState, MAX_TEXTURE_UNITS};
 use super::texenv::{CombineSource, TexEnv};
 use super::texgen::TexCoord;
@@ -283,6 +284,18 @@ pnames! {
     INDEX_OFFSET => |s| int(s.pixel_transfer.index_offset),
     MAP_COLOR => |s| boolean(s.pixel_transfer.map_color),
     MAP_STENCIL => |s| boolean(s.pixel_transfer.map_stencil),
+    // The pixel maps' sizes (Table 6.17, `pixel_map`).
+    PIXEL_MAP_I_TO_I_SIZE => |s| count(s.pixel_maps.get(PixelMapName::IToI).len()),
+    PIXEL_MAP_S_TO_S_SIZE => |s| count(s.pixel_maps.get(PixelMapName::SToS).len()),
+    PIXEL_MAP_I_TO_R_SIZE => |s| count(s.pixel_maps.get(PixelMapName::IToR).len()),
+    PIXEL_MAP_I_TO_G_SIZE => |s| count(s.pixel_maps.get(PixelMapName::IToG).len()),
+    PIXEL_MAP_I_TO_B_SIZE => |s| count(s.pixel_maps.get(PixelMapName::IToB).len()),
+    PIXEL_MAP_I_TO_A_SIZE => |s| count(s.pixel_maps.get(PixelMapName::IToA).len()),
+    PIXEL_MAP_R_TO_R_SIZE => |s| count(s.pixel_maps.get(PixelMapName::RToR).len()),
+    PIXEL_MAP_G_TO_G_SIZE => |s| count(s.pixel_maps.get(PixelMapName::GToG).len()),
+    PIXEL_MAP_B_TO_B_SIZE => |s| count(s.pixel_maps.get(PixelMapName::BToB).len()),
+    PIXEL_MAP_A_TO_A_SIZE => |s| count(s.pixel_maps.get(PixelMapName::AToA).len()),
+    MAX_PIXEL_MAP_TABLE => |_| count(MAX_PIXEL_MAP_TABLE),
 
     // Lighting (Tables 6.9, 6.10).
     LIGHT_MODEL_AMBIENT => |s| normalized(&s.light_model.ambient.to_array()),

@@ -252,6 +252,8 @@ pub struct FixedState {
     pub raster: RasterPos,
     /// glPixelTransfer (`pixels`). GL default: [`PixelTransfer::DEFAULT`].
     pub pixel_transfer: PixelTransfer,
+    /// glPixelMap (`pixel_map`). GL default: each map one entry of 0.
+    pub pixel_maps: super::pixel_map::PixelMaps,
     /// glPixelZoom. GL default: (1, 1).
     pub pixel_zoom: PixelZoom,
 }
@@ -324,6 +326,7 @@ impl FixedState {
             hints: Hints::DEFAULT,
             raster: RasterPos::DEFAULT,
             pixel_transfer: PixelTransfer::DEFAULT,
+            pixel_maps: Default::default(),
             pixel_zoom: PixelZoom::DEFAULT,
         }
     }

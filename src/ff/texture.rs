@@ -126,6 +126,11 @@ impl PixelType {
             PixelType::UnsignedInt | PixelType::Float => 4,
         }
     }
+
+    /// Bytes of one group of `format`: one element per component.
+    pub fn group_bytes(self, format: PixelFormat) -> usize {
+        format.components() * self.size()
+    }
 }
 
 /// Bytes of a tightly packed `width × height` image (UNPACK/PACK_ALIGNMENT 1 assumed; the

@@ -67,12 +67,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::TexSubImage1D => {
             c.count(7)?;
             target(c, TextureTarget::Texture1D)?;
-            let shape = PixelShape {
-                width: c.i32(3)?,
-                height: 1,
-                format: c.enm(4)?,
-                ty: c.enm(5)?,
-            };
+            let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(4)?, c.enm(5)?);
             Command::TexSubImage1D(TexSubImage {
                 level: c.i32(1)?,
                 x: c.i32(2)?,

@@ -10,6 +10,8 @@ use crate::ff::api::{CType, Entry, Form};
 use crate::ff::args::{Args, PixelShape};
 use crate::ff::client::{ArrayData, BytesOnly};
 use crate::ff::front::Client;
+use crate::ff::pixel_layout;
+use crate::ff::pixel_store::Packing;
 use crate::ff::*;
 use crate::vocab::DepthRule;
 
@@ -398,8 +400,8 @@ pub(super) struct Call<'s, 'a> {
     pub(super) name: &'static str,
     pub(super) entry: Entry,
     args: &'s [Arg<'a>],
-    /// GL_UNPACK_ALIGNMENT when the call is read: pixel arrays have rows padded to it.
-    unpack_alignment: usize,
+    /// The unpack parameters when the call is read: pixel arrays are laid out by them.
+    unpack: Packing,
 }
 
 impl Call<'_, '_> {
@@ -686,27 +688,26 @@ impl Args for Call<'_, '_> {
     }
 
     /// Pixel data: NULL, or a compound literal whose element type gives the byte encoding,
-    /// its rows padded to GL_UNPACK_ALIGNMENT as a C program's are (GL 1.5 §3.6.4).
+    /// laid out by the unpack parameters as a C program's is (GL 1.5 §3.6.4,
+    /// `pixel_layout`). With only an alignment set, a literal of tight rows (one row, or
+    /// rows the alignment does not pad) is taken as it is.
     fn pixels(&self, i: usize, shape: PixelShape) -> Res<Option<Arc<[u8]>>> {
         let Some(bytes) = self.literal_bytes(i)? else {
             return Ok(None);
         };
-        let (w, h) = (shape.width.max(0) as usize, shape.height.max(0) as usize);
-        let row = w * shape.format.components() * shape.ty.size();
-        let stride = row.div_ceil(self.unpack_alignment) * self.unpack_alignment;
-        if h < 2 || stride == row {
+        let lay = pixel_layout::layout(shape, &self.unpack);
+        let plain = self.unpack == Packing::aligned(self.unpack.alignment);
+        if plain && (lay.rows < 2 || lay.stride == lay.tight_row) {
             return Ok(Some(Arc::from(bytes)));
         }
-        if bytes.len() < stride * (h - 1) + row {
-            return Err(self.bad(
-                i,
-                "pixel rows padded to GL_UNPACK_ALIGNMENT (glPixelStorei sets it; 4 by default)",
-            ));
-        }
-        let rows: Vec<u8> = (0..h)
-            .flat_map(|y| bytes[y * stride..y * stride + row].iter().copied())
-            .collect();
-        Ok(Some(Arc::from(rows)))
+        pixel_layout::unpack(&bytes, shape, &self.unpack)
+            .map(|v| Some(Arc::from(v)))
+            .ok_or_else(|| {
+                self.bad(
+                    i,
+                    "pixel rows as the unpack parameters lay them out (glPixelStorei sets them; rows padded to GL_UNPACK_ALIGNMENT, 4 by default)",
+                )
+            })
     }
     fn array_as(&self, i: usize, n: usize, _ty: CType) -> Res<Vec<f64>> {
         self.array_f64(i, n)
@@ -859,7 +860,7 @@ pub fn parse_lines(src: &str) -> Result<Vec<(usize, Command)>, ScriptError> {
             name: entry.name(),
             entry,
             args: &stmt.args,
-            unpack_alignment: client.pixel_store.unpack_alignment,
+            unpack: client.pixel_store.unpack,
         };
         if entry == Entry::Begin {
             open_line = stmt.line;

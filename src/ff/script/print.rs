@@ -543,6 +543,13 @@ fn call(c: &Command) -> String {
         | Command::PixelTransfer(_)
         | Command::PixelZoom { .. }
         | Command::PolygonStipple(_) => super::print_pixels::call(c, 1),
+        Command::PixelMap(m) => format!(
+            "{}({}, {}, {})",
+            Entry::PixelMapfv,
+            n(m.map),
+            m.values.len(),
+            arr(&m.values)
+        ),
         Command::LineStipple(l) => {
             format!("{}({}, 0x{:04X})", Entry::LineStipple, l.factor, l.pattern)
         }

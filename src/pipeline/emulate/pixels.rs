@@ -285,7 +285,7 @@ impl Emulate {
                 self.pixel_rect(gl, &before, rect, PixelSource::Bitmap)
             }
             Command::DrawPixels(d) => {
-                let image = d.convert(&state.pixel_transfer);
+                let image = d.convert(&state.pixel_transfer, &state.pixel_maps);
                 self.draw_converted(gl, state, d.width, d.height, &image)
             }
             Command::CopyPixels(c) => {
@@ -345,7 +345,7 @@ impl Emulate {
             ty,
             data: Arc::from(data),
         }
-        .convert(&state.pixel_transfer)
+        .convert(&state.pixel_transfer, &state.pixel_maps)
     }
 
     /// Uploads `image` (`width` × `height`) to the pixel-image texture on its unit.

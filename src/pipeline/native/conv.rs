@@ -74,6 +74,11 @@ pub fn copy_kind(k: crate::ff::CopyKind) -> GLenum {
     }
 }
 
+/// A pixel map's GLenum.
+pub fn pixel_map(m: crate::ff::pixel_map::PixelMapName) -> GLenum {
+    gl(m)
+}
+
 /// glPixelTransfer's pname and value (the integer ones as floats, which glPixelTransferf
 /// reads as Mesa's glPixelTransferi passes them).
 pub fn pixel_transfer(p: crate::ff::PixelTransferParam) -> (GLenum, f32) {

@@ -274,6 +274,7 @@ impl Native {
             | Command::DrawPixels(_)
             | Command::CopyPixels(_)
             | Command::PixelTransfer(_)
+            | Command::PixelMap(_)
             | Command::PixelZoom { .. } => {
                 super::pixels::issue(g, cmd);
             }

@@ -47,6 +47,14 @@ pub(super) fn issue(g: &gl::Gl, cmd: &Command) -> bool {
             unsafe { g.PixelTransferf(pname, v) }
         }
         Command::PixelZoom { x, y } => unsafe { g.PixelZoom(*x, *y) },
+        // The stored values (clamped or rounded as Mesa stores them) as floats.
+        Command::PixelMap(m) => unsafe {
+            g.PixelMapfv(
+                conv::pixel_map(m.map),
+                m.values.len() as i32,
+                m.values.as_ptr(),
+            )
+        },
         _ => return false,
     }
     true

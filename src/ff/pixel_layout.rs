@@ -1,0 +1,174 @@
+//! Where a pixel rectangle's groups lie in the program's memory (GL 1.5 §3.6.4, "Unpacking",
+//! and §4.3.2, which packs by the same rules), and the two copies between that memory and
+//! the tight rows the Commands hold.
+//!
+//! For an image of `width × height` groups of `n` elements of `s` bytes each, with
+//! `l` = ROW_LENGTH if > 0 else `width` and `a` = ALIGNMENT:
+//! - a row is `k = a·⌈s·n·l / a⌉` bytes when `s < a`, `s·n·l` otherwise — the same number,
+//!   as `a` and `s` are powers of two: `s·n·l` rounded up to `a`;
+//! - the first group read is `SKIP_PIXELS·n` elements into the row `SKIP_ROWS` rows in;
+//! - with SWAP_BYTES each element of 2 or 4 bytes is read with its bytes reversed
+//!   (GL 1.5 Table 3.7); a packed type (GL 1.2) is one element of its whole size.
+//!
+//! A bitmap (glBitmap, glPolygonStipple, glGetPolygonStipple) is one bit a pixel: a row is
+//! `a·⌈l / 8a⌉` bytes, SKIP_PIXELS counts bits, and LSB_FIRST says that bit 0 of a byte is
+//! its leftmost pixel. The tight form is most significant bit first, rows of ⌈width/8⌉.
+
+use super::args::{PixelShape, ShapeKind};
+use super::pixel_store::{BitOrder, ByteOrder, Packing};
+
+/// Where the rows are, in bytes from the pointer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layout {
+    /// The first byte of the first row read (for a bitmap, the byte holding its first bit).
+    pub first: usize,
+    /// From one row's start to the next.
+    pub stride: usize,
+    /// Bytes of one row in the tight form.
+    pub tight_row: usize,
+    /// Bytes one row touches from its first byte.
+    pub span: usize,
+    pub rows: usize,
+    /// Bytes from the pointer to the end of the last row: what the memory must hold.
+    pub extent: usize,
+}
+
+/// The layout of `shape` under `p`.
+pub fn layout(shape: PixelShape, p: &Packing) -> Layout {
+    let (w, h) = (shape.width.max(0) as usize, shape.height.max(0) as usize);
+    let l = if p.row_length > 0 { p.row_length } else { w };
+    let a = p.alignment.max(1);
+    let (first, stride, tight_row, span) = match shape.kind {
+        ShapeKind::Groups => {
+            let group = shape.group_bytes();
+            let stride = (l * group).div_ceil(a) * a;
+            let row = w * group;
+            (
+                p.skip_rows * stride + p.skip_pixels * group,
+                stride,
+                row,
+                row,
+            )
+        }
+        ShapeKind::Bitmap => {
+            let stride = l.div_ceil(8 * a) * a;
+            let span = (p.skip_pixels % 8 + w).div_ceil(8);
+            (
+                p.skip_rows * stride + p.skip_pixels / 8,
+                stride,
+                w.div_ceil(8),
+                span,
+            )
+        }
+    };
+    let extent = if w == 0 || h == 0 {
+        0
+    } else {
+        first + (h - 1) * stride + span
+    };
+    Layout {
+        first,
+        stride,
+        tight_row,
+        span,
+        rows: if w == 0 { 0 } else { h },
+        extent,
+    }
+}
+
+/// Reverses each `size`-byte element of `row` in place (SWAP_BYTES).
+fn swap_elements(row: &mut [u8], size: usize) {
+    if size > 1 {
+        for e in row.chunks_exact_mut(size) {
+            e.reverse();
+        }
+    }
+}
+
+/// Bit `x` of a row starting at bit `skip` of `bytes`, in `order`.
+fn bit_at(bytes: &[u8], skip: usize, x: usize, order: BitOrder) -> bool {
+    let i = skip + x;
+    let mask = match order {
+        BitOrder::MsbFirst => 0x80 >> (i % 8),
+        BitOrder::LsbFirst => 1 << (i % 8),
+    };
+    bytes.get(i / 8).is_some_and(|b| b & mask != 0)
+}
+
+/// The tight rows of `shape` read from `src` (the program's memory from the pointer), or
+/// `None` when `src` is shorter than the layout's extent.
+pub fn unpack(src: &[u8], shape: PixelShape, p: &Packing) -> Option<Vec<u8>> {
+    let lay = layout(shape, p);
+    if src.len() < lay.extent {
+        return None;
+    }
+    let mut out = Vec::with_capacity(lay.tight_row * lay.rows);
+    for y in 0..lay.rows {
+        let start = lay.first + y * lay.stride;
+        let row = src.get(start..start + lay.span)?;
+        match shape.kind {
+            ShapeKind::Groups => {
+                let at = out.len();
+                out.extend_from_slice(row);
+                if p.swap_bytes == ByteOrder::Swapped {
+                    swap_elements(&mut out[at..], shape.element_bytes());
+                }
+            }
+            ShapeKind::Bitmap => {
+                let w = shape.width.max(0) as usize;
+                let mut bytes = vec![0u8; lay.tight_row];
+                for x in 0..w {
+                    if bit_at(row, p.skip_pixels % 8, x, p.lsb_first) {
+                        bytes[x / 8] |= 0x80 >> (x % 8);
+                    }
+                }
+                out.extend_from_slice(&bytes);
+            }
+        }
+    }
+    Some(out)
+}
+
+/// Writes the tight rows `tight` of `shape` into `dst` (the program's memory from the
+/// pointer, at least the layout's extent) under `p`; bytes (bits, for a bitmap) between
+/// the rows and groups are left as they were. `false` when `dst` or `tight` is short.
+pub fn pack(tight: &[u8], dst: &mut [u8], shape: PixelShape, p: &Packing) -> bool {
+    let lay = layout(shape, p);
+    if dst.len() < lay.extent || tight.len() < lay.tight_row * lay.rows {
+        return false;
+    }
+    for y in 0..lay.rows {
+        let src = &tight[y * lay.tight_row..(y + 1) * lay.tight_row];
+        let start = lay.first + y * lay.stride;
+        let row = &mut dst[start..start + lay.span];
+        match shape.kind {
+            ShapeKind::Groups => {
+                row.copy_from_slice(src);
+                if p.swap_bytes == ByteOrder::Swapped {
+                    swap_elements(row, shape.element_bytes());
+                }
+            }
+            ShapeKind::Bitmap => {
+                let skip = p.skip_pixels % 8;
+                for x in 0..shape.width.max(0) as usize {
+                    let on = src[x / 8] & (0x80 >> (x % 8)) != 0;
+                    let i = skip + x;
+                    let mask = match p.lsb_first {
+                        BitOrder::MsbFirst => 0x80 >> (i % 8),
+                        BitOrder::LsbFirst => 1 << (i % 8),
+                    };
+                    if on {
+                        row[i / 8] |= mask;
+                    } else {
+                        row[i / 8] &= !mask;
+                    }
+                }
+            }
+        }
+    }
+    true
+}
+
+#[cfg(test)]
+#[path = "pixel_layout_tests.rs"]
+mod pixel_layout_tests;

@@ -1,0 +1,134 @@
+//! The address arithmetic of §3.6.4 on small images, each boundary named.
+
+use super::*;
+use crate::ff::texture::{PixelFormat, PixelType};
+
+fn rgb_ub(w: i32, h: i32) -> PixelShape {
+    PixelShape::groups(w, h, PixelFormat::Rgb, PixelType::UnsignedByte)
+}
+
+#[test]
+fn row_length_and_skips_move_the_first_group_and_the_stride() {
+    let p = Packing {
+        row_length: 5,
+        skip_rows: 2,
+        skip_pixels: 1,
+        ..Packing::DEFAULT
+    };
+    // l = 5 RGB bytes: 15 rounded up to 4 = 16; first = 2·16 + 1·3.
+    let lay = layout(rgb_ub(2, 2), &p);
+    assert_eq!((lay.stride, lay.first, lay.tight_row), (16, 35, 6));
+    assert_eq!(lay.extent, 35 + 16 + 6);
+    let src: Vec<u8> = (0..=255).collect();
+    let out = unpack(&src, rgb_ub(2, 2), &p).unwrap();
+    assert_eq!(out, [35, 36, 37, 38, 39, 40, 51, 52, 53, 54, 55, 56]);
+    assert_eq!(unpack(&src[..lay.extent - 1], rgb_ub(2, 2), &p), None);
+}
+
+#[test]
+fn elements_wider_than_the_alignment_are_not_padded() {
+    let p = Packing::aligned(2);
+    let f = PixelShape::groups(3, 2, PixelFormat::Luminance, PixelType::Float);
+    assert_eq!(layout(f, &p).stride, 12);
+    let ub = PixelShape::groups(3, 2, PixelFormat::Luminance, PixelType::UnsignedByte);
+    assert_eq!(layout(ub, &Packing::aligned(8)).stride, 8);
+}
+
+#[test]
+fn swap_bytes_reverses_each_element_not_the_group() {
+    let p = Packing {
+        swap_bytes: ByteOrder::Swapped,
+        ..Packing::aligned(1)
+    };
+    let us = PixelShape::groups(1, 1, PixelFormat::LuminanceAlpha, PixelType::UnsignedShort);
+    assert_eq!(unpack(&[1, 2, 3, 4], us, &p).unwrap(), [2, 1, 4, 3]);
+    let ui = PixelShape::groups(1, 1, PixelFormat::Luminance, PixelType::UnsignedInt);
+    assert_eq!(unpack(&[1, 2, 3, 4], ui, &p).unwrap(), [4, 3, 2, 1]);
+    let ub = PixelShape::groups(2, 1, PixelFormat::Luminance, PixelType::UnsignedByte);
+    assert_eq!(unpack(&[1, 2], ub, &p).unwrap(), [1, 2]);
+}
+
+#[test]
+fn lsb_first_bitmaps_and_bit_skips() {
+    let lsb = Packing {
+        lsb_first: BitOrder::LsbFirst,
+        ..Packing::aligned(1)
+    };
+    let b = PixelShape::bitmap(8, 1);
+    // LSB first: bit 0 is the leftmost pixel; the tight form puts it in bit 7.
+    assert_eq!(unpack(&[0x01], b, &lsb).unwrap(), [0x80]);
+    assert_eq!(unpack(&[0x80], b, &lsb).unwrap(), [0x01]);
+    let skip = Packing {
+        skip_pixels: 3,
+        ..Packing::aligned(1)
+    };
+    // Skipping 3 bits: pixels 0..8 are bits 3..11 of the row, MSB first.
+    let lay = layout(b, &skip);
+    assert_eq!((lay.first, lay.span), (0, 2));
+    assert_eq!(
+        unpack(&[0b0001_0000, 0b1110_0000], b, &skip).unwrap(),
+        [0x87]
+    );
+    let skip9 = Packing {
+        skip_pixels: 9,
+        ..Packing::aligned(1)
+    };
+    assert_eq!(layout(b, &skip9).first, 1);
+    // Rows of a bitmap: a·⌈l / 8a⌉ bytes, l = 17 bits, a = 4: 4 bytes.
+    let long = Packing {
+        row_length: 17,
+        ..Packing::DEFAULT
+    };
+    assert_eq!(layout(PixelShape::bitmap(3, 2), &long).stride, 4);
+}
+
+#[test]
+fn pack_is_unpack_inverted_and_leaves_the_gaps() {
+    for p in [
+        Packing {
+            row_length: 4,
+            skip_rows: 1,
+            skip_pixels: 1,
+            swap_bytes: ByteOrder::Swapped,
+            ..Packing::DEFAULT
+        },
+        Packing {
+            skip_pixels: 5,
+            lsb_first: BitOrder::LsbFirst,
+            ..Packing::aligned(2)
+        },
+    ] {
+        for shape in [
+            PixelShape::groups(2, 2, PixelFormat::Rgb, PixelType::UnsignedShort),
+            PixelShape::bitmap(11, 3),
+        ] {
+            let lay = layout(shape, &p);
+            let tight: Vec<u8> = (0..lay.tight_row * lay.rows)
+                .map(|i| (i * 37 + 11) as u8)
+                .collect();
+            let mut dst = vec![0xAAu8; lay.extent];
+            assert!(pack(&tight, &mut dst, shape, &p));
+            let back = unpack(&dst, shape, &p).unwrap();
+            // Only the bits of real pixels survive a round trip.
+            let keep = |v: &[u8]| -> Vec<u8> {
+                match shape.kind {
+                    ShapeKind::Groups => v.to_vec(),
+                    ShapeKind::Bitmap => v
+                        .chunks(lay.tight_row)
+                        .flat_map(|r| {
+                            let mut r = r.to_vec();
+                            if let Some(l) = r.last_mut() {
+                                *l &= 0xFFu8 << ((8 - shape.width as usize % 8) % 8);
+                            }
+                            r
+                        })
+                        .collect(),
+                }
+            };
+            assert_eq!(keep(&back), keep(&tight), "{p:?} {shape:?}");
+            if shape.kind == ShapeKind::Groups {
+                assert_eq!(dst[0], 0xAA, "a skipped row is left alone");
+            }
+        }
+    }
+}

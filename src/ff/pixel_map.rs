@@ -1,0 +1,179 @@
+//! glPixelMap (GL 1.5 §3.6.3, Table 3.3): the lookup tables MAP_COLOR and MAP_STENCIL
+//! switch on, and where they apply (§3.6.5, after scale and bias).
+//!
+//! Ten maps are kept, as GL's RGBA-mode pipeline uses them: I_TO_I, S_TO_S, I_TO_R/G/B/A
+//! (read by colour-index data, which the layer has no format for: kept and answered) and
+//! R_TO_R, G_TO_G, B_TO_B, A_TO_A. Each holds 1 to [`MAX_PIXEL_MAP_TABLE`] entries; GL's
+//! initial map is one entry of 0. Stored as Mesa's `store_pixelmap` stores them: the
+//! colour maps' values clamped to [0, 1], S_TO_S's rounded to integers, I_TO_I's as given.
+//! glPixelMapuiv and glPixelMapusv give a colour map c/(2³² − 1) and c/(2¹⁶ − 1), an index
+//! map the integers themselves.
+//!
+//! Lookup of a colour component c in [0, 1] (after scale, bias and the clamp): the entry
+//! `floor(c · (size − 1))`. GL 1.5 §3.6.5 says the nearest entry; Mesa 22.3 on llvmpipe
+//! truncates in glDrawPixels and glCopyPixels alike (measured, tests/c/pixelstore.c: red
+//! 51/255 through a 5-entry map takes entry 0), and the layer follows Mesa.
+
+use std::sync::Arc;
+
+use super::error::{GlError, GlResult};
+
+/// Mesa's MAX_PIXEL_MAP_TABLE (GL's minimum is 32).
+pub const MAX_PIXEL_MAP_TABLE: usize = 256;
+
+/// The maps of Table 3.3 (the RGBA-mode ones and the index ones).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PixelMapName {
+    IToI,
+    SToS,
+    IToR,
+    IToG,
+    IToB,
+    IToA,
+    RToR,
+    GToG,
+    BToB,
+    AToA,
+}
+
+impl PixelMapName {
+    pub const ALL: [PixelMapName; 10] = [
+        PixelMapName::IToI,
+        PixelMapName::SToS,
+        PixelMapName::IToR,
+        PixelMapName::IToG,
+        PixelMapName::IToB,
+        PixelMapName::IToA,
+        PixelMapName::RToR,
+        PixelMapName::GToG,
+        PixelMapName::BToB,
+        PixelMapName::AToA,
+    ];
+
+    fn index(self) -> usize {
+        self as usize
+    }
+
+    /// The maps indexed by a colour index or stencil value, whose size must be a power of
+    /// two (the index is masked by size − 1).
+    pub fn indexed_by_integers(self) -> bool {
+        matches!(
+            self,
+            PixelMapName::IToI
+                | PixelMapName::SToS
+                | PixelMapName::IToR
+                | PixelMapName::IToG
+                | PixelMapName::IToB
+                | PixelMapName::IToA
+        )
+    }
+
+    /// The maps whose values are integers (indices), not colours.
+    pub fn holds_integers(self) -> bool {
+        matches!(self, PixelMapName::IToI | PixelMapName::SToS)
+    }
+}
+
+/// The values of a glPixelMap call, as the caller's type gave them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MapValues {
+    Float,
+    UInt,
+    UShort,
+}
+
+/// One glPixelMap: the map and its values as stored (see the module note).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelMap {
+    pub map: PixelMapName,
+    pub values: Arc<[f32]>,
+}
+
+impl PixelMap {
+    /// glPixelMap{f,ui,us}v(map, size, values): size outside 1..=MAX, or not a power of
+    /// two for a map indexed by integers, is INVALID_VALUE (§3.6.3).
+    pub fn new(map: PixelMapName, raw: &[f64], given: MapValues) -> Result<Self, GlError> {
+        let n = raw.len();
+        if n == 0 || n > MAX_PIXEL_MAP_TABLE {
+            return Err(GlError::invalid_value(
+                "glPixelMap size must be 1 to GL_MAX_PIXEL_MAP_TABLE",
+            ));
+        }
+        if map.indexed_by_integers() && !n.is_power_of_two() {
+            return Err(GlError::invalid_value(
+                "glPixelMap size of an I or S map must be a power of two",
+            ));
+        }
+        let values = raw
+            .iter()
+            .map(|v| {
+                let v = match (given, map.holds_integers()) {
+                    (MapValues::Float, _) | (_, true) => *v,
+                    (MapValues::UInt, false) => v / 4294967295.0,
+                    (MapValues::UShort, false) => v / 65535.0,
+                };
+                match map {
+                    PixelMapName::IToI => v as f32,
+                    PixelMapName::SToS => v.round() as f32,
+                    _ => v.clamp(0.0, 1.0) as f32,
+                }
+            })
+            .collect();
+        Ok(Self { map, values })
+    }
+}
+
+/// The ten maps. GL default: each one entry of 0.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelMaps {
+    maps: [Arc<[f32]>; 10],
+}
+
+impl Default for PixelMaps {
+    fn default() -> Self {
+        let one: Arc<[f32]> = Arc::from([0.0f32]);
+        Self {
+            maps: std::array::from_fn(|_| one.clone()),
+        }
+    }
+}
+
+impl PixelMaps {
+    pub fn get(&self, map: PixelMapName) -> &Arc<[f32]> {
+        &self.maps[map.index()]
+    }
+
+    pub fn set(&mut self, m: &PixelMap) -> GlResult {
+        self.maps[m.map.index()] = m.values.clone();
+        Ok(())
+    }
+
+    /// One component c ∈ [0, 1] through `map`: entry floor(c · (size − 1)) (Mesa's rule,
+    /// see the module note).
+    pub fn lookup(&self, map: PixelMapName, c: f32) -> f32 {
+        let t = self.get(map);
+        let i = (c.clamp(0.0, 1.0) * (t.len() - 1) as f32).floor() as usize;
+        t.get(i.min(t.len() - 1)).copied().unwrap_or(0.0)
+    }
+
+    /// An RGBA colour through R_TO_R, G_TO_G, B_TO_B and A_TO_A (§3.6.5, MAP_COLOR).
+    pub fn color(&self, c: glam::Vec4) -> glam::Vec4 {
+        glam::Vec4::new(
+            self.lookup(PixelMapName::RToR, c.x),
+            self.lookup(PixelMapName::GToG, c.y),
+            self.lookup(PixelMapName::BToB, c.z),
+            self.lookup(PixelMapName::AToA, c.w),
+        )
+    }
+
+    /// A stencil value through S_TO_S (MAP_STENCIL): entry s & (size − 1).
+    pub fn stencil(&self, s: i64) -> f32 {
+        let t = self.get(PixelMapName::SToS);
+        let i = (s & (t.len() as i64 - 1)) as usize;
+        t.get(i).copied().unwrap_or(0.0)
+    }
+}
+
+#[cfg(test)]
+#[path = "pixel_map_tests.rs"]
+mod pixel_map_tests;
