@@ -8,7 +8,7 @@
 use glam::{Vec3, Vec4};
 use glow::HasContext;
 
-use super::draw::set_current_values;
+use super::draw::{set_current_values, SentAttribs};
 use super::line_stipple::{Dash, DashEnd};
 use super::shadergen::{
     ATTRIB_COLOR, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR, ATTRIB_SHADE_NORMAL,
@@ -114,6 +114,7 @@ fn arrays(g: &Geometry, dashes: &[Dash]) -> Option<Vec<(u32, Array)>> {
 /// what it uploaded.
 pub fn draw(
     gl: &glow::Context,
+    sent: &mut SentAttribs,
     state: &FixedState,
     g: &Geometry,
     dashes: &[Dash],
@@ -155,6 +156,7 @@ pub fn draw(
             }
             set_current_values(
                 gl,
+                sent,
                 state,
                 g.normals.is_some(),
                 g.colors.is_some(),

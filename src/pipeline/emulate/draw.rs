@@ -23,7 +23,7 @@ use super::assembly::{self, Diagonal};
 use super::polygon::{split_corners, Corner, Outline};
 use super::shadergen::{
     ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR,
-    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0,
+    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0, ATTRIB_WINDOW,
 };
 use crate::ff::{FixedState, Geometry, Primitive, MAX_TEXTURE_UNITS};
 use crate::pipeline::PipelineError;
@@ -243,13 +243,14 @@ impl GpuGeometry {
 
     /// Draws with the current values standing in for the missing arrays; non-indexed QUADS
     /// take the diagonal Mesa would take under the current matrices (`assembly`).
-    pub fn draw(&self, gl: &glow::Context, state: &FixedState) {
+    pub fn draw(&self, gl: &glow::Context, sent: &mut SentAttribs, state: &FixedState) {
         // SAFETY: plain GL calls on the current context; every range lies in the uploaded
         // buffers (counts come from the upload).
         unsafe {
             gl.bind_vertex_array(Some(self.vao));
             set_current_values(
                 gl,
+                sent,
                 state,
                 self.has_normals,
                 self.has_colors,
@@ -317,30 +318,56 @@ impl GpuGeometry {
 /// bound vertex array object).
 pub fn set_current_values(
     gl: &glow::Context,
+    sent: &mut SentAttribs,
     state: &FixedState,
     has_normals: bool,
     has_colors: bool,
     has_texcoords: &[bool; MAX_TEXTURE_UNITS],
 ) {
     let cur = &state.current;
-    // SAFETY: constant attribute values on the current context.
-    unsafe {
-        if !has_normals {
-            let n = cur.normal;
-            for location in [ATTRIB_NORMAL, ATTRIB_SHADE_NORMAL] {
-                gl.vertex_attrib_4_f32(location, n.x, n.y, n.z, 0.0);
-            }
+    if !has_normals {
+        let n = cur.normal;
+        for location in [ATTRIB_NORMAL, ATTRIB_SHADE_NORMAL] {
+            sent.set(gl, location, [n.x, n.y, n.z, 0.0]);
         }
-        if !has_colors {
-            let c = cur.color;
-            for location in [ATTRIB_COLOR, ATTRIB_SHADE_COLOR] {
-                gl.vertex_attrib_4_f32(location, c.x, c.y, c.z, c.w);
-            }
+    }
+    if !has_colors {
+        for location in [ATTRIB_COLOR, ATTRIB_SHADE_COLOR] {
+            sent.set(gl, location, cur.color.to_array());
         }
-        for (u, (has, t)) in has_texcoords.iter().zip(&cur.texcoords).enumerate() {
-            if !has {
-                gl.vertex_attrib_4_f32(ATTRIB_TEXCOORD0 + u as u32, t.x, t.y, t.z, t.w);
-            }
+    }
+    for (u, (has, t)) in has_texcoords.iter().zip(&cur.texcoords).enumerate() {
+        if !has {
+            sent.set(gl, ATTRIB_TEXCOORD0 + u as u32, t.to_array());
+        }
+    }
+}
+
+/// The generic attribute values last sent with glVertexAttrib4f — context state in core
+/// GL, not a vertex array's — so that a draw sends only the ones that changed (each sent
+/// value costs the driver a revalidation of the vertex state). Compared bit for bit, so a
+/// −0 after a +0 is sent.
+pub struct SentAttribs([Option<[u32; 4]>; ATTRIB_SLOTS]);
+
+/// The attribute locations the generated programs use (`shadergen::ATTRIB_*`).
+const ATTRIB_SLOTS: usize = ATTRIB_WINDOW as usize + 1;
+
+impl Default for SentAttribs {
+    fn default() -> Self {
+        SentAttribs([None; ATTRIB_SLOTS])
+    }
+}
+
+impl SentAttribs {
+    fn set(&mut self, gl: &glow::Context, location: u32, v: [f32; 4]) {
+        let bits = v.map(f32::to_bits);
+        let Some(slot) = self.0.get_mut(location as usize) else {
+            return;
+        };
+        if *slot != Some(bits) {
+            // SAFETY: a constant attribute value on the current context.
+            unsafe { gl.vertex_attrib_4_f32(location, v[0], v[1], v[2], v[3]) };
+            *slot = Some(bits);
         }
     }
 }

@@ -73,6 +73,10 @@ pub struct VertexKey {
     pub normalize: bool,
     pub rescale_normal: bool,
     pub units: Vec<VertexUnitKey>,
+    /// The program writes gl_PointSize (glPointSize's value): a pass that rasterises
+    /// points. Set per pass; true unless the pass draws no points, since a vertex output
+    /// less is work saved for every vertex.
+    pub point_size: bool,
 }
 
 /// The source of a vertex's clip coordinates.
@@ -245,6 +249,7 @@ impl ShaderKey {
             rescale_normal: normal_used && state.rescale_normal && !state.normalize,
             units: vertex_units,
             lighting,
+            point_size: true,
         };
         let combiners = state.register_combiners.get().map(|rc| CombinersKey {
             stages: rc.active_stages().to_vec(),

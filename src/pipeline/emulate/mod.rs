@@ -68,6 +68,8 @@ pub struct Emulate {
     pixel_image: Option<glow::Texture>,
     /// The window's accumulation buffer, when it has one (`accum`).
     accum: Option<crate::ff::accum::AccumBuffer>,
+    /// The generic attribute values last sent (`draw::SentAttribs`).
+    sent: draw::SentAttribs,
 }
 
 /// Commands executed by generated programs on a core 3.3 context.
@@ -90,6 +92,7 @@ impl EmulatedPipeline {
             target,
             pixel_image: None,
             accum: None,
+            sent: draw::SentAttribs::default(),
             programs: ProgramCache::default(),
             geometry: GeometryCache::default(),
             textures: Textures::default(),
@@ -203,6 +206,7 @@ impl Emulate {
         for pass in passes {
             let mut key = base.clone();
             key.fragment.edges = pass.edges;
+            key.vertex.point_size = pass.draws_points();
             key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
             self.draw_pass(gl, state, &key, &pass, Drawn::Geometry(geometry))?;
         }
@@ -230,8 +234,8 @@ impl Emulate {
         self.textures.bind_units(gl, state, &units)?;
         self.raster.sync(gl, state, Some(pass));
         match drawn {
-            Drawn::Geometry(g) => self.geometry.get(gl, g)?.draw(gl, state),
-            Drawn::Dashes(g, d) => dashes::draw(gl, state, g, d)?,
+            Drawn::Geometry(g) => self.geometry.get(gl, g)?.draw(gl, &mut self.sent, state),
+            Drawn::Dashes(g, d) => dashes::draw(gl, &mut self.sent, state, g, d)?,
         }
         Ok(())
     }

@@ -51,8 +51,10 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     }
     // Points (and polygons in POINT mode) take glPointSize's value; core GL reads it
     // from here with PROGRAM_POINT_SIZE on. Lines and triangles ignore it.
-    let size = w.uniform(UniformSource::PointSize);
-    w.line(format!("gl_PointSize = {size};"));
+    if key.point_size {
+        let size = w.uniform(UniformSource::PointSize);
+        w.line(format!("gl_PointSize = {size};"));
+    }
     let mut eye = EyeTerms::default();
     for &i in &key.clip_planes {
         // User clip plane i (GL 1.5 §2.12): kept where p′·x_eye ≥ 0, p′ the eye plane.
@@ -373,12 +375,15 @@ fn emit_light(
     } else {
         format!("normalize({v}_dir + view_dir)")
     };
-    w.line(format!("if ({v}_ndl > 0.0) {{"));
-    w.line(format!("    float {v}_ndh = max(dot({n}, {half}), 0.0);"));
+    // Only where n·L > 0 (§2.14.1); a select rather than a branch, as Mesa's program
+    // has it: every lane of llvmpipe's SIMD batch computes both sides either way.
+    w.line(format!("float {v}_ndh = max(dot({n}, {half}), 0.0);"));
     w.line(format!(
-        "    {specular} += (({shin} == 0.0) ? 1.0 : pow({v}_ndh, {shin})) * {ms}.rgb * {ls}.rgb;"
+        "float {v}_sp = ({shin} == 0.0) ? 1.0 : pow({v}_ndh, {shin});"
     ));
-    w.line("}");
+    w.line(format!(
+        "{specular} += ({v}_ndl > 0.0) ? {v}_sp * {ms}.rgb * {ls}.rgb : vec3(0.0);"
+    ));
     w.line(format!("{c} += {v}_att * {v}_c;"));
     if lighting.separate_specular {
         w.line(format!("{secondary} += {v}_att * {specular};"));
