@@ -97,7 +97,7 @@ impl<T: CElement> From<*mut T> for CArg {
 ///
 /// # Safety
 /// `p` points to at least `out.len()` elements of `elem`'s type.
-unsafe fn read_elements(p: *const c_void, elem: CElem, out: &mut [f64]) {
+pub(super) unsafe fn read_elements(p: *const c_void, elem: CElem, out: &mut [f64]) {
     unsafe fn each<T: Copy>(p: *const c_void, out: &mut [f64], f: impl Fn(T) -> f64) {
         for (k, slot) in out.iter_mut().enumerate() {
             *slot = f(p.cast::<T>().add(k).read_unaligned());

@@ -11,7 +11,7 @@
 //! cannot take whole (a null array, a unit outside GL_TEXTURE0…, glRect) goes the general
 //! way, which gives the error.
 
-use super::cargs::{CArg, CElem};
+use super::cargs::{read_elements, CArg};
 use crate::ff::api::{Attrib, AttribCall};
 use crate::ff::glenum::Family;
 use crate::ff::immediate::{component, DEFAULT_COMPONENTS};
@@ -40,9 +40,13 @@ pub fn read(form: AttribCall, args: &[CArg]) -> Option<(u8, [f32; 4])> {
         if p.is_null() {
             return None;
         }
+        let mut v = [0.0; 4];
         // SAFETY: the program passed an array of at least the prototype's count of its
         // element type (GL's contract with the caller: glVertex3fv reads three floats).
-        unsafe { read_array(p, elem, form, &mut c[..len]) };
+        unsafe { read_elements(p, elem, &mut v[..len]) };
+        for (slot, x) in c.iter_mut().zip(&v[..len]) {
+            *slot = component(form, *x);
+        }
     } else {
         for (slot, arg) in c[..len].iter_mut().zip(values.get(..len)?) {
             *slot = match *arg {
@@ -53,28 +57,4 @@ pub fn read(form: AttribCall, args: &[CArg]) -> Option<(u8, [f32; 4])> {
         }
     }
     Some((unit, c))
-}
-
-/// `out.len()` components from an array of `elem`; floats are taken as they are.
-///
-/// # Safety
-/// `p` points to at least `out.len()` elements of `elem`'s type.
-#[inline]
-unsafe fn read_array(p: *const std::ffi::c_void, elem: CElem, form: AttribCall, out: &mut [f32]) {
-    unsafe fn each<T: Copy>(p: *const std::ffi::c_void, out: &mut [f32], f: impl Fn(T) -> f32) {
-        for (k, slot) in out.iter_mut().enumerate() {
-            *slot = f(p.cast::<T>().add(k).read_unaligned());
-        }
-    }
-    let c = |x: f64| component(form, x);
-    match elem {
-        CElem::Float => each(p, out, |x: f32| x),
-        CElem::Double => each(p, out, |x: f64| x as f32),
-        CElem::Byte => each(p, out, |x: i8| c(f64::from(x))),
-        CElem::UByte | CElem::Void => each(p, out, |x: u8| c(f64::from(x))),
-        CElem::Short => each(p, out, |x: i16| c(f64::from(x))),
-        CElem::UShort => each(p, out, |x: u16| c(f64::from(x))),
-        CElem::Int => each(p, out, |x: i32| c(f64::from(x))),
-        CElem::UInt => each(p, out, |x: u32| c(f64::from(x))),
-    }
 }

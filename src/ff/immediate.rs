@@ -217,19 +217,13 @@ impl Immediate {
         let Some(open) = &mut self.open else {
             return false;
         };
-        match attrib {
-            Attrib::Vertex => open.vertex(Vec4::from_array(c)),
-            Attrib::Color => open.attribute(Attr::Color(Vec4::from_array(c))).is_ok(),
-            Attrib::Normal => open
-                .attribute(Attr::Normal(Vec3::new(c[0], c[1], c[2])))
-                .is_ok(),
-            Attrib::TexCoord => open
-                .attribute(Attr::TexCoord(0, Vec4::from_array(c)))
-                .is_ok(),
-            Attrib::MultiTexCoord => open
-                .attribute(Attr::TexCoord(unit, Vec4::from_array(c)))
-                .is_ok(),
-            Attrib::Rect => false,
+        match op_of(attrib, unit, c) {
+            Op::Vertex(p) => {
+                open.vertex(p);
+                true
+            }
+            Op::Attribute(a) => open.attribute(a).is_ok(),
+            _ => false,
         }
     }
 
@@ -357,7 +351,7 @@ pub fn changed_current(begin: &CurrentValues, now: &CurrentValues, out: &mut Vec
 impl Open {
     /// A vertex with the current values of every attribute with an array.
     #[inline]
-    fn vertex(&mut self, p: Vec4) -> bool {
+    fn vertex(&mut self, p: Vec4) {
         if self.pending {
             self.arrays_for_called();
         }
@@ -379,7 +373,6 @@ impl Open {
                 }
             }
         }
-        true
     }
 
     /// An attribute inside the pair: the current value, and an array from the next vertex.

@@ -11,26 +11,10 @@
 #include <GL/osmesa.h>
 #include <GL/glext.h>
 #include <stdio.h>
+#include "report.h"
 
 #define W 64
 #define H 64
-
-static int write_ppm(const char *path, const GLubyte *rgba, int w, int h) {
-  FILE *f = fopen(path, "wb");
-  if (!f) return 0;
-  fprintf(f, "P6\n%d %d\n255\n", w, h);
-  for (int y = h - 1; y >= 0; y--)
-    for (int x = 0; x < w; x++) fwrite(rgba + 4 * (y * w + x), 1, 3, f);
-  return fclose(f) == 0;
-}
-
-static void err(const char *what) { printf("%-40s err 0x%x\n", what, glGetError()); }
-
-static void ints(const char *what, GLenum pname) {
-  GLint v = -7;
-  glGetIntegerv(pname, &v);
-  printf("%-40s %d  err 0x%x\n", what, v, glGetError());
-}
 
 static void status(const char *what, GLenum target) {
   GLenum s = glCheckFramebufferStatus(target);

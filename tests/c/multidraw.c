@@ -9,20 +9,10 @@
 #include <GL/osmesa.h>
 #include <GL/glext.h>
 #include <stdio.h>
+#include "report.h"
 
 #define W 96
 #define H 64
-
-static int write_ppm(const char *path, const GLubyte *rgba, int w, int h) {
-  FILE *f = fopen(path, "wb");
-  if (!f) return 0;
-  fprintf(f, "P6\n%d %d\n255\n", w, h);
-  for (int y = h - 1; y >= 0; y--)
-    for (int x = 0; x < w; x++) fwrite(rgba + 4 * (y * w + x), 1, 3, f);
-  return fclose(f) == 0;
-}
-
-static void err(const char *what) { printf("%-40s err 0x%x\n", what, glGetError()); }
 
 static void pixel(const char *what, int x, int y) {
   GLubyte p[4] = {0};
