@@ -16,11 +16,13 @@ use crate::ff::api::Entry;
 use crate::ff::args::PixelShape;
 use crate::ff::front::{Client, Reply};
 use crate::ff::pixel_layout;
+use crate::ff::queries::{self, ObjectParam, QueryTarget};
 use crate::ff::{Command, GlErrorKind};
 use crate::gpu::{
     Backend, ColorStorage, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec,
 };
 use crate::pipeline::emulate::EmulatedPipeline;
+use crate::pipeline::queries::QueryFetch;
 use crate::pipeline::Pipeline;
 use crate::vocab::DepthBits;
 
@@ -417,6 +419,15 @@ impl Context {
             _ => {}
         }
         match reply {
+            Reply::QueryObject {
+                id,
+                param,
+                target,
+                signed,
+            } => {
+                self.query_object_out(args.get(2), id, param, target, signed);
+                Ret::None
+            }
             Reply::None => Ret::Enum(0),
             Reply::Value(v) => Ret::Enum(v),
             Reply::Address(a) => Ret::Ptr(a as *const u8),
@@ -531,6 +542,37 @@ impl Context {
             ..shape
         };
         self.pack_out(dst, &r.bytes, shape);
+    }
+
+    /// glGetQueryObject{i,ui}v: what the pipeline counted for query `id`, stored through
+    /// the program's pointer (GL 1.5 §6.1.12: QUERY_RESULT waits for the count).
+    fn query_object_out(
+        &mut self,
+        dst: Option<&CArg>,
+        id: u32,
+        param: ObjectParam,
+        target: QueryTarget,
+        signed: bool,
+    ) {
+        let Some(CArg::Ptr(dst, _)) = dst.copied() else {
+            return;
+        };
+        let fetched = match (param, self.pipeline.as_mut()) {
+            (ObjectParam::Target, _) | (_, None) => 0,
+            (ObjectParam::Result, Some(p)) => p
+                .query_result(&self.gpu, id, QueryFetch::Result)
+                .unwrap_or(0),
+            (ObjectParam::ResultAvailable, Some(p)) => p
+                .query_result(&self.gpu, id, QueryFetch::Available)
+                .unwrap_or(0),
+        };
+        if dst.is_null() {
+            return;
+        }
+        let v = queries::object_value(param, target, fetched, signed);
+        // SAFETY: the program's pointer holds one GLint or GLuint (glGetQueryObject's
+        // contract).
+        unsafe { dst.cast::<u32>().cast_mut().write_unaligned(v) };
     }
 
     /// Tight rows `bytes` of `shape` into the caller's memory at `dst`, laid out by the

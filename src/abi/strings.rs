@@ -29,6 +29,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_vertex_buffer_object",
     "GL_ARB_transpose_matrix",
     "GL_ARB_window_pos",
+    "GL_ARB_occlusion_query",
+    "GL_ARB_occlusion_query2",
     "GL_EXT_texture_edge_clamp",
     "GL_SGIS_texture_edge_clamp",
     "GL_ARB_texture_border_clamp",

@@ -529,7 +529,7 @@ macro_rules! gl_entry_table {
         // textures, multisample coverage, GL 1.4's secondary colour, fog coordinate and point
         // parameters, GL 1.5's occlusion queries. Exported, so a program that calls them
         // links and gets GL_INVALID_OPERATION instead of a missing symbol.
-        BeginQuery = glBeginQuery(Left; target: GLenum, id: GLuint);
+        BeginQuery = glBeginQuery(Script; target: GLenum, id: GLuint);
         ClearIndex = glClearIndex(Left; c: GLfloat);
         CompressedTexImage1D = glCompressedTexImage1D(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
         CompressedTexImage2D = glCompressedTexImage2D(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
@@ -538,18 +538,18 @@ macro_rules! gl_entry_table {
         CompressedTexSubImage2D = glCompressedTexSubImage2D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CompressedTexSubImage3D = glCompressedTexSubImage3D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CopyTexSubImage3D = glCopyTexSubImage3D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
-        DeleteQueries = glDeleteQueries(Left; n: GLsizei, ids: *const GLuint);
-        EndQuery = glEndQuery(Left; target: GLenum);
+        DeleteQueries = glDeleteQueries(Script; n: GLsizei, ids: *const GLuint);
+        EndQuery = glEndQuery(Script; target: GLenum);
         FogCoordPointer = glFogCoordPointer(Left; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
         FogCoordd = glFogCoordd(Left; coord: GLdouble);
         FogCoorddv = glFogCoorddv(Left; coord: *const GLdouble);
         FogCoordf = glFogCoordf(Left; coord: GLfloat);
         FogCoordfv = glFogCoordfv(Left; coord: *const GLfloat);
-        GenQueries = glGenQueries(Left; n: GLsizei, ids: *mut GLuint);
+        GenQueries = glGenQueries(Script; n: GLsizei, ids: *mut GLuint);
         GetCompressedTexImage = glGetCompressedTexImage(Left; target: GLenum, level: GLint, img: *mut c_void);
-        GetQueryObjectiv = glGetQueryObjectiv(Left; id: GLuint, pname: GLenum, params: *mut GLint);
-        GetQueryObjectuiv = glGetQueryObjectuiv(Left; id: GLuint, pname: GLenum, params: *mut GLuint);
-        GetQueryiv = glGetQueryiv(Left; target: GLenum, pname: GLenum, params: *mut GLint);
+        GetQueryObjectiv = glGetQueryObjectiv(Script; id: GLuint, pname: GLenum, params: *mut GLint);
+        GetQueryObjectuiv = glGetQueryObjectuiv(Script; id: GLuint, pname: GLenum, params: *mut GLuint);
+        GetQueryiv = glGetQueryiv(Script; target: GLenum, pname: GLenum, params: *mut GLint);
         IndexMask = glIndexMask(Left; mask: GLuint);
         IndexPointer = glIndexPointer(Left; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
         Indexd = glIndexd(Left; c: GLdouble);
@@ -562,7 +562,7 @@ macro_rules! gl_entry_table {
         Indexsv = glIndexsv(Left; c: *const GLshort);
         Indexub = glIndexub(Left; c: GLubyte);
         Indexubv = glIndexubv(Left; c: *const GLubyte);
-        IsQuery = glIsQuery(Left; id: GLuint) -> GLboolean;
+        IsQuery = glIsQuery(Script; id: GLuint) -> GLboolean;
         PointParameterf = glPointParameterf(Left; pname: GLenum, param: GLfloat);
         PointParameterfv = glPointParameterfv(Left; pname: GLenum, params: *const GLfloat);
         PointParameteri = glPointParameteri(Left; pname: GLenum, param: GLint);
@@ -587,7 +587,7 @@ macro_rules! gl_entry_table {
         SecondaryColorPointer = glSecondaryColorPointer(Left; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
         TexImage3D = glTexImage3D(Left; target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
         TexSubImage3D = glTexSubImage3D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
-        BeginQueryARB = glBeginQueryARB(Left; target: GLenum, id: GLuint);
+        BeginQueryARB = glBeginQueryARB(Script; target: GLenum, id: GLuint);
         CompressedTexImage1DARB = glCompressedTexImage1DARB(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
         CompressedTexImage2DARB = glCompressedTexImage2DARB(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
         CompressedTexImage3DARB = glCompressedTexImage3DARB(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
@@ -595,19 +595,19 @@ macro_rules! gl_entry_table {
         CompressedTexSubImage2DARB = glCompressedTexSubImage2DARB(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CompressedTexSubImage3DARB = glCompressedTexSubImage3DARB(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CopyTexSubImage3DEXT = glCopyTexSubImage3DEXT(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
-        DeleteQueriesARB = glDeleteQueriesARB(Left; n: GLsizei, ids: *const GLuint);
-        EndQueryARB = glEndQueryARB(Left; target: GLenum);
+        DeleteQueriesARB = glDeleteQueriesARB(Script; n: GLsizei, ids: *const GLuint);
+        EndQueryARB = glEndQueryARB(Script; target: GLenum);
         FogCoordPointerEXT = glFogCoordPointerEXT(Left; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
         FogCoorddEXT = glFogCoorddEXT(Left; coord: GLdouble);
         FogCoorddvEXT = glFogCoorddvEXT(Left; coord: *const GLdouble);
         FogCoordfEXT = glFogCoordfEXT(Left; coord: GLfloat);
         FogCoordfvEXT = glFogCoordfvEXT(Left; coord: *const GLfloat);
-        GenQueriesARB = glGenQueriesARB(Left; n: GLsizei, ids: *mut GLuint);
+        GenQueriesARB = glGenQueriesARB(Script; n: GLsizei, ids: *mut GLuint);
         GetCompressedTexImageARB = glGetCompressedTexImageARB(Left; target: GLenum, level: GLint, img: *mut c_void);
-        GetQueryObjectivARB = glGetQueryObjectivARB(Left; id: GLuint, pname: GLenum, params: *mut GLint);
-        GetQueryObjectuivARB = glGetQueryObjectuivARB(Left; id: GLuint, pname: GLenum, params: *mut GLuint);
-        GetQueryivARB = glGetQueryivARB(Left; target: GLenum, pname: GLenum, params: *mut GLint);
-        IsQueryARB = glIsQueryARB(Left; id: GLuint) -> GLboolean;
+        GetQueryObjectivARB = glGetQueryObjectivARB(Script; id: GLuint, pname: GLenum, params: *mut GLint);
+        GetQueryObjectuivARB = glGetQueryObjectuivARB(Script; id: GLuint, pname: GLenum, params: *mut GLuint);
+        GetQueryivARB = glGetQueryivARB(Script; target: GLenum, pname: GLenum, params: *mut GLint);
+        IsQueryARB = glIsQueryARB(Script; id: GLuint) -> GLboolean;
         PointParameterfARB = glPointParameterfARB(Left; pname: GLenum, param: GLfloat);
         PointParameterfEXT = glPointParameterfEXT(Left; pname: GLenum, param: GLfloat);
         PointParameterfvARB = glPointParameterfvARB(Left; pname: GLenum, params: *const GLfloat);
@@ -1124,6 +1124,12 @@ impl Command {
             Command::PopAttrib => Entry::PopAttrib,
             Command::BindFramebuffer { .. } => Entry::BindFramebuffer,
             Command::DeleteFramebuffers(_) => Entry::DeleteFramebuffers,
+            Command::Query(q) => match q {
+                super::queries::QueryCommand::Gen { .. } => Entry::GenQueries,
+                super::queries::QueryCommand::Delete(_) => Entry::DeleteQueries,
+                super::queries::QueryCommand::Begin { .. } => Entry::BeginQuery,
+                super::queries::QueryCommand::End(_) => Entry::EndQuery,
+            },
             Command::BindRenderbuffer(_) => Entry::BindRenderbuffer,
             Command::DeleteRenderbuffers(_) => Entry::DeleteRenderbuffers,
             Command::RenderbufferStorage { .. } => Entry::RenderbufferStorage,

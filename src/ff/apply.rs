@@ -47,7 +47,7 @@ impl FixedState {
     }
 
     fn execute(&mut self, cmd: &Command) -> GlResult {
-        if self.apply_framebuffer(cmd)? {
+        if self.apply_framebuffer(cmd)? || self.apply_query(cmd)? {
             return Ok(());
         }
         let mv = self.modelview.top();
@@ -319,7 +319,8 @@ impl FixedState {
             | Command::FramebufferRenderbuffer { .. }
             | Command::DrawBuffer(_)
             | Command::ReadBuffer(_)
-            | Command::GenerateMipmap(_) => {}
+            | Command::GenerateMipmap(_)
+            | Command::Query(_) => {}
             Command::RasterPos(p) => self.set_raster_pos(*p),
             Command::WindowPos(p) => self.set_window_pos(*p),
             Command::Bitmap(b) => {

@@ -32,6 +32,7 @@ pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
         super::calls_raster::raster,
         super::calls_framebuffer::framebuffer,
         super::calls_pixels::pixels,
+        super::queries::command,
     ] {
         if let Some(cmd) = area(c)? {
             return Ok(cmd);

@@ -453,4 +453,6 @@ pub enum Command {
     PolygonStipple(PolygonStipple),
     /// glLineStipple (§3.4.2): the factor already clamped to [1, 256].
     LineStipple(LineStipple),
+    /// glGenQueries, glDeleteQueries, glBeginQuery, glEndQuery (ff::queries).
+    Query(super::queries::QueryCommand),
 }

@@ -49,6 +49,15 @@ pub enum Reply {
     /// Bytes the call stores through its pointer argument `arg`: glGenBuffers' names,
     /// glGetBufferParameteriv's integer, glGetBufferSubData's data.
     Write { arg: usize, bytes: Vec<u8> },
+    /// glGetQueryObject{i,ui}v of a query the model found readable: the C library reads
+    /// `param` of query `id` from the pipeline and stores it through argument 2, clamped
+    /// to a GLint for the `iv` form (`ff::queries::object_value`).
+    QueryObject {
+        id: u32,
+        param: super::queries::ObjectParam,
+        target: super::queries::QueryTarget,
+        signed: bool,
+    },
 }
 
 impl Reply {

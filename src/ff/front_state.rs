@@ -14,6 +14,7 @@ use super::command::Command;
 use super::error::GlErrorKind;
 use super::front::{Client, Reply};
 use super::glenum::registry as r;
+use super::queries::Answer;
 use super::FixedState;
 
 /// Whether `entry` is one of these calls.
@@ -35,6 +36,7 @@ pub fn handles(entry: Entry) -> bool {
                 | Entry::PrioritizeTextures
         )
         || super::framebuffer::answered_by_front_end(entry)
+        || super::queries::never_compiled(entry)
 }
 
 impl Client {
@@ -104,6 +106,18 @@ impl Client {
                 )))
             }
             Entry::AreTexturesResident | Entry::PrioritizeTextures => self.residence(c, state)?,
+            e if super::queries::never_compiled(e) => {
+                let signed = matches!(e, Entry::GetQueryObjectiv | Entry::GetQueryObjectivARB);
+                super::queries::answer(c, state, out)?.map(|a| match a {
+                    Answer::Reply(r) => r,
+                    Answer::Object { id, param, target } => Reply::QueryObject {
+                        id,
+                        param,
+                        target,
+                        signed,
+                    },
+                })
+            }
             e if super::framebuffer::answered_by_front_end(e) => {
                 super::framebuffer::script_answer(c, state)?
             }

@@ -76,6 +76,7 @@ pub fn compiled(entry: Entry) -> bool {
             | Entry::DisableClientState
             | Entry::InterleavedArrays
     ) && !super::framebuffer::never_compiled(entry)
+        && !super::queries::never_compiled(entry)
 }
 
 impl Lists {

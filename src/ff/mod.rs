@@ -48,6 +48,7 @@ pub mod lists;
 pub mod matrix;
 pub mod pixels;
 pub mod precision;
+pub mod queries;
 pub mod query;
 pub mod raster;
 pub mod raster_light;

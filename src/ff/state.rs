@@ -176,6 +176,8 @@ pub struct FixedState {
     /// Framebuffer objects, renderbuffers, their bindings and the colour buffers drawn
     /// and read. GL default: the window bound, FRONT.
     pub framebuffers: Framebuffers,
+    /// Query objects and the active occlusion query. GL default: none, none active.
+    pub queries: super::queries::Queries,
     /// The default (name 0) textures of TEXTURE_1D and TEXTURE_2D.
     pub default_1d: TextureObject,
     pub default_2d: TextureObject,
@@ -288,6 +290,7 @@ impl FixedState {
             units: [TextureUnit::new(); MAX_TEXTURE_UNITS],
             textures: BTreeMap::new(),
             framebuffers: Framebuffers::default(),
+            queries: Default::default(),
             default_1d: TextureObject::new(TextureTarget::Texture1D),
             default_2d: TextureObject::new(TextureTarget::Texture2D),
             register_combiners: Toggle::off(RegisterCombiners::DEFAULT),

@@ -20,6 +20,8 @@ pub struct Core {
     pub state: FixedState,
     pub readbacks: HashMap<u32, Readback>,
     pub counters: Counters,
+    /// The occlusion queries, on the path's GL.
+    pub queries: super::queries::GlQueries,
 }
 
 impl Core {
@@ -105,6 +107,10 @@ impl<P: Issue> Pipeline for PathPipeline<P> {
             if self.core.state.apply(&cmd).is_err() {
                 continue;
             }
+            if let Command::Query(q) = cmd.as_ref() {
+                self.core.queries.issue(ctx, q)?;
+                continue;
+            }
             self.path.issue(ctx, &mut self.core, &cmd)?;
         }
         Ok(())
@@ -126,7 +132,17 @@ impl<P: Issue> Pipeline for PathPipeline<P> {
         self.path.counters(&self.core.counters)
     }
 
+    fn query_result(
+        &mut self,
+        ctx: &GpuContext,
+        id: u32,
+        what: super::queries::QueryFetch,
+    ) -> Option<u64> {
+        self.core.queries.fetch(ctx, id, what)
+    }
+
     fn release(&mut self, ctx: &GpuContext) {
+        self.core.queries.release(ctx);
         self.path.release(ctx);
     }
 }

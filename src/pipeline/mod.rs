@@ -12,6 +12,7 @@ pub mod emulate;
 pub mod error;
 pub mod framebuffers;
 pub mod native;
+pub mod queries;
 
 use std::borrow::Cow;
 use std::collections::HashMap;
@@ -169,6 +170,11 @@ pub trait Pipeline {
     fn take_gl_error(&mut self) -> Option<GlError>;
 
     fn counters(&self) -> Counters;
+
+    /// What glGetQueryObject* reads of query `id` (`queries`): its sample count, waiting
+    /// for it, or whether it is ready; `None` for a query this path never began.
+    fn query_result(&mut self, ctx: &GpuContext, id: u32, what: queries::QueryFetch)
+        -> Option<u64>;
 
     /// Deletes every GL object the pipeline made (textures, buffers, programs).
     fn release(&mut self, ctx: &GpuContext);

@@ -4,6 +4,7 @@
 //! same f32; non-finite values print as `INFINITY`/`NAN` (<math.h>). Draws print as
 //! glBegin/glEnd with every present attribute before every vertex.
 
+use crate::ff::queries::QueryCommand;
 use std::fmt::Write;
 
 use glam::Vec4;
@@ -452,6 +453,7 @@ fn call(c: &Command) -> String {
             format!("{}({}, {name})", Entry::BindFramebuffer, n(*target))
         }
         Command::DeleteFramebuffers(names) => name_list(Entry::DeleteFramebuffers, names),
+        Command::Query(q) => query(q),
         Command::BindRenderbuffer(name) => {
             format!("{}(GL_RENDERBUFFER, {name})", Entry::BindRenderbuffer)
         }
@@ -596,6 +598,22 @@ fn blit(b: &crate::ff::blit::Blit) -> String {
 }
 
 /// `glDelete…(n, (GLuint[]){a, b})`.
+/// A query command; glGenQueries prints the names it gave, which a replay gives again
+/// (the model hands them out in the same order).
+fn query(q: &QueryCommand) -> String {
+    match q {
+        QueryCommand::Gen { first, count } => {
+            let names: Vec<u32> = (*first..first.saturating_add(*count)).collect();
+            name_list(Entry::GenQueries, &names)
+        }
+        QueryCommand::Delete(names) => name_list(Entry::DeleteQueries, names),
+        QueryCommand::Begin { target, id } => {
+            format!("{}({}, {id})", Entry::BeginQuery, n(*target))
+        }
+        QueryCommand::End(target) => format!("{}({})", Entry::EndQuery, n(*target)),
+    }
+}
+
 fn name_list(entry: Entry, names: &[u32]) -> String {
     let list: Vec<String> = names.iter().map(u32::to_string).collect();
     format!(

@@ -246,6 +246,8 @@ impl Native {
             | Command::FramebufferRenderbuffer { .. }
             | Command::DrawBuffer(_)
             | Command::ReadBuffer(_) => {}
+            // Issued by the path's query mirror (`pipeline::queries`).
+            Command::Query(_) => {}
             Command::GenerateMipmap(t) => unsafe { g.GenerateMipmap(conv::value(*t)) },
             Command::BlitFramebuffer(b) => {
                 let (s, d) = (b.src, b.dst);
