@@ -62,6 +62,7 @@ fn texture(unit: u8, target: TextureTarget, format: TexFormat, texel: &[u8]) -> 
             internal_format: format,
             width: 1,
             height: 1,
+            depth: 1,
             border: 0,
             format: pixel_format,
             ty: PixelType::UnsignedByte,

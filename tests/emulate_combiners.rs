@@ -58,6 +58,7 @@ fn texture(unit: u8, texel: [u8; 4]) -> Vec<Command> {
             internal_format: TexFormat::Rgba8,
             width: 1,
             height: 1,
+            depth: 1,
             border: 0,
             format: PixelFormat::Rgba,
             ty: PixelType::UnsignedByte,

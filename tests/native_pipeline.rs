@@ -85,6 +85,7 @@ fn rgba_texture(name: u32, w: i32, h: i32, texels: Vec<u8>) -> Vec<Command> {
             internal_format: TexFormat::Rgba8,
             width: w,
             height: h,
+            depth: 1,
             border: 0,
             format: PixelFormat::Rgba,
             ty: PixelType::UnsignedByte,

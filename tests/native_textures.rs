@@ -77,6 +77,7 @@ fn texture(
             internal_format: internal,
             width: w,
             height: 1,
+            depth: 1,
             border: 0,
             format,
             ty,

@@ -702,6 +702,7 @@ fn image(target: TextureTarget, level: i32, format: TexFormat, w: i32, h: i32) -
         internal_format: format,
         width: w,
         height: h,
+        depth: 1,
         border: 0,
         format: pf,
         ty,

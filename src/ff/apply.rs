@@ -17,8 +17,8 @@ use super::light::MAX_LIGHTS;
 use super::matrix::{frustum, ortho, plane_to_eye, rotate, scale, translate};
 use super::state::{FixedState, PolygonModes, MAX_TEXTURE_UNITS};
 use super::texture::{
-    blit, check_format_pair, check_image_size, image_size, PixelData, TexLevel, TextureObject,
-    TextureTarget,
+    blit, check_format_pair, check_image_size, image_size, volume_size, PixelData, TexLevel,
+    TextureObject, TextureTarget,
 };
 
 impl FixedState {
@@ -459,9 +459,9 @@ impl FixedState {
         }
         check_format_pair(t.internal_format, t.format)?;
         if let Some(d) = t.data.bytes() {
-            if d.len() != image_size(t.format, t.ty, t.width, t.height) {
+            if d.len() != volume_size(t.format, t.ty, t.width, t.height, t.depth) {
                 return Err(GlError::invalid_value(
-                    "pixel data length differs from width·height·components·size",
+                    "pixel data length differs from width·height·depth·components·size",
                 ));
             }
         }
@@ -469,6 +469,7 @@ impl FixedState {
             internal_format: t.internal_format,
             width: t.width,
             height: t.height,
+            depth: t.depth,
             data: t.data.bytes().map(|bytes| PixelData {
                 format: t.format,
                 ty: t.ty,
@@ -537,6 +538,7 @@ impl FixedState {
             internal_format: c.internal_format,
             width: c.width,
             height: c.height,
+            depth: 1,
             data: None,
         };
         let tex = self.bound_mut(TextureTarget::Texture2D)?;

@@ -95,7 +95,7 @@ pub enum Capability {
     Multisample,
 }
 
-/// glTexImage1D / glTexImage2D.
+/// glTexImage1D / glTexImage2D (`depth` is glTexImage3D's, not yet routed).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TexImage {
     pub target: TextureTarget,
@@ -104,6 +104,9 @@ pub struct TexImage {
     pub width: i32,
     /// 1 for TEXTURE_1D (glTexImage1D has no height).
     pub height: i32,
+    /// 1 for TEXTURE_1D and TEXTURE_2D; for TEXTURE_3D the data holds `depth` images of
+    /// `height` rows, the first image (r = 0) first.
+    pub depth: i32,
     pub border: i32,
     pub format: PixelFormat,
     pub ty: PixelType,
@@ -151,14 +154,19 @@ impl From<Vec<u8>> for TexData {
     }
 }
 
-/// glTexSubImage2D (target TEXTURE_2D).
+/// glTexSubImage1D/2D (the target is the Command's: TexSubImage1D, TexSubImage2D); `z`
+/// and `depth` are glTexSubImage3D's, not yet routed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TexSubImage {
     pub level: i32,
     pub x: i32,
     pub y: i32,
+    /// 0 but for glTexSubImage3D.
+    pub z: i32,
     pub width: i32,
     pub height: i32,
+    /// 1 but for glTexSubImage3D.
+    pub depth: i32,
     pub format: PixelFormat,
     pub ty: PixelType,
     pub data: Arc<[u8]>,

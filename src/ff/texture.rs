@@ -1,5 +1,10 @@
 //! Texture objects, formats and parameters (GL 1.5 §3.8, ARB_depth_texture, ARB_shadow,
-//! ARB_shadow_ambient).
+//! ARB_shadow_ambient), sized for GL 1.2's 3D textures (EXT_texture3D; its calls are not
+//! yet routed here, see the README's "Left out").
+//!
+//! A level has a width, a height and a depth; a 1D level has height 1, a 1D or 2D level
+//! depth 1, so one completeness rule serves every target: each mip level is
+//! max(1, ⌊previous / 2⌋) in every dimension down to 1×1×1.
 //!
 //! The table maps a texture name (u32, as GL) to its target, parameters and mip levels.
 //! Name 0 is the default texture of each target. Pixel data is kept as the bytes of the
@@ -19,6 +24,12 @@ use super::fragment::CompareFunc;
 pub const MAX_TEXTURE_SIZE: i32 = 16384;
 /// Highest mip level accepted: log2(MAX_TEXTURE_SIZE).
 pub const MAX_TEXTURE_LEVEL: i32 = 14;
+/// GL_MAX_3D_TEXTURE_SIZE: Mesa 22.3 llvmpipe answers 2048 (measured natively); every GL
+/// 3.3 context has at least 256, and llvmpipe's core context has 2048 too.
+pub const MAX_3D_TEXTURE_SIZE: i32 = 2048;
+/// Highest 3D mip level accepted: log2(MAX_3D_TEXTURE_SIZE) (Mesa: level 12 is
+/// INVALID_VALUE, 11 accepted).
+pub const MAX_3D_TEXTURE_LEVEL: i32 = 11;
 
 /// Texture targets of the fixed-function pipeline.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -139,6 +150,18 @@ pub fn image_size(format: PixelFormat, ty: PixelType, width: i32, height: i32) -
     let w = width.max(0) as usize;
     let h = height.max(0) as usize;
     w * h * format.components() * ty.size()
+}
+
+/// Bytes of a tightly packed `width × height × depth` image: `depth` images of
+/// `height` rows, the first image first.
+pub fn volume_size(
+    format: PixelFormat,
+    ty: PixelType,
+    width: i32,
+    height: i32,
+    depth: i32,
+) -> usize {
+    image_size(format, ty, width, height) * depth.max(0) as usize
 }
 
 /// Minification and magnification filters. Mag accepts NEAREST and LINEAR only.
@@ -284,6 +307,8 @@ pub struct TexLevel {
     pub width: i32,
     /// 1 for 1D textures.
     pub height: i32,
+    /// 1 for 1D and 2D textures.
+    pub depth: i32,
     /// The CPU copy of the texels, when known (see the module note).
     pub data: Option<PixelData>,
 }
@@ -293,15 +318,16 @@ pub struct TexLevel {
 pub enum Incomplete {
     /// Level 0 was never specified.
     NoBaseLevel,
-    /// Level 0 has a zero width or height.
+    /// Level 0 has a zero width, height or depth.
     EmptyBaseLevel,
     /// A mipmap filter, and this level of the chain is not specified.
     MissingLevel(i32),
     /// A mipmap filter, and this level is not half the previous one (rounded down, min 1).
     WrongSize {
         level: i32,
-        expected: (i32, i32),
-        found: (i32, i32),
+        /// (width, height, depth).
+        expected: (i32, i32, i32),
+        found: (i32, i32, i32),
     },
     /// A mipmap filter, and this level's internal format is not the base level's.
     FormatDiffers(i32),
@@ -345,8 +371,9 @@ impl TextureObject {
     /// - with a non-mipmap MIN_FILTER (NEAREST, LINEAR) that is all;
     /// - with a mipmap MIN_FILTER, levels 1..=p are specified too, p = log2 of the larger
     ///   base dimension, each level max(1, ⌊previous / 2⌋) in each dimension (so the last is
-    ///   1×1; a 1D texture halves its width only, its height stays 1), all in the base
-    ///   level's internal format and border. Levels after p are ignored.
+    ///   1×1; a 1D texture halves its width only, its height stays 1; a 3D texture halves
+    ///   its depth too, p the log2 of the largest of the three), all in the base level's
+    ///   internal format and border. Levels after p are ignored.
     ///
     /// Borders: the model accepts border 0 only (`check_image_size`), so they always agree.
     /// Cube maps are not in the model, so cube completeness is not either.
@@ -356,24 +383,23 @@ impl TextureObject {
     /// and the emulated path drops the unit from the `ShaderKey`.
     pub fn completeness(&self) -> Result<TexFormat, Incomplete> {
         let base = self.level(0).ok_or(Incomplete::NoBaseLevel)?;
-        if base.width <= 0 || base.height <= 0 {
+        if base.width <= 0 || base.height <= 0 || base.depth <= 0 {
             return Err(Incomplete::EmptyBaseLevel);
         }
         if !self.params.min_filter.uses_mipmaps() {
             return Ok(base.internal_format);
         }
-        let (mut w, mut h) = (base.width, base.height);
+        let mut size = (base.width, base.height, base.depth);
         let mut level = 0;
-        while w > 1 || h > 1 {
+        while let Some(next) = half(size) {
             level += 1;
-            w = (w / 2).max(1);
-            h = (h / 2).max(1);
+            size = next;
             let l = self.level(level).ok_or(Incomplete::MissingLevel(level))?;
-            if (l.width, l.height) != (w, h) {
+            if (l.width, l.height, l.depth) != size {
                 return Err(Incomplete::WrongSize {
                     level,
-                    expected: (w, h),
-                    found: (l.width, l.height),
+                    expected: size,
+                    found: (l.width, l.height, l.depth),
                 });
             }
             if l.internal_format != base.internal_format {
@@ -405,21 +431,22 @@ impl TextureObject {
         let Some(base) = self.level(0) else {
             return;
         };
-        let (format, mut w, mut h) = (base.internal_format, base.width, base.height);
-        if w <= 0 || h <= 0 {
+        let format = base.internal_format;
+        let mut size = (base.width, base.height, base.depth);
+        if size.0 <= 0 || size.1 <= 0 || size.2 <= 0 {
             return;
         }
         let mut level = 0;
-        while w > 1 || h > 1 {
+        while let Some(next) = half(size) {
             level += 1;
-            w = (w / 2).max(1);
-            h = (h / 2).max(1);
+            size = next;
             self.set_level(
                 level,
                 TexLevel {
                     internal_format: format,
-                    width: w,
-                    height: h,
+                    width: size.0,
+                    height: size.1,
+                    depth: size.2,
                     data: None,
                 },
             );
@@ -442,6 +469,34 @@ impl TextureObject {
             .and_then(|l| self.levels.get_mut(l))
             .and_then(Option::as_mut)
     }
+}
+
+/// The next mip level's size, max(1, ⌊n / 2⌋) in each dimension (§3.8.8), or `None`
+/// after the 1×1×1 level.
+fn half((w, h, d): (i32, i32, i32)) -> Option<(i32, i32, i32)> {
+    (w > 1 || h > 1 || d > 1).then(|| ((w / 2).max(1), (h / 2).max(1), (d / 2).max(1)))
+}
+
+/// glTexImage3D's size checks (GL 1.5 §3.8.1, as Mesa orders them): level in
+/// [0, log2(MAX_3D_TEXTURE_SIZE)], each of width, height and depth in
+/// [0, MAX_3D_TEXTURE_SIZE], border 0 (see [`check_image_size`]) — all INVALID_VALUE.
+pub fn check_volume_size(level: i32, size: [i32; 3], border: i32) -> GlResult {
+    if !(0..=MAX_3D_TEXTURE_LEVEL).contains(&level) {
+        return Err(GlError::invalid_value(
+            "level must be in [0, log2(MAX_3D_TEXTURE_SIZE)]",
+        ));
+    }
+    if size.iter().any(|v| !(0..=MAX_3D_TEXTURE_SIZE).contains(v)) {
+        return Err(GlError::invalid_value(
+            "width, height and depth must be in [0, MAX_3D_TEXTURE_SIZE]",
+        ));
+    }
+    if border != 0 {
+        return Err(GlError::invalid_value(
+            "texture borders are not supported (border must be 0)",
+        ));
+    }
+    Ok(())
 }
 
 /// The checks TexImage and CopyTexImage share (GL 1.5 §3.8.1, ARB_depth_texture):
@@ -505,6 +560,10 @@ pub(crate) fn blit(dst: &mut [u8], dst_width: usize, src: &[u8], rect: [usize; 4
 }
 
 #[cfg(test)]
+#[path = "texture_volume_tests.rs"]
+mod volume_tests;
+
+#[cfg(test)]
 mod tests {
     use super::*;
 
@@ -553,6 +612,7 @@ mod tests {
             internal_format: format,
             width,
             height,
+            depth: 1,
             data: None,
         })
     }
@@ -653,8 +713,8 @@ mod tests {
                 wrong_size,
                 Err(Incomplete::WrongSize {
                     level: 2,
-                    expected: (2, 2),
-                    found: (3, 2),
+                    expected: (2, 2, 1),
+                    found: (3, 2, 1),
                 }),
             ),
             (

@@ -22,14 +22,16 @@ use super::texture::{
 };
 use super::{Command, CopyTexImage, TexSubImage};
 
-/// glCopyTexSubImage1D/2D: the framebuffer rectangle at (x, y) into the bound texture's
-/// level at (xoffset, yoffset) (1D: yoffset 0, height 1).
+/// glCopyTexSubImage1D/2D/3D: the framebuffer rectangle at (x, y) into the bound
+/// texture's level at (xoffset, yoffset) (1D: yoffset 0, height 1), in the image at
+/// `zoffset` (0 but for 3D).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct CopyTexSubImage {
     pub target: TextureTarget,
     pub level: i32,
     pub xoffset: i32,
     pub yoffset: i32,
+    pub zoffset: i32,
     pub x: i32,
     pub y: i32,
     pub width: i32,
@@ -72,8 +74,10 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 level: c.i32(1)?,
                 x: c.i32(2)?,
                 y: 0,
+                z: 0,
                 width: shape.width,
                 height: 1,
+                depth: 1,
                 format: shape.format,
                 ty: shape.ty,
                 data: c
@@ -101,6 +105,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 level: c.i32(1)?,
                 xoffset: c.i32(2)?,
                 yoffset: 0,
+                zoffset: 0,
                 x: c.i32(3)?,
                 y: c.i32(4)?,
                 width: c.i32(5)?,
@@ -114,6 +119,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 level: c.i32(1)?,
                 xoffset: c.i32(2)?,
                 yoffset: c.i32(3)?,
+                zoffset: 0,
                 x: c.i32(4)?,
                 y: c.i32(5)?,
                 width: c.i32(6)?,
@@ -166,6 +172,7 @@ impl FixedState {
                 internal_format: c.internal_format,
                 width: c.width,
                 height: 1,
+                depth: 1,
                 data: None,
             },
         );
@@ -239,6 +246,7 @@ mod tests {
             internal_format: TexFormat::Rgba8,
             width: w,
             height: h,
+            depth: 1,
             border: 0,
             format: PixelFormat::Rgba,
             ty: PixelType::UnsignedByte,
@@ -254,6 +262,7 @@ mod tests {
             level,
             xoffset,
             yoffset: 0,
+            zoffset: 0,
             x: 0,
             y: 0,
             width,

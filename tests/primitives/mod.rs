@@ -342,6 +342,7 @@ pub fn checker() -> Vec<Command> {
             internal_format: TexFormat::Rgba8,
             width: 8,
             height: 8,
+            depth: 1,
             border: 0,
             format: PixelFormat::Rgba,
             ty: PixelType::UnsignedByte,

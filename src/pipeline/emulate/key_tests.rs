@@ -102,6 +102,7 @@ fn image(target: TextureTarget, format: TexFormat, pixels: PixelFormat, size: i3
         } else {
             size
         },
+        depth: 1,
         border: 0,
         format: pixels,
         ty,
@@ -547,8 +548,10 @@ fn same_code() -> Vec<Case> {
                     level: 0,
                     x: 0,
                     y: 0,
+                    z: 0,
                     width: 1,
                     height: 1,
+                    depth: 1,
                     format: PixelFormat::Rgb,
                     ty: PixelType::UnsignedByte,
                     data: Arc::from(vec![1u8, 2, 3]),
