@@ -783,3 +783,53 @@ fn occlusion_queries_count_and_answer_as_on_mesa() {
         "64x64",
     );
 }
+
+/// `tests/c/smooth.c`: POINT_SMOOTH and LINE_SMOOTH as Mesa's draw module draws them —
+/// round points of every size with the aapoint stage's alpha factor (above 1 inside the
+/// inner circle, so translucent points brighten there and pass an alpha test their colour
+/// fails), through the depth test and in polygon POINT mode; smooth lines of widths 1 to 4,
+/// strips, loops, translucent, in polygon LINE mode and from a display list. Mesa's image
+/// exactly, Mesa's limits and state, and the trace replays.
+#[test]
+fn smooth_points_and_lines_draw_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("smooth");
+    for line in [
+        "SMOOTH_POINT_SIZE_RANGE                  1 255  err 0x0",
+        "SMOOTH_LINE_WIDTH_RANGE                  1 255  err 0x0",
+        "after glPopAttrib                        0 0  err 0x0",
+    ] {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    assert_same_text(&mesa_text, &ours_text, 6, "a smooth-point answer");
+    // Every 32×32 panel of Mesa's image shows its case: pixels away from the background.
+    let background = mesa.get_pixel(0, 0).0;
+    for row in 0..4 {
+        for col in 0..4 {
+            let drawn = (0..32 * 32)
+                .filter(|i| {
+                    let p = mesa.get_pixel(col * 32 + i % 32, row * 32 + i / 32).0;
+                    (0..3).any(|k| p[k].abs_diff(background[k]) > 30)
+                })
+                .count();
+            assert!(drawn >= 20, "panel ({col}, {row}) of Mesa's image is empty");
+        }
+    }
+    assert_images_match(
+        "smooth",
+        &ours,
+        &mesa,
+        Tolerance {
+            per_channel: 0,
+            max_bad_pixels: 0,
+        },
+    );
+    assert_trace_replays(
+        "smooth",
+        &compile("smooth", Linking::Direct),
+        &[],
+        "128x128",
+    );
+}

@@ -1,14 +1,11 @@
 //! Antialiasing enables against Mesa's native path. POLYGON_SMOOTH changes nothing on
 //! llvmpipe, so blended polygons with it match exactly; antialiased points and lines are
-//! not drawn by the emulated path, which refuses the draw (an error naming the
-//! capability) rather than draw them aliased.
+//! drawn as Mesa's draw module draws them (its aapoint and aaline stages).
 
 mod fidelity;
 mod support;
 
 use fidelity::{compare, ortho, Frame};
-use fixedfunc::pipeline::{Pipeline, PipelineError};
-use fixedfunc::vocab::PipelineKind;
 use support::Tolerance;
 
 const W: u32 = 64;
@@ -63,40 +60,66 @@ fn polygon_smooth_changes_nothing_on_llvmpipe() {
     }
 }
 
-#[test]
-fn emulated_path_refuses_smooth_points_and_lines() {
-    let ctx = support::context(
-        support::HEADLESS[0],
-        fixedfunc::pipeline::profile(PipelineKind::Emulate),
+/// Points and lines of several sizes and widths at fractional positions, opaque and
+/// translucent, blended, with `cap` enabled.
+fn smooth_primitives(cap: &str) -> String {
+    let mut s = format!(
+        "{}glClearColor(0.1, 0.1, 0.2, 1);\nglClear(GL_COLOR_BUFFER_BIT);\n\
+         glEnable(GL_BLEND);\nglBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);\n\
+         glEnable({cap});\n",
+        ortho(W, H)
     );
-    let _target = support::target(&ctx, W, H, fixedfunc::vocab::DepthBits::D24, false);
-    for (cap, primitive, what) in [
-        ("GL_POINT_SMOOTH", "GL_POINTS", "POINT_SMOOTH"),
-        ("GL_LINE_SMOOTH", "GL_LINES", "LINE_SMOOTH"),
-        ("GL_LINE_SMOOTH", "GL_LINE_LOOP", "LINE_SMOOTH"),
-    ] {
-        let mut p = fixedfunc::pipeline::emulate::EmulatedPipeline::new(&ctx).expect("pipeline");
-        let source = format!(
-            "{}glEnable({cap});\nglBegin({primitive});\nglVertex2f(4, 4); glVertex2f(40, 30);\nglEnd();\n",
-            ortho(W, H)
+    for (i, size) in [0.5f32, 1.0, 2.0, 2.5, 4.0, 7.5].iter().enumerate() {
+        let (x, y) = (4.3 + 10.1 * i as f32, 6.6 + 0.29 * i as f32);
+        let alpha = if i % 2 == 0 { 1.0 } else { 0.45 };
+        s += &format!(
+            "glPointSize({size});\nglColor4f(1, 0.8, 0.4, {alpha});\n\
+             glBegin(GL_POINTS);\nglVertex2f({x}, {y});\nglEnd();\n"
         );
-        let e = p
-            .execute(&ctx, &fidelity::parse(&source))
-            .expect_err("refused, not drawn aliased");
-        match e {
-            PipelineError::Unsupported { what: w, path } => {
-                assert_eq!(path, "emulate");
-                assert!(w.starts_with(what), "{w}");
-            }
-            other => panic!("{cap}: {other}"),
+    }
+    for (i, width) in [1.0f32, 1.5, 3.0].iter().enumerate() {
+        let y = 18.2 + 9.7 * i as f32;
+        s += &format!(
+            "glLineWidth({width});\nglColor4f(0.4, 1, 0.9, 0.8);\n\
+             glBegin(GL_LINE_LOOP);\nglVertex2f(3.3, {y});\nglVertex2f(60.6, {});\n\
+             glVertex2f(31.1, {});\nglEnd();\n",
+            y + 4.4,
+            y + 7.9
+        );
+    }
+    s
+}
+
+/// POINT_SMOOTH (the emulated path's round points, after Mesa's aapoint stage) and
+/// LINE_SMOOTH (the core context's aaline stage) draw Mesa's pixels: within 1/255 on the
+/// translucent points, whose alpha factor the program computes in its own order.
+#[test]
+fn smooth_points_and_lines_match_mesa() {
+    for cap in ["GL_POINT_SMOOTH", "GL_LINE_SMOOTH"] {
+        let name = cap.trim_start_matches("GL_").to_lowercase();
+        let pairs = compare(
+            &name,
+            &smooth_primitives(cap),
+            Frame::new(W, H),
+            Tolerance {
+                per_channel: 1,
+                max_bad_pixels: 0,
+            },
+        );
+        // Antialiased: the aliased draw of the same script (DITHER, on by default, in
+        // place of the cap) differs from it.
+        let plain = compare(
+            &format!("{name}_off"),
+            &smooth_primitives("GL_DITHER"),
+            Frame::new(W, H),
+            Tolerance::EXACT,
+        );
+        for (smooth, aliased) in pairs.iter().zip(&plain) {
+            assert_ne!(
+                smooth.native.image.as_raw(),
+                aliased.native.image.as_raw(),
+                "{cap} changes Mesa's pixels"
+            );
         }
-        // A filled polygon is no point or line: drawn as usual.
-        let mut p = fixedfunc::pipeline::emulate::EmulatedPipeline::new(&ctx).expect("pipeline");
-        let filled = format!(
-            "{}glEnable({cap});\nglBegin(GL_TRIANGLES);\nglVertex2f(4, 4); glVertex2f(40, 30); glVertex2f(9, 40);\nglEnd();\n",
-            ortho(W, H)
-        );
-        p.execute(&ctx, &fidelity::parse(&filled))
-            .expect("a filled triangle is drawn under point and line smoothing");
     }
 }

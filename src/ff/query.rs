@@ -421,6 +421,30 @@ pnames! {
     POLYGON_SMOOTH_HINT => |s| enm(s.hints.polygon_smooth),
     FOG_HINT => |s| enm(s.hints.fog),
 
+    // Point and line limits (Table 6.32): llvmpipe's, which rasterises both paths' points
+    // and lines (sizes and widths 1…255 in steps of 0.1, aliased and smooth alike).
+    ALIASED_POINT_SIZE_RANGE => |_| floats(&[1.0, 255.0]),
+    ALIASED_LINE_WIDTH_RANGE => |_| floats(&[1.0, 255.0]),
+    SMOOTH_POINT_SIZE_RANGE => |_| floats(&[1.0, 255.0]),
+    SMOOTH_POINT_SIZE_GRANULARITY => |_| floats(&[0.1]),
+    SMOOTH_LINE_WIDTH_RANGE => |_| floats(&[1.0, 255.0]),
+    SMOOTH_LINE_WIDTH_GRANULARITY => |_| floats(&[0.1]),
+    // Other limits and the visual (Tables 6.32, 6.34), as Mesa's llvmpipe answers them: a
+    // single-buffered RGBA visual without multisampling, auxiliary or stereo buffers.
+    MAX_VIEWPORT_DIMS => |_| vec![QueryValue::Int(16384), QueryValue::Int(16384)],
+    SUBPIXEL_BITS => |_| int(8),
+    MAX_ELEMENTS_VERTICES => |_| int(3000),
+    MAX_ELEMENTS_INDICES => |_| int(3000),
+    MAX_NAME_STACK_DEPTH => |_| int(64),
+    MAX_EVAL_ORDER => |_| int(30),
+    SAMPLE_BUFFERS => |_| int(0),
+    SAMPLES => |_| int(0),
+    AUX_BUFFERS => |_| int(0),
+    RGBA_MODE => |_| boolean(true),
+    INDEX_MODE => |_| boolean(false),
+    DOUBLEBUFFER => |_| boolean(false),
+    STEREO => |_| boolean(false),
+
     // ── New pnames go here: `TOKEN => |s| helper(s.field),` as above. ──
 }
 

@@ -73,10 +73,22 @@ pub struct VertexKey {
     pub normalize: bool,
     pub rescale_normal: bool,
     pub units: Vec<VertexUnitKey>,
-    /// The program writes gl_PointSize (glPointSize's value): a pass that rasterises
-    /// points. Set per pass; true unless the pass draws no points, since a vertex output
-    /// less is work saved for every vertex.
-    pub point_size: bool,
+    /// The program writes gl_PointSize: a pass that rasterises points, square or round
+    /// (POINT_SMOOTH). Set per pass; `None` from the state alone and for a pass that draws
+    /// no points, since a vertex output less is work saved for every vertex.
+    pub point_size: Option<PointShape>,
+}
+
+/// How a pass's points are rasterised.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PointShape {
+    /// Aliased: a square of glPointSize's side.
+    Square,
+    /// POINT_SMOOTH, as Mesa's draw module draws it (its aapoint stage): a square of
+    /// side 2r, r = 1 for sizes up to 2 and size/2 above, whose fragments outside the
+    /// circle of radius r are discarded and whose alpha takes the stage's factor
+    /// (`shadergen::fragment`, "point coverage").
+    Round,
 }
 
 /// The source of a vertex's clip coordinates.
@@ -186,6 +198,10 @@ pub struct FragmentKey {
     /// the pattern (a uniform) are discarded; set per draw pass, `false` from the state
     /// alone.
     pub polygon_stipple: bool,
+    /// POINT_SMOOTH on a pass that rasterises points (`PointShape::Round`): fragments
+    /// outside the point's circle are discarded and its alpha scaled as Mesa's aapoint
+    /// stage scales it; set per pass, `false` from the state alone.
+    pub point_coverage: bool,
     /// A pixel rectangle's draw (glBitmap, glDrawPixels, glCopyPixels: `pixels`): what the
     /// image gives the fragment; set per draw, `None` from the state alone.
     pub pixels: Option<PixelSource>,
@@ -249,7 +265,7 @@ impl ShaderKey {
             rescale_normal: normal_used && state.rescale_normal && !state.normalize,
             units: vertex_units,
             lighting,
-            point_size: true,
+            point_size: None,
         };
         let combiners = state.register_combiners.get().map(|rc| CombinersKey {
             stages: rc.active_stages().to_vec(),
@@ -290,6 +306,7 @@ impl ShaderKey {
                 .filter(|f| *f != CompareFunc::Always),
             edges: None,
             polygon_stipple: false,
+            point_coverage: false,
             pixels: None,
         };
         ShaderKey { vertex, fragment }

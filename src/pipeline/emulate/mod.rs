@@ -34,7 +34,7 @@ use glow::HasContext;
 
 use self::cache::ProgramCache;
 use self::draw::GeometryCache;
-use self::key::{PositionSource, ShaderKey};
+use self::key::{PointShape, PositionSource, ShaderKey};
 use self::program::Program;
 use self::sync::{LogicOpCall, RasterSync};
 use self::textures::Textures;
@@ -169,22 +169,16 @@ impl Emulate {
         if polygon::hides_outline(geometry, state.current.edge_flag) {
             passes.retain(|p| p.mode == crate::ff::PolygonMode::Fill);
         }
-        // Antialiased points and lines: Mesa gives each fragment its coverage (its draw
-        // module's aapoint and aaline stages); the emulated path does not, and refuses the
-        // draw rather than draw them aliased. POLYGON_SMOOTH changes nothing on llvmpipe
-        // (measured: a blended triangle is the same pixels with it), so it is state only.
-        if state.smooth.point && passes.iter().any(|p| p.draws_points()) {
-            return Err(PipelineError::Unsupported {
-                what: "POINT_SMOOTH (enabled at a draw of points)",
-                path: "emulate",
-            });
-        }
-        if state.smooth.line && passes.iter().any(|p| p.draws_lines) {
-            return Err(PipelineError::Unsupported {
-                what: "LINE_SMOOTH (enabled at a draw of lines)",
-                path: "emulate",
-            });
-        }
+        // Antialiased points and lines, as Mesa draws them (its draw module's aapoint and
+        // aaline stages): round points are the program's work (`PointShape::Round`), smooth
+        // lines the core context's own LINE_SMOOTH (`sync`), the same aaline stage.
+        // POLYGON_SMOOTH changes nothing on llvmpipe (measured: a blended triangle is the
+        // same pixels with it), so it is state only.
+        let points = if state.smooth.point {
+            PointShape::Round
+        } else {
+            PointShape::Square
+        };
         let stipple = state.line_stipple.get();
         if let (Some(stipple), true) = (stipple, stipple_dashes::is_line(geometry.primitive)) {
             let dashes = stipple_dashes::of_draw(state, stipple, geometry);
@@ -206,7 +200,8 @@ impl Emulate {
         for pass in passes {
             let mut key = base.clone();
             key.fragment.edges = pass.edges;
-            key.vertex.point_size = pass.draws_points();
+            key.vertex.point_size = pass.draws_points().then_some(points);
+            key.fragment.point_coverage = pass.draws_points() && points == PointShape::Round;
             key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
             self.draw_pass(gl, state, &key, &pass, Drawn::Geometry(geometry))?;
         }

@@ -84,6 +84,9 @@ pub struct RasterSync {
     polygon_mode: Sent<PolygonMode>,
     /// glLineWidth; the point size is a uniform written to gl_PointSize.
     line_width: Sent<f32>,
+    /// LINE_SMOOTH: core GL keeps it, and llvmpipe draws it with the same aaline stage as
+    /// Mesa's compatibility context (round points are the program's, `PointShape::Round`).
+    line_smooth: Sent<bool>,
     viewport: Sent<Viewport>,
     /// COLOR_LOGIC_OP with its opcode (core GL has glLogicOp and, like GL 1.x, blends
     /// nothing while it is on).
@@ -166,6 +169,8 @@ impl RasterSync {
             gl.enable(glow::PROGRAM_POINT_SIZE);
             gl.line_width(w);
         });
+        self.line_smooth
+            .sync(s.smooth.line, c, |on| toggle(gl, glow::LINE_SMOOTH, on));
         self.sync_tests(gl, s, pass);
         let (mode, cull) = match pass {
             Some(p) => (p.mode, p.cull),

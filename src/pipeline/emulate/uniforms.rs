@@ -100,6 +100,10 @@ pub enum UniformSource {
     Sampler(u8),
     /// glPointSize, written to gl_PointSize (core GL reads the size from the program).
     PointSize,
+    /// One 1/256-pixel step of the viewport in clip x and y per unit w,
+    /// (2/(256·width), 2/(256·height)): the shift that gives an aliased point llvmpipe's
+    /// legacy tie rule (`shadergen::vertex`).
+    PointSubpixel,
     /// CLIP_PLANEi's plane in eye coordinates.
     ClipPlane(u8),
     /// `Fog::factor_params`: (a, b, d·log₂e, d/√ln 2).
@@ -140,6 +144,7 @@ impl UniformSource {
             UniformSource::CombinerConstant(i) => format!("u_combiner_constant{i}"),
             UniformSource::Sampler(u) => format!("u_tex{u}"),
             UniformSource::PointSize => "u_point_size".into(),
+            UniformSource::PointSubpixel => "u_point_subpixel".into(),
             UniformSource::ClipPlane(i) => format!("u_clip_plane{i}"),
             UniformSource::FogParams => "u_fog_params".into(),
             UniformSource::FogColor => "u_fog_color".into(),
@@ -271,6 +276,15 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
         }
         UniformSource::Sampler(u) => Int(i32::from(u)),
         UniformSource::PointSize => Float(state.point_size),
+        UniformSource::PointSubpixel => {
+            let step = |side: i32| 2.0 / (256.0 * side.max(1) as f32);
+            Vec4(glam::Vec4::new(
+                step(state.viewport.width),
+                step(state.viewport.height),
+                0.0,
+                0.0,
+            ))
+        }
         UniformSource::ClipPlane(i) => Vec4(
             state
                 .clip_planes

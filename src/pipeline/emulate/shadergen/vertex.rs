@@ -11,8 +11,8 @@
 use crate::ff::{ColorMaterialMode, TexCoord, TexGenMode};
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{
-    ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, PositionSource, VertexKey,
-    VertexUnitKey,
+    ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, PointShape, PositionSource,
+    VertexKey, VertexUnitKey,
 };
 use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
 
@@ -50,10 +50,29 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
         }
     }
     // Points (and polygons in POINT mode) take glPointSize's value; core GL reads it
-    // from here with PROGRAM_POINT_SIZE on. Lines and triangles ignore it.
-    if key.point_size {
-        let size = w.uniform(UniformSource::PointSize);
-        w.line(format!("gl_PointSize = {size};"));
+    // from here with PROGRAM_POINT_SIZE on. Lines and triangles ignore it. An aliased
+    // point's side is the size rounded as llvmpipe's point setup rounds it (GL 1.5
+    // §3.3: aliased sizes are rounded): in 1/256 pixel steps, s₈ = roundEven(256·size),
+    // side = max(1, ⌊(s₈ + 127)/256⌋), so halves round down (1.5 → 1, 2.5 → 2). A round
+    // point is the square of Mesa's aapoint stage, side 2r: r = 1 up to size 2, size/2
+    // above. The core context rasterises a point sprite, covering a pixel whose centre c
+    // is at lo ≤ c < hi in 1/256 steps; llvmpipe's legacy points take lo < c ≤ hi, the
+    // same as the sprite's rule one step up and right, so the aliased point moves by one
+    // step (measured: points at x.5 of even sides cover Mesa's pixels only so).
+    match key.point_size {
+        Some(PointShape::Square) => {
+            let size = w.uniform(UniformSource::PointSize);
+            let step = w.uniform(UniformSource::PointSubpixel);
+            w.line(format!(
+                "gl_PointSize = max(1.0, floor((roundEven({size} * 256.0) + 127.0) / 256.0));"
+            ));
+            w.line(format!("gl_Position.xy += {step}.xy * gl_Position.w;"));
+        }
+        Some(PointShape::Round) => {
+            let size = w.uniform(UniformSource::PointSize);
+            w.line(format!("gl_PointSize = {size} <= 2.0 ? 2.0 : {size};"));
+        }
+        None => {}
     }
     let mut eye = EyeTerms::default();
     for &i in &key.clip_planes {
