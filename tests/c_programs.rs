@@ -833,3 +833,42 @@ fn smooth_points_and_lines_draw_as_on_mesa() {
         "128x128",
     );
 }
+
+/// `tests/c/point_params.c`: glPointParameter's attenuation, size limits and fade
+/// threshold cover Mesa's pixels, point by point, aliased and smooth, with Mesa's errors
+/// and answers; a field of attenuated points in perspective is Mesa's image within 1/255,
+/// and the trace replays.
+#[test]
+fn point_parameters_size_points_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("point_params");
+    for line in [
+        "max 4 no atten: 16 err 0",
+        "atten quad z -1.5: 225",
+        "fade 20: 36 max 255",
+        "smooth atten size1 z -6: 1",
+        "min -1 err 501",
+        "bad pname err 500",
+        "pop min 8",
+    ] {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    assert_same_text(&mesa_text, &ours_text, 25, "a point-parameter answer");
+    assert_images_match(
+        "point_params",
+        &ours,
+        &mesa,
+        Tolerance {
+            per_channel: 1,
+            max_bad_pixels: 0,
+        },
+    );
+    assert_trace_replays(
+        "point_params",
+        &compile("point_params", Linking::Direct),
+        &[],
+        "64x64",
+    );
+}

@@ -31,6 +31,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_window_pos",
     "GL_ARB_occlusion_query",
     "GL_ARB_occlusion_query2",
+    "GL_ARB_point_parameters",
+    "GL_EXT_point_parameters",
     "GL_EXT_texture_edge_clamp",
     "GL_SGIS_texture_edge_clamp",
     "GL_ARB_texture_border_clamp",

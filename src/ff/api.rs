@@ -14,6 +14,7 @@ use super::combiners::CombinerParam;
 use super::command::Command;
 use super::fog::FogParam;
 use super::light::{LightModelParam, LightParam, MaterialParam};
+use super::point::PointParam;
 use super::texenv::TexEnvParam;
 use super::texgen::TexGenParam;
 use super::texture::TexParam;
@@ -563,10 +564,10 @@ macro_rules! gl_entry_table {
         Indexub = glIndexub(Left; c: GLubyte);
         Indexubv = glIndexubv(Left; c: *const GLubyte);
         IsQuery = glIsQuery(Script; id: GLuint) -> GLboolean;
-        PointParameterf = glPointParameterf(Left; pname: GLenum, param: GLfloat);
-        PointParameterfv = glPointParameterfv(Left; pname: GLenum, params: *const GLfloat);
-        PointParameteri = glPointParameteri(Left; pname: GLenum, param: GLint);
-        PointParameteriv = glPointParameteriv(Left; pname: GLenum, params: *const GLint);
+        PointParameterf = glPointParameterf(Script; pname: GLenum, param: GLfloat);
+        PointParameterfv = glPointParameterfv(Script; pname: GLenum, params: *const GLfloat);
+        PointParameteri = glPointParameteri(Script; pname: GLenum, param: GLint);
+        PointParameteriv = glPointParameteriv(Script; pname: GLenum, params: *const GLint);
         SampleCoverage = glSampleCoverage(Left; value: GLfloat, invert: GLboolean);
         SecondaryColor3b = glSecondaryColor3b(Left; red: GLbyte, green: GLbyte, blue: GLbyte);
         SecondaryColor3bv = glSecondaryColor3bv(Left; v: *const GLbyte);
@@ -608,10 +609,10 @@ macro_rules! gl_entry_table {
         GetQueryObjectuivARB = glGetQueryObjectuivARB(Script; id: GLuint, pname: GLenum, params: *mut GLuint);
         GetQueryivARB = glGetQueryivARB(Script; target: GLenum, pname: GLenum, params: *mut GLint);
         IsQueryARB = glIsQueryARB(Script; id: GLuint) -> GLboolean;
-        PointParameterfARB = glPointParameterfARB(Left; pname: GLenum, param: GLfloat);
-        PointParameterfEXT = glPointParameterfEXT(Left; pname: GLenum, param: GLfloat);
-        PointParameterfvARB = glPointParameterfvARB(Left; pname: GLenum, params: *const GLfloat);
-        PointParameterfvEXT = glPointParameterfvEXT(Left; pname: GLenum, params: *const GLfloat);
+        PointParameterfARB = glPointParameterfARB(Script; pname: GLenum, param: GLfloat);
+        PointParameterfEXT = glPointParameterfEXT(Script; pname: GLenum, param: GLfloat);
+        PointParameterfvARB = glPointParameterfvARB(Script; pname: GLenum, params: *const GLfloat);
+        PointParameterfvEXT = glPointParameterfvEXT(Script; pname: GLenum, params: *const GLfloat);
         SampleCoverageARB = glSampleCoverageARB(Left; value: GLfloat, invert: GLboolean);
         SecondaryColor3bEXT = glSecondaryColor3bEXT(Left; red: GLbyte, green: GLbyte, blue: GLbyte);
         SecondaryColor3bvEXT = glSecondaryColor3bvEXT(Left; v: *const GLbyte);
@@ -1103,6 +1104,10 @@ impl Command {
             Command::BlendEquation(_) => Entry::BlendEquation,
             Command::BlendColor(_) => Entry::BlendColor,
             Command::ClipPlane { .. } => Entry::ClipPlane,
+            Command::PointParameter(p) => match p {
+                PointParam::DistanceAttenuation(_) => Entry::PointParameterfv,
+                _ => Entry::PointParameterf,
+            },
             Command::Fog(p) => match p {
                 FogParam::Mode(_) => Entry::Fogi,
                 FogParam::Color(_) => Entry::Fogfv,

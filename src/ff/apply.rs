@@ -249,6 +249,11 @@ impl FixedState {
             Command::FrontFace(f) => self.front_face = *f,
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,
             Command::PointSize(s) => self.point_size = positive(*s, "PointSize must be > 0")?,
+            Command::PointParameter(p) => {
+                let mut params = self.point_params;
+                params.set(*p)?;
+                self.point_params = params;
+            }
             Command::LogicOp(op) => self.logic_op.value = *op,
             Command::Hint { target, mode } => self.hints.set(*target, *mode),
             Command::Scissor(b) => {

@@ -227,8 +227,10 @@ impl FixedState {
                 self.line_stipple = s.line_stipple;
                 self.smooth.line = s.smooth.line;
             }
+            // Size, parameters and smoothing (GL 1.4 Table 6.11).
             AttribGroup::Point => {
                 self.point_size = s.point_size;
+                self.point_params = s.point_params;
                 self.smooth.point = s.smooth.point;
             }
             // The fog. GL 2.1's Table 6.11 puts COLOR_SUM in "fog/enable"; Mesa 22.3
@@ -453,6 +455,9 @@ impl FixedState {
             }
             AttribGroup::Point => {
                 out.push(Command::PointSize(self.point_size));
+                for p in self.point_params.commands() {
+                    out.push(Command::PointParameter(p));
+                }
                 out.push(toggle(Capability::PointSmooth, self.smooth.point));
             }
             AttribGroup::Fog => {

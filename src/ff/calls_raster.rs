@@ -60,10 +60,66 @@ fn fog<A: Args>(c: &A) -> Result<FogParam, A::Error> {
     })
 }
 
+const POINT_SCALARS: &[&str] = &[
+    "GL_POINT_SIZE_MIN",
+    "GL_POINT_SIZE_MAX",
+    "GL_POINT_FADE_THRESHOLD_SIZE",
+    "GL_POINT_SPRITE_COORD_ORIGIN",
+];
+const POINT_VECTORS: &[&str] = &[
+    "GL_POINT_SIZE_MIN",
+    "GL_POINT_SIZE_MAX",
+    "GL_POINT_FADE_THRESHOLD_SIZE",
+    "GL_POINT_SPRITE_COORD_ORIGIN",
+    "GL_POINT_DISTANCE_ATTENUATION",
+];
+
+/// glPointParameter{f,i}(pname, param) and glPointParameter{f,i}v(pname, params), with
+/// their ARB and EXT names. Integers are taken as numbers (GL 1.5 §3.3). The scalar forms
+/// refuse POINT_DISTANCE_ATTENUATION (INVALID_ENUM, GL 1.4 §3.3: three values), which
+/// Mesa takes, reading three values from the one given.
+fn point_parameter<A: Args>(c: &A) -> Result<PointParam, A::Error> {
+    c.count(2)?;
+    let scalar = matches!(
+        c.entry(),
+        Entry::PointParameterf
+            | Entry::PointParameteri
+            | Entry::PointParameterfARB
+            | Entry::PointParameterfEXT
+    );
+    let pname = c.pname(0, if scalar { POINT_SCALARS } else { POINT_VECTORS })?;
+    let value = |c: &A| -> Result<f32, A::Error> {
+        if scalar {
+            c.f32(1)
+        } else {
+            Ok(c.floats::<1>(1)?[0])
+        }
+    };
+    Ok(match pname {
+        "GL_POINT_SIZE_MIN" => PointParam::SizeMin(value(c)?),
+        "GL_POINT_SIZE_MAX" => PointParam::SizeMax(value(c)?),
+        "GL_POINT_FADE_THRESHOLD_SIZE" => PointParam::FadeThreshold(value(c)?),
+        // A token (a script's GL_LOWER_LEFT) or its value as a number (a C program's).
+        "GL_POINT_SPRITE_COORD_ORIGIN" => PointParam::SpriteCoordOrigin(match c.token(1) {
+            Ok(t) => t,
+            Err(_) => value(c)? as u32,
+        }),
+        _ => PointParam::DistanceAttenuation(c.floats::<3>(1)?),
+    })
+}
+
 /// Fog, scissor, clip planes, logic op and blending.
 pub fn raster<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
     Ok(Some(match c.entry() {
         Entry::Fogf | Entry::Fogi | Entry::Fogfv | Entry::Fogiv => Command::Fog(fog(c)?),
+        Entry::PointParameterf
+        | Entry::PointParameterfv
+        | Entry::PointParameteri
+        | Entry::PointParameteriv
+        | Entry::PointParameterfARB
+        | Entry::PointParameterfEXT
+        | Entry::PointParameterfvARB
+        | Entry::PointParameterfvEXT => Command::PointParameter(point_parameter(c)?),
         Entry::ClipPlane => {
             c.count(2)?;
             Command::ClipPlane {

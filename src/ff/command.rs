@@ -33,6 +33,7 @@ use super::geometry::Geometry;
 use super::light::{ColorMaterialMode, LightModelParam, LightParam, MaterialParam};
 use super::matrix::{MatrixMode, ViewVolume};
 use super::pixels::{Bitmap, CopyPixels, DrawPixels, PixelTransferParam};
+use super::point::PointParam;
 use super::stipple::{LineStipple, PolygonStipple};
 use super::texenv::TexEnvParam;
 use super::texgen::{TexCoord, TexGenParam};
@@ -341,6 +342,8 @@ pub enum Command {
     LineWidth(f32),
     /// > 0, else INVALID_VALUE.
     PointSize(f32),
+    /// glPointParameter (GL 1.4, `point`).
+    PointParameter(PointParam),
     /// glFog: FOG_DENSITY < 0 is INVALID_VALUE.
     Fog(FogParam),
     /// glHint (§5.6): an unknown target or mode is INVALID_ENUM (the script rejects it).

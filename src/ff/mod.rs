@@ -47,6 +47,7 @@ pub mod list_pairs;
 pub mod lists;
 pub mod matrix;
 pub mod pixels;
+pub mod point;
 pub mod precision;
 pub mod queries;
 pub mod query;
@@ -95,6 +96,7 @@ pub use pixels::{
     Bitmap, Converted, CopyKind, CopyPixels, DrawPixels, PixelTransfer, PixelTransferParam,
     PixelZoom,
 };
+pub use point::{PointParam, PointParams};
 pub use query::QueryValue;
 pub use raster::RasterPos;
 pub use state::{

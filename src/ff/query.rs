@@ -350,6 +350,11 @@ pnames! {
     LINE_STIPPLE_PATTERN => |s| int(i32::from(s.line_stipple.value.pattern)),
     LINE_STIPPLE_REPEAT => |s| int(i32::from(s.line_stipple.value.factor)),
     POINT_SIZE => |s| floats(&[s.point_size]),
+    POINT_SIZE_MIN => |s| floats(&[s.point_params.size_min]),
+    POINT_SIZE_MAX => |s| floats(&[s.point_params.size_max]),
+    POINT_FADE_THRESHOLD_SIZE => |s| floats(&[s.point_params.fade_threshold]),
+    POINT_DISTANCE_ATTENUATION => |s| floats(&s.point_params.attenuation),
+    POINT_SPRITE_COORD_ORIGIN => |s| vec![QueryValue::Enum(s.point_params.sprite_coord_origin)],
 
     // Framebuffer objects (GL 3.0 Table 6.23, 6.34) and the colour buffers (Table 6.21).
     DRAW_FRAMEBUFFER_BINDING => |s| int(s.framebuffers.draw as i32),

@@ -22,6 +22,7 @@ use super::matrix::{
     MatrixMode, MatrixStack, MODELVIEW_STACK_DEPTH, PROJECTION_STACK_DEPTH, TEXTURE_STACK_DEPTH,
 };
 use super::pixels::{PixelTransfer, PixelZoom};
+use super::point::PointParams;
 use super::raster::RasterPos;
 use super::stipple::{LineStipple, PolygonStipple};
 use super::texenv::TexEnv;
@@ -217,6 +218,8 @@ pub struct FixedState {
     pub line_stipple: Toggle<LineStipple>,
     /// GL default: 1.
     pub point_size: f32,
+    /// glPointParameter's sizes, threshold and attenuation (`point`).
+    pub point_params: PointParams,
     /// POINT_SMOOTH, LINE_SMOOTH, POLYGON_SMOOTH. GL default: all FALSE.
     pub smooth: Smoothing,
     /// COLOR_SUM. GL default: FALSE (no effect without a secondary colour: Capability).
@@ -315,6 +318,7 @@ impl FixedState {
             line_width: 1.0,
             line_stipple: Toggle::off(LineStipple::DEFAULT),
             point_size: 1.0,
+            point_params: PointParams::DEFAULT,
             clear: ClearValues::DEFAULT,
             attrib_stack: Vec::new(),
             fog: Toggle::off(Fog::DEFAULT),

@@ -396,6 +396,7 @@ fn call(c: &Command) -> String {
         Command::LineWidth(w) => format!("{}({})", Entry::LineWidth, f(*w)),
         Command::PointSize(s) => format!("{}({})", Entry::PointSize, f(*s)),
         Command::Fog(p) => fog(p),
+        Command::PointParameter(p) => point_parameter(p),
         Command::BlendColor(c) => format!("{}({})", Entry::BlendColor, fs(&c.to_array())),
         Command::BlendEquation(e) => format!("{}({})", Entry::BlendEquation, n(*e)),
         Command::BlendFuncSeparate {
@@ -621,6 +622,35 @@ fn name_list(entry: Entry, names: &[u32]) -> String {
         names.len(),
         list.join(", ")
     )
+}
+
+fn point_parameter(p: &PointParam) -> String {
+    let (pname, v) = match p {
+        PointParam::DistanceAttenuation([a, b, c]) => {
+            return format!(
+                "{}(GL_POINT_DISTANCE_ATTENUATION, (GLfloat[]){{{}, {}, {}}})",
+                Entry::PointParameterfv,
+                f(*a),
+                f(*b),
+                f(*c)
+            )
+        }
+        PointParam::SpriteCoordOrigin(o) => {
+            let name = if *o == crate::ff::point::LOWER_LEFT {
+                "GL_LOWER_LEFT"
+            } else {
+                "GL_UPPER_LEFT"
+            };
+            return format!(
+                "{}(GL_POINT_SPRITE_COORD_ORIGIN, {name})",
+                Entry::PointParameteri
+            );
+        }
+        PointParam::SizeMin(v) => ("GL_POINT_SIZE_MIN", v),
+        PointParam::SizeMax(v) => ("GL_POINT_SIZE_MAX", v),
+        PointParam::FadeThreshold(v) => ("GL_POINT_FADE_THRESHOLD_SIZE", v),
+    };
+    format!("{}({pname}, {})", Entry::PointParameterf, f(*v))
 }
 
 fn fog(p: &FogParam) -> String {

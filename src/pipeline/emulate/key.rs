@@ -76,7 +76,15 @@ pub struct VertexKey {
     /// The program writes gl_PointSize: a pass that rasterises points, square or round
     /// (POINT_SMOOTH). Set per pass; `None` from the state alone and for a pass that draws
     /// no points, since a vertex output less is work saved for every vertex.
-    pub point_size: Option<PointShape>,
+    pub point_size: Option<PointKey>,
+}
+
+/// A points pass's rasterisation: its shape, and whether sizes are attenuated by
+/// distance (`ff::point`; the program then reads the eye position).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct PointKey {
+    pub shape: PointShape,
+    pub attenuated: bool,
 }
 
 /// How a pass's points are rasterised.

@@ -34,7 +34,7 @@ use glow::HasContext;
 
 use self::cache::ProgramCache;
 use self::draw::GeometryCache;
-use self::key::{PointShape, PositionSource, ShaderKey};
+use self::key::{PointKey, PointShape, PositionSource, ShaderKey};
 use self::program::Program;
 use self::sync::{LogicOpCall, RasterSync};
 use self::textures::Textures;
@@ -174,10 +174,13 @@ impl Emulate {
         // lines the core context's own LINE_SMOOTH (`sync`), the same aaline stage.
         // POLYGON_SMOOTH changes nothing on llvmpipe (measured: a blended triangle is the
         // same pixels with it), so it is state only.
-        let points = if state.smooth.point {
-            PointShape::Round
-        } else {
-            PointShape::Square
+        let points = PointKey {
+            shape: if state.smooth.point {
+                PointShape::Round
+            } else {
+                PointShape::Square
+            },
+            attenuated: state.point_params.attenuated(),
         };
         let stipple = state.line_stipple.get();
         if let (Some(stipple), true) = (stipple, stipple_dashes::is_line(geometry.primitive)) {
@@ -201,7 +204,7 @@ impl Emulate {
             let mut key = base.clone();
             key.fragment.edges = pass.edges;
             key.vertex.point_size = pass.draws_points().then_some(points);
-            key.fragment.point_coverage = pass.draws_points() && points == PointShape::Round;
+            key.fragment.point_coverage = pass.draws_points() && points.shape == PointShape::Round;
             key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
             self.draw_pass(gl, state, &key, &pass, Drawn::Geometry(geometry))?;
         }

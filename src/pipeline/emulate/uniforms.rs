@@ -104,6 +104,10 @@ pub enum UniformSource {
     /// (2/(256·width), 2/(256·height)): the shift that gives an aliased point llvmpipe's
     /// legacy tie rule (`shadergen::vertex`).
     PointSubpixel,
+    /// (POINT_SIZE_MIN, POINT_SIZE_MAX, 0, 0).
+    PointLimits,
+    /// POINT_DISTANCE_ATTENUATION's (a, b, c, 0).
+    PointAttenuation,
     /// CLIP_PLANEi's plane in eye coordinates.
     ClipPlane(u8),
     /// `Fog::factor_params`: (a, b, d·log₂e, d/√ln 2).
@@ -145,6 +149,8 @@ impl UniformSource {
             UniformSource::Sampler(u) => format!("u_tex{u}"),
             UniformSource::PointSize => "u_point_size".into(),
             UniformSource::PointSubpixel => "u_point_subpixel".into(),
+            UniformSource::PointLimits => "u_point_limits".into(),
+            UniformSource::PointAttenuation => "u_point_attenuation".into(),
             UniformSource::ClipPlane(i) => format!("u_clip_plane{i}"),
             UniformSource::FogParams => "u_fog_params".into(),
             UniformSource::FogColor => "u_fog_color".into(),
@@ -276,6 +282,16 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
         }
         UniformSource::Sampler(u) => Int(i32::from(u)),
         UniformSource::PointSize => Float(state.point_size),
+        UniformSource::PointLimits => Vec4(glam::Vec4::new(
+            state.point_params.size_min,
+            state.point_params.size_max,
+            0.0,
+            0.0,
+        )),
+        UniformSource::PointAttenuation => {
+            let [a, b, c] = state.point_params.attenuation;
+            Vec4(glam::Vec4::new(a, b, c, 0.0))
+        }
         UniformSource::PointSubpixel => {
             let step = |side: i32| 2.0 / (256.0 * side.max(1) as f32);
             Vec4(glam::Vec4::new(

@@ -21,7 +21,7 @@
 
 use glam::Mat4;
 
-use crate::ff::{AttribMask, ClearMask, Command, FogParam, MatrixMode};
+use crate::ff::{AttribMask, ClearMask, Command, FogParam, MatrixMode, PointParam};
 use crate::pipeline::PipelineError;
 
 use super::bindings as gl;
@@ -171,6 +171,7 @@ impl Native {
             },
             Command::PointSize(s) => unsafe { g.PointSize(*s) },
             Command::Fog(p) => fog(g, *p),
+            Command::PointParameter(p) => point_parameter(g, *p),
             // GL transforms the plane by the inverse modelview itself, as the model did.
             Command::ClipPlane { plane, equation } => {
                 let e = equation.as_dvec4().to_array();
@@ -312,6 +313,23 @@ fn reload_texture_matrix(g: &gl::Gl) {
 }
 
 /// glFog with the parameter's own entry point (glFogi for the mode, glFogfv for the colour).
+fn point_parameter(g: &gl::Gl, p: PointParam) {
+    // SAFETY: plain GL calls; DISTANCE_ATTENUATION reads 3 floats from a local array.
+    unsafe {
+        match p {
+            PointParam::SizeMin(v) => g.PointParameterf(gl::POINT_SIZE_MIN, v),
+            PointParam::SizeMax(v) => g.PointParameterf(gl::POINT_SIZE_MAX, v),
+            PointParam::FadeThreshold(v) => g.PointParameterf(gl::POINT_FADE_THRESHOLD_SIZE, v),
+            PointParam::DistanceAttenuation(a) => {
+                g.PointParameterfv(gl::POINT_DISTANCE_ATTENUATION, a.as_ptr())
+            }
+            PointParam::SpriteCoordOrigin(o) => {
+                g.PointParameteri(gl::POINT_SPRITE_COORD_ORIGIN, conv::int(o))
+            }
+        }
+    }
+}
+
 fn fog(g: &gl::Gl, p: FogParam) {
     // SAFETY: plain GL calls; FOG_COLOR reads 4 floats from a local array.
     unsafe {

@@ -442,13 +442,11 @@ fn emit_combine(w: &mut GlslWriter, key: &FragmentKey, u: u8, rgb: Combine, alph
 /// circle and is 1 on the fringe, so a point of opaque colour is a disc without coverage
 /// at its rim: Mesa 22.3's selection, followed as it is (measured on llvmpipe).
 fn emit_point_coverage(w: &mut GlslWriter) {
-    let size = w.uniform(UniformSource::PointSize);
+    w.declare("flat in float v_point_r;");
     w.line("vec2 point_st = gl_PointCoord * 2.0 - 1.0;");
     w.line("float point_d = point_st.x * point_st.x + point_st.y * point_st.y;");
     w.line("if (1.0 < point_d) discard;");
-    w.line(format!(
-        "float point_r = {size} <= 2.0 ? 1.0 : 0.5 * {size};"
-    ));
+    w.line("float point_r = v_point_r;");
     w.line("float point_k = 1.0 - 2.0 * (1.0 / point_r) + (1.0 / point_r) * (1.0 / point_r);");
     w.line(
         "float point_coverage = point_k >= point_d ? (1.0 / (1.0 - point_k)) * (1.0 - point_d) : 1.0;",

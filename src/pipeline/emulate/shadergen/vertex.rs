@@ -11,8 +11,8 @@
 use crate::ff::{ColorMaterialMode, TexCoord, TexGenMode};
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{
-    ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, PointShape, PositionSource,
-    VertexKey, VertexUnitKey,
+    ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, PointKey, PointShape,
+    PositionSource, VertexKey, VertexUnitKey,
 };
 use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
 
@@ -49,32 +49,10 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
             ));
         }
     }
-    // Points (and polygons in POINT mode) take glPointSize's value; core GL reads it
-    // from here with PROGRAM_POINT_SIZE on. Lines and triangles ignore it. An aliased
-    // point's side is the size rounded as llvmpipe's point setup rounds it (GL 1.5
-    // §3.3: aliased sizes are rounded): in 1/256 pixel steps, s₈ = roundEven(256·size),
-    // side = max(1, ⌊(s₈ + 127)/256⌋), so halves round down (1.5 → 1, 2.5 → 2). A round
-    // point is the square of Mesa's aapoint stage, side 2r: r = 1 up to size 2, size/2
-    // above. The core context rasterises a point sprite, covering a pixel whose centre c
-    // is at lo ≤ c < hi in 1/256 steps; llvmpipe's legacy points take lo < c ≤ hi, the
-    // same as the sprite's rule one step up and right, so the aliased point moves by one
-    // step (measured: points at x.5 of even sides cover Mesa's pixels only so).
-    match key.point_size {
-        Some(PointShape::Square) => {
-            let size = w.uniform(UniformSource::PointSize);
-            let step = w.uniform(UniformSource::PointSubpixel);
-            w.line(format!(
-                "gl_PointSize = max(1.0, floor((roundEven({size} * 256.0) + 127.0) / 256.0));"
-            ));
-            w.line(format!("gl_Position.xy += {step}.xy * gl_Position.w;"));
-        }
-        Some(PointShape::Round) => {
-            let size = w.uniform(UniformSource::PointSize);
-            w.line(format!("gl_PointSize = {size} <= 2.0 ? 2.0 : {size};"));
-        }
-        None => {}
-    }
     let mut eye = EyeTerms::default();
+    if let Some(points) = key.point_size {
+        emit_point_size(&mut w, &mut eye, points);
+    }
     for &i in &key.clip_planes {
         // User clip plane i (GL 1.5 §2.12): kept where p′·x_eye ≥ 0, p′ the eye plane.
         let e = eye.position(&mut w);
@@ -181,6 +159,57 @@ fn emit_normal(w: &mut GlslWriter, key: &VertexKey, out: &str, attribute: &str) 
     } else if key.rescale_normal {
         let f = w.uniform(UniformSource::RescaleFactor);
         w.line(format!("{out} *= {f};"));
+    }
+}
+
+/// gl_PointSize of a points pass; core GL reads it from here with PROGRAM_POINT_SIZE on.
+/// The derived size is `ff::point`'s: glPointSize's value, attenuated by
+/// 1/√(a + d·(b + d·c)) with d = |z_eye| (Mesa's order of operations) when the parameters
+/// attenuate, then clamped to [POINT_SIZE_MIN, POINT_SIZE_MAX] (max, then min).
+///
+/// An aliased point's side is that size rounded as llvmpipe's point setup rounds it
+/// (GL 1.5 §3.3: aliased sizes are rounded): in 1/256 pixel steps, s₈ = roundEven(256·size),
+/// side = max(1, ⌊(s₈ + 127)/256⌋), so halves round down (1.5 → 1, 2.5 → 2). The core
+/// context rasterises a point sprite, covering a pixel whose centre c is at lo ≤ c < hi in
+/// 1/256 steps; llvmpipe's legacy points take lo < c ≤ hi, the same as the sprite's rule
+/// one step up and right, so the aliased point moves by one step (measured: points at x.5
+/// of even sides cover Mesa's pixels only so).
+///
+/// A round point is the square of Mesa's aapoint stage, side 2r: r = 1 up to size 2 and
+/// size/2 above for glPointSize's size, size/2 for an attenuated (per-vertex) one; r goes
+/// to the fragment stage as `v_point_r`.
+fn emit_point_size(w: &mut GlslWriter, eye: &mut EyeTerms, points: PointKey) {
+    let size = w.uniform(UniformSource::PointSize);
+    let limits = w.uniform(UniformSource::PointLimits);
+    w.line(format!("float point_size = {size};"));
+    if points.attenuated {
+        let e = eye.position(w);
+        let a = w.uniform(UniformSource::PointAttenuation);
+        w.line(format!("float point_d = abs({e}.z);"));
+        w.line(format!(
+            "point_size = point_size * inversesqrt(point_d * (point_d * {a}.z + {a}.y) + {a}.x);"
+        ));
+    }
+    w.line(format!(
+        "point_size = min(max(point_size, {limits}.x), {limits}.y);"
+    ));
+    match points.shape {
+        PointShape::Square => {
+            let step = w.uniform(UniformSource::PointSubpixel);
+            w.line(
+                "gl_PointSize = max(1.0, floor((roundEven(point_size * 256.0) + 127.0) / 256.0));",
+            );
+            w.line(format!("gl_Position.xy += {step}.xy * gl_Position.w;"));
+        }
+        PointShape::Round => {
+            w.declare("flat out float v_point_r;");
+            if points.attenuated {
+                w.line("v_point_r = 0.5 * point_size;");
+            } else {
+                w.line("v_point_r = point_size <= 2.0 ? 1.0 : 0.5 * point_size;");
+            }
+            w.line("gl_PointSize = 2.0 * v_point_r;");
+        }
     }
 }
 
