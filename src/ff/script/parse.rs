@@ -690,14 +690,17 @@ impl Args for Call<'_, '_> {
     /// Pixel data: NULL, or a compound literal whose element type gives the byte encoding,
     /// laid out by the unpack parameters as a C program's is (GL 1.5 §3.6.4,
     /// `pixel_layout`). With only an alignment set, a literal of tight rows (one row, or
-    /// rows the alignment does not pad) is taken as it is.
+    /// rows the alignment does not pad) is taken as it is — rows that the alignment does
+    /// not pad only if the literal holds every one (`extent`, as for the other layouts),
+    /// since the printer writes them back padded to the default alignment.
     fn pixels(&self, i: usize, shape: PixelShape) -> Res<Option<Arc<[u8]>>> {
         let Some(bytes) = self.literal_bytes(i)? else {
             return Ok(None);
         };
         let lay = pixel_layout::layout(shape, &self.unpack);
         let plain = self.unpack == Packing::aligned(self.unpack.alignment);
-        if plain && (lay.rows < 2 || lay.stride == lay.tight_row) {
+        let holds_every_row = bytes.len() >= lay.extent;
+        if plain && (lay.rows < 2 || (lay.stride == lay.tight_row && holds_every_row)) {
             return Ok(Some(Arc::from(bytes)));
         }
         pixel_layout::unpack(&bytes, shape, &self.unpack)

@@ -1199,3 +1199,22 @@ fn multi_draws_read_pointer_arrays_and_become_one_draw_per_list() {
         assert!(parse(&format!("{head}{bad}")).is_err(), "{bad}");
     }
 }
+
+/// A pixel literal shorter than its rows is refused under every unpack layout, the tight
+/// one of GL_UNPACK_ALIGNMENT 1 included (found by the script fuzzer: a 3×2 image of four
+/// bytes was taken, and printed back as rows the reader then refused).
+#[test]
+fn a_pixel_literal_shorter_than_its_rows_is_refused() {
+    let image = |w: u32, bytes: &str| {
+        format!(
+            "glPixelStorei(GL_UNPACK_ALIGNMENT, 1);\n\
+             glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE8, {w}, 2, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, (GLubyte[]){{{bytes}}});\n"
+        )
+    };
+    let err = parse(&image(3, "0, 85, 170, 255")).expect_err("four bytes for six");
+    assert!(err.to_string().contains("pixel rows"), "{err}");
+    let ok = parse(&image(2, "0, 85, 170, 255")).expect("four bytes for four");
+    let printed = print(&ok);
+    parse(&printed).unwrap_or_else(|e| panic!("{e}\n{printed}"));
+    parse(&image(3, "0, 85, 170, 255, 1, 2")).expect("six bytes for six");
+}
