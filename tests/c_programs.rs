@@ -194,6 +194,17 @@ fn assert_same_text(mesa: &str, ours: &str, min_lines: usize, what: &str) {
     assert_eq!(ours.lines().count(), mesa.lines().count());
 }
 
+/// Mesa printed each of `lines`: the answers a program is built around, checked on Mesa
+/// itself before the layer is compared with it.
+fn assert_mesa_printed(mesa_text: &str, lines: &[&str]) {
+    for line in lines {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+}
+
 /// Each of the six 64×64 panels (three across, two up) shows something on Mesa.
 fn assert_six_panels_drawn(mesa: &RgbaImage) {
     let background = Rgba([26, 26, 26, 255]);
@@ -367,17 +378,15 @@ fn buffer_objects_draw_and_fail_as_on_mesa() {
 fn framebuffer_objects_answer_and_draw_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("fbo");
     // Mesa's own answers that the program is built around.
-    for line in [
-        "empty fbo                                0x8cd7",
-        "texture without image                    0x8cd6",
-        "depth only, draw buffer 0                0x8cd5",
-        "fbo pixel at the overlap                 255 0 0 255",
-    ] {
-        assert!(
-            mesa_text.contains(line),
-            "Mesa did not print {line:?}:\n{mesa_text}"
-        );
-    }
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "empty fbo                                0x8cd7",
+            "texture without image                    0x8cd6",
+            "depth only, draw buffer 0                0x8cd5",
+            "fbo pixel at the overlap                 255 0 0 255",
+        ],
+    );
     assert_same_text(&mesa_text, &ours_text, 100, "a framebuffer answer");
     // The window shows the texture drawn through the FBO: red and green quads on blue.
     assert!(count_dominant(&mesa, 0) > 200 && count_dominant(&mesa, 1) > 200);
@@ -549,18 +558,16 @@ fn short_and_float_buffers_hold_what_mesa_writes() {
 fn the_accumulation_buffer_blurs_and_answers_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("accum");
     // Mesa's own answers that the program is built around (ff::accum's rules).
-    for line in [
-        "no accum: glAccum                        err 0x502",
-        "ACCUM_RED_BITS                           16  err 0x0",
-        "fbo: glAccum                             err 0x502",
-        "two frames at 0.5                        127 191 32 127  err 0x0",
-        "ADD 1.5 wraps                            0 0 13 38  err 0x0",
-    ] {
-        assert!(
-            mesa_text.contains(line),
-            "Mesa did not print {line:?}:\n{mesa_text}"
-        );
-    }
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "no accum: glAccum                        err 0x502",
+            "ACCUM_RED_BITS                           16  err 0x0",
+            "fbo: glAccum                             err 0x502",
+            "two frames at 0.5                        127 191 32 127  err 0x0",
+            "ADD 1.5 wraps                            0 0 13 38  err 0x0",
+        ],
+    );
     assert_same_text(&mesa_text, &ours_text, 30, "an accumulation answer");
     // The layer computes Mesa's 16-bit arithmetic exactly (measured: no pixel differs),
     // so the image is held to equality, beyond the usual 3/255 on 99%.
@@ -599,17 +606,15 @@ fn an_accumulation_trace_replays_to_the_same_image() {
 #[test]
 fn stippled_lines_draw_and_answer_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("stipple");
-    for line in [
-        "LINE_STIPPLE_PATTERN default             65535  err 0x0",
-        "REPEAT after factor 0                    1  err 0x0",
-        "REPEAT after factor 1000                 256  err 0x0",
-        "glLineStipple inside glBegin             err 0x502",
-    ] {
-        assert!(
-            mesa_text.contains(line),
-            "Mesa did not print {line:?}:\n{mesa_text}"
-        );
-    }
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "LINE_STIPPLE_PATTERN default             65535  err 0x0",
+            "REPEAT after factor 0                    1  err 0x0",
+            "REPEAT after factor 1000                 256  err 0x0",
+            "glLineStipple inside glBegin             err 0x502",
+        ],
+    );
     assert_same_text(&mesa_text, &ours_text, 15, "a line stipple answer");
     assert_images_match("stipple", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
@@ -622,19 +627,17 @@ fn stippled_lines_draw_and_answer_as_on_mesa() {
 #[test]
 fn edge_flags_draw_and_answer_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("edgeflags");
-    for line in [
-        "EDGE_FLAG default                        1  err 0x0",
-        "CURRENT_BIT popped                       0  err 0x0",
-        "glEdgeFlagv(2)                           0  err 0x0",
-        "glEdgeFlagPointer stride -1              err 0x501",
-        "after glInterleavedArrays                0  err 0x0",
-        "polygon, current flag FALSE              0 lit  err 0x0",
-    ] {
-        assert!(
-            mesa_text.contains(line),
-            "Mesa did not print {line:?}:\n{mesa_text}"
-        );
-    }
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "EDGE_FLAG default                        1  err 0x0",
+            "CURRENT_BIT popped                       0  err 0x0",
+            "glEdgeFlagv(2)                           0  err 0x0",
+            "glEdgeFlagPointer stride -1              err 0x501",
+            "after glInterleavedArrays                0  err 0x0",
+            "polygon, current flag FALSE              0 lit  err 0x0",
+        ],
+    );
     assert_same_text(&mesa_text, &ours_text, 25, "an edge-flag answer");
     assert_images_match("edgeflags", &ours, &mesa, within_3_on_99_percent(&mesa));
     assert_trace_replays(
@@ -652,21 +655,19 @@ fn edge_flags_draw_and_answer_as_on_mesa() {
 fn framebuffer_blits_answer_and_draw_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("blit");
     // Mesa's own answers that the program is built around (ff::blit's rules).
-    for line in [
-        "GL_EXT_framebuffer_blit                  1",
-        "incomplete read, bad mask                err 0x506",
-        "bad filter and bad mask                  err 0x500",
-        "LINEAR depth and bad mask                err 0x501",
-        "depth D24S8 into D32F                    err 0x502",
-        "stencil D24S8 into D24                   err 0x0",
-        "window (2,40) outside scissor            0 0 255 255  err 0x0",
-        "window (60,60) colour mask               255 0 255 255  err 0x0",
-    ] {
-        assert!(
-            mesa_text.contains(line),
-            "Mesa did not print {line:?}:\n{mesa_text}"
-        );
-    }
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "GL_EXT_framebuffer_blit                  1",
+            "incomplete read, bad mask                err 0x506",
+            "bad filter and bad mask                  err 0x500",
+            "LINEAR depth and bad mask                err 0x501",
+            "depth D24S8 into D32F                    err 0x502",
+            "stencil D24S8 into D24                   err 0x0",
+            "window (2,40) outside scissor            0 0 255 255  err 0x0",
+            "window (60,60) colour mask               255 0 255 255  err 0x0",
+        ],
+    );
     assert_same_text(&mesa_text, &ours_text, 75, "a blit answer");
     assert_images_match("blit", &ours, &mesa, within_3_on_99_percent(&mesa));
     assert_trace_replays("blit", &compile("blit", Linking::Direct), &[], "64x64");
@@ -751,31 +752,21 @@ fn assert_six_panels_drawn_96x64(img: &RgbaImage) {
 fn occlusion_queries_count_and_answer_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("queries");
     // Mesa's own answers that the program is built around (ff::queries' rules).
-    for line in [
-        "counter bits, SAMPLES_PASSED             64  err 0x0",
-        "behind, partly hidden                    768 ready 1  err 0x0",
-        "stencil mark, then through it            800 ready 1  err 0x0",
-        "glBitmap outline 8x8                     10 ready 1  err 0x0",
-        "glCopyPixels 6x6; glClear uncounted      36 ready 1  err 0x0",
-        "compiled, not run: glIsQuery             0  err 0x0",
-        "begin a name never generated             err 0x0",
-        "names after the deletes                  201 202  err 0x0",
-    ] {
-        assert!(
-            mesa_text.contains(line),
-            "Mesa did not print {line:?}:\n{mesa_text}"
-        );
-    }
-    assert_same_text(&mesa_text, &ours_text, 50, "a query answer");
-    assert_images_match(
-        "queries",
-        &ours,
-        &mesa,
-        Tolerance {
-            per_channel: 0,
-            max_bad_pixels: 0,
-        },
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "counter bits, SAMPLES_PASSED             64  err 0x0",
+            "behind, partly hidden                    768 ready 1  err 0x0",
+            "stencil mark, then through it            800 ready 1  err 0x0",
+            "glBitmap outline 8x8                     10 ready 1  err 0x0",
+            "glCopyPixels 6x6; glClear uncounted      36 ready 1  err 0x0",
+            "compiled, not run: glIsQuery             0  err 0x0",
+            "begin a name never generated             err 0x0",
+            "names after the deletes                  201 202  err 0x0",
+        ],
     );
+    assert_same_text(&mesa_text, &ours_text, 50, "a query answer");
+    assert_images_match("queries", &ours, &mesa, Tolerance::EXACT);
     assert_trace_replays(
         "queries",
         &compile("queries", Linking::Direct),
@@ -793,16 +784,14 @@ fn occlusion_queries_count_and_answer_as_on_mesa() {
 #[test]
 fn smooth_points_and_lines_draw_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("smooth");
-    for line in [
-        "SMOOTH_POINT_SIZE_RANGE                  1 255  err 0x0",
-        "SMOOTH_LINE_WIDTH_RANGE                  1 255  err 0x0",
-        "after glPopAttrib                        0 0  err 0x0",
-    ] {
-        assert!(
-            mesa_text.contains(line),
-            "Mesa did not print {line:?}:\n{mesa_text}"
-        );
-    }
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "SMOOTH_POINT_SIZE_RANGE                  1 255  err 0x0",
+            "SMOOTH_LINE_WIDTH_RANGE                  1 255  err 0x0",
+            "after glPopAttrib                        0 0  err 0x0",
+        ],
+    );
     assert_same_text(&mesa_text, &ours_text, 6, "a smooth-point answer");
     // Every 32×32 panel of Mesa's image shows its case: pixels away from the background.
     let background = mesa.get_pixel(0, 0).0;
@@ -817,15 +806,7 @@ fn smooth_points_and_lines_draw_as_on_mesa() {
             assert!(drawn >= 20, "panel ({col}, {row}) of Mesa's image is empty");
         }
     }
-    assert_images_match(
-        "smooth",
-        &ours,
-        &mesa,
-        Tolerance {
-            per_channel: 0,
-            max_bad_pixels: 0,
-        },
-    );
+    assert_images_match("smooth", &ours, &mesa, Tolerance::EXACT);
     assert_trace_replays(
         "smooth",
         &compile("smooth", Linking::Direct),
@@ -841,20 +822,18 @@ fn smooth_points_and_lines_draw_as_on_mesa() {
 #[test]
 fn point_parameters_size_points_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("point_params");
-    for line in [
-        "max 4 no atten: 16 err 0",
-        "atten quad z -1.5: 225",
-        "fade 20: 36 max 255",
-        "smooth atten size1 z -6: 1",
-        "min -1 err 501",
-        "bad pname err 500",
-        "pop min 8",
-    ] {
-        assert!(
-            mesa_text.contains(line),
-            "Mesa did not print {line:?}:\n{mesa_text}"
-        );
-    }
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "max 4 no atten: 16 err 0",
+            "atten quad z -1.5: 225",
+            "fade 20: 36 max 255",
+            "smooth atten size1 z -6: 1",
+            "min -1 err 501",
+            "bad pname err 500",
+            "pop min 8",
+        ],
+    );
     assert_same_text(&mesa_text, &ours_text, 25, "a point-parameter answer");
     assert_images_match(
         "point_params",
