@@ -123,3 +123,54 @@ fn smooth_points_and_lines_match_mesa() {
         }
     }
 }
+
+/// Points whose sizes glPointParameter attenuates by eye distance and clamps, in
+/// perspective, aliased and with `smooth` (POINT_SMOOTH: the aapoint radius of a
+/// per-vertex size).
+fn attenuated_points(smooth: bool) -> String {
+    let mut s = String::from(
+        "glMatrixMode(GL_PROJECTION);\nglLoadIdentity();\nglFrustum(-1, 1, -0.75, 0.75, 1, 100);\n\
+         glMatrixMode(GL_MODELVIEW);\nglLoadIdentity();\n\
+         glClearColor(0.1, 0.1, 0.2, 1);\nglClear(GL_COLOR_BUFFER_BIT);\n\
+         glEnable(GL_BLEND);\nglBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);\n\
+         glPointSize(11);\nglPointParameterf(GL_POINT_SIZE_MIN, 1.5);\n\
+         glPointParameterf(GL_POINT_SIZE_MAX, 9);\n\
+         glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, (GLfloat[]){0.1, 0.25, 0.03});\n",
+    );
+    if smooth {
+        s += "glEnable(GL_POINT_SMOOTH);\n";
+    }
+    s += "glBegin(GL_POINTS);\n";
+    for i in 0..12 {
+        let z = -1.3 - 0.8 * i as f32;
+        let (x, y) = ((-0.7 + 0.13 * i as f32) * -z, (0.3 - 0.05 * i as f32) * -z);
+        s += &format!("glColor4f(1, 0.7, 0.3, 0.8);\nglVertex3f({x}, {y}, {z});\n");
+    }
+    s + "glEnd();\n"
+}
+
+/// glPointParameter's derived sizes draw Mesa's pixels on the emulated path, aliased and
+/// smooth: within 1/255 (the smooth points' alpha factor, computed in the program's own
+/// order).
+#[test]
+fn attenuated_points_match_mesa() {
+    for smooth in [false, true] {
+        let pairs = compare(
+            if smooth {
+                "attenuated_smooth_points"
+            } else {
+                "attenuated_points"
+            },
+            &attenuated_points(smooth),
+            Frame::new(W, H),
+            Tolerance {
+                per_channel: 1,
+                max_bad_pixels: 0,
+            },
+        );
+        for pair in &pairs {
+            let lit = pair.native.image.pixels().filter(|p| p.0[0] > 100).count();
+            assert!(lit > 150, "the points were drawn ({lit} pixels)");
+        }
+    }
+}
