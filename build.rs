@@ -29,6 +29,8 @@ const MODEL_EXTENSIONS: &[&str] = &[
     "GL_EXT_framebuffer_blit",
     "GL_EXT_framebuffer_multisample_blit_scaled",
     "GL_EXT_packed_depth_stencil",
+    "GL_EXT_secondary_color",
+    "GL_EXT_fog_coord",
 ];
 
 fn main() {

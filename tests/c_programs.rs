@@ -851,3 +851,46 @@ fn point_parameters_size_points_as_on_mesa() {
         "64x64",
     );
 }
+
+/// `tests/c/secondary.c`: GL 1.4's secondary colour and fog coordinate through every
+/// front door (immediate mode, client arrays, a buffer object, glArrayElement, a display
+/// list) with Mesa's errors, conversions and answers — FOG_COORD_SRC left as it is by
+/// glPopAttrib, the raster distance under each source — and eleven panels (the colour sum
+/// unlit, flat, textured and under lighting, fog by coordinate and by depth, stippled
+/// lines and points, glBitmap and glDrawPixels) drawn as Mesa draws them within 1/255; the
+/// trace replays.
+#[test]
+fn secondary_colours_and_fog_coordinates_draw_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("secondary");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "secondary initial                  0 0 0 1 err 0",
+            "secondary 3ub                      1 0.501961 0 1 err 0",
+            "fog coord as int                         4  err 0x0",
+            "fog coord src ZERO                       err 0x500",
+            "secondary pointer size 2 err 501",
+            "fog coord pointer type 1400 err 500",
+            "pop fog src                              33873  err 0x0",
+            "raster distance fog coord          -5 -7 -7 -7 err 0",
+            "window pos distance fog coord      -5 -7 -7 -7 err 0",
+            "secondary after element            0 1 0 0.784314 err 0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 80, "a secondary-colour answer");
+    assert_images_match(
+        "secondary",
+        &ours,
+        &mesa,
+        Tolerance {
+            per_channel: 1,
+            max_bad_pixels: 0,
+        },
+    );
+    assert_trace_replays(
+        "secondary",
+        &compile("secondary", Linking::Direct),
+        &[],
+        "96x96",
+    );
+}

@@ -37,6 +37,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_SGIS_texture_edge_clamp",
     "GL_ARB_texture_border_clamp",
     "GL_EXT_separate_specular_color",
+    "GL_EXT_secondary_color",
+    "GL_EXT_fog_coord",
 ];
 
 struct Strings {

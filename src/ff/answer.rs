@@ -226,6 +226,8 @@ fn client_enable(cap: u32, c: &Client) -> Option<bool> {
         r::COLOR_ARRAY => a.color.enabled,
         r::TEXTURE_COORD_ARRAY => a.texcoord[usize::from(a.client_active)].enabled,
         r::EDGE_FLAG_ARRAY => a.edge_flag.enabled,
+        r::SECONDARY_COLOR_ARRAY => a.secondary_color.enabled,
+        r::FOG_COORD_ARRAY => a.fog_coord.enabled,
         r::INDEX_ARRAY => false,
         _ => return None,
     })
@@ -244,6 +246,8 @@ fn pointer(pname: u32, c: &Client) -> Result<usize, GlErrorKind> {
         r::COLOR_ARRAY_POINTER => &a.color.data,
         r::TEXTURE_COORD_ARRAY_POINTER => &a.texcoord[usize::from(a.client_active)].data,
         r::EDGE_FLAG_ARRAY_POINTER => &a.edge_flag.data,
+        r::SECONDARY_COLOR_ARRAY_POINTER => &a.secondary_color.data,
+        r::FOG_COORD_ARRAY_POINTER => &a.fog_coord.data,
         r::INDEX_ARRAY_POINTER | FEEDBACK_BUFFER_POINTER | SELECTION_BUFFER_POINTER => {
             &ArrayData::Null
         }
@@ -294,6 +298,11 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
         r::TEXTURE_COORD_ARRAY_TYPE => enm(ty(unit.ty)),
         r::TEXTURE_COORD_ARRAY_STRIDE => int(i64::from(unit.stride)),
         r::EDGE_FLAG_ARRAY_STRIDE => int(i64::from(a.edge_flag.stride)),
+        r::SECONDARY_COLOR_ARRAY_SIZE => int(i64::from(a.secondary_color.size)),
+        r::SECONDARY_COLOR_ARRAY_TYPE => enm(ty(a.secondary_color.ty)),
+        r::SECONDARY_COLOR_ARRAY_STRIDE => int(i64::from(a.secondary_color.stride)),
+        r::FOG_COORD_ARRAY_TYPE => enm(ty(a.fog_coord.ty)),
+        r::FOG_COORD_ARRAY_STRIDE => int(i64::from(a.fog_coord.stride)),
         r::LIST_BASE => int(i64::from(c.lists.base)),
         r::LIST_INDEX => int(i64::from(c.lists.compiling_name().unwrap_or(0))),
         r::LIST_MODE => match c.lists.compiling() {
@@ -310,6 +319,10 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
         r::COLOR_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.color.data))),
         r::TEXTURE_COORD_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&unit.data))),
         r::EDGE_FLAG_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.edge_flag.data))),
+        r::SECONDARY_COLOR_ARRAY_BUFFER_BINDING => {
+            int(i64::from(buffer_of(&a.secondary_color.data)))
+        }
+        r::FOG_COORD_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.fog_coord.data))),
         _ => None,
     }
 }

@@ -526,10 +526,10 @@ macro_rules! gl_entry_table {
         GetMapfv = glGetMapfv(Left; target: GLenum, query: GLenum, v: *mut GLfloat);
         GetMapdv = glGetMapdv(Left; target: GLenum, query: GLenum, v: *mut GLdouble);
         GetMapiv = glGetMapiv(Left; target: GLenum, query: GLenum, v: *mut GLint);
-        // Not in the model yet (README, "Left out"): colour-index mode, 3D and compressed
-        // textures, multisample coverage, GL 1.4's secondary colour, fog coordinate and point
-        // parameters, GL 1.5's occlusion queries. Exported, so a program that calls them
-        // links and gets GL_INVALID_OPERATION instead of a missing symbol.
+        // GL 1.2–1.5 beyond GL 1.1. Those marked Left are not in the model yet (README,
+        // "Left out"): colour-index mode, 3D and compressed textures, multisample coverage.
+        // Exported, so a program that calls them links and gets GL_INVALID_OPERATION
+        // instead of a missing symbol.
         BeginQuery = glBeginQuery(Script; target: GLenum, id: GLuint);
         ClearIndex = glClearIndex(Left; c: GLfloat);
         CompressedTexImage1D = glCompressedTexImage1D(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
@@ -541,11 +541,11 @@ macro_rules! gl_entry_table {
         CopyTexSubImage3D = glCopyTexSubImage3D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
         DeleteQueries = glDeleteQueries(Script; n: GLsizei, ids: *const GLuint);
         EndQuery = glEndQuery(Script; target: GLenum);
-        FogCoordPointer = glFogCoordPointer(Left; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
-        FogCoordd = glFogCoordd(Left; coord: GLdouble);
-        FogCoorddv = glFogCoorddv(Left; coord: *const GLdouble);
-        FogCoordf = glFogCoordf(Left; coord: GLfloat);
-        FogCoordfv = glFogCoordfv(Left; coord: *const GLfloat);
+        FogCoordPointer = glFogCoordPointer(Script; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
+        FogCoordd = glFogCoordd(Script; coord: GLdouble);
+        FogCoorddv = glFogCoorddv(Script; coord: *const GLdouble);
+        FogCoordf = glFogCoordf(Script; coord: GLfloat);
+        FogCoordfv = glFogCoordfv(Script; coord: *const GLfloat);
         GenQueries = glGenQueries(Script; n: GLsizei, ids: *mut GLuint);
         GetCompressedTexImage = glGetCompressedTexImage(Left; target: GLenum, level: GLint, img: *mut c_void);
         GetQueryObjectiv = glGetQueryObjectiv(Script; id: GLuint, pname: GLenum, params: *mut GLint);
@@ -569,23 +569,23 @@ macro_rules! gl_entry_table {
         PointParameteri = glPointParameteri(Script; pname: GLenum, param: GLint);
         PointParameteriv = glPointParameteriv(Script; pname: GLenum, params: *const GLint);
         SampleCoverage = glSampleCoverage(Left; value: GLfloat, invert: GLboolean);
-        SecondaryColor3b = glSecondaryColor3b(Left; red: GLbyte, green: GLbyte, blue: GLbyte);
-        SecondaryColor3bv = glSecondaryColor3bv(Left; v: *const GLbyte);
-        SecondaryColor3d = glSecondaryColor3d(Left; red: GLdouble, green: GLdouble, blue: GLdouble);
-        SecondaryColor3dv = glSecondaryColor3dv(Left; v: *const GLdouble);
-        SecondaryColor3f = glSecondaryColor3f(Left; red: GLfloat, green: GLfloat, blue: GLfloat);
-        SecondaryColor3fv = glSecondaryColor3fv(Left; v: *const GLfloat);
-        SecondaryColor3i = glSecondaryColor3i(Left; red: GLint, green: GLint, blue: GLint);
-        SecondaryColor3iv = glSecondaryColor3iv(Left; v: *const GLint);
-        SecondaryColor3s = glSecondaryColor3s(Left; red: GLshort, green: GLshort, blue: GLshort);
-        SecondaryColor3sv = glSecondaryColor3sv(Left; v: *const GLshort);
-        SecondaryColor3ub = glSecondaryColor3ub(Left; red: GLubyte, green: GLubyte, blue: GLubyte);
-        SecondaryColor3ubv = glSecondaryColor3ubv(Left; v: *const GLubyte);
-        SecondaryColor3ui = glSecondaryColor3ui(Left; red: GLuint, green: GLuint, blue: GLuint);
-        SecondaryColor3uiv = glSecondaryColor3uiv(Left; v: *const GLuint);
-        SecondaryColor3us = glSecondaryColor3us(Left; red: GLushort, green: GLushort, blue: GLushort);
-        SecondaryColor3usv = glSecondaryColor3usv(Left; v: *const GLushort);
-        SecondaryColorPointer = glSecondaryColorPointer(Left; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
+        SecondaryColor3b = glSecondaryColor3b(Script; red: GLbyte, green: GLbyte, blue: GLbyte);
+        SecondaryColor3bv = glSecondaryColor3bv(Script; v: *const GLbyte);
+        SecondaryColor3d = glSecondaryColor3d(Script; red: GLdouble, green: GLdouble, blue: GLdouble);
+        SecondaryColor3dv = glSecondaryColor3dv(Script; v: *const GLdouble);
+        SecondaryColor3f = glSecondaryColor3f(Script; red: GLfloat, green: GLfloat, blue: GLfloat);
+        SecondaryColor3fv = glSecondaryColor3fv(Script; v: *const GLfloat);
+        SecondaryColor3i = glSecondaryColor3i(Script; red: GLint, green: GLint, blue: GLint);
+        SecondaryColor3iv = glSecondaryColor3iv(Script; v: *const GLint);
+        SecondaryColor3s = glSecondaryColor3s(Script; red: GLshort, green: GLshort, blue: GLshort);
+        SecondaryColor3sv = glSecondaryColor3sv(Script; v: *const GLshort);
+        SecondaryColor3ub = glSecondaryColor3ub(Script; red: GLubyte, green: GLubyte, blue: GLubyte);
+        SecondaryColor3ubv = glSecondaryColor3ubv(Script; v: *const GLubyte);
+        SecondaryColor3ui = glSecondaryColor3ui(Script; red: GLuint, green: GLuint, blue: GLuint);
+        SecondaryColor3uiv = glSecondaryColor3uiv(Script; v: *const GLuint);
+        SecondaryColor3us = glSecondaryColor3us(Script; red: GLushort, green: GLushort, blue: GLushort);
+        SecondaryColor3usv = glSecondaryColor3usv(Script; v: *const GLushort);
+        SecondaryColorPointer = glSecondaryColorPointer(Script; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
         TexImage3D = glTexImage3D(Left; target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
         TexSubImage3D = glTexSubImage3D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
         BeginQueryARB = glBeginQueryARB(Script; target: GLenum, id: GLuint);
@@ -598,11 +598,11 @@ macro_rules! gl_entry_table {
         CopyTexSubImage3DEXT = glCopyTexSubImage3DEXT(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
         DeleteQueriesARB = glDeleteQueriesARB(Script; n: GLsizei, ids: *const GLuint);
         EndQueryARB = glEndQueryARB(Script; target: GLenum);
-        FogCoordPointerEXT = glFogCoordPointerEXT(Left; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
-        FogCoorddEXT = glFogCoorddEXT(Left; coord: GLdouble);
-        FogCoorddvEXT = glFogCoorddvEXT(Left; coord: *const GLdouble);
-        FogCoordfEXT = glFogCoordfEXT(Left; coord: GLfloat);
-        FogCoordfvEXT = glFogCoordfvEXT(Left; coord: *const GLfloat);
+        FogCoordPointerEXT = glFogCoordPointerEXT(Script; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
+        FogCoorddEXT = glFogCoorddEXT(Script; coord: GLdouble);
+        FogCoorddvEXT = glFogCoorddvEXT(Script; coord: *const GLdouble);
+        FogCoordfEXT = glFogCoordfEXT(Script; coord: GLfloat);
+        FogCoordfvEXT = glFogCoordfvEXT(Script; coord: *const GLfloat);
         GenQueriesARB = glGenQueriesARB(Script; n: GLsizei, ids: *mut GLuint);
         GetCompressedTexImageARB = glGetCompressedTexImageARB(Left; target: GLenum, level: GLint, img: *mut c_void);
         GetQueryObjectivARB = glGetQueryObjectivARB(Script; id: GLuint, pname: GLenum, params: *mut GLint);
@@ -614,23 +614,23 @@ macro_rules! gl_entry_table {
         PointParameterfvARB = glPointParameterfvARB(Script; pname: GLenum, params: *const GLfloat);
         PointParameterfvEXT = glPointParameterfvEXT(Script; pname: GLenum, params: *const GLfloat);
         SampleCoverageARB = glSampleCoverageARB(Left; value: GLfloat, invert: GLboolean);
-        SecondaryColor3bEXT = glSecondaryColor3bEXT(Left; red: GLbyte, green: GLbyte, blue: GLbyte);
-        SecondaryColor3bvEXT = glSecondaryColor3bvEXT(Left; v: *const GLbyte);
-        SecondaryColor3dEXT = glSecondaryColor3dEXT(Left; red: GLdouble, green: GLdouble, blue: GLdouble);
-        SecondaryColor3dvEXT = glSecondaryColor3dvEXT(Left; v: *const GLdouble);
-        SecondaryColor3fEXT = glSecondaryColor3fEXT(Left; red: GLfloat, green: GLfloat, blue: GLfloat);
-        SecondaryColor3fvEXT = glSecondaryColor3fvEXT(Left; v: *const GLfloat);
-        SecondaryColor3iEXT = glSecondaryColor3iEXT(Left; red: GLint, green: GLint, blue: GLint);
-        SecondaryColor3ivEXT = glSecondaryColor3ivEXT(Left; v: *const GLint);
-        SecondaryColor3sEXT = glSecondaryColor3sEXT(Left; red: GLshort, green: GLshort, blue: GLshort);
-        SecondaryColor3svEXT = glSecondaryColor3svEXT(Left; v: *const GLshort);
-        SecondaryColor3ubEXT = glSecondaryColor3ubEXT(Left; red: GLubyte, green: GLubyte, blue: GLubyte);
-        SecondaryColor3ubvEXT = glSecondaryColor3ubvEXT(Left; v: *const GLubyte);
-        SecondaryColor3uiEXT = glSecondaryColor3uiEXT(Left; red: GLuint, green: GLuint, blue: GLuint);
-        SecondaryColor3uivEXT = glSecondaryColor3uivEXT(Left; v: *const GLuint);
-        SecondaryColor3usEXT = glSecondaryColor3usEXT(Left; red: GLushort, green: GLushort, blue: GLushort);
-        SecondaryColor3usvEXT = glSecondaryColor3usvEXT(Left; v: *const GLushort);
-        SecondaryColorPointerEXT = glSecondaryColorPointerEXT(Left; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
+        SecondaryColor3bEXT = glSecondaryColor3bEXT(Script; red: GLbyte, green: GLbyte, blue: GLbyte);
+        SecondaryColor3bvEXT = glSecondaryColor3bvEXT(Script; v: *const GLbyte);
+        SecondaryColor3dEXT = glSecondaryColor3dEXT(Script; red: GLdouble, green: GLdouble, blue: GLdouble);
+        SecondaryColor3dvEXT = glSecondaryColor3dvEXT(Script; v: *const GLdouble);
+        SecondaryColor3fEXT = glSecondaryColor3fEXT(Script; red: GLfloat, green: GLfloat, blue: GLfloat);
+        SecondaryColor3fvEXT = glSecondaryColor3fvEXT(Script; v: *const GLfloat);
+        SecondaryColor3iEXT = glSecondaryColor3iEXT(Script; red: GLint, green: GLint, blue: GLint);
+        SecondaryColor3ivEXT = glSecondaryColor3ivEXT(Script; v: *const GLint);
+        SecondaryColor3sEXT = glSecondaryColor3sEXT(Script; red: GLshort, green: GLshort, blue: GLshort);
+        SecondaryColor3svEXT = glSecondaryColor3svEXT(Script; v: *const GLshort);
+        SecondaryColor3ubEXT = glSecondaryColor3ubEXT(Script; red: GLubyte, green: GLubyte, blue: GLubyte);
+        SecondaryColor3ubvEXT = glSecondaryColor3ubvEXT(Script; v: *const GLubyte);
+        SecondaryColor3uiEXT = glSecondaryColor3uiEXT(Script; red: GLuint, green: GLuint, blue: GLuint);
+        SecondaryColor3uivEXT = glSecondaryColor3uivEXT(Script; v: *const GLuint);
+        SecondaryColor3usEXT = glSecondaryColor3usEXT(Script; red: GLushort, green: GLushort, blue: GLushort);
+        SecondaryColor3usvEXT = glSecondaryColor3usvEXT(Script; v: *const GLushort);
+        SecondaryColorPointerEXT = glSecondaryColorPointerEXT(Script; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
         TexImage3DEXT = glTexImage3DEXT(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
         TexSubImage3DEXT = glTexSubImage3DEXT(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
         Accum = glAccum(Script; op: GLenum, value: GLfloat);
@@ -862,6 +862,10 @@ pub enum Attrib {
     MultiTexCoord,
     /// glRect: two corners, drawn as one GL_QUADS (as Mesa draws it).
     Rect,
+    /// glSecondaryColor3* (GL 1.4, EXT_secondary_color).
+    SecondaryColor,
+    /// glFogCoord{f,d}[v] (GL 1.4, EXT_fog_coord): one component, no digit in the name.
+    FogCoord,
 }
 
 /// A C parameter type of those families.
@@ -971,9 +975,14 @@ impl Entry {
     /// The family variant, read from the name.
     fn read_attrib_call(self) -> Option<AttribCall> {
         let name = self.name().strip_prefix("gl")?;
-        let name = name.strip_suffix("ARB").unwrap_or(name);
+        let name = name
+            .strip_suffix("ARB")
+            .or_else(|| name.strip_suffix("EXT"))
+            .unwrap_or(name);
         let (attrib, rest) = [
             ("MultiTexCoord", Attrib::MultiTexCoord),
+            ("SecondaryColor", Attrib::SecondaryColor),
+            ("FogCoord", Attrib::FogCoord),
             ("TexCoord", Attrib::TexCoord),
             ("Vertex", Attrib::Vertex),
             ("Color", Attrib::Color),
@@ -984,6 +993,7 @@ impl Entry {
         .find_map(|(prefix, a)| name.strip_prefix(prefix).map(|r| (*a, r)))?;
         let (count, rest) = match attrib {
             Attrib::Rect => (4, rest),
+            Attrib::FogCoord => (1, rest),
             _ => {
                 let digit = rest.chars().next()?.to_digit(10)? as usize;
                 (digit, &rest[1..])
@@ -1032,6 +1042,8 @@ impl Command {
             Command::Color(_) => Entry::Color4f,
             Command::Normal(_) => Entry::Normal3f,
             Command::EdgeFlag(_) => Entry::EdgeFlag,
+            Command::SecondaryColor(_) => Entry::SecondaryColor3f,
+            Command::FogCoord(_) => Entry::FogCoordf,
             Command::TexCoord { .. } => Entry::MultiTexCoord4f,
             Command::Light { param, .. } => match param {
                 LightParam::SpotExponent(_)
@@ -1202,6 +1214,18 @@ mod tests {
             (m.attrib, m.count, m.ty, m.vector),
             (Attrib::MultiTexCoord, 2, CType::Float, true)
         );
+        let s = Entry::SecondaryColor3usvEXT.attrib_call().unwrap();
+        assert_eq!(
+            (s.attrib, s.count, s.ty, s.vector),
+            (Attrib::SecondaryColor, 3, CType::UShort, true)
+        );
+        let f = Entry::FogCoorddEXT.attrib_call().unwrap();
+        assert_eq!(
+            (f.attrib, f.count, f.ty, f.vector),
+            (Attrib::FogCoord, 1, CType::Double, false)
+        );
+        assert_eq!(Entry::FogCoordPointer.attrib_call(), None);
+        assert_eq!(Entry::SecondaryColorPointerEXT.attrib_call(), None);
         let r = Entry::Rectdv.attrib_call().unwrap();
         assert_eq!((r.attrib, r.count, r.vector), (Attrib::Rect, 4, true));
         assert_eq!(Entry::LoadIdentity.attrib_call(), None);
@@ -1216,12 +1240,15 @@ mod tests {
                     "glNormal",
                     "glTexCoord",
                     "glMultiTexCoord",
+                    "glSecondaryColor",
                 ]
                 .iter()
                 .any(|p| {
                     n.strip_prefix(p)
                         .is_some_and(|r| r.starts_with(['1', '2', '3', '4']))
-                });
+                })
+                || n.strip_prefix("glFogCoord")
+                    .is_some_and(|r| r.starts_with(['f', 'd']));
             assert_eq!(e.attrib_call().is_some(), family, "{n}");
         }
     }

@@ -82,6 +82,8 @@ impl FixedState {
             Command::Color(c) => self.set_color(*c)?,
             Command::Normal(n) => self.current.normal = *n,
             Command::EdgeFlag(f) => self.current.edge_flag = *f,
+            Command::SecondaryColor(c) => self.current.secondary_color = *c,
+            Command::FogCoord(f) => self.current.fog_coord = *f,
             Command::TexCoord { unit, coord } => {
                 let u = check_unit(*unit)?;
                 self.current.texcoords[u] = *coord;

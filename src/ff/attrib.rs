@@ -233,10 +233,14 @@ impl FixedState {
                 self.point_params = s.point_params;
                 self.smooth.point = s.smooth.point;
             }
-            // The fog. GL 2.1's Table 6.11 puts COLOR_SUM in "fog/enable"; Mesa 22.3
-            // restores it with neither (measured, tests/query_native.rs), nor does the
-            // model.
-            AttribGroup::Fog => self.fog = s.fog,
+            // The fog. GL 2.1's Table 6.11 puts COLOR_SUM in "fog/enable" and
+            // FOG_COORD_SRC in "fog"; Mesa 22.3 restores neither (measured,
+            // tests/query_native.rs and tests/c/secondary.c), nor does the model.
+            AttribGroup::Fog => {
+                let source = self.fog.value.coord_source;
+                self.fog = s.fog;
+                self.fog.value.coord_source = source;
+            }
             AttribGroup::Scissor => self.scissor = s.scissor,
             AttribGroup::Hint => self.hints = s.hints,
             // glPixelTransfer and glPixelZoom (Table 6.16). The pixel maps belong to no
@@ -342,6 +346,8 @@ impl FixedState {
                 out.push(Command::Color(self.current.color));
                 out.push(Command::Normal(self.current.normal));
                 out.push(Command::EdgeFlag(self.current.edge_flag));
+                out.push(Command::SecondaryColor(self.current.secondary_color));
+                out.push(Command::FogCoord(self.current.fog_coord));
                 for (u, t) in self.current.texcoords.iter().enumerate() {
                     out.push(Command::TexCoord {
                         unit: u as u8,
@@ -469,6 +475,7 @@ impl FixedState {
                     FogParam::Start(f.value.start),
                     FogParam::End(f.value.end),
                     FogParam::Color(f.value.color),
+                    FogParam::CoordSource(f.value.coord_source),
                 ] {
                     out.push(Command::Fog(p));
                 }

@@ -3,7 +3,7 @@
 
 use super::api::{CType, Entry};
 use super::args::Args;
-use super::glenum::Family;
+use super::glenum::{Family, GlEnum};
 use super::*;
 
 const FOG_SCALARS: &[&str] = &[
@@ -12,6 +12,7 @@ const FOG_SCALARS: &[&str] = &[
     "GL_FOG_START",
     "GL_FOG_END",
     "GL_FOG_INDEX",
+    "GL_FOG_COORD_SRC",
 ];
 const FOG_VECTORS: &[&str] = &[
     "GL_FOG_COLOR",
@@ -19,7 +20,17 @@ const FOG_VECTORS: &[&str] = &[
     "GL_FOG_START",
     "GL_FOG_END",
     "GL_FOG_INDEX",
+    "GL_FOG_MODE",
+    "GL_FOG_COORD_SRC",
 ];
+
+/// The token a vector form's one value names (INVALID_ENUM for a value of no token of `T`).
+fn token_value<A: Args, T: GlEnum>(c: &A) -> Result<T, A::Error> {
+    let v = c.floats::<1>(1)?[0];
+    T::from_gl_value(v as u32)
+        .filter(|_| v >= 0.0 && v.fract() == 0.0)
+        .ok_or_else(|| c.unknown(1, T::names()))
+}
 
 /// A scalar fog parameter of `value`.
 fn fog_scalar(pname: &str, value: f32) -> FogParam {
@@ -31,14 +42,16 @@ fn fog_scalar(pname: &str, value: f32) -> FogParam {
     }
 }
 
-/// glFog{f,i}(pname, param) and glFog{f,i}v(pname, params). FOG_MODE takes its token
-/// (the vector forms read numbers only: FOG_MODE goes through glFogi). glFogiv's colour is
-/// mapped as signed integers are (GL 1.5 Table 2.9: (2c + 1)/(2³² − 1)).
+/// glFog{f,i}(pname, param) and glFog{f,i}v(pname, params). FOG_MODE and FOG_COORD_SRC
+/// take a token (in the vector forms its value, as a C program passes it; a script writes
+/// them with glFogi). glFogiv's colour is mapped as signed integers are (GL 1.5 Table 2.9:
+/// (2c + 1)/(2³² − 1)).
 fn fog<A: Args>(c: &A) -> Result<FogParam, A::Error> {
     c.count(2)?;
     Ok(match c.entry() {
         Entry::Fogf | Entry::Fogi => match c.pname(0, FOG_SCALARS)? {
             "GL_FOG_MODE" => FogParam::Mode(c.enm(1)?),
+            "GL_FOG_COORD_SRC" => FogParam::CoordSource(c.enm(1)?),
             p => fog_scalar(p, c.f32(1)?),
         },
         _ => {
@@ -54,6 +67,8 @@ fn fog<A: Args>(c: &A) -> Result<FogParam, A::Error> {
                         }
                     })))
                 }
+                "GL_FOG_MODE" => FogParam::Mode(token_value(c)?),
+                "GL_FOG_COORD_SRC" => FogParam::CoordSource(token_value(c)?),
                 p => fog_scalar(p, c.floats::<1>(1)?[0]),
             }
         }

@@ -1,6 +1,7 @@
 //! Client vertex arrays (GL 1.5 §2.8): the pointers a program sets with glVertexPointer,
 //! glNormalPointer, glColorPointer, glTexCoordPointer (per client-active unit) and
-//! glEdgeFlagPointer (GLboolean elements, one per vertex: 0 is FALSE), their
+//! glEdgeFlagPointer (GLboolean elements, one per vertex: 0 is FALSE),
+//! glSecondaryColorPointer and glFogCoordPointer (GL 1.4), their
 //! enables, and the draws that read them (glDrawArrays, glDrawElements,
 //! glDrawRangeElements, glMultiDrawArrays, glMultiDrawElements, glArrayElement,
 //! glInterleavedArrays). This is client state: it
@@ -24,6 +25,7 @@ use super::args::Args;
 use super::buffers::{Bindings, Buffers};
 use super::geometry::{Geometry, Primitive};
 use super::glenum::Family;
+use super::immediate::Attr;
 use super::state::MAX_TEXTURE_UNITS;
 
 /// Where an array's elements are.
@@ -234,6 +236,18 @@ pub fn type_token(t: CType) -> &'static str {
         .map_or("GL_FLOAT", |(n, _)| n)
 }
 
+/// The element types of colour arrays (glColorPointer, glSecondaryColorPointer).
+const COLOR_TYPES: [CType; 8] = [
+    CType::Byte,
+    CType::UByte,
+    CType::Short,
+    CType::UShort,
+    CType::Int,
+    CType::UInt,
+    CType::Float,
+    CType::Double,
+];
+
 const TYPE_NAMES: [(&str, CType); 8] = [
     ("GL_BYTE", CType::Byte),
     ("GL_UNSIGNED_BYTE", CType::UByte),
@@ -254,6 +268,10 @@ pub struct ClientArrays {
     pub texcoord: [ArrayPointer; MAX_TEXTURE_UNITS],
     /// glEdgeFlagPointer: size 1, type GLboolean (UNSIGNED_BYTE).
     pub edge_flag: ArrayPointer,
+    /// glSecondaryColorPointer: size 3 or 4 (GL default 3; only RGB is drawn).
+    pub secondary_color: ArrayPointer,
+    /// glFogCoordPointer: size 1, FLOAT or DOUBLE.
+    pub fog_coord: ArrayPointer,
     /// glClientActiveTexture: the unit glTexCoordPointer and the TEXTURE_COORD_ARRAY
     /// enable address. GL default: 0.
     pub client_active: u8,
@@ -270,6 +288,8 @@ impl Default for ClientArrays {
                 ty: CType::UByte,
                 ..ArrayPointer::new(1)
             },
+            secondary_color: ArrayPointer::new(3),
+            fog_coord: ArrayPointer::new(1),
             client_active: 0,
         }
     }
@@ -282,7 +302,45 @@ pub struct Element {
     pub normal: Option<Vec3>,
     pub texcoords: [Option<Vec4>; MAX_TEXTURE_UNITS],
     pub edge_flag: Option<bool>,
+    pub secondary_color: Option<Vec4>,
+    pub fog_coord: Option<f32>,
     pub position: Option<Vec4>,
+}
+
+impl Element {
+    /// The element's attribute values (all but the position), as the immediate-mode calls
+    /// that set them.
+    pub fn attributes(&self) -> impl Iterator<Item = Attr> + '_ {
+        let units = self
+            .texcoords
+            .iter()
+            .enumerate()
+            .filter_map(|(u, t)| Some(Attr::TexCoord(u8::try_from(u).ok()?, (*t)?)));
+        self.normal
+            .map(Attr::Normal)
+            .into_iter()
+            .chain(self.color.map(Attr::Color))
+            .chain(self.secondary_color.map(Attr::SecondaryColor))
+            .chain(self.fog_coord.map(Attr::FogCoord))
+            .chain(units)
+            .chain(self.edge_flag.map(Attr::EdgeFlag))
+    }
+
+    /// The values of element 0 of `g` (a one-vertex geometry).
+    fn of(g: &Geometry) -> Element {
+        let mut e = Element {
+            color: Geometry::last(&g.colors),
+            normal: Geometry::last(&g.normals),
+            edge_flag: Geometry::last(&g.edge_flags),
+            secondary_color: Geometry::last(&g.secondary_colors),
+            fog_coord: Geometry::last(&g.fog_coords),
+            ..Element::default()
+        };
+        for (u, t) in g.texcoords.iter().enumerate() {
+            e.texcoords[u] = Geometry::last(t);
+        }
+        e
+    }
 }
 
 /// What a client call did.
@@ -310,6 +368,10 @@ impl ClientArrays {
                 | Entry::ColorPointer
                 | Entry::TexCoordPointer
                 | Entry::EdgeFlagPointer
+                | Entry::SecondaryColorPointer
+                | Entry::SecondaryColorPointerEXT
+                | Entry::FogCoordPointer
+                | Entry::FogCoordPointerEXT
                 | Entry::ClientActiveTexture
                 | Entry::ClientActiveTextureARB
                 | Entry::EnableClientState
@@ -369,22 +431,7 @@ impl ClientArrays {
                 };
             }
             Entry::ColorPointer => {
-                let p = self.pointer(
-                    c,
-                    0,
-                    &[3, 4],
-                    &[
-                        CType::Byte,
-                        CType::UByte,
-                        CType::Short,
-                        CType::UShort,
-                        CType::Int,
-                        CType::UInt,
-                        CType::Float,
-                        CType::Double,
-                    ],
-                    bound,
-                )?;
+                let p = self.pointer(c, 0, &[3, 4], &COLOR_TYPES, bound)?;
                 self.color = ArrayPointer {
                     enabled: self.color.enabled,
                     ..p
@@ -414,6 +461,25 @@ impl ClientArrays {
                     data: Buffers::source(c, 1, bound.array)?,
                 };
             }
+            // Sizes 3 and 4, the colour types (Mesa 22.3 measured, tests/c/secondary.c).
+            Entry::SecondaryColorPointer | Entry::SecondaryColorPointerEXT => {
+                let p = self.pointer(c, 0, &[3, 4], &COLOR_TYPES, bound)?;
+                self.secondary_color = ArrayPointer {
+                    enabled: self.secondary_color.enabled,
+                    ..p
+                };
+            }
+            Entry::FogCoordPointer | Entry::FogCoordPointerEXT => {
+                let ty = self.array_type(c, 0, &[CType::Float, CType::Double])?;
+                let stride = stride(c, 1)?;
+                self.fog_coord = ArrayPointer {
+                    enabled: self.fog_coord.enabled,
+                    size: 1,
+                    ty,
+                    stride,
+                    data: Buffers::source(c, 2, bound.array)?,
+                };
+            }
             Entry::ClientActiveTexture | Entry::ClientActiveTextureARB => {
                 let unit = c.family(0, Family::Texture)?;
                 if usize::from(unit) >= MAX_TEXTURE_UNITS {
@@ -432,6 +498,8 @@ impl ClientArrays {
                         "GL_TEXTURE_COORD_ARRAY",
                         "GL_INDEX_ARRAY",
                         "GL_EDGE_FLAG_ARRAY",
+                        "GL_SECONDARY_COLOR_ARRAY",
+                        "GL_FOG_COORD_ARRAY",
                     ],
                 )?;
                 match array {
@@ -442,6 +510,8 @@ impl ClientArrays {
                         self.texcoord[usize::from(self.client_active)].enabled = on
                     }
                     "GL_EDGE_FLAG_ARRAY" => self.edge_flag.enabled = on,
+                    "GL_SECONDARY_COLOR_ARRAY" => self.secondary_color.enabled = on,
+                    "GL_FOG_COORD_ARRAY" => self.fog_coord.enabled = on,
                     // The colour-index array: accepted, never read (RGBA mode).
                     _ => {}
                 }
@@ -575,14 +645,21 @@ impl ClientArrays {
 
     /// The buffers the arrays point into.
     pub fn buffer_names(&self) -> Vec<u32> {
-        [&self.vertex, &self.normal, &self.color, &self.edge_flag]
-            .into_iter()
-            .chain(self.texcoord.iter())
-            .filter_map(|a| match a.data {
-                ArrayData::Buffer { name, .. } => Some(name),
-                _ => None,
-            })
-            .collect()
+        [
+            &self.vertex,
+            &self.normal,
+            &self.color,
+            &self.edge_flag,
+            &self.secondary_color,
+            &self.fog_coord,
+        ]
+        .into_iter()
+        .chain(self.texcoord.iter())
+        .filter_map(|a| match a.data {
+            ArrayData::Buffer { name, .. } => Some(name),
+            _ => None,
+        })
+        .collect()
     }
 
     fn pointers_mut(&mut self) -> impl Iterator<Item = &mut ArrayPointer> {
@@ -591,6 +668,8 @@ impl ClientArrays {
             &mut self.normal,
             &mut self.color,
             &mut self.edge_flag,
+            &mut self.secondary_color,
+            &mut self.fog_coord,
         ]
         .into_iter()
         .chain(self.texcoord.iter_mut())
@@ -632,6 +711,21 @@ impl ClientArrays {
                 .components(mem, which, XYZW, normalized, Vec4::from_array);
             g.colors = Some(c);
         }
+        if self.secondary_color.enabled {
+            let ty = self.secondary_color.ty;
+            let normalized = |x| ty.normalized(x);
+            g.secondary_colors = Some(self.secondary_color.components(
+                mem,
+                which,
+                XYZW,
+                normalized,
+                Vec4::from_array,
+            ));
+        }
+        if self.fog_coord.enabled {
+            let first = |v: [f32; 4]| v[0];
+            g.fog_coords = Some(self.fog_coord.components(mem, which, XYZW, float, first));
+        }
         for (unit, t) in self.texcoord.iter().enumerate() {
             if t.enabled {
                 g.texcoords[unit] = Some(t.components(mem, which, XYZW, float, Vec4::from_array));
@@ -660,27 +754,15 @@ impl ClientArrays {
 
     /// glArrayElement(i): the values of element i of every enabled array.
     fn element(&self, i: usize, mem: &dyn ClientMemory) -> Element {
-        let mut e = Element::default();
         let Some(mut g) = self.geometry(Primitive::Points, &[i], None, mem) else {
             // Without a vertex array the other arrays still set their current values.
             let mut with_vertex = self.clone();
             with_vertex.vertex.enabled = true;
-            if let Some(g) = with_vertex.geometry(Primitive::Points, &[i], None, mem) {
-                e.color = Geometry::last(&g.colors);
-                e.normal = Geometry::last(&g.normals);
-                e.edge_flag = Geometry::last(&g.edge_flags);
-                for (u, t) in g.texcoords.iter().enumerate() {
-                    e.texcoords[u] = Geometry::last(t);
-                }
-            }
-            return e;
+            return with_vertex
+                .geometry(Primitive::Points, &[i], None, mem)
+                .map_or_else(Element::default, |g| Element::of(&g));
         };
-        e.color = Geometry::last(&g.colors);
-        e.normal = Geometry::last(&g.normals);
-        e.edge_flag = Geometry::last(&g.edge_flags);
-        for (u, t) in g.texcoords.iter().enumerate() {
-            e.texcoords[u] = Geometry::last(t);
-        }
+        let mut e = Element::of(&g);
         e.position = g.positions.pop();
         e
     }

@@ -230,6 +230,11 @@ pub enum Command {
     Normal(Vec3),
     /// glEdgeFlag(flag).
     EdgeFlag(bool),
+    /// glSecondaryColor3f(r, g, b) (GL 1.4 §2.7); the alpha is what the current value
+    /// keeps (see `CurrentValues::secondary_color`).
+    SecondaryColor(Vec4),
+    /// glFogCoordf(coord) (GL 1.4 §2.7).
+    FogCoord(f32),
     /// glMultiTexCoord4f(TEXTURE0 + unit, s, t, r, q).
     TexCoord {
         unit: u8,

@@ -6,6 +6,9 @@
 //! what FOG_COORDINATE_SOURCE = FRAGMENT_DEPTH (the default) gives on Mesa: |z_eye| of each
 //! vertex (`ffvertex_prog.c`, FDM_EYE_PLANE_ABS), interpolated, with f computed per fragment
 //! — not the radial distance the spec also allows (measured, `tests/fidelity_fog.rs`).
+//! Under FOG_COORD_SRC = FOG_COORD (GL 1.4) z is each vertex's fog coordinate instead, and
+//! Mesa takes its magnitude too: a coordinate of −5 fogs as 5 (measured,
+//! `tests/c/secondary.c`).
 
 use glam::Vec4;
 
@@ -22,6 +25,16 @@ pub enum FogMode {
     Exp2,
 }
 
+/// FOG_COORD_SRC (GL 1.4 §3.10; GL 1.4's FOG_COORDINATE_SOURCE). GL default:
+/// FRAGMENT_DEPTH.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FogCoordSource {
+    /// z = |z_eye| of each vertex.
+    FragmentDepth,
+    /// z = |c| of each vertex's fog coordinate c (glFogCoord, FOG_COORD_ARRAY).
+    FogCoord,
+}
+
 /// One glFog parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum FogParam {
@@ -34,6 +47,7 @@ pub enum FogParam {
     Color(Vec4),
     /// FOG_INDEX: colour-index mode only; accepted and ignored in RGBA.
     Index(f32),
+    CoordSource(FogCoordSource),
 }
 
 /// The fog parameters (the enable is FOG, a [`Toggle`](super::Toggle) around this).
@@ -49,6 +63,8 @@ pub struct Fog {
     pub end: f32,
     /// GL default: (0, 0, 0, 0); clamped to [0, 1] when set.
     pub color: Vec4,
+    /// GL default: FRAGMENT_DEPTH.
+    pub coord_source: FogCoordSource,
 }
 
 impl Fog {
@@ -58,6 +74,7 @@ impl Fog {
         start: 0.0,
         end: 1.0,
         color: Vec4::ZERO,
+        coord_source: FogCoordSource::FragmentDepth,
     };
 
     /// glFog: a negative density is INVALID_VALUE (GL 1.5 §3.10) and changes nothing.
@@ -75,6 +92,7 @@ impl Fog {
             FogParam::End(e) => self.end = e,
             FogParam::Color(c) => self.color = c.clamp(Vec4::ZERO, Vec4::ONE),
             FogParam::Index(_) => {}
+            FogParam::CoordSource(s) => self.coord_source = s,
         }
         Ok(())
     }

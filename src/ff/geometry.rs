@@ -38,6 +38,11 @@ pub struct Geometry {
     /// marks the edge starting at the vertex as no boundary edge (GL 1.5 §2.6.2); only
     /// TRIANGLES, QUADS and POLYGON in LINE or POINT polygon mode read them.
     pub edge_flags: Option<Vec<bool>>,
+    /// Secondary colours (GL 1.4 §2.7): added to the primary after texturing under
+    /// COLOR_SUM with lighting off.
+    pub secondary_colors: Option<Vec<Vec4>>,
+    /// Fog coordinates (GL 1.4 §2.7): the fog distance under FOG_COORD_SRC = FOG_COORD.
+    pub fog_coords: Option<Vec<f32>>,
     /// Indices into the arrays; `None` draws them in order.
     pub indices: Option<Vec<u32>>,
 }
@@ -65,6 +70,8 @@ impl Geometry {
         let ok = same(self.normals.as_ref().map(Vec::len))
             && same(self.colors.as_ref().map(Vec::len))
             && same(self.edge_flags.as_ref().map(Vec::len))
+            && same(self.secondary_colors.as_ref().map(Vec::len))
+            && same(self.fog_coords.as_ref().map(Vec::len))
             && self
                 .texcoords
                 .iter()

@@ -255,6 +255,12 @@ gl_enums!(FogMode {
     EXP2 => FogMode::Exp2,
 });
 
+gl_enums!(FogCoordSource {
+    FRAGMENT_DEPTH => FogCoordSource::FragmentDepth,
+    FOG_COORD => FogCoordSource::FogCoord,
+    FOG_COORDINATE => FogCoordSource::FogCoord,
+});
+
 gl_enums!(CompareFunc {
     NEVER => CompareFunc::Never,
     LESS => CompareFunc::Less,

@@ -38,20 +38,25 @@ struct Open {
     begin: CurrentValues,
     /// The current values as the calls inside the pair have set them.
     current: CurrentValues,
-    /// Attributes called inside the pair (colour, normal, texcoord per unit, edge flag):
-    /// each gets an array at the next vertex, so a value set after the last vertex only
-    /// stays current.
-    called: [bool; CALLED],
+    /// Attributes called inside the pair, by [`Attr::set`]'s slot: each gets an array at
+    /// the next vertex, so a value set after the last vertex only stays current.
+    called: [bool; SLOTS],
     /// Some attribute was called whose array the next vertex creates.
     pending: bool,
     /// Some texture unit has an array (the vertex loop over the units is skipped if not).
     texcoord_arrays: bool,
 }
 
-/// The attributes a pair tracks: colour, normal, one texture coordinate per unit, and the
-/// edge flag (at [`EDGE_FLAG`]).
-const CALLED: usize = 3 + MAX_TEXTURE_UNITS;
-const EDGE_FLAG: usize = 2 + MAX_TEXTURE_UNITS;
+/// The attributes a pair tracks, each at its slot: colour (0), normal (1), one texture
+/// coordinate per unit (from [`TEXCOORD0`]), the edge flag, the secondary colour and the
+/// fog coordinate.
+pub const SLOTS: usize = 5 + MAX_TEXTURE_UNITS;
+const COLOR: usize = 0;
+const NORMAL: usize = 1;
+const TEXCOORD0: usize = 2;
+const EDGE_FLAG: usize = TEXCOORD0 + MAX_TEXTURE_UNITS;
+const SECONDARY_COLOR: usize = EDGE_FLAG + 1;
+const FOG_COORD: usize = EDGE_FLAG + 2;
 
 /// The most vertices a pair's arrays are sized for ahead of its calls.
 const MAX_RESERVED_VERTICES: usize = 1 << 16;
@@ -64,6 +69,45 @@ pub enum Attr {
     TexCoord(u8, Vec4),
     /// glEdgeFlag (GL 1.5 §2.6.2).
     EdgeFlag(bool),
+    /// glSecondaryColor (GL 1.4 §2.7).
+    SecondaryColor(Vec4),
+    /// glFogCoord (GL 1.4 §2.7).
+    FogCoord(f32),
+}
+
+impl Attr {
+    /// Makes this the current value in `current`; its slot among the [`SLOTS`], or `None`
+    /// for a texture unit beyond MAX_TEXTURE_UNITS (nothing set).
+    #[inline]
+    pub fn set(self, current: &mut CurrentValues) -> Option<usize> {
+        Some(match self {
+            Attr::Color(v) => {
+                current.color = v;
+                COLOR
+            }
+            Attr::Normal(v) => {
+                current.normal = v;
+                NORMAL
+            }
+            Attr::TexCoord(unit, coord) => {
+                let u = usize::from(unit);
+                *current.texcoords.get_mut(u)? = coord;
+                TEXCOORD0 + u
+            }
+            Attr::EdgeFlag(f) => {
+                current.edge_flag = f;
+                EDGE_FLAG
+            }
+            Attr::SecondaryColor(v) => {
+                current.secondary_color = v;
+                SECONDARY_COLOR
+            }
+            Attr::FogCoord(f) => {
+                current.fog_coord = f;
+                FOG_COORD
+            }
+        })
+    }
 }
 
 /// One immediate-mode call with its values read: what a display list keeps of it.
@@ -115,7 +159,7 @@ pub fn decode<A: Args>(c: &A) -> Result<Option<Op>, A::Error> {
 }
 
 /// One call of the vertex-attribute families (glVertex, glColor, glNormal, glTexCoord,
-/// glMultiTexCoord, glRect) in any of its variants: the values are converted to the
+/// glMultiTexCoord, glRect, glSecondaryColor, glFogCoord) in any of its variants: the values are converted to the
 /// parameter type as C does, then colours and normals of integer types are normalised
 /// (GL 1.5 Table 2.9); missing components take GL's defaults (z = 0, w = 1, q = 1,
 /// alpha = 1).
@@ -144,10 +188,16 @@ pub fn family_op(form: AttribCall, v: &[f64], unit: u8) -> Op {
 pub const DEFAULT_COMPONENTS: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
 
 /// One value of a family call as the attribute holds it: integer colours and normals
-/// normalised (GL 1.5 Table 2.9), everything else as the float it is.
+/// normalised (GL 1.5 Table 2.9; secondary colours as colours, GL 1.4 §2.7), everything
+/// else as the float it is.
 #[inline]
 pub fn component(form: AttribCall, x: f64) -> f32 {
-    if form.ty.is_integer() && matches!(form.attrib, Attrib::Color | Attrib::Normal) {
+    if form.ty.is_integer()
+        && matches!(
+            form.attrib,
+            Attrib::Color | Attrib::SecondaryColor | Attrib::Normal
+        )
+    {
         form.ty.normalized(x)
     } else {
         x as f32
@@ -165,6 +215,9 @@ fn op_of(attrib: Attrib, unit: u8, c: [f32; 4]) -> Op {
         Attrib::Normal => Op::Attribute(Attr::Normal(Vec3::new(c[0], c[1], c[2]))),
         Attrib::TexCoord => Op::Attribute(Attr::TexCoord(0, Vec4::from_array(c))),
         Attrib::MultiTexCoord => Op::Attribute(Attr::TexCoord(unit, Vec4::from_array(c))),
+        // Three components given; alpha is the default 1.
+        Attrib::SecondaryColor => Op::Attribute(Attr::SecondaryColor(Vec4::from_array(c))),
+        Attrib::FogCoord => Op::Attribute(Attr::FogCoord(c[0])),
     }
 }
 
@@ -257,19 +310,8 @@ impl Immediate {
     /// glArrayElement: the element's attributes, then its vertex, as the immediate calls
     /// would give them (GL 1.5 §2.8). Outside glBegin/glEnd only the attributes take effect.
     fn array_element(&mut self, e: &Element, out: &mut Vec<Command>) -> Result<(), Rule> {
-        if let Some(n) = e.normal {
-            self.attribute(Attr::Normal(n), out)?;
-        }
-        if let Some(color) = e.color {
-            self.attribute(Attr::Color(color), out)?;
-        }
-        for (unit, t) in e.texcoords.iter().enumerate() {
-            if let Some(t) = t {
-                self.attribute(Attr::TexCoord(unit as u8, *t), out)?;
-            }
-        }
-        if let Some(f) = e.edge_flag {
-            self.attribute(Attr::EdgeFlag(f), out)?;
+        for a in e.attributes() {
+            self.attribute(a, out)?;
         }
         match (e.position, self.open.is_some()) {
             (Some(p), true) => self.vertex(p),
@@ -285,7 +327,7 @@ impl Immediate {
             geometry: Geometry::new(primitive, Vec::with_capacity(self.last_vertices)),
             begin: *current,
             current: *current,
-            called: [false; CALLED],
+            called: [false; SLOTS],
             pending: false,
             texcoord_arrays: false,
         });
@@ -308,6 +350,8 @@ impl Immediate {
                 Attr::Normal(v) => Command::Normal(v),
                 Attr::TexCoord(unit, coord) => Command::TexCoord { unit, coord },
                 Attr::EdgeFlag(f) => Command::EdgeFlag(f),
+                Attr::SecondaryColor(v) => Command::SecondaryColor(v),
+                Attr::FogCoord(f) => Command::FogCoord(f),
             });
             return Ok(());
         };
@@ -338,6 +382,12 @@ pub fn changed_current(begin: &CurrentValues, now: &CurrentValues, out: &mut Vec
     if begin.edge_flag != now.edge_flag {
         out.push(Command::EdgeFlag(now.edge_flag));
     }
+    if begin.secondary_color != now.secondary_color {
+        out.push(Command::SecondaryColor(now.secondary_color));
+    }
+    if begin.fog_coord.to_bits() != now.fog_coord.to_bits() {
+        out.push(Command::FogCoord(now.fog_coord));
+    }
     for u in 0..MAX_TEXTURE_UNITS {
         if begin.texcoords[u] != now.texcoords[u] {
             out.push(Command::TexCoord {
@@ -366,6 +416,12 @@ impl Open {
         if let Some(v) = &mut g.edge_flags {
             v.push(cur.edge_flag);
         }
+        if let Some(v) = &mut g.secondary_colors {
+            v.push(cur.secondary_color);
+        }
+        if let Some(v) = &mut g.fog_coords {
+            v.push(cur.fog_coord);
+        }
         if self.texcoord_arrays {
             for (u, t) in g.texcoords.iter_mut().enumerate() {
                 if let Some(v) = t {
@@ -378,28 +434,9 @@ impl Open {
     /// An attribute inside the pair: the current value, and an array from the next vertex.
     #[inline]
     fn attribute(&mut self, attr: Attr) -> Result<(), Rule> {
-        let index = match attr {
-            Attr::Color(v) => {
-                self.current.color = v;
-                0
-            }
-            Attr::Normal(v) => {
-                self.current.normal = v;
-                1
-            }
-            Attr::TexCoord(unit, coord) => {
-                let u = usize::from(unit);
-                if u >= MAX_TEXTURE_UNITS {
-                    return Err("texture unit beyond MAX_TEXTURE_UNITS");
-                }
-                self.current.texcoords[u] = coord;
-                2 + u
-            }
-            Attr::EdgeFlag(f) => {
-                self.current.edge_flag = f;
-                EDGE_FLAG
-            }
-        };
+        let index = attr
+            .set(&mut self.current)
+            .ok_or("texture unit beyond MAX_TEXTURE_UNITS")?;
         if !self.called[index] {
             self.called[index] = true;
             self.pending = true;
@@ -411,7 +448,7 @@ impl Open {
     /// values for the vertices already emitted.
     fn arrays_for_called(&mut self) {
         self.pending = false;
-        self.texcoord_arrays |= self.called[2..EDGE_FLAG].iter().any(|c| *c);
+        self.texcoord_arrays |= self.called[TEXCOORD0..EDGE_FLAG].iter().any(|c| *c);
         let n = self.geometry.positions.len();
         let g = &mut self.geometry;
         // Each new array is sized like the positions will be.
@@ -420,16 +457,24 @@ impl Open {
             v.resize(n, value);
             v
         };
-        if self.called[0] && g.colors.is_none() {
+        if self.called[COLOR] && g.colors.is_none() {
             g.colors = Some(filled(self.begin.color));
         }
-        if self.called[1] && g.normals.is_none() {
+        if self.called[SECONDARY_COLOR] && g.secondary_colors.is_none() {
+            g.secondary_colors = Some(filled(self.begin.secondary_color));
+        }
+        if self.called[FOG_COORD] && g.fog_coords.is_none() {
+            let mut v = Vec::with_capacity(g.positions.capacity());
+            v.resize(n, self.begin.fog_coord);
+            g.fog_coords = Some(v);
+        }
+        if self.called[NORMAL] && g.normals.is_none() {
             let mut v = Vec::with_capacity(g.positions.capacity());
             v.resize(n, self.begin.normal);
             g.normals = Some(v);
         }
         for (u, t) in g.texcoords.iter_mut().enumerate() {
-            if self.called[2 + u] && t.is_none() {
+            if self.called[TEXCOORD0 + u] && t.is_none() {
                 *t = Some(filled(self.begin.texcoords[u]));
             }
         }

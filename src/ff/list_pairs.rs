@@ -15,23 +15,17 @@ use std::sync::Arc;
 
 use super::command::Command;
 use super::geometry::Geometry;
-use super::immediate::{Attr, Immediate, Op};
+use super::immediate::{Attr, Immediate, Op, SLOTS};
 use super::lists::Item;
-use super::state::{CurrentValues, MAX_TEXTURE_UNITS};
-
-/// Attributes a pair can call: colour, normal, one texture coordinate per unit, the edge
-/// flag (at [`EDGE_FLAG`]).
-const ATTRIBUTES: usize = 3 + MAX_TEXTURE_UNITS;
-const EDGE_FLAG: usize = 2 + MAX_TEXTURE_UNITS;
+use super::state::CurrentValues;
 
 /// One assembled glBegin … glEnd.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pair {
     /// What the pair draws, whatever is current when the list runs.
     pub geometry: Arc<Geometry>,
-    /// The attributes the pair calls, and the values it leaves them at.
-    called: [bool; ATTRIBUTES],
-    left: CurrentValues,
+    /// The attributes the pair calls, each at the value it leaves it (one per slot).
+    left: Vec<Attr>,
     /// The pair's calls, glBegin to glEnd.
     pub items: Vec<Item>,
 }
@@ -42,19 +36,8 @@ impl Pair {
     pub fn replay(&self, current: &CurrentValues, out: &mut Vec<Command>) {
         out.push(Command::Draw(Arc::clone(&self.geometry)));
         let mut now = *current;
-        if self.called[0] {
-            now.color = self.left.color;
-        }
-        if self.called[1] {
-            now.normal = self.left.normal;
-        }
-        for u in 0..MAX_TEXTURE_UNITS {
-            if self.called[2 + u] {
-                now.texcoords[u] = self.left.texcoords[u];
-            }
-        }
-        if self.called[EDGE_FLAG] {
-            now.edge_flag = self.left.edge_flag;
+        for a in &self.left {
+            a.set(&mut now);
         }
         super::immediate::changed_current(current, &now, out);
     }
@@ -105,33 +88,16 @@ fn assemble_pair(items: Vec<Item>) -> Option<Pair> {
             _ => None,
         })
         .collect::<Option<_>>()?;
-    let mut called = [false; ATTRIBUTES];
-    let mut left = CurrentValues::DEFAULT;
+    // The last value of each slot called.
+    let mut left: [Option<Attr>; SLOTS] = [None; SLOTS];
     let mut vertices = 0usize;
     let mut set = |attr: Attr, vertices: usize| -> Option<()> {
-        let index = match attr {
-            Attr::Color(v) => {
-                left.color = v;
-                0
-            }
-            Attr::Normal(v) => {
-                left.normal = v;
-                1
-            }
-            Attr::TexCoord(unit, v) => {
-                let u = usize::from(unit);
-                *left.texcoords.get_mut(u)? = v;
-                2 + u
-            }
-            Attr::EdgeFlag(f) => {
-                left.edge_flag = f;
-                EDGE_FLAG
-            }
-        };
-        if !called[index] && vertices > 0 {
+        let mut scratch = CurrentValues::DEFAULT;
+        let index = attr.set(&mut scratch)?;
+        if left[index].is_none() && vertices > 0 {
             return None;
         }
-        called[index] = true;
+        left[index] = Some(attr);
         Some(())
     };
     for op in &ops {
@@ -140,19 +106,8 @@ fn assemble_pair(items: Vec<Item>) -> Option<Pair> {
             Op::Vertex(_) => vertices += 1,
             Op::Attribute(a) => set(*a, vertices)?,
             Op::Element(e) => {
-                if let Some(n) = e.normal {
-                    set(Attr::Normal(n), vertices)?;
-                }
-                if let Some(c) = e.color {
-                    set(Attr::Color(c), vertices)?;
-                }
-                for (unit, t) in e.texcoords.iter().enumerate() {
-                    if let Some(t) = t {
-                        set(Attr::TexCoord(u8::try_from(unit).ok()?, *t), vertices)?;
-                    }
-                }
-                if let Some(f) = e.edge_flag {
-                    set(Attr::EdgeFlag(f), vertices)?;
+                for a in e.attributes() {
+                    set(a, vertices)?;
                 }
                 if e.position.is_some() {
                     vertices += 1;
@@ -175,8 +130,7 @@ fn assemble_pair(items: Vec<Item>) -> Option<Pair> {
     };
     Some(Pair {
         geometry,
-        called,
-        left,
+        left: left.into_iter().flatten().collect(),
         items,
     })
 }

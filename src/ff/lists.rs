@@ -160,6 +160,8 @@ pub fn follow(current: &mut CurrentValues, cmd: &Command) {
         Command::Color(c) => current.color = *c,
         Command::Normal(n) => current.normal = *n,
         Command::EdgeFlag(f) => current.edge_flag = *f,
+        Command::SecondaryColor(c) => current.secondary_color = *c,
+        Command::FogCoord(x) => current.fog_coord = *x,
         Command::TexCoord { unit, coord } => {
             if let Some(t) = current.texcoords.get_mut(usize::from(*unit)) {
                 *t = *coord;

@@ -80,7 +80,7 @@ pub use combiners::{
 };
 pub use command::{Capability, Command, CopyTexImage, ReadPixels, TexData, TexImage, TexSubImage};
 pub use error::{GlError, GlErrorKind, GlResult};
-pub use fog::{Fog, FogMode, FogParam};
+pub use fog::{Fog, FogCoordSource, FogMode, FogParam};
 pub use fragment::{
     AlphaTest, Blend, BlendEquation, BlendFactor, ClearMask, ClearValues, ColorMask, CompareFunc,
     DepthRange, DepthTest, Face, FrontFace, HintMode, HintTarget, Hints, LogicOp, OffsetEnables,

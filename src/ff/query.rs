@@ -258,6 +258,8 @@ pnames! {
     CURRENT_COLOR => |s| normalized(&s.current.color.to_array()),
     CURRENT_NORMAL => |s| normalized(&s.current.normal.to_array()),
     EDGE_FLAG => |s| boolean(s.current.edge_flag),
+    CURRENT_SECONDARY_COLOR => |s| normalized(&s.current.secondary_color.to_array()),
+    CURRENT_FOG_COORD => |s| floats(&[s.current.fog_coord]),
     CURRENT_TEXTURE_COORDS => |s| floats(&s.current.texcoords[s.active_unit()].to_array()),
 
     // The raster position (Table 6.5, `raster`): the active unit's texture coordinates.
@@ -410,6 +412,7 @@ pnames! {
     FOG_END => |s| floats(&[s.fog.value.end]),
     FOG_COLOR => |s| normalized(&s.fog.value.color.to_array()),
     FOG_INDEX => |_| floats(&[0.0]),
+    FOG_COORD_SRC => |s| enm(s.fog.value.coord_source),
 
     // Scissor (Table 6.16): the box as set; before any glScissor, the whole target, which
     // the front end that knows the window sets at its first make-current.

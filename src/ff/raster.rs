@@ -9,9 +9,11 @@
 //! - An invalid position keeps the other raster values as they were (GL leaves them
 //!   undefined); only VALID becomes FALSE.
 //! - The fourth window coordinate is the clip w; the distance is the Euclidean eye-space
-//!   distance √(x_e² + y_e² + z_e²) (FOG_COORDINATE_SOURCE is FRAGMENT_DEPTH in the model).
+//!   distance √(x_e² + y_e² + z_e²) under FOG_COORD_SRC = FRAGMENT_DEPTH, and the current
+//!   fog coordinate as given (a negative one stays negative) under FOG_COORD, for
+//!   glRasterPos and glWindowPos alike (measured, `tests/c/secondary.c`).
 //! - glRasterPos's unlit colour is the current colour as given (unclamped); glWindowPos
-//!   clamps it to [0, 1], and sets the distance to 0 and w to 1.
+//!   clamps it to [0, 1], and sets the distance to 0 (under FRAGMENT_DEPTH) and w to 1.
 //! - SPHERE_MAP reflects the eye position in the *object* normal unless Mesa computes in
 //!   eye space (lighting on, or a texturing unit generating in eye space).
 
@@ -104,8 +106,17 @@ impl FixedState {
             valid: true,
             color,
             texcoords,
-            distance: eye.truncate().length(),
+            distance: self.raster_distance(eye.truncate().length()),
         };
+    }
+
+    /// CURRENT_RASTER_DISTANCE: `depth` (what FRAGMENT_DEPTH gives), or the current fog
+    /// coordinate under FOG_COORD_SRC = FOG_COORD.
+    fn raster_distance(&self, depth: f32) -> f32 {
+        match self.fog.value.coord_source {
+            super::fog::FogCoordSource::FragmentDepth => depth,
+            super::fog::FogCoordSource::FogCoord => self.current.fog_coord,
+        }
     }
 
     /// glWindowPos3f (GL 1.4 §2.13): x and y as given, z_w = n + z·(f − n) with z clamped
@@ -118,7 +129,7 @@ impl FixedState {
             valid: true,
             color: self.current.color.clamp(Vec4::ZERO, Vec4::ONE),
             texcoords: self.current.texcoords,
-            distance: 0.0,
+            distance: self.raster_distance(0.0),
         };
     }
 

@@ -58,6 +58,12 @@ pub struct CurrentValues {
     /// glEdgeFlag: whether an edge starting at a vertex is a boundary edge of its
     /// polygon (GL 1.5 §2.6.2). GL default: TRUE.
     pub edge_flag: bool,
+    /// glSecondaryColor (GL 1.4 §2.7), unclamped as given; alpha is 1 unless a size-4
+    /// SECONDARY_COLOR_ARRAY element set it (glArrayElement, as Mesa keeps it). GL
+    /// default: (0, 0, 0, 1).
+    pub secondary_color: Vec4,
+    /// glFogCoord (GL 1.4 §2.7), as given. GL default: 0.
+    pub fog_coord: f32,
 }
 
 impl CurrentValues {
@@ -66,6 +72,8 @@ impl CurrentValues {
         normal: Vec3::Z,
         texcoords: [Vec4::W; MAX_TEXTURE_UNITS],
         edge_flag: true,
+        secondary_color: Vec4::W,
+        fog_coord: 0.0,
     };
 }
 

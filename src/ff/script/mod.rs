@@ -97,6 +97,8 @@ fn closest(names: &[&str]) -> String {
 #[cfg(test)]
 mod every_row_tests;
 #[cfg(test)]
+mod secondary_tests;
+#[cfg(test)]
 mod tests;
 
 #[cfg(test)]

@@ -626,9 +626,20 @@ impl Args for Call<'_, '_> {
     }
 
     /// A GL token naming one of `pnames` (a parameter name).
+    /// One of `pnames`, or a name of the same value (an alias: GL_FOG_COORDINATE_SOURCE
+    /// for GL_FOG_COORD_SRC, an `_EXT` name), as the C front end compares values.
     fn pname(&self, i: usize, pnames: &[&'static str]) -> Res<&'static str> {
         self.name(i)
-            .and_then(|(n, off)| pnames.iter().find(|p| **p == n && off == 0).copied())
+            .filter(|(_, off)| *off == 0)
+            .and_then(|(n, _)| {
+                let value = crate::ff::glenum::value_of(n);
+                pnames
+                    .iter()
+                    .find(|p| {
+                        **p == n || (value.is_some() && crate::ff::glenum::value_of(p) == value)
+                    })
+                    .copied()
+            })
             .ok_or_else(|| self.unknown(i, pnames.to_vec()))
     }
 

@@ -193,6 +193,15 @@ fn call(c: &Command) -> String {
         Command::Color(c) => format!("{}({})", Entry::Color4f, fs(&c.to_array())),
         Command::Normal(v) => format!("{}({})", Entry::Normal3f, fs(&v.to_array())),
         Command::EdgeFlag(on) => format!("{}({})", Entry::EdgeFlag, b(*on)),
+        // glSecondaryColor has no alpha: a size-4 array element's alpha is not printed.
+        Command::SecondaryColor(c) => {
+            format!(
+                "{}({})",
+                Entry::SecondaryColor3f,
+                fs(&c.truncate().to_array())
+            )
+        }
+        Command::FogCoord(x) => format!("{}({})", Entry::FogCoordf, f(*x)),
         Command::TexCoord { unit, coord } => format!(
             "{}({}, {})",
             Entry::MultiTexCoord4f,
@@ -656,6 +665,7 @@ fn point_parameter(p: &PointParam) -> String {
 fn fog(p: &FogParam) -> String {
     let (pname, v) = match p {
         FogParam::Mode(m) => return format!("{}(GL_FOG_MODE, {})", Entry::Fogi, n(*m)),
+        FogParam::CoordSource(s) => return format!("{}(GL_FOG_COORD_SRC, {})", Entry::Fogi, n(*s)),
         FogParam::Color(c) => return format!("{}(GL_FOG_COLOR, {})", Entry::Fogfv, v4(*c)),
         FogParam::Density(v) => ("GL_FOG_DENSITY", v),
         FogParam::Start(v) => ("GL_FOG_START", v),
@@ -906,6 +916,8 @@ fn draw(out: &mut String, g: &Geometry) {
     if g.colors.is_some()
         || g.normals.is_some()
         || g.edge_flags.is_some()
+        || g.secondary_colors.is_some()
+        || g.fog_coords.is_some()
         || g.texcoords.iter().any(Option::is_some)
     {
         return draw_arrays(out, g, None);
@@ -1000,6 +1012,24 @@ fn draw_arrays(out: &mut String, g: &Geometry, indices: Option<&[u32]>) {
             ),
         );
         enabled.push("GL_EDGE_FLAG_ARRAY");
+    }
+    if let Some(c) = &g.secondary_colors {
+        line(
+            out,
+            format_args!(
+                "{}(4, GL_FLOAT, 0, {})",
+                Entry::SecondaryColorPointer,
+                arr(&flat4(c))
+            ),
+        );
+        enabled.push("GL_SECONDARY_COLOR_ARRAY");
+    }
+    if let Some(f) = &g.fog_coords {
+        line(
+            out,
+            format_args!("{}(GL_FLOAT, 0, {})", Entry::FogCoordPointer, arr(f)),
+        );
+        enabled.push("GL_FOG_COORD_ARRAY");
     }
     for name in &enabled {
         line(out, format_args!("{}({name})", Entry::EnableClientState));

@@ -240,6 +240,8 @@ fn sample_commands() -> Vec<Command> {
     g.normals = Some(vec![Vec3::Z; 3]);
     g.texcoords[0] = Some(vec![Vec4::W, Vec4::X, Vec4::Y]);
     g.texcoords[3] = Some(vec![Vec4::ZERO; 3]);
+    g.secondary_colors = Some(vec![Vec4::W, Vec4::new(0.5, 0.25, 0.0, 0.5), Vec4::ONE]);
+    g.fog_coords = Some(vec![0.0, -2.5, 1e3]);
     let input = CombinerInput {
         register: Register::Texture(1),
         mapping: Mapping::ExpandNormal,
@@ -290,6 +292,9 @@ fn sample_commands() -> Vec<Command> {
         Command::Enable(Capability::RegisterCombiners),
         Command::Color(Vec4::new(0.0, 0.25, 0.5, 0.75)),
         Command::Normal(Vec3::NEG_Z),
+        Command::SecondaryColor(Vec4::new(0.5, -1.0, 2.0, 1.0)),
+        Command::FogCoord(-3.25),
+        Command::Fog(FogParam::CoordSource(FogCoordSource::FogCoord)),
         Command::TexCoord {
             unit: 2,
             coord: Vec4::new(0.5, 0.5, 0.0, 1.0),

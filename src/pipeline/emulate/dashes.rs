@@ -1,20 +1,21 @@
 //! Drawing the dashes of a stippled line draw (`line_stipple`): each dash is one GL_LINES
 //! segment whose ends carry the draw's attributes interpolated at their parameter, the
-//! provoking vertex's values as the shade attributes (so a flat dash has its segment's
-//! colour, GL 1.5 Table 2.8), and the window coordinates the CPU computed. The dashes
+//! provoking vertex's position and normal as the shade attributes and, under flat shading,
+//! its colours in place of their own (so a flat dash has its segment's colour, GL 1.5
+//! Table 2.8), and the window coordinates the CPU computed. The dashes
 //! depend on the matrices and the viewport, so they are uploaded for one draw and deleted
 //! after it, unlike the cached geometry of `draw`.
 
 use glam::{Vec3, Vec4};
 use glow::HasContext;
 
-use super::draw::{set_current_values, SentAttribs};
+use super::draw::{set_current_values, Arrays, SentAttribs};
 use super::line_stipple::{Dash, DashEnd};
 use super::shadergen::{
-    ATTRIB_COLOR, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR, ATTRIB_SHADE_NORMAL,
-    ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0, ATTRIB_WINDOW,
+    ATTRIB_COLOR, ATTRIB_FOG_COORD, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SECONDARY,
+    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0, ATTRIB_WINDOW,
 };
-use crate::ff::{FixedState, Geometry, MAX_TEXTURE_UNITS};
+use crate::ff::{FixedState, Geometry, ShadeModel};
 use crate::pipeline::PipelineError;
 
 /// One attribute array's floats for the dash ends, and for their provoking vertices.
@@ -49,9 +50,10 @@ fn gather<const N: usize, T: Copy>(
     Some((own, shade))
 }
 
-/// The arrays of the dashes of `g`: position, normal, colour and texture coordinates that
-/// `g` has, each with its shade copy where flat shading reads one.
-fn arrays(g: &Geometry, dashes: &[Dash]) -> Option<Vec<(u32, Array)>> {
+/// The arrays of the dashes of `g`: position, normal, colours, fog coordinate and texture
+/// coordinates that `g` has, the position and normal with their shade copies, the colours
+/// the provoking vertex's under `flat` shading.
+fn arrays(g: &Geometry, dashes: &[Dash], flat: bool) -> Option<Vec<(u32, Array)>> {
     let mut out = Vec::new();
     let (own, shade) = gather(&g.positions, dashes, |v: Vec4| v.to_array())?;
     out.push((
@@ -73,16 +75,28 @@ fn arrays(g: &Geometry, dashes: &[Dash]) -> Option<Vec<(u32, Array)>> {
             },
         ));
     }
-    if let Some(c) = &g.colors {
-        let (own, shade) = gather(c, dashes, |v: Vec4| v.to_array())?;
-        out.push((
-            ATTRIB_COLOR,
-            Array {
+    for (values, location) in [
+        (&g.colors, ATTRIB_COLOR),
+        (&g.secondary_colors, ATTRIB_SECONDARY),
+    ] {
+        if let Some(c) = values {
+            let (own, shade) = gather(c, dashes, |v: Vec4| v.to_array())?;
+            let array = Array {
                 size: 4,
-                own,
-                shade: Some((ATTRIB_SHADE_COLOR, shade)),
-            },
-        ));
+                own: if flat { shade } else { own },
+                shade: None,
+            };
+            out.push((location, array));
+        }
+    }
+    if let Some(f) = &g.fog_coords {
+        let (own, _) = gather(f, dashes, |v: f32| [v])?;
+        let array = Array {
+            size: 1,
+            own,
+            shade: None,
+        };
+        out.push((ATTRIB_FOG_COORD, array));
     }
     for (u, t) in g.texcoords.iter().enumerate() {
         if let Some(t) = t {
@@ -122,7 +136,7 @@ pub fn draw(
     if dashes.is_empty() {
         return Ok(());
     }
-    let Some(arrays) = arrays(g, dashes) else {
+    let Some(arrays) = arrays(g, dashes, state.shade_model == ShadeModel::Flat) else {
         return Ok(());
     };
     let count = i32::try_from(dashes.len() * 2).unwrap_or(i32::MAX);
@@ -150,18 +164,7 @@ pub fn draw(
             }
         }
         if result.is_ok() {
-            let mut has_texcoords = [false; MAX_TEXTURE_UNITS];
-            for (u, t) in g.texcoords.iter().enumerate() {
-                has_texcoords[u] = t.is_some();
-            }
-            set_current_values(
-                gl,
-                sent,
-                state,
-                g.normals.is_some(),
-                g.colors.is_some(),
-                &has_texcoords,
-            );
+            set_current_values(gl, sent, state, Arrays::of(g));
             gl.draw_arrays(glow::LINES, 0, count);
         }
         gl.bind_vertex_array(None);

@@ -4,7 +4,9 @@
 //! Mesa's native path splits them (`assembly`, where the measurements are), uploaded as
 //! unshared triangle corners carrying the edge attribute of `polygon` (so LINE and POINT
 //! modes can drop what the split added) and their polygon's provoking vertex as the shade
-//! attributes (so a flat polygon has one colour, whichever triangle a fragment is in).
+//! attributes (so a flat polygon has one colour, whichever triangle a fragment is in). The
+//! colours of a split polygon are uploaded twice, each corner's own and its provoking
+//! vertex's, and each draw binds the pair its shade model reads.
 //! TRIANGLES whose edge-flag array has a FALSE are uploaded as corners too
 //! (`polygon::Outline`).
 //!
@@ -22,10 +24,10 @@ use glow::HasContext;
 use super::assembly::{self, Diagonal};
 use super::polygon::{split_corners, Corner, Outline};
 use super::shadergen::{
-    ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR,
-    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0, ATTRIB_WINDOW,
+    ATTRIB_COLOR, ATTRIB_COUNT, ATTRIB_EDGE, ATTRIB_FOG_COORD, ATTRIB_NORMAL, ATTRIB_POSITION,
+    ATTRIB_SECONDARY, ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0,
 };
-use crate::ff::{FixedState, Geometry, Primitive, MAX_TEXTURE_UNITS};
+use crate::ff::{FixedState, Geometry, Primitive, ShadeModel, MAX_TEXTURE_UNITS};
 use crate::pipeline::PipelineError;
 
 /// Triangle corners per quad.
@@ -36,9 +38,33 @@ pub struct GpuGeometry {
     vao: glow::VertexArray,
     buffers: Vec<glow::Buffer>,
     shape: Shape,
-    has_normals: bool,
-    has_colors: bool,
-    has_texcoords: [bool; MAX_TEXTURE_UNITS],
+    arrays: Arrays,
+    /// The colour arrays of a split polygon: (location, own values, provoking values).
+    colors: Vec<(u32, glow::Buffer, glow::Buffer)>,
+    /// Which of them are bound: the provoking values (after a flat draw) or the own.
+    bound_flat: std::cell::Cell<bool>,
+}
+
+/// Which attributes a geometry has arrays for; the others take the current values.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Arrays {
+    pub normals: bool,
+    pub colors: bool,
+    pub secondary_colors: bool,
+    pub fog_coords: bool,
+    pub texcoords: [bool; MAX_TEXTURE_UNITS],
+}
+
+impl Arrays {
+    pub fn of(g: &Geometry) -> Arrays {
+        Arrays {
+            normals: g.normals.is_some(),
+            colors: g.colors.is_some(),
+            secondary_colors: g.secondary_colors.is_some(),
+            fog_coords: g.fog_coords.is_some(),
+            texcoords: std::array::from_fn(|u| g.texcoords[u].is_some()),
+        }
+    }
 }
 
 /// How the uploaded vertices are drawn.
@@ -102,6 +128,13 @@ impl<'a> Floats<'a> {
     fn of4(v: &'a [Vec4]) -> Floats<'a> {
         Floats {
             size: 4,
+            data: bytemuck::cast_slice(v),
+        }
+    }
+
+    fn of1(v: &'a [f32]) -> Floats<'a> {
+        Floats {
+            size: 1,
             data: bytemuck::cast_slice(v),
         }
     }
@@ -189,14 +222,27 @@ impl GpuGeometry {
             if let Some(n) = &g.normals {
                 upload(Floats::of3(n), ATTRIB_NORMAL, Some(ATTRIB_SHADE_NORMAL))?;
             }
-            if let Some(c) = &g.colors {
-                upload(Floats::of4(c), ATTRIB_COLOR, Some(ATTRIB_SHADE_COLOR))?;
+            if let Some(f) = &g.fog_coords {
+                upload(Floats::of1(f), ATTRIB_FOG_COORD, None)?;
             }
-            let mut has_texcoords = [false; MAX_TEXTURE_UNITS];
             for (u, tc) in g.texcoords.iter().enumerate() {
                 if let Some(tc) = tc {
                     upload(Floats::of4(tc), ATTRIB_TEXCOORD0 + u as u32, None)?;
-                    has_texcoords[u] = true;
+                }
+            }
+            // Colours: the own values bound; a split polygon's provoking values kept for
+            // flat draws.
+            let mut colors = Vec::new();
+            for (values, location) in [
+                (&g.colors, ATTRIB_COLOR),
+                (&g.secondary_colors, ATTRIB_SECONDARY),
+            ] {
+                let Some(c) = values else { continue };
+                let a = Floats::of4(c);
+                let own = buffer(&a.bytes(order))?;
+                point(own, location, 4);
+                if let Some(p) = provoking {
+                    colors.push((location, own, buffer(&a.bytes(Some(p)))?));
                 }
             }
             if split {
@@ -234,9 +280,9 @@ impl GpuGeometry {
                 vao,
                 buffers,
                 shape,
-                has_normals: g.normals.is_some(),
-                has_colors: g.colors.is_some(),
-                has_texcoords,
+                arrays: Arrays::of(g),
+                colors,
+                bound_flat: std::cell::Cell::new(false),
             })
         }
     }
@@ -248,14 +294,16 @@ impl GpuGeometry {
         // buffers (counts come from the upload).
         unsafe {
             gl.bind_vertex_array(Some(self.vao));
-            set_current_values(
-                gl,
-                sent,
-                state,
-                self.has_normals,
-                self.has_colors,
-                &self.has_texcoords,
-            );
+            let flat = state.shade_model == ShadeModel::Flat;
+            if !self.colors.is_empty() && self.bound_flat.get() != flat {
+                for &(location, own, provoking) in &self.colors {
+                    let b = if flat { provoking } else { own };
+                    gl.bind_buffer(glow::ARRAY_BUFFER, Some(b));
+                    gl.vertex_attrib_pointer_f32(location, 4, glow::FLOAT, false, 0, 0);
+                }
+                self.bound_flat.set(flat);
+            }
+            set_current_values(gl, sent, state, self.arrays);
             match &self.shape {
                 Shape::Elements { mode, count } if *count > 0 => {
                     gl.draw_elements(*mode, *count, glow::UNSIGNED_INT, 0);
@@ -320,23 +368,25 @@ pub fn set_current_values(
     gl: &glow::Context,
     sent: &mut SentAttribs,
     state: &FixedState,
-    has_normals: bool,
-    has_colors: bool,
-    has_texcoords: &[bool; MAX_TEXTURE_UNITS],
+    arrays: Arrays,
 ) {
     let cur = &state.current;
-    if !has_normals {
+    if !arrays.normals {
         let n = cur.normal;
         for location in [ATTRIB_NORMAL, ATTRIB_SHADE_NORMAL] {
             sent.set(gl, location, [n.x, n.y, n.z, 0.0]);
         }
     }
-    if !has_colors {
-        for location in [ATTRIB_COLOR, ATTRIB_SHADE_COLOR] {
-            sent.set(gl, location, cur.color.to_array());
-        }
+    if !arrays.colors {
+        sent.set(gl, ATTRIB_COLOR, cur.color.to_array());
     }
-    for (u, (has, t)) in has_texcoords.iter().zip(&cur.texcoords).enumerate() {
+    if !arrays.secondary_colors {
+        sent.set(gl, ATTRIB_SECONDARY, cur.secondary_color.to_array());
+    }
+    if !arrays.fog_coords {
+        sent.set(gl, ATTRIB_FOG_COORD, [cur.fog_coord, 0.0, 0.0, 1.0]);
+    }
+    for (u, (has, t)) in arrays.texcoords.iter().zip(&cur.texcoords).enumerate() {
         if !has {
             sent.set(gl, ATTRIB_TEXCOORD0 + u as u32, t.to_array());
         }
@@ -350,7 +400,7 @@ pub fn set_current_values(
 pub struct SentAttribs([Option<[u32; 4]>; ATTRIB_SLOTS]);
 
 /// The attribute locations the generated programs use (`shadergen::ATTRIB_*`).
-const ATTRIB_SLOTS: usize = ATTRIB_WINDOW as usize + 1;
+const ATTRIB_SLOTS: usize = ATTRIB_COUNT as usize;
 
 impl Default for SentAttribs {
     fn default() -> Self {

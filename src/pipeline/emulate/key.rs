@@ -11,8 +11,8 @@ use super::polygon::EdgeRule;
 use crate::ff::{
     AlphaTest, BaseFormat, ColorControl, ColorMaterialMode, Combine, CombineFunc, CombineOperand,
     CombineScale, CombineSource, CombinerInput, CompareFunc, CompareMode, DepthTextureMode, Face,
-    FixedState, FogMode, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat, TexGenMode,
-    TextureTarget, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS,
+    FixedState, FogCoordSource, FogMode, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat,
+    TexGenMode, TextureTarget, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS,
 };
 use crate::vocab::Precision;
 
@@ -77,6 +77,10 @@ pub struct VertexKey {
     /// (POINT_SMOOTH). Set per pass; `None` from the state alone and for a pass that draws
     /// no points, since a vertex output less is work saved for every vertex.
     pub point_size: Option<PointKey>,
+    /// The fog distance of each vertex: |z_eye|, or |fog coordinate| (GL 1.4's
+    /// FOG_COORD_SRC). FRAGMENT_DEPTH whenever fog is off, so the unused source splits no
+    /// programs.
+    pub fog_source: FogCoordSource,
 }
 
 /// A points pass's rasterisation: its shape, and whether sizes are attenuated by
@@ -242,7 +246,13 @@ impl ShaderKey {
         let units = enabled_units(state);
         let lighting = lighting_key(state);
         let two_side = lighting.as_ref().is_some_and(|l| l.two_side);
-        let color_sum = lighting.as_ref().is_some_and(|l| l.separate_specular);
+        // A secondary colour is read when lighting makes one (SEPARATE_SPECULAR_COLOR; a
+        // single-colour model's is 0) or, unlit, for COLOR_SUM and the register
+        // combiners' SECONDARY_COLOR (GL 1.4 §2.7: the vertex's secondary colour).
+        let color_sum = match &lighting {
+            Some(l) => l.separate_specular,
+            None => state.color_sum || state.register_combiners.enabled,
+        };
         let vertex_units: Vec<VertexUnitKey> = units
             .iter()
             .map(|&(unit, _, _)| VertexUnitKey {
@@ -274,6 +284,10 @@ impl ShaderKey {
             units: vertex_units,
             lighting,
             point_size: None,
+            fog_source: match state.fog.get() {
+                Some(f) => f.coord_source,
+                None => FogCoordSource::FragmentDepth,
+            },
         };
         let combiners = state.register_combiners.get().map(|rc| CombinersKey {
             stages: rc.active_stages().to_vec(),

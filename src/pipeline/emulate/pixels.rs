@@ -409,7 +409,14 @@ impl Emulate {
         }
         let bytes = image_bytes(rect.image);
         self.upload_image(gl, rect.width, rect.height, &bytes)?;
-        let base = rect_state(state, self.target, rect.corner, rect.zoom);
+        let mut base = rect_state(state, self.target, rect.corner, rect.zoom);
+        // Mesa adds the current secondary colour to glBitmap's fragments under COLOR_SUM,
+        // and nothing to an image's (measured, tests/c/secondary.c); the fog distance
+        // stays PIXEL_FOG_DISTANCE whatever FOG_COORD_SRC says (measured likewise).
+        if source != PixelSource::Bitmap {
+            base.color_sum = false;
+        }
+        base.fog.value.coord_source = crate::ff::FogCoordSource::FragmentDepth;
         let t = self.target;
         let ndc = |x: f32, y: f32| {
             Vec4::new(

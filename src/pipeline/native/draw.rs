@@ -34,6 +34,10 @@ struct Arrays {
     colors: Option<Vec<f32>>,
     texcoords: Vec<(u8, Vec<f32>)>,
     edge_flags: Option<Vec<u8>>,
+    /// RGB of each secondary colour (glSecondaryColorPointer takes size 3 or 4; 3 keeps
+    /// the current value's alpha out of GL, as glSecondaryColor3f does).
+    secondary_colors: Option<Vec<f32>>,
+    fog_coords: Option<Vec<f32>>,
 }
 
 impl Arrays {
@@ -52,6 +56,11 @@ impl Arrays {
                 .edge_flags
                 .as_ref()
                 .map(|f| f.iter().map(|&on| u8::from(on)).collect()),
+            secondary_colors: g
+                .secondary_colors
+                .as_ref()
+                .map(|c| c.iter().flat_map(|v| v.truncate().to_array()).collect()),
+            fog_coords: g.fog_coords.clone(),
         }
     }
 }
@@ -79,6 +88,14 @@ pub fn draw(g: &gl::Gl, geometry: &Geometry) {
             g.EnableClientState(gl::EDGE_FLAG_ARRAY);
             g.EdgeFlagPointer(0, f.as_ptr().cast::<c_void>());
         }
+        if let Some(c) = &arrays.secondary_colors {
+            g.EnableClientState(gl::SECONDARY_COLOR_ARRAY);
+            g.SecondaryColorPointer(3, gl::FLOAT, 0, c.as_ptr().cast::<c_void>());
+        }
+        if let Some(f) = &arrays.fog_coords {
+            g.EnableClientState(gl::FOG_COORD_ARRAY);
+            g.FogCoordPointer(gl::FLOAT, 0, f.as_ptr().cast::<c_void>());
+        }
         for (unit, t) in &arrays.texcoords {
             g.ClientActiveTexture(conv::texture_unit(*unit));
             g.EnableClientState(gl::TEXTURE_COORD_ARRAY);
@@ -101,6 +118,8 @@ pub fn draw(g: &gl::Gl, geometry: &Geometry) {
         g.ClientActiveTexture(gl::TEXTURE0);
         g.DisableClientState(gl::COLOR_ARRAY);
         g.DisableClientState(gl::EDGE_FLAG_ARRAY);
+        g.DisableClientState(gl::SECONDARY_COLOR_ARRAY);
+        g.DisableClientState(gl::FOG_COORD_ARRAY);
         g.DisableClientState(gl::NORMAL_ARRAY);
         g.DisableClientState(gl::VERTEX_ARRAY);
     }
@@ -123,6 +142,13 @@ pub fn restore_current(g: &gl::Gl, state: &FixedState, geometry: &Geometry) {
         }
         if geometry.edge_flags.is_some() {
             g.EdgeFlag(u8::from(c.edge_flag));
+        }
+        if geometry.secondary_colors.is_some() {
+            let s = c.secondary_color;
+            g.SecondaryColor3f(s.x, s.y, s.z);
+        }
+        if geometry.fog_coords.is_some() {
+            g.FogCoordf(c.fog_coord);
         }
         for unit in 0..MAX_TEXTURE_UNITS {
             if geometry.texcoords[unit].is_some() {

@@ -93,6 +93,8 @@ impl Native {
             Command::Color(c) => unsafe { g.Color4f(c.x, c.y, c.z, c.w) },
             Command::Normal(n) => unsafe { g.Normal3f(n.x, n.y, n.z) },
             Command::EdgeFlag(on) => unsafe { g.EdgeFlag(u8::from(*on)) },
+            Command::SecondaryColor(c) => unsafe { g.SecondaryColor3f(c.x, c.y, c.z) },
+            Command::FogCoord(x) => unsafe { g.FogCoordf(*x) },
             Command::TexCoord { unit, coord: t } => unsafe {
                 g.MultiTexCoord4f(conv::texture_unit(*unit), t.x, t.y, t.z, t.w)
             },
@@ -335,6 +337,7 @@ fn fog(g: &gl::Gl, p: FogParam) {
     unsafe {
         match p {
             FogParam::Mode(m) => g.Fogi(gl::FOG_MODE, conv::int(conv::value(m))),
+            FogParam::CoordSource(s) => g.Fogi(gl::FOG_COORD_SRC, conv::int(conv::value(s))),
             FogParam::Density(v) => g.Fogf(gl::FOG_DENSITY, v),
             FogParam::Start(v) => g.Fogf(gl::FOG_START, v),
             FogParam::End(v) => g.Fogf(gl::FOG_END, v),

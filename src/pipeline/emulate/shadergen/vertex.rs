@@ -8,7 +8,7 @@
 //! picks the corner; for split polygons every corner carries its polygon's provoking vertex,
 //! so the whole polygon has one colour whichever way it was split.
 
-use crate::ff::{ColorMaterialMode, TexCoord, TexGenMode};
+use crate::ff::{ColorMaterialMode, FogCoordSource, TexCoord, TexGenMode};
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{
     ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, PointKey, PointShape,
@@ -17,7 +17,7 @@ use crate::pipeline::emulate::key::{
 use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
 
 use super::{
-    ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SHADE_COLOR,
+    ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_FOG_COORD, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SECONDARY,
     ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0, ATTRIB_WINDOW, WINDOW_SPAN,
 };
 
@@ -59,14 +59,8 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
         let p = w.uniform(UniformSource::ClipPlane(i));
         w.line(format!("gl_ClipDistance[{i}] = dot({p}, {e});"));
     }
-    let color = if fragment.flat {
-        w.declare(&format!(
-            "layout(location = {ATTRIB_SHADE_COLOR}) in vec4 a_shade_color;"
-        ));
-        "a_shade_color"
-    } else {
-        "a_color"
-    };
+    // Under flat shading the colour attribute holds the provoking vertex's colour (`draw`).
+    let color = "a_color";
     match &key.lighting {
         Some(lighting) => {
             let inputs = if fragment.flat {
@@ -83,17 +77,32 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
         None => {
             w.declare(SATURATE);
             w.line(format!("v_color = saturate({color});"));
+            if fragment.color_sum {
+                emit_secondary_attribute(&mut w, flat);
+            }
         }
     }
     for unit in &key.units {
         emit_texcoords(&mut w, &mut eye, key, unit);
     }
     if fragment.fog.is_some() {
-        // FOG_COORDINATE_SOURCE = FRAGMENT_DEPTH as Mesa computes it: z = |z_eye| per
-        // vertex (ffvertex_prog.c, FDM_EYE_PLANE_ABS), interpolated; f per fragment.
-        let e = eye.position(&mut w);
         w.declare("out float v_fog;");
-        w.line(format!("v_fog = abs({e}.z);"));
+        match key.fog_source {
+            // FOG_COORD_SRC = FRAGMENT_DEPTH as Mesa computes it: z = |z_eye| per vertex
+            // (ffvertex_prog.c, FDM_EYE_PLANE_ABS), interpolated; f per fragment.
+            FogCoordSource::FragmentDepth => {
+                let e = eye.position(&mut w);
+                w.line(format!("v_fog = abs({e}.z);"));
+            }
+            // FOG_COORD: the magnitude of the vertex's fog coordinate, taken per vertex
+            // (Mesa: coordinates −10 and 10 fog the whole span as 10), interpolated.
+            FogCoordSource::FogCoord => {
+                w.declare(&format!(
+                    "layout(location = {ATTRIB_FOG_COORD}) in float a_fog_coord;"
+                ));
+                w.line("v_fog = abs(a_fog_coord);");
+            }
+        }
     }
     if fragment.edges.is_some() {
         emit_edge(&mut w);
@@ -115,6 +124,17 @@ const SATURATE: &str =
 /// The lit-colour clamp: NaN → 1 (see [`SATURATE`]).
 const SATURATE_LIT: &str =
     "vec4 saturate_lit(vec4 v) { return mix(clamp(v, 0.0, 1.0), vec4(1.0), isnan(v)); }";
+
+/// The secondary colour of an unlit vertex (GL 1.4 §2.7): its attribute (under flat
+/// shading the provoking vertex's, as for the primary colour), clamped as every colour
+/// leaving the vertex stage is.
+fn emit_secondary_attribute(w: &mut GlslWriter, flat: &str) {
+    w.declare(&format!(
+        "layout(location = {ATTRIB_SECONDARY}) in vec4 a_secondary;"
+    ));
+    w.declare(&format!("{flat}out vec4 v_secondary;"));
+    w.line("v_secondary = saturate(a_secondary);");
+}
 
 /// The edge attribute of split polygons, passed on without perspective so a component
 /// that is 0 at both ends of an edge stays exactly 0 along it (`polygon`).
@@ -146,7 +166,7 @@ fn shade_inputs(w: &mut GlslWriter, key: &VertexKey) -> Inputs {
     Inputs {
         eye: "shade_eye",
         normal: "shade_normal",
-        color: "a_shade_color",
+        color: "a_color",
     }
 }
 
@@ -520,6 +540,6 @@ mod tests {
             "nothing else reads the vertex's own normal"
         );
         let unlit = vertex_source(&[Command::ShadeModel(ShadeModel::Flat)]);
-        assert!(unlit.contains("v_color = saturate(a_shade_color);"));
+        assert!(unlit.contains("v_color = saturate(a_color);"));
     }
 }
