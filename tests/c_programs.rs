@@ -894,3 +894,40 @@ fn secondary_colours_and_fog_coordinates_draw_as_on_mesa() {
         "96x96",
     );
 }
+
+/// `tests/c/color_index.c`: colour-index state (glIndex*, glClearIndex, glIndexMask,
+/// glIndexPointer with glArrayElement) and multisample coverage (glSampleCoverage, the
+/// sample enables) kept, converted, grouped and refused as Mesa keeps them in an RGBA
+/// context — the clear index truncated to an unsigned integer and restored through a
+/// float — and a frame drawn with all of it set, Mesa's image exactly; the trace replays.
+#[test]
+fn colour_index_and_coverage_state_answer_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("color_index");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "index initial                  1 err 0",
+            "index 3.7 as int                         4  err 0x0",
+            "clear index 2.6                2 err 0",
+            "pop clear index -1 changed     0 err 0",
+            "index pointer type 1400 err 500",
+            "interleaved index array                  0  err 0x0",
+            "coverage NaN                   0 err 0",
+            "coverage inside glBegin                  err 0x502",
+            "pop enable alpha to one                  1  err 0x0",
+        ],
+    );
+    assert_same_text(
+        &mesa_text,
+        &ours_text,
+        60,
+        "a colour-index or coverage answer",
+    );
+    assert_images_match("color_index", &ours, &mesa, Tolerance::EXACT);
+    assert_trace_replays(
+        "color_index",
+        &compile("color_index", Linking::Direct),
+        &[],
+        "32x32",
+    );
+}

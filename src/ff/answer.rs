@@ -228,14 +228,14 @@ fn client_enable(cap: u32, c: &Client) -> Option<bool> {
         r::EDGE_FLAG_ARRAY => a.edge_flag.enabled,
         r::SECONDARY_COLOR_ARRAY => a.secondary_color.enabled,
         r::FOG_COORD_ARRAY => a.fog_coord.enabled,
-        r::INDEX_ARRAY => false,
+        r::INDEX_ARRAY => a.index.enabled,
         _ => return None,
     })
 }
 
 /// glGetPointerv (GL 1.5 §6.1.11): an array's pointer as it was given (an offset when a
-/// buffer was bound; a script's literal has no address and answers NULL). The colour-index
-/// array is never set; feedback and selection are left out: NULL.
+/// buffer was bound; a script's literal has no address and answers NULL). Feedback and
+/// selection are left out: NULL.
 fn pointer(pname: u32, c: &Client) -> Result<usize, GlErrorKind> {
     const FEEDBACK_BUFFER_POINTER: u32 = 0x0DF0;
     const SELECTION_BUFFER_POINTER: u32 = 0x0DF3;
@@ -248,9 +248,8 @@ fn pointer(pname: u32, c: &Client) -> Result<usize, GlErrorKind> {
         r::EDGE_FLAG_ARRAY_POINTER => &a.edge_flag.data,
         r::SECONDARY_COLOR_ARRAY_POINTER => &a.secondary_color.data,
         r::FOG_COORD_ARRAY_POINTER => &a.fog_coord.data,
-        r::INDEX_ARRAY_POINTER | FEEDBACK_BUFFER_POINTER | SELECTION_BUFFER_POINTER => {
-            &ArrayData::Null
-        }
+        r::INDEX_ARRAY_POINTER => &a.index.data,
+        FEEDBACK_BUFFER_POINTER | SELECTION_BUFFER_POINTER => &ArrayData::Null,
         _ => return Err(GlErrorKind::InvalidEnum),
     };
     Ok(match data {
@@ -303,6 +302,9 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
         r::SECONDARY_COLOR_ARRAY_STRIDE => int(i64::from(a.secondary_color.stride)),
         r::FOG_COORD_ARRAY_TYPE => enm(ty(a.fog_coord.ty)),
         r::FOG_COORD_ARRAY_STRIDE => int(i64::from(a.fog_coord.stride)),
+        r::INDEX_ARRAY_TYPE => enm(ty(a.index.ty)),
+        r::INDEX_ARRAY_STRIDE => int(i64::from(a.index.stride)),
+        r::INDEX_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.index.data))),
         r::LIST_BASE => int(i64::from(c.lists.base)),
         r::LIST_INDEX => int(i64::from(c.lists.compiling_name().unwrap_or(0))),
         r::LIST_MODE => match c.lists.compiling() {

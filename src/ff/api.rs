@@ -527,11 +527,11 @@ macro_rules! gl_entry_table {
         GetMapdv = glGetMapdv(Left; target: GLenum, query: GLenum, v: *mut GLdouble);
         GetMapiv = glGetMapiv(Left; target: GLenum, query: GLenum, v: *mut GLint);
         // GL 1.2–1.5 beyond GL 1.1. Those marked Left are not in the model yet (README,
-        // "Left out"): colour-index mode, 3D and compressed textures, multisample coverage.
+        // "Left out"): 3D and compressed textures.
         // Exported, so a program that calls them links and gets GL_INVALID_OPERATION
         // instead of a missing symbol.
         BeginQuery = glBeginQuery(Script; target: GLenum, id: GLuint);
-        ClearIndex = glClearIndex(Left; c: GLfloat);
+        ClearIndex = glClearIndex(Script; c: GLfloat);
         CompressedTexImage1D = glCompressedTexImage1D(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
         CompressedTexImage2D = glCompressedTexImage2D(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
         CompressedTexImage3D = glCompressedTexImage3D(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
@@ -551,24 +551,24 @@ macro_rules! gl_entry_table {
         GetQueryObjectiv = glGetQueryObjectiv(Script; id: GLuint, pname: GLenum, params: *mut GLint);
         GetQueryObjectuiv = glGetQueryObjectuiv(Script; id: GLuint, pname: GLenum, params: *mut GLuint);
         GetQueryiv = glGetQueryiv(Script; target: GLenum, pname: GLenum, params: *mut GLint);
-        IndexMask = glIndexMask(Left; mask: GLuint);
-        IndexPointer = glIndexPointer(Left; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
-        Indexd = glIndexd(Left; c: GLdouble);
-        Indexdv = glIndexdv(Left; c: *const GLdouble);
-        Indexf = glIndexf(Left; c: GLfloat);
-        Indexfv = glIndexfv(Left; c: *const GLfloat);
-        Indexi = glIndexi(Left; c: GLint);
-        Indexiv = glIndexiv(Left; c: *const GLint);
-        Indexs = glIndexs(Left; c: GLshort);
-        Indexsv = glIndexsv(Left; c: *const GLshort);
-        Indexub = glIndexub(Left; c: GLubyte);
-        Indexubv = glIndexubv(Left; c: *const GLubyte);
+        IndexMask = glIndexMask(Script; mask: GLuint);
+        IndexPointer = glIndexPointer(Script; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
+        Indexd = glIndexd(Script; c: GLdouble);
+        Indexdv = glIndexdv(Script; c: *const GLdouble);
+        Indexf = glIndexf(Script; c: GLfloat);
+        Indexfv = glIndexfv(Script; c: *const GLfloat);
+        Indexi = glIndexi(Script; c: GLint);
+        Indexiv = glIndexiv(Script; c: *const GLint);
+        Indexs = glIndexs(Script; c: GLshort);
+        Indexsv = glIndexsv(Script; c: *const GLshort);
+        Indexub = glIndexub(Script; c: GLubyte);
+        Indexubv = glIndexubv(Script; c: *const GLubyte);
         IsQuery = glIsQuery(Script; id: GLuint) -> GLboolean;
         PointParameterf = glPointParameterf(Script; pname: GLenum, param: GLfloat);
         PointParameterfv = glPointParameterfv(Script; pname: GLenum, params: *const GLfloat);
         PointParameteri = glPointParameteri(Script; pname: GLenum, param: GLint);
         PointParameteriv = glPointParameteriv(Script; pname: GLenum, params: *const GLint);
-        SampleCoverage = glSampleCoverage(Left; value: GLfloat, invert: GLboolean);
+        SampleCoverage = glSampleCoverage(Script; value: GLfloat, invert: GLboolean);
         SecondaryColor3b = glSecondaryColor3b(Script; red: GLbyte, green: GLbyte, blue: GLbyte);
         SecondaryColor3bv = glSecondaryColor3bv(Script; v: *const GLbyte);
         SecondaryColor3d = glSecondaryColor3d(Script; red: GLdouble, green: GLdouble, blue: GLdouble);
@@ -613,7 +613,7 @@ macro_rules! gl_entry_table {
         PointParameterfEXT = glPointParameterfEXT(Script; pname: GLenum, param: GLfloat);
         PointParameterfvARB = glPointParameterfvARB(Script; pname: GLenum, params: *const GLfloat);
         PointParameterfvEXT = glPointParameterfvEXT(Script; pname: GLenum, params: *const GLfloat);
-        SampleCoverageARB = glSampleCoverageARB(Left; value: GLfloat, invert: GLboolean);
+        SampleCoverageARB = glSampleCoverageARB(Script; value: GLfloat, invert: GLboolean);
         SecondaryColor3bEXT = glSecondaryColor3bEXT(Script; red: GLbyte, green: GLbyte, blue: GLbyte);
         SecondaryColor3bvEXT = glSecondaryColor3bvEXT(Script; v: *const GLbyte);
         SecondaryColor3dEXT = glSecondaryColor3dEXT(Script; red: GLdouble, green: GLdouble, blue: GLdouble);
@@ -866,6 +866,8 @@ pub enum Attrib {
     SecondaryColor,
     /// glFogCoord{f,d}[v] (GL 1.4, EXT_fog_coord): one component, no digit in the name.
     FogCoord,
+    /// glIndex{s,i,f,d,ub}[v]: the colour index, one component, not normalised.
+    Index,
 }
 
 /// A C parameter type of those families.
@@ -983,6 +985,7 @@ impl Entry {
             ("MultiTexCoord", Attrib::MultiTexCoord),
             ("SecondaryColor", Attrib::SecondaryColor),
             ("FogCoord", Attrib::FogCoord),
+            ("Index", Attrib::Index),
             ("TexCoord", Attrib::TexCoord),
             ("Vertex", Attrib::Vertex),
             ("Color", Attrib::Color),
@@ -993,7 +996,7 @@ impl Entry {
         .find_map(|(prefix, a)| name.strip_prefix(prefix).map(|r| (*a, r)))?;
         let (count, rest) = match attrib {
             Attrib::Rect => (4, rest),
-            Attrib::FogCoord => (1, rest),
+            Attrib::FogCoord | Attrib::Index => (1, rest),
             _ => {
                 let digit = rest.chars().next()?.to_digit(10)? as usize;
                 (digit, &rest[1..])
@@ -1044,6 +1047,10 @@ impl Command {
             Command::EdgeFlag(_) => Entry::EdgeFlag,
             Command::SecondaryColor(_) => Entry::SecondaryColor3f,
             Command::FogCoord(_) => Entry::FogCoordf,
+            Command::Index(_) => Entry::Indexf,
+            Command::ClearIndex(_) => Entry::ClearIndex,
+            Command::IndexMask(_) => Entry::IndexMask,
+            Command::SampleCoverage { .. } => Entry::SampleCoverage,
             Command::TexCoord { .. } => Entry::MultiTexCoord4f,
             Command::Light { param, .. } => match param {
                 LightParam::SpotExponent(_)
@@ -1248,7 +1255,9 @@ mod tests {
                         .is_some_and(|r| r.starts_with(['1', '2', '3', '4']))
                 })
                 || n.strip_prefix("glFogCoord")
-                    .is_some_and(|r| r.starts_with(['f', 'd']));
+                    .is_some_and(|r| r.starts_with(['f', 'd']))
+                || n.strip_prefix("glIndex")
+                    .is_some_and(|r| r.starts_with(['s', 'i', 'f', 'd', 'u']));
             assert_eq!(e.attrib_call().is_some(), family, "{n}");
         }
     }

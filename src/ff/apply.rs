@@ -84,6 +84,10 @@ impl FixedState {
             Command::EdgeFlag(f) => self.current.edge_flag = *f,
             Command::SecondaryColor(c) => self.current.secondary_color = *c,
             Command::FogCoord(f) => self.current.fog_coord = *f,
+            Command::Index(c) => self.current.index = *c,
+            Command::ClearIndex(c) => self.clear_index = super::color_index::clear_index(*c),
+            Command::IndexMask(m) => self.index_mask = *m,
+            Command::SampleCoverage { value, invert } => self.sample_coverage.set(*value, *invert),
             Command::TexCoord { unit, coord } => {
                 let u = check_unit(*unit)?;
                 self.current.texcoords[u] = *coord;
@@ -401,6 +405,9 @@ impl FixedState {
             Capability::PolygonSmooth => self.smooth.polygon = on,
             Capability::ColorSum => self.color_sum = on,
             Capability::Multisample => self.multisample = on,
+            Capability::SampleCoverage => self.sample_coverage.coverage = on,
+            Capability::SampleAlphaToCoverage => self.sample_coverage.alpha_to_coverage = on,
+            Capability::SampleAlphaToOne => self.sample_coverage.alpha_to_one = on,
             Capability::PolygonStipple => self.polygon_stipple.enabled = on,
             Capability::LineStipple => self.line_stipple.enabled = on,
             Capability::ClipPlane(i) => {

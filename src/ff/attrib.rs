@@ -200,6 +200,11 @@ impl FixedState {
                 self.dither = s.dither;
                 self.color_mask = s.color_mask;
                 self.clear.color = s.clear.color;
+                self.index_mask = s.index_mask;
+                // Mesa sets the clear index again only when it differs.
+                if self.clear_index != s.clear_index {
+                    self.clear_index = super::color_index::restored_clear_index(s.clear_index);
+                }
             }
             AttribGroup::DepthBuffer => {
                 self.depth_test = s.depth_test;
@@ -251,7 +256,10 @@ impl FixedState {
             }
             // ACCUM_CLEAR_VALUE (Table 6.20).
             AttribGroup::AccumBuffer => self.clear.accum = s.clear.accum,
-            AttribGroup::Multisample => self.multisample = s.multisample,
+            AttribGroup::Multisample => {
+                self.multisample = s.multisample;
+                self.sample_coverage = s.sample_coverage;
+            }
             // Not modelled yet: nothing saved, nothing restored.
             AttribGroup::Eval | AttribGroup::List => {}
         }
@@ -292,6 +300,10 @@ impl FixedState {
         self.line_stipple.enabled = s.line_stipple.enabled;
         self.smooth = s.smooth;
         self.multisample = s.multisample;
+        let (now, then) = (&mut self.sample_coverage, s.sample_coverage);
+        now.coverage = then.coverage;
+        now.alpha_to_coverage = then.alpha_to_coverage;
+        now.alpha_to_one = then.alpha_to_one;
     }
 
     /// TEXTURE_BIT: the active unit, every unit's enables, bindings, environment and
@@ -348,6 +360,7 @@ impl FixedState {
                 out.push(Command::EdgeFlag(self.current.edge_flag));
                 out.push(Command::SecondaryColor(self.current.secondary_color));
                 out.push(Command::FogCoord(self.current.fog_coord));
+                out.push(Command::Index(self.current.index));
                 for (u, t) in self.current.texcoords.iter().enumerate() {
                     out.push(Command::TexCoord {
                         unit: u as u8,
@@ -402,6 +415,8 @@ impl FixedState {
                 out.push(toggle(Capability::Dither, self.dither));
                 out.push(Command::ColorMask(self.color_mask));
                 out.push(Command::ClearColor(self.clear.color));
+                out.push(Command::IndexMask(self.index_mask));
+                out.push(Command::ClearIndex(self.clear_index as f32));
             }
             AttribGroup::DepthBuffer => {
                 let d = self.depth_test;
@@ -493,7 +508,14 @@ impl FixedState {
             }
             AttribGroup::PixelMode => self.pixel_mode_commands(out),
             AttribGroup::AccumBuffer => out.push(Command::ClearAccum(self.clear.accum)),
-            AttribGroup::Multisample => out.push(toggle(Capability::Multisample, self.multisample)),
+            AttribGroup::Multisample => {
+                self.sample_enable_commands(out);
+                let c = self.sample_coverage;
+                out.push(Command::SampleCoverage {
+                    value: c.value,
+                    invert: c.invert,
+                });
+            }
             AttribGroup::Eval | AttribGroup::List => {}
         }
     }
@@ -538,7 +560,19 @@ impl FixedState {
         out.push(toggle(Capability::PointSmooth, self.smooth.point));
         out.push(toggle(Capability::LineSmooth, self.smooth.line));
         out.push(toggle(Capability::PolygonSmooth, self.smooth.polygon));
+        self.sample_enable_commands(out);
+    }
+
+    /// MULTISAMPLE and the three sample enables.
+    fn sample_enable_commands(&self, out: &mut Vec<Command>) {
+        let c = self.sample_coverage;
         out.push(toggle(Capability::Multisample, self.multisample));
+        out.push(toggle(Capability::SampleCoverage, c.coverage));
+        out.push(toggle(
+            Capability::SampleAlphaToCoverage,
+            c.alpha_to_coverage,
+        ));
+        out.push(toggle(Capability::SampleAlphaToOne, c.alpha_to_one));
     }
 
     fn unit_enable_commands(&self, unit: &TextureUnit, out: &mut Vec<Command>) {

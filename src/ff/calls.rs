@@ -177,6 +177,16 @@ pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Erro
         Entry::ClearColor => n(4).and(c.vec4_args(0)).map(Command::ClearColor)?,
         Entry::ClearDepth => n(1).and(c.f32(0)).map(Command::ClearDepth)?,
         Entry::ClearStencil => n(1).and(c.i32(0)).map(Command::ClearStencil)?,
+        Entry::ClearIndex => n(1).and(c.f32(0)).map(Command::ClearIndex)?,
+        Entry::IndexMask => n(1).and(c.u32(0)).map(Command::IndexMask)?,
+        // glSampleCoverage's GLboolean: any nonzero value inverts.
+        Entry::SampleCoverage | Entry::SampleCoverageARB => {
+            n(2)?;
+            Command::SampleCoverage {
+                value: c.f32(0)?,
+                invert: c.boolean(1)?,
+            }
+        }
         Entry::ClearAccum => n(4).and(c.vec4_args(0)).map(Command::ClearAccum)?,
         Entry::Accum => n(2).and(c.enm(0)).and_then(|op| {
             let value = c.f32(1)?;

@@ -1,7 +1,8 @@
 //! Client vertex arrays (GL 1.5 §2.8): the pointers a program sets with glVertexPointer,
 //! glNormalPointer, glColorPointer, glTexCoordPointer (per client-active unit) and
 //! glEdgeFlagPointer (GLboolean elements, one per vertex: 0 is FALSE),
-//! glSecondaryColorPointer and glFogCoordPointer (GL 1.4), their
+//! glSecondaryColorPointer and glFogCoordPointer (GL 1.4), glIndexPointer (read only by
+//! glArrayElement, which sets the current index: an RGBA buffer draws no index), their
 //! enables, and the draws that read them (glDrawArrays, glDrawElements,
 //! glDrawRangeElements, glMultiDrawArrays, glMultiDrawElements, glArrayElement,
 //! glInterleavedArrays). This is client state: it
@@ -272,6 +273,8 @@ pub struct ClientArrays {
     pub secondary_color: ArrayPointer,
     /// glFogCoordPointer: size 1, FLOAT or DOUBLE.
     pub fog_coord: ArrayPointer,
+    /// glIndexPointer: size 1.
+    pub index: ArrayPointer,
     /// glClientActiveTexture: the unit glTexCoordPointer and the TEXTURE_COORD_ARRAY
     /// enable address. GL default: 0.
     pub client_active: u8,
@@ -290,6 +293,7 @@ impl Default for ClientArrays {
             },
             secondary_color: ArrayPointer::new(3),
             fog_coord: ArrayPointer::new(1),
+            index: ArrayPointer::new(1),
             client_active: 0,
         }
     }
@@ -304,6 +308,7 @@ pub struct Element {
     pub edge_flag: Option<bool>,
     pub secondary_color: Option<Vec4>,
     pub fog_coord: Option<f32>,
+    pub index: Option<f32>,
     pub position: Option<Vec4>,
 }
 
@@ -322,6 +327,7 @@ impl Element {
             .chain(self.color.map(Attr::Color))
             .chain(self.secondary_color.map(Attr::SecondaryColor))
             .chain(self.fog_coord.map(Attr::FogCoord))
+            .chain(self.index.map(Attr::Index))
             .chain(units)
             .chain(self.edge_flag.map(Attr::EdgeFlag))
     }
@@ -372,6 +378,7 @@ impl ClientArrays {
                 | Entry::SecondaryColorPointerEXT
                 | Entry::FogCoordPointer
                 | Entry::FogCoordPointerEXT
+                | Entry::IndexPointer
                 | Entry::ClientActiveTexture
                 | Entry::ClientActiveTextureARB
                 | Entry::EnableClientState
@@ -480,6 +487,28 @@ impl ClientArrays {
                     data: Buffers::source(c, 2, bound.array)?,
                 };
             }
+            // UNSIGNED_BYTE, SHORT, INT, FLOAT, DOUBLE (GL 1.5 Table 2.4).
+            Entry::IndexPointer => {
+                let ty = self.array_type(
+                    c,
+                    0,
+                    &[
+                        CType::UByte,
+                        CType::Short,
+                        CType::Int,
+                        CType::Float,
+                        CType::Double,
+                    ],
+                )?;
+                let stride = stride(c, 1)?;
+                self.index = ArrayPointer {
+                    enabled: self.index.enabled,
+                    size: 1,
+                    ty,
+                    stride,
+                    data: Buffers::source(c, 2, bound.array)?,
+                };
+            }
             Entry::ClientActiveTexture | Entry::ClientActiveTextureARB => {
                 let unit = c.family(0, Family::Texture)?;
                 if usize::from(unit) >= MAX_TEXTURE_UNITS {
@@ -512,8 +541,7 @@ impl ClientArrays {
                     "GL_EDGE_FLAG_ARRAY" => self.edge_flag.enabled = on,
                     "GL_SECONDARY_COLOR_ARRAY" => self.secondary_color.enabled = on,
                     "GL_FOG_COORD_ARRAY" => self.fog_coord.enabled = on,
-                    // The colour-index array: accepted, never read (RGBA mode).
-                    _ => {}
+                    _ => self.index.enabled = on,
                 }
             }
             Entry::DrawArrays => {
@@ -652,6 +680,7 @@ impl ClientArrays {
             &self.edge_flag,
             &self.secondary_color,
             &self.fog_coord,
+            &self.index,
         ]
         .into_iter()
         .chain(self.texcoord.iter())
@@ -670,6 +699,7 @@ impl ClientArrays {
             &mut self.edge_flag,
             &mut self.secondary_color,
             &mut self.fog_coord,
+            &mut self.index,
         ]
         .into_iter()
         .chain(self.texcoord.iter_mut())
@@ -754,15 +784,25 @@ impl ClientArrays {
 
     /// glArrayElement(i): the values of element i of every enabled array.
     fn element(&self, i: usize, mem: &dyn ClientMemory) -> Element {
+        let index = self.index.enabled.then(|| {
+            let first = |v: [f32; 4]| v[0];
+            let v = self
+                .index
+                .components(mem, &[i], [0.0; 4], |x| x as f32, first);
+            v.first().copied().unwrap_or(0.0)
+        });
         let Some(mut g) = self.geometry(Primitive::Points, &[i], None, mem) else {
             // Without a vertex array the other arrays still set their current values.
             let mut with_vertex = self.clone();
             with_vertex.vertex.enabled = true;
-            return with_vertex
+            let mut e = with_vertex
                 .geometry(Primitive::Points, &[i], None, mem)
                 .map_or_else(Element::default, |g| Element::of(&g));
+            e.index = index;
+            return e;
         };
         let mut e = Element::of(&g);
+        e.index = index;
         e.position = g.positions.pop();
         e
     }
@@ -850,6 +890,7 @@ impl ClientArrays {
         };
         self.vertex = make(vc, CType::Float, ov, true);
         self.edge_flag.enabled = false;
+        self.index.enabled = false;
         Ok(())
     }
 }

@@ -88,12 +88,16 @@ pub enum Capability {
     /// POLYGON_SMOOTH (§3.5.4): antialiased polygons.
     PolygonSmooth,
     /// COLOR_SUM (GL 1.4 §3.9): adds the secondary colour after texturing when lighting
-    /// is off. The model has no secondary colour yet (it stays (0, 0, 0)), so the sum adds
-    /// nothing: state only, and exact.
+    /// is off.
     ColorSum,
     /// MULTISAMPLE (GL 1.3 §3.2.1): no effect on the single-sample buffers the layer has;
     /// state only, and exact.
     Multisample,
+    /// SAMPLE_COVERAGE, SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE (GL 1.3 §3.2.1):
+    /// state only, likewise (`sample_coverage`).
+    SampleCoverage,
+    SampleAlphaToCoverage,
+    SampleAlphaToOne,
 }
 
 /// glTexImage1D / glTexImage2D (`depth` is glTexImage3D's, not yet routed).
@@ -235,6 +239,17 @@ pub enum Command {
     SecondaryColor(Vec4),
     /// glFogCoordf(coord) (GL 1.4 §2.7).
     FogCoord(f32),
+    /// glIndexf(c): the current colour index (`color_index`).
+    Index(f32),
+    /// glClearIndex(c).
+    ClearIndex(f32),
+    /// glIndexMask(mask).
+    IndexMask(u32),
+    /// glSampleCoverage(value, invert).
+    SampleCoverage {
+        value: f32,
+        invert: bool,
+    },
     /// glMultiTexCoord4f(TEXTURE0 + unit, s, t, r, q).
     TexCoord {
         unit: u8,

@@ -214,6 +214,9 @@ gl_enums!(Capability {
     POLYGON_SMOOTH => Capability::PolygonSmooth,
     COLOR_SUM => Capability::ColorSum,
     MULTISAMPLE => Capability::Multisample,
+    SAMPLE_COVERAGE => Capability::SampleCoverage,
+    SAMPLE_ALPHA_TO_COVERAGE => Capability::SampleAlphaToCoverage,
+    SAMPLE_ALPHA_TO_ONE => Capability::SampleAlphaToOne,
 });
 
 gl_enums!(LogicOp {

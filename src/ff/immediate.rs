@@ -48,15 +48,16 @@ struct Open {
 }
 
 /// The attributes a pair tracks, each at its slot: colour (0), normal (1), one texture
-/// coordinate per unit (from [`TEXCOORD0`]), the edge flag, the secondary colour and the
-/// fog coordinate.
-pub const SLOTS: usize = 5 + MAX_TEXTURE_UNITS;
+/// coordinate per unit (from [`TEXCOORD0`]), the edge flag, the secondary colour, the
+/// fog coordinate and the colour index (which draws nothing in RGBA: it gets no array).
+pub const SLOTS: usize = 6 + MAX_TEXTURE_UNITS;
 const COLOR: usize = 0;
 const NORMAL: usize = 1;
 const TEXCOORD0: usize = 2;
 const EDGE_FLAG: usize = TEXCOORD0 + MAX_TEXTURE_UNITS;
 const SECONDARY_COLOR: usize = EDGE_FLAG + 1;
 const FOG_COORD: usize = EDGE_FLAG + 2;
+const INDEX: usize = EDGE_FLAG + 3;
 
 /// The most vertices a pair's arrays are sized for ahead of its calls.
 const MAX_RESERVED_VERTICES: usize = 1 << 16;
@@ -73,6 +74,8 @@ pub enum Attr {
     SecondaryColor(Vec4),
     /// glFogCoord (GL 1.4 §2.7).
     FogCoord(f32),
+    /// glIndex (`color_index`).
+    Index(f32),
 }
 
 impl Attr {
@@ -106,7 +109,17 @@ impl Attr {
                 current.fog_coord = f;
                 FOG_COORD
             }
+            Attr::Index(c) => {
+                current.index = c;
+                INDEX
+            }
         })
+    }
+
+    /// Whether the vertices of a pair carry this attribute (all but the colour index,
+    /// which an RGBA buffer never reads).
+    pub fn per_vertex(self) -> bool {
+        !matches!(self, Attr::Index(_))
     }
 }
 
@@ -218,6 +231,7 @@ fn op_of(attrib: Attrib, unit: u8, c: [f32; 4]) -> Op {
         // Three components given; alpha is the default 1.
         Attrib::SecondaryColor => Op::Attribute(Attr::SecondaryColor(Vec4::from_array(c))),
         Attrib::FogCoord => Op::Attribute(Attr::FogCoord(c[0])),
+        Attrib::Index => Op::Attribute(Attr::Index(c[0])),
     }
 }
 
@@ -352,6 +366,7 @@ impl Immediate {
                 Attr::EdgeFlag(f) => Command::EdgeFlag(f),
                 Attr::SecondaryColor(v) => Command::SecondaryColor(v),
                 Attr::FogCoord(f) => Command::FogCoord(f),
+                Attr::Index(c) => Command::Index(c),
             });
             return Ok(());
         };
@@ -387,6 +402,9 @@ pub fn changed_current(begin: &CurrentValues, now: &CurrentValues, out: &mut Vec
     }
     if begin.fog_coord.to_bits() != now.fog_coord.to_bits() {
         out.push(Command::FogCoord(now.fog_coord));
+    }
+    if begin.index.to_bits() != now.index.to_bits() {
+        out.push(Command::Index(now.index));
     }
     for u in 0..MAX_TEXTURE_UNITS {
         if begin.texcoords[u] != now.texcoords[u] {
@@ -437,7 +455,7 @@ impl Open {
         let index = attr
             .set(&mut self.current)
             .ok_or("texture unit beyond MAX_TEXTURE_UNITS")?;
-        if !self.called[index] {
+        if attr.per_vertex() && !self.called[index] {
             self.called[index] = true;
             self.pending = true;
         }

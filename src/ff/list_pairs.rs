@@ -94,7 +94,7 @@ fn assemble_pair(items: Vec<Item>) -> Option<Pair> {
     let mut set = |attr: Attr, vertices: usize| -> Option<()> {
         let mut scratch = CurrentValues::DEFAULT;
         let index = attr.set(&mut scratch)?;
-        if left[index].is_none() && vertices > 0 {
+        if attr.per_vertex() && left[index].is_none() && vertices > 0 {
             return None;
         }
         left[index] = Some(attr);

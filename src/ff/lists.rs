@@ -162,6 +162,7 @@ pub fn follow(current: &mut CurrentValues, cmd: &Command) {
         Command::EdgeFlag(f) => current.edge_flag = *f,
         Command::SecondaryColor(c) => current.secondary_color = *c,
         Command::FogCoord(x) => current.fog_coord = *x,
+        Command::Index(c) => current.index = *c,
         Command::TexCoord { unit, coord } => {
             if let Some(t) = current.texcoords.get_mut(usize::from(*unit)) {
                 *t = *coord;

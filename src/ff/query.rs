@@ -260,6 +260,11 @@ pnames! {
     EDGE_FLAG => |s| boolean(s.current.edge_flag),
     CURRENT_SECONDARY_COLOR => |s| normalized(&s.current.secondary_color.to_array()),
     CURRENT_FOG_COORD => |s| floats(&[s.current.fog_coord]),
+    CURRENT_INDEX => |s| floats(&[s.current.index]),
+    INDEX_CLEAR_VALUE => |s| int(s.clear_index as i32),
+    INDEX_WRITEMASK => |s| int(s.index_mask as i32),
+    SAMPLE_COVERAGE_VALUE => |s| floats(&[s.sample_coverage.value]),
+    SAMPLE_COVERAGE_INVERT => |s| boolean(s.sample_coverage.invert),
     CURRENT_TEXTURE_COORDS => |s| floats(&s.current.texcoords[s.active_unit()].to_array()),
 
     // The raster position (Table 6.5, `raster`): the active unit's texture coordinates.
@@ -450,6 +455,7 @@ pnames! {
     AUX_BUFFERS => |_| int(0),
     RGBA_MODE => |_| boolean(true),
     INDEX_MODE => |_| boolean(false),
+    INDEX_BITS => |_| int(0),
     DOUBLEBUFFER => |_| boolean(false),
     STEREO => |_| boolean(false),
 
@@ -578,6 +584,9 @@ impl FixedState {
             Capability::PolygonSmooth => self.smooth.polygon,
             Capability::ColorSum => self.color_sum,
             Capability::Multisample => self.multisample,
+            Capability::SampleCoverage => self.sample_coverage.coverage,
+            Capability::SampleAlphaToCoverage => self.sample_coverage.alpha_to_coverage,
+            Capability::SampleAlphaToOne => self.sample_coverage.alpha_to_one,
             Capability::PolygonStipple => self.polygon_stipple.enabled,
             Capability::LineStipple => self.line_stipple.enabled,
         })

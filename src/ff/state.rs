@@ -24,6 +24,7 @@ use super::matrix::{
 use super::pixels::{PixelTransfer, PixelZoom};
 use super::point::PointParams;
 use super::raster::RasterPos;
+use super::sample_coverage::SampleCoverage;
 use super::stipple::{LineStipple, PolygonStipple};
 use super::texenv::TexEnv;
 use super::texgen::{TexCoord, TexGen};
@@ -64,6 +65,8 @@ pub struct CurrentValues {
     pub secondary_color: Vec4,
     /// glFogCoord (GL 1.4 §2.7), as given. GL default: 0.
     pub fog_coord: f32,
+    /// glIndex: the current colour index, as given (`color_index`). GL default: 1.
+    pub index: f32,
 }
 
 impl CurrentValues {
@@ -74,6 +77,7 @@ impl CurrentValues {
         edge_flag: true,
         secondary_color: Vec4::W,
         fog_coord: 0.0,
+        index: 1.0,
     };
 }
 
@@ -234,6 +238,12 @@ pub struct FixedState {
     pub color_sum: bool,
     /// MULTISAMPLE. GL default: TRUE (no effect on single-sample buffers).
     pub multisample: bool,
+    /// glSampleCoverage and the sample enables (`sample_coverage`): state only.
+    pub sample_coverage: SampleCoverage,
+    /// glClearIndex, as Mesa stores it (`color_index`). GL default: 0.
+    pub clear_index: u32,
+    /// glIndexMask. GL default: all ones.
+    pub index_mask: u32,
     /// GL default: colour (0,0,0,0), depth 1, stencil 0.
     pub clear: ClearValues,
 
@@ -338,6 +348,9 @@ impl FixedState {
             smooth: Smoothing::default(),
             color_sum: false,
             multisample: true,
+            sample_coverage: SampleCoverage::DEFAULT,
+            clear_index: 0,
+            index_mask: u32::MAX,
             hints: Hints::DEFAULT,
             raster: RasterPos::DEFAULT,
             pixel_transfer: PixelTransfer::DEFAULT,

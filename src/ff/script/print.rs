@@ -202,6 +202,12 @@ fn call(c: &Command) -> String {
             )
         }
         Command::FogCoord(x) => format!("{}({})", Entry::FogCoordf, f(*x)),
+        Command::Index(c) => format!("{}({})", Entry::Indexf, f(*c)),
+        Command::ClearIndex(c) => format!("{}({})", Entry::ClearIndex, f(*c)),
+        Command::IndexMask(m) => format!("{}(0x{m:X})", Entry::IndexMask),
+        Command::SampleCoverage { value, invert } => {
+            format!("{}({}, {})", Entry::SampleCoverage, f(*value), b(*invert))
+        }
         Command::TexCoord { unit, coord } => format!(
             "{}({}, {})",
             Entry::MultiTexCoord4f,

@@ -295,6 +295,14 @@ fn sample_commands() -> Vec<Command> {
         Command::SecondaryColor(Vec4::new(0.5, -1.0, 2.0, 1.0)),
         Command::FogCoord(-3.25),
         Command::Fog(FogParam::CoordSource(FogCoordSource::FogCoord)),
+        Command::Index(-2.5),
+        Command::ClearIndex(7.0),
+        Command::IndexMask(0xF0F0_F0F0),
+        Command::SampleCoverage {
+            value: 0.25,
+            invert: true,
+        },
+        Command::Enable(Capability::SampleAlphaToCoverage),
         Command::TexCoord {
             unit: 2,
             coord: Vec4::new(0.5, 0.5, 0.0, 1.0),

@@ -95,6 +95,12 @@ impl Native {
             Command::EdgeFlag(on) => unsafe { g.EdgeFlag(u8::from(*on)) },
             Command::SecondaryColor(c) => unsafe { g.SecondaryColor3f(c.x, c.y, c.z) },
             Command::FogCoord(x) => unsafe { g.FogCoordf(*x) },
+            Command::Index(c) => unsafe { g.Indexf(*c) },
+            Command::ClearIndex(c) => unsafe { g.ClearIndex(*c) },
+            Command::IndexMask(m) => unsafe { g.IndexMask(*m) },
+            Command::SampleCoverage { value, invert } => unsafe {
+                g.SampleCoverage(*value, u8::from(*invert))
+            },
             Command::TexCoord { unit, coord: t } => unsafe {
                 g.MultiTexCoord4f(conv::texture_unit(*unit), t.x, t.y, t.z, t.w)
             },

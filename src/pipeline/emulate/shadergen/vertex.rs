@@ -127,13 +127,14 @@ const SATURATE_LIT: &str =
 
 /// The secondary colour of an unlit vertex (GL 1.4 §2.7): its attribute (under flat
 /// shading the provoking vertex's, as for the primary colour), clamped as every colour
-/// leaving the vertex stage is.
+/// leaving the vertex stage is. Its alpha is 0, as the lit secondary colour's: the colour
+/// sum adds RGB only, and the register combiners' SECONDARY_COLOR alpha is undefined.
 fn emit_secondary_attribute(w: &mut GlslWriter, flat: &str) {
     w.declare(&format!(
         "layout(location = {ATTRIB_SECONDARY}) in vec4 a_secondary;"
     ));
     w.declare(&format!("{flat}out vec4 v_secondary;"));
-    w.line("v_secondary = saturate(a_secondary);");
+    w.line("v_secondary = vec4(saturate(a_secondary).rgb, 0.0);");
 }
 
 /// The edge attribute of split polygons, passed on without perspective so a component
