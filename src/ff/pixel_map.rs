@@ -9,10 +9,13 @@
 //! glPixelMapuiv and glPixelMapusv give a colour map c/(2³² − 1) and c/(2¹⁶ − 1), an index
 //! map the integers themselves.
 //!
-//! Lookup of a colour component c in [0, 1] (after scale, bias and the clamp): the entry
-//! `floor(c · (size − 1))`. GL 1.5 §3.6.5 says the nearest entry; Mesa 22.3 on llvmpipe
-//! truncates in glDrawPixels and glCopyPixels alike (measured, tests/c/pixelstore.c: red
-//! 51/255 through a 5-entry map takes entry 0), and the layer follows Mesa.
+//! Lookup of a colour component c in [0, 1] (after scale, bias and the clamp): GL 1.5
+//! §3.6.5 says the nearest entry. Mesa 22.3 on llvmpipe takes two rules, and the layer
+//! follows both: glDrawPixels and glCopyPixels take the entry `floor(c · (size − 1))`
+//! (their maps are sampled as a texture; measured, tests/c/pixelstore.c: red 51/255
+//! through a 5-entry map takes entry 0), glReadPixels and the texture images
+//! (glTexImage, glCopyTexImage) the nearest, `roundEven(c · (size − 1))` (Mesa's
+//! `_mesa_map_rgba`; measured, tests/c/transfer.c: the same red takes entry 1).
 
 use std::sync::Arc;
 
@@ -156,7 +159,27 @@ impl PixelMaps {
         t.get(i.min(t.len() - 1)).copied().unwrap_or(0.0)
     }
 
-    /// An RGBA colour through R_TO_R, G_TO_G, B_TO_B and A_TO_A (§3.6.5, MAP_COLOR).
+    /// One component c through `map` by the nearest entry, roundEven(c · (size − 1)): the
+    /// rule of images read and texture images (see the module note).
+    pub fn lookup_nearest(&self, map: PixelMapName, c: f32) -> f32 {
+        let t = self.get(map);
+        let i = (c.clamp(0.0, 1.0) * (t.len() - 1) as f32).round_ties_even() as usize;
+        t.get(i.min(t.len() - 1)).copied().unwrap_or(0.0)
+    }
+
+    /// An RGBA colour through the four colour maps by the nearest entry (glReadPixels,
+    /// texture images).
+    pub fn color_nearest(&self, c: glam::Vec4) -> glam::Vec4 {
+        glam::Vec4::new(
+            self.lookup_nearest(PixelMapName::RToR, c.x),
+            self.lookup_nearest(PixelMapName::GToG, c.y),
+            self.lookup_nearest(PixelMapName::BToB, c.z),
+            self.lookup_nearest(PixelMapName::AToA, c.w),
+        )
+    }
+
+    /// An RGBA colour through R_TO_R, G_TO_G, B_TO_B and A_TO_A (§3.6.5, MAP_COLOR), as
+    /// glDrawPixels and glCopyPixels take them.
     pub fn color(&self, c: glam::Vec4) -> glam::Vec4 {
         glam::Vec4::new(
             self.lookup(PixelMapName::RToR, c.x),

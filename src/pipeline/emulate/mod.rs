@@ -331,7 +331,7 @@ impl Issue for Emulate {
             }
             Command::ReadPixels(r) => {
                 let mut readback = read_pixels(gl, r);
-                if let Some(bytes) = pixels::transferred_read(gl, r, &state.pixel_transfer) {
+                if let Some(bytes) = pixels::transferred_read(gl, r, &state.pixel_transfer, &state.pixel_maps) {
                     readback.bytes = bytes;
                 }
                 core.readbacks.insert(r.slot, readback);

@@ -35,6 +35,7 @@ use crate::ff::{
     Primitive, ReadPixels, StencilOp, StencilTest, Viewport, MAX_CLIP_PLANES,
 };
 use crate::pipeline::PipelineError;
+use crate::ff::pixel_map::PixelMaps;
 
 /// The texture unit of a pixel rectangle's image (not a fixed-function unit, not the
 /// scratch unit of `textures`).
@@ -155,13 +156,20 @@ fn stencil_pass(s: &FixedState, bit: u32) -> FixedState {
 }
 
 /// glReadPixels under a pixel transfer that is not the identity (GL 1.5 §4.3.2: the
-/// scales and biases apply to colours read, DEPTH_SCALE and DEPTH_BIAS to depths): the
-/// colour read as RGBA floats, scaled and biased on the CPU, clamped for fixed-point types,
-/// L = min(R + G + B, 1) and stored in the requested type ([`encode_even`]); depth
-/// read as floats in FLOAT only. `None` for the identity transfer or another format or
-/// type (read as they are).
-pub fn transferred_read(gl: &glow::Context, r: &ReadPixels, t: &PixelTransfer) -> Option<Vec<u8>> {
-    let colour_identity = t.scale == Vec4::ONE && t.bias == Vec4::ZERO;
+/// scales and biases apply to colours read, then MAP_COLOR's maps by the nearest entry
+/// (`ff::pixel_map`), DEPTH_SCALE and DEPTH_BIAS to depths): the colour read as RGBA
+/// floats, transferred on the CPU, clamped for fixed-point types, L = R + G + B clamped to
+/// [0, 1] for every type (Mesa's `_mesa_pack_rgba_span_float`; measured, a FLOAT read of
+/// RED_SCALE 2 over (0.625, 0.5, 0.25) gives L = 1) and stored in the requested type
+/// ([`encode_even`]); depth read as floats in FLOAT only. `None` for the identity transfer
+/// or another format or type (read as they are).
+pub fn transferred_read(
+    gl: &glow::Context,
+    r: &ReadPixels,
+    t: &PixelTransfer,
+    maps: &PixelMaps,
+) -> Option<Vec<u8>> {
+    let colour_identity = t.scale == Vec4::ONE && t.bias == Vec4::ZERO && !t.map_color;
     let depth_identity = t.depth_scale == 1.0 && t.depth_bias == 0.0;
     let read_as = |format, ty| super::read(gl, &ReadPixels { format, ty, ..*r });
     let f32s = |b: Vec<u8>| -> Vec<f32> {
@@ -184,13 +192,14 @@ pub fn transferred_read(gl: &glow::Context, r: &ReadPixels, t: &PixelTransfer) -
             for p in rgba.chunks_exact(4) {
                 // FLOAT reads are not clamped (Mesa, as GL 3.0's CLAMP_READ_COLOR =
                 // FIXED_ONLY: measured, RED_SCALE 2 on 0.625 reads 1.25); fixed-point ones are.
-                let c = Vec4::from_slice(p) * t.scale + t.bias;
-                let (c, l) = if r.ty == PixelType::Float {
-                    (c, c.x + c.y + c.z)
-                } else {
-                    let c = c.clamp(Vec4::ZERO, Vec4::ONE);
-                    (c, (c.x + c.y + c.z).min(1.0))
-                };
+                let mut c = Vec4::from_slice(p) * t.scale + t.bias;
+                if t.map_color {
+                    c = maps.color_nearest(c);
+                }
+                if r.ty != PixelType::Float {
+                    c = c.clamp(Vec4::ZERO, Vec4::ONE);
+                }
+                let l = (c.x + c.y + c.z).clamp(0.0, 1.0);
                 let values: Vec<f32> = match format {
                     PixelFormat::Rgba => c.to_array().to_vec(),
                     PixelFormat::Rgb => vec![c.x, c.y, c.z],
