@@ -537,9 +537,17 @@ impl Context {
         let shape = PixelShape::groups(width, 0, r.format, r.ty);
         let row = shape.group_bytes() * r.width as usize;
         let height = r.bytes.len().checked_div(row).unwrap_or(0);
-        let shape = PixelShape {
-            height: i32::try_from(height).unwrap_or(i32::MAX),
-            ..shape
+        let shape = match r.depth {
+            // A 3D level: its images, laid out by PACK_IMAGE_HEIGHT and PACK_SKIP_IMAGES.
+            Some(depth) => PixelShape {
+                height: i32::try_from(r.height).unwrap_or(i32::MAX),
+                depth: Some(i32::try_from(depth).unwrap_or(i32::MAX)),
+                ..shape
+            },
+            None => PixelShape {
+                height: i32::try_from(height).unwrap_or(i32::MAX),
+                ..shape
+            },
         };
         self.pack_out(dst, &r.bytes, shape);
     }

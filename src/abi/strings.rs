@@ -24,6 +24,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_stencil_wrap",
     "GL_NV_register_combiners",
     "GL_SGIS_generate_mipmap",
+    "GL_EXT_texture3D",
     "GL_EXT_framebuffer_blit",
     "GL_EXT_framebuffer_object",
     "GL_ARB_vertex_buffer_object",

@@ -527,7 +527,7 @@ macro_rules! gl_entry_table {
         GetMapdv = glGetMapdv(Left; target: GLenum, query: GLenum, v: *mut GLdouble);
         GetMapiv = glGetMapiv(Left; target: GLenum, query: GLenum, v: *mut GLint);
         // GL 1.2–1.5 beyond GL 1.1. Those marked Left are not in the model yet (README,
-        // "Left out"): 3D and compressed textures.
+        // "Left out"): compressed textures.
         // Exported, so a program that calls them links and gets GL_INVALID_OPERATION
         // instead of a missing symbol.
         BeginQuery = glBeginQuery(Script; target: GLenum, id: GLuint);
@@ -538,7 +538,7 @@ macro_rules! gl_entry_table {
         CompressedTexSubImage1D = glCompressedTexSubImage1D(Left; target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CompressedTexSubImage2D = glCompressedTexSubImage2D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CompressedTexSubImage3D = glCompressedTexSubImage3D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
-        CopyTexSubImage3D = glCopyTexSubImage3D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+        CopyTexSubImage3D = glCopyTexSubImage3D(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
         DeleteQueries = glDeleteQueries(Script; n: GLsizei, ids: *const GLuint);
         EndQuery = glEndQuery(Script; target: GLenum);
         FogCoordPointer = glFogCoordPointer(Script; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
@@ -586,8 +586,8 @@ macro_rules! gl_entry_table {
         SecondaryColor3us = glSecondaryColor3us(Script; red: GLushort, green: GLushort, blue: GLushort);
         SecondaryColor3usv = glSecondaryColor3usv(Script; v: *const GLushort);
         SecondaryColorPointer = glSecondaryColorPointer(Script; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
-        TexImage3D = glTexImage3D(Left; target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
-        TexSubImage3D = glTexSubImage3D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
+        TexImage3D = glTexImage3D(Script; target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
+        TexSubImage3D = glTexSubImage3D(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
         BeginQueryARB = glBeginQueryARB(Script; target: GLenum, id: GLuint);
         CompressedTexImage1DARB = glCompressedTexImage1DARB(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
         CompressedTexImage2DARB = glCompressedTexImage2DARB(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
@@ -595,7 +595,7 @@ macro_rules! gl_entry_table {
         CompressedTexSubImage1DARB = glCompressedTexSubImage1DARB(Left; target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CompressedTexSubImage2DARB = glCompressedTexSubImage2DARB(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CompressedTexSubImage3DARB = glCompressedTexSubImage3DARB(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
-        CopyTexSubImage3DEXT = glCopyTexSubImage3DEXT(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+        CopyTexSubImage3DEXT = glCopyTexSubImage3DEXT(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
         DeleteQueriesARB = glDeleteQueriesARB(Script; n: GLsizei, ids: *const GLuint);
         EndQueryARB = glEndQueryARB(Script; target: GLenum);
         FogCoordPointerEXT = glFogCoordPointerEXT(Script; r#type: GLenum, stride: GLsizei, pointer: *const c_void);
@@ -631,8 +631,8 @@ macro_rules! gl_entry_table {
         SecondaryColor3usEXT = glSecondaryColor3usEXT(Script; red: GLushort, green: GLushort, blue: GLushort);
         SecondaryColor3usvEXT = glSecondaryColor3usvEXT(Script; v: *const GLushort);
         SecondaryColorPointerEXT = glSecondaryColorPointerEXT(Script; size: GLint, r#type: GLenum, stride: GLsizei, pointer: *const c_void);
-        TexImage3DEXT = glTexImage3DEXT(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
-        TexSubImage3DEXT = glTexSubImage3DEXT(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
+        TexImage3DEXT = glTexImage3DEXT(Script; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
+        TexSubImage3DEXT = glTexSubImage3DEXT(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
         Accum = glAccum(Script; op: GLenum, value: GLfloat);
         ClearAccum = glClearAccum(Script; red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat);
         EdgeFlag = glEdgeFlag(Script; flag: GLboolean);
@@ -1076,7 +1076,10 @@ impl Command {
             Command::TexImage(t) => match t.target {
                 super::texture::TextureTarget::Texture1D => Entry::TexImage1D,
                 super::texture::TextureTarget::Texture2D => Entry::TexImage2D,
+                super::texture::TextureTarget::Texture3D => Entry::TexImage3D,
             },
+            Command::ProxyTexImage(_) => Entry::TexImage3D,
+            Command::TexSubImage3D(_) => Entry::TexSubImage3D,
             Command::TexSubImage2D(_) => Entry::TexSubImage2D,
             Command::CopyTexImage2D(_) => Entry::CopyTexImage2D,
             Command::TexParameter { param, .. } => match param {
@@ -1171,6 +1174,7 @@ impl Command {
             Command::CopyTexSubImage(c) => match c.target {
                 super::texture::TextureTarget::Texture1D => Entry::CopyTexSubImage1D,
                 super::texture::TextureTarget::Texture2D => Entry::CopyTexSubImage2D,
+                super::texture::TextureTarget::Texture3D => Entry::CopyTexSubImage3D,
             },
             Command::GetTexImage(_) => Entry::GetTexImage,
             Command::RasterPos(_) => Entry::RasterPos4f,

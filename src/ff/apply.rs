@@ -17,8 +17,11 @@ use super::light::MAX_LIGHTS;
 use super::matrix::{frustum, ortho, plane_to_eye, rotate, scale, translate};
 use super::state::{FixedState, PolygonModes, MAX_TEXTURE_UNITS};
 use super::texture::{
-    blit, check_format_pair, check_image_size, image_size, volume_size, PixelData, TexLevel,
-    TextureObject, TextureTarget,
+    check_format_pair, check_image_size, volume_size, PixelData, TexLevel, TextureObject,
+    TextureTarget,
+};
+use super::texture_volume::{
+    blit_volume, check_sub_volume, check_volume_image, check_volume_level,
 };
 
 impl FixedState {
@@ -125,6 +128,9 @@ impl FixedState {
                             }
                             if u.bound_2d == name {
                                 u.bound_2d = 0;
+                            }
+                            if u.bound_3d == name {
+                                u.bound_3d = 0;
                             }
                         }
                     }
@@ -309,6 +315,8 @@ impl FixedState {
             }
             Command::PushAttrib(mask) => self.push_attrib(*mask)?,
             Command::TexSubImage1D(t) => self.tex_sub_image(t, TextureTarget::Texture1D)?,
+            Command::TexSubImage3D(t) => self.tex_sub_image(t, TextureTarget::Texture3D)?,
+            Command::ProxyTexImage(t) => self.proxy_tex_image(t)?,
             Command::CopyTexImage1D(c) => {
                 self.check_read_framebuffer(None)?;
                 self.copy_tex_image_1d(c)?
@@ -385,6 +393,7 @@ impl FixedState {
             Capability::RescaleNormal => self.rescale_normal = on,
             Capability::Texture1D => self.units[unit].texture_1d = on,
             Capability::Texture2D => self.units[unit].texture_2d = on,
+            Capability::Texture3D => self.units[unit].texture_3d = on,
             Capability::TextureGen(c) => self.units[unit].texgen[c.index()].enabled = on,
             Capability::AlphaTest => self.alpha_test.enabled = on,
             Capability::DepthTest => self.depth_test.enabled = on,
@@ -454,6 +463,7 @@ impl FixedState {
         match target {
             TextureTarget::Texture1D => u.bound_1d = name,
             TextureTarget::Texture2D => u.bound_2d = name,
+            TextureTarget::Texture3D => u.bound_3d = name,
         }
         Ok(())
     }
@@ -467,11 +477,17 @@ impl FixedState {
     }
 
     fn tex_image(&mut self, t: &TexImage) -> GlResult {
-        check_image_size(t.level, t.width, t.height, t.border)?;
+        match t.target {
+            TextureTarget::Texture3D => check_volume_image(t)?,
+            _ => check_image_size(t.level, t.width, t.height, t.border)?,
+        }
         if t.target == TextureTarget::Texture1D && t.height != 1 {
             return Err(GlError::invalid_value("TexImage1D has height 1"));
         }
         check_format_pair(t.internal_format, t.format)?;
+        if t.target == TextureTarget::Texture3D {
+            check_volume_level(t)?;
+        }
         if let Some(d) = t.data.bytes() {
             if d.len() != volume_size(t.format, t.ty, t.width, t.height, t.depth) {
                 return Err(GlError::invalid_value(
@@ -498,45 +514,54 @@ impl FixedState {
         Ok(())
     }
 
+    /// glTexSubImage1D/2D/3D (1D and 2D: z 0, depth 1). A 3D call checks its level
+    /// range and sizes first, as Mesa does (INVALID_VALUE before a missing level's
+    /// INVALID_OPERATION).
     fn tex_sub_image(&mut self, t: &TexSubImage, target: TextureTarget) -> GlResult {
+        if target == TextureTarget::Texture3D {
+            check_sub_volume(t)?;
+        }
         let tex = self.bound_mut(target)?;
         let level = tex.level_mut(t.level).ok_or(GlError::invalid_operation(
             "TexSubImage2D on an unspecified level",
         ))?;
         if t.width < 0
             || t.height < 0
+            || t.depth < 0
             || t.x < 0
             || t.y < 0
+            || t.z < 0
             || t.x + t.width > level.width
             || t.y + t.height > level.height
+            || t.z + t.depth > level.depth
         {
             return Err(GlError::invalid_value(
                 "TexSubImage2D region outside the image",
             ));
         }
         check_format_pair(level.internal_format, t.format)?;
-        if t.data.len() != image_size(t.format, t.ty, t.width, t.height) {
+        if t.data.len() != volume_size(t.format, t.ty, t.width, t.height, t.depth) {
             return Err(GlError::invalid_value(
-                "pixel data length differs from width·height·components·size",
+                "pixel data length differs from width·height·depth·components·size",
             ));
         }
-        let pixel = t.format.components() * t.ty.size();
-        let rect = [t.x, t.y, t.width, t.height].map(|v| v as usize);
         level.data = match level.data.take() {
             Some(d) if d.format == t.format && d.ty == t.ty => {
                 let mut bytes = d.bytes.to_vec();
-                blit(&mut bytes, level.width as usize, &t.data, rect, pixel);
+                blit_volume(&mut bytes, (level.width, level.height), t);
                 Some(PixelData {
                     bytes: Arc::from(bytes),
                     ..d
                 })
             }
             // The whole image replaced: the new bytes are the CPU copy.
-            _ if t.width == level.width && t.height == level.height => Some(PixelData {
-                format: t.format,
-                ty: t.ty,
-                bytes: t.data.clone(),
-            }),
+            _ if (t.width, t.height, t.depth) == (level.width, level.height, level.depth) => {
+                Some(PixelData {
+                    format: t.format,
+                    ty: t.ty,
+                    bytes: t.data.clone(),
+                })
+            }
             // Mixed formats or unknown texels: only the GPU copy is authoritative.
             _ => None,
         };

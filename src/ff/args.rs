@@ -21,11 +21,15 @@ use super::texture::{PixelFormat, PixelType};
 
 /// What a pixel pointer holds, so that a front end that receives only a pointer knows how
 /// many bytes to read (GL 1.5 §3.6.4: width × height groups, or bits for a bitmap, laid
-/// out by the unpack parameters: `pixel_layout`).
+/// out by the unpack parameters: `pixel_layout`; GL 1.2 §3.8.1: depth images of them).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PixelShape {
     pub width: i32,
     pub height: i32,
+    /// `Some(depth)`: the images of a 3D call (glTexImage3D, glTexSubImage3D, glGetTexImage
+    /// of a 3D level), which IMAGE_HEIGHT and SKIP_IMAGES lay out; `None`: one rectangle,
+    /// which those parameters do not move.
+    pub depth: Option<i32>,
     /// For a bitmap, LUMINANCE (unused).
     pub format: PixelFormat,
     /// For a bitmap, UNSIGNED_BYTE (unused).
@@ -46,9 +50,18 @@ impl PixelShape {
         Self {
             width,
             height,
+            depth: None,
             format,
             ty,
             kind: ShapeKind::Groups,
+        }
+    }
+
+    /// `depth` images of `width × height` groups of `format` in `ty` (GL 1.2's 3D calls).
+    pub fn volume(width: i32, height: i32, depth: i32, format: PixelFormat, ty: PixelType) -> Self {
+        Self {
+            depth: Some(depth),
+            ..Self::groups(width, height, format, ty)
         }
     }
 
@@ -57,6 +70,7 @@ impl PixelShape {
         Self {
             width,
             height,
+            depth: None,
             format: PixelFormat::Luminance,
             ty: PixelType::UnsignedByte,
             kind: ShapeKind::Bitmap,

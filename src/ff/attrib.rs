@@ -277,6 +277,7 @@ impl FixedState {
         for (u, saved) in self.units.iter_mut().zip(&s.units) {
             u.texture_1d = saved.texture_1d;
             u.texture_2d = saved.texture_2d;
+            u.texture_3d = saved.texture_3d;
             for (g, sg) in u.texgen.iter_mut().zip(&saved.texgen) {
                 g.enabled = sg.enabled;
             }
@@ -313,7 +314,7 @@ impl FixedState {
         self.units = s.units;
         self.register_combiners = s.register_combiners;
         for unit in &s.units {
-            for target in [TextureTarget::Texture1D, TextureTarget::Texture2D] {
+            for target in TextureTarget::ALL {
                 let name = unit.bound(target);
                 if let (Some(saved), Some(now)) =
                     (s.texture(target, name), self.texture_mut(target, name))
@@ -578,6 +579,7 @@ impl FixedState {
     fn unit_enable_commands(&self, unit: &TextureUnit, out: &mut Vec<Command>) {
         out.push(toggle(Capability::Texture1D, unit.texture_1d));
         out.push(toggle(Capability::Texture2D, unit.texture_2d));
+        out.push(toggle(Capability::Texture3D, unit.texture_3d));
         for c in TexCoord::ALL {
             out.push(toggle(
                 Capability::TextureGen(c),
@@ -649,7 +651,7 @@ impl FixedState {
         out.push(Command::LoadIdentity);
         for (u, unit) in self.units.iter().enumerate() {
             out.push(Command::ActiveTexture(u as u8));
-            for target in [TextureTarget::Texture1D, TextureTarget::Texture2D] {
+            for target in TextureTarget::ALL {
                 let name = unit.bound(target);
                 out.push(Command::BindTexture { target, name });
                 if let Some(t) = self.texture(target, name) {
@@ -659,6 +661,7 @@ impl FixedState {
                         TexParam::MagFilter(p.mag_filter),
                         TexParam::WrapS(p.wrap_s),
                         TexParam::WrapT(p.wrap_t),
+                        TexParam::WrapR(p.wrap_r),
                         TexParam::BorderColor(p.border_color),
                         TexParam::CompareMode(p.compare_mode),
                         TexParam::CompareFunc(p.compare_func),

@@ -3,7 +3,7 @@
 
 use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
-use super::glenum::Family;
+use super::glenum::{Family, GlEnum};
 use super::*;
 
 fn volume<A: Args>(c: &A) -> Result<ViewVolume, A::Error> {
@@ -24,6 +24,7 @@ pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
     for area in [
         super::calls_variants::variants,
         super::texture_calls::texture_calls,
+        super::texture_volume::volume_calls,
         transform_and_fragment,
         lighting,
         texturing,
@@ -328,6 +329,7 @@ const TEX_PARAMS: &[&str] = &[
     "GL_TEXTURE_MAG_FILTER",
     "GL_TEXTURE_WRAP_S",
     "GL_TEXTURE_WRAP_T",
+    "GL_TEXTURE_WRAP_R",
     "GL_TEXTURE_COMPARE_MODE",
     "GL_TEXTURE_COMPARE_FUNC",
     "GL_DEPTH_TEXTURE_MODE",
@@ -504,14 +506,7 @@ fn target_is<A: Args>(c: &A, want: TextureTarget) -> Result<(), A::Error> {
     if t == want {
         Ok(())
     } else {
-        Err(c.unknown(
-            0,
-            vec![if want == TextureTarget::Texture1D {
-                "GL_TEXTURE_1D"
-            } else {
-                "GL_TEXTURE_2D"
-            }],
-        ))
+        Err(c.unknown(0, vec![want.gl_name().unwrap_or("GL_TEXTURE_2D")]))
     }
 }
 
@@ -525,6 +520,7 @@ pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
         "GL_TEXTURE_MAG_FILTER" => TexParam::MagFilter(c.enm(2)?),
         "GL_TEXTURE_WRAP_S" => TexParam::WrapS(c.enm(2)?),
         "GL_TEXTURE_WRAP_T" => TexParam::WrapT(c.enm(2)?),
+        "GL_TEXTURE_WRAP_R" => TexParam::WrapR(c.enm(2)?),
         "GL_TEXTURE_COMPARE_MODE" => TexParam::CompareMode(c.enm(2)?),
         "GL_TEXTURE_COMPARE_FUNC" => TexParam::CompareFunc(c.enm(2)?),
         "GL_DEPTH_TEXTURE_MODE" => TexParam::DepthTextureMode(c.enm(2)?),

@@ -52,6 +52,8 @@ pub enum Capability {
     Texture1D,
     /// Of the active texture unit.
     Texture2D,
+    /// Of the active texture unit (GL 1.2).
+    Texture3D,
     /// TEXTURE_GEN_S/T/R/Q of the active texture unit.
     TextureGen(TexCoord),
     AlphaTest,
@@ -100,7 +102,7 @@ pub enum Capability {
     SampleAlphaToOne,
 }
 
-/// glTexImage1D / glTexImage2D (`depth` is glTexImage3D's, not yet routed).
+/// glTexImage1D / glTexImage2D / glTexImage3D.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TexImage {
     pub target: TextureTarget,
@@ -159,8 +161,8 @@ impl From<Vec<u8>> for TexData {
     }
 }
 
-/// glTexSubImage1D/2D (the target is the Command's: TexSubImage1D, TexSubImage2D); `z`
-/// and `depth` are glTexSubImage3D's, not yet routed.
+/// glTexSubImage1D/2D/3D (the target is the Command's: TexSubImage1D, TexSubImage2D,
+/// TexSubImage3D); for 3D the data holds `depth` images of `height` rows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TexSubImage {
     pub level: i32,
@@ -457,6 +459,11 @@ pub enum Command {
     CopyTexImage1D(CopyTexImage),
     CopyTexSubImage(super::texture_calls::CopyTexSubImage),
     GetTexImage(super::texture_calls::GetTexImage),
+    // GL 1.2's 3D textures (ff::texture_volume).
+    /// glTexSubImage3D (target TEXTURE_3D).
+    TexSubImage3D(TexSubImage),
+    /// glTexImage3D(PROXY_TEXTURE_3D, …): `target` is the target proxied (TEXTURE_3D).
+    ProxyTexImage(TexImage),
     // Raster position and pixel rectangles (ff::raster, ff::pixels).
     /// glRasterPos4f: the point in object coordinates (§2.13).
     RasterPos(Vec4),

@@ -121,6 +121,11 @@ impl Client {
                         None => return Err(e),
                     },
                 };
+                // A proxy image is not compiled: GL runs it at once (Mesa's save_TexImage3D).
+                if let [Item::Command(proxy @ Command::ProxyTexImage(_))] = items.as_slice() {
+                    out.push(proxy.clone());
+                    return Ok(Reply::None);
+                }
                 if mode == ListMode::CompileAndExecute {
                     self.run(&items, 0, *current, out);
                 }

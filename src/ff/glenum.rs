@@ -188,6 +188,7 @@ gl_enums!(Capability {
     RESCALE_NORMAL => Capability::RescaleNormal,
     TEXTURE_1D => Capability::Texture1D,
     TEXTURE_2D => Capability::Texture2D,
+    TEXTURE_3D => Capability::Texture3D,
     TEXTURE_GEN_S => Capability::TextureGen(TexCoord::S),
     TEXTURE_GEN_T => Capability::TextureGen(TexCoord::T),
     TEXTURE_GEN_R => Capability::TextureGen(TexCoord::R),
@@ -357,6 +358,7 @@ gl_enums!(ColorControl {
 gl_enums!(TextureTarget {
     TEXTURE_1D => TextureTarget::Texture1D,
     TEXTURE_2D => TextureTarget::Texture2D,
+    TEXTURE_3D => TextureTarget::Texture3D,
 });
 
 // Unsized names of the era are accepted as aliases of the sized formats they give.

@@ -70,6 +70,7 @@ pub mod pixel_layout;
 pub mod pixel_map;
 pub mod pixel_store;
 pub mod texture_calls;
+pub mod texture_volume;
 
 #[cfg(test)]
 mod state_tests;

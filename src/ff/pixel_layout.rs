@@ -13,6 +13,11 @@
 //! A bitmap (glBitmap, glPolygonStipple, glGetPolygonStipple) is one bit a pixel: a row is
 //! `a·⌈l / 8a⌉` bytes, SKIP_PIXELS counts bits, and LSB_FIRST says that bit 0 of a byte is
 //! its leftmost pixel. The tight form is most significant bit first, rows of ⌈width/8⌉.
+//!
+//! The `depth` images of a 3D call (GL 1.2 §3.8.1) follow one another `k·h_i` bytes apart,
+//! `h_i` = IMAGE_HEIGHT if > 0 else `height`, the first SKIP_IMAGES images skipped (Mesa's
+//! `_mesa_image_address`); a 2D call leaves both parameters out. The tight form is the
+//! images one after the other, the first (r = 0) first.
 
 use super::args::{PixelShape, ShapeKind};
 use super::pixel_store::{BitOrder, ByteOrder, Packing};
@@ -28,9 +33,26 @@ pub struct Layout {
     pub tight_row: usize,
     /// Bytes one row touches from its first byte.
     pub span: usize,
+    /// Rows of one image.
     pub rows: usize,
+    /// Images (1 for a 2D rectangle).
+    pub images: usize,
+    /// From one image's first row to the next's.
+    pub image_stride: usize,
     /// Bytes from the pointer to the end of the last row: what the memory must hold.
     pub extent: usize,
+}
+
+impl Layout {
+    /// Bytes of the tight form: every row of every image.
+    pub fn tight_len(&self) -> usize {
+        self.tight_row * self.rows * self.images
+    }
+
+    /// Where row `y` of image `z` starts, from the pointer.
+    fn row_start(&self, z: usize, y: usize) -> usize {
+        self.first + z * self.image_stride + y * self.stride
+    }
 }
 
 /// The layout of `shape` under `p`.
@@ -61,10 +83,28 @@ pub fn layout(shape: PixelShape, p: &Packing) -> Layout {
             )
         }
     };
-    let extent = if w == 0 || h == 0 {
+    // GL 1.2 §3.8.1: a 3D call's images, IMAGE_HEIGHT rows apart (the height when 0),
+    // after SKIP_IMAGES of them.
+    let (images, image_stride, first) = match shape.depth {
+        None => (1, h * stride, first),
+        Some(d) => {
+            let image_rows = if p.image_height > 0 {
+                p.image_height
+            } else {
+                h
+            };
+            let image_stride = image_rows * stride;
+            (
+                d.max(0) as usize,
+                image_stride,
+                first + p.skip_images * image_stride,
+            )
+        }
+    };
+    let extent = if w == 0 || h == 0 || images == 0 {
         0
     } else {
-        first + (h - 1) * stride + span
+        first + (images - 1) * image_stride + (h - 1) * stride + span
     };
     Layout {
         first,
@@ -72,6 +112,8 @@ pub fn layout(shape: PixelShape, p: &Packing) -> Layout {
         tight_row,
         span,
         rows: if w == 0 { 0 } else { h },
+        images,
+        image_stride,
         extent,
     }
 }
@@ -102,9 +144,9 @@ pub fn unpack(src: &[u8], shape: PixelShape, p: &Packing) -> Option<Vec<u8>> {
     if src.len() < lay.extent {
         return None;
     }
-    let mut out = Vec::with_capacity(lay.tight_row * lay.rows);
-    for y in 0..lay.rows {
-        let start = lay.first + y * lay.stride;
+    let mut out = Vec::with_capacity(lay.tight_len());
+    for (z, y) in (0..lay.images).flat_map(|z| (0..lay.rows).map(move |y| (z, y))) {
+        let start = lay.row_start(z, y);
         let row = src.get(start..start + lay.span)?;
         match shape.kind {
             ShapeKind::Groups => {
@@ -134,12 +176,13 @@ pub fn unpack(src: &[u8], shape: PixelShape, p: &Packing) -> Option<Vec<u8>> {
 /// the rows and groups are left as they were. `false` when `dst` or `tight` is short.
 pub fn pack(tight: &[u8], dst: &mut [u8], shape: PixelShape, p: &Packing) -> bool {
     let lay = layout(shape, p);
-    if dst.len() < lay.extent || tight.len() < lay.tight_row * lay.rows {
+    if dst.len() < lay.extent || tight.len() < lay.tight_len() {
         return false;
     }
-    for y in 0..lay.rows {
-        let src = &tight[y * lay.tight_row..(y + 1) * lay.tight_row];
-        let start = lay.first + y * lay.stride;
+    let rows = (0..lay.images).flat_map(|z| (0..lay.rows).map(move |y| (z, y)));
+    for (k, (z, y)) in rows.enumerate() {
+        let src = &tight[k * lay.tight_row..(k + 1) * lay.tight_row];
+        let start = lay.row_start(z, y);
         let row = &mut dst[start..start + lay.span];
         match shape.kind {
             ShapeKind::Groups => {

@@ -132,3 +132,40 @@ fn pack_is_unpack_inverted_and_leaves_the_gaps() {
         }
     }
 }
+
+/// GL 1.2 §3.8.1 as Mesa 22.3 reads and writes it (measured, `tests/c/tex3d.c`): a 2×2×2
+/// LUMINANCE volume with IMAGE_HEIGHT 3, SKIP_IMAGES 1 and SKIP_ROWS 1 starts 1·6 + 1·2
+/// bytes in, its images 6 bytes apart; a 2D rectangle ignores both image parameters.
+#[test]
+fn images_of_a_volume_lie_image_height_rows_apart() {
+    let p = Packing {
+        image_height: 3,
+        skip_images: 1,
+        skip_rows: 1,
+        ..Packing::aligned(1)
+    };
+    let l = PixelShape::volume(2, 2, 2, PixelFormat::Luminance, PixelType::UnsignedByte);
+    let lay = layout(l, &p);
+    assert_eq!((lay.first, lay.image_stride, lay.images), (8, 6, 2));
+    assert_eq!(lay.extent, 8 + 6 + 2 + 2);
+    let src: Vec<u8> = (0..=255).collect();
+    assert_eq!(unpack(&src, l, &p).unwrap(), [8, 9, 10, 11, 14, 15, 16, 17]);
+    let flat = PixelShape::groups(2, 2, PixelFormat::Luminance, PixelType::UnsignedByte);
+    assert_eq!(unpack(&src, flat, &p).unwrap(), [2, 3, 4, 5]);
+    // Packed: bytes between the images are left alone.
+    let pack_p = Packing {
+        image_height: 3,
+        skip_images: 1,
+        ..Packing::aligned(1)
+    };
+    let mut dst = vec![0xEE; 20];
+    assert!(pack(&[8, 9, 10, 11, 14, 15, 16, 17], &mut dst, l, &pack_p));
+    let e = 0xEE;
+    assert_eq!(
+        dst,
+        [e, e, e, e, e, e, 8, 9, 10, 11, e, e, 14, 15, 16, 17, e, e, e, e]
+    );
+    // An empty volume reads nothing.
+    let empty = PixelShape::volume(2, 2, 0, PixelFormat::Luminance, PixelType::UnsignedByte);
+    assert_eq!(layout(empty, &p).extent, 0);
+}

@@ -7,8 +7,9 @@
 //! bit first (`pixel_layout` does the address arithmetic).
 //!
 //! Every parameter of Table 6.20 is kept, for both directions: ALIGNMENT, ROW_LENGTH,
-//! SKIP_ROWS, SKIP_PIXELS, SWAP_BYTES, LSB_FIRST, and GL 1.2's IMAGE_HEIGHT and SKIP_IMAGES
-//! (state only: the layer has no 3D textures, so no call reads images of images).
+//! SKIP_ROWS, SKIP_PIXELS, SWAP_BYTES, LSB_FIRST, and GL 1.2's IMAGE_HEIGHT and SKIP_IMAGES,
+//! which only the 3D calls read (glTexImage3D, glTexSubImage3D, glGetTexImage of a 3D
+//! level).
 
 use super::args::Args;
 
@@ -39,9 +40,9 @@ pub struct Packing {
     pub skip_rows: usize,
     /// Pixels (bits, for a bitmap) skipped at each row's start. GL default: 0.
     pub skip_pixels: usize,
-    /// Rows of one image of a 3D texture; 0: the height. GL default: 0. State only.
+    /// Rows of one image of a 3D texture; 0: the height. GL default: 0.
     pub image_height: usize,
-    /// Images skipped before the first. GL default: 0. State only.
+    /// Images of a 3D texture skipped before the first. GL default: 0.
     pub skip_images: usize,
     /// GL default: FALSE.
     pub swap_bytes: ByteOrder,

@@ -34,7 +34,7 @@
 //! scissor, clip planes, logic op, blend equation and colour, hints, pixel store and
 //! transfer, the raster position, client state (CLIENT_ACTIVE_TEXTURE, arrays), framebuffer
 //! bits, implementation limits other than those listed, COLOR_INDEXES, TEXTURE_PRIORITY,
-//! TEXTURE_RESIDENT, TEXTURE_WRAP_R.
+//! TEXTURE_RESIDENT.
 //!
 //! Adding a pname: one line in the [`PNAMES`] table (or in the marked block at its end) —
 //! the GL token without `GL_`, and a function from `&FixedState` to its values built with
@@ -58,7 +58,7 @@ use super::pixel_map::{PixelMapName, MAX_PIXEL_MAP_TABLE};
 use super::state::{FixedState, MAX_TEXTURE_UNITS};
 use super::texenv::{CombineSource, TexEnv};
 use super::texgen::TexCoord;
-use super::texture::{TexFormat, TextureTarget, MAX_TEXTURE_LEVEL, MAX_TEXTURE_SIZE};
+use super::texture::{TexFormat, TextureTarget, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE};
 
 /// GL_TEXTURE_COMPARE_FAIL_VALUE_ARB (ARB_shadow_ambient, outside the registry subset
 /// `build.rs` reads).
@@ -317,6 +317,7 @@ pnames! {
     ACTIVE_TEXTURE => |s| vec![QueryValue::Enum(r::TEXTURE0 + s.active_unit() as u32)],
     TEXTURE_BINDING_1D => |s| name(s.units[s.active_unit()].bound_1d),
     TEXTURE_BINDING_2D => |s| name(s.units[s.active_unit()].bound_2d),
+    TEXTURE_BINDING_3D => |s| name(s.units[s.active_unit()].bound_3d),
 
     // Per-fragment operations (Table 6.21) and framebuffer control (Table 6.22).
     ALPHA_TEST_FUNC => |s| enm(s.alpha_test.value.func),
@@ -392,6 +393,7 @@ pnames! {
     MAX_LIGHTS => |_| count(MAX_LIGHTS),
     MAX_TEXTURE_UNITS => |_| count(MAX_TEXTURE_UNITS),
     MAX_TEXTURE_SIZE => |_| int(MAX_TEXTURE_SIZE),
+    MAX_3D_TEXTURE_SIZE => |_| int(MAX_3D_TEXTURE_SIZE),
 
     // NV_register_combiners (not in Mesa: the oracle test leaves these out).
     NUM_GENERAL_COMBINERS_NV => |s| count(s.register_combiners.value.num_general),
@@ -560,6 +562,7 @@ impl FixedState {
             Capability::RescaleNormal => self.rescale_normal,
             Capability::Texture1D => unit.texture_1d,
             Capability::Texture2D => unit.texture_2d,
+            Capability::Texture3D => unit.texture_3d,
             Capability::TextureGen(c) => unit.texgen[c.index()].enabled,
             Capability::AlphaTest => self.alpha_test.enabled,
             Capability::DepthTest => self.depth_test.enabled,
@@ -691,6 +694,7 @@ impl FixedState {
             r::TEXTURE_MAG_FILTER => enm(p.mag_filter),
             r::TEXTURE_WRAP_S => enm(p.wrap_s),
             r::TEXTURE_WRAP_T => enm(p.wrap_t),
+            r::TEXTURE_WRAP_R => enm(p.wrap_r),
             r::TEXTURE_BORDER_COLOR => normalized(&p.border_color.to_array()),
             r::TEXTURE_COMPARE_MODE => enm(p.compare_mode),
             r::TEXTURE_COMPARE_FUNC => enm(p.compare_func),
@@ -703,7 +707,6 @@ impl FixedState {
             r::TEXTURE_MAX_LOD => floats(&[1000.0]),
             // Not kept by the model either: their GL 1.5 defaults (Table 6.16; every
             // texture is resident).
-            r::TEXTURE_WRAP_R => enm(super::texture::Wrap::Repeat),
             r::TEXTURE_LOD_BIAS => floats(&[0.0]),
             r::TEXTURE_PRIORITY => floats(&[1.0]),
             r::TEXTURE_RESIDENT => boolean(true),
@@ -712,7 +715,8 @@ impl FixedState {
     }
 
     /// glGetTexLevelParameter{f,i}v(target, level, pname) of the texture bound to `target`
-    /// on the active unit. A level outside [0, log2 MAX_TEXTURE_SIZE] is INVALID_VALUE; an
+    /// on the active unit, or of PROXY_TEXTURE_3D's levels (`texture_volume`). A level
+    /// outside [0, log2 MAX_TEXTURE_SIZE] (3D: MAX_3D_TEXTURE_SIZE) is INVALID_VALUE; an
     /// unspecified level answers 0 for everything but the internal format, which is RGBA
     /// (Mesa, after GL 4.0; GL 1.5 says 1). The internal format is the sized one the model
     /// holds: an unsized name given to glTexImage (GL_RGBA) reads back sized (GL_RGBA8),
@@ -724,20 +728,23 @@ impl FixedState {
         level: i32,
         pname: u32,
     ) -> Result<Queried, GlErrorKind> {
-        let t = TextureTarget::from_gl_value(target).ok_or(GlErrorKind::InvalidEnum)?;
-        if !(0..=MAX_TEXTURE_LEVEL).contains(&level) {
+        let object = if target == r::PROXY_TEXTURE_3D {
+            &self.proxy_3d
+        } else {
+            let t = TextureTarget::from_gl_value(target).ok_or(GlErrorKind::InvalidEnum)?;
+            let name = self.units[self.active_unit()].bound(t);
+            self.texture(t, name).ok_or(GlErrorKind::InvalidOperation)?
+        };
+        if !(0..=object.target.max_level()).contains(&level) {
             return Err(GlErrorKind::InvalidValue);
         }
-        let name = self.units[self.active_unit()].bound(t);
-        let l = self
-            .texture(t, name)
-            .ok_or(GlErrorKind::InvalidOperation)?
-            .level(level);
+        let l = object.level(level);
         let format = l.map(|l| l.internal_format);
         let size = |component: Component| int(format.map_or(0, |f| bits(f, component)));
         Ok(match pname {
             r::TEXTURE_WIDTH => int(l.map_or(0, |l| l.width)),
             r::TEXTURE_HEIGHT => int(l.map_or(0, |l| l.height)),
+            r::TEXTURE_DEPTH => int(l.map_or(0, |l| l.depth)),
             r::TEXTURE_BORDER => int(0),
             r::TEXTURE_INTERNAL_FORMAT => vec![QueryValue::Enum(format.map_or(r::RGBA, gl))],
             r::TEXTURE_RED_SIZE => size(Component::Red),

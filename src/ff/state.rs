@@ -95,9 +95,13 @@ pub struct TextureUnit {
     pub texture_1d: bool,
     /// TEXTURE_2D enable. GL default: FALSE.
     pub texture_2d: bool,
-    /// Names bound to TEXTURE_1D and TEXTURE_2D. GL default: 0 (the default textures).
+    /// TEXTURE_3D enable (GL 1.2). GL default: FALSE.
+    pub texture_3d: bool,
+    /// Names bound to TEXTURE_1D, TEXTURE_2D and TEXTURE_3D. GL default: 0 (the default
+    /// textures).
     pub bound_1d: u32,
     pub bound_2d: u32,
+    pub bound_3d: u32,
     /// GL default: [`TexEnv::DEFAULT`].
     pub env: TexEnv,
     /// S, T, R, Q. GL default: disabled, EYE_LINEAR, planes per [`TexGen::default_for`].
@@ -109,16 +113,21 @@ impl TextureUnit {
         Self {
             texture_1d: false,
             texture_2d: false,
+            texture_3d: false,
             bound_1d: 0,
             bound_2d: 0,
+            bound_3d: 0,
             env: TexEnv::DEFAULT,
             texgen: TexCoord::ALL.map(|c| Toggle::off(TexGen::default_for(c))),
         }
     }
 
-    /// The target that texturing uses: 2D wins over 1D (GL 1.5 §3.8.15); `None` = unit off.
+    /// The target that texturing uses: 3D wins over 2D, 2D over 1D (GL 1.5 §3.8.15; the
+    /// model has no cube maps, which would win over all three); `None` = unit off.
     pub fn enabled_target(&self) -> Option<TextureTarget> {
-        if self.texture_2d {
+        if self.texture_3d {
+            Some(TextureTarget::Texture3D)
+        } else if self.texture_2d {
             Some(TextureTarget::Texture2D)
         } else if self.texture_1d {
             Some(TextureTarget::Texture1D)
@@ -131,6 +140,16 @@ impl TextureUnit {
         match target {
             TextureTarget::Texture1D => self.bound_1d,
             TextureTarget::Texture2D => self.bound_2d,
+            TextureTarget::Texture3D => self.bound_3d,
+        }
+    }
+
+    /// Whether texturing of `target` is enabled (TEXTURE_1D, TEXTURE_2D, TEXTURE_3D).
+    pub fn enabled(&self, target: TextureTarget) -> bool {
+        match target {
+            TextureTarget::Texture1D => self.texture_1d,
+            TextureTarget::Texture2D => self.texture_2d,
+            TextureTarget::Texture3D => self.texture_3d,
         }
     }
 
@@ -191,9 +210,14 @@ pub struct FixedState {
     pub framebuffers: Framebuffers,
     /// Query objects and the active occlusion query. GL default: none, none active.
     pub queries: super::queries::Queries,
-    /// The default (name 0) textures of TEXTURE_1D and TEXTURE_2D.
+    /// The default (name 0) textures of TEXTURE_1D, TEXTURE_2D and TEXTURE_3D.
     pub default_1d: TextureObject,
     pub default_2d: TextureObject,
+    pub default_3d: TextureObject,
+    /// PROXY_TEXTURE_3D's levels (GL 1.5 §3.8.11): what glTexImage3D on the proxy target
+    /// found acceptable, every field 0 where it did not; no unit samples it. GL default:
+    /// no level specified.
+    pub proxy_3d: TextureObject,
 
     /// REGISTER_COMBINERS_NV. GL default: disabled, [`RegisterCombiners::DEFAULT`].
     pub register_combiners: Toggle<RegisterCombiners>,
@@ -314,6 +338,8 @@ impl FixedState {
             queries: Default::default(),
             default_1d: TextureObject::new(TextureTarget::Texture1D),
             default_2d: TextureObject::new(TextureTarget::Texture2D),
+            default_3d: TextureObject::new(TextureTarget::Texture3D),
+            proxy_3d: TextureObject::new(TextureTarget::Texture3D),
             register_combiners: Toggle::off(RegisterCombiners::DEFAULT),
             alpha_test: Toggle::off(AlphaTest::DEFAULT),
             depth_test: Toggle::off(DepthTest::LESS_WRITE),
@@ -402,6 +428,7 @@ impl FixedState {
         match (name, target) {
             (0, TextureTarget::Texture1D) => Some(&self.default_1d),
             (0, TextureTarget::Texture2D) => Some(&self.default_2d),
+            (0, TextureTarget::Texture3D) => Some(&self.default_3d),
             _ => self.textures.get(&name).filter(|t| t.target == target),
         }
     }
@@ -426,6 +453,7 @@ impl FixedState {
         match (name, target) {
             (0, TextureTarget::Texture1D) => Some(&mut self.default_1d),
             (0, TextureTarget::Texture2D) => Some(&mut self.default_2d),
+            (0, TextureTarget::Texture3D) => Some(&mut self.default_3d),
             _ => self.textures.get_mut(&name).filter(|t| t.target == target),
         }
     }

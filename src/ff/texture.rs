@@ -1,6 +1,6 @@
 //! Texture objects, formats and parameters (GL 1.5 §3.8, ARB_depth_texture, ARB_shadow,
-//! ARB_shadow_ambient), sized for GL 1.2's 3D textures (EXT_texture3D; its calls are not
-//! yet routed here, see the README's "Left out").
+//! ARB_shadow_ambient), with GL 1.2's 3D textures (EXT_texture3D; their calls are
+//! `texture_volume`'s).
 //!
 //! A level has a width, a height and a depth; a 1D level has height 1, a 1D or 2D level
 //! depth 1, so one completeness rule serves every target: each mip level is
@@ -36,6 +36,27 @@ pub const MAX_3D_TEXTURE_LEVEL: i32 = 11;
 pub enum TextureTarget {
     Texture1D,
     Texture2D,
+    /// GL 1.2: images of width × height × depth texels, sampled at (s, t, r).
+    Texture3D,
+}
+
+impl TextureTarget {
+    /// Every target, in the order texturing ranks them from the lowest (GL 1.5 §3.8.15:
+    /// 3D wins over 2D, 2D over 1D).
+    pub const ALL: [TextureTarget; 3] = [
+        TextureTarget::Texture1D,
+        TextureTarget::Texture2D,
+        TextureTarget::Texture3D,
+    ];
+
+    /// The highest mip level an image of this target may have: log2 of the target's
+    /// largest size (MAX_TEXTURE_SIZE, MAX_3D_TEXTURE_SIZE).
+    pub fn max_level(self) -> i32 {
+        match self {
+            TextureTarget::Texture1D | TextureTarget::Texture2D => MAX_TEXTURE_LEVEL,
+            TextureTarget::Texture3D => MAX_3D_TEXTURE_LEVEL,
+        }
+    }
 }
 
 /// Sized internal formats.
@@ -218,6 +239,8 @@ pub enum TexParam {
     MagFilter(Filter),
     WrapS(Wrap),
     WrapT(Wrap),
+    /// TEXTURE_WRAP_R (GL 1.2): kept for every target, read by 3D textures only.
+    WrapR(Wrap),
     BorderColor(Vec4),
     CompareMode(CompareMode),
     CompareFunc(CompareFunc),
@@ -239,6 +262,8 @@ pub struct TexParams {
     pub wrap_s: Wrap,
     /// GL default: REPEAT.
     pub wrap_t: Wrap,
+    /// GL default: REPEAT.
+    pub wrap_r: Wrap,
     /// Clamped to [0, 1]. GL default: (0, 0, 0, 0).
     pub border_color: Vec4,
     /// GL default: NONE.
@@ -259,6 +284,7 @@ impl TexParams {
         mag_filter: Filter::Linear,
         wrap_s: Wrap::Repeat,
         wrap_t: Wrap::Repeat,
+        wrap_r: Wrap::Repeat,
         border_color: Vec4::ZERO,
         compare_mode: CompareMode::None,
         compare_func: CompareFunc::Lequal,
@@ -281,6 +307,7 @@ impl TexParams {
             }
             TexParam::WrapS(w) => self.wrap_s = w,
             TexParam::WrapT(w) => self.wrap_t = w,
+            TexParam::WrapR(w) => self.wrap_r = w,
             TexParam::BorderColor(c) => self.border_color = c.clamp(Vec4::ZERO, Vec4::ONE),
             TexParam::CompareMode(m) => self.compare_mode = m,
             TexParam::CompareFunc(f) => self.compare_func = f,
@@ -477,18 +504,31 @@ fn half((w, h, d): (i32, i32, i32)) -> Option<(i32, i32, i32)> {
     (w > 1 || h > 1 || d > 1).then(|| ((w / 2).max(1), (h / 2).max(1), (d / 2).max(1)))
 }
 
-/// glTexImage3D's size checks (GL 1.5 §3.8.1, as Mesa orders them): level in
-/// [0, log2(MAX_3D_TEXTURE_SIZE)], each of width, height and depth in
-/// [0, MAX_3D_TEXTURE_SIZE], border 0 (see [`check_image_size`]) — all INVALID_VALUE.
+/// glTexImage3D's size checks (GL 1.5 §3.8.1, as Mesa orders them): the arguments
+/// ([`check_volume_arguments`]), then each of width, height and depth in
+/// [0, MAX_3D_TEXTURE_SIZE >> level] (Mesa's `_mesa_legal_texture_dimensions`: level 1
+/// holds at most 1024) — all INVALID_VALUE.
 pub fn check_volume_size(level: i32, size: [i32; 3], border: i32) -> GlResult {
+    check_volume_arguments(level, size, border)?;
+    if !volume_fits(level, size) {
+        return Err(GlError::invalid_value(
+            "width, height and depth must be in [0, MAX_3D_TEXTURE_SIZE >> level]",
+        ));
+    }
+    Ok(())
+}
+
+/// The checks a proxy image (PROXY_TEXTURE_3D) raises errors for too: level in
+/// [0, log2(MAX_3D_TEXTURE_SIZE)], no size below 0, border 0 (see [`check_image_size`]).
+pub fn check_volume_arguments(level: i32, size: [i32; 3], border: i32) -> GlResult {
     if !(0..=MAX_3D_TEXTURE_LEVEL).contains(&level) {
         return Err(GlError::invalid_value(
             "level must be in [0, log2(MAX_3D_TEXTURE_SIZE)]",
         ));
     }
-    if size.iter().any(|v| !(0..=MAX_3D_TEXTURE_SIZE).contains(v)) {
+    if size.iter().any(|v| *v < 0) {
         return Err(GlError::invalid_value(
-            "width, height and depth must be in [0, MAX_3D_TEXTURE_SIZE]",
+            "width, height and depth must be 0 or more",
         ));
     }
     if border != 0 {
@@ -497,6 +537,13 @@ pub fn check_volume_size(level: i32, size: [i32; 3], border: i32) -> GlResult {
         ));
     }
     Ok(())
+}
+
+/// Whether every side of a level-`level` volume is at most MAX_3D_TEXTURE_SIZE >> level
+/// (the level already checked to be in range).
+pub fn volume_fits(level: i32, size: [i32; 3]) -> bool {
+    let max = MAX_3D_TEXTURE_SIZE >> level.clamp(0, MAX_3D_TEXTURE_LEVEL);
+    size.iter().all(|v| (0..=max).contains(v))
 }
 
 /// The checks TexImage and CopyTexImage share (GL 1.5 §3.8.1, ARB_depth_texture):
@@ -522,12 +569,12 @@ pub fn check_image_size(level: i32, width: i32, height: i32, border: i32) -> GlR
 }
 
 /// A depth internal format needs DEPTH_COMPONENT pixels and the other way round
-/// (ARB_depth_texture: INVALID_OPERATION); STENCIL_INDEX is never a texture format
-/// (INVALID_ENUM).
+/// (ARB_depth_texture: INVALID_OPERATION); STENCIL_INDEX data suits no texture format
+/// here (INVALID_OPERATION: Mesa 22.3 measured, glTexImage2D and glTexImage3D alike).
 pub fn check_format_pair(internal: TexFormat, format: PixelFormat) -> GlResult {
     if format == PixelFormat::StencilIndex {
-        return Err(GlError::invalid_enum(
-            "STENCIL_INDEX is not a texture image format",
+        return Err(GlError::invalid_operation(
+            "STENCIL_INDEX data suits no texture internal format",
         ));
     }
     if matches!(

@@ -15,10 +15,10 @@
 use super::api::Entry;
 use super::args::{Args, PixelShape};
 use super::error::{GlError, GlResult};
+use super::glenum::GlEnum;
 use super::state::FixedState;
 use super::texture::{
     check_format_pair, check_image_size, PixelFormat, PixelType, TexLevel, TextureTarget,
-    MAX_TEXTURE_LEVEL,
 };
 use super::{Command, CopyTexImage, TexSubImage};
 
@@ -53,13 +53,7 @@ fn target<A: Args>(c: &A, want: TextureTarget) -> Result<TextureTarget, A::Error
     if t == want {
         Ok(t)
     } else {
-        Err(c.unknown(
-            0,
-            vec![match want {
-                TextureTarget::Texture1D => "GL_TEXTURE_1D",
-                TextureTarget::Texture2D => "GL_TEXTURE_2D",
-            }],
-        ))
+        Err(c.unknown(0, vec![want.gl_name().unwrap_or("GL_TEXTURE_2D")]))
     }
 }
 
@@ -140,12 +134,14 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
     }))
 }
 
-fn level_in_range(level: i32) -> GlResult {
-    if (0..=MAX_TEXTURE_LEVEL).contains(&level) {
+/// A level in [0, log2 of the target's largest size] (MAX_TEXTURE_SIZE; for 3D,
+/// MAX_3D_TEXTURE_SIZE), else INVALID_VALUE.
+pub(crate) fn level_in_range(target: TextureTarget, level: i32) -> GlResult {
+    if (0..=target.max_level()).contains(&level) {
         Ok(())
     } else {
         Err(GlError::invalid_value(
-            "level must be in [0, log2(MAX_TEXTURE_SIZE)]",
+            "level must be in [0, log2(MAX_TEXTURE_SIZE)] (3D: MAX_3D_TEXTURE_SIZE)",
         ))
     }
 }
@@ -182,9 +178,10 @@ impl FixedState {
         Ok(())
     }
 
-    /// glCopyTexSubImage1D/2D: the level must exist and hold the region.
+    /// glCopyTexSubImage1D/2D/3D: the level must exist and hold the region, and a 3D
+    /// level the image at `zoffset`.
     pub(crate) fn copy_tex_sub_image(&mut self, c: &CopyTexSubImage) -> GlResult {
-        level_in_range(c.level)?;
+        level_in_range(c.target, c.level)?;
         if c.width < 0 || c.height < 0 {
             return Err(GlError::invalid_value("negative width or height"));
         }
@@ -194,8 +191,10 @@ impl FixedState {
         ))?;
         if c.xoffset < 0
             || c.yoffset < 0
+            || c.zoffset < 0
             || c.xoffset + c.width > level.width
             || c.yoffset + c.height > level.height
+            || c.zoffset >= level.depth
         {
             return Err(GlError::invalid_value(
                 "glCopyTexSubImage region outside the level",
@@ -211,7 +210,7 @@ impl FixedState {
     /// glGetTexImage's checks; `Ok(false)` when the level was never specified (nothing is
     /// stored).
     pub fn check_get_tex_image(&self, g: &GetTexImage) -> GlResult<bool> {
-        level_in_range(g.level)?;
+        level_in_range(g.target, g.level)?;
         if g.format == PixelFormat::StencilIndex {
             return Err(GlError::invalid_enum(
                 "STENCIL_INDEX is not a texture image format",

@@ -54,11 +54,16 @@ pub fn create_with(
     }
 }
 
-/// The bytes one `ReadPixels` produced, packed with PACK_ALIGNMENT 1, bottom row first.
+/// The bytes one `ReadPixels` (or glGetTexImage) produced, packed with PACK_ALIGNMENT 1,
+/// bottom row first.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Readback {
     pub width: u32,
     pub height: u32,
+    /// `Some(depth)` for a 3D level's glGetTexImage: `depth` images of `height` rows, the
+    /// first (r = 0) first, which PACK_IMAGE_HEIGHT and PACK_SKIP_IMAGES lay out in a C
+    /// program's memory; `None` for one rectangle.
+    pub depth: Option<u32>,
     pub format: PixelFormat,
     pub ty: PixelType,
     pub bytes: Vec<u8>,

@@ -409,6 +409,7 @@ mod tests {
         let stored = Readback {
             width: 2,
             height: 2,
+            depth: None,
             format: PixelFormat::DepthComponent,
             ty: PixelType::Float,
             bytes,

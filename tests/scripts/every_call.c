@@ -67,6 +67,15 @@ glTexImage1D(GL_TEXTURE_1D, 0, GL_LUMINANCE8, 2, 0, GL_LUMINANCE, GL_UNSIGNED_BY
 glTexSubImage1D(GL_TEXTURE_1D, 0, 1, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE, (GLubyte[]){128});
 glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_ALPHA8, 0, 0, 2, 0);
 glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 1, 0, 0, 1);
+glBindTexture(GL_TEXTURE_3D, 3);
+glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 1, 1, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, (GLubyte[]){1, 2, 3, 4, 5, 6, 7, 8});
+glTexImage3D(GL_PROXY_TEXTURE_3D, 0, GL_RGBA8, 64, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, (GLubyte[]){9, 10, 11, 12});
+glCopyTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, 0, 0, 1, 1);
+glTexImage3DEXT(GL_TEXTURE_3D, 0, GL_LUMINANCE8, 2, 1, 1, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, (GLubyte[]){0, 255});
+glTexSubImage3DEXT(GL_TEXTURE_3D, 0, 1, 0, 0, 1, 1, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE, (GLubyte[]){128});
+glCopyTexSubImage3DEXT(GL_TEXTURE_3D, 0, 0, 0, 0, 0, 0, 1, 1);
+glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
 glAreTexturesResident(2, (GLuint[]){1, 2}, (GLboolean[]){0, 0});
 glPrioritizeTextures(2, (GLuint[]){1, 2}, (GLclampf[]){1, 0.5f});
 glDeleteTextures(1, (GLuint[]){2});

@@ -711,7 +711,8 @@ impl Args for Call<'_, '_> {
         let lay = pixel_layout::layout(shape, &self.unpack);
         let plain = self.unpack == Packing::aligned(self.unpack.alignment);
         let holds_every_row = bytes.len() >= lay.extent;
-        if plain && (lay.rows < 2 || (lay.stride == lay.tight_row && holds_every_row)) {
+        let rows = lay.rows * lay.images;
+        if plain && (rows < 2 || (lay.stride == lay.tight_row && holds_every_row)) {
             return Ok(Some(Arc::from(bytes)));
         }
         pixel_layout::unpack(&bytes, shape, &self.unpack)

@@ -108,7 +108,32 @@ fn line(out: &mut String, s: std::fmt::Arguments) {
 fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
     match c {
         Command::Draw(g) => draw(out, g),
-        Command::TexImage(t) => tex_image(out, t, unpack_alignment),
+        Command::TexImage(t) => tex_image(out, t, n(t.target), unpack_alignment),
+        Command::ProxyTexImage(t) => tex_image(out, t, "GL_PROXY_TEXTURE_3D", unpack_alignment),
+        Command::TexSubImage3D(t) => line(
+            out,
+            format_args!(
+                "{}(GL_TEXTURE_3D, {}, {}, {}, {}, {}, {}, {}, {}, {}, {})",
+                Entry::TexSubImage3D,
+                t.level,
+                t.x,
+                t.y,
+                t.z,
+                t.width,
+                t.height,
+                t.depth,
+                n(t.format),
+                n(t.ty),
+                pixels(
+                    t.ty,
+                    &padded(
+                        &t.data,
+                        t.width.max(0) as usize * t.format.components() * t.ty.size(),
+                        unpack_alignment
+                    )
+                )
+            ),
+        ),
         Command::TexSubImage2D(t) => line(
             out,
             format_args!(
@@ -543,6 +568,18 @@ fn call(c: &Command) -> String {
                 c.width,
                 c.height
             ),
+            TextureTarget::Texture3D => format!(
+                "{}(GL_TEXTURE_3D, {}, {}, {}, {}, {}, {}, {}, {})",
+                Entry::CopyTexSubImage3D,
+                c.level,
+                c.xoffset,
+                c.yoffset,
+                c.zoffset,
+                c.x,
+                c.y,
+                c.width,
+                c.height
+            ),
         },
         Command::GetTexImage(g) => format!(
             "{}({}, {}, {}, {}, readback_{})",
@@ -574,6 +611,8 @@ fn call(c: &Command) -> String {
         // Printed by `command`.
         Command::Draw(_)
         | Command::TexImage(_)
+        | Command::ProxyTexImage(_)
+        | Command::TexSubImage3D(_)
         | Command::TexSubImage2D(_)
         | Command::TexSubImage1D(_)
         | Command::Raise { .. } => String::new(),
@@ -787,6 +826,7 @@ fn tex_param(target: &str, p: &TexParam) -> String {
         TexParam::MagFilter(v) => ("GL_TEXTURE_MAG_FILTER", n(*v)),
         TexParam::WrapS(v) => ("GL_TEXTURE_WRAP_S", n(*v)),
         TexParam::WrapT(v) => ("GL_TEXTURE_WRAP_T", n(*v)),
+        TexParam::WrapR(v) => ("GL_TEXTURE_WRAP_R", n(*v)),
         TexParam::CompareMode(v) => ("GL_TEXTURE_COMPARE_MODE", n(*v)),
         TexParam::CompareFunc(v) => ("GL_TEXTURE_COMPARE_FUNC", n(*v)),
         TexParam::DepthTextureMode(v) => ("GL_DEPTH_TEXTURE_MODE", n(*v)),
@@ -877,7 +917,8 @@ pub(super) fn pixels(ty: PixelType, data: &[u8]) -> String {
     format!("({name}[]){{{}}}", v.join(", "))
 }
 
-fn tex_image(out: &mut String, t: &TexImage, unpack_alignment: usize) {
+/// glTexImage1D/2D/3D of `target` (its token: a proxy image prints its proxy target).
+fn tex_image(out: &mut String, t: &TexImage, target: &str, unpack_alignment: usize) {
     let row = t.width.max(0) as usize * t.format.components() * t.ty.size();
     let data = match &t.data {
         TexData::Null => "NULL".to_string(),
@@ -897,12 +938,15 @@ fn tex_image(out: &mut String, t: &TexImage, unpack_alignment: usize) {
             Entry::TexImage2D.name(),
             format!("{}, {}", t.width, t.height),
         ),
+        TextureTarget::Texture3D => (
+            Entry::TexImage3D.name(),
+            format!("{}, {}, {}", t.width, t.height, t.depth),
+        ),
     };
     line(
         out,
         format_args!(
-            "{name}({}, {}, {}, {size}, {}, {}, {}, {data})",
-            n(t.target),
+            "{name}({target}, {}, {}, {size}, {}, {}, {}, {data})",
             t.level,
             n(t.internal_format),
             t.border,

@@ -396,6 +396,70 @@ fn sample_commands() -> Vec<Command> {
             ty: PixelType::UnsignedShort,
             data: Arc::from(65535u16.to_le_bytes().to_vec()),
         }),
+        // GL 1.2's 3D textures: rows of 9 bytes padded to 4 across two images.
+        Command::BindTexture {
+            target: TextureTarget::Texture3D,
+            name: 9,
+        },
+        Command::TexImage(TexImage {
+            target: TextureTarget::Texture3D,
+            level: 0,
+            internal_format: TexFormat::Rgb8,
+            width: 3,
+            height: 2,
+            depth: 2,
+            border: 0,
+            format: PixelFormat::Rgb,
+            ty: PixelType::UnsignedByte,
+            data: TexData::Bytes((0u8..36).collect::<Vec<_>>().into()),
+        }),
+        Command::ProxyTexImage(TexImage {
+            target: TextureTarget::Texture3D,
+            level: 2,
+            internal_format: TexFormat::Alpha8,
+            width: 4096,
+            height: 1,
+            depth: 1,
+            border: 0,
+            format: PixelFormat::Alpha,
+            ty: PixelType::UnsignedByte,
+            data: TexData::Null,
+        }),
+        Command::TexSubImage3D(TexSubImage {
+            level: 0,
+            x: 1,
+            y: 0,
+            z: 1,
+            width: 2,
+            height: 1,
+            depth: 1,
+            format: PixelFormat::Rgb,
+            ty: PixelType::UnsignedByte,
+            data: Arc::from(vec![7u8; 6]),
+        }),
+        Command::CopyTexSubImage(crate::ff::texture_calls::CopyTexSubImage {
+            target: TextureTarget::Texture3D,
+            level: 0,
+            xoffset: 0,
+            yoffset: 1,
+            zoffset: 1,
+            x: 2,
+            y: 3,
+            width: 2,
+            height: 1,
+        }),
+        Command::TexParameter {
+            target: TextureTarget::Texture3D,
+            param: TexParam::WrapR(Wrap::ClampToEdge),
+        },
+        Command::Enable(Capability::Texture3D),
+        Command::GetTexImage(crate::ff::texture_calls::GetTexImage {
+            target: TextureTarget::Texture3D,
+            level: 0,
+            format: PixelFormat::Rgba,
+            ty: PixelType::Float,
+            slot: 3,
+        }),
         Command::CopyTexImage2D(CopyTexImage {
             level: 0,
             internal_format: TexFormat::DepthComponent16,
@@ -853,6 +917,30 @@ fn command() -> impl Strategy<Value = Command> {
                     data: TexData::Bytes(Arc::from(bytes)),
                 })
             }),
+        // A volume's rows, padded to the default alignment across its images.
+        (1i32..5, 1i32..4, 1i32..4, prop::bool::ANY, any::<u8>()).prop_map(
+            |(width, height, depth, rgb, seed)| {
+                let format = if rgb {
+                    PixelFormat::Rgb
+                } else {
+                    PixelFormat::Luminance
+                };
+                let n = (width * height * depth) as usize * format.components();
+                let bytes: Vec<u8> = (0..n).map(|i| seed.wrapping_add(i as u8)).collect();
+                Command::TexImage(TexImage {
+                    target: TextureTarget::Texture3D,
+                    level: 0,
+                    internal_format: TexFormat::Rgb8,
+                    width,
+                    height,
+                    depth,
+                    border: 0,
+                    format,
+                    ty: PixelType::UnsignedByte,
+                    data: TexData::Bytes(Arc::from(bytes)),
+                })
+            }
+        ),
         geometry().prop_map(|g| Command::Draw(Arc::new(g))),
     ]
 }

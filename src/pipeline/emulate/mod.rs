@@ -41,7 +41,7 @@ use self::textures::Textures;
 use super::core::{Core, Issue, PathPipeline};
 use super::framebuffers::FramebufferMirror;
 use super::{Counters, PipelineError, Readback};
-use crate::ff::{Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels};
+use crate::ff::{Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels, TextureTarget};
 use crate::gpu::{GpuContext, Profile};
 use crate::vocab::{PipelineKind, Precision};
 
@@ -324,7 +324,14 @@ impl Issue for Emulate {
             }
             Command::TexImage(t) => self.textures.upload_level(gl, state, t.target, t.level)?,
             Command::DeleteTextures(names) => self.textures.delete(gl, names),
-            Command::TexSubImage2D(t) => self.textures.sub_image(gl, state, t)?,
+            Command::TexSubImage2D(t) => {
+                self.textures
+                    .sub_image(gl, state, TextureTarget::Texture2D, t)?
+            }
+            Command::TexSubImage3D(t) => {
+                self.textures
+                    .sub_image(gl, state, TextureTarget::Texture3D, t)?
+            }
             Command::CopyTexImage2D(c) => self.textures.copy_level(gl, state, c)?,
             Command::TexParameter { target, .. } => {
                 self.textures.sync_params(gl, state, *target)?
@@ -387,6 +394,7 @@ fn read_pixels(gl: &glow::Context, r: &ReadPixels) -> Readback {
     Readback {
         width: r.width.max(0) as u32,
         height: r.height.max(0) as u32,
+        depth: None,
         format: r.format,
         ty: r.ty,
         bytes: read(gl, r),

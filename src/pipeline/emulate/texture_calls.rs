@@ -1,4 +1,4 @@
-//! glTexSubImage1D, glCopyTexImage1D, glCopyTexSubImage1D/2D and glGetTexImage on the core
+//! glTexSubImage1D, glCopyTexImage1D, glCopyTexSubImage1D/2D/3D and glGetTexImage on the core
 //! profile, where the legacy formats are stored as R8/RG8 plus a swizzle
 //! (`conv::tex_format`). A copy reads the framebuffer as RGBA (or depth) and keeps what
 //! the texture's base format takes (GL 1.5 §3.8.2, Table 3.15: L and I from R, A from A),
@@ -161,7 +161,8 @@ impl Textures {
         Ok(())
     }
 
-    /// glCopyTexSubImage1D/2D: framebuffer texels into part of a level.
+    /// glCopyTexSubImage1D/2D/3D: framebuffer texels into part of a level (3D: of its image
+    /// at zoffset).
     pub fn copy_sub_image(
         &mut self,
         ctx: &GpuContext,
@@ -198,6 +199,23 @@ impl Textures {
                     glow::PixelUnpackData::Slice(Some(&bytes)),
                 );
             },
+            // One image, at zoffset.
+            TextureTarget::Texture3D => unsafe {
+                gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+                gl.tex_sub_image_3d(
+                    gl_t,
+                    c.level,
+                    c.xoffset,
+                    c.yoffset,
+                    c.zoffset,
+                    c.width,
+                    c.height,
+                    1,
+                    format,
+                    ty,
+                    glow::PixelUnpackData::Slice(Some(&bytes)),
+                );
+            },
         }
         generate_mipmap(gl, gl_t, object, c.level);
         self.uploads += 1;
@@ -217,8 +235,9 @@ impl Textures {
         let name = state.units[state.active_unit()].bound(g.target);
         let f = level.internal_format;
         let (w, h) = (level.width.max(0) as usize, level.height.max(0) as usize);
+        let d = level.depth.max(0) as usize;
         let (format, ty, size) = storage(f);
-        let mut stored = vec![0u8; w * h * size];
+        let mut stored = vec![0u8; w * h * d * size];
         let gl_t = self.edit(gl, (g.target, name))?;
         unsafe {
             gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
@@ -233,6 +252,7 @@ impl Textures {
         Ok(Some(Readback {
             width: w as u32,
             height: h as u32,
+            depth: (g.target == TextureTarget::Texture3D).then_some(d as u32),
             format: g.format,
             ty: g.ty,
             bytes: convert(&stored, f, g.format, g.ty),

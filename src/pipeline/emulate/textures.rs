@@ -18,6 +18,7 @@ fn gl_target(t: TextureTarget) -> u32 {
     match t {
         TextureTarget::Texture1D => glow::TEXTURE_1D,
         TextureTarget::Texture2D => glow::TEXTURE_2D,
+        TextureTarget::Texture3D => glow::TEXTURE_3D,
     }
 }
 
@@ -74,7 +75,7 @@ impl Textures {
     /// to them to texture 0; draws bind from the model).
     pub fn delete(&mut self, gl: &glow::Context, names: &[u32]) {
         for name in names.iter().filter(|n| **n != 0) {
-            for target in [TextureTarget::Texture1D, TextureTarget::Texture2D] {
+            for target in TextureTarget::ALL {
                 if let Some(t) = self.objects.remove(&(target, *name)) {
                     self.bound.retain(|_, (_, b)| *b != t);
                     unsafe { gl.delete_texture(t) };
@@ -118,29 +119,28 @@ impl Textures {
         Ok(())
     }
 
-    /// glTexSubImage2D into the active unit's 2D texture, straight from the command's bytes.
+    /// glTexSubImage2D (or glTexSubImage3D) into the active unit's 2D (3D) texture,
+    /// straight from the command's bytes.
     pub fn sub_image(
         &mut self,
         gl: &glow::Context,
         state: &FixedState,
+        target: TextureTarget,
         t: &crate::ff::TexSubImage,
     ) -> Result<(), PipelineError> {
-        let target = TextureTarget::Texture2D;
         let name = state.units[state.active_unit()].bound(target);
         let gl_t = self.edit(gl, (target, name))?;
+        let (format, ty) = (conv::pixel_format(t.format), conv::value(t.ty));
+        let data = glow::PixelUnpackData::Slice(Some(&t.data[..]));
         unsafe {
             gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
-            gl.tex_sub_image_2d(
-                gl_t,
-                t.level,
-                t.x,
-                t.y,
-                t.width,
-                t.height,
-                conv::pixel_format(t.format),
-                conv::value(t.ty),
-                glow::PixelUnpackData::Slice(Some(&t.data[..])),
-            );
+            match target {
+                TextureTarget::Texture3D => gl.tex_sub_image_3d(
+                    gl_t, t.level, t.x, t.y, t.z, t.width, t.height, t.depth, format, ty, data,
+                ),
+                _ => gl
+                    .tex_sub_image_2d(gl_t, t.level, t.x, t.y, t.width, t.height, format, ty, data),
+            }
         }
         if let Some(object) = state.texture(target, name) {
             generate_mipmap(gl, gl_t, object, t.level);
@@ -203,7 +203,7 @@ impl Textures {
         state: &FixedState,
     ) -> Result<(), PipelineError> {
         for unit in &state.units {
-            for target in [TextureTarget::Texture1D, TextureTarget::Texture2D] {
+            for target in TextureTarget::ALL {
                 let id = (target, unit.bound(target));
                 if let (true, Some(object)) =
                     (self.objects.contains_key(&id), state.texture(id.0, id.1))
@@ -275,6 +275,19 @@ fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel) {
                 ty,
                 glow::PixelUnpackData::Slice(bytes),
             ),
+            // The images one after the other, the first (r = 0) first.
+            glow::TEXTURE_3D => gl.tex_image_3d(
+                target,
+                level,
+                internal as i32,
+                l.width,
+                l.height,
+                l.depth,
+                0,
+                format,
+                ty,
+                glow::PixelUnpackData::Slice(bytes),
+            ),
             _ => gl.tex_image_2d(
                 target,
                 level,
@@ -324,6 +337,7 @@ pub(super) fn apply_params(gl: &glow::Context, target: u32, object: &TextureObje
         );
         gl.tex_parameter_i32(target, glow::TEXTURE_WRAP_S, conv::wrap(p.wrap_s) as i32);
         gl.tex_parameter_i32(target, glow::TEXTURE_WRAP_T, conv::wrap(p.wrap_t) as i32);
+        gl.tex_parameter_i32(target, glow::TEXTURE_WRAP_R, conv::wrap(p.wrap_r) as i32);
         gl.tex_parameter_f32_slice(
             target,
             glow::TEXTURE_BORDER_COLOR,

@@ -26,7 +26,9 @@ use crate::pipeline::PipelineError;
 
 use super::bindings as gl;
 use super::bindings::types::GLbitfield;
-use super::{conv, draw, lighting, readback, texenv, texture_calls, textures, Native};
+use super::{
+    conv, draw, lighting, readback, texenv, texture_calls, texture_volume, textures, Native,
+};
 use crate::pipeline::core::Core;
 
 impl Native {
@@ -233,6 +235,13 @@ impl Native {
                 if let Some(read) = texture_calls::get_tex_image(g, &core.state, r) {
                     core.readbacks.insert(r.slot, read);
                 }
+            }
+            Command::TexSubImage3D(t) => {
+                texture_volume::tex_sub_image_3d(g, t);
+                core.counters.texture_uploads += 1;
+            }
+            Command::ProxyTexImage(t) => {
+                texture_volume::tex_image_3d(g, t, texture_volume::Target::Proxy)
             }
             Command::Draw(geometry) => {
                 if core.state.register_combiners.enabled {

@@ -22,6 +22,7 @@ mod pixels;
 mod readback;
 mod texenv;
 mod texture_calls;
+mod texture_volume;
 mod textures;
 
 use glow::HasContext;

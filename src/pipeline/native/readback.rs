@@ -32,6 +32,7 @@ pub fn read_pixels(g: &gl::Gl, r: &ReadPixels) -> Readback {
     Readback {
         width: r.width.max(0) as u32,
         height: r.height.max(0) as u32,
+        depth: None,
         format: r.format,
         ty: r.ty,
         bytes,

@@ -1,11 +1,11 @@
-//! glTexSubImage1D, glCopyTexImage1D, glCopyTexSubImage1D/2D and glGetTexImage as the real
+//! glTexSubImage1D, glCopyTexImage1D, glCopyTexSubImage1D/2D/3D and glGetTexImage as the real
 //! legacy calls on the bound texture (the model checked them first). glGetTexImage reads
 //! with PACK_ALIGNMENT 1 into a readback slot: the driver's own conversions from each
 //! legacy internal format to the asked format and type are the oracle.
 
 use std::ffi::c_void;
 
-use crate::ff::texture::{image_size, TextureTarget};
+use crate::ff::texture::{volume_size, TextureTarget};
 use crate::ff::texture_calls::{CopyTexSubImage, GetTexImage};
 use crate::ff::{CopyTexImage, FixedState, TexSubImage};
 use crate::pipeline::Readback;
@@ -64,6 +64,17 @@ pub fn copy_tex_sub_image(g: &gl::Gl, c: &CopyTexSubImage) {
                 c.width,
                 c.height,
             ),
+            TextureTarget::Texture3D => g.CopyTexSubImage3D(
+                gl::TEXTURE_3D,
+                c.level,
+                c.xoffset,
+                c.yoffset,
+                c.zoffset,
+                c.x,
+                c.y,
+                c.width,
+                c.height,
+            ),
         }
     }
 }
@@ -72,13 +83,15 @@ pub fn copy_tex_sub_image(g: &gl::Gl, c: &CopyTexSubImage) {
 /// nothing).
 pub fn get_tex_image(g: &gl::Gl, state: &FixedState, r: &GetTexImage) -> Option<Readback> {
     let level = state.get_tex_image_level(r)?;
-    let (w, h) = (level.width, level.height);
-    let mut bytes = vec![0u8; image_size(r.format, r.ty, w, h)];
-    let target = match r.target {
-        TextureTarget::Texture1D => gl::TEXTURE_1D,
-        TextureTarget::Texture2D => gl::TEXTURE_2D,
+    let (w, h, d) = (level.width, level.height, level.depth);
+    let mut bytes = vec![0u8; volume_size(r.format, r.ty, w, h, d)];
+    let (target, depth) = match r.target {
+        TextureTarget::Texture1D => (gl::TEXTURE_1D, None),
+        TextureTarget::Texture2D => (gl::TEXTURE_2D, None),
+        TextureTarget::Texture3D => (gl::TEXTURE_3D, Some(d.max(0) as u32)),
     };
-    // SAFETY: `bytes` holds the level's width·height groups and PACK_ALIGNMENT is 1.
+    // SAFETY: `bytes` holds the level's width·height·depth groups, PACK_ALIGNMENT is 1 and
+    // the image parameters are never set here.
     unsafe {
         g.PixelStorei(gl::PACK_ALIGNMENT, 1);
         g.GetTexImage(
@@ -92,6 +105,7 @@ pub fn get_tex_image(g: &gl::Gl, state: &FixedState, r: &GetTexImage) -> Option<
     Some(Readback {
         width: w as u32,
         height: h as u32,
+        depth,
         format: r.format,
         ty: r.ty,
         bytes,

@@ -68,9 +68,12 @@ impl Textures {
     }
 }
 
-/// glTexImage1D / glTexImage2D into the bound texture; `None` data is a NULL pointer
-/// (storage only). The model checked the data length against the size.
+/// glTexImage1D / glTexImage2D / glTexImage3D into the bound texture; `None` data is a
+/// NULL pointer (storage only). The model checked the data length against the size.
 pub fn tex_image(g: &gl::Gl, t: &TexImage) {
+    if t.target == TextureTarget::Texture3D {
+        return super::texture_volume::tex_image_3d(g, t, super::texture_volume::Target::Texture);
+    }
     // A readback slot was resolved to bytes before the model saw the command.
     let pixels = t
         .data
@@ -105,6 +108,8 @@ pub fn tex_image(g: &gl::Gl, t: &TexImage) {
                 ty,
                 pixels,
             ),
+            // Sent by `texture_volume` above.
+            TextureTarget::Texture3D => {}
         }
     }
 }
@@ -158,6 +163,7 @@ pub fn tex_parameter(g: &gl::Gl, target: TextureTarget, param: TexParam) -> bool
         TexParam::MagFilter(f) => int(gl::TEXTURE_MAG_FILTER, conv::value(f)),
         TexParam::WrapS(w) => int(gl::TEXTURE_WRAP_S, conv::value(w)),
         TexParam::WrapT(w) => int(gl::TEXTURE_WRAP_T, conv::value(w)),
+        TexParam::WrapR(w) => int(gl::TEXTURE_WRAP_R, conv::value(w)),
         TexParam::BorderColor(c) => {
             let c = c.to_array();
             // SAFETY: four floats.

@@ -188,18 +188,20 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
     w.declare(&format!("in vec4 v_tc{u};"));
     projected(w);
     w.line(format!("vec4 p{u} = project(v_tc{u});"));
-    let one_d = unit.target == TextureTarget::Texture1D;
-    let (sampler_type, coord) = match (unit.texel, one_d) {
-        (TexelKey::Compare(_), false) => (
+    let (sampler_type, coord) = match (unit.target, unit.texel) {
+        (TextureTarget::Texture2D, TexelKey::Compare(_)) => (
             "sampler2DShadow",
             format!("vec3(p{u}.xy, clamp(p{u}.z, 0.0, 1.0))"),
         ),
-        (TexelKey::Compare(_), true) => (
+        (TextureTarget::Texture1D, TexelKey::Compare(_)) => (
             "sampler1DShadow",
             format!("vec3(p{u}.x, 0.0, clamp(p{u}.z, 0.0, 1.0))"),
         ),
-        (_, false) => ("sampler2D", format!("p{u}.xy")),
-        (_, true) => ("sampler1D", format!("p{u}.x")),
+        (TextureTarget::Texture2D, _) => ("sampler2D", format!("p{u}.xy")),
+        (TextureTarget::Texture1D, _) => ("sampler1D", format!("p{u}.x")),
+        // (s, t, r)/q; no depth format is a 3D texture (`ff::texture_volume`), so the
+        // texel is a colour.
+        (TextureTarget::Texture3D, _) => ("sampler3D", format!("p{u}.xyz")),
     };
     let s = w.uniform_typed(UniformSource::Sampler(u), sampler_type);
     let as_mode = |m: DepthTextureMode, v: &str| match m {
