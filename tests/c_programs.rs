@@ -931,3 +931,32 @@ fn colour_index_and_coverage_state_answer_as_on_mesa() {
         "32x32",
     );
 }
+
+/// `tests/c/transfer.c`: the pixel transfer on texture images, copies and reads (scales,
+/// biases, MAP_COLOR by the nearest entry; none on glGetTexImage nor on depth images) and
+/// texture images whose client format differs from their internal one, texel by texel as
+/// Mesa stores them, and the panels drawn with each, Mesa's image exactly; the trace
+/// replays.
+#[test]
+fn pixel_transfers_reach_texture_images_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("transfer");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "teximage scaled and biased         100 226 200 255 err 0",
+            "teximage mapped                    64 128 191 255 err 0",
+            "readpixels mapped                  64 128 128 255 err 0",
+            "depth teximage 0.5 err 0",
+            "alpha into rgba                    0 0 0 100 err 0",
+            "copy into alpha                    0 0 0 204 err 0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 20, "a transferred texel");
+    assert_images_match("transfer", &ours, &mesa, Tolerance::EXACT);
+    assert_trace_replays(
+        "transfer",
+        &compile("transfer", Linking::Direct),
+        &[],
+        "64x32",
+    );
+}

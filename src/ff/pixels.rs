@@ -67,7 +67,7 @@ pub struct PixelTransfer {
     pub index_shift: i32,
     /// GL default: 0.
     pub index_offset: i32,
-    /// MAP_COLOR. GL default: FALSE. State only (no glPixelMap).
+    /// MAP_COLOR. GL default: FALSE.
     pub map_color: bool,
     /// MAP_STENCIL. GL default: FALSE. State only.
     pub map_stencil: bool,
@@ -351,6 +351,39 @@ impl DrawPixels {
                         .collect(),
                 )
             }
+        }
+    }
+}
+
+/// The colour groups of a client image of a colour `format` as RGBA (steps 1 and 2 of the
+/// module note: unsigned types normalised, Table 3.8's filling), before any transfer.
+pub fn rgba_groups(data: &[u8], format: PixelFormat, ty: PixelType) -> Vec<Vec4> {
+    let k = format.components();
+    components(data, ty, true)
+        .chunks_exact(k)
+        .map(|c| {
+            let c: Vec<f32> = c.iter().map(|x| *x as f32).collect();
+            to_rgba(format, &c)
+        })
+        .collect()
+}
+
+impl PixelTransfer {
+    /// Whether the colour transfer changes nothing: unit scales, zero biases, no
+    /// MAP_COLOR.
+    pub fn colour_identity(&self) -> bool {
+        self.scale == Vec4::ONE && self.bias == Vec4::ZERO && !self.map_color
+    }
+
+    /// A colour through the transfer as glReadPixels and the texture images take it:
+    /// c·scale + bias, then MAP_COLOR's maps by the nearest entry (`pixel_map`); not
+    /// clamped (the caller clamps where its destination does).
+    pub fn colour_nearest(&self, c: Vec4, maps: &PixelMaps) -> Vec4 {
+        let c = c * self.scale + self.bias;
+        if self.map_color {
+            maps.color_nearest(c)
+        } else {
+            c
         }
     }
 }

@@ -24,6 +24,7 @@ pub mod program;
 pub mod shadergen;
 pub mod stipple_dashes;
 pub mod sync;
+pub mod texel_store;
 pub mod texture_calls;
 pub mod textures;
 pub mod uniforms;
@@ -338,7 +339,9 @@ impl Issue for Emulate {
             }
             Command::ReadPixels(r) => {
                 let mut readback = read_pixels(gl, r);
-                if let Some(bytes) = pixels::transferred_read(gl, r, &state.pixel_transfer, &state.pixel_maps) {
+                if let Some(bytes) =
+                    pixels::transferred_read(gl, r, &state.pixel_transfer, &state.pixel_maps)
+                {
                     readback.bytes = bytes;
                 }
                 core.readbacks.insert(r.slot, readback);

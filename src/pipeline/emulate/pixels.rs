@@ -29,13 +29,13 @@ use glow::HasContext;
 use super::key::{PixelSource, ShaderKey};
 use super::polygon::PolygonPass;
 use super::Emulate;
+use crate::ff::pixel_map::PixelMaps;
 use crate::ff::{
     ColorMask, Command, CompareFunc, Converted, CopyKind, CopyPixels, DrawPixels, FixedState,
     Geometry, PixelFormat, PixelTransfer, PixelType, PixelZoom, PolygonMode, PolygonModes,
     Primitive, ReadPixels, StencilOp, StencilTest, Viewport, MAX_CLIP_PLANES,
 };
 use crate::pipeline::PipelineError;
-use crate::ff::pixel_map::PixelMaps;
 
 /// The texture unit of a pixel rectangle's image (not a fixed-function unit, not the
 /// scratch unit of `textures`).
@@ -169,7 +169,7 @@ pub fn transferred_read(
     t: &PixelTransfer,
     maps: &PixelMaps,
 ) -> Option<Vec<u8>> {
-    let colour_identity = t.scale == Vec4::ONE && t.bias == Vec4::ZERO && !t.map_color;
+    let colour_identity = t.colour_identity();
     let depth_identity = t.depth_scale == 1.0 && t.depth_bias == 0.0;
     let read_as = |format, ty| super::read(gl, &ReadPixels { format, ty, ..*r });
     let f32s = |b: Vec<u8>| -> Vec<f32> {
@@ -192,10 +192,7 @@ pub fn transferred_read(
             for p in rgba.chunks_exact(4) {
                 // FLOAT reads are not clamped (Mesa, as GL 3.0's CLAMP_READ_COLOR =
                 // FIXED_ONLY: measured, RED_SCALE 2 on 0.625 reads 1.25); fixed-point ones are.
-                let mut c = Vec4::from_slice(p) * t.scale + t.bias;
-                if t.map_color {
-                    c = maps.color_nearest(c);
-                }
+                let mut c = t.colour_nearest(Vec4::from_slice(p), maps);
                 if r.ty != PixelType::Float {
                     c = c.clamp(Vec4::ZERO, Vec4::ONE);
                 }

@@ -18,24 +18,19 @@ use crate::gpu::GpuContext;
 use crate::pipeline::{PipelineError, Readback};
 
 use super::conv;
+use super::texel_store::{self, storage};
 use super::textures::{apply_params, generate_mipmap, Textures};
 use glow::HasContext;
 
-/// The client format, type and bytes per texel of a format's storage.
-fn storage(f: TexFormat) -> (u32, u32, usize) {
-    match f.base() {
-        BaseFormat::Rgba => (glow::RGBA, glow::UNSIGNED_BYTE, 4),
-        BaseFormat::Rgb => (glow::RGB, glow::UNSIGNED_BYTE, 3),
-        BaseFormat::LuminanceAlpha => (glow::RG, glow::UNSIGNED_BYTE, 2),
-        BaseFormat::Luminance | BaseFormat::Intensity | BaseFormat::Alpha => {
-            (glow::RED, glow::UNSIGNED_BYTE, 1)
-        }
-        BaseFormat::Depth => (glow::DEPTH_COMPONENT, glow::FLOAT, 4),
-    }
-}
-
-/// The framebuffer rectangle as the texture of format `f` stores it.
-fn read_as_stored(gl: &glow::Context, rect: [i32; 4], f: TexFormat) -> Vec<u8> {
+/// The framebuffer rectangle as the texture of format `f` stores it, through the state's
+/// pixel transfer (`texel_store`): colours read as unsigned bytes under the identity
+/// transfer, as floats under another.
+pub(super) fn read_as_stored(
+    gl: &glow::Context,
+    state: &FixedState,
+    rect: [i32; 4],
+    f: TexFormat,
+) -> Vec<u8> {
     let [x, y, w, h] = rect;
     let n = (w.max(0) * h.max(0)) as usize;
     let read = |format: u32, ty: u32, size: usize| {
@@ -57,14 +52,20 @@ fn read_as_stored(gl: &glow::Context, rect: [i32; 4], f: TexFormat) -> Vec<u8> {
     if f.is_depth() {
         return read(glow::DEPTH_COMPONENT, glow::FLOAT, 4);
     }
+    if !state.pixel_transfer.colour_identity() {
+        let floats = read(glow::RGBA, glow::FLOAT, 16);
+        let colours: Vec<glam::Vec4> = floats
+            .chunks_exact(16)
+            .map(|p| {
+                glam::Vec4::from_array(std::array::from_fn(|k| {
+                    f32::from_ne_bytes([p[4 * k], p[4 * k + 1], p[4 * k + 2], p[4 * k + 3]])
+                }))
+            })
+            .collect();
+        return texel_store::store(&colours, f, &state.pixel_transfer, &state.pixel_maps);
+    }
     let rgba = read(glow::RGBA, glow::UNSIGNED_BYTE, 4);
-    let keep: &[usize] = match f.base() {
-        BaseFormat::Rgba => &[0, 1, 2, 3],
-        BaseFormat::Rgb => &[0, 1, 2],
-        BaseFormat::LuminanceAlpha => &[0, 3],
-        BaseFormat::Luminance | BaseFormat::Intensity => &[0],
-        BaseFormat::Alpha | BaseFormat::Depth => &[3],
-    };
+    let keep = texel_store::kept(f.base());
     rgba.chunks_exact(4)
         .flat_map(|p| keep.iter().map(move |&k| p[k]))
         .collect()
@@ -106,6 +107,27 @@ fn sub_image_1d(
     Ok(())
 }
 
+/// A sub-image's bytes as the level's storage holds them, with the storage's client
+/// format and type (`texel_store`), or `None` when they go as they are.
+pub(super) fn stored_sub_image(
+    state: &FixedState,
+    target: TextureTarget,
+    name: u32,
+    t: &TexSubImage,
+) -> Option<((u32, u32), Vec<u8>)> {
+    let internal = state.texture(target, name)?.level(t.level)?.internal_format;
+    let bytes = texel_store::stored_image(
+        &t.data,
+        t.format,
+        t.ty,
+        internal,
+        &state.pixel_transfer,
+        &state.pixel_maps,
+    )?;
+    let (format, ty, _) = storage(internal);
+    Some(((format, ty), bytes))
+}
+
 impl Textures {
     /// glTexSubImage1D into the active unit's 1D texture.
     pub fn sub_image_1d(
@@ -117,8 +139,13 @@ impl Textures {
         let target = TextureTarget::Texture1D;
         let name = state.units[state.active_unit()].bound(target);
         let gl_t = self.edit(ctx.gl(), (target, name))?;
-        let format = (conv::pixel_format(t.format), conv::value(t.ty));
-        sub_image_1d(ctx, t.level, t.x, t.width, format, &t.data)?;
+        match stored_sub_image(state, target, name, t) {
+            Some((format, bytes)) => sub_image_1d(ctx, t.level, t.x, t.width, format, &bytes)?,
+            None => {
+                let format = (conv::pixel_format(t.format), conv::value(t.ty));
+                sub_image_1d(ctx, t.level, t.x, t.width, format, &t.data)?
+            }
+        }
         if let Some(object) = state.texture(target, name) {
             generate_mipmap(ctx.gl(), gl_t, object, t.level);
         }
@@ -136,7 +163,7 @@ impl Textures {
         let gl = ctx.gl();
         let target = TextureTarget::Texture1D;
         let name = state.units[state.active_unit()].bound(target);
-        let bytes = read_as_stored(gl, [c.x, c.y, c.width, 1], c.internal_format);
+        let bytes = read_as_stored(gl, state, [c.x, c.y, c.width, 1], c.internal_format);
         let gl_t = self.edit(gl, (target, name))?;
         let (internal, _) = conv::tex_format(c.internal_format);
         let (format, ty, _) = storage(c.internal_format);
@@ -178,7 +205,7 @@ impl Textures {
             return Ok(());
         };
         let f = level.internal_format;
-        let bytes = read_as_stored(gl, [c.x, c.y, c.width, c.height], f);
+        let bytes = read_as_stored(gl, state, [c.x, c.y, c.width, c.height], f);
         let gl_t = self.edit(gl, (c.target, name))?;
         let (format, ty, _) = storage(f);
         match c.target {

@@ -112,7 +112,7 @@ impl Textures {
             return Ok(());
         };
         let gl_t = self.edit(gl, (target, name))?;
-        upload(gl, gl_t, level, l);
+        upload(gl, gl_t, level, l, state);
         apply_params(gl, gl_t, object);
         generate_mipmap(gl, gl_t, object, level);
         self.uploads += 1;
@@ -130,8 +130,15 @@ impl Textures {
     ) -> Result<(), PipelineError> {
         let name = state.units[state.active_unit()].bound(target);
         let gl_t = self.edit(gl, (target, name))?;
-        let (format, ty) = (conv::pixel_format(t.format), conv::value(t.ty));
-        let data = glow::PixelUnpackData::Slice(Some(&t.data[..]));
+        let stored = super::texture_calls::stored_sub_image(state, target, name, t);
+        let ((format, ty), bytes) = match &stored {
+            Some((format, bytes)) => (*format, &bytes[..]),
+            None => (
+                (conv::pixel_format(t.format), conv::value(t.ty)),
+                &t.data[..],
+            ),
+        };
+        let data = glow::PixelUnpackData::Slice(Some(bytes));
         unsafe {
             gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
             match target {
@@ -149,28 +156,54 @@ impl Textures {
         Ok(())
     }
 
-    /// glCopyTexImage2D from the bound read framebuffer into the active unit's 2D texture.
+    /// glCopyTexImage2D from the bound read framebuffer into the active unit's 2D texture:
+    /// a core copy where it keeps what GL keeps, else the rectangle read, transferred and
+    /// stored on the CPU (`texel_store`; a core copy into ALPHA8's R8 would take red).
     pub fn copy_level(
         &mut self,
         gl: &glow::Context,
         state: &FixedState,
         copy: &crate::ff::CopyTexImage,
     ) -> Result<(), PipelineError> {
+        use crate::ff::texture::BaseFormat;
         let target = TextureTarget::Texture2D;
         let name = state.units[state.active_unit()].bound(target);
+        let f = copy.internal_format;
+        let through_cpu = !f.is_depth()
+            && (!state.pixel_transfer.colour_identity()
+                || matches!(f.base(), BaseFormat::Alpha | BaseFormat::LuminanceAlpha));
+        let rect = [copy.x, copy.y, copy.width, copy.height];
+        let bytes = through_cpu.then(|| super::texture_calls::read_as_stored(gl, state, rect, f));
         let gl_t = self.edit(gl, (target, name))?;
-        let (internal, _) = conv::tex_format(copy.internal_format);
+        let (internal, _) = conv::tex_format(f);
         unsafe {
-            gl.copy_tex_image_2d(
-                gl_t,
-                copy.level,
-                internal,
-                copy.x,
-                copy.y,
-                copy.width,
-                copy.height,
-                0,
-            );
+            match &bytes {
+                Some(b) => {
+                    let (format, ty, _) = super::texel_store::storage(f);
+                    gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+                    gl.tex_image_2d(
+                        gl_t,
+                        copy.level,
+                        internal as i32,
+                        copy.width,
+                        copy.height,
+                        0,
+                        format,
+                        ty,
+                        glow::PixelUnpackData::Slice(Some(b)),
+                    );
+                }
+                None => gl.copy_tex_image_2d(
+                    gl_t,
+                    copy.level,
+                    internal,
+                    copy.x,
+                    copy.y,
+                    copy.width,
+                    copy.height,
+                    0,
+                ),
+            }
         }
         if let Some(object) = state.texture(target, name) {
             apply_params(gl, gl_t, object);
@@ -250,17 +283,33 @@ impl Textures {
 /// The unit used to edit textures outside draws (never a fixed-function unit).
 const SCRATCH_UNIT: u32 = 15;
 
-fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel) {
+/// Level `level` of `l`, its client bytes converted where the storage would hold
+/// something else (`texel_store`, under the state's pixel transfer).
+fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel, state: &FixedState) {
     let (internal, _) = conv::tex_format(l.internal_format);
-    let (format, ty, bytes) = match &l.data {
-        Some(d) => (
+    let stored = l.data.as_ref().and_then(|d| {
+        super::texel_store::stored_image(
+            &d.bytes,
+            d.format,
+            d.ty,
+            l.internal_format,
+            &state.pixel_transfer,
+            &state.pixel_maps,
+        )
+    });
+    let (format, ty, bytes) = match (&l.data, &stored) {
+        (Some(_), Some(b)) => {
+            let (format, ty, _) = super::texel_store::storage(l.internal_format);
+            (format, ty, Some(&b[..]))
+        }
+        (Some(d), None) => (
             conv::pixel_format(d.format),
             conv::value(d.ty),
             Some(&d.bytes[..]),
         ),
         // Storage only: any matching client format will do.
-        None if l.internal_format.is_depth() => (glow::DEPTH_COMPONENT, glow::FLOAT, None),
-        None => (glow::RED, glow::UNSIGNED_BYTE, None),
+        (None, _) if l.internal_format.is_depth() => (glow::DEPTH_COMPONENT, glow::FLOAT, None),
+        (None, _) => (glow::RED, glow::UNSIGNED_BYTE, None),
     };
     unsafe {
         gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
