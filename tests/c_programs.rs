@@ -960,3 +960,37 @@ fn pixel_transfers_reach_texture_images_as_on_mesa() {
         "64x32",
     );
 }
+
+/// `tests/c/outline.c`: stippled outlines — polygons in LINE mode under LINE_STIPPLE, every
+/// polygon primitive type, smooth and flat, edge flags, culling, separate front and back
+/// modes, wide lines, a hidden-line pass over polygon offset — light as many pixels per
+/// panel as on Mesa and draw Mesa's image but for dash ends one pixel apart at four
+/// corners (the same dashes drawn as a GL_LINE_LOOP differ from Mesa's alike: the line
+/// stipple's own deviation, not the outline's order); the trace replays.
+#[test]
+fn stippled_outlines_draw_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("outline");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "line mode with stipple                   err 0x0",
+            "quads 60",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 12, "a stippled outline");
+    assert_images_match(
+        "outline",
+        &ours,
+        &mesa,
+        Tolerance {
+            per_channel: 1,
+            max_bad_pixels: 8,
+        },
+    );
+    assert_trace_replays(
+        "outline",
+        &compile("outline", Linking::Direct),
+        &[],
+        "128x96",
+    );
+}

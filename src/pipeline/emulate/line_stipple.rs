@@ -17,8 +17,8 @@
 //!    distance d: the six of the view volume (w ± x, w ± y, w ± z) and the enabled user
 //!    planes (p′·eye). An end outside a plane (d < 0) moves to t = d₀/(d₀ − d₁) along the
 //!    segment (the largest t over the planes, from each end); a segment outside one plane
-//!    at both ends, or whose cuts meet (t₀ + t₁ ≥ 1), is dropped — and with it the
-//!    counter reset it carried. So a line crossing the near plane (w ≤ 0 at one end) is
+//!    at both ends, or whose cuts meet (t₀ + t₁ ≥ 1), is dropped — its counter reset
+//!    passing to the next segment drawn, which counts the same. So a line crossing the near plane (w ≤ 0 at one end) is
 //!    counted from where it enters the view volume, never from its invisible vertex.
 //! 3. **Window coordinates**: x_w = (x_c · (1/w_c)) · (width/2) + (x + width/2) (a fused
 //!    multiply-add for a vertex, llvmpipe's generated code; unfused for a clipped end), the same
@@ -160,17 +160,25 @@ pub struct StippleInputs<'a> {
     pub stipple: LineStipple,
 }
 
-/// One segment of a line primitive: its vertex indices and whether it resets the counter.
+/// One segment of a line primitive: its vertex indices, whether it resets the counter, and
+/// the vertex whose values flat shading gives its dashes (a line's second vertex, GL 1.5
+/// Table 2.8; a polygon edge's polygon's).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Segment {
     pub from: u32,
     pub to: u32,
     pub reset: bool,
+    pub provoking: u32,
 }
 
 /// The segments of a line primitive over `indices` (step 1); none for other primitives.
 pub fn segments(primitive: Primitive, indices: &[u32]) -> Vec<Segment> {
-    let seg = |from: u32, to: u32, reset: bool| Segment { from, to, reset };
+    let seg = |from: u32, to: u32, reset: bool| Segment {
+        from,
+        to,
+        reset,
+        provoking: to,
+    };
     match primitive {
         Primitive::Lines => indices
             .chunks_exact(2)
@@ -278,6 +286,18 @@ pub fn dashes(
     indices: &[u32],
     inputs: &StippleInputs,
 ) -> Vec<Dash> {
+    dashes_of_segments(&segments(primitive, indices), positions, inputs)
+}
+
+/// The dashes of `segments` in order over `positions`. A reset carried by a segment that
+/// clipping drops passes to the next segment drawn (for a line draw the same counter as
+/// dropping it: nothing was counted between; for a polygon's outline the reset of its
+/// first edge).
+pub fn dashes_of_segments(
+    segments: &[Segment],
+    positions: &[Vec4],
+    inputs: &StippleInputs,
+) -> Vec<Dash> {
     let eye: Vec<Vec4> = positions.iter().map(|&p| inputs.modelview * p).collect();
     let mvp = inputs.projection * inputs.modelview;
     let clip: Vec<Vec4> = positions
@@ -298,8 +318,10 @@ pub fn dashes(
         d
     };
     let mut counter = 0i64;
+    let mut reset = false;
     let mut out = Vec::new();
-    for seg in segments(primitive, indices) {
+    for &seg in segments {
+        reset |= seg.reset;
         let (a, b) = (seg.from as usize, seg.to as usize);
         if a >= clip.len() || b >= clip.len() {
             continue;
@@ -307,7 +329,7 @@ pub fn dashes(
         let Some(cut) = clip_segment(clip[a], clip[b], &distances(a), &distances(b)) else {
             continue;
         };
-        if seg.reset {
+        if std::mem::take(&mut reset) {
             counter = 0;
         }
         let window = |k: usize| match cut.moved[k] {
@@ -334,7 +356,7 @@ pub fn dashes(
         for (t0, t1) in runs(inputs.stipple, &mut counter, length) {
             out.push(Dash {
                 ends: [at(t0, 0), at(t1, 1)],
-                provoking: seg.to,
+                provoking: seg.provoking,
             });
         }
     }

@@ -18,6 +18,7 @@ pub mod draw;
 pub mod glsl;
 pub mod key;
 pub mod line_stipple;
+pub mod outline_dashes;
 pub mod pixels;
 pub mod polygon;
 pub mod program;
@@ -192,14 +193,20 @@ impl Emulate {
             key.vertex.positions = PositionSource::Window;
             return self.draw_pass(gl, state, &key, &pass, Drawn::Dashes(geometry, &dashes));
         }
-        // Polygons in LINE mode are stippled by Mesa edge by edge; the emulated path does
-        // not cut polygon edges into dashes and refuses the draw rather than draw solid
-        // outlines.
-        if stipple.is_some() && passes.iter().any(|p| p.draws_lines) {
-            return Err(PipelineError::Unsupported {
-                what: "LINE_STIPPLE (enabled at a draw of polygons in LINE mode)",
-                path: "emulate",
-            });
+        // Polygons in LINE mode under LINE_STIPPLE: their outlines cut into dashes as Mesa
+        // cuts them (`outline_dashes`), drawn after the draw's other passes.
+        let outline = match stipple {
+            Some(stipple) => passes.iter().find(|p| p.draws_lines).copied().map(|p| {
+                let segments = outline_dashes::outline_segments(geometry, state);
+                (
+                    p,
+                    stipple_dashes::of_segments(state, stipple, geometry, &segments),
+                )
+            }),
+            None => None,
+        };
+        if outline.is_some() {
+            passes.retain(|p| !p.draws_lines);
         }
         for pass in passes {
             let mut key = base.clone();
@@ -208,6 +215,15 @@ impl Emulate {
             key.fragment.point_coverage = pass.draws_points() && points.shape == PointShape::Round;
             key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
             self.draw_pass(gl, state, &key, &pass, Drawn::Geometry(geometry))?;
+        }
+        if let Some((mut pass, dashes)) = outline {
+            pass.positions = PositionSource::Window;
+            pass.cull = None;
+            pass.edges = None;
+            pass.offset = false;
+            let mut key = base;
+            key.vertex.positions = PositionSource::Window;
+            self.draw_pass(gl, state, &key, &pass, Drawn::Dashes(geometry, &dashes))?;
         }
         Ok(())
     }

@@ -1,7 +1,9 @@
 //! The state a stippled line draw reads (`line_stipple`): the matrices, the viewport and
 //! depth range, the enabled user clip planes and the stipple, gathered for one draw.
 
-use super::line_stipple::{dashes, Dash, StippleInputs, WindowTransform};
+use super::line_stipple::{
+    dashes_of_segments, segments, Dash, Segment, StippleInputs, WindowTransform,
+};
 use crate::ff::{FixedState, Geometry, LineStipple, Primitive};
 
 /// True for the primitives drawn as lines (LINE_STIPPLE applies to them directly).
@@ -14,6 +16,20 @@ pub fn is_line(p: Primitive) -> bool {
 
 /// The dashes of the line draw `g` under `state` and `stipple`.
 pub fn of_draw(state: &FixedState, stipple: LineStipple, g: &Geometry) -> Vec<Dash> {
+    let order: Vec<u32> = match &g.indices {
+        Some(i) => i.clone(),
+        None => (0..g.positions.len() as u32).collect(),
+    };
+    of_segments(state, stipple, g, &segments(g.primitive, &order))
+}
+
+/// The dashes of `segments` between the vertices of `g` (a polygon draw's outline).
+pub fn of_segments(
+    state: &FixedState,
+    stipple: LineStipple,
+    g: &Geometry,
+    segments: &[Segment],
+) -> Vec<Dash> {
     let planes: Vec<_> = state.clip_planes.iter().filter_map(|p| p.get()).collect();
     let inputs = StippleInputs {
         modelview: state.modelview_matrix(),
@@ -22,9 +38,5 @@ pub fn of_draw(state: &FixedState, stipple: LineStipple, g: &Geometry) -> Vec<Da
         clip_planes: &planes,
         stipple,
     };
-    let order: Vec<u32> = match &g.indices {
-        Some(i) => i.clone(),
-        None => (0..g.positions.len() as u32).collect(),
-    };
-    dashes(g.primitive, &g.positions, &order, &inputs)
+    dashes_of_segments(segments, &g.positions, &inputs)
 }
