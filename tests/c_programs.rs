@@ -994,3 +994,42 @@ fn stippled_outlines_draw_as_on_mesa() {
         "128x96",
     );
 }
+
+/// `tests/c/tex3d.c`: GL 1.2's 3D textures — glTexImage3D, glTexSubImage3D,
+/// glCopyTexSubImage3D, PROXY_TEXTURE_3D, the image pixel-store parameters, mipmaps,
+/// display lists and glFramebufferTexture3D answer and fail as on Mesa; panels sampling
+/// a volume by r, between images, through texgen R in perspective, wrapped, minified,
+/// patched and drawn into are Mesa's image exactly, and the trace replays.
+#[test]
+fn volumes_answer_and_draw_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("tex3d");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "GL_EXT_texture3D listed                  1",
+            "MAX_3D_TEXTURE_SIZE                      2048  err 0x0",
+            "level 1 width 2048                       err 0x501",
+            "a depth format                           err 0x502",
+            "proxy TEXTURE_WIDTH                      0  err 0x0",
+            "packed with image height 3, skip 1       238 238 238 238 238 238 8 9 10 11 238 238 14 4 16 5 238 238 238 238",
+            "proxy width while compiling              16  err 0x0",
+            "what the list gave                       40 1 2 3 4 5 6 7",
+            "status                                   0x8cd6",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 100, "a 3D texture answer");
+    // Every panel of the two bottom rows of Mesa's image shows a texture, not the
+    // background.
+    let background = mesa.get_pixel(0, 0).0;
+    for row in 0..2 {
+        for col in 0..8 {
+            let p = mesa.get_pixel(col * 16 + 8, 63 - (row * 16 + 8)).0;
+            assert!(
+                (0..3).any(|k| p[k].abs_diff(background[k]) > 30),
+                "panel ({col}, {row}) of Mesa's image is empty"
+            );
+        }
+    }
+    assert_images_match("tex3d", &ours, &mesa, Tolerance::EXACT);
+    assert_trace_replays("tex3d", &compile("tex3d", Linking::Direct), &[], "128x64");
+}

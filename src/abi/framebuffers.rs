@@ -201,6 +201,10 @@ fn attachment_parameter(args: &[CArg], state: &FixedState) -> Result<i32, GlErro
             Ok(level)
         }
         (r::FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, Some(Attached::Texture { .. })) => Ok(0),
+        // FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT is the same token.
+        (r::FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, Some(Attached::Texture { layer, .. })) => {
+            Ok(layer)
+        }
         (p, Some(a)) => {
             let b = match a {
                 Attached::Renderbuffer(rb) => f
@@ -212,6 +216,7 @@ fn attachment_parameter(args: &[CArg], state: &FixedState) -> Result<i32, GlErro
                     target: tt,
                     name,
                     level,
+                    ..
                 } => state
                     .texture(tt, name)
                     .and_then(|t| t.level(level))
@@ -229,7 +234,9 @@ fn attachment_parameter(args: &[CArg], state: &FixedState) -> Result<i32, GlErro
 fn known_pname(pname: u32) -> bool {
     matches!(
         pname,
-        r::FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL | r::FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE
+        r::FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL
+            | r::FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE
+            | r::FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER
     ) || (r::FRAMEBUFFER_ATTACHMENT_RED_SIZE..=r::FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE)
         .contains(&pname)
 }

@@ -386,9 +386,8 @@ macro_rules! gl_entry_table {
         FramebufferTexture1DEXT = glFramebufferTexture1DEXT(Script; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint);
         FramebufferTexture2D = glFramebufferTexture2D(Script; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint);
         FramebufferTexture2DEXT = glFramebufferTexture2DEXT(Script; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint);
-        // 3D textures are not in the model: attaching one is left out.
-        FramebufferTexture3D = glFramebufferTexture3D(Left; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint, zoffset: GLint);
-        FramebufferTexture3DEXT = glFramebufferTexture3DEXT(Left; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint, zoffset: GLint);
+        FramebufferTexture3D = glFramebufferTexture3D(Script; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint, zoffset: GLint);
+        FramebufferTexture3DEXT = glFramebufferTexture3DEXT(Script; target: GLenum, attachment: GLenum, textarget: GLenum, texture: GLuint, level: GLint, zoffset: GLint);
         FramebufferRenderbuffer = glFramebufferRenderbuffer(Script; target: GLenum, attachment: GLenum, renderbuffertarget: GLenum, renderbuffer: GLuint);
         FramebufferRenderbufferEXT = glFramebufferRenderbufferEXT(Script; target: GLenum, attachment: GLenum, renderbuffertarget: GLenum, renderbuffer: GLuint);
         GetFramebufferAttachmentParameteriv = glGetFramebufferAttachmentParameteriv(Script; target: GLenum, attachment: GLenum, pname: GLenum, params: *mut GLint);
@@ -1162,6 +1161,7 @@ impl Command {
             Command::RenderbufferStorage { .. } => Entry::RenderbufferStorage,
             Command::FramebufferTexture { texture, .. } => match texture {
                 Some((super::texture::TextureTarget::Texture1D, _)) => Entry::FramebufferTexture1D,
+                Some((super::texture::TextureTarget::Texture3D, _)) => Entry::FramebufferTexture3D,
                 _ => Entry::FramebufferTexture2D,
             },
             Command::FramebufferRenderbuffer { .. } => Entry::FramebufferRenderbuffer,

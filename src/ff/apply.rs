@@ -523,7 +523,7 @@ impl FixedState {
         }
         let tex = self.bound_mut(target)?;
         let level = tex.level_mut(t.level).ok_or(GlError::invalid_operation(
-            "TexSubImage2D on an unspecified level",
+            "glTexSubImage of an unspecified level",
         ))?;
         if t.width < 0
             || t.height < 0
@@ -536,7 +536,7 @@ impl FixedState {
             || t.z + t.depth > level.depth
         {
             return Err(GlError::invalid_value(
-                "TexSubImage2D region outside the image",
+                "glTexSubImage region outside the image",
             ));
         }
         check_format_pair(level.internal_format, t.format)?;

@@ -10,7 +10,9 @@ use super::framebuffer::{
     FramebufferTarget, MAX_COLOR_ATTACHMENTS, MAX_RENDERBUFFER_SIZE,
 };
 use super::state::FixedState;
-use super::texture::{PixelFormat, TexFormat, TextureTarget};
+use super::texture::{
+    PixelFormat, TexFormat, TextureTarget, MAX_3D_TEXTURE_LEVEL, MAX_3D_TEXTURE_SIZE,
+};
 
 /// The largest texture level a framebuffer attachment may name: log2 of the largest
 /// texture size (llvmpipe: 16384 = 2^14).
@@ -52,6 +54,7 @@ impl FixedState {
                 attachment,
                 texture,
                 level,
+                layer,
             } => {
                 let attached = match texture {
                     None => None,
@@ -62,15 +65,27 @@ impl FixedState {
                                 "the texture name has no texture of that target",
                             ));
                         }
-                        if !(0..=MAX_TEXTURE_LEVEL).contains(level) {
+                        let max_level = match tt {
+                            TextureTarget::Texture3D => MAX_3D_TEXTURE_LEVEL,
+                            _ => MAX_TEXTURE_LEVEL,
+                        };
+                        if !(0..=max_level).contains(level) {
                             return Err(GlError::invalid_value(
-                                "a texture level from 0 to log2(MAX_TEXTURE_SIZE)",
+                                "a texture level from 0 to log2(MAX_TEXTURE_SIZE) (3D: MAX_3D_TEXTURE_SIZE)",
+                            ));
+                        }
+                        // glFramebufferTexture3D: a zoffset below MAX_3D_TEXTURE_SIZE, the
+                        // level's depth or not (completeness decides that; Mesa measured).
+                        if !(0..MAX_3D_TEXTURE_SIZE).contains(layer) {
+                            return Err(GlError::invalid_value(
+                                "a 3D texture's zoffset from 0 to MAX_3D_TEXTURE_SIZE − 1",
                             ));
                         }
                         Some(Attached::Texture {
                             target: *tt,
                             name: *name,
                             level: *level,
+                            layer: *layer,
                         })
                     }
                 };
@@ -136,12 +151,16 @@ impl FixedState {
 
     /// glCheckFramebufferStatus of the framebuffer bound to `target`.
     pub fn framebuffer_status(&self, target: FramebufferTarget) -> Completeness {
-        self.framebuffers.status(target, |tt, name, level| {
+        self.framebuffers.status(target, |tt, name, level, layer| {
             let l = self
                 .textures
                 .get(&name)
                 .filter(|t| t.target == tt)?
                 .level(level)?;
+            // A 3D layer at or past the depth is no image (INCOMPLETE_ATTACHMENT).
+            if layer >= l.depth {
+                return None;
+            }
             texture_image_info(l.internal_format, l.width, l.height)
         })
     }

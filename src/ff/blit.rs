@@ -245,6 +245,7 @@ impl FixedState {
                 target: tt,
                 name,
                 level,
+                ..
             } => {
                 let format = self.texture(tt, name)?.level(level)?.internal_format;
                 let bits = super::framebuffer::texture_bits(format);

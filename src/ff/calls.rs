@@ -394,7 +394,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             Command::TexImage(TexImage {
                 target: TextureTarget::Texture1D,
                 level: c.i32(1)?,
-                internal_format: c.enm(2)?,
+                internal_format: internal_format(c, 2)?,
                 width: shape.width,
                 height: 1,
                 depth: 1,
@@ -411,7 +411,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             Command::TexImage(TexImage {
                 target: TextureTarget::Texture2D,
                 level: c.i32(1)?,
-                internal_format: c.enm(2)?,
+                internal_format: internal_format(c, 2)?,
                 width: shape.width,
                 height: shape.height,
                 depth: 1,
@@ -508,6 +508,16 @@ fn target_is<A: Args>(c: &A, want: TextureTarget) -> Result<(), A::Error> {
     } else {
         Err(c.unknown(0, vec![want.gl_name().unwrap_or("GL_TEXTURE_2D")]))
     }
+}
+
+/// A glTexImage internal format: a token that names none is INVALID_VALUE for a C caller
+/// (Mesa's `_mesa_base_tex_format` check, measured for glTexImage2D and glTexImage3D),
+/// the list of formats for a script.
+pub(super) fn internal_format<A: Args>(c: &A, i: usize) -> Result<TexFormat, A::Error> {
+    c.enm(i).map_err(|e| match c.deferred(&e) {
+        Some(_) => c.bad(i, "a texture internal format"),
+        None => e,
+    })
 }
 
 fn env_target<A: Args>(c: &A) -> Result<(), A::Error> {

@@ -66,6 +66,29 @@ pub fn framebuffer<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 attachment,
                 texture: (name != 0).then_some((textarget, name)),
                 level: c.i32(4)?,
+                layer: 0,
+            }
+        }
+        e @ (E::FramebufferTexture3D | E::FramebufferTexture3DEXT) => {
+            c.count(6)?;
+            let target = c.enm(0)?;
+            let attachment = c.enm(1)?;
+            let textarget: TextureTarget = c.enm(2)?;
+            let name = c.u32(3)?;
+            // Only a TEXTURE_3D textarget names an image of a 3D call (Mesa:
+            // INVALID_OPERATION, measured).
+            if name != 0 && textarget != TextureTarget::Texture3D {
+                return Ok(Some(Command::Raise {
+                    error: GlErrorKind::InvalidOperation,
+                    call: e,
+                }));
+            }
+            Command::FramebufferTexture {
+                target,
+                attachment,
+                texture: (name != 0).then_some((textarget, name)),
+                level: c.i32(4)?,
+                layer: c.i32(5)?,
             }
         }
         E::FramebufferRenderbuffer | E::FramebufferRenderbufferEXT => {

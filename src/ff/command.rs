@@ -433,12 +433,14 @@ pub enum Command {
         width: i32,
         height: i32,
     },
-    /// glFramebufferTexture1D/2D; `texture` `None` (name 0) detaches.
+    /// glFramebufferTexture1D/2D/3D; `texture` `None` (name 0) detaches.
     FramebufferTexture {
         target: FramebufferTarget,
         attachment: AttachmentPoint,
         texture: Option<(TextureTarget, u32)>,
         level: i32,
+        /// glFramebufferTexture3D's zoffset: the image of the 3D level; 0 for 1D and 2D.
+        layer: i32,
     },
     /// glFramebufferRenderbuffer; 0 detaches.
     FramebufferRenderbuffer {

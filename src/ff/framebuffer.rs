@@ -68,6 +68,8 @@ pub enum Attached {
         target: TextureTarget,
         name: u32,
         level: i32,
+        /// The image of a 3D level (glFramebufferTexture3D's zoffset); 0 for 1D and 2D.
+        layer: i32,
     },
     Renderbuffer(u32),
 }
@@ -534,11 +536,13 @@ impl Framebuffers {
     }
 
     /// glCheckFramebufferStatus of the framebuffer bound to `target`; `image` tells what
-    /// a texture attachment's image is (the textures live in the state beside this).
+    /// a texture attachment's image is — (target, name, level, layer), `None` for no
+    /// image, as for a 3D layer at or past the level's depth (the textures live in the
+    /// state beside this).
     pub fn status(
         &self,
         target: FramebufferTarget,
-        texture_image: impl Fn(TextureTarget, u32, i32) -> ImageInfo,
+        texture_image: impl Fn(TextureTarget, u32, i32, i32) -> ImageInfo,
     ) -> Completeness {
         let name = self.bound(target);
         let Some(fb) = self.objects.get(&name).filter(|_| name != 0) else {
@@ -552,7 +556,8 @@ impl Framebuffers {
                     target,
                     name,
                     level,
-                } => texture_image(target, name, level),
+                    layer,
+                } => texture_image(target, name, level, layer),
                 Attached::Renderbuffer(r) => self
                     .renderbuffers
                     .get(&r)
@@ -601,6 +606,7 @@ impl Framebuffers {
                     target,
                     name,
                     level,
+                    ..
                 }) => texture_format(target, name, level).map_or(Bits::default(), texture_bits),
                 Some(Attached::Renderbuffer(r)) => self
                     .renderbuffers
@@ -642,6 +648,8 @@ pub fn never_compiled(entry: Entry) -> bool {
             | E::FramebufferTexture1DEXT
             | E::FramebufferTexture2D
             | E::FramebufferTexture2DEXT
+            | E::FramebufferTexture3D
+            | E::FramebufferTexture3DEXT
             | E::FramebufferRenderbuffer
             | E::FramebufferRenderbufferEXT
             | E::GetFramebufferAttachmentParameteriv
@@ -757,7 +765,7 @@ pub fn texture_image_info(format: TexFormat, width: i32, height: i32) -> ImageIn
 mod tests {
     use super::*;
 
-    fn no_textures(_: TextureTarget, _: u32, _: i32) -> ImageInfo {
+    fn no_textures(_: TextureTarget, _: u32, _: i32, _: i32) -> ImageInfo {
         None
     }
 
@@ -826,6 +834,7 @@ mod tests {
             target: TextureTarget::Texture2D,
             name: 5,
             level: 0,
+            layer: 0,
         };
         f.bind(FramebufferTarget::Both, 1);
         f.bound_object_mut(FramebufferTarget::Both).unwrap().color[0] = Some(tex);

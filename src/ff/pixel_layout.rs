@@ -84,27 +84,32 @@ pub fn layout(shape: PixelShape, p: &Packing) -> Layout {
         }
     };
     // GL 1.2 §3.8.1: a 3D call's images, IMAGE_HEIGHT rows apart (the height when 0),
-    // after SKIP_IMAGES of them.
+    // after SKIP_IMAGES of them. Saturating: a layout beyond the address space needs more
+    // than any memory holds, so the front ends refuse it as too short.
     let (images, image_stride, first) = match shape.depth {
-        None => (1, h * stride, first),
+        None => (1, h.saturating_mul(stride), first),
         Some(d) => {
             let image_rows = if p.image_height > 0 {
                 p.image_height
             } else {
                 h
             };
-            let image_stride = image_rows * stride;
+            let image_stride = image_rows.saturating_mul(stride);
+            let skipped = p.skip_images.saturating_mul(image_stride);
             (
                 d.max(0) as usize,
                 image_stride,
-                first + p.skip_images * image_stride,
+                first.saturating_add(skipped),
             )
         }
     };
     let extent = if w == 0 || h == 0 || images == 0 {
         0
     } else {
-        first + (images - 1) * image_stride + (h - 1) * stride + span
+        first
+            .saturating_add((images - 1).saturating_mul(image_stride))
+            .saturating_add((h - 1).saturating_mul(stride))
+            .saturating_add(span)
     };
     Layout {
         first,

@@ -144,15 +144,6 @@ impl TextureUnit {
         }
     }
 
-    /// Whether texturing of `target` is enabled (TEXTURE_1D, TEXTURE_2D, TEXTURE_3D).
-    pub fn enabled(&self, target: TextureTarget) -> bool {
-        match target {
-            TextureTarget::Texture1D => self.texture_1d,
-            TextureTarget::Texture2D => self.texture_2d,
-            TextureTarget::Texture3D => self.texture_3d,
-        }
-    }
-
     pub fn texgen(&self, coord: TexCoord) -> Option<TexGen> {
         self.texgen[coord.index()].get()
     }

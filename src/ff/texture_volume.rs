@@ -44,7 +44,7 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let image = TexImage {
                 target: TextureTarget::Texture3D,
                 level: c.i32(1)?,
-                internal_format: internal_format(c, 2)?,
+                internal_format: super::calls::internal_format(c, 2)?,
                 width: shape.width,
                 height: shape.height,
                 depth: c.i32(5)?,
@@ -100,15 +100,6 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
 /// Argument 0 is GL_TEXTURE_3D.
 fn texture_3d<A: Args>(c: &A) -> Result<(), A::Error> {
     c.pname(0, &["GL_TEXTURE_3D"]).map(|_| ())
-}
-
-/// An internal format: a token that names none is INVALID_VALUE for a C caller (Mesa's
-/// `_mesa_base_tex_format` check), the script's list of formats for a script.
-fn internal_format<A: Args>(c: &A, i: usize) -> Result<TexFormat, A::Error> {
-    c.enm(i).map_err(|e| match c.deferred(&e) {
-        Some(_) => c.bad(i, "a texture internal format"),
-        None => e,
-    })
 }
 
 /// glTexImage3D's checks before the formats: [`check_volume_arguments`].

@@ -388,3 +388,23 @@ mod calls {
         assert_eq!(t.data.bytes().map(|b| b.to_vec()), Some(vec![5, 6]));
     }
 }
+
+/// The fuzzer's seed for volumes parses, prints and parses again to the same commands.
+#[test]
+fn the_volume_seed_round_trips() {
+    let text = include_str!("../../fuzz/seeds/script/volume-images");
+    let cmds = crate::ff::script::parse(text).unwrap();
+    let Some(crate::ff::Command::TexImage(t)) = cmds.get(1) else {
+        panic!("{cmds:?}");
+    };
+    assert_eq!(
+        t.data.bytes().map(|b| b.to_vec()),
+        Some(vec![8, 9, 10, 11, 14, 15, 16, 17])
+    );
+    let printed = crate::ff::script::print(&cmds);
+    assert_eq!(
+        crate::ff::script::parse(&printed).unwrap(),
+        cmds,
+        "{printed}"
+    );
+}

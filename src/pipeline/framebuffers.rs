@@ -345,11 +345,26 @@ impl FramebufferMirror {
                     target: tt,
                     name,
                     level,
+                    layer,
                 }) => {
                     let t = texture(tt, name)
                         .and_then(NonZeroU32::new)
                         .map(glow::NativeTexture);
-                    unsafe { gl.framebuffer_texture(glow::DRAW_FRAMEBUFFER, gl_point, t, level) }
+                    // One image of a 3D level; glFramebufferTexture would attach them all.
+                    match tt {
+                        TextureTarget::Texture3D => unsafe {
+                            gl.framebuffer_texture_layer(
+                                glow::DRAW_FRAMEBUFFER,
+                                gl_point,
+                                t,
+                                level,
+                                layer,
+                            )
+                        },
+                        _ => unsafe {
+                            gl.framebuffer_texture(glow::DRAW_FRAMEBUFFER, gl_point, t, level)
+                        },
+                    }
                 }
             }
         }

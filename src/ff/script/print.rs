@@ -513,10 +513,15 @@ fn call(c: &Command) -> String {
             attachment,
             texture,
             level,
+            layer,
         } => {
             let (textarget, name) = texture.unwrap_or((crate::ff::TextureTarget::Texture2D, 0));
+            let layer = match textarget {
+                crate::ff::TextureTarget::Texture3D => format!(", {layer}"),
+                _ => String::new(),
+            };
             format!(
-                "{}({}, {}, {}, {name}, {level})",
+                "{}({}, {}, {}, {name}, {level}{layer})",
                 c.entry(),
                 n(*target),
                 n(*attachment),

@@ -453,6 +453,13 @@ fn sample_commands() -> Vec<Command> {
             param: TexParam::WrapR(Wrap::ClampToEdge),
         },
         Command::Enable(Capability::Texture3D),
+        Command::FramebufferTexture {
+            target: crate::ff::framebuffer::FramebufferTarget::Draw,
+            attachment: crate::ff::framebuffer::AttachmentPoint::Color(1),
+            texture: Some((TextureTarget::Texture3D, 9)),
+            level: 1,
+            layer: 2,
+        },
         Command::GetTexImage(crate::ff::texture_calls::GetTexImage {
             target: TextureTarget::Texture3D,
             level: 0,

@@ -250,6 +250,14 @@ fn same_code() -> Vec<Case> {
     let none = Vec::new;
     vec![
         same(
+            "TEXTURE_WRAP_R of the enabled volume (a texture parameter)",
+            plus(textured(), volume()),
+            vec![Command::TexParameter {
+                target: TextureTarget::Texture3D,
+                param: TexParam::WrapR(Wrap::ClampToEdge),
+            }],
+        ),
+        same(
             "eye plane values",
             eye_linear(),
             vec![Command::TexGen {
@@ -699,6 +707,27 @@ fn same_code() -> Vec<Case> {
 }
 
 /// Predicates: what the code is made of.
+/// Unit 0's 2D texture and, enabled over it, a 2×2×1 RGB8 volume with MIN_FILTER NEAREST.
+fn volume() -> Vec<Command> {
+    vec![
+        Command::BindTexture {
+            target: TextureTarget::Texture3D,
+            name: 3,
+        },
+        image(
+            TextureTarget::Texture3D,
+            TexFormat::Rgb8,
+            PixelFormat::Rgb,
+            2,
+        ),
+        Command::TexParameter {
+            target: TextureTarget::Texture3D,
+            param: TexParam::MinFilter(Filter::Nearest),
+        },
+        Command::Enable(Capability::Texture3D),
+    ]
+}
+
 fn changed_code() -> Vec<Case> {
     let none = Vec::new;
     vec![
@@ -724,6 +753,11 @@ fn changed_code() -> Vec<Case> {
                 },
                 Command::Enable(Capability::Texture1D),
             ],
+        ),
+        changes(
+            "a 3D texture enabled over the 2D one (sampler3D at (s, t, r)/q)",
+            textured(),
+            volume(),
         ),
         changes(
             "the base format of the unit's image",

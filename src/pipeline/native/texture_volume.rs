@@ -11,8 +11,8 @@ use crate::ff::{TexImage, TexSubImage};
 use super::bindings as gl;
 use super::conv;
 
-/// glTexImage3D of TEXTURE_3D, or of PROXY_TEXTURE_3D (`proxy`); `None` data is a NULL
-/// pointer (storage only).
+/// glTexImage3D of TEXTURE_3D or of PROXY_TEXTURE_3D; `None` data is a NULL pointer
+/// (storage only).
 pub fn tex_image_3d(g: &gl::Gl, t: &TexImage, target: Target) {
     let pixels = t
         .data
