@@ -218,8 +218,8 @@ fn native(body: &str) -> Vec<image::RgbaImage> {
 /// v1→v2 with the counter running on, reset at the start of each polygon. So a GL_QUADS
 /// quad is stippled as the loop v3, v0, v1, v2 (its triangles (v0,v1,v3), (v1,v2,v3)), a
 /// GL_POLYGON as the loop of its vertices from v0, and a GL_TRIANGLES triangle as the loop
-/// v2, v0, v1 — pixel for pixel. The emulated path does not cut polygon edges into dashes
-/// yet and refuses such a draw (`emulated_path_refuses_stippled_polygon_outlines`).
+/// v2, v0, v1 — pixel for pixel. The emulated path draws them so
+/// (`stippled_polygon_outlines_match_mesa`).
 #[test]
 fn mesa_stipples_polygon_outlines_as_loops_from_its_split() {
     let quad = [(10.0, 8.0), (80.0, 12.5), (70.5, 55.0), (15.25, 50.0)];
@@ -261,36 +261,38 @@ fn mesa_stipples_polygon_outlines_as_loops_from_its_split() {
     }
 }
 
+/// The emulated path stipples polygons in LINE mode as Mesa does (`outline_dashes`): the
+/// quads, polygon and triangles above, a strip, a fan and a quad strip, smooth and flat,
+/// pixel for pixel.
 #[test]
-fn emulated_path_refuses_stippled_polygon_outlines() {
-    use fixedfunc::pipeline::{Pipeline, PipelineError};
-    use fixedfunc::vocab::PipelineKind;
-    let ctx = support::context(
-        support::HEADLESS[0],
-        fixedfunc::pipeline::profile(PipelineKind::Emulate),
-    );
-    let _target = support::target(&ctx, W, H, fixedfunc::vocab::DepthBits::D24, false);
-    let mut p = fixedfunc::pipeline::emulate::EmulatedPipeline::new(&ctx).expect("pipeline");
-    let commands = fidelity::parse(&format!(
-        "{}glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);\n{}",
-        header(),
-        lines(
-            "GL_QUADS",
-            &[(10.0, 8.0), (80.0, 12.5), (70.5, 55.0), (15.25, 50.0)],
-            false
-        )
-    ));
-    let e = p
-        .execute(&ctx, &commands)
-        .expect_err("the stippled outline is refused, not drawn solid");
-    assert!(
-        matches!(
-            e,
-            PipelineError::Unsupported {
-                path: "emulate",
-                ..
-            }
-        ),
-        "{e}"
-    );
+fn stippled_polygon_outlines_match_mesa() {
+    let quads = [(10.0, 8.0), (80.0, 12.5), (70.5, 55.0), (15.25, 50.0)];
+    let pent = [
+        (48.0, 4.0),
+        (90.0, 30.0),
+        (70.0, 60.0),
+        (25.0, 60.0),
+        (6.0, 30.0),
+    ];
+    let strip: Vec<(f32, f32)> = (0..6)
+        .map(|i| (8.0 + 15.5 * i as f32, if i % 2 == 1 { 55.0 } else { 9.5 }))
+        .collect();
+    for (prim, v) in [
+        ("GL_QUADS", &quads[..]),
+        ("GL_POLYGON", &pent[..]),
+        ("GL_TRIANGLE_STRIP", &strip[..]),
+        ("GL_TRIANGLE_FAN", &pent[..]),
+        ("GL_QUAD_STRIP", &strip[..4]),
+    ] {
+        for shade in ["GL_SMOOTH", "GL_FLAT"] {
+            check(
+                &format!("outline-{prim}-{shade}"),
+                &format!(
+                    "glLineStipple(1, 0x1F3D);\nglShadeModel({shade});\n\
+                     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);\n{}",
+                    lines(prim, v, true)
+                ),
+            );
+        }
+    }
 }

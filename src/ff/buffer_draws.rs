@@ -1,6 +1,7 @@
 //! Draws from buffer objects remembered: a glDrawArrays or glDrawElements whose arrays and
-//! indices all lie in buffer objects gives the same `Geometry` as the last such draw when
-//! nothing it reads has changed, so the draw hands the pipeline the same `Arc` and a
+//! indices all lie in buffer objects gives the same `Geometry` as an earlier such draw —
+//! one of the last [`REMEMBERED`], so a frame of many objects, each its own draw, repeats
+//! every one of them — when nothing it reads has changed, so the draw hands the pipeline the same `Arc` and a
 //! pipeline that keeps uploaded geometry by its `Arc` uploads it once (Mesa keeps a buffer
 //! object's store in a GPU buffer the same way).
 //!
@@ -36,16 +37,19 @@ struct Key {
     arrays: ClientArrays,
 }
 
-/// The last draw from buffer objects and its geometry.
+/// How many draws from buffer objects are remembered (the most recent ones).
+pub const REMEMBERED: usize = 64;
+
+/// The last draws from buffer objects and their geometry, the most recent last.
 #[derive(Debug, Default)]
 pub struct BufferDraws {
-    last: Option<(Key, Arc<Geometry>)>,
+    last: Vec<(Key, Arc<Geometry>)>,
 }
 
 impl BufferDraws {
     /// A buffer-object call may change a store: no remembered draw survives it.
     pub fn forget(&mut self) {
-        self.last = None;
+        self.last.clear();
     }
 
     /// The geometry of draw `c` if it repeats the remembered one; `None` otherwise.
@@ -55,8 +59,12 @@ impl BufferDraws {
         arrays: &ClientArrays,
         buffers: &Buffers,
     ) -> Option<Arc<Geometry>> {
-        let (key, geometry) = self.last.as_ref()?;
-        (key == &key_of(c, arrays, buffers)?).then(|| Arc::clone(geometry))
+        let key = key_of(c, arrays, buffers)?;
+        self.last
+            .iter()
+            .rev()
+            .find(|(k, _)| *k == key)
+            .map(|(_, g)| Arc::clone(g))
     }
 
     /// Remembers the geometry draw `c` made, if every array it reads is in a buffer.
@@ -67,7 +75,14 @@ impl BufferDraws {
         buffers: &Buffers,
         geometry: &Arc<Geometry>,
     ) {
-        self.last = key_of(c, arrays, buffers).map(|k| (k, Arc::clone(geometry)));
+        let Some(key) = key_of(c, arrays, buffers) else {
+            return;
+        };
+        self.last.retain(|(k, _)| *k != key);
+        if self.last.len() >= REMEMBERED {
+            self.last.remove(0);
+        }
+        self.last.push((key, Arc::clone(geometry)));
     }
 }
 
@@ -85,11 +100,19 @@ fn key_of<A: Args>(c: &A, arrays: &ClientArrays, buffers: &Buffers) -> Option<Ke
         }
         _ => return None,
     };
-    let enabled = [&arrays.vertex, &arrays.normal, &arrays.color]
-        .into_iter()
-        .chain(arrays.texcoord.iter())
-        .filter(|a| a.enabled)
-        .map(|a| &a.data);
+    // Every array a draw reads (the colour-index array is read by glArrayElement only).
+    let enabled = [
+        &arrays.vertex,
+        &arrays.normal,
+        &arrays.color,
+        &arrays.edge_flag,
+        &arrays.secondary_color,
+        &arrays.fog_coord,
+    ]
+    .into_iter()
+    .chain(arrays.texcoord.iter())
+    .filter(|a| a.enabled)
+    .map(|a| &a.data);
     for data in enabled.chain(indices.as_ref()) {
         match data {
             ArrayData::Buffer { name, .. } => {
@@ -163,5 +186,23 @@ mod tests {
         let g = draws(&format!("{SETUP}{DRAW}{moved}{short}"));
         assert!(!Arc::ptr_eq(&g[0], &g[1]));
         assert_eq!(g[1].positions[0].x, 1.0);
+    }
+
+    #[test]
+    fn every_object_of_a_frame_repeats_its_own_draw() {
+        // Two objects drawn in turn from one buffer, frame after frame.
+        let other = "glDrawArrays(GL_TRIANGLES, 0, 3);\n";
+        let g = draws(&format!("{SETUP}{DRAW}{other}{DRAW}{other}"));
+        assert!(Arc::ptr_eq(&g[0], &g[2]));
+        assert!(Arc::ptr_eq(&g[1], &g[3]));
+    }
+
+    #[test]
+    fn a_draw_reading_any_array_from_client_memory_is_not_remembered() {
+        let client = "glBindBuffer(GL_ARRAY_BUFFER, 0);\n\
+            glSecondaryColorPointer(3, GL_FLOAT, 0, (GLfloat[]){1, 0, 0, 0, 1, 0, 0, 0, 1});\n\
+            glEnableClientState(GL_SECONDARY_COLOR_ARRAY);\n";
+        let g = draws(&format!("{SETUP}{client}{DRAW}{DRAW}"));
+        assert!(!Arc::ptr_eq(&g[0], &g[1]));
     }
 }
