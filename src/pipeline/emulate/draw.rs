@@ -70,7 +70,14 @@ impl Arrays {
 /// How the uploaded vertices are drawn.
 enum Shape {
     /// A core mode over the element buffer.
-    Elements { mode: u32, count: i32 },
+    /// A core mode over the element buffer, of `index_type` (UNSIGNED_SHORT when every
+    /// index fits: llvmpipe's draw module takes 32-bit indices through a slower path that
+    /// allocates per draw — measured, `bench --only abi`, buffers mode).
+    Elements {
+        mode: u32,
+        count: i32,
+        index_type: u32,
+    },
     /// A core mode over the vertices in order (a geometry without indices).
     Arrays { mode: u32, count: i32 },
     /// Triangle corners of split polygons, drawn as TRIANGLES: each uploaded split with its
@@ -254,15 +261,28 @@ impl GpuGeometry {
                 (Some(mode), Some(indices)) => {
                     let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
                     gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
-                    gl.buffer_data_u8_slice(
-                        glow::ELEMENT_ARRAY_BUFFER,
-                        bytemuck::cast_slice(indices),
-                        glow::STATIC_DRAW,
-                    );
+                    let short = indices.iter().all(|&i| i <= u32::from(u16::MAX));
+                    let index_type = if short {
+                        let narrow: Vec<u16> = indices.iter().map(|&i| i as u16).collect();
+                        gl.buffer_data_u8_slice(
+                            glow::ELEMENT_ARRAY_BUFFER,
+                            bytemuck::cast_slice(&narrow),
+                            glow::STATIC_DRAW,
+                        );
+                        glow::UNSIGNED_SHORT
+                    } else {
+                        gl.buffer_data_u8_slice(
+                            glow::ELEMENT_ARRAY_BUFFER,
+                            bytemuck::cast_slice(indices),
+                            glow::STATIC_DRAW,
+                        );
+                        glow::UNSIGNED_INT
+                    };
                     buffers.push(ebo);
                     Shape::Elements {
                         mode,
                         count: count(indices.len()),
+                        index_type,
                     }
                 }
                 (Some(mode), None) => Shape::Arrays {
@@ -305,8 +325,12 @@ impl GpuGeometry {
             }
             set_current_values(gl, sent, state, self.arrays);
             match &self.shape {
-                Shape::Elements { mode, count } if *count > 0 => {
-                    gl.draw_elements(*mode, *count, glow::UNSIGNED_INT, 0);
+                Shape::Elements {
+                    mode,
+                    count,
+                    index_type,
+                } if *count > 0 => {
+                    gl.draw_elements(*mode, *count, *index_type, 0);
                 }
                 Shape::Arrays { mode, count } if *count > 0 => {
                     gl.draw_arrays(*mode, 0, *count);
