@@ -1033,3 +1033,29 @@ fn volumes_answer_and_draw_as_on_mesa() {
     assert_images_match("tex3d", &ours, &mesa, Tolerance::EXACT);
     assert_trace_replays("tex3d", &compile("tex3d", Linking::Direct), &[], "128x64");
 }
+
+/// `tests/c/formats.c`: GL 1.0's component counts and GL 1.1's sized internal formats in
+/// glTexImage2D, and GL 1.4's MIRRORED_REPEAT, sample as on Mesa (texels exact in 4 bits),
+/// with Mesa's errors (a component count in glCopyTexImage2D is INVALID_ENUM); Mesa's
+/// image exactly; the trace replays.
+#[test]
+fn internal_formats_of_every_era_sample_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("formats");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "component count 3            221 34 153 255 err 0",
+            "component count 5                        err 0x501",
+            "mirrored repeat linear       175 62 153 255 err 0",
+            "copy with component count 4              err 0x500",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 15, "a texel");
+    assert_images_match("formats", &ours, &mesa, Tolerance::EXACT);
+    assert_trace_replays(
+        "formats",
+        &compile("formats", Linking::Direct),
+        &[],
+        "64x32",
+    );
+}

@@ -40,6 +40,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_separate_specular_color",
     "GL_EXT_secondary_color",
     "GL_EXT_fog_coord",
+    "GL_ARB_texture_mirrored_repeat",
 ];
 
 struct Strings {

@@ -445,6 +445,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             target_is(c, TextureTarget::Texture2D)?;
             Command::CopyTexImage2D(CopyTexImage {
                 level: c.i32(1)?,
+                // A component count is INVALID_ENUM here on Mesa 22.3 (tests/c/formats.c).
                 internal_format: c.enm(2)?,
                 x: c.i32(3)?,
                 y: c.i32(4)?,
@@ -510,14 +511,29 @@ fn target_is<A: Args>(c: &A, want: TextureTarget) -> Result<(), A::Error> {
     }
 }
 
-/// A glTexImage internal format: a token that names none is INVALID_VALUE for a C caller
-/// (Mesa's `_mesa_base_tex_format` check, measured for glTexImage2D and glTexImage3D),
-/// the list of formats for a script.
+/// A glTexImage internal format: a token, or GL 1.0's component count 1, 2, 3 or 4
+/// (LUMINANCE, LUMINANCE_ALPHA, RGB, RGBA); one that names none is INVALID_VALUE for a C
+/// caller (Mesa's `_mesa_base_tex_format` check, measured for glTexImage2D and
+/// glTexImage3D), the list of formats for a script.
 pub(super) fn internal_format<A: Args>(c: &A, i: usize) -> Result<TexFormat, A::Error> {
-    c.enm(i).map_err(|e| match c.deferred(&e) {
-        Some(_) => c.bad(i, "a texture internal format"),
-        None => e,
+    c.enm(i).or_else(|e| {
+        component_count(c, i).ok_or_else(|| match c.deferred(&e) {
+            Some(_) => c.bad(i, "a texture internal format"),
+            None => e,
+        })
     })
+}
+
+/// GL 1.0's internal formats by component count: 1 LUMINANCE, 2 LUMINANCE_ALPHA, 3 RGB,
+/// 4 RGBA.
+fn component_count<A: Args>(c: &A, i: usize) -> Option<TexFormat> {
+    match c.int(i) {
+        Ok(1) => Some(TexFormat::Luminance8),
+        Ok(2) => Some(TexFormat::Luminance8Alpha8),
+        Ok(3) => Some(TexFormat::Rgb8),
+        Ok(4) => Some(TexFormat::Rgba8),
+        _ => None,
+    }
 }
 
 fn env_target<A: Args>(c: &A) -> Result<(), A::Error> {

@@ -379,6 +379,35 @@ gl_enums!(TexFormat {
     ALPHA => TexFormat::Alpha8,
     LUMINANCE_ALPHA => TexFormat::Luminance8Alpha8,
     DEPTH_COMPONENT => TexFormat::DepthComponent24,
+    // GL 1.1's other sized formats (Table 3.16), kept in the 8-bit format of their base
+    // (`TexFormat`'s note).
+    ALPHA4 => TexFormat::Alpha8,
+    ALPHA12 => TexFormat::Alpha8,
+    ALPHA16 => TexFormat::Alpha8,
+    LUMINANCE4 => TexFormat::Luminance8,
+    LUMINANCE12 => TexFormat::Luminance8,
+    LUMINANCE16 => TexFormat::Luminance8,
+    LUMINANCE4_ALPHA4 => TexFormat::Luminance8Alpha8,
+    LUMINANCE6_ALPHA2 => TexFormat::Luminance8Alpha8,
+    LUMINANCE12_ALPHA4 => TexFormat::Luminance8Alpha8,
+    LUMINANCE12_ALPHA12 => TexFormat::Luminance8Alpha8,
+    LUMINANCE16_ALPHA16 => TexFormat::Luminance8Alpha8,
+    INTENSITY4 => TexFormat::Intensity8,
+    INTENSITY12 => TexFormat::Intensity8,
+    INTENSITY16 => TexFormat::Intensity8,
+    R3_G3_B2 => TexFormat::Rgb8,
+    RGB4 => TexFormat::Rgb8,
+    RGB5 => TexFormat::Rgb8,
+    RGB10 => TexFormat::Rgb8,
+    RGB12 => TexFormat::Rgb8,
+    RGB16 => TexFormat::Rgb8,
+    RGBA2 => TexFormat::Rgba8,
+    RGBA4 => TexFormat::Rgba8,
+    RGB5_A1 => TexFormat::Rgba8,
+    RGB10_A2 => TexFormat::Rgba8,
+    RGBA12 => TexFormat::Rgba8,
+    RGBA16 => TexFormat::Rgba8,
+    DEPTH_COMPONENT32 => TexFormat::DepthComponent24,
 });
 
 gl_enums!(PixelFormat {
@@ -415,6 +444,7 @@ gl_enums!(Wrap {
     CLAMP => Wrap::Clamp,
     CLAMP_TO_EDGE => Wrap::ClampToEdge,
     CLAMP_TO_BORDER => Wrap::ClampToBorder,
+    MIRRORED_REPEAT => Wrap::MirroredRepeat,
 });
 
 gl_enums!(CompareMode {
@@ -788,6 +818,7 @@ mod tests {
             Wrap::Clamp,
             Wrap::ClampToEdge,
             Wrap::ClampToBorder,
+            Wrap::MirroredRepeat,
         ]);
         use super::super::blit::BlitFilter;
         covers(&[

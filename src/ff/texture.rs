@@ -210,6 +210,8 @@ pub enum Wrap {
     Clamp,
     ClampToEdge,
     ClampToBorder,
+    /// GL 1.4 (ARB_texture_mirrored_repeat): the image repeated, every other copy mirrored.
+    MirroredRepeat,
 }
 
 /// TEXTURE_COMPARE_MODE (ARB_shadow).

@@ -17,6 +17,7 @@ pub fn wrap(w: Wrap) -> u32 {
         Wrap::Clamp => glow::CLAMP_TO_BORDER,
         Wrap::ClampToEdge => glow::CLAMP_TO_EDGE,
         Wrap::ClampToBorder => glow::CLAMP_TO_BORDER,
+        Wrap::MirroredRepeat => glow::MIRRORED_REPEAT,
     }
 }
 
