@@ -538,12 +538,12 @@ fn a_pixelstore_trace_replays_to_the_same_image() {
     );
 }
 
-/// tests/c/formats.c: GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT and GL_FLOAT buffers in RGBA,
+/// tests/c/buffer_types.c: GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT and GL_FLOAT buffers in RGBA,
 /// BGRA and ARGB, each at its own precision (RED_BITS 8, 16, 32), print the pixels Mesa's
 /// OSMesa gives, to the last bit of a 16-bit component and the fourth decimal of a float.
 #[test]
 fn short_and_float_buffers_hold_what_mesa_writes() {
-    let (mesa, ours) = texts("formats");
+    let (mesa, ours) = texts("buffer_types");
     assert!(
         mesa.contains("RGBA float: make current 1")
             && mesa.contains("flat                     0.1000 0.2000 0.7000 1.0000"),

@@ -122,7 +122,7 @@ impl ColorFormat {
 
     /// An RGBA pixel of `size`-byte components in this order. Mesa's OSMesa orders only
     /// byte components: GL_UNSIGNED_SHORT and GL_FLOAT buffers hold R, G, B (and A) in
-    /// that order whatever the format asked (measured, `tests/c/formats.c`: OSMESA_BGRA and
+    /// that order whatever the format asked (measured, `tests/c/buffer_types.c`: OSMESA_BGRA and
     /// OSMESA_ARGB with GL_FLOAT give RGBA).
     fn write(self, rgba: &[u8], out: &mut [u8], size: usize) {
         let order = match (self, size) {

@@ -1,0 +1,81 @@
+/* The caller's buffer in every type Mesa's OSMesa takes for RGBA-family formats:
+ * GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT (16-bit components) and GL_FLOAT (32-bit float
+ * components), in OSMESA_RGBA, OSMESA_BGRA and OSMESA_ARGB, each rendered at its own
+ * precision: a clear, a flat triangle and a smooth one, one pixel of each region printed
+ * with RED_BITS. Mesa orders only byte components by the format: a GL_UNSIGNED_SHORT or
+ * GL_FLOAT buffer holds RGBA whatever the format. Run on Mesa's OSMesa and on fixedfunc's
+ * library, the printed lines must be the same.
+ *
+ * usage: buffer_types */
+#include <GL/osmesa.h>
+#include <stdio.h>
+
+#define W 8
+#define H 8
+
+static GLfloat fbuf[W * H * 4];
+static GLushort sbuf[W * H * 4];
+static GLubyte bbuf[W * H * 4];
+
+static void draw(void) {
+  glClearColor(0.3f, 0.6f, 1.0f / 3, 0.5f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  /* A flat triangle over the lower-left half, a smooth one in the top row. */
+  glShadeModel(GL_FLAT);
+  glColor4f(0.1f, 0.2f, 0.7f, 1);
+  glBegin(GL_TRIANGLES);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  glVertex2f(-1, 0.5f);
+  glEnd();
+  glShadeModel(GL_SMOOTH);
+  glBegin(GL_TRIANGLES);
+  glColor4f(1, 0, 0, 1);
+  glVertex2f(-1, 0.75f);
+  glColor4f(0, 1, 0, 1);
+  glVertex2f(1, 0.75f);
+  glColor4f(0, 0, 1, 0);
+  glVertex2f(0, 1);
+  glEnd();
+  glFinish();
+}
+
+/* Pixel (x, y) of the buffer (row 0 is the bottom one) as its components. */
+static void show(const char *what, GLenum type, int components, int x, int y) {
+  int i = (y * W + x) * components;
+  printf("%-24s", what);
+  for (int k = 0; k < components; k++) {
+    if (type == GL_FLOAT) printf(" %.4f", fbuf[i + k]);
+    else if (type == GL_UNSIGNED_SHORT) printf(" %u", sbuf[i + k]);
+    else printf(" %u", bbuf[i + k]);
+  }
+  printf("\n");
+}
+
+int main(void) {
+  static const struct { GLenum format; const char *name; int components; } formats[] = {
+      {OSMESA_RGBA, "RGBA", 4}, {OSMESA_BGRA, "BGRA", 4}, {OSMESA_ARGB, "ARGB", 4}};
+  static const struct { GLenum type; const char *name; void *buffer; } types[] = {
+      {GL_UNSIGNED_BYTE, "ubyte", bbuf}, {GL_UNSIGNED_SHORT, "ushort", sbuf},
+      {GL_FLOAT, "float", fbuf}};
+  for (int f = 0; f < 3; f++)
+    for (int t = 0; t < 3; t++) {
+      OSMesaContext ctx = OSMesaCreateContextExt(formats[f].format, 24, 8, 0, NULL);
+      if (!ctx) return 1;
+      GLboolean ok = OSMesaMakeCurrent(ctx, types[t].buffer, types[t].type, W, H);
+      printf("%s %s: make current %d\n", formats[f].name, types[t].name, ok);
+      if (!ok) {
+        OSMesaDestroyContext(ctx);
+        continue;
+      }
+      GLint bits = 0;
+      glGetIntegerv(GL_RED_BITS, &bits);
+      printf("%-24s %d\n", "red bits", bits);
+      draw();
+      show("flat", types[t].type, formats[f].components, 1, 1);
+      show("clear", types[t].type, formats[f].components, W - 1, 3);
+      show("smooth", types[t].type, formats[f].components, 3, 7);
+      OSMesaDestroyContext(ctx);
+    }
+  return 0;
+}
