@@ -1059,3 +1059,32 @@ fn internal_formats_of_every_era_sample_as_on_mesa() {
         "64x32",
     );
 }
+
+/// `tests/c/pixel_types.c`: GL 1.0's signed types, GL 1.2's packed types and BGR/BGRA,
+/// into textures and glDrawPixels and out of glReadPixels and glGetTexImage, with the
+/// pairs each call refuses; every byte as Mesa gives it (its 5-bit fields widened by
+/// repeating their bits, 8-bit storage narrowed and widened by its integer rules), Mesa's
+/// image exactly, and the trace replays.
+#[test]
+fn signed_packed_and_bgra_pixels_convert_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("pixel_types");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "5_6_5                      000OOOOOOOOOOOOOOO",
+            "internal format BGRA                     err 0x501",
+            "RGBA byte                  0 0 0 0 2 126 129 255 201 0 64 193 0 255 255 255 err 0",
+            "in 5_5_5_1                 107 140 24 255 181 214 66 255 0 24 107 255 74 66 148 255 err 0",
+            "read RGBA int              ff ff ff 7f 00 00 00 00 40 40 40 40 ff ff ff 7f err 0",
+            "texture LUMINANCE 5_6_5                  err 0x502",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 70, "a converted pixel");
+    assert_images_match("pixel_types", &ours, &mesa, Tolerance::EXACT);
+    assert_trace_replays(
+        "pixel_types",
+        &compile("pixel_types", Linking::Direct),
+        &[],
+        "64x32",
+    );
+}

@@ -4,6 +4,7 @@
 use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
 use super::glenum::{Family, GlEnum};
+use super::pixel_types;
 use super::*;
 
 fn volume<A: Args>(c: &A) -> Result<ViewVolume, A::Error> {
@@ -195,13 +196,20 @@ pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Erro
         })?,
         Entry::ReadPixels => {
             n(7)?;
+            let (format, ty) = (c.enm(4)?, c.enm(5)?);
+            if let Some(error) = pixel_types::refused(format, ty) {
+                return Ok(Some(Command::Raise {
+                    error,
+                    call: c.entry(),
+                }));
+            }
             Command::ReadPixels(ReadPixels {
                 x: c.i32(0)?,
                 y: c.i32(1)?,
                 width: c.i32(2)?,
                 height: c.i32(3)?,
-                format: c.enm(4)?,
-                ty: c.enm(5)?,
+                format,
+                ty,
                 slot: c.slot(6)?,
             })
         }
@@ -391,6 +399,10 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(8)?;
             target_is(c, TextureTarget::Texture1D)?;
             let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(5)?, c.enm(6)?);
+            if let Some(refused) = pixel_types::refusal(c, shape) {
+                return Ok(Some(refused));
+            }
+            let (format, ty, data) = pixel_types::model_tex_data(c, 7, shape)?;
             Command::TexImage(TexImage {
                 target: TextureTarget::Texture1D,
                 level: c.i32(1)?,
@@ -399,15 +411,19 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 height: 1,
                 depth: 1,
                 border: c.i32(4)?,
-                format: shape.format,
-                ty: shape.ty,
-                data: c.tex_data(7, shape)?,
+                format,
+                ty,
+                data,
             })
         }
         Entry::TexImage2D => {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
             let shape = PixelShape::groups(c.i32(3)?, c.i32(4)?, c.enm(6)?, c.enm(7)?);
+            if let Some(refused) = pixel_types::refusal(c, shape) {
+                return Ok(Some(refused));
+            }
+            let (format, ty, data) = pixel_types::model_tex_data(c, 8, shape)?;
             Command::TexImage(TexImage {
                 target: TextureTarget::Texture2D,
                 level: c.i32(1)?,
@@ -416,15 +432,19 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 height: shape.height,
                 depth: 1,
                 border: c.i32(5)?,
-                format: shape.format,
-                ty: shape.ty,
-                data: c.tex_data(8, shape)?,
+                format,
+                ty,
+                data,
             })
         }
         Entry::TexSubImage2D => {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
             let shape = PixelShape::groups(c.i32(4)?, c.i32(5)?, c.enm(6)?, c.enm(7)?);
+            if let Some(refused) = pixel_types::refusal(c, shape) {
+                return Ok(Some(refused));
+            }
+            let (format, ty, data) = pixel_types::model_pixels(c, 8, shape)?;
             Command::TexSubImage2D(TexSubImage {
                 level: c.i32(1)?,
                 x: c.i32(2)?,
@@ -433,11 +453,9 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 width: shape.width,
                 height: shape.height,
                 depth: 1,
-                format: shape.format,
-                ty: shape.ty,
-                data: c
-                    .pixels(8, shape)?
-                    .ok_or_else(|| c.bad(8, "a pixel array"))?,
+                format,
+                ty,
+                data: data.ok_or_else(|| c.bad(8, "a pixel array"))?,
             })
         }
         Entry::CopyTexImage2D => {

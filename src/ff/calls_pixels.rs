@@ -10,6 +10,7 @@ use glam::Vec4;
 use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
 use super::pixel_map::{MapValues, PixelMap, MAX_PIXEL_MAP_TABLE};
+use super::pixel_types;
 use super::pixels::{
     Bitmap, CopyKind, CopyPixels, DrawPixels, PixelTransferParam, MAX_RECT_PIXELS,
 };
@@ -171,14 +172,16 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let ty = c.enm(3)?;
             budget(c, 0, width, height)?;
             let shape = PixelShape::groups(width.max(0), height.max(0), format, ty);
+            if let Some(refused) = pixel_types::refusal(c, shape) {
+                return Ok(Some(refused));
+            }
+            let (format, ty, data) = pixel_types::model_pixels(c, 4, shape)?;
             Command::DrawPixels(DrawPixels {
                 width,
                 height,
                 format,
                 ty,
-                data: c
-                    .pixels(4, shape)?
-                    .ok_or_else(|| c.bad(4, "a pixel array"))?,
+                data: data.ok_or_else(|| c.bad(4, "a pixel array"))?,
             })
         }
         Entry::CopyPixels => {

@@ -12,6 +12,7 @@
 
 use super::framebuffer::{AttachmentPoint, ColorBuffer, FramebufferTarget, RenderbufferFormat};
 use super::pixel_map::PixelMapName;
+use super::pixel_types::PackedType;
 use super::*;
 
 /// Every enumerant of the registry, as `pub const NAME: u32`.
@@ -421,6 +422,8 @@ gl_enums!(PixelFormat {
     RED => PixelFormat::Red,
     GREEN => PixelFormat::Green,
     BLUE => PixelFormat::Blue,
+    BGR => PixelFormat::Bgr,
+    BGRA => PixelFormat::Bgra,
 });
 
 gl_enums!(PixelType {
@@ -428,6 +431,21 @@ gl_enums!(PixelType {
     UNSIGNED_SHORT => PixelType::UnsignedShort,
     UNSIGNED_INT => PixelType::UnsignedInt,
     FLOAT => PixelType::Float,
+    BYTE => PixelType::Byte,
+    SHORT => PixelType::Short,
+    INT => PixelType::Int,
+    UNSIGNED_BYTE_3_3_2 => PixelType::Packed(PackedType::UnsignedByte332),
+    UNSIGNED_BYTE_2_3_3_REV => PixelType::Packed(PackedType::UnsignedByte233Rev),
+    UNSIGNED_SHORT_5_6_5 => PixelType::Packed(PackedType::UnsignedShort565),
+    UNSIGNED_SHORT_5_6_5_REV => PixelType::Packed(PackedType::UnsignedShort565Rev),
+    UNSIGNED_SHORT_4_4_4_4 => PixelType::Packed(PackedType::UnsignedShort4444),
+    UNSIGNED_SHORT_4_4_4_4_REV => PixelType::Packed(PackedType::UnsignedShort4444Rev),
+    UNSIGNED_SHORT_5_5_5_1 => PixelType::Packed(PackedType::UnsignedShort5551),
+    UNSIGNED_SHORT_1_5_5_5_REV => PixelType::Packed(PackedType::UnsignedShort1555Rev),
+    UNSIGNED_INT_8_8_8_8 => PixelType::Packed(PackedType::UnsignedInt8888),
+    UNSIGNED_INT_8_8_8_8_REV => PixelType::Packed(PackedType::UnsignedInt8888Rev),
+    UNSIGNED_INT_10_10_10_2 => PixelType::Packed(PackedType::UnsignedInt1010102),
+    UNSIGNED_INT_2_10_10_10_REV => PixelType::Packed(PackedType::UnsignedInt2101010Rev),
 });
 
 gl_enums!(Filter {

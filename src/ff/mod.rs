@@ -69,6 +69,7 @@ pub mod front_state;
 pub mod pixel_layout;
 pub mod pixel_map;
 pub mod pixel_store;
+pub mod pixel_types;
 pub mod texture_calls;
 pub mod texture_volume;
 

@@ -25,6 +25,7 @@ use glam::Vec4;
 
 use super::error::{GlError, GlResult};
 use super::pixel_map::PixelMaps;
+use super::pixel_types;
 use super::texture::{PixelFormat, PixelType};
 
 /// The most pixels one glDrawPixels, glBitmap or glCopyPixels may cover: 2²⁴ (4096², or a
@@ -280,6 +281,9 @@ pub enum Converted {
 /// 65535 → 1, 2³² − 1 → 1, exact in f64 then rounded to f32), floats as they are; for
 /// STENCIL_INDEX the integers themselves (a float truncated towards zero).
 fn components(data: &[u8], ty: PixelType, normalize: bool) -> Vec<f64> {
+    if let PixelType::Packed(p) = ty {
+        return pixel_types::packed_components(data, p);
+    }
     let size = ty.size();
     data.chunks_exact(size)
         .map(|b| {
@@ -294,6 +298,20 @@ fn components(data: &[u8], ty: PixelType, normalize: bool) -> Vec<f64> {
                     let f = f64::from(f32::from_ne_bytes([b[0], b[1], b[2], b[3]]));
                     return if normalize { f } else { f.trunc() };
                 }
+                // Signed types: c / (2ⁿ⁻¹ − 1) (`pixel_types`' rule), a stencil index as it is.
+                PixelType::Byte | PixelType::Short | PixelType::Int => {
+                    let (v, bits) = match ty {
+                        PixelType::Byte => (i64::from(b[0] as i8), 8),
+                        PixelType::Short => (i64::from(i16::from_ne_bytes([b[0], b[1]])), 16),
+                        _ => (i64::from(i32::from_ne_bytes([b[0], b[1], b[2], b[3]])), 32),
+                    };
+                    return if normalize {
+                        pixel_types::snorm_to_float(v, bits)
+                    } else {
+                        v as f64
+                    };
+                }
+                PixelType::Packed(_) => (0.0, 1.0),
             };
             if normalize {
                 v / max
@@ -309,7 +327,7 @@ impl DrawPixels {
     pub fn check(&self) -> GlResult {
         check_rect("DrawPixels", self.width, self.height)?;
         let n = self.width as usize * self.height as usize;
-        if self.data.len() != n * self.format.components() * self.ty.size() {
+        if self.data.len() != n * self.ty.group_bytes(self.format) {
             return Err(GlError::invalid_value(
                 "pixel data length differs from width·height·components·size",
             ));
@@ -393,6 +411,8 @@ fn to_rgba(format: PixelFormat, c: &[f32]) -> Vec4 {
     match format {
         PixelFormat::Rgba => Vec4::new(c[0], c[1], c[2], c[3]),
         PixelFormat::Rgb => Vec4::new(c[0], c[1], c[2], 1.0),
+        PixelFormat::Bgra => Vec4::new(c[2], c[1], c[0], c[3]),
+        PixelFormat::Bgr => Vec4::new(c[2], c[1], c[0], 1.0),
         PixelFormat::Luminance => Vec4::new(c[0], c[0], c[0], 1.0),
         PixelFormat::LuminanceAlpha => Vec4::new(c[0], c[0], c[0], c[1]),
         PixelFormat::Alpha => Vec4::new(0.0, 0.0, 0.0, c[0]),

@@ -18,6 +18,7 @@ use glam::Vec4;
 
 use super::error::{GlError, GlResult};
 use super::fragment::CompareFunc;
+pub use super::pixel_types::PackedType;
 
 /// GL_MAX_TEXTURE_SIZE assumed by validation (every GL 3.3 context has at least 1024; llvmpipe
 /// has 16384). Non-power-of-two sizes are accepted (a core context supports them).
@@ -120,14 +121,19 @@ pub enum PixelFormat {
     Red,
     Green,
     Blue,
+    /// GL 1.2's BGR and BGRA (§3.6.4, Table 3.5): RGB and RGBA with red and blue in each
+    /// other's place. Client data in them is taken apart into RGB and RGBA where it enters
+    /// the layer (`pixel_types`); glReadPixels and glGetTexImage give them.
+    Bgr,
+    Bgra,
 }
 
 impl PixelFormat {
     /// Components per pixel.
     pub fn components(self) -> usize {
         match self {
-            PixelFormat::Rgba => 4,
-            PixelFormat::Rgb => 3,
+            PixelFormat::Rgba | PixelFormat::Bgra => 4,
+            PixelFormat::Rgb | PixelFormat::Bgr => 3,
             PixelFormat::LuminanceAlpha => 2,
             PixelFormat::Luminance
             | PixelFormat::Alpha
@@ -147,21 +153,32 @@ pub enum PixelType {
     UnsignedShort,
     UnsignedInt,
     Float,
+    /// GL 1.0's signed component types (GL 1.5 Table 3.5). Client data in them is
+    /// converted to FLOAT where it enters the layer (`pixel_types`).
+    Byte,
+    Short,
+    Int,
+    /// GL 1.2's packed types: one element holds a whole group (Table 3.8).
+    Packed(PackedType),
 }
 
 impl PixelType {
-    /// Bytes per component.
+    /// Bytes per element: a component, or a whole group of a packed type.
     pub fn size(self) -> usize {
         match self {
-            PixelType::UnsignedByte => 1,
-            PixelType::UnsignedShort => 2,
-            PixelType::UnsignedInt | PixelType::Float => 4,
+            PixelType::UnsignedByte | PixelType::Byte => 1,
+            PixelType::UnsignedShort | PixelType::Short => 2,
+            PixelType::UnsignedInt | PixelType::Int | PixelType::Float => 4,
+            PixelType::Packed(p) => p.bytes(),
         }
     }
 
-    /// Bytes of one group of `format`: one element per component.
+    /// Bytes of one group of `format`: one element per component, or one packed element.
     pub fn group_bytes(self, format: PixelFormat) -> usize {
-        format.components() * self.size()
+        match self {
+            PixelType::Packed(p) => p.bytes(),
+            _ => format.components() * self.size(),
+        }
     }
 }
 
@@ -170,7 +187,7 @@ impl PixelType {
 pub fn image_size(format: PixelFormat, ty: PixelType, width: i32, height: i32) -> usize {
     let w = width.max(0) as usize;
     let h = height.max(0) as usize;
-    w * h * format.components() * ty.size()
+    w * h * ty.group_bytes(format)
 }
 
 /// Bytes of a tightly packed `width × height × depth` image: `depth` images of

@@ -16,6 +16,7 @@ use super::api::Entry;
 use super::args::{Args, PixelShape};
 use super::error::{GlError, GlResult};
 use super::glenum::GlEnum;
+use super::pixel_types;
 use super::state::FixedState;
 use super::texture::{
     check_format_pair, check_image_size, PixelFormat, PixelType, TexLevel, TextureTarget,
@@ -64,6 +65,10 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(7)?;
             target(c, TextureTarget::Texture1D)?;
             let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(4)?, c.enm(5)?);
+            if let Some(refused) = pixel_types::refusal(c, shape) {
+                return Ok(Some(refused));
+            }
+            let (format, ty, data) = pixel_types::model_pixels(c, 6, shape)?;
             Command::TexSubImage1D(TexSubImage {
                 level: c.i32(1)?,
                 x: c.i32(2)?,
@@ -72,11 +77,9 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 width: shape.width,
                 height: 1,
                 depth: 1,
-                format: shape.format,
-                ty: shape.ty,
-                data: c
-                    .pixels(6, shape)?
-                    .ok_or_else(|| c.bad(6, "a pixel array"))?,
+                format,
+                ty,
+                data: data.ok_or_else(|| c.bad(6, "a pixel array"))?,
             })
         }
         Entry::CopyTexImage1D => {
@@ -122,11 +125,18 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::GetTexImage => {
             c.count(5)?;
+            let (format, ty) = (c.enm(2)?, c.enm(3)?);
+            if let Some(error) = pixel_types::refused(format, ty) {
+                return Ok(Some(Command::Raise {
+                    error,
+                    call: c.entry(),
+                }));
+            }
             Command::GetTexImage(GetTexImage {
                 target: c.enm(0)?,
                 level: c.i32(1)?,
-                format: c.enm(2)?,
-                ty: c.enm(3)?,
+                format,
+                ty,
                 slot: c.slot(4)?,
             })
         }

@@ -26,6 +26,7 @@
 use super::api::Entry;
 use super::args::{Args, PixelShape};
 use super::error::{GlError, GlResult};
+use super::pixel_types;
 use super::state::FixedState;
 use super::texture::{
     blit, check_format_pair, check_volume_arguments, volume_fits, TexFormat, TexLevel,
@@ -41,6 +42,10 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(10)?;
             let proxy = c.pname(0, &["GL_TEXTURE_3D", "GL_PROXY_TEXTURE_3D"])? != "GL_TEXTURE_3D";
             let shape = PixelShape::volume(c.i32(3)?, c.i32(4)?, c.i32(5)?, c.enm(7)?, c.enm(8)?);
+            if let Some(refused) = pixel_types::refusal(c, shape) {
+                return Ok(Some(refused));
+            }
+            let (format, ty, data) = pixel_types::model_tex_data(c, 9, shape)?;
             let image = TexImage {
                 target: TextureTarget::Texture3D,
                 level: c.i32(1)?,
@@ -49,9 +54,9 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 height: shape.height,
                 depth: c.i32(5)?,
                 border: c.i32(6)?,
-                format: shape.format,
-                ty: shape.ty,
-                data: c.tex_data(9, shape)?,
+                format,
+                ty,
+                data,
             };
             if proxy {
                 Command::ProxyTexImage(image)
@@ -63,6 +68,10 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(11)?;
             texture_3d(c)?;
             let shape = PixelShape::volume(c.i32(5)?, c.i32(6)?, c.i32(7)?, c.enm(8)?, c.enm(9)?);
+            if let Some(refused) = pixel_types::refusal(c, shape) {
+                return Ok(Some(refused));
+            }
+            let (format, ty, data) = pixel_types::model_pixels(c, 10, shape)?;
             Command::TexSubImage3D(TexSubImage {
                 level: c.i32(1)?,
                 x: c.i32(2)?,
@@ -71,11 +80,9 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 width: shape.width,
                 height: shape.height,
                 depth: c.i32(7)?,
-                format: shape.format,
-                ty: shape.ty,
-                data: c
-                    .pixels(10, shape)?
-                    .ok_or_else(|| c.bad(10, "a pixel array"))?,
+                format,
+                ty,
+                data: data.ok_or_else(|| c.bad(10, "a pixel array"))?,
             })
         }
         Entry::CopyTexSubImage3D | Entry::CopyTexSubImage3DEXT => {

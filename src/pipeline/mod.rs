@@ -129,7 +129,7 @@ pub fn convert_depth(r: &Readback, ty: PixelType, rule: DepthRule) -> Option<Vec
                 .flat_map(|z| depth_to_u16(z, rule).to_ne_bytes())
                 .collect(),
         ),
-        PixelType::UnsignedInt | PixelType::Float => None,
+        _ => None,
     }
 }
 

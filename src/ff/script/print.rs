@@ -906,10 +906,28 @@ pub(super) fn pixels(ty: PixelType, data: &[u8]) -> String {
                 .map(|c| u16::from_le_bytes([c[0], c[1]]).to_string())
                 .collect(),
         ),
-        PixelType::UnsignedInt => (
+        PixelType::UnsignedInt | PixelType::Packed(_) if size == 4 => (
             "GLuint",
             chunks
                 .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]).to_string())
+                .collect(),
+        ),
+        PixelType::Packed(_) => (
+            "GLushort",
+            chunks
+                .map(|c| u16::from_le_bytes([c[0], c[1]]).to_string())
+                .collect(),
+        ),
+        PixelType::Short => (
+            "GLshort",
+            chunks
+                .map(|c| i16::from_le_bytes([c[0], c[1]]).to_string())
+                .collect(),
+        ),
+        PixelType::Int => (
+            "GLint",
+            chunks
+                .map(|c| i32::from_le_bytes([c[0], c[1], c[2], c[3]]).to_string())
                 .collect(),
         ),
         _ => (
@@ -924,7 +942,7 @@ pub(super) fn pixels(ty: PixelType, data: &[u8]) -> String {
 
 /// glTexImage1D/2D/3D of `target` (its token: a proxy image prints its proxy target).
 fn tex_image(out: &mut String, t: &TexImage, target: &str, unpack_alignment: usize) {
-    let row = t.width.max(0) as usize * t.format.components() * t.ty.size();
+    let row = t.width.max(0) as usize * t.ty.group_bytes(t.format);
     let data = match &t.data {
         TexData::Null => "NULL".to_string(),
         TexData::Bytes(d) => pixels(t.ty, &padded(d, row, unpack_alignment)),

@@ -908,7 +908,13 @@ fn command() -> impl Strategy<Value = Command> {
         (
             any::<u8>(),
             prop::collection::vec(any::<u8>(), 0..12),
-            token::<PixelType>()
+            // The front ends give glTexImage only the model's own types (`pixel_types`).
+            prop::sample::select(vec![
+                PixelType::UnsignedByte,
+                PixelType::UnsignedShort,
+                PixelType::UnsignedInt,
+                PixelType::Float,
+            ])
         )
             .prop_map(|(w, bytes, ty)| {
                 Command::TexImage(TexImage {
@@ -1325,4 +1331,44 @@ fn a_pixel_literal_shorter_than_its_rows_is_refused() {
     let printed = print(&ok);
     parse(&printed).unwrap_or_else(|e| panic!("{e}\n{printed}"));
     parse(&image(3, "0, 85, 170, 255, 1, 2")).expect("six bytes for six");
+}
+
+/// A script may spell BGRA and the signed and packed types: it reads back as the model's
+/// form of the same pixels (`pixel_types`), and prints as that.
+#[test]
+fn client_pixel_types_read_as_the_models_form() {
+    let cmds = parse(
+        "glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_BGRA, GL_UNSIGNED_BYTE, \
+         (GLubyte[]){1, 2, 3, 4});\n\
+         glDrawPixels(1, 1, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, (GLushort[]){63519});\n\
+         glDrawPixels(1, 1, GL_BGRA, GL_UNSIGNED_SHORT_5_6_5, (GLushort[]){63519});\n",
+    )
+    .expect("the script parses");
+    let Command::TexImage(t) = &cmds[0] else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(
+        (t.format, t.ty),
+        (PixelFormat::Rgba, PixelType::UnsignedByte)
+    );
+    assert_eq!(t.data.bytes().map(|d| d.to_vec()), Some(vec![3, 2, 1, 4]));
+    let Command::DrawPixels(d) = &cmds[1] else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(
+        (d.format, d.ty),
+        (PixelFormat::Rgb, PixelType::UnsignedByte)
+    );
+    assert_eq!(&d.data[..], &[255, 0, 255]);
+    // A packed type with a format of another component count raises GL's error.
+    assert!(matches!(
+        cmds[2],
+        Command::Raise {
+            error: crate::ff::GlErrorKind::InvalidOperation,
+            ..
+        }
+    ));
+    // The rewritten calls print and read back as themselves (a raised error prints nothing).
+    let rewritten = cmds[..2].to_vec();
+    assert_eq!(parse(&print(&rewritten)).as_ref(), Ok(&rewritten));
 }

@@ -44,6 +44,8 @@ pub fn pixel_format(f: PixelFormat) -> u32 {
     match f {
         PixelFormat::Rgba => glow::RGBA,
         PixelFormat::Rgb => glow::RGB,
+        PixelFormat::Bgra => glow::BGRA,
+        PixelFormat::Bgr => glow::BGR,
         PixelFormat::Luminance | PixelFormat::Alpha => glow::RED,
         PixelFormat::LuminanceAlpha => glow::RG,
         PixelFormat::DepthComponent => glow::DEPTH_COMPONENT,

@@ -43,7 +43,11 @@ use self::textures::Textures;
 use super::core::{Core, Issue, PathPipeline};
 use super::framebuffers::FramebufferMirror;
 use super::{Counters, PipelineError, Readback};
-use crate::ff::{Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels, TextureTarget};
+use crate::ff::pixel_types::ReadFrom;
+use crate::ff::texture_calls::GetTexImage;
+use crate::ff::{
+    pixel_types, Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels, TextureTarget,
+};
 use crate::gpu::{GpuContext, Profile};
 use crate::vocab::{PipelineKind, Precision};
 
@@ -353,20 +357,53 @@ impl Issue for Emulate {
             Command::TexParameter { target, .. } => {
                 self.textures.sync_params(gl, state, *target)?
             }
-            Command::ReadPixels(r) => {
+            Command::ReadPixels(asked) => {
+                // BGR(A), signed and packed types: read in the read form, packed on
+                // the CPU (`ff::pixel_types`).
+                let (format, ty) = pixel_types::read_form(asked.format, asked.ty);
+                let r = &ReadPixels {
+                    format,
+                    ty,
+                    ..*asked
+                };
                 let mut readback = read_pixels(gl, r);
                 if let Some(bytes) =
                     pixels::transferred_read(gl, r, &state.pixel_transfer, &state.pixel_maps)
                 {
                     readback.bytes = bytes;
                 }
+                let colour8 = state.draw_bits(state.framebuffers.window_bits).red == 8;
+                let from = if colour8 && r.format != PixelFormat::DepthComponent {
+                    ReadFrom::Unorm8
+                } else {
+                    ReadFrom::Float
+                };
+                readback.bytes =
+                    pixel_types::from_model(&readback.bytes, asked.format, asked.ty, from);
+                readback.format = asked.format;
+                readback.ty = asked.ty;
                 core.readbacks.insert(r.slot, readback);
             }
             Command::TexSubImage1D(t) => self.textures.sub_image_1d(ctx, state, t)?,
             Command::CopyTexImage1D(c) => self.textures.copy_image_1d(ctx, state, c)?,
             Command::CopyTexSubImage(c) => self.textures.copy_sub_image(ctx, state, c)?,
-            Command::GetTexImage(g) => {
-                if let Some(r) = self.textures.get_image(gl, state, g)? {
+            Command::GetTexImage(asked) => {
+                let (format, ty) = pixel_types::read_form(asked.format, asked.ty);
+                let g = &GetTexImage {
+                    format,
+                    ty,
+                    ..*asked
+                };
+                if let Some(mut r) = self.textures.get_image(gl, state, g)? {
+                    // Colour textures are stored in 8 bits (`TexFormat`), depth ones not.
+                    let from = if asked.format == PixelFormat::DepthComponent {
+                        ReadFrom::Float
+                    } else {
+                        ReadFrom::Unorm8
+                    };
+                    r.bytes = pixel_types::from_model(&r.bytes, asked.format, asked.ty, from);
+                    r.format = asked.format;
+                    r.ty = asked.ty;
                     core.readbacks.insert(g.slot, r);
                 }
             }
@@ -492,5 +529,9 @@ fn encode(v: f32, ty: PixelType) -> Vec<u8> {
             .to_ne_bytes()
             .to_vec(),
         PixelType::Float => v.to_ne_bytes().to_vec(),
+        // Signed types by `pixel_types`' rule; a packed type is packed from FLOAT reads.
+        PixelType::Byte | PixelType::Short | PixelType::Int | PixelType::Packed(_) => {
+            crate::ff::pixel_types::component_bytes(v, ty)
+        }
     }
 }

@@ -30,6 +30,7 @@ use super::key::{PixelSource, ShaderKey};
 use super::polygon::PolygonPass;
 use super::Emulate;
 use crate::ff::pixel_map::PixelMaps;
+use crate::ff::pixel_types;
 use crate::ff::{
     ColorMask, Command, CompareFunc, Converted, CopyKind, CopyPixels, DrawPixels, FixedState,
     Geometry, PixelFormat, PixelTransfer, PixelType, PixelZoom, PolygonMode, PolygonModes,
@@ -230,6 +231,10 @@ fn encode_even(v: f32, ty: PixelType) -> Vec<u8> {
             .to_ne_bytes()
             .to_vec(),
         PixelType::Float => v.to_ne_bytes().to_vec(),
+        // Signed types by `pixel_types`' rule; a packed type is packed from FLOAT reads.
+        PixelType::Byte | PixelType::Short | PixelType::Int | PixelType::Packed(_) => {
+            pixel_types::component_bytes(v, ty)
+        }
     }
 }
 

@@ -11,6 +11,7 @@
 
 use std::ffi::c_void;
 
+use crate::ff::pixel_types;
 use crate::ff::texture::{BaseFormat, PixelFormat, PixelType, TexFormat, TextureTarget};
 use crate::ff::texture_calls::{CopyTexSubImage, GetTexImage};
 use crate::ff::{CopyTexImage, FixedState, TexSubImage};
@@ -310,6 +311,8 @@ fn convert(stored: &[u8], f: TexFormat, format: PixelFormat, ty: PixelType) -> V
         let picked: &[usize] = match format {
             PixelFormat::Rgba => &[0, 1, 2, 3],
             PixelFormat::Rgb => &[0, 1, 2],
+            PixelFormat::Bgra => &[2, 1, 0, 3],
+            PixelFormat::Bgr => &[2, 1, 0],
             PixelFormat::Luminance => &[0],
             PixelFormat::LuminanceAlpha => &[0, 3],
             PixelFormat::Alpha => &[3],
@@ -334,6 +337,10 @@ fn push_unorm8(out: &mut Vec<u8>, c: u8, ty: PixelType) {
         PixelType::UnsignedShort => out.extend((u16::from(c) * 257).to_ne_bytes()),
         PixelType::UnsignedInt => out.extend((u32::from(c) * 16_843_009).to_ne_bytes()),
         PixelType::Float => out.extend((f32::from(c) * (1.0f32 / 255.0)).to_ne_bytes()),
+        // Signed types by `pixel_types`' rule; a packed type is packed from FLOAT reads.
+        PixelType::Byte | PixelType::Short | PixelType::Int | PixelType::Packed(_) => out.extend(
+            pixel_types::component_bytes(f32::from(c) * (1.0f32 / 255.0), ty),
+        ),
     }
 }
 
@@ -346,6 +353,9 @@ fn push_depth(out: &mut Vec<u8>, z: f32, ty: PixelType) {
             out.extend(((4_294_967_295.0 * f64::from(z)).round() as u32).to_ne_bytes())
         }
         PixelType::Float => out.extend(z.to_ne_bytes()),
+        PixelType::Byte | PixelType::Short | PixelType::Int | PixelType::Packed(_) => {
+            out.extend(pixel_types::component_bytes(z, ty))
+        }
     }
 }
 

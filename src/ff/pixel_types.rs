@@ -1,0 +1,505 @@
+//! GL 1.0's signed pixel types (BYTE, SHORT, INT), GL 1.2's packed types (Table 3.8) and
+//! its BGR and BGRA formats (Table 3.5), on the way in and on the way out.
+//!
+//! **In** (glTexImage*, glTexSubImage*, glDrawPixels): client data in one of them is
+//! rewritten into the model's own forms where it enters the layer, before a display list,
+//! the trace, the script printer or either pipeline sees it ([`to_model`]):
+//! - BGR and BGRA in a component type become RGB and RGBA in that type: the components
+//!   move, none is converted, so nothing is lost;
+//! - a signed type becomes FLOAT, a packed type UNSIGNED_BYTE (RGB for 3_3_2, 5_6_5 and
+//!   their REV, RGBA for the others), each component converted by the rules below;
+//! - STENCIL_INDEX in a signed type becomes UNSIGNED_INT: the index's two's-complement bits,
+//!   of which the stencil path keeps the low ones.
+//!
+//! **Out** (glReadPixels, glGetTexImage): the command keeps the format and type asked for;
+//! the native path asks GL, the emulated path reads the read form ([`read_form`]) and
+//! packs it on the CPU ([`from_model`]).
+//!
+//! Conversions, as Mesa 22.3 makes them (measured with OSMesa, `tests/c/pixel_types.c`):
+//! - signed to float: c / (2ⁿ⁻¹ − 1), at least −1 (Mesa's `_mesa_snorm_to_float`, the
+//!   normalisation of GL 4.2, not GL 1.5 Table 2.9's (2c + 1) / (2ⁿ − 1)); a negative
+//!   colour is then clamped to 0 where the model clamps colour (1 → 2/255, 64 → 129/255);
+//! - a packed field of b bits to 8 bits: its bits repeated for b ≤ 8, rounded for 10
+//!   ([`field_to_unorm8`]), which is what an 8-bit texture or colour buffer keeps: Mesa
+//!   unpacks to 8 bits too, so the model's form loses nothing an 8-bit target keeps;
+//! - 8-bit storage to a signed or packed type: Mesa's integer rules ([`ReadFrom::Unorm8`]);
+//!   float storage: round(clamp(f, −1, 1) · (2ⁿ⁻¹ − 1)) and round(clamp(f, 0, 1) · (2ᵇ − 1)),
+//!   half away from zero.
+
+use std::sync::Arc;
+
+use super::args::{Args, PixelShape};
+use super::command::{Command, TexData};
+use super::error::GlErrorKind;
+use super::texture::{PixelFormat, PixelType};
+
+/// The call's Command when the format and type of `shape` do not go together: the GL
+/// error it raises ([`refused`]), which a display list keeps for its execution as Mesa
+/// does.
+pub fn refusal<A: Args>(c: &A, shape: PixelShape) -> Option<Command> {
+    refused(shape.format, shape.ty).map(|error| Command::Raise {
+        error,
+        call: c.entry(),
+    })
+}
+
+/// Client pixels in the model's form: format, type and bytes (NULL as `None`).
+pub type ModelPixels = (PixelFormat, PixelType, Option<Arc<[u8]>>);
+
+/// The pixels of argument `i` (of `shape`) in the model's form.
+pub fn model_pixels<A: Args>(c: &A, i: usize, shape: PixelShape) -> Result<ModelPixels, A::Error> {
+    let (format, ty) = model_form(shape.format, shape.ty);
+    let data = c
+        .pixels(i, shape)?
+        .map(|d| to_model(shape.format, shape.ty, d));
+    Ok((format, ty, data))
+}
+
+/// glTexImage's data of argument `i` (of `shape`) in the model's form. A script's
+/// readback slot is read as the slot holds it, so it takes only the model's own forms.
+pub fn model_tex_data<A: Args>(
+    c: &A,
+    i: usize,
+    shape: PixelShape,
+) -> Result<(PixelFormat, PixelType, TexData), A::Error> {
+    let (format, ty) = model_form(shape.format, shape.ty);
+    let data = match c.tex_data(i, shape)? {
+        TexData::Bytes(d) => TexData::Bytes(to_model(shape.format, shape.ty, d)),
+        TexData::Null => TexData::Null,
+        slot if is_model_form(shape.format, shape.ty) => slot,
+        _ => {
+            return Err(c.bad(
+                i,
+                "bytes or NULL: a readback slot is read in RGB(A), LUMINANCE(_ALPHA), ALPHA, \
+                 DEPTH_COMPONENT or STENCIL_INDEX of an unsigned type or FLOAT",
+            ))
+        }
+    };
+    Ok((format, ty, data))
+}
+
+/// GL 1.2's packed pixel types (Table 3.8). A group is one element of 1, 2 or 4 bytes;
+/// its fields are the format's components in the format's order, the first in the
+/// element's highest bits, or (`…Rev`) its lowest (Tables 3.11–3.13).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PackedType {
+    UnsignedByte332,
+    UnsignedByte233Rev,
+    UnsignedShort565,
+    UnsignedShort565Rev,
+    UnsignedShort4444,
+    UnsignedShort4444Rev,
+    UnsignedShort5551,
+    UnsignedShort1555Rev,
+    UnsignedInt8888,
+    UnsignedInt8888Rev,
+    UnsignedInt1010102,
+    UnsignedInt2101010Rev,
+}
+
+impl PackedType {
+    /// Bytes of one element (one group).
+    pub fn bytes(self) -> usize {
+        match self {
+            PackedType::UnsignedByte332 | PackedType::UnsignedByte233Rev => 1,
+            PackedType::UnsignedShort565
+            | PackedType::UnsignedShort565Rev
+            | PackedType::UnsignedShort4444
+            | PackedType::UnsignedShort4444Rev
+            | PackedType::UnsignedShort5551
+            | PackedType::UnsignedShort1555Rev => 2,
+            PackedType::UnsignedInt8888
+            | PackedType::UnsignedInt8888Rev
+            | PackedType::UnsignedInt1010102
+            | PackedType::UnsignedInt2101010Rev => 4,
+        }
+    }
+
+    /// The field widths as the type's name gives them, highest bits first, and whether
+    /// the components run from the lowest bits (REV).
+    fn layout(self) -> (&'static [u32], bool) {
+        match self {
+            PackedType::UnsignedByte332 => (&[3, 3, 2], false),
+            PackedType::UnsignedByte233Rev => (&[2, 3, 3], true),
+            PackedType::UnsignedShort565 => (&[5, 6, 5], false),
+            PackedType::UnsignedShort565Rev => (&[5, 6, 5], true),
+            PackedType::UnsignedShort4444 => (&[4, 4, 4, 4], false),
+            PackedType::UnsignedShort4444Rev => (&[4, 4, 4, 4], true),
+            PackedType::UnsignedShort5551 => (&[5, 5, 5, 1], false),
+            PackedType::UnsignedShort1555Rev => (&[1, 5, 5, 5], true),
+            PackedType::UnsignedInt8888 => (&[8, 8, 8, 8], false),
+            PackedType::UnsignedInt8888Rev => (&[8, 8, 8, 8], true),
+            PackedType::UnsignedInt1010102 => (&[10, 10, 10, 2], false),
+            PackedType::UnsignedInt2101010Rev => (&[2, 10, 10, 10], true),
+        }
+    }
+
+    /// Components of a group: 3 or 4.
+    pub fn components(self) -> usize {
+        self.layout().0.len()
+    }
+
+    /// (shift, bits) of each component, in the format's order.
+    pub fn fields(self) -> Vec<(u32, u32)> {
+        let (widths, rev) = self.layout();
+        let total: u32 = widths.iter().sum();
+        let mut out = Vec::with_capacity(widths.len());
+        if rev {
+            // The first component in the lowest bits; the widths, read from the low end,
+            // are the name's read backwards.
+            let mut shift = 0;
+            for &bits in widths.iter().rev() {
+                out.push((shift, bits));
+                shift += bits;
+            }
+        } else {
+            let mut top = total;
+            for &bits in widths {
+                top -= bits;
+                out.push((top, bits));
+            }
+        }
+        out
+    }
+}
+
+/// The error GL gives a format and type that do not go together, if any: a packed type
+/// whose group has another number of components than the format (GL 1.2 §3.6.4:
+/// INVALID_OPERATION; Mesa also refuses BGR with 3_3_2 and 5_6_5), or a packed type with a
+/// format that is no colour.
+pub fn refused(format: PixelFormat, ty: PixelType) -> Option<GlErrorKind> {
+    let PixelType::Packed(p) = ty else {
+        return None;
+    };
+    let fits = match p.components() {
+        3 => format == PixelFormat::Rgb,
+        _ => matches!(format, PixelFormat::Rgba | PixelFormat::Bgra),
+    };
+    (!fits).then_some(GlErrorKind::InvalidOperation)
+}
+
+/// The format and type the model keeps for client data of `format` in `ty`.
+pub fn model_form(format: PixelFormat, ty: PixelType) -> (PixelFormat, PixelType) {
+    let format = match format {
+        PixelFormat::Bgr => PixelFormat::Rgb,
+        PixelFormat::Bgra => PixelFormat::Rgba,
+        f => f,
+    };
+    let ty = match (format, ty) {
+        (PixelFormat::StencilIndex, PixelType::Byte | PixelType::Short | PixelType::Int) => {
+            PixelType::UnsignedInt
+        }
+        (_, PixelType::Byte | PixelType::Short | PixelType::Int) => PixelType::Float,
+        (_, PixelType::Packed(_)) => PixelType::UnsignedByte,
+        (_, t) => t,
+    };
+    (format, ty)
+}
+
+/// The format and type a pipeline reads for glReadPixels or glGetTexImage in `format` and
+/// `ty`, before [`from_model`] gives them as asked: the model's form, but FLOAT for a
+/// packed type (its fields are packed from the values read).
+pub fn read_form(format: PixelFormat, ty: PixelType) -> (PixelFormat, PixelType) {
+    match model_form(format, ty) {
+        (f, _) if matches!(ty, PixelType::Packed(_)) => (f, PixelType::Float),
+        form => form,
+    }
+}
+
+/// Whether `format` in `ty` is already the model's own form.
+pub fn is_model_form(format: PixelFormat, ty: PixelType) -> bool {
+    model_form(format, ty) == (format, ty)
+}
+
+/// For BGR and BGRA, the element of the model's group each element of the client's group
+/// comes from (red and blue swap places); `None` for every other format.
+fn swizzle(format: PixelFormat) -> Option<&'static [usize]> {
+    match format {
+        PixelFormat::Bgr => Some(&[2, 1, 0]),
+        PixelFormat::Bgra => Some(&[2, 1, 0, 3]),
+        _ => None,
+    }
+}
+
+/// Tight client data of `format` in `ty` (SWAP_BYTES already applied) in the model's form
+/// ([`model_form`]); the data itself when it is that form already. A trailing partial group
+/// is dropped.
+pub fn to_model(format: PixelFormat, ty: PixelType, data: Arc<[u8]>) -> Arc<[u8]> {
+    if is_model_form(format, ty) {
+        return data;
+    }
+    let (_, model_ty) = model_form(format, ty);
+    let group = ty.group_bytes(format);
+    let mut out = Vec::with_capacity(data.len() / group.max(1) * 16);
+    for g in data.chunks_exact(group) {
+        let values = group_values(g, format, ty);
+        put_group(&mut out, &values, format, model_ty);
+    }
+    out.into()
+}
+
+/// A packed field `v` of `bits` bits as 8 bits, as Mesa unpacks it: up to 8 bits by
+/// repeating the bits (EXTEND_NORMALIZED_INT: v·⌊255/(2ᵇ − 1)⌋ + (v >> (b − 8 mod b));
+/// 5 bits: 8v + (v >> 2), so 3 → 24 where round(3·255/31) is 25), 10 bits rounded,
+/// ⌊(255v + 511) / 1023⌋ (measured, `tests/c/pixel_types.c`).
+pub fn field_to_unorm8(v: u32, bits: u32) -> u8 {
+    let max = (1u32 << bits) - 1;
+    let v = v.min(max);
+    let u = if bits > 8 {
+        (255 * v + max / 2) / max
+    } else {
+        let rest = 8 % bits;
+        v * (255 / max) + if rest == 0 { 0 } else { v >> (bits - rest) }
+    };
+    u as u8
+}
+
+/// One client group as numbers in the client's component order: signed types as
+/// normalised floats (a stencil index as the integer), packed fields as 8-bit integers
+/// ([`field_to_unorm8`]), unsigned and FLOAT elements as the bytes hold them.
+fn group_values(g: &[u8], format: PixelFormat, ty: PixelType) -> Vec<f64> {
+    let stencil = format == PixelFormat::StencilIndex;
+    let n = format.components();
+    match ty {
+        PixelType::Packed(p) => {
+            // One element in the machine's byte order, as GL reads it.
+            let word = match p.bytes() {
+                1 => u32::from(g[0]),
+                2 => u32::from(u16::from_ne_bytes([g[0], g[1]])),
+                _ => u32::from_ne_bytes([g[0], g[1], g[2], g[3]]),
+            };
+            p.fields()
+                .into_iter()
+                .map(|(shift, bits)| {
+                    let max = (1u32 << bits) - 1;
+                    f64::from(field_to_unorm8((word >> shift) & max, bits))
+                })
+                .collect()
+        }
+        _ => (0..n)
+            .map(|i| {
+                let s = ty.size();
+                let e = &g[i * s..(i + 1) * s];
+                element(e, ty, stencil)
+            })
+            .collect(),
+    }
+}
+
+/// One element: a signed type normalised (or, for a stencil index, as the integer), an
+/// unsigned type and FLOAT as the bytes hold them (unnormalised: they are copied, not
+/// converted).
+fn element(e: &[u8], ty: PixelType, stencil: bool) -> f64 {
+    let signed = |v: i64, bits: u32| -> f64 {
+        if stencil {
+            v as f64
+        } else {
+            snorm_to_float(v, bits)
+        }
+    };
+    match ty {
+        PixelType::Byte => signed(i64::from(e[0] as i8), 8),
+        PixelType::Short => signed(i64::from(i16::from_ne_bytes([e[0], e[1]])), 16),
+        PixelType::Int => signed(i64::from(i32::from_ne_bytes([e[0], e[1], e[2], e[3]])), 32),
+        PixelType::UnsignedByte => f64::from(e[0]),
+        PixelType::UnsignedShort => f64::from(u16::from_ne_bytes([e[0], e[1]])),
+        PixelType::UnsignedInt => f64::from(u32::from_ne_bytes([e[0], e[1], e[2], e[3]])),
+        PixelType::Float => f64::from(f32::from_ne_bytes([e[0], e[1], e[2], e[3]])),
+        PixelType::Packed(_) => 0.0,
+    }
+}
+
+/// A group of `values` (client order, of client `format`) appended in the model's order and
+/// type `model_ty`.
+fn put_group(out: &mut Vec<u8>, values: &[f64], format: PixelFormat, model_ty: PixelType) {
+    let order: Vec<usize> = match swizzle(format) {
+        Some(s) => s.to_vec(),
+        None => (0..values.len()).collect(),
+    };
+    for &i in &order {
+        let v = values.get(i).copied().unwrap_or(0.0);
+        match model_ty {
+            PixelType::UnsignedByte => out.push(v as u8),
+            PixelType::UnsignedShort => out.extend((v as u16).to_ne_bytes()),
+            // A stencil index from a signed type: its two's-complement bits.
+            PixelType::UnsignedInt => out.extend((v as i64 as u32).to_ne_bytes()),
+            _ => out.extend((v as f32).to_ne_bytes()),
+        }
+    }
+}
+
+/// What the values a pipeline reads were stored in: Mesa converts from 8-bit storage
+/// with integer arithmetic, from anything else through floats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ReadFrom {
+    /// An 8-bit colour buffer or texture: each value read is u / 255 for an integer u.
+    Unorm8,
+    /// Float, 16-bit or depth storage.
+    Float,
+}
+
+/// Tight data the pipeline read in the read form of (`format`, `ty`) ([`read_form`])
+/// as glReadPixels and glGetTexImage give it in `format` and `ty`: BGR(A) reordered, signed
+/// and packed types converted from the FLOAT read, from `from`'s storage.
+pub fn from_model(read: &[u8], format: PixelFormat, ty: PixelType, from: ReadFrom) -> Vec<u8> {
+    if is_model_form(format, ty) {
+        return read.to_vec();
+    }
+    let (model_format, model_ty) = read_form(format, ty);
+    let n = model_format.components();
+    let elem = model_ty.size();
+    // The model's group in the client's order.
+    let order: Vec<usize> = match swizzle(format) {
+        Some(s) => s.to_vec(),
+        None => (0..n).collect(),
+    };
+    let mut out = Vec::with_capacity(read.len());
+    for g in read.chunks_exact(n * elem) {
+        let raw = |i: usize| &g[i * elem..(i + 1) * elem];
+        let value = |i: usize| Stored::of(read_f32(raw(i)), from);
+        match ty {
+            PixelType::Packed(p) => {
+                let mut word = 0u32;
+                for (&(shift, bits), &i) in p.fields().iter().zip(&order) {
+                    word |= value(i).unorm(bits) << shift;
+                }
+                match p.bytes() {
+                    1 => out.push(word as u8),
+                    2 => out.extend((word as u16).to_ne_bytes()),
+                    _ => out.extend(word.to_ne_bytes()),
+                }
+            }
+            PixelType::Byte | PixelType::Short | PixelType::Int
+                if format == PixelFormat::StencilIndex =>
+            {
+                let v = u32::from_ne_bytes([g[0], g[1], g[2], g[3]]);
+                match ty {
+                    PixelType::Byte => out.push(v as u8),
+                    PixelType::Short => out.extend((v as u16).to_ne_bytes()),
+                    _ => out.extend(v.to_ne_bytes()),
+                }
+            }
+            PixelType::Byte => {
+                for &i in &order {
+                    out.push(value(i).snorm(8) as i8 as u8);
+                }
+            }
+            PixelType::Short => {
+                for &i in &order {
+                    out.extend((value(i).snorm(16) as i16).to_ne_bytes());
+                }
+            }
+            PixelType::Int => {
+                for &i in &order {
+                    out.extend((value(i).snorm(32) as i32).to_ne_bytes());
+                }
+            }
+            // BGR(A) in a component type: the elements move.
+            _ => {
+                for &i in &order {
+                    out.extend_from_slice(raw(i));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// One value read, as the storage held it.
+#[derive(Clone, Copy)]
+enum Stored {
+    Unorm8(u32),
+    Float(f32),
+}
+
+impl Stored {
+    fn of(f: f32, from: ReadFrom) -> Stored {
+        match from {
+            // f = u / 255 in f32: u is recovered exactly.
+            ReadFrom::Unorm8 => Stored::Unorm8((f.clamp(0.0, 1.0) * 255.0).round() as u32),
+            ReadFrom::Float => Stored::Float(f),
+        }
+    }
+
+    /// As an unsigned field of `bits` bits. From 8 bits, Mesa's `_mesa_unorm_to_unorm`:
+    /// narrower ⌊(u·(2ᵇ − 1) + 127) / 255⌋, wider u·⌊(2ᵇ − 1)/255⌋ + (u >> (8 − b mod 8))
+    /// (its EXTEND_NORMALIZED_INT: the bits repeated; 10 bits: 4u + (u >> 6)); from a
+    /// float, round(clamp(f, 0, 1) · (2ᵇ − 1)).
+    fn unorm(self, bits: u32) -> u32 {
+        let max = (1u64 << bits) - 1;
+        match self {
+            Stored::Unorm8(u) => unorm8_to(u, bits),
+            Stored::Float(f) => {
+                let f = if f.is_nan() { 0.0 } else { f.clamp(0.0, 1.0) };
+                (f64::from(f) * max as f64).round() as u32
+            }
+        }
+    }
+
+    /// As a signed element of `bits` bits. From 8 bits, Mesa's `_mesa_unorm_to_snorm`: the
+    /// unsigned conversion to `bits` − 1 bits (255 → 2ⁿ⁻¹ − 1, never negative); from a
+    /// float, round(clamp(f, −1, 1) · (2ⁿ⁻¹ − 1)).
+    fn snorm(self, bits: u32) -> i64 {
+        match self {
+            Stored::Unorm8(u) => i64::from(unorm8_to(u, bits - 1)),
+            Stored::Float(f) => snorm(f, (1i64 << (bits - 1)) - 1),
+        }
+    }
+}
+
+/// An unsigned 8-bit value as `bits` bits, by Mesa's integer rule (`Stored::unorm`).
+fn unorm8_to(u: u32, bits: u32) -> u32 {
+    let u = u64::from(u.min(255));
+    let max = (1u64 << bits) - 1;
+    let v = match bits.cmp(&8) {
+        std::cmp::Ordering::Less => (u * max + 127) / 255,
+        std::cmp::Ordering::Equal => u,
+        std::cmp::Ordering::Greater => {
+            let rest = bits % 8;
+            u * (max / 255) + if rest == 0 { 0 } else { u >> (8 - rest) }
+        }
+    };
+    v as u32
+}
+
+/// One component `v` in a signed type, as glReadPixels and glGetTexImage store it from
+/// float storage; in a packed type (whose fields [`from_model`] packs from a FLOAT read),
+/// the FLOAT itself.
+pub fn component_bytes(v: f32, ty: PixelType) -> Vec<u8> {
+    match ty {
+        PixelType::Byte => vec![snorm(v, 127) as i8 as u8],
+        PixelType::Short => (snorm(v, 32767) as i16).to_ne_bytes().to_vec(),
+        PixelType::Int => (snorm(v, i32::MAX as i64) as i32).to_ne_bytes().to_vec(),
+        _ => v.to_ne_bytes().to_vec(),
+    }
+}
+
+/// A signed element `v` of `bits` bits as a normalised float: v / (2^(bits−1) − 1), at
+/// least −1.
+pub fn snorm_to_float(v: i64, bits: u32) -> f64 {
+    let max = ((1i64 << (bits - 1)) - 1) as f64;
+    (v as f64 / max).max(-1.0)
+}
+
+/// The components of packed groups `data` of `p`, each field normalised through its
+/// 8-bit value ([`field_to_unorm8`]), in the format's order.
+pub fn packed_components(data: &[u8], p: PackedType) -> Vec<f64> {
+    data.chunks_exact(p.bytes())
+        .flat_map(|g| group_values(g, PixelFormat::Rgba, PixelType::Packed(p)))
+        .map(|u| u / 255.0)
+        .collect()
+}
+
+fn read_f32(b: &[u8]) -> f32 {
+    f32::from_ne_bytes([b[0], b[1], b[2], b[3]])
+}
+
+/// round(clamp(f, −1, 1) · max), half away from zero; NaN as 0.
+fn snorm(f: f32, max: i64) -> i64 {
+    let f = if f.is_nan() { 0.0 } else { f.clamp(-1.0, 1.0) };
+    (f64::from(f) * max as f64).round() as i64
+}
+
+#[cfg(test)]
+#[path = "pixel_types_tests.rs"]
+mod tests;
