@@ -31,6 +31,7 @@ const MODEL_EXTENSIONS: &[&str] = &[
     "GL_EXT_packed_depth_stencil",
     "GL_EXT_secondary_color",
     "GL_EXT_fog_coord",
+    "GL_EXT_texture_compression_s3tc",
 ];
 
 fn main() {

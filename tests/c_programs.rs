@@ -1088,3 +1088,31 @@ fn signed_packed_and_bgra_pixels_convert_as_on_mesa() {
         "64x32",
     );
 }
+
+/// `tests/c/compressed.c`: S3TC blocks of every decoded format uploaded with
+/// glCompressedTexImage2D, decoded texel for texel as Mesa decodes them and given back as
+/// given; the level queries, sub-images, display lists, the compression hint and 30 errors
+/// as Mesa answers them; Mesa's image exactly; the trace replays.
+#[test]
+fn compressed_textures_decode_and_answer_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("compressed");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "listed DXT1 1 DXT3 1 DXT5 1 err 0",
+            "hint popped                              4354  err 0x0",
+            "sub-image at (2, 0)                      err 0x502",
+            "border 1                                 err 0x502",
+            "the list run                             err 0x501",
+            "the list's image               compressed 1 size 32 format 0x83f1 bits 4 4 err 0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 85, "a compressed-texture answer");
+    assert_images_match("compressed", &ours, &mesa, Tolerance::EXACT);
+    assert_trace_replays(
+        "compressed",
+        &compile("compressed", Linking::Direct),
+        &[],
+        "64x32",
+    );
+}

@@ -41,6 +41,10 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_secondary_color",
     "GL_EXT_fog_coord",
     "GL_ARB_texture_mirrored_repeat",
+    "GL_ARB_texture_compression",
+    "GL_EXT_texture_compression_s3tc",
+    "GL_EXT_bgra",
+    "GL_EXT_packed_pixels",
 ];
 
 struct Strings {

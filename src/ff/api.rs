@@ -531,12 +531,12 @@ macro_rules! gl_entry_table {
         // instead of a missing symbol.
         BeginQuery = glBeginQuery(Script; target: GLenum, id: GLuint);
         ClearIndex = glClearIndex(Script; c: GLfloat);
-        CompressedTexImage1D = glCompressedTexImage1D(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
-        CompressedTexImage2D = glCompressedTexImage2D(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
-        CompressedTexImage3D = glCompressedTexImage3D(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
-        CompressedTexSubImage1D = glCompressedTexSubImage1D(Left; target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
-        CompressedTexSubImage2D = glCompressedTexSubImage2D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
-        CompressedTexSubImage3D = glCompressedTexSubImage3D(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
+        CompressedTexImage1D = glCompressedTexImage1D(Script; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
+        CompressedTexImage2D = glCompressedTexImage2D(Script; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
+        CompressedTexImage3D = glCompressedTexImage3D(Script; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
+        CompressedTexSubImage1D = glCompressedTexSubImage1D(Script; target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
+        CompressedTexSubImage2D = glCompressedTexSubImage2D(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
+        CompressedTexSubImage3D = glCompressedTexSubImage3D(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CopyTexSubImage3D = glCopyTexSubImage3D(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
         DeleteQueries = glDeleteQueries(Script; n: GLsizei, ids: *const GLuint);
         EndQuery = glEndQuery(Script; target: GLenum);
@@ -546,7 +546,7 @@ macro_rules! gl_entry_table {
         FogCoordf = glFogCoordf(Script; coord: GLfloat);
         FogCoordfv = glFogCoordfv(Script; coord: *const GLfloat);
         GenQueries = glGenQueries(Script; n: GLsizei, ids: *mut GLuint);
-        GetCompressedTexImage = glGetCompressedTexImage(Left; target: GLenum, level: GLint, img: *mut c_void);
+        GetCompressedTexImage = glGetCompressedTexImage(Script; target: GLenum, level: GLint, img: *mut c_void);
         GetQueryObjectiv = glGetQueryObjectiv(Script; id: GLuint, pname: GLenum, params: *mut GLint);
         GetQueryObjectuiv = glGetQueryObjectuiv(Script; id: GLuint, pname: GLenum, params: *mut GLuint);
         GetQueryiv = glGetQueryiv(Script; target: GLenum, pname: GLenum, params: *mut GLint);
@@ -588,12 +588,12 @@ macro_rules! gl_entry_table {
         TexImage3D = glTexImage3D(Script; target: GLenum, level: GLint, internalformat: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, format: GLenum, r#type: GLenum, pixels: *const c_void);
         TexSubImage3D = glTexSubImage3D(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, r#type: GLenum, pixels: *const c_void);
         BeginQueryARB = glBeginQueryARB(Script; target: GLenum, id: GLuint);
-        CompressedTexImage1DARB = glCompressedTexImage1DARB(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
-        CompressedTexImage2DARB = glCompressedTexImage2DARB(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
-        CompressedTexImage3DARB = glCompressedTexImage3DARB(Left; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
-        CompressedTexSubImage1DARB = glCompressedTexSubImage1DARB(Left; target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
-        CompressedTexSubImage2DARB = glCompressedTexSubImage2DARB(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
-        CompressedTexSubImage3DARB = glCompressedTexSubImage3DARB(Left; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
+        CompressedTexImage1DARB = glCompressedTexImage1DARB(Script; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
+        CompressedTexImage2DARB = glCompressedTexImage2DARB(Script; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
+        CompressedTexImage3DARB = glCompressedTexImage3DARB(Script; target: GLenum, level: GLint, internalformat: GLenum, width: GLsizei, height: GLsizei, depth: GLsizei, border: GLint, image_size: GLsizei, data: *const c_void);
+        CompressedTexSubImage1DARB = glCompressedTexSubImage1DARB(Script; target: GLenum, level: GLint, xoffset: GLint, width: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
+        CompressedTexSubImage2DARB = glCompressedTexSubImage2DARB(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, width: GLsizei, height: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
+        CompressedTexSubImage3DARB = glCompressedTexSubImage3DARB(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, width: GLsizei, height: GLsizei, depth: GLsizei, format: GLenum, image_size: GLsizei, data: *const c_void);
         CopyTexSubImage3DEXT = glCopyTexSubImage3DEXT(Script; target: GLenum, level: GLint, xoffset: GLint, yoffset: GLint, zoffset: GLint, x: GLint, y: GLint, width: GLsizei, height: GLsizei);
         DeleteQueriesARB = glDeleteQueriesARB(Script; n: GLsizei, ids: *const GLuint);
         EndQueryARB = glEndQueryARB(Script; target: GLenum);
@@ -603,7 +603,7 @@ macro_rules! gl_entry_table {
         FogCoordfEXT = glFogCoordfEXT(Script; coord: GLfloat);
         FogCoordfvEXT = glFogCoordfvEXT(Script; coord: *const GLfloat);
         GenQueriesARB = glGenQueriesARB(Script; n: GLsizei, ids: *mut GLuint);
-        GetCompressedTexImageARB = glGetCompressedTexImageARB(Left; target: GLenum, level: GLint, img: *mut c_void);
+        GetCompressedTexImageARB = glGetCompressedTexImageARB(Script; target: GLenum, level: GLint, img: *mut c_void);
         GetQueryObjectivARB = glGetQueryObjectivARB(Script; id: GLuint, pname: GLenum, params: *mut GLint);
         GetQueryObjectuivARB = glGetQueryObjectuivARB(Script; id: GLuint, pname: GLenum, params: *mut GLuint);
         GetQueryivARB = glGetQueryivARB(Script; target: GLenum, pname: GLenum, params: *mut GLint);
@@ -1080,6 +1080,8 @@ impl Command {
             Command::ProxyTexImage(_) => Entry::TexImage3D,
             Command::TexSubImage3D(_) => Entry::TexSubImage3D,
             Command::TexSubImage2D(_) => Entry::TexSubImage2D,
+            Command::CompressedTexImage2D(_) => Entry::CompressedTexImage2D,
+            Command::CompressedTexSubImage2D(_) => Entry::CompressedTexSubImage2D,
             Command::CopyTexImage2D(_) => Entry::CopyTexImage2D,
             Command::TexParameter { param, .. } => match param {
                 TexParam::BorderColor(_) => Entry::TexParameterfv,

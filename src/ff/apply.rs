@@ -317,6 +317,8 @@ impl FixedState {
             Command::TexSubImage1D(t) => self.tex_sub_image(t, TextureTarget::Texture1D)?,
             Command::TexSubImage3D(t) => self.tex_sub_image(t, TextureTarget::Texture3D)?,
             Command::ProxyTexImage(t) => self.proxy_tex_image(t)?,
+            Command::CompressedTexImage2D(t) => self.compressed_tex_image(t)?,
+            Command::CompressedTexSubImage2D(t) => self.compressed_tex_sub_image(t)?,
             Command::CopyTexImage1D(c) => {
                 self.check_read_framebuffer(None)?;
                 self.copy_tex_image_1d(c)?
@@ -468,7 +470,7 @@ impl FixedState {
         Ok(())
     }
 
-    fn bound_mut(&mut self, target: TextureTarget) -> GlResult<&mut TextureObject> {
+    pub(super) fn bound_mut(&mut self, target: TextureTarget) -> GlResult<&mut TextureObject> {
         let name = self.units[self.active_unit()].bound(target);
         self.texture_mut(target, name)
             .ok_or(GlError::invalid_operation(
@@ -505,6 +507,7 @@ impl FixedState {
                 ty: t.ty,
                 bytes: bytes.clone(),
             }),
+            compressed: None,
         };
         let tex = self.bound_mut(t.target)?;
         tex.set_level(t.level, level);
@@ -579,6 +582,7 @@ impl FixedState {
             height: c.height,
             depth: 1,
             data: None,
+            compressed: None,
         };
         let tex = self.bound_mut(TextureTarget::Texture2D)?;
         tex.set_level(c.level, level);

@@ -26,6 +26,7 @@ pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
         super::calls_variants::variants,
         super::texture_calls::texture_calls,
         super::texture_volume::volume_calls,
+        super::calls_compressed::compressed_calls,
         transform_and_fragment,
         lighting,
         texturing,

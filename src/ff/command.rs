@@ -466,6 +466,11 @@ pub enum Command {
     TexSubImage3D(TexSubImage),
     /// glTexImage3D(PROXY_TEXTURE_3D, …): `target` is the target proxied (TEXTURE_3D).
     ProxyTexImage(TexImage),
+    // GL 1.3's compressed textures (ff::compressed).
+    /// glCompressedTexImage2D: S3TC blocks, decoded into the level's 8-bit storage.
+    CompressedTexImage2D(super::compressed::CompressedTexImage),
+    /// glCompressedTexSubImage2D: whole blocks into a compressed level.
+    CompressedTexSubImage2D(super::compressed::CompressedTexSubImage),
     // Raster position and pixel rectangles (ff::raster, ff::pixels).
     /// glRasterPos4f: the point in object coordinates (§2.13).
     RasterPos(Vec4),

@@ -288,6 +288,8 @@ pub enum HintTarget {
     LineSmooth,
     PolygonSmooth,
     Fog,
+    /// GL 1.3's TEXTURE_COMPRESSION_HINT.
+    TextureCompression,
 }
 
 /// glHint modes. GL default: DONT_CARE for every target.
@@ -307,6 +309,7 @@ pub struct Hints {
     pub line_smooth: HintMode,
     pub polygon_smooth: HintMode,
     pub fog: HintMode,
+    pub texture_compression: HintMode,
 }
 
 impl Hints {
@@ -316,6 +319,7 @@ impl Hints {
         line_smooth: HintMode::DontCare,
         polygon_smooth: HintMode::DontCare,
         fog: HintMode::DontCare,
+        texture_compression: HintMode::DontCare,
     };
 
     /// glHint(target, mode).
@@ -326,12 +330,13 @@ impl Hints {
             HintTarget::LineSmooth => &mut self.line_smooth,
             HintTarget::PolygonSmooth => &mut self.polygon_smooth,
             HintTarget::Fog => &mut self.fog,
+            HintTarget::TextureCompression => &mut self.texture_compression,
         };
         *slot = mode;
     }
 
     /// Every target with its mode.
-    pub fn all(&self) -> [(HintTarget, HintMode); 5] {
+    pub fn all(&self) -> [(HintTarget, HintMode); 6] {
         [
             (
                 HintTarget::PerspectiveCorrection,
@@ -341,6 +346,7 @@ impl Hints {
             (HintTarget::LineSmooth, self.line_smooth),
             (HintTarget::PolygonSmooth, self.polygon_smooth),
             (HintTarget::Fog, self.fog),
+            (HintTarget::TextureCompression, self.texture_compression),
         ]
     }
 }

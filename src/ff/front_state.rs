@@ -14,7 +14,9 @@ use super::command::Command;
 use super::error::GlErrorKind;
 use super::front::{Client, Reply};
 use super::glenum::registry as r;
+use super::glenum::GlEnum;
 use super::queries::Answer;
+use super::texture::TextureTarget;
 use super::FixedState;
 
 /// Whether `entry` is one of these calls.
@@ -34,6 +36,8 @@ pub fn handles(entry: Entry) -> bool {
                 | Entry::IsTexture
                 | Entry::AreTexturesResident
                 | Entry::PrioritizeTextures
+                | Entry::GetCompressedTexImage
+                | Entry::GetCompressedTexImageARB
         )
         || super::framebuffer::answered_by_front_end(entry)
         || super::queries::never_compiled(entry)
@@ -106,6 +110,11 @@ impl Client {
                 )))
             }
             Entry::AreTexturesResident | Entry::PrioritizeTextures => self.residence(c, state)?,
+            Entry::GetCompressedTexImage | Entry::GetCompressedTexImageARB => {
+                c.count(3)?;
+                compressed_image(state, c.token(0)?, c.i32(1)?)
+                    .map(|bytes| Reply::Write { arg: 2, bytes })
+            }
             e if super::queries::never_compiled(e) => {
                 let signed = matches!(e, Entry::GetQueryObjectiv | Entry::GetQueryObjectivARB);
                 super::queries::answer(c, state, out)?.map(|a| match a {
@@ -165,4 +174,22 @@ impl Client {
             Err(GlErrorKind::InvalidValue)
         })
     }
+}
+
+/// glGetCompressedTexImage(target, level, img): the blocks of a compressed level of the
+/// texture bound to `target` on the active unit, as given (GL 1.3 §6.1.4). A proxy or
+/// unknown target is INVALID_ENUM; a level outside the target's range or never specified
+/// INVALID_VALUE, an uncompressed one INVALID_OPERATION (Mesa, measured).
+fn compressed_image(state: &FixedState, target: u32, level: i32) -> Result<Vec<u8>, GlErrorKind> {
+    let t = TextureTarget::from_gl_value(target).ok_or(GlErrorKind::InvalidEnum)?;
+    let name = state.units[state.active_unit()].bound(t);
+    let l = state
+        .texture(t, name)
+        .filter(|_| (0..=t.max_level()).contains(&level))
+        .and_then(|o| o.level(level))
+        .ok_or(GlErrorKind::InvalidValue)?;
+    l.compressed
+        .as_ref()
+        .map(|c| c.bytes.to_vec())
+        .ok_or(GlErrorKind::InvalidOperation)
 }

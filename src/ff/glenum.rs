@@ -10,6 +10,7 @@
 //! the first entry is the canonical one). Indexed families (GL_LIGHTi, GL_TEXTUREi,
 //! GL_COMBINERi_NV, GL_CLIP_PLANEi) are not tables: `LIGHT0 + i`.
 
+use super::compressed::CompressedFormat;
 use super::framebuffer::{AttachmentPoint, ColorBuffer, FramebufferTarget, RenderbufferFormat};
 use super::pixel_map::PixelMapName;
 use super::pixel_types::PackedType;
@@ -246,6 +247,7 @@ gl_enums!(HintTarget {
     LINE_SMOOTH_HINT => HintTarget::LineSmooth,
     POLYGON_SMOOTH_HINT => HintTarget::PolygonSmooth,
     FOG_HINT => HintTarget::Fog,
+    TEXTURE_COMPRESSION_HINT => HintTarget::TextureCompression,
 });
 
 gl_enums!(HintMode {
@@ -409,6 +411,14 @@ gl_enums!(TexFormat {
     RGBA12 => TexFormat::Rgba8,
     RGBA16 => TexFormat::Rgba8,
     DEPTH_COMPONENT32 => TexFormat::DepthComponent24,
+    // GL 1.3's generic compressed formats (Table 3.17), kept uncompressed: GL lets an
+    // implementation store them so; Mesa compresses the luminance and colour ones.
+    COMPRESSED_ALPHA => TexFormat::Alpha8,
+    COMPRESSED_LUMINANCE => TexFormat::Luminance8,
+    COMPRESSED_LUMINANCE_ALPHA => TexFormat::Luminance8Alpha8,
+    COMPRESSED_INTENSITY => TexFormat::Intensity8,
+    COMPRESSED_RGB => TexFormat::Rgb8,
+    COMPRESSED_RGBA => TexFormat::Rgba8,
 });
 
 gl_enums!(PixelFormat {
@@ -424,6 +434,13 @@ gl_enums!(PixelFormat {
     BLUE => PixelFormat::Blue,
     BGR => PixelFormat::Bgr,
     BGRA => PixelFormat::Bgra,
+});
+
+gl_enums!(CompressedFormat {
+    COMPRESSED_RGB_S3TC_DXT1_EXT => CompressedFormat::RgbDxt1,
+    COMPRESSED_RGBA_S3TC_DXT1_EXT => CompressedFormat::RgbaDxt1,
+    COMPRESSED_RGBA_S3TC_DXT3_EXT => CompressedFormat::RgbaDxt3,
+    COMPRESSED_RGBA_S3TC_DXT5_EXT => CompressedFormat::RgbaDxt5,
 });
 
 gl_enums!(PixelType {

@@ -48,6 +48,7 @@ use glam::Mat4;
 use super::attrib::MAX_ATTRIB_STACK_DEPTH;
 use super::combiners::MAX_GENERAL_COMBINERS;
 use super::command::Capability;
+use super::compressed::CompressedFormat;
 use super::error::GlErrorKind;
 use super::fragment::STENCIL_BITS;
 use super::framebuffer;
@@ -435,6 +436,13 @@ pnames! {
     LINE_SMOOTH_HINT => |s| enm(s.hints.line_smooth),
     POLYGON_SMOOTH_HINT => |s| enm(s.hints.polygon_smooth),
     FOG_HINT => |s| enm(s.hints.fog),
+    TEXTURE_COMPRESSION_HINT => |s| enm(s.hints.texture_compression),
+    // The S3TC formats the layer decodes, of Mesa's twelve (`ff::compressed`).
+    NUM_COMPRESSED_TEXTURE_FORMATS => |_| count(CompressedFormat::LISTED.len()),
+    COMPRESSED_TEXTURE_FORMATS => |_| CompressedFormat::LISTED
+        .iter()
+        .map(|f| QueryValue::Enum(gl(*f)))
+        .collect(),
 
     // Point and line limits (Table 6.32): llvmpipe's, which rasterises both paths' points
     // and lines (sizes and widths 1…255 in steps of 0.1, aliased and smooth alike).
@@ -740,13 +748,26 @@ impl FixedState {
         }
         let l = object.level(level);
         let format = l.map(|l| l.internal_format);
-        let size = |component: Component| int(format.map_or(0, |f| bits(f, component)));
+        let compressed = l.and_then(|l| l.compressed.as_ref());
+        // A compressed level's sizes are Mesa's for S3TC: 4 bits a colour component, alpha
+        // 4 bits but in RGB_DXT1.
+        let size = |component: Component| match compressed {
+            Some(c) => int(match component {
+                Component::Red | Component::Green | Component::Blue => 4,
+                Component::Alpha if c.format.has_alpha() => 4,
+                _ => 0,
+            }),
+            None => int(format.map_or(0, |f| bits(f, component))),
+        };
         Ok(match pname {
             r::TEXTURE_WIDTH => int(l.map_or(0, |l| l.width)),
             r::TEXTURE_HEIGHT => int(l.map_or(0, |l| l.height)),
             r::TEXTURE_DEPTH => int(l.map_or(0, |l| l.depth)),
             r::TEXTURE_BORDER => int(0),
-            r::TEXTURE_INTERNAL_FORMAT => vec![QueryValue::Enum(format.map_or(r::RGBA, gl))],
+            r::TEXTURE_INTERNAL_FORMAT => vec![QueryValue::Enum(match compressed {
+                Some(c) => gl(c.format),
+                None => format.map_or(r::RGBA, gl),
+            })],
             r::TEXTURE_RED_SIZE => size(Component::Red),
             r::TEXTURE_GREEN_SIZE => size(Component::Green),
             r::TEXTURE_BLUE_SIZE => size(Component::Blue),
@@ -754,7 +775,12 @@ impl FixedState {
             r::TEXTURE_LUMINANCE_SIZE => size(Component::Luminance),
             r::TEXTURE_INTENSITY_SIZE => size(Component::Intensity),
             r::TEXTURE_DEPTH_SIZE => size(Component::Depth),
-            r::TEXTURE_COMPRESSED => boolean(false),
+            r::TEXTURE_COMPRESSED => boolean(compressed.is_some()),
+            // INVALID_OPERATION for a level that is not compressed (Mesa, measured).
+            r::TEXTURE_COMPRESSED_IMAGE_SIZE => match compressed {
+                Some(c) => count(c.bytes.len()),
+                None => return Err(GlErrorKind::InvalidOperation),
+            },
             _ => return Err(GlErrorKind::InvalidEnum),
         })
     }

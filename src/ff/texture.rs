@@ -357,6 +357,8 @@ pub struct TexLevel {
     pub depth: i32,
     /// The CPU copy of the texels, when known (see the module note).
     pub data: Option<PixelData>,
+    /// A compressed level's blocks as given (`compressed`); `data` holds them decoded.
+    pub compressed: Option<super::compressed::CompressedImage>,
 }
 
 /// Why a texture is incomplete (GL 1.5 §3.8.10): the first rule it breaks.
@@ -494,6 +496,7 @@ impl TextureObject {
                     height: size.1,
                     depth: size.2,
                     data: None,
+                    compressed: None,
                 },
             );
         }
@@ -680,6 +683,7 @@ mod tests {
             height,
             depth: 1,
             data: None,
+            compressed: None,
         })
     }
 

@@ -180,6 +180,7 @@ impl FixedState {
                 height: 1,
                 depth: 1,
                 data: None,
+                compressed: None,
             },
         );
         if c.level == 0 {

@@ -186,6 +186,7 @@ impl FixedState {
                     height: t.height,
                     depth: t.depth,
                     data: None,
+                    compressed: None,
                 },
             );
         } else if let Some(l) = usize::try_from(t.level)

@@ -13,6 +13,7 @@ fn volume(format: TexFormat, (width, height, depth): (i32, i32, i32)) -> Option<
         height,
         depth,
         data: None,
+        compressed: None,
     })
 }
 

@@ -134,6 +134,45 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
                 )
             ),
         ),
+        Command::CompressedTexImage2D(t) => line(
+            out,
+            format_args!(
+                "{}({}, {}, {}, {}, {}, 0, {}, {})",
+                Entry::CompressedTexImage2D,
+                if t.proxy {
+                    "GL_PROXY_TEXTURE_2D"
+                } else {
+                    "GL_TEXTURE_2D"
+                },
+                t.level,
+                n(t.format),
+                t.width,
+                t.height,
+                t.format.image_size(t.width, t.height),
+                t.data.as_ref().map_or_else(
+                    || "NULL".to_string(),
+                    |d| pixels(PixelType::UnsignedByte, d)
+                )
+            ),
+        ),
+        Command::CompressedTexSubImage2D(t) => line(
+            out,
+            format_args!(
+                "{}(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {}, {})",
+                Entry::CompressedTexSubImage2D,
+                t.level,
+                t.x,
+                t.y,
+                t.width,
+                t.height,
+                n(t.format),
+                t.format.image_size(t.width, t.height),
+                t.data.as_ref().map_or_else(
+                    || "NULL".to_string(),
+                    |d| pixels(PixelType::UnsignedByte, d)
+                )
+            ),
+        ),
         Command::TexSubImage2D(t) => line(
             out,
             format_args!(
@@ -619,6 +658,8 @@ fn call(c: &Command) -> String {
         | Command::ProxyTexImage(_)
         | Command::TexSubImage3D(_)
         | Command::TexSubImage2D(_)
+        | Command::CompressedTexImage2D(_)
+        | Command::CompressedTexSubImage2D(_)
         | Command::TexSubImage1D(_)
         | Command::Raise { .. } => String::new(),
     }

@@ -344,6 +344,15 @@ impl Issue for Emulate {
                 }
             }
             Command::TexImage(t) => self.textures.upload_level(gl, state, t.target, t.level)?,
+            // The model keeps a compressed level decoded: it uploads as any 8-bit level.
+            Command::CompressedTexImage2D(t) if !t.proxy => {
+                self.textures
+                    .upload_level(gl, state, TextureTarget::Texture2D, t.level)?
+            }
+            Command::CompressedTexSubImage2D(t) => {
+                self.textures
+                    .upload_level(gl, state, TextureTarget::Texture2D, t.level)?
+            }
             Command::DeleteTextures(names) => self.textures.delete(gl, names),
             Command::TexSubImage2D(t) => {
                 self.textures
