@@ -183,6 +183,10 @@ impl Oracle<'_> {
             r::RENDERBUFFER_BINDING,
             r::DRAW_BUFFER,
             r::READ_BUFFER,
+            // The layer lists the three S3TC formats it decodes of Mesa's twelve (README,
+            // "Compressed textures"); tests/c/compressed.c checks they are Mesa's.
+            r::NUM_COMPRESSED_TEXTURE_FORMATS,
+            r::COMPRESSED_TEXTURE_FORMATS,
         ];
         for p in query::pnames() {
             if NV_PNAMES.contains(&p) || skip.contains(&p) {

@@ -149,10 +149,7 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
                 t.width,
                 t.height,
                 t.format.image_size(t.width, t.height),
-                t.data.as_ref().map_or_else(
-                    || "NULL".to_string(),
-                    |d| pixels(PixelType::UnsignedByte, d)
-                )
+                blocks(&t.data)
             ),
         ),
         Command::CompressedTexSubImage2D(t) => line(
@@ -167,10 +164,7 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
                 t.height,
                 n(t.format),
                 t.format.image_size(t.width, t.height),
-                t.data.as_ref().map_or_else(
-                    || "NULL".to_string(),
-                    |d| pixels(PixelType::UnsignedByte, d)
-                )
+                blocks(&t.data)
             ),
         ),
         Command::TexSubImage2D(t) => line(
@@ -979,6 +973,14 @@ pub(super) fn pixels(ty: PixelType, data: &[u8]) -> String {
         ),
     };
     format!("({name}[]){{{}}}", v.join(", "))
+}
+
+/// Compressed blocks as a GLubyte literal, or NULL.
+fn blocks(data: &Option<std::sync::Arc<[u8]>>) -> String {
+    data.as_ref().map_or_else(
+        || "NULL".to_string(),
+        |d| pixels(PixelType::UnsignedByte, d),
+    )
 }
 
 /// glTexImage1D/2D/3D of `target` (its token: a proxy image prints its proxy target).

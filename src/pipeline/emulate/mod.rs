@@ -382,15 +382,7 @@ impl Issue for Emulate {
                     readback.bytes = bytes;
                 }
                 let colour8 = state.draw_bits(state.framebuffers.window_bits).red == 8;
-                let from = if colour8 && r.format != PixelFormat::DepthComponent {
-                    ReadFrom::Unorm8
-                } else {
-                    ReadFrom::Float
-                };
-                readback.bytes =
-                    pixel_types::from_model(&readback.bytes, asked.format, asked.ty, from);
-                readback.format = asked.format;
-                readback.ty = asked.ty;
+                as_asked(&mut readback, asked.format, asked.ty, colour8);
                 core.readbacks.insert(r.slot, readback);
             }
             Command::TexSubImage1D(t) => self.textures.sub_image_1d(ctx, state, t)?,
@@ -404,15 +396,8 @@ impl Issue for Emulate {
                     ..*asked
                 };
                 if let Some(mut r) = self.textures.get_image(gl, state, g)? {
-                    // Colour textures are stored in 8 bits (`TexFormat`), depth ones not.
-                    let from = if asked.format == PixelFormat::DepthComponent {
-                        ReadFrom::Float
-                    } else {
-                        ReadFrom::Unorm8
-                    };
-                    r.bytes = pixel_types::from_model(&r.bytes, asked.format, asked.ty, from);
-                    r.format = asked.format;
-                    r.ty = asked.ty;
+                    // Colour textures are stored in 8 bits (`TexFormat`).
+                    as_asked(&mut r, asked.format, asked.ty, true);
                     core.readbacks.insert(g.slot, r);
                 }
             }
@@ -452,6 +437,20 @@ impl Issue for Emulate {
         }
         self.raster.invalidate();
     }
+}
+
+/// A readback in the read form of (`format`, `ty`) as glReadPixels and glGetTexImage give
+/// it (`pixel_types::from_model`): from 8-bit storage when `colour8` and the data is no
+/// depth, from floats otherwise.
+fn as_asked(r: &mut Readback, format: PixelFormat, ty: PixelType, colour8: bool) {
+    let from = if colour8 && format != PixelFormat::DepthComponent {
+        ReadFrom::Unorm8
+    } else {
+        ReadFrom::Float
+    };
+    r.bytes = pixel_types::from_model(&r.bytes, format, ty, from);
+    r.format = format;
+    r.ty = ty;
 }
 
 /// The bytes of one ReadPixels, packed with PACK_ALIGNMENT 1, bottom row first.

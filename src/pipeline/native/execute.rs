@@ -126,42 +126,11 @@ impl Native {
             }
             // The real calls: Mesa decodes the blocks itself (the oracle of `ff::compressed`).
             Command::CompressedTexImage2D(t) => {
-                let blocks = t.blocks();
-                let target = if t.proxy {
-                    gl::PROXY_TEXTURE_2D
-                } else {
-                    gl::TEXTURE_2D
-                };
-                unsafe {
-                    g.CompressedTexImage2D(
-                        target,
-                        t.level,
-                        conv::value(t.format),
-                        t.width,
-                        t.height,
-                        0,
-                        blocks.len() as i32,
-                        blocks.as_ptr().cast(),
-                    )
-                };
+                textures::compressed_tex_image(g, t);
                 core.counters.texture_uploads += 1;
             }
             Command::CompressedTexSubImage2D(t) => {
-                if let Some(blocks) = &t.data {
-                    unsafe {
-                        g.CompressedTexSubImage2D(
-                            gl::TEXTURE_2D,
-                            t.level,
-                            t.x,
-                            t.y,
-                            t.width,
-                            t.height,
-                            conv::value(t.format),
-                            blocks.len() as i32,
-                            blocks.as_ptr().cast(),
-                        )
-                    };
-                }
+                textures::compressed_tex_sub_image(g, t);
                 core.counters.texture_uploads += 1;
             }
             Command::CopyTexImage2D(c) => {

@@ -10,6 +10,7 @@
 use std::collections::HashMap;
 use std::ffi::c_void;
 
+use crate::ff::compressed::{CompressedTexImage, CompressedTexSubImage};
 use crate::ff::{CopyTexImage, TexImage, TexParam, TexSubImage, TextureTarget};
 
 use super::bindings as gl;
@@ -131,6 +132,51 @@ pub fn tex_sub_image(g: &gl::Gl, t: &TexSubImage) {
             t.data.as_ptr().cast::<c_void>(),
         );
     }
+}
+
+/// glCompressedTexImage2D of TEXTURE_2D (or its proxy): the blocks as given, NULL's as
+/// zeros.
+pub fn compressed_tex_image(g: &gl::Gl, t: &CompressedTexImage) {
+    let blocks = t.blocks();
+    let target = if t.proxy {
+        gl::PROXY_TEXTURE_2D
+    } else {
+        gl::TEXTURE_2D
+    };
+    // SAFETY: `blocks` holds the byte count passed.
+    unsafe {
+        g.CompressedTexImage2D(
+            target,
+            t.level,
+            conv::value(t.format),
+            t.width,
+            t.height,
+            0,
+            blocks.len() as i32,
+            blocks.as_ptr().cast::<c_void>(),
+        )
+    };
+}
+
+/// glCompressedTexSubImage2D into the bound 2D texture (NULL changes nothing).
+pub fn compressed_tex_sub_image(g: &gl::Gl, t: &CompressedTexSubImage) {
+    let Some(blocks) = &t.data else {
+        return;
+    };
+    // SAFETY: `blocks` holds the byte count passed.
+    unsafe {
+        g.CompressedTexSubImage2D(
+            gl::TEXTURE_2D,
+            t.level,
+            t.x,
+            t.y,
+            t.width,
+            t.height,
+            conv::value(t.format),
+            blocks.len() as i32,
+            blocks.as_ptr().cast::<c_void>(),
+        )
+    };
 }
 
 /// glCopyTexImage2D from the current read framebuffer into the bound 2D texture.
