@@ -291,7 +291,10 @@ impl FixedState {
             Command::Clear(_) => self.check_draw_framebuffer()?,
             // Clamped to [0, 1]: ±∞ → 1, 0; NaN → 0 (glam's clamp is max then min, and
             // Rust's max drops a NaN). Mesa measured alike (`tests/fidelity_nonfinite.rs`).
-            Command::ClearColor(c) => self.clear.color = c.clamp(Vec4::ZERO, Vec4::ONE),
+            // Kept as given, as Mesa keeps it: a fixed-point buffer clears to the colour
+            // clamped (the drivers clamp), a float one (an OSMesa GL_FLOAT buffer) to the
+            // colour itself; glGet answers it clamped (measured, tests/c/buffer_types.c).
+            Command::ClearColor(c) => self.clear.color = *c,
             Command::ClearDepth(d) => self.clear.depth = unit_clamp(*d),
             Command::ClearStencil(s) => self.clear.stencil = *s,
             // Clamped to [−1, 1] (§4.2.3); NaN → −1 as Mesa's CLAMP gives (measured: 2, −3

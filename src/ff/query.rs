@@ -43,7 +43,7 @@
 //! A capability goes in `glenum`'s `Capability` table instead: glGet and glIsEnabled answer
 //! every capability from [`FixedState::is_enabled`].
 
-use glam::Mat4;
+use glam::{Mat4, Vec4};
 
 use super::attrib::MAX_ATTRIB_STACK_DEPTH;
 use super::combiners::MAX_GENERAL_COMBINERS;
@@ -340,7 +340,7 @@ pnames! {
         let m = s.color_mask;
         [m.r, m.g, m.b, m.a].into_iter().map(QueryValue::Bool).collect()
     },
-    COLOR_CLEAR_VALUE => |s| normalized(&s.clear.color.to_array()),
+    COLOR_CLEAR_VALUE => |s| normalized(&s.clear.color.clamp(Vec4::ZERO, Vec4::ONE).to_array()),
     DEPTH_CLEAR_VALUE => |s| normalized(&[s.clear.depth]),
     STENCIL_CLEAR_VALUE => |s| int(s.clear.stencil),
 

@@ -3,8 +3,9 @@
  * components), in OSMESA_RGBA, OSMESA_BGRA and OSMESA_ARGB, each rendered at its own
  * precision: a clear, a flat triangle and a smooth one, one pixel of each region printed
  * with RED_BITS. Mesa orders only byte components by the format: a GL_UNSIGNED_SHORT or
- * GL_FLOAT buffer holds RGBA whatever the format. Run on Mesa's OSMesa and on fixedfunc's
- * library, the printed lines must be the same.
+ * GL_FLOAT buffer holds RGBA whatever the format. A clear colour outside [0, 1] clears a
+ * float buffer to itself. Run on Mesa's OSMesa and on fixedfunc's library, the printed
+ * lines must be the same.
  *
  * usage: buffer_types */
 #include <GL/osmesa.h>
@@ -75,6 +76,15 @@ int main(void) {
       show("flat", types[t].type, formats[f].components, 1, 1);
       show("clear", types[t].type, formats[f].components, W - 1, 3);
       show("smooth", types[t].type, formats[f].components, 3, 7);
+      /* A clear colour outside [0, 1]: kept as given, clamped by a fixed-point buffer
+       * only, answered clamped. */
+      glClearColor(2.0f, -1.0f, 0.5f, 1.5f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      glFinish();
+      show("clear outside [0, 1]", types[t].type, formats[f].components, 0, 0);
+      GLfloat v[4];
+      glGetFloatv(GL_COLOR_CLEAR_VALUE, v);
+      printf("%-24s %.4f %.4f %.4f %.4f\n", "clear value", v[0], v[1], v[2], v[3]);
       OSMesaDestroyContext(ctx);
     }
   return 0;
