@@ -57,6 +57,7 @@ fn texture(unit: u8, target: TextureTarget, format: TexFormat, texel: &[u8]) -> 
             name: 20 + u32::from(unit),
         },
         Command::TexImage(TexImage {
+            requested: None,
             target,
             level: 0,
             internal_format: format,

@@ -53,6 +53,7 @@ fn texture(unit: u8, texel: [u8; 4]) -> Vec<Command> {
             name: 10 + u32::from(unit),
         },
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture2D,
             level: 0,
             internal_format: TexFormat::Rgba8,

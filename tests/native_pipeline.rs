@@ -80,6 +80,7 @@ fn rgba_texture(name: u32, w: i32, h: i32, texels: Vec<u8>) -> Vec<Command> {
             name,
         },
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture2D,
             level: 0,
             internal_format: TexFormat::Rgba8,

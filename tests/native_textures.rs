@@ -72,6 +72,7 @@ fn texture(
             name,
         },
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture2D,
             level: 0,
             internal_format: internal,

@@ -701,6 +701,7 @@ fn image(target: TextureTarget, level: i32, format: TexFormat, w: i32, h: i32) -
     };
     let bytes = (w * h) as usize * pf.components() * ty.size();
     Command::TexImage(TexImage {
+        requested: None,
         target,
         level,
         internal_format: format,

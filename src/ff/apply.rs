@@ -511,6 +511,7 @@ impl FixedState {
                 bytes: bytes.clone(),
             }),
             compressed: None,
+            requested: t.requested,
         };
         let tex = self.bound_mut(t.target)?;
         tex.set_level(t.level, level);
@@ -586,6 +587,7 @@ impl FixedState {
             depth: 1,
             data: None,
             compressed: None,
+            requested: c.requested,
         };
         let tex = self.bound_mut(TextureTarget::Texture2D)?;
         tex.set_level(c.level, level);

@@ -43,6 +43,7 @@ impl FixedState {
                 format: t.format,
                 bytes: blocks,
             }),
+            requested: None,
         };
         let tex = self.bound_mut(TextureTarget::Texture2D)?;
         tex.set_level(t.level, level);

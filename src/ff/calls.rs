@@ -405,6 +405,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             }
             let (format, ty, data) = pixel_types::model_tex_data(c, 7, shape)?;
             Command::TexImage(TexImage {
+                requested: requested_format(c, 2),
                 target: TextureTarget::Texture1D,
                 level: c.i32(1)?,
                 internal_format: internal_format(c, 2)?,
@@ -426,6 +427,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             }
             let (format, ty, data) = pixel_types::model_tex_data(c, 8, shape)?;
             Command::TexImage(TexImage {
+                requested: requested_format(c, 2),
                 target: TextureTarget::Texture2D,
                 level: c.i32(1)?,
                 internal_format: internal_format(c, 2)?,
@@ -463,6 +465,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(8)?;
             target_is(c, TextureTarget::Texture2D)?;
             Command::CopyTexImage2D(CopyTexImage {
+                requested: requested_format(c, 2),
                 level: c.i32(1)?,
                 // A component count is INVALID_ENUM here on Mesa 22.3 (tests/c/formats.c).
                 internal_format: c.enm(2)?,
@@ -545,6 +548,18 @@ pub(super) fn internal_format<A: Args>(c: &A, i: usize) -> Result<TexFormat, A::
 
 /// GL 1.0's internal formats by component count: 1 LUMINANCE, 2 LUMINANCE_ALPHA, 3 RGB,
 /// 4 RGBA.
+/// The internal format as the program named it (TEXTURE_INTERNAL_FORMAT answers it, as
+/// Mesa does): a component count 1–4, or the token; `None` when it is the sized format's
+/// own name (GL_RGBA8), which the level answers anyway.
+pub(super) fn requested_format<A: Args>(c: &A, i: usize) -> Option<u32> {
+    let named = match c.int(i) {
+        Ok(v @ 1..=4) => Some(v as u32),
+        _ => c.token(i).ok(),
+    };
+    let sized = internal_format(c, i).ok().and_then(|f| f.gl_value());
+    named.filter(|v| Some(*v) != sized)
+}
+
 fn component_count<A: Args>(c: &A, i: usize) -> Option<TexFormat> {
     match c.int(i) {
         Ok(1) => Some(TexFormat::Luminance8),

@@ -108,6 +108,9 @@ pub struct TexImage {
     pub target: TextureTarget,
     pub level: i32,
     pub internal_format: TexFormat,
+    /// The internal format as the program named it (GL_RGBA, 3, GL_RGB5), which
+    /// TEXTURE_INTERNAL_FORMAT answers as Mesa does; `None`: the sized format's name.
+    pub requested: Option<u32>,
     pub width: i32,
     /// 1 for TEXTURE_1D (glTexImage1D has no height).
     pub height: i32,
@@ -184,6 +187,9 @@ pub struct TexSubImage {
 pub struct CopyTexImage {
     pub level: i32,
     pub internal_format: TexFormat,
+    /// The internal format as the program named it (GL_RGB, 3, GL_RGB5), which
+    /// TEXTURE_INTERNAL_FORMAT answers as Mesa does; `None`: the sized format's name.
+    pub requested: Option<u32>,
     pub x: i32,
     pub y: i32,
     pub width: i32,

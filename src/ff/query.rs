@@ -726,10 +726,11 @@ impl FixedState {
     /// on the active unit, or of PROXY_TEXTURE_3D's levels (`texture_volume`). A level
     /// outside [0, log2 MAX_TEXTURE_SIZE] (3D: MAX_3D_TEXTURE_SIZE) is INVALID_VALUE; an
     /// unspecified level answers 0 for everything but the internal format, which is RGBA
-    /// (Mesa, after GL 4.0; GL 1.5 says 1). The internal format is the sized one the model
-    /// holds: an unsized name given to glTexImage (GL_RGBA) reads back sized (GL_RGBA8),
-    /// where Mesa returns the name as given. Component sizes are those of Mesa's llvmpipe
-    /// formats, 0 for components the base format lacks.
+    /// (Mesa, after GL 4.0; GL 1.5 says 1). The internal format is the one the program named,
+    /// as Mesa answers it (3, GL_RGBA, GL_RGB5: `TexLevel::requested`), a compressed
+    /// level's format, or the sized name of a level the layer made (mipmaps take their
+    /// base's). Component sizes are those of Mesa's llvmpipe formats, 0 for components the
+    /// base format lacks.
     pub fn get_tex_level_parameter(
         &self,
         target: u32,
@@ -766,7 +767,9 @@ impl FixedState {
             r::TEXTURE_BORDER => int(0),
             r::TEXTURE_INTERNAL_FORMAT => vec![QueryValue::Enum(match compressed {
                 Some(c) => gl(c.format),
-                None => format.map_or(r::RGBA, gl),
+                None => l
+                    .and_then(|l| l.requested)
+                    .unwrap_or_else(|| format.map_or(r::RGBA, gl)),
             })],
             r::TEXTURE_RED_SIZE => size(Component::Red),
             r::TEXTURE_GREEN_SIZE => size(Component::Green),

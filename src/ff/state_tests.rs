@@ -300,6 +300,7 @@ fn color_material_tracks_the_current_colour() {
 #[test]
 fn texture_table() {
     let img = TexImage {
+        requested: None,
         target: TextureTarget::Texture2D,
         level: 0,
         internal_format: TexFormat::Rgba8,

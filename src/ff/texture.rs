@@ -359,6 +359,8 @@ pub struct TexLevel {
     pub data: Option<PixelData>,
     /// A compressed level's blocks as given (`compressed`); `data` holds them decoded.
     pub compressed: Option<super::compressed::CompressedImage>,
+    /// The internal format as the program named it, when it did (`TexImage::requested`).
+    pub requested: Option<u32>,
 }
 
 /// Why a texture is incomplete (GL 1.5 §3.8.10): the first rule it breaks.
@@ -480,6 +482,7 @@ impl TextureObject {
             return;
         };
         let format = base.internal_format;
+        let requested = base.requested;
         let mut size = (base.width, base.height, base.depth);
         if size.0 <= 0 || size.1 <= 0 || size.2 <= 0 {
             return;
@@ -497,6 +500,7 @@ impl TextureObject {
                     depth: size.2,
                     data: None,
                     compressed: None,
+                    requested,
                 },
             );
         }
@@ -684,6 +688,7 @@ mod tests {
             depth: 1,
             data: None,
             compressed: None,
+            requested: None,
         })
     }
 

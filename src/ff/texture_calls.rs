@@ -86,6 +86,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(7)?;
             target(c, TextureTarget::Texture1D)?;
             Command::CopyTexImage1D(CopyTexImage {
+                requested: super::calls::requested_format(c, 2),
                 level: c.i32(1)?,
                 internal_format: c.enm(2)?,
                 x: c.i32(3)?,
@@ -181,6 +182,7 @@ impl FixedState {
                 depth: 1,
                 data: None,
                 compressed: None,
+                requested: c.requested,
             },
         );
         if c.level == 0 {
@@ -251,6 +253,7 @@ mod tests {
     fn with_2d(w: i32, h: i32) -> FixedState {
         let mut s = FixedState::default();
         s.apply(&Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture2D,
             level: 0,
             internal_format: TexFormat::Rgba8,

@@ -47,6 +47,7 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             }
             let (format, ty, data) = pixel_types::model_tex_data(c, 9, shape)?;
             let image = TexImage {
+                requested: super::calls::requested_format(c, 2),
                 target: TextureTarget::Texture3D,
                 level: c.i32(1)?,
                 internal_format: super::calls::internal_format(c, 2)?,
@@ -187,6 +188,7 @@ impl FixedState {
                     depth: t.depth,
                     data: None,
                     compressed: None,
+                    requested: t.requested,
                 },
             );
         } else if let Some(l) = usize::try_from(t.level)

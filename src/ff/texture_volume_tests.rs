@@ -14,6 +14,7 @@ fn volume(format: TexFormat, (width, height, depth): (i32, i32, i32)) -> Option<
         depth,
         data: None,
         compressed: None,
+        requested: None,
     })
 }
 
@@ -96,6 +97,7 @@ mod calls {
 
     fn image(level: i32, size: (i32, i32, i32), format: TexFormat, data: TexData) -> TexImage {
         TexImage {
+            requested: None,
             target: TextureTarget::Texture3D,
             level,
             internal_format: format,

@@ -62,6 +62,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
             Command::ActiveTexture(0),
             bind_map(),
             Command::CopyTexImage2D(CopyTexImage {
+                requested: None,
                 level: 0,
                 internal_format: map.depth_format(),
                 x: 0,

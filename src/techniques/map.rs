@@ -126,6 +126,7 @@ pub fn ramp(name: u32, wrap: Wrap) -> Vec<Command> {
             name,
         },
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture1D,
             level: 0,
             internal_format: TexFormat::Intensity8,
@@ -212,6 +213,7 @@ pub fn upload_map(
     data: TexData,
 ) -> Command {
     Command::TexImage(TexImage {
+        requested: None,
         target: TextureTarget::Texture2D,
         level: 0,
         internal_format,

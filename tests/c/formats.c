@@ -1,7 +1,8 @@
 /* Texture internal formats as programs of the era name them: GL 1.0's component counts
  * (glTexImage2D(…, 3, …), the Red Book's habit), GL 1.1's sized formats (RGB5, RGBA4,
  * LUMINANCE4, ALPHA12, INTENSITY16…) and GL 1.4's MIRRORED_REPEAT wrap, each drawn into a
- * panel and its texel printed. Run on Mesa's OSMesa and on fixedfunc's library, the
+ * panel and its texel printed, with the internal format the level answers (the name as
+ * the program gave it). Run on Mesa's OSMesa and on fixedfunc's library, the
  * printed lines must be the same and the images match.
  *
  * The texels are multiples of 17 (exact in 4 bits), so a format Mesa keeps in 4 bits gives
@@ -57,6 +58,9 @@ int main(int argc, char **argv) {
   for (unsigned i = 0; i < sizeof formats / sizeof formats[0]; i++) {
     glTexImage2D(GL_TEXTURE_2D, 0, formats[i].format, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, t);
     draw(formats[i].name);
+    GLint named = -1;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &named);
+    printf("%-28s internal format 0x%x err %x\n", formats[i].name, named, glGetError());
   }
   glTexImage2D(GL_TEXTURE_2D, 0, 5, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, t);
   err("component count 5");
@@ -76,6 +80,12 @@ int main(int argc, char **argv) {
   draw("mirrored repeat linear");
   glCopyTexImage2D(GL_TEXTURE_2D, 0, 4, 0, 0, 2, 2, 0);
   err("copy with component count 4");
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, 2, 2, 0);
+  {
+    GLint named = -1;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPONENTS, &named);
+    printf("copy as GL_RGB internal format 0x%x err %x\n", named, glGetError());
+  }
   glViewport(0, 0, W, H);
   glFinish();
   if (!write_ppm(out, buf, W, H)) return 1;

@@ -337,6 +337,7 @@ pub fn checker() -> Vec<Command> {
             name: 1,
         },
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture2D,
             level: 0,
             internal_format: TexFormat::Rgba8,

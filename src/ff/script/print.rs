@@ -314,7 +314,7 @@ fn call(c: &Command) -> String {
             "{}(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {})",
             Entry::CopyTexImage2D,
             t.level,
-            n(t.internal_format),
+            internal_format(t.internal_format, t.requested),
             t.x,
             t.y,
             t.width,
@@ -579,7 +579,7 @@ fn call(c: &Command) -> String {
             "{}(GL_TEXTURE_1D, {}, {}, {}, {}, {}, {})",
             Entry::CopyTexImage1D,
             c.level,
-            n(c.internal_format),
+            internal_format(c.internal_format, c.requested),
             c.x,
             c.y,
             c.width,
@@ -975,6 +975,20 @@ pub(super) fn pixels(ty: PixelType, data: &[u8]) -> String {
     format!("({name}[]){{{}}}", v.join(", "))
 }
 
+/// A texture's internal format as the program named it: a component count, the name it
+/// gave, or the sized format's name.
+fn internal_format(f: TexFormat, requested: Option<u32>) -> String {
+    match requested {
+        Some(v @ 1..=4) => v.to_string(),
+        Some(v) => TexFormat::TABLE
+            .iter()
+            .find(|(_, value, _)| *value == v)
+            .map_or(n(f), |(name, _, _)| name)
+            .to_string(),
+        None => n(f).to_string(),
+    }
+}
+
 /// Compressed blocks as a GLubyte literal, or NULL.
 fn blocks(data: &Option<std::sync::Arc<[u8]>>) -> String {
     data.as_ref().map_or_else(
@@ -1014,7 +1028,7 @@ fn tex_image(out: &mut String, t: &TexImage, target: &str, unpack_alignment: usi
         format_args!(
             "{name}({target}, {}, {}, {size}, {}, {}, {}, {data})",
             t.level,
-            n(t.internal_format),
+            internal_format(t.internal_format, t.requested),
             t.border,
             n(t.format),
             n(t.ty)

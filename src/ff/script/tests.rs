@@ -347,6 +347,7 @@ fn sample_commands() -> Vec<Command> {
             name: 42,
         },
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture1D,
             level: 0,
             internal_format: TexFormat::Intensity8,
@@ -359,6 +360,7 @@ fn sample_commands() -> Vec<Command> {
             data: TexData::Bytes(Arc::from(vec![0u8, 85, 170, 255])),
         }),
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture2D,
             level: 0,
             internal_format: TexFormat::DepthComponent24,
@@ -373,6 +375,7 @@ fn sample_commands() -> Vec<Command> {
             )),
         }),
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture2D,
             level: 1,
             internal_format: TexFormat::Luminance8Alpha8,
@@ -402,6 +405,7 @@ fn sample_commands() -> Vec<Command> {
             name: 9,
         },
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture3D,
             level: 0,
             internal_format: TexFormat::Rgb8,
@@ -414,6 +418,7 @@ fn sample_commands() -> Vec<Command> {
             data: TexData::Bytes((0u8..36).collect::<Vec<_>>().into()),
         }),
         Command::ProxyTexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture3D,
             level: 2,
             internal_format: TexFormat::Alpha8,
@@ -468,6 +473,7 @@ fn sample_commands() -> Vec<Command> {
             slot: 3,
         }),
         Command::CopyTexImage2D(CopyTexImage {
+            requested: None,
             level: 0,
             internal_format: TexFormat::DepthComponent16,
             x: 0,
@@ -694,6 +700,7 @@ fn sample_commands() -> Vec<Command> {
         // The bytes glReadPixels left in readback_3 become a texture (the two-phase idiom
         // of the 8- and 16-bit shadow maps).
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture2D,
             level: 0,
             internal_format: TexFormat::Luminance8Alpha8,
@@ -707,6 +714,7 @@ fn sample_commands() -> Vec<Command> {
         }),
         // The program's own conversion of FLOAT depth in readback_3 (see TexData).
         Command::TexImage(TexImage {
+            requested: None,
             target: TextureTarget::Texture2D,
             level: 0,
             internal_format: TexFormat::Luminance8Alpha8,
@@ -918,6 +926,7 @@ fn command() -> impl Strategy<Value = Command> {
         )
             .prop_map(|(w, bytes, ty)| {
                 Command::TexImage(TexImage {
+                    requested: None,
                     target: TextureTarget::Texture2D,
                     level: 0,
                     internal_format: TexFormat::Rgba8,
@@ -941,6 +950,7 @@ fn command() -> impl Strategy<Value = Command> {
                 let n = (width * height * depth) as usize * format.components();
                 let bytes: Vec<u8> = (0..n).map(|i| seed.wrapping_add(i as u8)).collect();
                 Command::TexImage(TexImage {
+                    requested: None,
                     target: TextureTarget::Texture3D,
                     level: 0,
                     internal_format: TexFormat::Rgb8,

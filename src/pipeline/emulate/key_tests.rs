@@ -93,6 +93,7 @@ fn image(target: TextureTarget, format: TexFormat, pixels: PixelFormat, size: i3
         PixelType::UnsignedByte
     };
     Command::TexImage(TexImage {
+        requested: None,
         target,
         level: 0,
         internal_format: format,
