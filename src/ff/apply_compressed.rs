@@ -15,7 +15,7 @@ use super::compressed::{
 };
 use super::error::{GlError, GlResult};
 use super::state::FixedState;
-use super::texture::{PixelData, PixelFormat, PixelType, TexFormat, TexLevel, TextureTarget};
+use super::texture::{blit, PixelData, PixelFormat, PixelType, TexFormat, TexLevel, TextureTarget};
 
 impl FixedState {
     /// glCompressedTexImage2D (its argument checks made by the converter).
@@ -53,7 +53,8 @@ impl FixedState {
         Ok(())
     }
 
-    /// glCompressedTexSubImage2D: the level's blocks spliced, its texels decoded again.
+    /// glCompressedTexSubImage2D: the level's blocks spliced, the region's texels decoded
+    /// into its copy.
     pub(super) fn compressed_tex_sub_image(&mut self, t: &CompressedTexSubImage) -> GlResult {
         let tex = self.bound_mut(TextureTarget::Texture2D)?;
         let level = tex.level_mut(t.level).ok_or(GlError::invalid_operation(
@@ -84,7 +85,7 @@ impl FixedState {
                 "glCompressedTexSubImage2D of part of a block",
             ));
         }
-        let Some(data) = &t.data else {
+        let (Some(data), Some(region)) = (&t.data, t.texels()) else {
             return Ok(());
         };
         let mut blocks = image.bytes.to_vec();
@@ -96,12 +97,19 @@ impl FixedState {
             (t.width, t.height),
             data,
         );
-        let texels = decode(t.format, level.width, level.height, &blocks);
-        level.data = Some(PixelData {
-            format: PixelFormat::Rgba,
-            ty: PixelType::UnsignedByte,
-            bytes: texels.into(),
-        });
+        // Only the region's texels change: decoded once, written into the level's copy.
+        if let Some(texels) = level.data.as_mut() {
+            let mut bytes = texels.bytes.to_vec();
+            let rect = [t.x, t.y, t.width, t.height].map(|v| v.max(0) as usize);
+            blit(
+                &mut bytes,
+                level.width.max(0) as usize,
+                &region.data,
+                rect,
+                4,
+            );
+            texels.bytes = bytes.into();
+        }
         level.compressed = Some(CompressedImage {
             format: t.format,
             bytes: Arc::from(blocks),

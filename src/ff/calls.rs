@@ -198,11 +198,8 @@ pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Erro
         Entry::ReadPixels => {
             n(7)?;
             let (format, ty) = (c.enm(4)?, c.enm(5)?);
-            if let Some(error) = pixel_types::refused(format, ty) {
-                return Ok(Some(Command::Raise {
-                    error,
-                    call: c.entry(),
-                }));
+            if let Some(refused) = pixel_types::refusal(c, format, ty) {
+                return Ok(Some(refused));
             }
             Command::ReadPixels(ReadPixels {
                 x: c.i32(0)?,
@@ -400,7 +397,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(8)?;
             target_is(c, TextureTarget::Texture1D)?;
             let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(5)?, c.enm(6)?);
-            if let Some(refused) = pixel_types::refusal(c, shape) {
+            if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_tex_data(c, 7, shape)?;
@@ -422,7 +419,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
             let shape = PixelShape::groups(c.i32(3)?, c.i32(4)?, c.enm(6)?, c.enm(7)?);
-            if let Some(refused) = pixel_types::refusal(c, shape) {
+            if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_tex_data(c, 8, shape)?;
@@ -444,7 +441,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(9)?;
             target_is(c, TextureTarget::Texture2D)?;
             let shape = PixelShape::groups(c.i32(4)?, c.i32(5)?, c.enm(6)?, c.enm(7)?);
-            if let Some(refused) = pixel_types::refusal(c, shape) {
+            if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_pixels(c, 8, shape)?;

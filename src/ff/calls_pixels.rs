@@ -172,7 +172,7 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let ty = c.enm(3)?;
             budget(c, 0, width, height)?;
             let shape = PixelShape::groups(width.max(0), height.max(0), format, ty);
-            if let Some(refused) = pixel_types::refusal(c, shape) {
+            if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_pixels(c, 4, shape)?;

@@ -101,6 +101,26 @@ pub struct CompressedTexSubImage {
     pub data: Option<Arc<[u8]>>,
 }
 
+impl CompressedTexSubImage {
+    /// The region's texels decoded, as the glTexSubImage2D of RGBA bytes that writes them
+    /// into the level's storage (`None` for NULL blocks, which change nothing).
+    pub fn texels(&self) -> Option<super::command::TexSubImage> {
+        let blocks = self.data.as_ref()?;
+        Some(super::command::TexSubImage {
+            level: self.level,
+            x: self.x,
+            y: self.y,
+            z: 0,
+            width: self.width,
+            height: self.height,
+            depth: 1,
+            format: super::texture::PixelFormat::Rgba,
+            ty: super::texture::PixelType::UnsignedByte,
+            data: decode(self.format, self.width, self.height, blocks).into(),
+        })
+    }
+}
+
 /// 5:6:5 as 8-bit RGB, the bits repeated.
 fn rgb565(c: u16) -> [i32; 3] {
     let r = i32::from(c >> 11);

@@ -33,11 +33,10 @@ use super::command::{Command, TexData};
 use super::error::GlErrorKind;
 use super::texture::{PixelFormat, PixelType};
 
-/// The call's Command when the format and type of `shape` do not go together: the GL
-/// error it raises ([`refused`]), which a display list keeps for its execution as Mesa
-/// does.
-pub fn refusal<A: Args>(c: &A, shape: PixelShape) -> Option<Command> {
-    refused(shape.format, shape.ty).map(|error| Command::Raise {
+/// The call's Command when `format` and `ty` do not go together: the GL error it raises
+/// ([`refused`]), which a display list keeps for its execution as Mesa does.
+pub fn refusal<A: Args>(c: &A, format: PixelFormat, ty: PixelType) -> Option<Command> {
+    refused(format, ty).map(|error| Command::Raise {
         error,
         call: c.entry(),
     })
@@ -230,12 +229,37 @@ pub fn to_model(format: PixelFormat, ty: PixelType, data: Arc<[u8]>) -> Arc<[u8]
     }
     let (_, model_ty) = model_form(format, ty);
     let group = ty.group_bytes(format);
+    let order = client_order(format);
     let mut out = Vec::with_capacity(data.len() / group.max(1) * 16);
+    if model_ty == ty {
+        // BGR(A) in a component type: the elements move, their bytes unchanged.
+        let size = ty.size();
+        for g in data.chunks_exact(group) {
+            for &i in &order {
+                out.extend_from_slice(&g[i * size..(i + 1) * size]);
+            }
+        }
+        return out.into();
+    }
+    let fields = match ty {
+        PixelType::Packed(p) => p.fields(),
+        _ => Vec::new(),
+    };
+    let mut values = Vec::with_capacity(4);
     for g in data.chunks_exact(group) {
-        let values = group_values(g, format, ty);
-        put_group(&mut out, &values, format, model_ty);
+        group_values(&mut values, g, format, ty, &fields);
+        put_group(&mut out, &values, &order, model_ty);
     }
     out.into()
+}
+
+/// The order in which the model's group takes the client's elements: BGR(A)'s swizzle,
+/// or the elements as they come.
+fn client_order(format: PixelFormat) -> Vec<usize> {
+    match swizzle(format) {
+        Some(s) => s.to_vec(),
+        None => (0..format.components()).collect(),
+    }
 }
 
 /// A packed field `v` of `bits` bits as 8 bits, as Mesa unpacks it: up to 8 bits by
@@ -257,9 +281,17 @@ pub fn field_to_unorm8(v: u32, bits: u32) -> u8 {
 /// One client group as numbers in the client's component order: signed types as
 /// normalised floats (a stencil index as the integer), packed fields as 8-bit integers
 /// ([`field_to_unorm8`]), unsigned and FLOAT elements as the bytes hold them.
-fn group_values(g: &[u8], format: PixelFormat, ty: PixelType) -> Vec<f64> {
+/// `fields` are the packed type's ([`PackedType::fields`], taken once by the caller).
+fn group_values(
+    out: &mut Vec<f64>,
+    g: &[u8],
+    format: PixelFormat,
+    ty: PixelType,
+    fields: &[(u32, u32)],
+) {
     let stencil = format == PixelFormat::StencilIndex;
     let n = format.components();
+    out.clear();
     match ty {
         PixelType::Packed(p) => {
             // One element in the machine's byte order, as GL reads it.
@@ -268,28 +300,22 @@ fn group_values(g: &[u8], format: PixelFormat, ty: PixelType) -> Vec<f64> {
                 2 => u32::from(u16::from_ne_bytes([g[0], g[1]])),
                 _ => u32::from_ne_bytes([g[0], g[1], g[2], g[3]]),
             };
-            p.fields()
-                .into_iter()
-                .map(|(shift, bits)| {
-                    let max = (1u32 << bits) - 1;
-                    f64::from(field_to_unorm8((word >> shift) & max, bits))
-                })
-                .collect()
+            out.extend(fields.iter().map(|&(shift, bits)| {
+                let max = (1u32 << bits) - 1;
+                f64::from(field_to_unorm8((word >> shift) & max, bits))
+            }));
         }
-        _ => (0..n)
-            .map(|i| {
-                let s = ty.size();
-                let e = &g[i * s..(i + 1) * s];
-                element(e, ty, stencil)
-            })
-            .collect(),
+        _ => {
+            let s = ty.size();
+            out.extend((0..n).map(|i| element(&g[i * s..(i + 1) * s], ty, stencil)));
+        }
     }
 }
 
 /// One element: a signed type normalised (or, for a stencil index, as the integer), an
 /// unsigned type and FLOAT as the bytes hold them (unnormalised: they are copied, not
 /// converted).
-fn element(e: &[u8], ty: PixelType, stencil: bool) -> f64 {
+pub fn element(e: &[u8], ty: PixelType, stencil: bool) -> f64 {
     let signed = |v: i64, bits: u32| -> f64 {
         if stencil {
             v as f64
@@ -309,14 +335,10 @@ fn element(e: &[u8], ty: PixelType, stencil: bool) -> f64 {
     }
 }
 
-/// A group of `values` (client order, of client `format`) appended in the model's order and
-/// type `model_ty`.
-fn put_group(out: &mut Vec<u8>, values: &[f64], format: PixelFormat, model_ty: PixelType) {
-    let order: Vec<usize> = match swizzle(format) {
-        Some(s) => s.to_vec(),
-        None => (0..values.len()).collect(),
-    };
-    for &i in &order {
+/// A group of `values` (client order) appended in the model's order (`order`,
+/// [`client_order`]) and type `model_ty`.
+fn put_group(out: &mut Vec<u8>, values: &[f64], order: &[usize], model_ty: PixelType) {
+    for &i in order {
         let v = values.get(i).copied().unwrap_or(0.0);
         match model_ty {
             PixelType::UnsignedByte => out.push(v as u8),
@@ -349,9 +371,10 @@ pub fn from_model(read: &[u8], format: PixelFormat, ty: PixelType, from: ReadFro
     let n = model_format.components();
     let elem = model_ty.size();
     // The model's group in the client's order.
-    let order: Vec<usize> = match swizzle(format) {
-        Some(s) => s.to_vec(),
-        None => (0..n).collect(),
+    let order = client_order(format);
+    let fields = match ty {
+        PixelType::Packed(p) => p.fields(),
+        _ => Vec::new(),
     };
     let mut out = Vec::with_capacity(read.len());
     for g in read.chunks_exact(n * elem) {
@@ -360,7 +383,7 @@ pub fn from_model(read: &[u8], format: PixelFormat, ty: PixelType, from: ReadFro
         match ty {
             PixelType::Packed(p) => {
                 let mut word = 0u32;
-                for (&(shift, bits), &i) in p.fields().iter().zip(&order) {
+                for (&(shift, bits), &i) in fields.iter().zip(&order) {
                     word |= value(i).unorm(bits) << shift;
                 }
                 match p.bytes() {
@@ -484,10 +507,20 @@ pub fn snorm_to_float(v: i64, bits: u32) -> f64 {
 /// The components of packed groups `data` of `p`, each field normalised through its
 /// 8-bit value ([`field_to_unorm8`]), in the format's order.
 pub fn packed_components(data: &[u8], p: PackedType) -> Vec<f64> {
-    data.chunks_exact(p.bytes())
-        .flat_map(|g| group_values(g, PixelFormat::Rgba, PixelType::Packed(p)))
-        .map(|u| u / 255.0)
-        .collect()
+    let fields = p.fields();
+    let mut values = Vec::with_capacity(4);
+    let mut out = Vec::with_capacity(data.len() / p.bytes() * fields.len());
+    for g in data.chunks_exact(p.bytes()) {
+        group_values(
+            &mut values,
+            g,
+            PixelFormat::Rgba,
+            PixelType::Packed(p),
+            &fields,
+        );
+        out.extend(values.iter().map(|u| u / 255.0));
+    }
+    out
 }
 
 fn read_f32(b: &[u8]) -> f32 {

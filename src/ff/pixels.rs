@@ -300,16 +300,7 @@ fn components(data: &[u8], ty: PixelType, normalize: bool) -> Vec<f64> {
                 }
                 // Signed types: c / (2ⁿ⁻¹ − 1) (`pixel_types`' rule), a stencil index as it is.
                 PixelType::Byte | PixelType::Short | PixelType::Int => {
-                    let (v, bits) = match ty {
-                        PixelType::Byte => (i64::from(b[0] as i8), 8),
-                        PixelType::Short => (i64::from(i16::from_ne_bytes([b[0], b[1]])), 16),
-                        _ => (i64::from(i32::from_ne_bytes([b[0], b[1], b[2], b[3]])), 32),
-                    };
-                    return if normalize {
-                        pixel_types::snorm_to_float(v, bits)
-                    } else {
-                        v as f64
-                    };
+                    return pixel_types::element(b, ty, !normalize);
                 }
                 PixelType::Packed(_) => (0.0, 1.0),
             };

@@ -65,7 +65,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(7)?;
             target(c, TextureTarget::Texture1D)?;
             let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(4)?, c.enm(5)?);
-            if let Some(refused) = pixel_types::refusal(c, shape) {
+            if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_pixels(c, 6, shape)?;
@@ -127,11 +127,8 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::GetTexImage => {
             c.count(5)?;
             let (format, ty) = (c.enm(2)?, c.enm(3)?);
-            if let Some(error) = pixel_types::refused(format, ty) {
-                return Ok(Some(Command::Raise {
-                    error,
-                    call: c.entry(),
-                }));
+            if let Some(refused) = pixel_types::refusal(c, format, ty) {
+                return Ok(Some(refused));
             }
             Command::GetTexImage(GetTexImage {
                 target: c.enm(0)?,

@@ -42,7 +42,7 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(10)?;
             let proxy = c.pname(0, &["GL_TEXTURE_3D", "GL_PROXY_TEXTURE_3D"])? != "GL_TEXTURE_3D";
             let shape = PixelShape::volume(c.i32(3)?, c.i32(4)?, c.i32(5)?, c.enm(7)?, c.enm(8)?);
-            if let Some(refused) = pixel_types::refusal(c, shape) {
+            if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_tex_data(c, 9, shape)?;
@@ -69,7 +69,7 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(11)?;
             texture_3d(c)?;
             let shape = PixelShape::volume(c.i32(5)?, c.i32(6)?, c.i32(7)?, c.enm(8)?, c.enm(9)?);
-            if let Some(refused) = pixel_types::refusal(c, shape) {
+            if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_pixels(c, 10, shape)?;

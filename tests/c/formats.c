@@ -87,9 +87,5 @@ int main(int argc, char **argv) {
     printf("copy as GL_RGB internal format 0x%x err %x\n", named, glGetError());
   }
   glViewport(0, 0, W, H);
-  glFinish();
-  if (!write_ppm(out, buf, W, H)) return 1;
-  OSMesaDestroyContext(ctx);
-  free(buf);
-  return 0;
+  return finish(out, ctx, buf, W, H);
 }

@@ -70,14 +70,7 @@ int main(int argc, char **argv) {
   if (!ctx || !buf || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) return 1;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  GLuint tex;
-  glGenTextures(1, &tex);
-  glBindTexture(GL_TEXTURE_2D, tex);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-  glClearColor(0.1f, 0.1f, 0.1f, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
+  replace_texture_panels();
 
   /* Which packed types go with which formats: the error of each glTexImage2D, glDrawPixels
    * and glReadPixels, one letter each (0 none, E enum, V value, O operation). */
@@ -230,9 +223,5 @@ int main(int argc, char **argv) {
   err("texture LUMINANCE 5_6_5");
 
   glViewport(0, 0, W, H);
-  glFinish();
-  if (!write_ppm(out, buf, W, H)) return 1;
-  OSMesaDestroyContext(ctx);
-  free(buf);
-  return 0;
+  return finish(out, ctx, buf, W, H);
 }

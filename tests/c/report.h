@@ -6,6 +6,7 @@
 #define REPORT_H
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <GL/osmesa.h>
 
 static inline int write_ppm(const char *path, const GLubyte *rgba, int w, int h) {
@@ -23,6 +24,30 @@ static inline void ints(const char *what, GLenum pname) {
   GLint v = -7;
   glGetIntegerv(pname, &v);
   printf("%-40s %d  err 0x%x\n", what, v, glGetError());
+}
+
+/* A new texture object bound to TEXTURE_2D, sampled NEAREST and applied with REPLACE, over
+ * a window cleared to dark grey: the start of the programs that draw a texture a panel. */
+static inline GLuint replace_texture_panels(void) {
+  GLuint tex;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glClearColor(0.1f, 0.1f, 0.1f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  return tex;
+}
+
+/* The end of a program: the image finished and written to `out`, the context and its
+ * buffer freed. The exit status: 0, or 1 when the image could not be written. */
+static inline int finish(const char *out, OSMesaContext ctx, GLubyte *buf, int w, int h) {
+  glFinish();
+  int written = write_ppm(out, buf, w, h);
+  OSMesaDestroyContext(ctx);
+  free(buf);
+  return written ? 0 : 1;
 }
 
 #endif

@@ -47,14 +47,7 @@ int main(int argc, char **argv) {
   if (!ctx || !buf || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) return 1;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  GLuint tex;
-  glGenTextures(1, &tex);
-  glBindTexture(GL_TEXTURE_2D, tex);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-  glClearColor(0.1f, 0.1f, 0.1f, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
+  GLuint tex = replace_texture_panels();
 
   /* Scale and bias on glTexImage2D, then on glReadPixels of the texture drawn. */
   GLubyte grey[4] = {200, 200, 200, 255};
@@ -164,9 +157,5 @@ int main(int argc, char **argv) {
   glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 1, 1, 1, 1, 0);
   show("copy into luminance");
 
-  glFinish();
-  if (!write_ppm(out, buf, W, H)) return 1;
-  OSMesaDestroyContext(ctx);
-  free(buf);
-  return 0;
+  return finish(out, ctx, buf, W, H);
 }

@@ -349,9 +349,12 @@ impl Issue for Emulate {
                 self.textures
                     .upload_level(gl, state, TextureTarget::Texture2D, t.level)?
             }
+            // Only the region's texels, decoded, as a glTexSubImage2D.
             Command::CompressedTexSubImage2D(t) => {
-                self.textures
-                    .upload_level(gl, state, TextureTarget::Texture2D, t.level)?
+                if let Some(region) = t.texels() {
+                    self.textures
+                        .sub_image(gl, state, TextureTarget::Texture2D, &region)?
+                }
             }
             Command::DeleteTextures(names) => self.textures.delete(gl, names),
             Command::TexSubImage2D(t) => {
