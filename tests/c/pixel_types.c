@@ -11,6 +11,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -221,6 +222,18 @@ int main(int argc, char **argv) {
   hex("texture 2_10_10_10_REV", r, 16);
   glGetTexImage(GL_TEXTURE_2D, 0, GL_LUMINANCE, GL_UNSIGNED_SHORT_5_6_5, r);
   err("texture LUMINANCE 5_6_5");
+
+  /* Non-finite floats in BGRA: into a texture, drawn, read back as bytes and as BYTE. */
+  GLfloat odd[8] = {NAN, INFINITY, -INFINITY, 0.5f, -0.0f, 2.0f, NAN, -NAN};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_BGRA, GL_FLOAT, odd);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, r);
+  hex("non-finite BGRA texture", r, 8);
+  glRasterPos2f(0.5f, 0.5f);
+  glDrawPixels(2, 1, GL_BGRA, GL_FLOAT, odd);
+  glReadPixels(W * 3 / 4, H * 3 / 4, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, r);
+  hex("non-finite BGRA drawn", r, 8);
+  glReadPixels(W * 3 / 4, H * 3 / 4, 2, 1, GL_BGRA, GL_BYTE, r);
+  hex("non-finite read as BYTE", r, 8);
 
   glViewport(0, 0, W, H);
   return finish(out, ctx, buf, W, H);
