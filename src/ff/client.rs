@@ -91,7 +91,7 @@ impl ArrayPointer {
     fn components<T>(
         &self,
         mem: &dyn ClientMemory,
-        which: &[usize],
+        which: Vertices,
         default: [f32; 4],
         take: impl Fn(f64) -> f32,
         make: impl Fn([f32; 4]) -> T,
@@ -104,7 +104,7 @@ impl ArrayPointer {
             size * elem
         };
         let decode_one = |bytes: &[u8]| make(decode_element(self.ty, bytes, size, default, &take));
-        let (Some(&lo), Some(&hi)) = (which.iter().min(), which.iter().max()) else {
+        let Some((lo, hi)) = which.bounds() else {
             return Vec::new();
         };
         let span = lo
@@ -112,24 +112,60 @@ impl ArrayPointer {
             .zip((hi - lo).checked_mul(stride))
             .and_then(|(start, len)| Some((start, len.checked_add(size * elem)?)));
         if let Some(bytes) = span.and_then(|(start, len)| mem.read(&self.data, start, len)) {
+            let element = |i: usize| bytes.get((i - lo) * stride..(i - lo) * stride + size * elem);
+            if self.ty == CType::Float {
+                // Every `take` is the identity on GLfloat (a float array is neither
+                // normalised nor converted), so the components are copied bit for bit.
+                return which
+                    .iter()
+                    .map(|i| element(i).map_or_else(|| make(default), |b| make(floats(b, default))))
+                    .collect();
+            }
             return which
                 .iter()
-                .map(|&i| {
-                    let at = (i - lo) * stride;
-                    bytes
-                        .get(at..at + size * elem)
-                        .map_or_else(|| make(default), decode_one)
-                })
+                .map(|i| element(i).map_or_else(|| make(default), decode_one))
                 .collect();
         }
         which
             .iter()
-            .map(|&i| {
+            .map(|i| {
                 i.checked_mul(stride)
                     .and_then(|at| mem.read(&self.data, at, size * elem))
                     .map_or_else(|| make(default), |b| decode_one(&b))
             })
             .collect()
+    }
+}
+
+/// The array elements a draw reads, in the order it reads them.
+#[derive(Clone, Copy, Debug)]
+enum Vertices<'a> {
+    /// first, first + 1, …, end − 1 (glDrawArrays, and the elements glDrawElements'
+    /// indices reach into).
+    Run(usize, usize),
+    /// These, in this order (glArrayElement).
+    Each(&'a [usize]),
+}
+
+impl Vertices<'_> {
+    /// The lowest and the highest element, or `None` for none.
+    fn bounds(&self) -> Option<(usize, usize)> {
+        match *self {
+            Vertices::Run(first, end) => (first < end).then(|| (first, end - 1)),
+            Vertices::Each(which) => which.iter().min().copied().zip(which.iter().max().copied()),
+        }
+    }
+
+    fn is_empty(&self) -> bool {
+        self.bounds().is_none()
+    }
+
+    fn iter(&self) -> impl Iterator<Item = usize> + '_ {
+        let (run, each) = match *self {
+            Vertices::Run(first, end) => (first..end, [].iter()),
+            Vertices::Each(which) => (0..0, which.iter()),
+        };
+        run.chain(each.copied())
     }
 }
 
@@ -140,6 +176,15 @@ fn ctype_size(t: CType) -> usize {
         CType::Int | CType::UInt | CType::Float => 4,
         CType::Double => 8,
     }
+}
+
+/// The GLfloat components in `bytes` over `default` (up to four).
+#[inline(always)]
+fn floats(bytes: &[u8], mut default: [f32; 4]) -> [f32; 4] {
+    for (slot, b) in default.iter_mut().zip(bytes.chunks_exact(4)) {
+        *slot = f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
+    }
+    default
 }
 
 /// One element of `size` components of type `t` from `bytes` (at least that long), each
@@ -215,20 +260,6 @@ fn decode_element(
     }
 }
 
-fn decode(t: CType, b: &[u8]) -> f64 {
-    match t {
-        CType::Byte => f64::from(b[0] as i8),
-        CType::UByte => f64::from(b[0]),
-        CType::Short => f64::from(i16::from_ne_bytes([b[0], b[1]])),
-        CType::UShort => f64::from(u16::from_ne_bytes([b[0], b[1]])),
-        CType::Int => f64::from(i32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
-        CType::UInt => f64::from(u32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
-        CType::Float => f64::from(f32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
-        CType::Double => f64::from_ne_bytes([b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]),
-    }
-}
-
-/// The GL type tokens of array data.
 /// The GL token of an array's element type (for glGet of *_ARRAY_TYPE).
 pub fn type_token(t: CType) -> &'static str {
     TYPE_NAMES
@@ -551,9 +582,8 @@ impl ClientArrays {
                 if first < 0 || count < 0 {
                     return Err(c.bad(2, "a first index and count of 0 or more"));
                 }
-                let indices: Vec<usize> =
-                    (first as usize..first as usize + count as usize).collect();
-                return Ok(ClientEffect::Draw(self.geometry(mode, &indices, None, mem)));
+                let which = Vertices::Run(first as usize, first as usize + count as usize);
+                return Ok(ClientEffect::Draw(self.geometry(mode, which, None, mem)));
             }
             Entry::DrawElements | Entry::DrawRangeElements => {
                 let ranged = c.entry() == Entry::DrawRangeElements;
@@ -572,7 +602,7 @@ impl ClientArrays {
                 let data = Buffers::source(c, 3 + k, bound.element)?;
                 let indices = read_indices(mem, &data, count as usize, ty)
                     .ok_or_else(|| c.bad(3 + k, "indices"))?;
-                return Ok(ClientEffect::Draw(self.indexed(mode, &indices, mem)));
+                return Ok(ClientEffect::Draw(self.indexed(mode, indices, mem)));
             }
             // Checked in Mesa's order (measured with tests/c/multidraw.c): a drawcount
             // below 0 is INVALID_VALUE before the mode (and the index type) are
@@ -589,8 +619,8 @@ impl ClientArrays {
                     .zip(counts)
                     .filter(|(f, _)| **f >= 0.0)
                     .filter_map(|(f, k)| {
-                        let which: Vec<usize> = (*f as usize..*f as usize + k).collect();
-                        self.geometry(mode, &which, None, mem)
+                        let which = Vertices::Run(*f as usize, *f as usize + k);
+                        self.geometry(mode, which, None, mem)
                     })
                     .collect();
                 return Ok(ClientEffect::Draws(draws));
@@ -605,7 +635,7 @@ impl ClientArrays {
                 for (data, k) in lists.iter().zip(counts) {
                     let indices =
                         read_indices(mem, data, k, ty).ok_or_else(|| c.bad(3, "indices"))?;
-                    draws.extend(self.indexed(mode, &indices, mem));
+                    draws.extend(self.indexed(mode, indices, mem));
                 }
                 return Ok(ClientEffect::Draws(draws));
             }
@@ -710,8 +740,8 @@ impl ClientArrays {
     fn geometry(
         &self,
         mode: Primitive,
-        which: &[usize],
-        indices: Option<&[usize]>,
+        which: Vertices,
+        indices: Option<Vec<u32>>,
         mem: &dyn ClientMemory,
     ) -> Option<Geometry> {
         if !self.vertex.enabled || which.is_empty() {
@@ -766,7 +796,7 @@ impl ClientArrays {
             let flag = |f: [f32; 4]| f[0] != 0.0;
             g.edge_flags = Some(self.edge_flag.components(mem, which, [1.0; 4], float, flag));
         }
-        g.indices = indices.map(|ix| ix.iter().map(|&i| i as u32).collect());
+        g.indices = indices;
         Some(g)
     }
 
@@ -774,12 +804,11 @@ impl ClientArrays {
     fn indexed(
         &self,
         mode: Primitive,
-        indices: &[usize],
+        indices: Vec<u32>,
         mem: &dyn ClientMemory,
     ) -> Option<Geometry> {
-        let n = indices.iter().max().map_or(0, |m| m + 1);
-        let all: Vec<usize> = (0..n).collect();
-        self.geometry(mode, &all, Some(indices), mem)
+        let n = indices.iter().max().map_or(0, |&m| m as usize + 1);
+        self.geometry(mode, Vertices::Run(0, n), Some(indices), mem)
     }
 
     /// glArrayElement(i): the values of element i of every enabled array.
@@ -788,15 +817,15 @@ impl ClientArrays {
             let first = |v: [f32; 4]| v[0];
             let v = self
                 .index
-                .components(mem, &[i], [0.0; 4], |x| x as f32, first);
+                .components(mem, Vertices::Each(&[i]), [0.0; 4], |x| x as f32, first);
             v.first().copied().unwrap_or(0.0)
         });
-        let Some(mut g) = self.geometry(Primitive::Points, &[i], None, mem) else {
+        let Some(mut g) = self.geometry(Primitive::Points, Vertices::Each(&[i]), None, mem) else {
             // Without a vertex array the other arrays still set their current values.
             let mut with_vertex = self.clone();
             with_vertex.vertex.enabled = true;
             let mut e = with_vertex
-                .geometry(Primitive::Points, &[i], None, mem)
+                .geometry(Primitive::Points, Vertices::Each(&[i]), None, mem)
                 .map_or_else(Element::default, |g| Element::of(&g));
             e.index = index;
             return e;
@@ -909,20 +938,20 @@ fn read_indices(
     data: &ArrayData,
     count: usize,
     ty: CType,
-) -> Option<Vec<usize>> {
+) -> Option<Vec<u32>> {
     let size = ctype_size(ty);
     let bytes = mem.read(data, 0, count.checked_mul(size)?)?;
     // The index types are UNSIGNED_BYTE, _SHORT and _INT (`index_type`), each read by its
     // own loop.
     Some(match ty {
-        CType::UByte | CType::Byte => bytes.iter().map(|&b| usize::from(b)).collect(),
+        CType::UByte | CType::Byte => bytes.iter().map(|&b| u32::from(b)).collect(),
         CType::UShort | CType::Short => bytes
             .chunks_exact(2)
-            .map(|b| usize::from(u16::from_ne_bytes([b[0], b[1]])))
+            .map(|b| u32::from(u16::from_ne_bytes([b[0], b[1]])))
             .collect(),
         _ => bytes
-            .chunks_exact(size)
-            .map(|b| decode(ty, b) as usize)
+            .chunks_exact(4)
+            .map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
             .collect(),
     })
 }
