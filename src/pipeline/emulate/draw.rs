@@ -13,7 +13,8 @@
 //! Mesa's QUADS split depends on the draw: indexed quads are split v1–v3; non-indexed ones
 //! v0–v2, except each chunk of 1024 quads that has a vertex outside the clip volume, split
 //! v1–v3. Non-indexed QUADS are therefore uploaded in both splits, and each draw picks per
-//! chunk from the current matrices; everything else has one split.
+//! chunk from the current matrices; everything else has one split. A non-indexed draw of
+//! a core type that repeats its vertices is uploaded indexed (`shared_vertices`).
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -27,6 +28,7 @@ use super::shadergen::{
     ATTRIB_COLOR, ATTRIB_COUNT, ATTRIB_EDGE, ATTRIB_FOG_COORD, ATTRIB_NORMAL, ATTRIB_POSITION,
     ATTRIB_SECONDARY, ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0,
 };
+use super::shared_vertices::{self, Shared};
 use crate::ff::{FixedState, Geometry, Primitive, ShadeModel, MAX_TEXTURE_UNITS};
 use crate::pipeline::PipelineError;
 
@@ -43,6 +45,8 @@ pub struct GpuGeometry {
     colors: Vec<(u32, glow::Buffer, glow::Buffer)>,
     /// Which of them are bound: the provoking values (after a flat draw) or the own.
     bound_flat: std::cell::Cell<bool>,
+    /// Uploaded as drawn, not yet looked at for shared vertices (`shared_vertices`).
+    unshared: bool,
 }
 
 /// Which attributes a geometry has arrays for; the others take the current values.
@@ -170,7 +174,13 @@ impl<'a> Floats<'a> {
 }
 
 impl GpuGeometry {
-    pub fn upload(gl: &glow::Context, g: &Arc<Geometry>) -> Result<GpuGeometry, PipelineError> {
+    /// Uploads `g`: its vertices as drawn, or — given `shared`, for a non-indexed draw of
+    /// a type core GL draws — each distinct vertex once, drawn through `shared`'s indices.
+    pub fn upload(
+        gl: &glow::Context,
+        g: &Arc<Geometry>,
+        shared: Option<Shared>,
+    ) -> Result<GpuGeometry, PipelineError> {
         let split = Outline::of(g) == Outline::Corners;
         let mode = if split { None } else { core_mode(g.primitive) };
         let (corners, blocks) = if split {
@@ -184,11 +194,16 @@ impl GpuGeometry {
         };
         let order: Vec<u32> = corners.iter().map(|c| c.vertex).collect();
         let provoking: Vec<u32> = corners.iter().map(|c| c.provoking).collect();
-        let (order, provoking) = if split {
-            (Some(order.as_slice()), Some(provoking.as_slice()))
-        } else {
-            (None, None)
+        // A non-indexed draw of a core type that repeats vertices is drawn indexed, each
+        // distinct vertex uploaded once (`shared_vertices`).
+        let shared = shared.filter(|_| mode.is_some() && g.indices.is_none());
+        let unshared = shared.is_none() && mode.is_some() && g.indices.is_none();
+        let (order, provoking) = match &shared {
+            _ if split => (Some(order.as_slice()), Some(provoking.as_slice())),
+            Some(s) => (Some(s.vertices.as_slice()), None),
+            None => (None, None),
         };
+        let indices = g.indices.as_ref().or(shared.as_ref().map(|s| &s.indices));
         let mut buffers = Vec::new();
         // SAFETY: plain GL calls on the current context; every buffer is sized by its data.
         unsafe {
@@ -257,7 +272,7 @@ impl GpuGeometry {
                 let b = buffer(bytemuck::cast_slice(&edges))?;
                 point(b, ATTRIB_EDGE, 4);
             }
-            let shape = match (mode, &g.indices) {
+            let shape = match (mode, indices) {
                 (Some(mode), Some(indices)) => {
                     let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
                     gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
@@ -303,6 +318,7 @@ impl GpuGeometry {
                 arrays: Arrays::of(g),
                 colors,
                 bound_flat: std::cell::Cell::new(false),
+                unshared,
             })
         }
     }
@@ -464,10 +480,12 @@ pub struct GeometryCache {
 
 impl GeometryCache {
     /// The uploaded form of `g`, uploaded on its first draw. A geometry drawn again (a
-    /// scene's mesh, frame after frame) is uploaded once; one that only the cache still
-    /// holds can never be drawn again (an immediate-mode draw of the C library, whose
-    /// geometry is new each time) and is deleted when the cache has doubled since the
-    /// last sweep, so memory stays proportional to the geometry alive.
+    /// scene's mesh, frame after frame) is uploaded once — and at its second draw once
+    /// more with its repeated vertices shared, if it has enough (`shared_vertices`: most
+    /// geometries are drawn once, and sharing costs a hash per vertex); one that
+    /// only the cache still holds can never be drawn again (an immediate-mode draw of the
+    /// C library, whose geometry is new each time) and is deleted when the cache has
+    /// doubled since the last sweep, so memory stays proportional to the geometry alive.
     pub fn get(
         &mut self,
         gl: &glow::Context,
@@ -478,10 +496,19 @@ impl GeometryCache {
         }
         let key = Arc::as_ptr(g) as usize;
         match self.entries.entry(key) {
-            std::collections::hash_map::Entry::Occupied(e) => Ok(e.into_mut()),
+            std::collections::hash_map::Entry::Occupied(mut e) => {
+                if e.get().unshared {
+                    e.get_mut().unshared = false;
+                    if let Some(shared) = shared_vertices::of(g) {
+                        let again = GpuGeometry::upload(gl, g, Some(shared))?;
+                        std::mem::replace(e.get_mut(), again).delete(gl);
+                    }
+                }
+                Ok(e.into_mut())
+            }
             std::collections::hash_map::Entry::Vacant(e) => {
                 self.uploads += 1;
-                Ok(e.insert(GpuGeometry::upload(gl, g)?))
+                Ok(e.insert(GpuGeometry::upload(gl, g, None)?))
             }
         }
     }

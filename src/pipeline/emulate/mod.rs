@@ -23,6 +23,7 @@ pub mod pixels;
 pub mod polygon;
 pub mod program;
 pub mod shadergen;
+pub mod shared_vertices;
 pub mod stipple_dashes;
 pub mod sync;
 pub mod texel_store;
