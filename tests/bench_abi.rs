@@ -10,7 +10,7 @@ mod support;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use fixedfunc::bench::abi::{AbiError, AbiMode, Libraries, Library, Program};
+use fixedfunc::bench::abi::{AbiError, AbiMode, Heap, Libraries, Library, Program};
 use fixedfunc::vocab::Named;
 use image::{Rgba, RgbaImage};
 use support::{assert_images_match, Tolerance};
@@ -70,7 +70,7 @@ fn both_libraries_draw_every_mode_alike() {
         let [mesa, ours] = [Library::Mesa, Library::Fixedfunc].map(|library| {
             let ppm = dir.join(format!("{mode}-{library}.ppm"));
             let out = program
-                .run(&libraries, library, mode, 2, Some(&ppm))
+                .run(&libraries, library, mode, Heap::Glibc, 2, Some(&ppm))
                 .unwrap_or_else(|e| panic!("{mode} on {library}: {e}"));
             (out, read_ppm(&ppm))
         });
@@ -129,7 +129,14 @@ fn a_folder_without_the_library_is_an_error_not_a_run_on_mesa() {
         fixedfunc_dir: empty.clone(),
     };
     let error = program
-        .run(&libraries, Library::Fixedfunc, AbiMode::Arrays, 1, None)
+        .run(
+            &libraries,
+            Library::Fixedfunc,
+            AbiMode::Arrays,
+            Heap::Glibc,
+            1,
+            None,
+        )
         .expect_err("no library in the folder");
     assert!(matches!(error, AbiError::LibraryMissing { .. }), "{error}");
     let text = error.to_string();
@@ -153,7 +160,7 @@ fn bench_abi(cc: Option<&str>, json: bool) -> std::process::Output {
 }
 
 #[test]
-fn the_group_reports_a_row_per_mode() {
+fn the_group_reports_a_row_per_mode_and_heap() {
     let out = bench_abi(None, true);
     assert!(
         out.status.success(),
@@ -162,8 +169,15 @@ fn the_group_reports_a_row_per_mode() {
     );
     let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
     let rows = rows.as_array().expect("an array of rows");
-    let modes: Vec<&str> = rows.iter().filter_map(|r| r["mode"].as_str()).collect();
-    assert_eq!(modes, AbiMode::names());
+    let cases: Vec<(&str, &str)> = rows
+        .iter()
+        .filter_map(|r| Some((r["mode"].as_str()?, r["heap"].as_str()?)))
+        .collect();
+    let expected: Vec<(&str, &str)> = AbiMode::names()
+        .iter()
+        .flat_map(|&m| [(m, "glibc"), (m, "untrimmed")])
+        .collect();
+    assert_eq!(cases, expected);
     for r in rows {
         let mode = r["mode"].as_str().unwrap_or("?");
         let expected = if mode == "shadow" {

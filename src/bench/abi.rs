@@ -11,6 +11,17 @@
 //! vertices and draw calls per second they mean, and the layer's median over Mesa's against
 //! the target (≤ 1.0× for arrays, lists and buffers, ≤ 2.0× for immediate mode).
 //!
+//! **The heap.** Both libraries leave llvmpipe to free its binned scene at each clear and
+//! allocate it again in the frame's draws; with glibc's default trim threshold (128 KiB,
+//! raised only by freed mmapped chunks) the free gives the heap's top back to the kernel and
+//! the draws fault it in again, page by page — measured with `perf`, 35–40% of the program's
+//! thread on either library. Which allocation happens to lie at the heap's top decides how
+//! much is given back, so that share differs from run to run and from library to library
+//! and says nothing about either library's own work. Every mode is therefore run twice:
+//! under the process's own heap settings ([`Heap::Glibc`], what a program gets) and with
+//! trimming off for both libraries ([`Heap::Untrimmed`]), which compares the two
+//! libraries' work alone.
+//!
 //! A fast time counts only from a run that drew the workload: the program exits non-zero
 //! on a GL error or an image without it (a shadow frame without shadow), and here the two
 //! libraries' last frames must agree within [`IMAGE_AGREEMENT`] of the pixels in what they
@@ -80,6 +91,50 @@ impl AbiMode {
     }
 }
 
+/// The heap settings a run's process has.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Heap {
+    /// glibc's defaults (or whatever `GLIBC_TUNABLES` the bench was given).
+    Glibc,
+    /// glibc's trim threshold at [`UNTRIMMED_THRESHOLD`]: freeing at the heap's top gives
+    /// nothing back to the kernel (`GLIBC_TUNABLES=glibc.malloc.trim_threshold=…`).
+    Untrimmed,
+}
+
+/// The trim threshold of [`Heap::Untrimmed`]: 64 MiB, the most glibc's own dynamic rule
+/// raises it to on 64-bit machines (twice its 32 MiB mmap-threshold ceiling).
+pub const UNTRIMMED_THRESHOLD: u64 = 64 << 20;
+
+impl Heap {
+    pub const ALL: [Heap; 2] = [Heap::Glibc, Heap::Untrimmed];
+
+    /// The `GLIBC_TUNABLES` a run under these settings gets, given the bench's own
+    /// (`None`: the bench's own, unchanged). Tunables are `name=value` pairs joined by `:`;
+    /// the last setting of a name wins.
+    pub fn tunables(self, inherited: Option<&str>) -> Option<String> {
+        match self {
+            Heap::Glibc => None,
+            Heap::Untrimmed => {
+                let trim = format!("glibc.malloc.trim_threshold={UNTRIMMED_THRESHOLD}");
+                Some(match inherited.filter(|t| !t.is_empty()) {
+                    Some(t) => format!("{t}:{trim}"),
+                    None => trim,
+                })
+            }
+        }
+    }
+}
+
+impl std::fmt::Display for Heap {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(match self {
+            Heap::Glibc => "glibc",
+            Heap::Untrimmed => "untrimmed",
+        })
+    }
+}
+
 /// Which `libOSMesa.so.8` a run loads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -123,10 +178,11 @@ pub struct LibraryFigures {
     pub draws_per_s: Summary,
 }
 
-/// One mode on both libraries.
+/// One mode on both libraries, under one heap setting.
 #[derive(Clone, Debug, Serialize)]
 pub struct AbiRow {
     pub mode: AbiMode,
+    pub heap: Heap,
     pub vertices_per_frame: u64,
     pub draws_per_frame: u64,
     pub mesa: LibraryFigures,
@@ -219,31 +275,36 @@ pub enum AbiError {
     Io { what: String, reason: String },
 }
 
-/// Runs every mode `repeats` times on each library, interleaved; `done` is told of each
-/// finished run.
+/// Runs every mode under every heap setting `repeats` times on each library, interleaved;
+/// `done` is told of each finished run. Rows come mode by mode, heap by heap.
 pub fn measure(
     program: &Program,
     libraries: &Libraries,
     modes: &[AbiMode],
+    heaps: &[Heap],
     repeats: usize,
-    mut done: impl FnMut(AbiMode, Library),
+    mut done: impl FnMut(AbiMode, Heap, Library),
 ) -> Result<Vec<AbiRow>, AbiError> {
     let frames = WARMUP_FRAMES + STEADY_FRAMES;
-    // runs[mode][library]: each repeat's output.
-    let mut runs: Vec<[Vec<RunOutput>; 2]> = modes.iter().map(|_| [vec![], vec![]]).collect();
+    let cases: Vec<(AbiMode, Heap)> = modes
+        .iter()
+        .flat_map(|&m| heaps.iter().map(move |&h| (m, h)))
+        .collect();
+    // runs[case][library]: each repeat's output.
+    let mut runs: Vec<[Vec<RunOutput>; 2]> = cases.iter().map(|_| [vec![], vec![]]).collect();
     for _ in 0..repeats.max(1) {
-        for (m, &mode) in modes.iter().enumerate() {
+        for (c, &(mode, heap)) in cases.iter().enumerate() {
             for (l, library) in [Library::Mesa, Library::Fixedfunc].into_iter().enumerate() {
-                let out = program.run(libraries, library, mode, frames, None)?;
-                runs[m][l].push(out);
-                done(mode, library);
+                let out = program.run(libraries, library, mode, heap, frames, None)?;
+                runs[c][l].push(out);
+                done(mode, heap, library);
             }
         }
     }
-    modes
+    cases
         .iter()
         .zip(runs)
-        .map(|(&mode, [mesa, ours])| row(mode, &mesa, &ours))
+        .map(|(&(mode, heap), [mesa, ours])| row(mode, heap, &mesa, &ours))
         .collect()
 }
 
@@ -253,7 +314,12 @@ pub fn steady_median(run: &RunOutput) -> Option<f64> {
     Summary::of(steady).map(|s| s.median)
 }
 
-fn row(mode: AbiMode, mesa: &[RunOutput], ours: &[RunOutput]) -> Result<AbiRow, AbiError> {
+fn row(
+    mode: AbiMode,
+    heap: Heap,
+    mesa: &[RunOutput],
+    ours: &[RunOutput],
+) -> Result<AbiRow, AbiError> {
     let (Some(m), Some(o)) = (mesa.first(), ours.first()) else {
         return Err(AbiError::Incomplete { missing: "frame" });
     };
@@ -269,6 +335,7 @@ fn row(mode: AbiMode, mesa: &[RunOutput], ours: &[RunOutput]) -> Result<AbiRow, 
     };
     Ok(AbiRow {
         mode,
+        heap,
         vertices_per_frame: m.vertices,
         draws_per_frame: m.draws,
         mesa,
@@ -324,4 +391,23 @@ fn figures(library: Library, runs: &[RunOutput]) -> Result<LibraryFigures, AbiEr
         mvertices_per_s: summary(&rate(first.vertices, 1e6))?,
         draws_per_s: summary(&rate(first.draws, 1.0))?,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_untrimmed_run_raises_the_trim_threshold_after_the_inherited_tunables() {
+        let trim = "glibc.malloc.trim_threshold=67108864";
+        assert_eq!(Heap::Glibc.tunables(Some("glibc.malloc.arena_max=2")), None);
+        assert_eq!(Heap::Untrimmed.tunables(None).as_deref(), Some(trim));
+        assert_eq!(Heap::Untrimmed.tunables(Some("")).as_deref(), Some(trim));
+        assert_eq!(
+            Heap::Untrimmed
+                .tunables(Some("glibc.malloc.trim_threshold=0"))
+                .as_deref(),
+            Some("glibc.malloc.trim_threshold=0:glibc.malloc.trim_threshold=67108864")
+        );
+    }
 }

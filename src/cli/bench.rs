@@ -1,6 +1,6 @@
 //! `fixedfunc bench`: repeated timings with medians, a progress bar while they run.
 
-use fixedfunc::bench::abi::{self, AbiError, AbiMode, AbiRow, Verdict};
+use fixedfunc::bench::abi::{self, AbiError, AbiMode, AbiRow, Heap, Verdict};
 use fixedfunc::bench::pipeline::BenchError;
 use fixedfunc::bench::{context, pipeline, BenchGroup};
 use fixedfunc::gpu::{Backend, Profile, VirtualDisplay};
@@ -302,14 +302,21 @@ fn measure_abi(repeats: usize) -> Result<Vec<AbiRow>, AbiError> {
         fixedfunc_dir: folder,
     };
     let modes = AbiMode::all();
-    let total = (repeats.max(1) * modes.len() * 2) as u64;
+    let total = (repeats.max(1) * modes.len() * Heap::ALL.len() * 2) as u64;
     let mut bar = CountBar::new("bench abi", total, "runs");
     bar.set_what("compiling abi_bench.c".into());
     let program = abi::Program::compile()?;
-    let rows = abi::measure(&program, &libraries, &modes, repeats, |mode, library| {
-        bar.set_what(format!("{mode} on {library}"));
-        bar.inc();
-    });
+    let rows = abi::measure(
+        &program,
+        &libraries,
+        &modes,
+        &Heap::ALL,
+        repeats,
+        |mode, heap, library| {
+            bar.set_what(format!("{mode} ({heap} heap) on {library}"));
+            bar.inc();
+        },
+    );
     bar.finish();
     rows
 }
@@ -336,6 +343,13 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
         abi::STEADY_FRAMES,
         abi::WARMUP_FRAMES
     )?;
+    outln!(
+        "heap: glibc = the process's own settings (what a program gets); untrimmed = \
+         GLIBC_TUNABLES=glibc.malloc.trim_threshold={} for both libraries, so that freeing \
+         llvmpipe's scene at each clear gives no pages back to fault in again (the two \
+         libraries' own work alone)",
+        abi::UNTRIMMED_THRESHOLD
+    )?;
     if let Some(r) = rows.first() {
         outln!(
             "Mesa: {} · fixedfunc: {}",
@@ -344,8 +358,9 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
         )?;
     }
     outln!(
-        "{:<10} {:>7} {:>5} {:>22} {:>22} {:>10} {:>7} {:>15} {:>15} {:>9} {:>9}",
+        "{:<10} {:<9} {:>7} {:>5} {:>22} {:>22} {:>10} {:>7} {:>15} {:>15} {:>9} {:>9}",
         "mode",
+        "heap",
         "verts",
         "draws",
         "Mesa frame ms",
@@ -366,8 +381,9 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
             (None, _) => "—".to_string(),
         };
         outln!(
-            "{:<10} {:>7} {:>5} {:>22} {:>22} {:>9.2}× {:>7} {:>15.1} {:>15.1} {:>9.0} {:>9.0}",
+            "{:<10} {:<9} {:>7} {:>5} {:>22} {:>22} {:>9.2}× {:>7} {:>15.1} {:>15.1} {:>9.0} {:>9.0}",
             r.mode.name(),
+            r.heap,
             r.vertices_per_frame,
             r.draws_per_frame,
             range(&r.mesa.frame_ms),

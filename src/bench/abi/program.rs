@@ -9,7 +9,7 @@
 //! kills and reaps it when the run fails or takes longer than [`RUN_TIMEOUT`], and the
 //! kernel kills it if this process dies first (`PR_SET_PDEATHSIG`), so no run outlives
 //! the bench. `FIXEDFUNC_TRACE` is removed from the child's environment: a traced run
-//! would time the trace.
+//! would time the trace. The run's heap setting reaches the child as `GLIBC_TUNABLES`.
 
 use std::io::Read;
 use std::os::unix::process::CommandExt;
@@ -19,7 +19,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 use std::time::{Duration, Instant};
 
 use super::output::{self, RunOutput};
-use super::{AbiError, AbiMode, Library};
+use super::{AbiError, AbiMode, Heap, Library};
 use crate::vocab::Named;
 
 /// The program's source, as compiled.
@@ -94,7 +94,7 @@ impl Program {
         &self.exe
     }
 
-    /// One run of `frames` frames of `mode` on `library`; `image` receives the last frame
+    /// One run of `frames` frames of `mode` on `library` under `heap`; `image` receives the last frame
     /// as a PPM. The output must show the library asked for: Mesa's vendor is not
     /// `fixedfunc`, the layer's is.
     pub fn run(
@@ -102,6 +102,7 @@ impl Program {
         libraries: &Libraries,
         library: Library,
         mode: AbiMode,
+        heap: Heap,
         frames: u32,
         image: Option<&Path>,
     ) -> Result<RunOutput, AbiError> {
@@ -111,6 +112,10 @@ impl Program {
             cmd.arg(image);
         }
         cmd.env_remove("FIXEDFUNC_TRACE");
+        let inherited = std::env::var("GLIBC_TUNABLES").ok();
+        if let Some(tunables) = heap.tunables(inherited.as_deref()) {
+            cmd.env("GLIBC_TUNABLES", tunables);
+        }
         match library {
             Library::Mesa => {
                 cmd.env_remove("LD_LIBRARY_PATH");
