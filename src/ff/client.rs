@@ -113,6 +113,14 @@ impl ArrayPointer {
             .and_then(|(start, len)| Some((start, len.checked_add(size * elem)?)));
         if let Some(bytes) = span.and_then(|(start, len)| mem.read(&self.data, start, len)) {
             let element = |i: usize| bytes.get((i - lo) * stride..(i - lo) * stride + size * elem);
+            if let (CType::Float, Vertices::Run(..), true) = (self.ty, which, stride > 0) {
+                // A run of elements `stride` apart: the span holds every one whole (it
+                // ends with the last element's own bytes).
+                return bytes
+                    .chunks(stride)
+                    .map(|e| make(floats(e.get(..size * elem).unwrap_or_default(), default)))
+                    .collect();
+            }
             if self.ty == CType::Float {
                 // Every `take` is the identity on GLfloat (a float array is neither
                 // normalised nor converted), so the components are copied bit for bit.
