@@ -25,13 +25,13 @@ fn arg(p: &Path) -> &str {
     p.to_str().expect("temporary paths are UTF-8")
 }
 
-/// A failed run that reported its failure: exit code 1 (not a panic's 101), one message
+/// A failed run that reported its failure: exit code 2, trouble (not a panic's 101), one message
 /// naming `needle` on stderr, no panic.
 fn assert_reported(run: &Output, needle: &str) -> String {
     let stderr = text(&run.stderr);
     assert_eq!(
         run.status.code(),
-        Some(1),
+        Some(2),
         "expected a reported failure; stdout: {} stderr: {stderr}",
         text(&run.stdout)
     );

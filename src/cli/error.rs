@@ -33,6 +33,8 @@ pub enum CliError {
     #[error(transparent)]
     Truth(#[from] TruthError),
     #[error(transparent)]
+    Metrics(#[from] fixedfunc::metrics::MetricsError),
+    #[error(transparent)]
     Study(#[from] fixedfunc::study::StudyError),
     #[error(transparent)]
     Report(#[from] fixedfunc::report::ReportError),
@@ -40,10 +42,45 @@ pub enum CliError {
     Osmesa(String),
     #[error("cannot write to standard output: {0}")]
     Stdout(#[source] std::io::Error),
+    /// `--expect`: the image differs from the reference beyond the tolerance.
+    #[error(
+        "the image differs from {}: {detail}{}",
+        .reference.display(),
+        .picture.as_ref().map_or(String::new(), |p| format!(" (difference picture: {})", p.display()))
+    )]
+    Expectation {
+        reference: PathBuf,
+        detail: String,
+        picture: Option<PathBuf>,
+    },
+    /// `replay --strict`: the script raised a GL error.
+    #[error(
+        "{file}:{line}: {entry}: {error} (on the {kind} path; --strict stops at the first GL \
+         error)"
+    )]
+    StrictGlError {
+        file: String,
+        kind: &'static str,
+        line: usize,
+        entry: &'static str,
+        error: String,
+    },
     #[error("{first} and {second} both name {path}: one file would overwrite the other")]
     SameFile {
         first: &'static str,
         second: String,
         path: PathBuf,
     },
+}
+
+impl CliError {
+    /// The process's exit code for this error: 1 when the command ran and a check it was
+    /// asked for failed (`--expect`, `replay --strict`), 2 for trouble — the command could
+    /// not do what was asked (clap also exits 2 on a bad command line).
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            CliError::Expectation { .. } | CliError::StrictGlError { .. } => 1,
+            _ => 2,
+        }
+    }
 }

@@ -22,6 +22,7 @@ macro_rules! outln {
 mod bench;
 mod compare;
 mod error;
+mod expect;
 mod info;
 mod named;
 mod osmesa_dir;
@@ -51,7 +52,16 @@ use fixedfunc::render::{ImageSize, RemakeMaps};
 
 /// An emulator of the OpenGL 1.x fixed-function pipeline for the classic shadow techniques.
 #[derive(Parser)]
-#[command(name = "fixedfunc", version, about)]
+#[command(
+    name = "fixedfunc",
+    version,
+    about,
+    after_help = "Exit status: 0 when the command did what was asked and every check passed; \
+                  1 when a check it was asked for failed (--expect: the image differs beyond \
+                  the tolerance; replay --strict: the script raised a GL error); 2 for \
+                  trouble (a bad command line, an unreadable or malformed input, a missing \
+                  system library, a GL failure, a write that failed)."
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -100,6 +110,8 @@ enum Command {
         /// only when the light moved (unless --remake-maps always).
         #[arg(long, value_name = "WHAT:DEGREES")]
         orbit: Option<fixedfunc::render::Orbit>,
+        #[command(flatten)]
+        expect: expect::ExpectArgs,
     },
     /// Every technique on both pipelines against one ground truth, frames interleaved: a
     /// table, and a report folder (report.html, results.csv/json, accuracy_vs_time.svg/png,
@@ -139,8 +151,11 @@ enum Command {
     Replay {
         /// The script.
         file: PathBuf,
-        #[arg(long, value_parser = named::named::<PipelineKind>(), default_value = "emulate")]
-        pipeline: PipelineKind,
+        /// Which path runs it; `both` runs it on each (each on its own context), writes the
+        /// native image as NAME-native.png and the difference picture of the two as
+        /// NAME-paths.png, and prints the largest difference and its pixel.
+        #[arg(long, value_enum, default_value = "emulate")]
+        pipeline: pipelines::PipelineChoice,
         #[arg(long, value_parser = named::named::<Backend>(), default_value = "egl")]
         backend: Backend,
         /// Target size, WIDTHxHEIGHT.
@@ -154,6 +169,12 @@ enum Command {
         /// objects none).
         #[arg(long)]
         accum: bool,
+        /// Stop at the first GL error the script raises, naming its line, write no image
+        /// and exit 1 (without it each error is reported and the run goes on).
+        #[arg(long)]
+        strict: bool,
+        #[command(flatten)]
+        expect: expect::ExpectArgs,
     },
     /// Print each distinct program a script needs: its key and its generated GLSL.
     Shaders {
@@ -200,7 +221,18 @@ pub fn run() -> ExitCode {
             size,
             out,
             accum,
-        } => replay::run(&file, pipeline, backend, size, &out, accum),
+            strict,
+            expect,
+        } => replay::run(replay::Args {
+            file,
+            pipeline,
+            backend,
+            size,
+            out,
+            accum,
+            strict,
+            expect,
+        }),
         Command::Shaders {
             file,
             scene,
@@ -229,6 +261,7 @@ pub fn run() -> ExitCode {
             remake_maps,
             depth_map,
             orbit,
+            expect,
         } => render::run(
             render::Args {
                 scene,
@@ -243,6 +276,7 @@ pub fn run() -> ExitCode {
                 remake_maps,
                 depth_map,
                 orbit,
+                expect,
             },
             limits,
         ),
@@ -268,7 +302,7 @@ pub fn run() -> ExitCode {
         Err(error) => {
             // Nowhere is left to report a failure to write this.
             let _ = writeln!(std::io::stderr(), "fixedfunc: {error}");
-            ExitCode::FAILURE
+            ExitCode::from(error.exit_code())
         }
     }
 }

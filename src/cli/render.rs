@@ -13,18 +13,9 @@ use fixedfunc::scene::Limits;
 use indicatif::{ProgressBar, ProgressStyle};
 
 use super::error::CliError;
+use super::expect::ExpectArgs;
 use super::shadow_args::ShadowArgs;
 
-/// `dir/map.png` + `big-digit` → `dir/map-big-digit.png`.
-fn map_file(path: &std::path::Path, label: &str) -> PathBuf {
-    let stem = path
-        .file_stem()
-        .map_or("map".into(), |s| s.to_string_lossy());
-    let ext = path
-        .extension()
-        .map_or("png".into(), |e| e.to_string_lossy());
-    path.with_file_name(format!("{stem}-{label}.{ext}"))
-}
 use super::scene_arg;
 
 pub struct Args {
@@ -40,6 +31,7 @@ pub struct Args {
     pub remake_maps: RemakeMaps,
     pub depth_map: Option<PathBuf>,
     pub orbit: Option<fixedfunc::render::Orbit>,
+    pub expect: ExpectArgs,
 }
 
 pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
@@ -51,6 +43,10 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
     ];
     if let Some(path) = &args.depth_map {
         outputs.push(("--depth-map", path.as_path()));
+    }
+    let picture = args.expect.picture_path(&args.out);
+    if let Some(path) = &picture {
+        outputs.push(("the --expect difference picture", path.as_path()));
     }
     scene_arg::check_png_outputs(&outputs)?;
     let options = RenderOptions {
@@ -102,7 +98,7 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
             let file = if pictures.len() == 1 {
                 path.clone()
             } else {
-                map_file(path, label)
+                scene_arg::beside(path, label)
             };
             scene_arg::save(picture, &file)?;
             outln!("light's map ({label}) {}", file.display())?;
@@ -126,5 +122,5 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
         outcome.image.height(),
         outcome.context_path
     )?;
-    Ok(())
+    args.expect.check(&outcome.image, &args.out)
 }

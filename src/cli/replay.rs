@@ -1,36 +1,136 @@
-//! `fixedfunc replay FILE`: runs a script of GL 1.x calls on either pipeline and writes the
-//! image it leaves in the colour buffer.
+//! `fixedfunc replay FILE`: runs a script of GL 1.x calls on either pipeline, or on both,
+//! and writes the image it leaves in the colour buffer.
+//!
+//! Each GL error is reported with the script line that raised it (GL keeps only the first
+//! error until glGetError; a script has no glGetError, so each is read as it happens);
+//! `--strict` stops at the first, writes nothing and exits 1. `--pipeline both` runs the
+//! script once per path, each on its own context, writes both images and the difference
+//! picture of the emulated image against the native one, and prints the largest difference
+//! and its pixel. `--expect` compares each image written with a reference (`expect`).
 
-use fixedfunc::vocab::{DepthBits, PipelineKind};
-use std::path::Path;
+use fixedfunc::vocab::{DepthBits, Named, PipelineKind};
+use std::path::{Path, PathBuf};
 
+use fixedfunc::ff::Command;
 use fixedfunc::gpu::{
     Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay, WindowBuffer,
 };
+use fixedfunc::metrics::image_diff::{self, Verdict};
 use fixedfunc::pipeline;
+use image::RgbaImage;
 
 use super::error::CliError;
+use super::expect::ExpectArgs;
+use super::pipelines::PipelineChoice;
+use super::scene_arg;
 use super::script_io;
 use fixedfunc::render::ImageSize;
 
-pub fn run(
-    file: &Path,
-    kind: PipelineKind,
-    backend: Backend,
-    size: ImageSize,
-    out: &Path,
-    accum: bool,
-) -> Result<(), CliError> {
-    let commands = script_io::load_lines(file)?;
-    super::scene_arg::check_png_outputs(&[("--out", out)])?;
-    let _display = if backend == Backend::Window {
+pub struct Args {
+    pub file: PathBuf,
+    pub pipeline: PipelineChoice,
+    pub backend: Backend,
+    pub size: ImageSize,
+    pub out: PathBuf,
+    pub accum: bool,
+    pub strict: bool,
+    pub expect: ExpectArgs,
+}
+
+/// What one path's run left.
+struct Replayed {
+    image: RgbaImage,
+    counters: pipeline::Counters,
+    errors: usize,
+}
+
+pub fn run(args: Args) -> Result<(), CliError> {
+    let commands = script_io::load_lines(&args.file)?;
+    let kinds = args.pipeline.kinds();
+    // Where each path's image goes: --out, or with both paths the native one beside it.
+    let outs: Vec<(PipelineKind, PathBuf)> = kinds
+        .iter()
+        .map(|&k| match (k, kinds.len()) {
+            (PipelineKind::Native, 2) => (k, scene_arg::beside(&args.out, "native")),
+            _ => (k, args.out.clone()),
+        })
+        .collect();
+    let paths_picture = (kinds.len() == 2).then(|| scene_arg::beside(&args.out, "paths"));
+    let mut outputs: Vec<(&'static str, &Path)> = vec![("--out", args.out.as_path())];
+    if let [_, (_, native)] = outs.as_slice() {
+        outputs.push(("the native image", native.as_path()));
+    }
+    if let Some(p) = &paths_picture {
+        outputs.push(("the paths' difference picture", p.as_path()));
+    }
+    let pictures: Vec<PathBuf> = outs
+        .iter()
+        .filter_map(|(_, o)| args.expect.picture_path(o))
+        .collect();
+    outputs.extend(
+        pictures
+            .iter()
+            .map(|p| ("an --expect difference picture", p.as_path())),
+    );
+    scene_arg::check_png_outputs(&outputs)?;
+    let _display = if args.backend == Backend::Window {
         VirtualDisplay::start_if_needed()?
     } else {
         None
     };
+    let mut images = Vec::new();
+    for (kind, out) in &outs {
+        let r = replay_on(&args, *kind, &commands)?;
+        scene_arg::save(&r.image, out)?;
+        let c = r.counters;
+        outln!(
+            "replay {} ({}): {} commands, {} draws, {} programs compiled, {} state calls sent / {} skipped → {}",
+            args.file.display(),
+            kind.name(),
+            c.commands,
+            c.draws,
+            c.programs_compiled,
+            c.state_calls_sent,
+            c.state_calls_skipped,
+            out.display()
+        )?;
+        if r.errors > 0 {
+            eprintln!(
+                "{} GL error(s) recorded on {} (each named above with its line)",
+                r.errors,
+                kind.name()
+            );
+        }
+        images.push(r.image);
+    }
+    if let ([emulated, native], Some(picture)) = (images.as_slice(), &paths_picture) {
+        let verdict = Verdict::of(emulated, native, args.expect.tolerance)?;
+        scene_arg::save(
+            &image_diff::picture(emulated, native, args.expect.tolerance.per_channel),
+            picture,
+        )?;
+        outln!("emulate against native: {verdict} → {}", picture.display())?;
+    }
+    let mut failure = None;
+    for ((_, out), image) in outs.iter().zip(&images) {
+        if let Err(e) = args.expect.check(image, out) {
+            eprintln!("fixedfunc: {e}");
+            failure.get_or_insert(e);
+        }
+    }
+    failure.map_or(Ok(()), Err)
+}
+
+/// The script on one path, on a context of its own.
+fn replay_on(
+    args: &Args,
+    kind: PipelineKind,
+    commands: &[(usize, Command)],
+) -> Result<Replayed, CliError> {
+    let (backend, size) = (args.backend, args.size);
     // The native path's accumulation buffer is OSMesa's window buffer (framebuffer 0):
     // Mesa gives framebuffer objects none.
-    let window = accum && kind == PipelineKind::Native;
+    let window = args.accum && kind == PipelineKind::Native;
     if window && backend != Backend::OsMesa {
         return Err(pipeline::PipelineError::NoAccumBuffer { backend }.into());
     }
@@ -49,7 +149,7 @@ pub fn run(
             TargetSpec::new(size.width, size.height, DepthBits::D24).with_stencil(),
         )?),
     };
-    let mut p: Box<dyn pipeline::Pipeline> = match (accum, kind) {
+    let mut p: Box<dyn pipeline::Pipeline> = match (args.accum, kind) {
         (false, _) => pipeline::create(kind, &ctx)?,
         (true, PipelineKind::Emulate) => {
             let mut e = pipeline::emulate::EmulatedPipeline::new(&ctx)?;
@@ -60,36 +160,46 @@ pub fn run(
             Box::new(pipeline::native::NativePipeline::with_window_accum(&ctx)?)
         }
     };
-    // One command at a time, so a GL error names the script line that raised it (GL keeps
-    // only the first error until glGetError; a script has no glGetError, so each is read
-    // and reported as it happens).
-    let mut errors = 0usize;
-    for (line, cmd) in &commands {
-        p.execute(&ctx, std::slice::from_ref(cmd))?;
-        if let Some(e) = p.take_gl_error() {
-            errors += 1;
-            eprintln!("{}:{line}: {}: {e}", file.display(), cmd.entry().name());
-        }
-    }
-    let image = match &target {
-        Some(t) => t.read_color(&ctx)?,
-        None => ctx.read_window_color(size.width, size.height)?,
-    };
-    super::scene_arg::save(&image, out)?;
-    let c = p.counters();
-    outln!(
-        "replay {}: {} commands, {} draws, {} programs compiled, {} state calls sent / {} skipped → {}",
-        file.display(),
-        c.commands,
-        c.draws,
-        c.programs_compiled,
-        c.state_calls_sent,
-        c.state_calls_skipped,
-        out.display()
-    )?;
-    if errors > 0 {
-        eprintln!("{errors} GL error(s) recorded (each named above with its line)");
-    }
+    let result = execute(args, kind, &ctx, p.as_mut(), commands).and_then(|errors| {
+        let image = match &target {
+            Some(t) => t.read_color(&ctx)?,
+            None => ctx.read_window_color(size.width, size.height)?,
+        };
+        Ok(Replayed {
+            image,
+            counters: p.counters(),
+            errors,
+        })
+    });
     p.release(&ctx);
-    Ok(())
+    result
+}
+
+/// Runs the commands one at a time, so that a GL error names its line; the count of GL
+/// errors, or under `--strict` the first as an error.
+fn execute(
+    args: &Args,
+    kind: PipelineKind,
+    ctx: &GpuContext,
+    p: &mut dyn pipeline::Pipeline,
+    commands: &[(usize, Command)],
+) -> Result<usize, CliError> {
+    let file = args.file.display();
+    let mut errors = 0usize;
+    for (line, cmd) in commands {
+        p.execute(ctx, std::slice::from_ref(cmd))?;
+        let Some(e) = p.take_gl_error() else { continue };
+        if args.strict {
+            return Err(CliError::StrictGlError {
+                file: file.to_string(),
+                kind: kind.name(),
+                line: *line,
+                entry: cmd.entry().name(),
+                error: e.to_string(),
+            });
+        }
+        errors += 1;
+        eprintln!("{file}:{line}: {}: {e}", cmd.entry().name());
+    }
+    Ok(errors)
 }

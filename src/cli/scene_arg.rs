@@ -80,6 +80,17 @@ where
     Ok(report::save_png(image, path)?)
 }
 
+/// `dir/name.png` + `label` → `dir/name-label.png` (a file written beside another).
+pub fn beside(path: &Path, label: &str) -> std::path::PathBuf {
+    let stem = path
+        .file_stem()
+        .map_or("image".into(), |s| s.to_string_lossy());
+    let ext = path
+        .extension()
+        .map_or("png".into(), |e| e.to_string_lossy());
+    path.with_file_name(format!("{stem}-{label}.{ext}"))
+}
+
 /// Refuses, before any work, PNG outputs that cannot be written (see
 /// `report::check_output`), that are not named `.png`, or two options that name one file.
 /// `outputs` pairs each option (`--out`) with its path.

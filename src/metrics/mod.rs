@@ -11,6 +11,7 @@
 //! RMSE of visibility, √(Σ (v_tech − v_truth)² / n), over the same geometry pixels.
 
 mod band;
+pub mod image_diff;
 mod mask;
 #[cfg(test)]
 mod tests;
@@ -27,6 +28,14 @@ pub enum MetricsError {
     SizeMismatch {
         technique: (u32, u32),
         truth: (u32, u32),
+    },
+    #[error(
+        "the images differ in size: {}×{} against the reference's {}×{}",
+        .image.0, .image.1, .reference.0, .reference.1
+    )]
+    ImageSizes {
+        image: (u32, u32),
+        reference: (u32, u32),
     },
     #[error("visibility has {got} values, the {width}×{height} mask needs {}", .width * .height)]
     VisibilityLength { got: usize, width: u32, height: u32 },
