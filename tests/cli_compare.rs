@@ -8,7 +8,7 @@ use std::path::Path;
 use std::process::{Command, Output};
 
 use fixedfunc::render::{render, ImageSize, RenderOptions};
-use fixedfunc::scene::Scene;
+use fixedfunc::scene::{OffsetSetting, Scene};
 use fixedfunc::study::{self, CompareSpec};
 
 fn fixedfunc(args: &[&str]) -> Output {
@@ -66,18 +66,34 @@ fn render_line(stdout: &str) -> (String, u64, u64) {
 }
 
 /// CSV rows as header → field maps (fields here hold no quotes or commas).
+/// One CSV line's fields as RFC 4180 quotes them (a quoted field may hold commas and
+/// doubled quotes; the report's fields hold no line breaks).
+fn csv_fields(line: &str) -> Vec<String> {
+    let mut fields = vec![String::new()];
+    let (mut quoted, mut chars) = (false, line.chars().peekable());
+    while let Some(c) = chars.next() {
+        match (c, quoted) {
+            ('"', true) if chars.peek() == Some(&'"') => {
+                chars.next();
+                fields.last_mut().expect("a field").push('"');
+            }
+            ('"', _) => quoted = !quoted,
+            (',', false) => fields.push(String::new()),
+            (c, _) => fields.last_mut().expect("a field").push(c),
+        }
+    }
+    fields
+}
+
 fn csv_rows(path: &Path) -> Vec<HashMap<String, String>> {
     let s = std::fs::read_to_string(path).expect("results.csv");
     let mut lines = s.lines();
-    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let header = csv_fields(lines.next().expect("header"));
     lines
-        .filter(|l| !l.contains('"'))
         .map(|l| {
-            header
-                .iter()
-                .zip(l.split(','))
-                .map(|(h, v)| (h.to_string(), v.to_string()))
-                .collect()
+            let fields = csv_fields(l);
+            assert_eq!(fields.len(), header.len(), "{l}");
+            header.iter().cloned().zip(fields).collect()
         })
         .collect()
 }
@@ -156,15 +172,24 @@ fn a_compare_row_has_exactly_the_figures_of_a_render_of_the_same_technique() {
         line["error_percent"].parse::<f64>().ok(),
         m["error_percent"].as_f64()
     );
+    // The offset the command line gave, and where it came from, in every form.
+    assert_eq!(line["polygon_offset"], "1,4");
+    assert_eq!(line["offset_source"], "command line");
+    assert_eq!(m["offset_source"], "command-line");
+    assert!(
+        text(&single.stdout).contains("offset 1,4 (command line)"),
+        "{}",
+        text(&single.stdout)
+    );
 }
 
 #[test]
 fn library_compare_rows_equal_library_renders() {
     let mut scene = Scene::default_scene();
-    scene.shadow.polygon_offset = Some(PolygonOffset {
+    scene.shadow.polygon_offset = OffsetSetting::command_line(Some(PolygonOffset {
         factor: 2.0,
         units: 4.0,
-    });
+    }));
     let size = Some(ImageSize {
         width: 80,
         height: 64,

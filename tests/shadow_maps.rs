@@ -6,7 +6,7 @@
 use fixedfunc::gpu::Backend;
 use fixedfunc::metrics::Mask;
 use fixedfunc::render::{self, ImageSize, RemakeMaps, RenderError, RenderOptions, RenderOutcome};
-use fixedfunc::scene::Scene;
+use fixedfunc::scene::{OffsetSetting, Scene};
 use fixedfunc::techniques;
 use fixedfunc::vocab::{
     DepthBits, MapFilter, PipelineKind, PolygonOffset, ReadbackRule, TechniqueId,
@@ -62,9 +62,10 @@ impl<'a> Run<'a> {
         self
     }
     fn try_render(mut self) -> Result<RenderOutcome, RenderError> {
-        self.scene.shadow.polygon_offset = self
-            .offset
-            .map(|(factor, units)| PolygonOffset { factor, units });
+        self.scene.shadow.polygon_offset = OffsetSetting::command_line(
+            self.offset
+                .map(|(factor, units)| PolygonOffset { factor, units }),
+        );
         self.scene.shadow.depth = self.depth;
         let options = RenderOptions {
             backend: Backend::Egl,
@@ -395,10 +396,10 @@ fn maps_are_made_again_only_when_the_light_moves() {
     use fixedfunc::render::{Orbit, OrbitTarget};
     let orbit = |target| {
         let mut scene = Scene::default_scene();
-        scene.shadow.polygon_offset = Some(PolygonOffset {
+        scene.shadow.polygon_offset = OffsetSetting::command_line(Some(PolygonOffset {
             factor: 1.0,
             units: 4.0,
-        });
+        }));
         render::render(
             &scene,
             &RenderOptions {

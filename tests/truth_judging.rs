@@ -7,7 +7,7 @@
 
 use fixedfunc::gpu::Backend;
 use fixedfunc::render::{render, RenderError, RenderOptions, Session};
-use fixedfunc::scene::{Projection, Scene};
+use fixedfunc::scene::{OffsetSetting, Projection, Scene};
 use fixedfunc::truth::{self, TruthOptions};
 use fixedfunc::vocab::{PipelineKind, PolygonOffset, TechniqueId};
 
@@ -90,10 +90,10 @@ fn large_far_over_near_ratios_are_judged_on_their_geometry() {
             near,
             far,
         };
-        scene.shadow.polygon_offset = Some(PolygonOffset {
+        scene.shadow.polygon_offset = OffsetSetting::command_line(Some(PolygonOffset {
             factor: 1.0,
             units: 4.0,
-        });
+        }));
         scene
     };
     let options = options(TechniqueId::DepthCompare);

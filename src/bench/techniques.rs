@@ -14,12 +14,12 @@
 //! (`RemakeMaps::WhenMoved`, the static scene), its steady frame — which should cost about
 //! the eye passes alone.
 
-use crate::vocab::{Named, PipelineKind, PolygonOffset, TechniqueId};
+use crate::vocab::{Named, PipelineKind, TechniqueId};
 use serde::Serialize;
 
 use crate::render::rounds::{self, Lane, Rules, Verdict};
 use crate::render::{ImageSize, PassTime, RemakeMaps, RenderError, RenderOptions, Session};
-use crate::scene::Scene;
+use crate::scene::{OffsetSetting, Scene};
 use crate::stats::Summary;
 
 /// One technique on one path.
@@ -52,21 +52,6 @@ pub struct Skipped {
     pub technique: TechniqueId,
     pub pipeline: PipelineKind,
     pub reason: String,
-}
-
-/// The bias each technique is benchmarked with (the one its tests judge it at).
-pub fn bench_offset(technique: TechniqueId) -> Option<PolygonOffset> {
-    let units = match technique {
-        TechniqueId::None => return None,
-        // Three 8-bit steps in a 24-bit buffer (two clear steps between map and ramp).
-        TechniqueId::Dual8 => 3.0 * 16_777_215.0 / 255.0 / 2.0,
-        TechniqueId::Multidigit16 | TechniqueId::Multidigit16Combine => 256.0,
-        TechniqueId::DepthCompare
-        | TechniqueId::Linear8
-        | TechniqueId::Planar
-        | TechniqueId::Projective => 4.0,
-    };
-    Some(PolygonOffset { factor: 1.0, units })
 }
 
 /// What the group keeps beside each session in the rounds.
@@ -108,7 +93,7 @@ pub fn measure(
             for remake in [RemakeMaps::Always, RemakeMaps::WhenMoved] {
                 let mut scene = Scene::default_scene();
                 scene.shadow.map_size = 512;
-                scene.shadow.polygon_offset = bench_offset(technique);
+                scene.shadow.polygon_offset = OffsetSetting::TechniqueDefault;
                 let options = RenderOptions {
                     pipeline,
                     technique: Some(technique),

@@ -3,7 +3,7 @@
 //! readback rule, and the projection techniques' modes.
 
 use clap::Args;
-use fixedfunc::scene::Scene;
+use fixedfunc::scene::{OffsetSetting, Scene};
 use fixedfunc::vocab::{
     DepthBits, MapFilter, OffsetArg, PlanarMode, Precision, Projector, ReadbackRule,
 };
@@ -18,7 +18,8 @@ pub struct ShadowArgs {
     #[arg(long, value_parser = super::named::named::<DepthBits>())]
     pub depth_bits: Option<DepthBits>,
     /// glPolygonOffset(FACTOR, UNITS) for the light pass, as FACTOR,UNITS; `none` for no
-    /// offset (default: the scene's `polygon_offset`).
+    /// offset, to see the acne (default: the scene's `polygon_offset`, else the
+    /// technique's own, listed in the README).
     #[arg(long, value_name = "FACTOR,UNITS", value_parser = parse_offset)]
     pub offset: Option<OffsetArg>,
     /// Arithmetic of the emulated texture and combiner stages (default: the scene's).
@@ -58,8 +59,8 @@ impl ShadowArgs {
             s.depth = v;
         }
         match self.offset {
-            Some(OffsetArg::None) => s.polygon_offset = None,
-            Some(OffsetArg::Offset(o)) => s.polygon_offset = Some(o),
+            Some(OffsetArg::None) => s.polygon_offset = OffsetSetting::command_line(None),
+            Some(OffsetArg::Offset(o)) => s.polygon_offset = OffsetSetting::command_line(Some(o)),
             None => {}
         }
         if let Some(v) = self.precision {

@@ -2,11 +2,13 @@
 //! against the truth, what a frame costs, and how much work the pipeline did.
 //!
 //! `none · emulate · egl · error 0.00% (false shadow 0, missed shadow 0) · 2.31 ms median
-//! of 9 [2.10–2.80], cold 45.20 ms · 1 pass · 2 programs`
+//! of 9 [2.10–2.80], cold 45.20 ms · 1 pass · 2 programs`; a shadow-map technique also says
+//! which polygon offset it used and where it came from, after the backend:
+//! `depth-compare · emulate · egl · offset 1,4 (technique default) · error …`.
 //!
 //! Error % = 100 · (false + missed + coverage) / truth geometry pixels (see `metrics`).
 
-use crate::vocab::{PipelineKind, TechniqueId};
+use crate::vocab::{offset_text, OffsetSource, PipelineKind, PolygonOffset, TechniqueId};
 use std::fmt;
 
 use crate::gpu::Backend;
@@ -27,19 +29,26 @@ pub struct Figures {
     pub programs: u64,
     /// Times the map passes ran.
     pub maps_made: u32,
+    /// The polygon offset and its source, for a technique that reads one.
+    pub offset: Option<(Option<PolygonOffset>, OffsetSource)>,
 }
 
 impl fmt::Display for Figures {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{} · {} · {} · error {:.2}% (false shadow {}, missed shadow {}) · ",
+            "{} · {} · {} · ",
             self.technique,
             pipeline_name(self.pipeline),
-            self.backend,
-            self.wrong_percent,
-            self.false_shadow,
-            self.missed_shadow,
+            self.backend
+        )?;
+        if let Some((offset, source)) = self.offset {
+            write!(f, "offset {} ({source}) · ", offset_text(offset))?;
+        }
+        write!(
+            f,
+            "error {:.2}% (false shadow {}, missed shadow {}) · ",
+            self.wrong_percent, self.false_shadow, self.missed_shadow,
         )?;
         match self.timings.steady {
             Some(s) => write!(
@@ -86,6 +95,7 @@ mod tests {
             passes: 1,
             programs: 2,
             maps_made: 0,
+            offset: None,
         }
     }
 
@@ -99,5 +109,21 @@ mod tests {
         let single = figures(Vec::new()).to_string();
         assert!(single.contains("40.00 ms (one cold frame)"), "{single}");
         assert!(!single.contains('\n'));
+    }
+
+    #[test]
+    fn a_shadow_map_technique_names_its_offset_and_its_source() {
+        let mut f = figures(vec![1.0]);
+        f.technique = TechniqueId::DepthCompare;
+        let kilgard = PolygonOffset {
+            factor: 1.0,
+            units: 4.0,
+        };
+        f.offset = Some((Some(kilgard), OffsetSource::TechniqueDefault));
+        assert!(f
+            .to_string()
+            .starts_with("depth-compare · emulate · egl · offset 1,4 (technique default) · error"));
+        f.offset = Some((None, OffsetSource::CommandLine));
+        assert!(f.to_string().contains("· offset none (command line) ·"));
     }
 }

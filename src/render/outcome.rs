@@ -1,7 +1,7 @@
 //! What a render produced: the image, the mask and its judgement, the frame times and the
 //! pipeline's counters — the values behind `render`'s figures line and every study row.
 
-use crate::vocab::{PipelineKind, TechniqueId};
+use crate::vocab::{OffsetSource, PipelineKind, PolygonOffset, TechniqueId};
 use image::RgbaImage;
 
 use crate::gpu::Backend;
@@ -70,6 +70,9 @@ pub struct RenderOutcome {
     pub light_map: Option<LightMap>,
     /// What the technique says about this scene (known failure modes it triggers).
     pub notes: Vec<String>,
+    /// The light pass's polygon offset and where it came from.
+    pub offset: Option<PolygonOffset>,
+    pub offset_source: OffsetSource,
 }
 
 /// One pass's times.
@@ -95,6 +98,10 @@ impl RenderOutcome {
             passes: self.passes,
             programs: self.counters.programs_compiled,
             maps_made: self.maps_made,
+            offset: self
+                .technique
+                .uses_offset()
+                .then_some((self.offset, self.offset_source)),
         }
     }
 }

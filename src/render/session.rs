@@ -276,6 +276,8 @@ impl Session {
             pass_times,
             light_map,
             notes: self.plan.notes.clone(),
+            offset: self.scene.shadow.offset(),
+            offset_source: self.scene.shadow.offset_source(),
         })
     }
 

@@ -92,10 +92,12 @@ fn remove_old_page(page: &Path) -> Result<(), ReportError> {
     }
 }
 
-const CSV_HEADER: [&str; 26] = [
+const CSV_HEADER: [&str; 28] = [
     "technique",
     "pipeline",
     "backend",
+    "polygon_offset",
+    "offset_source",
     "status",
     "skipped_because",
     "error_percent",
@@ -138,6 +140,8 @@ fn results_csv(c: &Comparison, rows: &[ResultRow]) -> String {
             r.technique.to_string(),
             crate::render::pipeline_name(r.pipeline).to_string(),
             r.backend.name().to_string(),
+            m.and_then(|m| m.offset.clone()).unwrap_or_default(),
+            opt(m.and_then(|m| m.offset_source)),
             if m.is_some() { "measured" } else { "skipped" }.to_string(),
             r.skipped.clone().unwrap_or_default(),
             opt(m.map(|m| m.error_percent)),
@@ -264,13 +268,10 @@ pub(super) fn scene_facts(scene: &Scene) -> Vec<(String, String)> {
     facts.push((
         "shadow map".to_string(),
         format!(
-            "{}² texels, {} depth, polygon offset {}, {:?} precision, {:?} filter",
+            "{}² texels, {} depth, {}, {:?} precision, {:?} filter",
             s.map_size,
             super::heatmap::depth_label(s.depth),
-            s.polygon_offset.map_or("none".to_string(), |o| format!(
-                "({}, {})",
-                o.factor, o.units
-            )),
+            super::offset_brief(s),
             s.precision,
             s.filter
         ),

@@ -154,11 +154,7 @@ fn shadow_brief(s: &crate::scene::ShadowSettings) -> String {
         "{}² texels, {} depth, {}",
         s.map_size,
         super::heatmap::depth_label(s.depth),
-        s.polygon_offset
-            .map_or("no polygon offset".to_string(), |o| format!(
-                "polygon offset ({}, {})",
-                o.factor, o.units
-            ))
+        super::offset_brief(s)
     )
 }
 
@@ -172,7 +168,7 @@ fn table(h: &mut String, rows: &[ResultRow]) {
     let (max_err, max_ms) = (max(|m| m.error_percent), max(|m| m.typical_ms));
     h.push_str(
         "<h2>Results</h2><table><tr><th class=\"name\">technique</th><th class=\"name\">pipeline</th>\
-         <th>error %</th><th>false shadow</th><th>missed shadow</th><th>error % outside edge band</th>\
+         <th class=\"name\">polygon offset</th><th>error %</th><th>false shadow</th><th>missed shadow</th><th>error % outside edge band</th>\
          <th>ms per frame: median [min–max]</th><th>cold frame ms</th><th>passes</th>\
          <th>programs</th><th>maps made</th></tr>\n",
     );
@@ -192,10 +188,11 @@ fn table(h: &mut String, rows: &[ResultRow]) {
             (Some(m), _) => {
                 let _ = writeln!(
                     h,
-                    "<tr{}>{name}<td class=\"bar err\" style=\"--w:{:.0}%\">{:.2}</td><td>{}</td><td>{}</td>\
+                    "<tr{}>{name}<td class=\"name\">{}</td><td class=\"bar err\" style=\"--w:{:.0}%\">{:.2}</td><td>{}</td><td>{}</td>\
                      <td>{:.2}</td><td class=\"bar time\" style=\"--w:{:.0}%\">{}</td><td>{:.1}</td>\
                      <td>{}</td><td>{}</td><td>{}</td></tr>",
                     if r.pareto { " class=\"front\"" } else { "" },
+                    escape(&m.offset_cell()),
                     100.0 * m.error_percent / max_err,
                     m.error_percent,
                     m.false_shadow,
@@ -212,7 +209,7 @@ fn table(h: &mut String, rows: &[ResultRow]) {
             (None, reason) => {
                 let _ = writeln!(
                     h,
-                    "<tr class=\"skip\">{name}<td class=\"name\" colspan=\"9\">skipped: {}</td></tr>",
+                    "<tr class=\"skip\">{name}<td class=\"name\" colspan=\"10\">skipped: {}</td></tr>",
                     escape(reason.as_deref().unwrap_or("not run"))
                 );
             }

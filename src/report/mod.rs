@@ -146,3 +146,17 @@ fn plot_error(path: &Path) -> impl Fn(&dyn std::fmt::Display) -> ReportError + '
         message: e.to_string(),
     }
 }
+
+/// The scene's polygon offset in words: `each technique's default polygon offset`, or the
+/// one given and by whom (`polygon offset (1, 4) from the command line`).
+fn offset_brief(s: &crate::scene::ShadowSettings) -> String {
+    use crate::scene::OffsetSetting;
+    match s.polygon_offset {
+        OffsetSetting::TechniqueDefault => "each technique's default polygon offset".to_string(),
+        OffsetSetting::Given { offset: None, by } => format!("no polygon offset (from the {by})"),
+        OffsetSetting::Given {
+            offset: Some(o),
+            by,
+        } => format!("polygon offset ({}, {}) from the {by}", o.factor, o.units),
+    }
+}

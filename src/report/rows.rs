@@ -4,7 +4,7 @@
 //! least as fast and at least as accurate and strictly better in one of the two. The time
 //! is the typical frame (steady median; the cold frame when it is the only one).
 
-use crate::vocab::{PipelineKind, TechniqueId};
+use crate::vocab::{offset_text, OffsetSource, PipelineKind, TechniqueId};
 use serde::Serialize;
 
 use crate::gpu::Backend;
@@ -43,6 +43,20 @@ pub struct Measured {
     pub maps_made: u32,
     /// What the technique says about this scene.
     pub notes: Vec<String>,
+    /// The polygon offset as `FACTOR,UNITS` or `none`, and where it came from; `None` for
+    /// a technique that reads no offset.
+    pub offset: Option<String>,
+    pub offset_source: Option<OffsetSource>,
+}
+
+impl Measured {
+    /// `1,4 (technique default)`, or `—` for a technique that reads no offset.
+    pub fn offset_cell(&self) -> String {
+        match (&self.offset, self.offset_source) {
+            (Some(o), Some(source)) => format!("{o} ({source})"),
+            _ => "—".to_string(),
+        }
+    }
 }
 
 impl Measured {
@@ -71,6 +85,8 @@ impl Measured {
             programs_compiled: fig.programs,
             maps_made: fig.maps_made,
             notes: outcome.notes.clone(),
+            offset: fig.offset.map(|(o, _)| offset_text(o)),
+            offset_source: fig.offset.map(|(_, source)| source),
         }
     }
 }

@@ -6,9 +6,10 @@ use crate::study::{Comparison, RowResult};
 
 use super::ResultRow;
 
-const HEADER: [&str; 11] = [
+const HEADER: [&str; 12] = [
     "technique",
     "pipeline",
+    "offset",
     "error %",
     "false",
     "missed",
@@ -38,6 +39,7 @@ pub fn comparison_table(rows: &[ResultRow]) -> String {
             (Some(m), _) => lines.push(vec![
                 name,
                 pipeline_name(r.pipeline).to_string(),
+                m.offset_cell(),
                 format!("{:.2}", m.error_percent),
                 m.false_shadow.to_string(),
                 m.missed_shadow.to_string(),
@@ -73,8 +75,8 @@ pub fn comparison_table(rows: &[ResultRow]) -> String {
             .enumerate()
             .map(|(c, (text, &w))| {
                 let pad = w - text.chars().count();
-                // Names left, numbers right.
-                if c < 2 {
+                // Names (and the offset) left, numbers right.
+                if c < 3 {
                     format!("{text}{}", " ".repeat(pad))
                 } else {
                     format!("{}{text}", " ".repeat(pad))
@@ -148,6 +150,8 @@ mod tests {
             programs_compiled: 4,
             maps_made: 1,
             notes: Vec::new(),
+            offset: Some("1,4".to_string()),
+            offset_source: Some(crate::vocab::OffsetSource::Scene),
         };
         let row = |t: TechniqueId, m: Option<super::super::Measured>| ResultRow {
             technique: t,
@@ -165,6 +169,7 @@ mod tests {
             row(TechniqueId::Multidigit16, None),
         ]);
         assert!(text.contains("dual8 *"), "{text}");
+        assert!(text.contains("1,4 (scene)"), "{text}");
         assert!(text.contains("2.00 [1.50–3.00]"), "{text}");
         assert!(
             text.contains("skipped multidigit16 on native: register combiners are not supported"),

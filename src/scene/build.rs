@@ -2,7 +2,7 @@
 //! finds with the key's dotted path (`light[0].near`) and its line.
 //!
 //! Defaults: a missing `[camera]` or `[image]` is the default scene's; a missing `[shadow]`
-//! is technique `none`, a 256² D24 map, no offset, float precision, the driver's depth readback, nearest filtering.
+//! is technique `none`, a 256² D24 map, the technique's default offset, float precision, the driver's depth readback, nearest filtering.
 //! A light's `up` defaults to +y, or −z when the light looks along ±y (gluLookAt needs an
 //! up that is not parallel to the view); an explicit `up` along the view is an error.
 
@@ -12,7 +12,7 @@ use super::limits::MAX_IMAGE_SIZE;
 use super::raw::*;
 use super::types::*;
 use crate::mesh;
-use crate::vocab::{DepthBits, Named, PolygonOffset, TechniqueId};
+use crate::vocab::{DepthBits, Named, OffsetSource, PolygonOffset, TechniqueId};
 use glam::Vec3;
 use std::ops::Range;
 use toml::Spanned;
@@ -733,13 +733,16 @@ fn shadow(ctx: &Ctx, s: &RawShadow) -> Result<ShadowSettings> {
         },
     };
     let polygon_offset = match &s.polygon_offset {
-        None => None,
+        None => OffsetSetting::TechniqueDefault,
         Some(o) => {
             let RawOffset { factor, units } = *o.get_ref();
             if !(factor.is_finite() && units.is_finite()) {
                 return Err(ctx.invalid(o.span(), "shadow.polygon_offset", Problem::NotFinite));
             }
-            Some(PolygonOffset { factor, units })
+            OffsetSetting::Given {
+                offset: Some(PolygonOffset { factor, units }),
+                by: OffsetSource::Scene,
+            }
         }
     };
     Ok(ShadowSettings {

@@ -1,7 +1,7 @@
 //! Table tests of the scene errors: each bad input names its line, key and alternatives.
 
 use super::*;
-use crate::vocab::{DepthBits, PolygonOffset, Precision, ReadbackRule};
+use crate::vocab::{DepthBits, OffsetSource, PolygonOffset, Precision, ReadbackRule, TechniqueId};
 use std::path::Path;
 
 fn parse(text: &str) -> Result<Scene, SceneError> {
@@ -145,10 +145,24 @@ fn shadow_table_values() {
     assert_eq!(s.depth, DepthBits::D32F);
     assert_eq!(
         s.polygon_offset,
-        Some(PolygonOffset {
-            factor: 1.5,
-            units: 4.0
-        })
+        OffsetSetting::Given {
+            offset: Some(PolygonOffset {
+                factor: 1.5,
+                units: 4.0
+            }),
+            by: OffsetSource::Scene
+        }
+    );
+    assert_eq!(s.offset_source(), OffsetSource::Scene);
+    // Without a polygon_offset the technique's default applies.
+    let d = parse("[shadow]\ntechnique = \"dual8\"\ndepth_bits = 16\n")
+        .expect("parses")
+        .shadow;
+    assert_eq!(d.polygon_offset, OffsetSetting::TechniqueDefault);
+    assert_eq!(d.offset_source(), OffsetSource::TechniqueDefault);
+    assert_eq!(
+        d.offset(),
+        crate::vocab::default_offset(TechniqueId::Dual8, DepthBits::D16)
     );
     assert_eq!(
         (s.precision, s.readback),

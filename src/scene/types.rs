@@ -2,8 +2,8 @@
 
 use crate::mesh::{self, Mesh};
 use crate::vocab::{
-    DepthBits, MapFilter, PlanarMode, PolygonOffset, Precision, Projector, ReadbackRule,
-    TechniqueId,
+    default_offset, DepthBits, MapFilter, OffsetSource, PlanarMode, PolygonOffset, Precision,
+    Projector, ReadbackRule, TechniqueId,
 };
 use glam::{Mat4, Vec3};
 
@@ -267,6 +267,30 @@ impl Object {
     }
 }
 
+/// A polygon offset as the scene and the command line leave it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum OffsetSetting {
+    /// Neither gave one: the technique's default at the map's depth bits
+    /// (`vocab::default_offset`).
+    TechniqueDefault,
+    /// Given by the scene or the command line (`by` is never `TechniqueDefault`); `None`
+    /// is no offset.
+    Given {
+        offset: Option<PolygonOffset>,
+        by: OffsetSource,
+    },
+}
+
+impl OffsetSetting {
+    /// Given on the command line (or by a sweep's grid).
+    pub fn command_line(offset: Option<PolygonOffset>) -> OffsetSetting {
+        OffsetSetting::Given {
+            offset,
+            by: OffsetSource::CommandLine,
+        }
+    }
+}
+
 /// The `[shadow]` table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShadowSettings {
@@ -276,8 +300,9 @@ pub struct ShadowSettings {
     pub map_size: u32,
     /// Default D24.
     pub depth: DepthBits,
-    /// `None`: no offset.
-    pub polygon_offset: Option<PolygonOffset>,
+    /// The light pass's polygon offset: given, or the technique's default
+    /// ([`ShadowSettings::offset`] resolves it).
+    pub polygon_offset: OffsetSetting,
     /// Default Float.
     pub precision: Precision,
     /// How integer depth maps are read back. Default Driver: glReadPixels with the integer
@@ -297,12 +322,31 @@ impl Default for ShadowSettings {
             technique: TechniqueId::None,
             map_size: 256,
             depth: DepthBits::D24,
-            polygon_offset: None,
+            polygon_offset: OffsetSetting::TechniqueDefault,
             precision: Precision::Float,
             readback: ReadbackRule::Driver,
             filter: MapFilter::Nearest,
             planar_mode: PlanarMode::Offset,
             projector: Projector::PseudoDepth,
+        }
+    }
+}
+
+impl ShadowSettings {
+    /// The polygon offset the light pass uses: the one given, else the technique's default
+    /// for the map's depth bits.
+    pub fn offset(&self) -> Option<PolygonOffset> {
+        match self.polygon_offset {
+            OffsetSetting::TechniqueDefault => default_offset(self.technique, self.depth),
+            OffsetSetting::Given { offset, .. } => offset,
+        }
+    }
+
+    /// Where [`ShadowSettings::offset`] comes from.
+    pub fn offset_source(&self) -> OffsetSource {
+        match self.polygon_offset {
+            OffsetSetting::TechniqueDefault => OffsetSource::TechniqueDefault,
+            OffsetSetting::Given { by, .. } => by,
         }
     }
 }

@@ -12,7 +12,7 @@ use std::time::Instant;
 use crate::gpu::Backend;
 use crate::metrics::Metrics;
 use crate::render::{self, pipeline_name, ImageSize, RenderError, RenderOptions, Session};
-use crate::scene::{Scene, ShadowSettings};
+use crate::scene::{OffsetSetting, Scene, ShadowSettings};
 use crate::truth::{self, Truth};
 
 use super::{ms_since, not_applicable, Progress, StudyError, SweepRange};
@@ -140,7 +140,7 @@ pub fn sweep(
     for &depth in &spec.depths {
         for &pipeline in &spec.pipelines {
             scene.shadow.depth = depth;
-            scene.shadow.polygon_offset = offsets.first().copied();
+            scene.shadow.polygon_offset = OffsetSetting::command_line(offsets.first().copied());
             let options = RenderOptions {
                 pipeline,
                 ..base.clone()
@@ -201,7 +201,7 @@ fn grid(
         let t = Instant::now();
         if i > 0 {
             session.restage(&ShadowSettings {
-                polygon_offset: Some(offset),
+                polygon_offset: OffsetSetting::command_line(Some(offset)),
                 ..session.scene().shadow.clone()
             })?;
         }

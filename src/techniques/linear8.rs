@@ -52,7 +52,7 @@ pub const TECHNIQUE: Technique = Technique {
 
 /// b = units/256: the scene's polygon offset units as ramp steps (see the module note).
 pub fn bias(scene: &Scene) -> f32 {
-    scene.shadow.polygon_offset.map_or(0.0, |o| o.units / 256.0)
+    scene.shadow.offset().map_or(0.0, |o| o.units / 256.0)
 }
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {

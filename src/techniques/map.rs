@@ -50,7 +50,7 @@ impl MapSettings {
         MapSettings {
             size: scene.shadow.map_size,
             depth: scene.shadow.depth,
-            offset: scene.shadow.polygon_offset,
+            offset: scene.shadow.offset(),
             filter: scene.shadow.filter,
             readback: scene.shadow.readback,
         }

@@ -5,10 +5,12 @@
 //! scene reader both read the names through [`Named`], so the spelling a user types lives
 //! next to the value it means and nowhere else.
 
+mod bias;
 mod depth;
 mod settings;
 mod technique;
 
+pub use bias::{default_offset, offset_text, OffsetSource};
 pub use depth::{DepthBits, DepthRule, ReadbackRule};
 pub use settings::{
     BadOffset, MapFilter, OffsetArg, PipelineKind, PlanarMode, PolygonOffset, Precision, Projector,

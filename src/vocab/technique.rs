@@ -31,6 +31,21 @@ impl Named for TechniqueId {
     ];
 }
 
+impl TechniqueId {
+    /// Whether the light pass of the technique reads the polygon offset (the shadow-map
+    /// techniques; `planar` keeps its shadow off the receiver by its own means).
+    pub fn uses_offset(self) -> bool {
+        matches!(
+            self,
+            TechniqueId::DepthCompare
+                | TechniqueId::Dual8
+                | TechniqueId::Linear8
+                | TechniqueId::Multidigit16
+                | TechniqueId::Multidigit16Combine
+        )
+    }
+}
+
 impl std::fmt::Display for TechniqueId {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         // `pad`, so that widths and alignment (`{:<22}`) apply as they do to the name.
