@@ -257,3 +257,36 @@ fn bad_ranges_are_refused_with_the_reason() {
     assert!(!run.status.success());
     assert!(text(&run.stderr).contains("--units"));
 }
+
+#[test]
+fn a_best_cell_on_the_grids_edge_is_warned_of_and_units_are_shown_in_depth_steps() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("sweep");
+    // Two units values: whichever is best lies on a side of the grid.
+    let run = fixedfunc(&[
+        "sweep-bias",
+        "--technique",
+        "depth-compare",
+        "--factor",
+        "0",
+        "--units",
+        "0..4:2",
+        "--depth-bits",
+        "24",
+        "--size",
+        "96x96",
+        "--map-size",
+        MAP,
+        "--out",
+        arg(&out),
+    ]);
+    let stdout = text(&run.stdout);
+    assert!(run.status.success(), "{}", text(&run.stderr));
+    let low = stdout.contains("best offset (0, 0), units = 0 LSB of 24-bit depth")
+        && stdout.contains("warning: the best cell lies on the grid's edge (the lowest units)");
+    let high = stdout.contains("best offset (0, 4), units = 8 LSB of 24-bit depth")
+        && stdout.contains("warning: the best cell lies on the grid's edge (the highest units)");
+    assert!(low != high, "{stdout}");
+    // The factor is fixed (one value): no warning names it.
+    assert!(!stdout.contains("factor)"), "{stdout}");
+}

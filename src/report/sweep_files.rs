@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use crate::render::pipeline_name;
 use crate::stats::Summary;
-use crate::study::{Cell, SurfaceResult, Sweep};
+use crate::study::{edges, Cell, SurfaceResult, Sweep};
 use crate::vocab::TechniqueId;
 
 use super::csv::line;
@@ -221,15 +221,25 @@ pub fn sweep_summary(s: &Sweep) -> String {
                 let a = &b.metrics.all;
                 let t = cell_times(cells);
                 out.push_str(&format!(
-                    "{head} best offset ({}, {}): error {:.2}% (false shadow {}, missed shadow {}) · cell {:.1} ms median, setup {:.0} ms\n",
+                    "{head} best offset ({}, {}), units = {}: error {:.2}% (false shadow {}, missed shadow {}) · cell {:.1} ms median, setup {:.0} ms\n",
                     b.factor,
                     b.units,
+                    surface.depth.offset_units_in_steps(b.units),
                     a.wrong_percent,
                     a.false_shadow,
                     a.missed_shadow,
                     t.map_or(0.0, |t| t.median),
                     setup_ms
                 ));
+                let sides = edges(*best, s.factors.len(), s.units.len());
+                if !sides.is_empty() {
+                    let names: Vec<String> = sides.iter().map(|e| e.to_string()).collect();
+                    out.push_str(&format!(
+                        "{head} warning: the best cell lies on the grid's edge ({}): a better \
+                         offset may lie beyond it; widen --factor/--units past that side\n",
+                        names.join(", ")
+                    ));
+                }
             }
             SurfaceResult::Skipped { reason } => {
                 out.push_str(&format!("{head} skipped: {reason}\n"));

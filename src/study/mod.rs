@@ -26,7 +26,7 @@ pub mod sweep;
 
 pub use compare::{compare, CompareSpec, Comparison, Row, RowCost, RowResult};
 pub use range::{RangeProblem, SweepRange};
-pub use sweep::{sweep, Cell, Surface, SurfaceResult, Sweep, SweepSpec};
+pub use sweep::{edges, sweep, Cell, Edge, Surface, SurfaceResult, Sweep, SweepSpec};
 
 use crate::pipeline::PipelineError;
 use crate::render::RenderError;

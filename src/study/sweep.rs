@@ -82,6 +82,54 @@ pub struct Sweep {
     pub total_ms: f64,
 }
 
+/// A side of the grid a cell lies on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Edge {
+    LowestFactor,
+    HighestFactor,
+    LowestUnits,
+    HighestUnits,
+}
+
+impl std::fmt::Display for Edge {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Edge::LowestFactor => "the lowest factor",
+            Edge::HighestFactor => "the highest factor",
+            Edge::LowestUnits => "the lowest units",
+            Edge::HighestUnits => "the highest units",
+        })
+    }
+}
+
+/// The edges of a `factors` × `units` grid that cell `index` (row-major, see
+/// [`SurfaceResult::Measured`]) lies on. An axis of one value has no edge: the user fixed
+/// it. A best cell on an edge says the best offset may lie beyond the grid.
+pub fn edges(index: usize, factors: usize, units: usize) -> Vec<Edge> {
+    if factors == 0 {
+        return Vec::new();
+    }
+    let (u, f) = (index / factors, index % factors);
+    let mut out = Vec::new();
+    if factors > 1 {
+        if f == 0 {
+            out.push(Edge::LowestFactor);
+        }
+        if f + 1 == factors {
+            out.push(Edge::HighestFactor);
+        }
+    }
+    if units > 1 {
+        if u == 0 {
+            out.push(Edge::LowestUnits);
+        }
+        if u + 1 == units {
+            out.push(Edge::HighestUnits);
+        }
+    }
+    out
+}
+
 /// Index of the best cell (see the module note); `None` for no cells.
 pub fn best(cells: &[Cell]) -> Option<usize> {
     (0..cells.len()).min_by_key(|&i| cells[i].score())
@@ -246,6 +294,20 @@ mod tests {
             },
             ms: 0.0,
         }
+    }
+
+    #[test]
+    fn a_cell_on_a_side_of_the_grid_names_it_and_a_fixed_axis_has_no_side() {
+        // 3 factors × 2 units: index 0 is (lowest factor, lowest units), 4 the middle
+        // factor of the highest units.
+        assert_eq!(edges(0, 3, 2), [Edge::LowestFactor, Edge::LowestUnits]);
+        assert_eq!(edges(4, 3, 2), [Edge::HighestUnits]);
+        assert_eq!(edges(5, 3, 2), [Edge::HighestFactor, Edge::HighestUnits]);
+        // 3 × 3: the centre is inside.
+        assert_eq!(edges(4, 3, 3), []);
+        // One factor (fixed): only the units' sides count.
+        assert_eq!(edges(1, 1, 3), []);
+        assert_eq!(edges(2, 1, 3), [Edge::HighestUnits]);
     }
 
     #[test]

@@ -38,6 +38,35 @@ impl DepthBits {
     pub fn is_float(self) -> bool {
         matches!(self, DepthBits::D32F)
     }
+
+    /// What `units` of glPolygonOffset move a depth by on llvmpipe, in the format's own
+    /// steps: one unit is two LSBs of a 16- or 24-bit buffer (measured at 24 bits: ±1 unit
+    /// → ±2 LSB, `../notes` H7; a 16-bit buffer needs 1/256 of the units a 24-bit one
+    /// does for the same shift), and 2⁻²⁴ of a 32-bit float buffer at depths in
+    /// [0.5, 1) (GL: r = 2^(e − 23) for the largest exponent e of the primitive's depths;
+    /// twice the units a 24-bit buffer needs).
+    pub fn offset_units_in_steps(self, units: f32) -> String {
+        let steps = 2.0 * f64::from(units);
+        match self {
+            DepthBits::D16 => format!("{} LSB of 16-bit depth", short(steps)),
+            DepthBits::D24 => format!("{} LSB of 24-bit depth", short(steps)),
+            DepthBits::D32F => format!(
+                "{} × 2⁻²⁴ of 32-bit float depth in [0.5, 1)",
+                short(f64::from(units))
+            ),
+        }
+    }
+}
+
+/// A number with at most 4 significant decimals, no trailing zeros.
+fn short(x: f64) -> String {
+    let t = format!("{x:.4}");
+    let t = t.trim_end_matches('0').trim_end_matches('.');
+    if t == "-0" {
+        "0".to_string()
+    } else {
+        t.to_string()
+    }
 }
 
 impl Named for DepthBits {
@@ -118,5 +147,26 @@ impl<'de> Deserialize<'de> for ReadbackRule {
         ReadbackRule::from_name(&name).ok_or_else(|| {
             serde::de::Error::unknown_variant(&name, &["driver", "truncate", "round"])
         })
+    }
+}
+
+#[cfg(test)]
+mod offset_unit_tests {
+    use super::DepthBits;
+
+    #[test]
+    fn a_unit_is_two_lsbs_of_a_fixed_point_buffer_and_one_2_to_the_minus_24_of_a_float_one() {
+        assert_eq!(
+            DepthBits::D24.offset_units_in_steps(4.0),
+            "8 LSB of 24-bit depth"
+        );
+        assert_eq!(
+            DepthBits::D16.offset_units_in_steps(0.5),
+            "1 LSB of 16-bit depth"
+        );
+        assert_eq!(
+            DepthBits::D32F.offset_units_in_steps(1.25),
+            "1.25 × 2⁻²⁴ of 32-bit float depth in [0.5, 1)"
+        );
     }
 }
