@@ -172,6 +172,29 @@ fn a_compare_row_has_exactly_the_figures_of_a_render_of_the_same_technique() {
         line["error_percent"].parse::<f64>().ok(),
         m["error_percent"].as_f64()
     );
+    // What produced the numbers: the version, the command line, the GL strings.
+    let produced = &report["produced_by"];
+    assert_eq!(
+        produced["fixedfunc_version"].as_str(),
+        Some(env!("CARGO_PKG_VERSION"))
+    );
+    let command = produced["command_line"].as_str().expect("command line");
+    assert!(
+        command.contains("compare --techniques none,depth-compare"),
+        "{command}"
+    );
+    let contexts = report["contexts"].as_array().expect("contexts");
+    assert!(
+        !contexts.is_empty()
+            && contexts.iter().all(|c| c["renderer"]
+                .as_str()
+                .is_some_and(|r| r.contains("llvmpipe"))),
+        "{contexts:?}"
+    );
+    assert!(line["gl_renderer"].contains("llvmpipe"), "{line:?}");
+    assert_eq!(line["command_line"], command);
+    let page = std::fs::read_to_string(out.join("report.html")).expect("page");
+    assert!(page.contains("produced by") && page.contains("llvmpipe"));
     // The offset the command line gave, and where it came from, in every form.
     assert_eq!(line["polygon_offset"], "1,4");
     assert_eq!(line["offset_source"], "command line");

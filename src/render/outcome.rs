@@ -73,6 +73,9 @@ pub struct RenderOutcome {
     /// The light pass's polygon offset and where it came from.
     pub offset: Option<PolygonOffset>,
     pub offset_source: OffsetSource,
+    /// glGetString(GL_RENDERER) and glGetString(GL_VERSION) of the context it ran on.
+    pub gl_renderer: String,
+    pub gl_version: String,
 }
 
 /// One pass's times.

@@ -19,6 +19,7 @@
 //! (the image's corner of the framebuffer) and the light's map when asked, takes the
 //! counters, releases the GL objects, and judges the mask against the truth.
 
+use glow::HasContext;
 use std::time::Instant;
 
 use image::RgbaImage;
@@ -233,6 +234,15 @@ impl Session {
     /// objects, and judges the mask against `truth` (ray-cast now when `None`).
     pub fn finish(mut self, truth: Option<&Truth>) -> Result<RenderOutcome, RenderError> {
         let gpu = self.read_results();
+        // What ran it, while the context is current (`read_results` made it so).
+        // SAFETY: glGetString on the current context.
+        let (gl_renderer, gl_version) = unsafe {
+            let gl = self.ctx.gl();
+            (
+                gl.get_parameter_string(glow::RENDERER),
+                gl.get_parameter_string(glow::VERSION),
+            )
+        };
         self.release();
         let (image, mask, light_map) = gpu?;
         let truth = match truth {
@@ -278,6 +288,8 @@ impl Session {
             notes: self.plan.notes.clone(),
             offset: self.scene.shadow.offset(),
             offset_source: self.scene.shadow.offset_source(),
+            gl_renderer,
+            gl_version,
         })
     }
 

@@ -1,7 +1,8 @@
 //! The files of a comparison, written into one folder: per measured row its image, mask
 //! and error image; the truth mask; `results.csv` and `results.json`;
 //! `accuracy_vs_time.svg`/`.png`; `contact_sheet.png`; and last `report.html`, built from
-//! the list of what was written. A `report.html` already in the folder is removed before
+//! the list of what was written. The CSV, the JSON and the page each say what produced
+//! them (`provenance`). A `report.html` already in the folder is removed before
 //! the first new file is written: a run stopped half-way leaves new pictures and no page,
 //! never an old page that links new pictures under its old names.
 
@@ -15,6 +16,7 @@ use crate::study::{Comparison, RowCost, RowResult};
 use super::csv::{line, opt};
 use super::file_names::{RowFiles, CSV, HTML, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
 use super::pictures::{self, SheetLine};
+use super::provenance::{self, ContextStrings, Provenance};
 use super::{ensure_dir, html, plot, write_png, write_text, ReportError, ResultRow, Written};
 
 /// Writes every file of the comparison into `dir` (created when missing). `scene_name`
@@ -27,6 +29,8 @@ pub fn write_comparison(
     ensure_dir(dir)?;
     remove_old_page(&dir.join(HTML))?;
     let rows = ResultRow::all(&c.rows);
+    let produced = Provenance::of_this_process();
+    let contexts = provenance::contexts(&rows);
     let mut written = Written::default();
     let truth_rgb = pictures::mask_rgb(&c.truth.mask);
     write_png(dir, TRUTH_MASK, &c.truth.mask.to_image(), &mut written)?;
@@ -46,11 +50,11 @@ pub fn write_comparison(
         pictures_of.push((pictures::row_label(result), [image, mask, error]));
     }
 
-    write_text(dir, CSV, &results_csv(c, &rows), &mut written)?;
+    write_text(dir, CSV, &results_csv(c, &rows, &produced), &mut written)?;
     write_text(
         dir,
         JSON,
-        &results_json(c, &rows, scene_name)?,
+        &results_json(c, &rows, scene_name, &produced, &contexts)?,
         &mut written,
     )?;
 
@@ -76,7 +80,9 @@ pub fn write_comparison(
     let sheet = pictures::contact_sheet(&title, size, &lines, &dir.join(SHEET))?;
     write_png(dir, SHEET, &sheet, &mut written)?;
 
-    let page = html::page(c, &rows, scene_name, &scene_facts(&c.scene), &written);
+    let mut facts = scene_facts(&c.scene);
+    facts.extend(provenance::facts(&produced, &contexts));
+    let page = html::page(c, &rows, scene_name, &facts, &written);
     write_text(dir, HTML, &page, &mut written)?;
     Ok(written)
 }
@@ -92,7 +98,7 @@ fn remove_old_page(page: &Path) -> Result<(), ReportError> {
     }
 }
 
-const CSV_HEADER: [&str; 28] = [
+const CSV_HEADER: [&str; 32] = [
     "technique",
     "pipeline",
     "backend",
@@ -121,6 +127,10 @@ const CSV_HEADER: [&str; 28] = [
     "setup_ms",
     "frames_total_ms",
     "finish_ms",
+    "gl_renderer",
+    "gl_version",
+    "fixedfunc_version",
+    "command_line",
 ];
 
 fn cost(result: &RowResult) -> Option<RowCost> {
@@ -131,7 +141,7 @@ fn cost(result: &RowResult) -> Option<RowCost> {
 }
 
 /// One line per row; numbers at full precision, empty fields where a row has none.
-fn results_csv(c: &Comparison, rows: &[ResultRow]) -> String {
+fn results_csv(c: &Comparison, rows: &[ResultRow], produced: &Provenance) -> String {
     let mut out = line(&CSV_HEADER);
     for (r, row) in rows.iter().zip(&c.rows) {
         let m = r.measured.as_ref();
@@ -165,6 +175,10 @@ fn results_csv(c: &Comparison, rows: &[ResultRow]) -> String {
             opt(k.map(|k| k.setup_ms)),
             opt(k.map(|k| k.frames_ms)),
             opt(k.map(|k| k.finish_ms)),
+            m.map(|m| m.gl_renderer.clone()).unwrap_or_default(),
+            m.map(|m| m.gl_version.clone()).unwrap_or_default(),
+            produced.fixedfunc_version.to_string(),
+            produced.command_line.clone(),
         ]));
     }
     out
@@ -179,6 +193,8 @@ struct JsonRow<'a> {
 
 #[derive(Serialize)]
 struct JsonReport<'a> {
+    produced_by: &'a Provenance,
+    contexts: &'a [ContextStrings],
     scene: &'a str,
     facts: Vec<(String, String)>,
     width: u32,
@@ -189,8 +205,16 @@ struct JsonReport<'a> {
     rows: Vec<JsonRow<'a>>,
 }
 
-fn results_json(c: &Comparison, rows: &[ResultRow], scene: &str) -> Result<String, ReportError> {
+fn results_json(
+    c: &Comparison,
+    rows: &[ResultRow],
+    scene: &str,
+    produced: &Provenance,
+    contexts: &[ContextStrings],
+) -> Result<String, ReportError> {
     let report = JsonReport {
+        produced_by: produced,
+        contexts,
         scene,
         facts: scene_facts(&c.scene),
         width: c.scene.image.width,

@@ -30,6 +30,7 @@ mod html;
 mod light_map;
 mod pictures;
 mod plot;
+pub mod provenance;
 mod rows;
 mod sweep_files;
 mod table;

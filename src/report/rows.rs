@@ -47,6 +47,9 @@ pub struct Measured {
     /// a technique that reads no offset.
     pub offset: Option<String>,
     pub offset_source: Option<OffsetSource>,
+    /// glGetString(GL_RENDERER) and (GL_VERSION) of the context the row ran on.
+    pub gl_renderer: String,
+    pub gl_version: String,
 }
 
 impl Measured {
@@ -87,6 +90,8 @@ impl Measured {
             notes: outcome.notes.clone(),
             offset: fig.offset.map(|(o, _)| offset_text(o)),
             offset_source: fig.offset.map(|(_, source)| source),
+            gl_renderer: outcome.gl_renderer.clone(),
+            gl_version: outcome.gl_version.clone(),
         }
     }
 }

@@ -152,6 +152,8 @@ mod tests {
             notes: Vec::new(),
             offset: Some("1,4".to_string()),
             offset_source: Some(crate::vocab::OffsetSource::Scene),
+            gl_renderer: "llvmpipe".to_string(),
+            gl_version: "3.3".to_string(),
         };
         let row = |t: TechniqueId, m: Option<super::super::Measured>| ResultRow {
             technique: t,
