@@ -216,8 +216,9 @@ fn table(h: &mut String, rows: &[ResultRow]) {
         }
     }
     h.push_str(
-        "</table><p class=\"muted\">Green rows are on the Pareto front: no other run is both \
-         faster and more accurate. False shadow: lit in the truth, shadowed by the technique \
+        "</table><p class=\"muted\">Green rows are on the Pareto front: no other run is faster \
+         beyond doubt (all its frames quicker) and as accurate, or as fast within the frames' \
+         spread (their time ranges overlap) and more accurate. False shadow: lit in the truth, shadowed by the technique \
          (acne). Missed shadow: shadowed in the truth, lit by the technique (peter-panning). \
          The edge band excludes pixels next to the truth's shadow edges, where one pixel of \
          aliasing is expected.</p>\n",

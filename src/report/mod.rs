@@ -39,7 +39,7 @@ pub use compare_files::write_comparison;
 pub use files::{check_output, check_output_dir, check_png_name, same_file, save_png, write_file};
 pub use light_map::{light_map_pictures, pseudo_colour};
 pub use pictures::{error_image, ErrorColours, ERROR_COLOURS};
-pub use rows::{pareto_front, Measured, ResultRow};
+pub use rows::{pareto_front, FrontPoint, Measured, ResultRow};
 pub use sweep_files::{sweep_summary, write_sweep};
 pub use table::{comparison_table, phase_lines};
 

@@ -131,9 +131,9 @@ impl ResultRow {
     /// Every row of a study, with the Pareto front marked.
     pub fn all(rows: &[Row]) -> Vec<ResultRow> {
         let mut out: Vec<ResultRow> = rows.iter().map(ResultRow::of).collect();
-        let points: Vec<Option<(f64, f64)>> = out
+        let points: Vec<Option<FrontPoint>> = out
             .iter()
-            .map(|r| r.measured.as_ref().map(|m| (m.typical_ms, m.error_percent)))
+            .map(|r| r.measured.as_ref().map(FrontPoint::of))
             .collect();
         for i in pareto_front(&points) {
             out[i].pareto = true;
@@ -142,18 +142,57 @@ impl ResultRow {
     }
 }
 
-/// Indices of the points (time, error) no other point dominates, ordered by time (then
-/// error); `None` points take no part.
-pub fn pareto_front(points: &[Option<(f64, f64)>]) -> Vec<usize> {
-    let dominates =
-        |a: (f64, f64), b: (f64, f64)| a.0 <= b.0 && a.1 <= b.1 && (a.0 < b.0 || a.1 < b.1);
+/// A row as the Pareto front weighs it: its time as a range (the steady frames' min and
+/// max; the one cold frame when there are no others) and its error.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrontPoint {
+    /// The time plotted and ranked (ms).
+    pub ms: f64,
+    pub ms_min: f64,
+    pub ms_max: f64,
+    pub error: f64,
+}
+
+impl FrontPoint {
+    pub fn of(m: &Measured) -> FrontPoint {
+        FrontPoint {
+            ms: m.typical_ms,
+            ms_min: m.ms_min.unwrap_or(m.typical_ms),
+            ms_max: m.ms_max.unwrap_or(m.typical_ms),
+            error: m.error_percent,
+        }
+    }
+
+    /// Faster beyond doubt: every frame of `self` took less than every frame of `other`.
+    fn faster_than(&self, other: &FrontPoint) -> bool {
+        self.ms_max < other.ms_min
+    }
+
+    /// Whether `self` dominates `other`. Two rows whose time ranges overlap tie in time
+    /// (which is faster flips from run to run on a shared machine), so between them only
+    /// the error decides; otherwise `self` must be faster and no more wrong, or as fast
+    /// and less wrong.
+    fn dominates(&self, other: &FrontPoint) -> bool {
+        let tie = !self.faster_than(other) && !other.faster_than(self);
+        match (self.faster_than(other), tie) {
+            (true, _) => self.error <= other.error,
+            (false, true) => self.error < other.error,
+            (false, false) => false,
+        }
+    }
+}
+
+/// Indices of the points no other point dominates ([`FrontPoint::dominates`]), ordered by
+/// time (then error); `None` points take no part.
+pub fn pareto_front(points: &[Option<FrontPoint>]) -> Vec<usize> {
     let mut front: Vec<usize> = (0..points.len())
         .filter(|&i| {
-            points[i].is_some_and(|p| !points.iter().any(|q| q.is_some_and(|q| dominates(q, p))))
+            points[i].is_some_and(|p| !points.iter().any(|q| q.is_some_and(|q| q.dominates(&p))))
         })
         .collect();
+    let key = |i: usize| points[i].map_or((0.0, 0.0), |p| (p.ms, p.error));
     front.sort_by(|&a, &b| {
-        let (pa, pb) = (points[a].unwrap_or_default(), points[b].unwrap_or_default());
+        let (pa, pb) = (key(a), key(b));
         pa.0.total_cmp(&pb.0).then(pa.1.total_cmp(&pb.1))
     });
     front
@@ -165,7 +204,15 @@ mod tests {
 
     #[test]
     fn the_front_keeps_only_undominated_points() {
-        let p = |t: f64, e: f64| Some((t, e));
+        // Times without spread: no two overlap unless equal.
+        let p = |t: f64, e: f64| {
+            Some(FrontPoint {
+                ms: t,
+                ms_min: t,
+                ms_max: t,
+                error: e,
+            })
+        };
         // 0 fast and wrong, 1 slow and right, 2 dominated by 0 and 1, 3 equal to 0 (kept:
         // equal points do not dominate each other), 4 skipped.
         let pts = [
@@ -179,5 +226,32 @@ mod tests {
         assert_eq!(pareto_front(&pts), vec![0, 3, 5, 1]);
         assert_eq!(pareto_front(&[None, None]), Vec::<usize>::new());
         assert_eq!(pareto_front(&[p(2.0, 2.0), p(2.0, 1.0)]), vec![1]);
+    }
+
+    #[test]
+    fn rows_whose_time_ranges_overlap_tie_in_time_and_the_error_decides() {
+        let r = |ms: f64, lo: f64, hi: f64, error: f64| {
+            Some(FrontPoint {
+                ms,
+                ms_min: lo,
+                ms_max: hi,
+                error,
+            })
+        };
+        // 0 is a little faster by its median but its frames overlap 1's: a tie in time,
+        // and 1 is less wrong, so 1 dominates 0. 2 is faster beyond doubt than both: it
+        // stays, however wrong.
+        let pts = [
+            r(2.0, 1.8, 2.6, 5.0),
+            r(2.2, 1.9, 2.5, 1.0),
+            r(1.0, 0.9, 1.1, 9.0),
+        ];
+        assert_eq!(pareto_front(&pts), vec![2, 1]);
+        // With the same error the tie keeps both.
+        let same = [r(2.0, 1.8, 2.6, 1.0), r(2.2, 1.9, 2.5, 1.0)];
+        assert_eq!(pareto_front(&same), vec![0, 1]);
+        // Apart in time, the faster one is not dominated by a less wrong slower one.
+        let apart = [r(2.0, 1.8, 2.1, 5.0), r(3.0, 2.9, 3.1, 1.0)];
+        assert_eq!(pareto_front(&apart), vec![0, 1]);
     }
 }
