@@ -327,6 +327,14 @@ fn the_page_refers_only_to_files_it_wrote_and_skips_what_a_pipeline_cannot_run()
     ] {
         assert!(refs.iter().any(|r| r == needed), "the page omits {needed}");
     }
+    // Every picture opens full size: it is the target of a link to itself.
+    for picture in html.split("<img src=\"").skip(1) {
+        let name = picture.split('"').next().unwrap_or_default();
+        assert!(
+            html.contains(&format!("<a href=\"{name}\"><img src=\"{name}\"")),
+            "{name} is shown without a link to itself"
+        );
+    }
     assert!(!html.contains("<script"), "no scripts");
     assert!(
         !html.contains("multidigit16-native"),

@@ -225,10 +225,11 @@ fn table(h: &mut String, rows: &[ResultRow]) {
     );
 }
 
+/// A picture the page shows, linked to the file itself (a click opens it full size).
 fn img(name: &str, alt: &str, written: &Written) -> String {
     if written.contains(name) {
         format!(
-            "<img src=\"{}\" alt=\"{}\" loading=\"lazy\">",
+            "<a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\" loading=\"lazy\"></a>",
             escape(name),
             escape(alt)
         )
