@@ -4,7 +4,8 @@
 //!
 //! Layers, lowest first (a module uses those below it, never those above):
 //! `vocab` (the shared names: techniques, pipelines, depth formats, readback rules) and
-//! `stats` (medians of timings) → `gpu` (contexts, render targets, readback) → `ff`
+//! `stats` (medians of timings) and `shaders` (the era's published shaders, ported to GLSL
+//! and embedded from `shaders/`) → `gpu` (contexts, render targets, readback) → `ff`
 //! (commands and the GL 1.x state model, no GL calls) → `mesh` → `scene` → `metrics` →
 //! `truth` (pure) → `pipeline` → `abi` (the C library: OSMesa and the GL 1.x entry points
 //! over the emulated pipeline) and `techniques` (plans of Commands) → `render` (a scene, judged
@@ -23,6 +24,7 @@ pub mod pipeline;
 pub mod render;
 pub mod report;
 pub mod scene;
+pub mod shaders;
 pub mod stats;
 pub mod study;
 pub mod techniques;

@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 const LAYERS: &[(&str, u32)] = &[
     ("vocab", 0),
     ("stats", 0),
+    ("shaders", 0),
     ("gpu", 1),
     ("ff", 2),
     ("mesh", 3),
