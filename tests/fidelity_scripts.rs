@@ -32,7 +32,7 @@ const fn case(name: &'static str, w: u32, h: u32, per_channel: u8, max_bad: usiz
 }
 
 /// The table. Tolerances are per channel (of 255) and a count of pixels allowed beyond it.
-const CASES: [Case; 22] = [
+const CASES: [Case; 23] = [
     case("alpha_test_boundaries", 8, 1, 0, 0),
     // GL's own glBlitFramebuffer on both paths (tests/fidelity_framebuffers.rs).
     Case {
@@ -57,6 +57,8 @@ const CASES: [Case; 22] = [
     case("multi_draw", 48, 32, 1, 0),
     case("polygon_offset_modes", 600, 150, 0, 0),
     case("separate_specular", 64, 32, 0, 0),
+    // A list drawn again is drawn indexed, each distinct vertex once, smooth and flat.
+    case("shared_vertices", 64, 32, 0, 0),
     Case {
         frame: Frame::new(4, 1).with_stencil(),
         ..case("stencil_wrap", 4, 1, 0, 0)
