@@ -148,34 +148,7 @@ enum Command {
         json: bool,
     },
     /// Run a script of GL 1.x calls (valid C99) and write the image it draws.
-    Replay {
-        /// The script.
-        file: PathBuf,
-        /// Which path runs it; `both` runs it on each (each on its own context), writes the
-        /// native image as NAME-native.png and the difference picture of the two as
-        /// NAME-paths.png, and prints the largest difference and its pixel.
-        #[arg(long, value_enum, default_value = "emulate")]
-        pipeline: pipelines::PipelineChoice,
-        #[arg(long, value_parser = named::named::<Backend>(), default_value = "egl")]
-        backend: Backend,
-        /// Target size, WIDTHxHEIGHT.
-        #[arg(long, value_name = "WxH", default_value = "256x256", value_parser = scene_arg::parse_size)]
-        size: ImageSize,
-        /// The PNG to write.
-        #[arg(long, default_value = "replay.png")]
-        out: PathBuf,
-        /// Give the window an accumulation buffer (the native path: with --backend
-        /// osmesa only, drawing into OSMesa's own buffer, since Mesa gives framebuffer
-        /// objects none).
-        #[arg(long)]
-        accum: bool,
-        /// Stop at the first GL error the script raises, naming its line, write no image
-        /// and exit 1 (without it each error is reported and the run goes on).
-        #[arg(long)]
-        strict: bool,
-        #[command(flatten)]
-        expect: expect::ExpectArgs,
-    },
+    Replay(replay::Args),
     /// Print each distinct program a script needs: its key and its generated GLSL.
     Shaders {
         /// A GL script; without it, one frame of `--scene` (the default scene) with its
@@ -214,25 +187,7 @@ pub fn run() -> ExitCode {
         Command::OsmesaDir => osmesa_dir::run(),
         Command::Compare(args) => compare::run(args, limits),
         Command::SweepBias(args) => sweep_bias::run(args, limits),
-        Command::Replay {
-            file,
-            pipeline,
-            backend,
-            size,
-            out,
-            accum,
-            strict,
-            expect,
-        } => replay::run(replay::Args {
-            file,
-            pipeline,
-            backend,
-            size,
-            out,
-            accum,
-            strict,
-            expect,
-        }),
+        Command::Replay(args) => replay::run(args),
         Command::Shaders {
             file,
             scene,

@@ -26,15 +26,35 @@ use super::scene_arg;
 use super::script_io;
 use fixedfunc::render::ImageSize;
 
+/// Arguments of `replay`.
+#[derive(clap::Args, Debug)]
 pub struct Args {
-    pub file: PathBuf,
-    pub pipeline: PipelineChoice,
-    pub backend: Backend,
-    pub size: ImageSize,
-    pub out: PathBuf,
-    pub accum: bool,
-    pub strict: bool,
-    pub expect: ExpectArgs,
+    /// The script.
+    file: PathBuf,
+    /// Which path runs it; `both` runs it on each (each on its own context), writes the
+    /// native image as NAME-native.png and the difference picture of the two as
+    /// NAME-paths.png, and prints the largest difference and its pixel.
+    #[arg(long, value_enum, default_value = "emulate")]
+    pipeline: PipelineChoice,
+    #[arg(long, value_parser = super::named::named::<Backend>(), default_value = "egl")]
+    backend: Backend,
+    /// Target size, WIDTHxHEIGHT.
+    #[arg(long, value_name = "WxH", default_value = "256x256", value_parser = scene_arg::parse_size)]
+    size: ImageSize,
+    /// The PNG to write.
+    #[arg(long, default_value = "replay.png")]
+    out: PathBuf,
+    /// Give the window an accumulation buffer (the native path: with --backend
+    /// osmesa only, drawing into OSMesa's own buffer, since Mesa gives framebuffer
+    /// objects none).
+    #[arg(long)]
+    accum: bool,
+    /// Stop at the first GL error the script raises, naming its line, write no image
+    /// and exit 1 (without it each error is reported and the run goes on).
+    #[arg(long)]
+    strict: bool,
+    #[command(flatten)]
+    expect: ExpectArgs,
 }
 
 /// What one path's run left.
