@@ -171,17 +171,20 @@ fn falsely_shadowed(mask: &Mask, truth: &Mask, pixels: &[bool]) -> (usize, usize
     (wrong, lit.len())
 }
 
-/// The default scene lets the sphere and the torus cast and receive: each covers its own
-/// silhouette, so its lit side is dark — and the notes say so. With `casts = false` the
-/// same sphere is lit where the truth says.
+/// The default scene lets the sphere and the torus cast and receive. Projected through its
+/// own silhouette an object would be dark on its lit side (the whole silhouette covers it:
+/// measured 8.5% of the scene's geometry pixels wrong); each receives only the other
+/// casters' silhouette instead, so its lit side stays lit, the scene's error is at most 2%,
+/// the notes say self-shadowing is gone, and the same sphere with `casts = false` gets the
+/// same verdict.
 #[test]
-fn self_shadowing_fails_visibly_and_the_notes_say_so() {
+fn an_object_never_receives_its_own_silhouette_and_the_notes_say_so() {
     let scene = Scene::default_scene();
     let notes = plan(&scene).unwrap().notes;
     assert!(
         notes.iter().any(
             |n| n.contains("`sphere`, `torus` are both caster and receiver")
-                && n.contains("self-shadowing fails")
+                && n.contains("none shadows itself")
         ),
         "{notes:?}"
     );
@@ -190,8 +193,23 @@ fn self_shadowing_fails_visibly_and_the_notes_say_so() {
     let (wrong, lit) = falsely_shadowed(&out.mask, &out.truth.mask, &pixels);
     assert!(lit > 300, "the sphere has {lit} lit pixels");
     assert!(
-        wrong * 10 >= lit * 9,
-        "only {wrong} of {lit} lit sphere pixels shadowed"
+        wrong * 50 <= lit,
+        "{wrong} of {lit} lit sphere pixels shadowed by their own silhouette"
+    );
+    assert!(
+        out.metrics.all.wrong_percent <= 2.0,
+        "projective's error on the default scene: {:.2}%",
+        out.metrics.all.wrong_percent
+    );
+    let silhouettes = plan(&scene)
+        .unwrap()
+        .maps
+        .iter()
+        .filter(|p| p.name == "silhouette")
+        .count();
+    assert_eq!(
+        silhouettes, 3,
+        "all casters (ground), all but the sphere, all but the torus"
     );
 
     let mut apart = scene.clone();
@@ -354,12 +372,13 @@ fn mask_of(plan: &Plan, kind: PipelineKind) -> Mask {
     mask
 }
 
-/// The plan without the glLoadIdentity that ends its silhouette pass: the pseudo-depth
+/// The plan without the glLoadIdentity that ends its silhouette passes: the pseudo-depth
 /// modelview (projective: its last row is not (0, 0, 0, 1)) is left current after draws.
 fn without_the_workaround(mut plan: Plan) -> Plan {
-    let silhouette = &mut plan.maps[0].commands;
-    assert_eq!(silhouette.last(), Some(&Command::LoadIdentity));
-    silhouette.pop();
+    for pass in plan.maps.iter_mut().filter(|p| p.name == "silhouette") {
+        assert_eq!(pass.commands.last(), Some(&Command::LoadIdentity));
+        pass.commands.pop();
+    }
     plan
 }
 

@@ -26,7 +26,7 @@ use glam::{Mat4, Vec3, Vec4};
 
 use crate::ff::{
     self, Capability, ClearMask, ColorMask, Command, CompareFunc, Face, LightModelParam,
-    MaterialParam, TexCoord, TexGenMode, TexGenParam, Viewport,
+    MaterialParam, TexCoord, TexGenMode, TexGenParam, TextureTarget, Viewport,
 };
 use crate::scene::{Light, Object, Scene};
 
@@ -341,6 +341,18 @@ pub fn dim_then_added_light(
     planes: [Vec4; 4],
     look: Look,
 ) -> Vec<Pass> {
+    dim_then_added_light_per_receiver(scene, prepared, planes, look, &|_| super::map::MAP_TEXTURE)
+}
+
+/// [`dim_then_added_light`] with each receiver (by object index) projected through its own
+/// texture name: `texture_of(i)` is bound before receiver i is drawn.
+pub fn dim_then_added_light_per_receiver(
+    scene: &Scene,
+    prepared: &Prepared,
+    planes: [Vec4; 4],
+    look: Look,
+    texture_of: &dyn Fn(usize) -> u32,
+) -> Vec<Pass> {
     let mut lit = vec![
         Command::DepthFunc(CompareFunc::Equal),
         Command::DepthMask(false),
@@ -353,7 +365,6 @@ pub fn dim_then_added_light(
     lit.extend(lighting(scene, look, LightSet::ShadowingOnly));
     lit.extend([
         Command::ActiveTexture(0),
-        super::map::bind_map(),
         Command::Enable(Capability::Texture2D),
         Command::TexEnv(ff::TexEnvParam::Mode(ff::TexEnvMode::Modulate)),
     ]);
@@ -364,7 +375,26 @@ pub fn dim_then_added_light(
         (TexCoord::Q, planes[3]),
     ]));
     let paint = look.paint(true);
-    lit.extend(objects(scene, prepared, receives, paint));
+    // Receivers grouped by texture, in the order of their first receiver: one bind each.
+    let mut names: Vec<u32> = Vec::new();
+    for (i, o) in scene.objects.iter().enumerate() {
+        if o.receives && !names.contains(&texture_of(i)) {
+            names.push(texture_of(i));
+        }
+    }
+    for name in names {
+        lit.push(Command::BindTexture {
+            target: TextureTarget::Texture2D,
+            name,
+        });
+        let index = |o: &Object| scene.objects.iter().position(|p| std::ptr::eq(p, o));
+        lit.extend(objects(
+            scene,
+            prepared,
+            |o| o.receives && index(o).is_some_and(|i| texture_of(i) == name),
+            paint,
+        ));
+    }
     lit.push(Command::Disable(Capability::Texture2D));
     lit.extend(objects(scene, prepared, does_not_receive, paint));
     lit.extend(reset(&[0]));

@@ -33,11 +33,18 @@
 //!   z_c and w_c decides it; 64 keeps the margin ≥ 30× the rounding and only drops casters
 //!   within 1/64 of the light's height below it.
 //!
-//! **Self-shadowing.** A silhouette says that *something* stands between the light and the
-//! fragment, not whether it is nearer the light: an object that both casts and receives is
-//! dark wherever it covers its own silhouette — its lit side included. The plan's notes
-//! name those objects (the render line prints them). Fragments behind the projector
-//! (q ≤ 0) read the silhouette mirrored; the notes name receivers reaching there.
+//! **Casters kept apart from receivers.** A silhouette says that *something* stands between
+//! the light and the fragment, not whether it is nearer the light: an object projected
+//! through its own silhouette is dark wherever it covers it — its lit side included. The
+//! era's projective shadows therefore never let an object receive its own silhouette:
+//! each receiver gets the silhouette of the *other* casters ([`Silhouettes`]: one texture
+//! per distinct set — every caster for a receiver that casts nothing, every caster but
+//! itself for one that does; the set of all casters is [`MAP_TEXTURE`], the others
+//! [`SILHOUETTE_TEXTURE_BASE`] + k). The price is one silhouette and copy per set, and no
+//! self-shadowing at all — exactly the gap occluder textures fill; the plan's notes name
+//! the objects concerned. Another caster behind a receiver (farther from the light) still
+//! shadows it: the silhouette has no depth. Fragments behind the projector (q ≤ 0) read
+//! the silhouette mirrored; the notes name receivers reaching there.
 
 use crate::vocab::{Projector, TechniqueId};
 use glam::{Mat4, Vec3, Vec4};
@@ -45,7 +52,7 @@ use glam::{Mat4, Vec3, Vec4};
 use crate::ff::{Command, CopyTexImage, PixelFormat, PixelType, TexFormat, ViewVolume};
 use crate::scene::Scene;
 
-use super::map::{bind_map, map_parameters, read_corner, MapSettings, MAP_IMAGE_SLOT};
+use super::map::{map_parameters, read_corner, MapSettings, MAP_IMAGE_SLOT, MAP_TEXTURE};
 use super::parts::{map_pass_start, objects, Look, Paint, ShadowLight, BIAS};
 use super::planar::{list, object_name};
 use super::plane::{area, flat_plane, light_vector, scene_radius};
@@ -65,6 +72,59 @@ pub const TECHNIQUE: Technique = Technique {
 pub const NEAR_OFFSET: f32 = 1e-3;
 /// The pseudo-depth far plane (see the module note).
 pub const FAR: f32 = 64.0;
+
+/// The first texture name of the silhouettes other than the one of all casters.
+pub const SILHOUETTE_TEXTURE_BASE: u32 = 16;
+
+/// The silhouettes a frame needs: each distinct set of casters some receiver is shadowed
+/// by (every caster but the receiver itself), and which set each receiver uses.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Silhouettes {
+    /// Object indices of the casters of each set; the set of all casters, when a receiver
+    /// uses it, comes first.
+    pub sets: Vec<Vec<usize>>,
+    /// Per object: the set it receives, `None` for an object that receives nothing.
+    pub of_object: Vec<Option<usize>>,
+}
+
+impl Silhouettes {
+    pub fn of(scene: &Scene) -> Silhouettes {
+        let casters: Vec<usize> = (0..scene.objects.len())
+            .filter(|&i| scene.objects[i].casts)
+            .collect();
+        let mut sets: Vec<Vec<usize>> = Vec::new();
+        let mut of_object = vec![None; scene.objects.len()];
+        let index_of =
+            |set: Vec<usize>, sets: &mut Vec<Vec<usize>>| match sets.iter().position(|s| *s == set)
+            {
+                Some(k) => k,
+                None => {
+                    sets.push(set);
+                    sets.len() - 1
+                }
+            };
+        // The set of all casters first, so that it takes MAP_TEXTURE.
+        if scene.objects.iter().any(|o| o.receives && !o.casts) {
+            index_of(casters.clone(), &mut sets);
+        }
+        for (i, o) in scene.objects.iter().enumerate() {
+            if o.receives {
+                let others: Vec<usize> = casters.iter().copied().filter(|&c| c != i).collect();
+                of_object[i] = Some(index_of(others, &mut sets));
+            }
+        }
+        Silhouettes { sets, of_object }
+    }
+
+    /// The texture name of set `k`.
+    pub fn texture(&self, k: usize) -> u32 {
+        if k == 0 {
+            MAP_TEXTURE
+        } else {
+            SILHOUETTE_TEXTURE_BASE + k as u32
+        }
+    }
+}
 
 /// The projector: how the silhouette pass views the casters.
 #[derive(Debug, Clone, PartialEq)]
@@ -199,38 +259,57 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
     check_light_count(scene)?;
     let map = MapSettings::of(scene);
     let projector = projection(scene)?;
-    let mut setup = vec![Command::ActiveTexture(0), bind_map()];
-    setup.extend(map_parameters(map.gl_filter()));
-    let copy = Pass {
-        name: "copy",
-        commands: vec![
-            Command::ActiveTexture(0),
-            bind_map(),
-            Command::CopyTexImage2D(CopyTexImage {
-                requested: None,
-                level: 0,
-                internal_format: TexFormat::Rgb8,
-                x: 0,
-                y: 0,
-                width: map.size as i32,
-                height: map.size as i32,
-                border: 0,
-            }),
-        ],
+    let silhouettes = Silhouettes::of(scene);
+    let bind = |k: usize| Command::BindTexture {
+        target: crate::ff::TextureTarget::Texture2D,
+        name: silhouettes.texture(k),
     };
+    let mut setup = vec![Command::ActiveTexture(0)];
+    for k in 0..silhouettes.sets.len().max(1) {
+        setup.push(bind(k));
+        setup.extend(map_parameters(map.gl_filter()));
+    }
+    let mut maps = Vec::new();
+    for (k, set) in silhouettes.sets.iter().enumerate() {
+        maps.push(silhouette_pass(scene, prepared, &projector, map.size, set));
+        maps.push(Pass {
+            name: "copy",
+            commands: vec![
+                Command::ActiveTexture(0),
+                bind(k),
+                Command::CopyTexImage2D(CopyTexImage {
+                    requested: None,
+                    level: 0,
+                    internal_format: TexFormat::Rgb8,
+                    x: 0,
+                    y: 0,
+                    width: map.size as i32,
+                    height: map.size as i32,
+                    border: 0,
+                }),
+            ],
+        });
+    }
+    // `--depth-map` shows the silhouette of every caster, drawn again for the read.
+    let all: Vec<usize> = (0..scene.objects.len())
+        .filter(|&i| scene.objects[i].casts)
+        .collect();
+    let mut map_commands = silhouette_pass(scene, prepared, &projector, map.size, &all).commands;
+    map_commands.push(read_corner(
+        map.size,
+        PixelFormat::Luminance,
+        PixelType::UnsignedByte,
+        MAP_IMAGE_SLOT,
+    ));
+    let eye = |look| eye_passes(scene, prepared, &projector, &silhouettes, look);
     Ok(Plan {
         setup,
-        maps: vec![silhouette_pass(scene, prepared, &projector, map.size), copy],
-        passes: eye_passes(scene, prepared, &projector, Look::Shaded),
-        mask: colour_mask(scene, eye_passes(scene, prepared, &projector, Look::Mask)),
+        maps,
+        passes: eye(Look::Shaded),
+        mask: colour_mask(scene, eye(Look::Mask)),
         framebuffer: map.framebuffer(scene, false),
         map_image: Some(MapImagePlan {
-            commands: vec![read_corner(
-                map.size,
-                PixelFormat::Luminance,
-                PixelType::UnsignedByte,
-                MAP_IMAGE_SLOT,
-            )],
+            commands: map_commands,
             source: MapImageSource::Bytes {
                 slot: MAP_IMAGE_SLOT,
                 size: map.size,
@@ -241,8 +320,15 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
     })
 }
 
-/// The casters, black on white, from the projector into the map's corner.
-fn silhouette_pass(scene: &Scene, prepared: &Prepared, p: &Projection, size: u32) -> Pass {
+/// The casters of `set` (object indices), black on white, from the projector into the
+/// map's corner.
+fn silhouette_pass(
+    scene: &Scene,
+    prepared: &Prepared,
+    p: &Projection,
+    size: u32,
+    set: &[usize],
+) -> Pass {
     let mut c = map_pass_start(size, true);
     c.extend([
         Command::MatrixMode(crate::ff::MatrixMode::Projection),
@@ -252,7 +338,8 @@ fn silhouette_pass(scene: &Scene, prepared: &Prepared, p: &Projection, size: u32
         Command::LoadMatrix(p.modelview),
     ]);
     let black = Paint::Flat(Vec4::new(0.0, 0.0, 0.0, 1.0));
-    c.extend(objects(scene, prepared, |o| o.casts, black));
+    let in_set = |o: &crate::scene::Object| set.iter().any(|&i| std::ptr::eq(&scene.objects[i], o));
+    c.extend(objects(scene, prepared, in_set, black));
     // Leave an affine modelview behind. Measured on Mesa 22.3 llvmpipe (native path): after
     // draws under the projective pseudo-depth modelview, the eye pass's EYE_LINEAR planes —
     // set later under a freshly loaded camera view — generate wrong coordinates; a
@@ -264,9 +351,22 @@ fn silhouette_pass(scene: &Scene, prepared: &Prepared, p: &Projection, size: u32
     }
 }
 
-/// Dim pass, then the shadowing light added through the silhouette on receivers.
-fn eye_passes(scene: &Scene, prepared: &Prepared, p: &Projection, look: Look) -> Vec<Pass> {
-    super::parts::dim_then_added_light(scene, prepared, [0, 1, 2, 3].map(|i| p.plane(i)), look)
+/// Dim pass, then the shadowing light added on each receiver through the silhouette of
+/// the casters other than itself.
+fn eye_passes(
+    scene: &Scene,
+    prepared: &Prepared,
+    p: &Projection,
+    silhouettes: &Silhouettes,
+    look: Look,
+) -> Vec<Pass> {
+    super::parts::dim_then_added_light_per_receiver(
+        scene,
+        prepared,
+        [0, 1, 2, 3].map(|i| p.plane(i)),
+        look,
+        &|i| silhouettes.texture(silhouettes.of_object[i].unwrap_or(0)),
+    )
 }
 
 fn notes(scene: &Scene, p: &Projection) -> Vec<String> {
@@ -278,7 +378,7 @@ fn notes(scene: &Scene, p: &Projection) -> Vec<String> {
         .collect();
     if !both.is_empty() {
         notes.push(format!(
-            "projective: {} both caster and receiver: a silhouette cannot tell a caster from the surface it shadows, so self-shadowing fails — dark wherever it covers its own silhouette, lit side included",
+            "projective: {} both caster and receiver: each receives only the other casters' silhouette, so none shadows itself (no self-shadowing)",
             list(&both)
         ));
     }
