@@ -1,4 +1,5 @@
-//! Ray-caster throughput: the default scene at 512² and a ~1M-triangle variant.
+//! Ray-caster throughput: the default scene at 512², a ~1M-triangle variant, and the
+//! default scene lit by an area light (242 shadow rays per lit pixel).
 //! Prints the phase figures of `truth::bench::throughput` (shadow rays/s is the target
 //! figure) before criterion times whole truth runs.
 
@@ -10,6 +11,7 @@ fn truth_bench(c: &mut Criterion) {
     let scenes = [
         ("default 512²", Scene::default_scene()),
         ("1M triangles 512²", bench::million_triangle_scene()),
+        ("area light 512²", bench::area_light_scene()),
     ];
     let options = TruthOptions::default();
     for (name, scene) in &scenes {

@@ -11,7 +11,7 @@
 //! over the emulated pipeline) and `techniques` (plans of Commands) → `render` (a scene, judged
 //! against the truth; open sessions interleaved in rounds) → `bench`, `study` (many
 //! renders against one truth: compare, bias sweeps) → `report` (tables, plots, pages) →
-//! the `fixedfunc` CLI. `tests/layers.rs` reads the sources and fails on an import that
+//! `view` (the scene in a window, its settings on keys) → the `fixedfunc` CLI. `tests/layers.rs` reads the sources and fails on an import that
 //! runs up this order.
 
 pub mod abi;
@@ -29,4 +29,5 @@ pub mod stats;
 pub mod study;
 pub mod techniques;
 pub mod truth;
+pub mod view;
 pub mod vocab;

@@ -157,6 +157,7 @@ fn ten_thousand_objects_are_estimated_per_object_and_per_render() {
         backend: fixedfunc::gpu::Backend::Egl,
         frames: 1,
         size: None,
+        passes: fixedfunc::study::PassStrips::Without,
     };
     let start = Instant::now();
     let result = study::compare(&scene, &spec, |_| {});
@@ -179,6 +180,7 @@ fn a_huge_image_size_is_refused_before_any_context() {
         backend: fixedfunc::gpu::Backend::Egl,
         frames: 2,
         size: Some("8192x8192".parse().expect("size")),
+        passes: fixedfunc::study::PassStrips::Without,
     };
     let start = Instant::now();
     let mut steps = 0;

@@ -5,12 +5,15 @@
 //! Each program runs in the variant that links the GL symbols directly and in the one
 //! that resolves them through OSMesaGetProcAddress.
 
+#[path = "c/harness.rs"]
+mod harness;
 mod support;
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Command;
 use std::sync::Mutex;
 
+use harness::{fixedfunc_dir, read_ppm, run, Library};
 use image::{Rgba, RgbaImage};
 use support::{assert_images_match, Tolerance};
 
@@ -19,13 +22,6 @@ use support::{assert_images_match, Tolerance};
 enum Linking {
     Direct,
     ProcAddress,
-}
-
-/// Which library the program runs on.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Library {
-    Mesa,
-    Fixedfunc,
 }
 
 fn source(name: &str) -> PathBuf {
@@ -73,67 +69,6 @@ fn build(name: &str, linking: Linking) -> PathBuf {
         String::from_utf8_lossy(&out.stderr)
     );
     exe
-}
-
-/// The folder `fixedfunc osmesa-dir` prints.
-fn fixedfunc_dir() -> PathBuf {
-    let out = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
-        .arg("osmesa-dir")
-        .output()
-        .expect("fixedfunc runs");
-    assert!(
-        out.status.success(),
-        "fixedfunc osmesa-dir failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let dir = PathBuf::from(String::from_utf8_lossy(&out.stdout).trim());
-    assert!(
-        dir.join("libOSMesa.so.8").exists(),
-        "{} lacks libOSMesa.so.8",
-        dir.display()
-    );
-    dir
-}
-
-fn run(exe: &Path, library: Library, args: &[&str]) -> Output {
-    let mut cmd = Command::new(exe);
-    cmd.args(args);
-    if library == Library::Fixedfunc {
-        cmd.env("LD_LIBRARY_PATH", fixedfunc_dir());
-    }
-    let out = cmd.output().expect("the program runs");
-    assert!(
-        out.status.success(),
-        "{} on {library:?} failed ({}):\n{}",
-        exe.display(),
-        out.status,
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out
-}
-
-/// A binary PPM (P6, maxval 255) as an opaque RGBA image.
-fn read_ppm(path: &Path) -> RgbaImage {
-    let data = std::fs::read(path).expect("the program wrote its image");
-    let mut fields = Vec::new();
-    let mut pos = 0;
-    while fields.len() < 4 {
-        while data[pos].is_ascii_whitespace() {
-            pos += 1;
-        }
-        let start = pos;
-        while !data[pos].is_ascii_whitespace() {
-            pos += 1;
-        }
-        fields.push(String::from_utf8_lossy(&data[start..pos]).into_owned());
-    }
-    assert_eq!(fields[0], "P6");
-    let (w, h): (u32, u32) = (fields[1].parse().unwrap(), fields[2].parse().unwrap());
-    let pixels = &data[pos + 1..];
-    RgbaImage::from_fn(w, h, |x, y| {
-        let i = ((y * w + x) * 3) as usize;
-        Rgba([pixels[i], pixels[i + 1], pixels[i + 2], 255])
-    })
 }
 
 fn render(name: &str, linking: Linking, library: Library, args: &[&str]) -> RgbaImage {

@@ -223,6 +223,7 @@ fn library_compare_rows_equal_library_renders() {
         backend: fixedfunc::gpu::Backend::Egl,
         frames: 2,
         size,
+        passes: fixedfunc::study::PassStrips::Without,
     };
     let c = study::compare(&scene, &spec, |_| {}).expect("compare");
     assert_eq!(c.rows.len(), 2);
@@ -386,5 +387,72 @@ fn bad_compare_arguments_are_refused_with_the_valid_choices() {
         text(&run.stderr).contains("--frames"),
         "{}",
         text(&run.stderr)
+    );
+}
+
+/// Each card carries its pass strip (thumbnails linked to the full-size pictures, each a
+/// file the run wrote) and one sentence computed from its counts; dual8's names its map's
+/// 8-bit step in scene units.
+#[test]
+fn each_card_has_a_pass_strip_and_says_why_it_is_right_or_wrong() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("report");
+    let run = fixedfunc(&[
+        "compare",
+        "--techniques",
+        "depth-compare,dual8",
+        "--pipeline",
+        "both",
+        "--size",
+        "64x64",
+        "--frames",
+        "2",
+        "--passes",
+        "--out",
+        arg(&out),
+    ]);
+    assert!(run.status.success(), "{}", text(&run.stderr));
+    let html = std::fs::read_to_string(out.join("report.html")).expect("report.html");
+    for slug in [
+        "dual8-emulate",
+        "dual8-native",
+        "depth-compare-emulate",
+        "depth-compare-native",
+    ] {
+        let thumbnail = format!("{slug}-pass-01-light-depth.png");
+        assert!(
+            html.contains(&format!("<a href=\"{thumbnail}\"><img src=\"{thumbnail}\"")),
+            "{slug}: no linked thumbnail of the light pass"
+        );
+        assert!(out.join(&thumbnail).is_file(), "{thumbnail}");
+        let legend = format!("{slug}-pass-legend.txt");
+        assert!(
+            html.contains(&legend) && out.join(&legend).is_file(),
+            "{legend}"
+        );
+    }
+    assert!(out
+        .join("dual8-native-pass-05-lit-map-minus-ramp.png")
+        .is_file());
+    assert!(html.contains("href=\"dual8-emulate-pass-05-lit-alpha.png\""));
+    let sentences: Vec<&str> = html
+        .split("<p class=\"why\">")
+        .skip(1)
+        .map(|s| s.split("</p>").next().unwrap_or_default())
+        .collect();
+    assert_eq!(sentences.len(), 4, "one sentence per measured card");
+    for s in &sentences {
+        assert!(
+            (s.starts_with("Right") || s.starts_with("Wrong by")) && s.ends_with('.'),
+            "{s}"
+        );
+    }
+    assert_eq!(
+        sentences
+            .iter()
+            .filter(|s| s.contains("scene units at the receivers"))
+            .count(),
+        2,
+        "dual8's two cards give its map's step: {sentences:?}"
     );
 }

@@ -23,7 +23,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("bench", 10),
     ("study", 10),
     ("report", 11),
-    ("cli", 12),
+    ("view", 12),
+    ("cli", 13),
 ];
 
 fn rank(module: &str) -> Option<u32> {

@@ -290,3 +290,233 @@ fn a_best_cell_on_the_grids_edge_is_warned_of_and_units_are_shown_in_depth_steps
     // The factor is fixed (one value): no warning names it.
     assert!(!stdout.contains("factor)"), "{stdout}");
 }
+
+/// A refined sweep at 64×64 on 24-bit depth: factor 0 and 0.5 at 4 units. Factor 0 is
+/// the acne of a map without slope bias, so the best lies on the highest factor, a side
+/// past which a better offset may lie.
+fn refined_sweep(out: &Path) -> (Output, serde_json::Value) {
+    let run = fixedfunc(&[
+        "sweep-bias",
+        "--technique",
+        "depth-compare",
+        "--factor",
+        "0..0.5:2",
+        "--units",
+        "4",
+        "--depth-bits",
+        "24",
+        "--size",
+        "64x64",
+        "--map-size",
+        "64",
+        "--refine=6",
+        "--out",
+        arg(out),
+    ]);
+    assert!(run.status.success(), "{}", text(&run.stderr));
+    let json = sweep_json(out);
+    (run, json)
+}
+
+fn f(v: &serde_json::Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("a number: {v}"))
+}
+
+/// A JSON number as fixedfunc prints an f32 (`1`, not JSON's `1.0`).
+fn num(v: &serde_json::Value) -> String {
+    (f(v) as f32).to_string()
+}
+
+#[test]
+fn refine_moves_a_grid_whose_best_is_on_an_edge_until_the_best_is_inside_or_says_why_not() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("sweep");
+    let (run, s) = refined_sweep(&out);
+    let stdout = text(&run.stdout);
+    assert_eq!(s["refine"]["max_rounds"], 6);
+    let surface = &s["surfaces"][0];
+    let rounds = surface["rounds"].as_array().expect("rounds");
+    let cells = surface["cells"].as_array().expect("cells");
+    assert!(rounds.len() >= 2, "{surface}");
+    // Round 1: the best on the highest factor, an open side; the next grid goes past it.
+    let first = &rounds[0];
+    assert_eq!(
+        first["verdict"]["open"],
+        serde_json::json!(["highest_factor"])
+    );
+    assert_eq!(f(&first["best"]["factor"]), 0.5, "{first}");
+    let second_top = rounds[1]["factors"]
+        .as_array()
+        .and_then(|v| v.last())
+        .map(f)
+        .expect("round 2's factors");
+    assert!(second_top > 0.5, "round 2 did not move: {}", rounds[1]);
+    assert!(stdout.contains("round 2 moves past that side"), "{stdout}");
+    // Every round is printed, and each round's cells carry its number.
+    for r in rounds {
+        let n = r["round"].as_u64().expect("round");
+        assert!(stdout.contains(&format!("round {n}: factor ")), "{stdout}");
+        let (first, count) = (
+            r["first"].as_u64().expect("first") as usize,
+            r["count"].as_u64().expect("count") as usize,
+        );
+        assert_eq!(
+            count,
+            r["factors"].as_array().map_or(0, Vec::len)
+                * r["units_values"].as_array().map_or(0, Vec::len)
+        );
+        for c in &cells[first..first + count] {
+            assert_eq!(c["round"].as_u64(), Some(n), "{c}");
+        }
+    }
+    let last = rounds.last().expect("a round");
+    if last["settled"] == true {
+        // Settled: the best so far lies on no open side, with the factor step at the floor.
+        assert_eq!(last["verdict"]["open"], serde_json::json!([]), "{last}");
+        let factors = last["factors"].as_array().expect("factors");
+        assert!(f(&factors[1]) - f(&factors[0]) <= 0.125 + 1e-6, "{last}");
+        assert!(!stdout.contains("round limit"), "{stdout}");
+    } else {
+        assert_eq!(rounds.len(), 6, "stopped early without settling: {last}");
+        assert!(stdout.contains("the round limit (6) stopped"), "{stdout}");
+    }
+    // The best printed is the best over all rounds, and its round is named.
+    let wrong = |c: &serde_json::Value| {
+        let (a, b) = counts(c);
+        a + b + c["coverage"].as_u64().expect("coverage")
+    };
+    let best = &surface["best"];
+    assert!(cells.iter().all(|c| wrong(best) <= wrong(c)));
+    let line = format!(
+        "best offset ({}, 4) from round {}, units = 8 LSB of 24-bit depth",
+        num(&best["factor"]),
+        best["round"]
+    );
+    assert!(stdout.contains(&line), "{line} in {stdout}");
+    assert_eq!(best["units_in_depth_steps"], "8 LSB of 24-bit depth");
+}
+
+#[test]
+fn the_csv_gives_each_cells_round_and_its_units_in_depth_steps() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("sweep");
+    let (_, s) = refined_sweep(&out);
+    let csv = std::fs::read_to_string(out.join("sweep.csv")).expect("csv");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().expect("a header").split(',').collect();
+    let col = |name: &str| {
+        header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("no {name} column in {header:?}"))
+    };
+    let (round, steps) = (col("round"), col("units_in_depth_steps"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let cells = s["surfaces"][0]["cells"].as_array().expect("cells");
+    assert_eq!(rows.len(), cells.len());
+    for (row, cell) in rows.iter().zip(cells) {
+        assert_eq!(row.len(), header.len(), "{row:?}");
+        assert_eq!(row[round], cell["round"].to_string());
+        assert_eq!(row[steps], "8 LSB of 24-bit depth");
+    }
+    let rounds = s["surfaces"][0]["rounds"].as_array().map_or(0, Vec::len);
+    let seen: std::collections::BTreeSet<&str> = rows.iter().map(|r| r[round]).collect();
+    let want: std::collections::BTreeSet<String> = (1..=rounds).map(|n| n.to_string()).collect();
+    assert_eq!(
+        seen.into_iter()
+            .map(String::from)
+            .collect::<std::collections::BTreeSet<_>>(),
+        want
+    );
+}
+
+/// The `href` and `src` targets of a page.
+fn links(html: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for key in ["href=\"", "src=\""] {
+        let mut rest = html;
+        while let Some(i) = rest.find(key) {
+            rest = &rest[i + key.len()..];
+            let end = rest.find('"').expect("a closing quote");
+            out.push(rest[..end].to_string());
+            rest = &rest[end..];
+        }
+    }
+    out
+}
+
+#[test]
+fn the_page_links_every_cell_to_its_image_mask_and_error_image_and_every_link_resolves() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("sweep");
+    std::fs::create_dir_all(&out).expect("folder");
+    // A page of an earlier run is not left behind.
+    std::fs::write(out.join("index.html"), "old page").expect("old page");
+    let (_, s) = refined_sweep(&out);
+    let html = std::fs::read_to_string(out.join("index.html")).expect("index.html");
+    assert!(
+        html.starts_with("<!doctype html>"),
+        "{}",
+        &html[..40.min(html.len())]
+    );
+    let targets = links(&html);
+    let mut files = 0;
+    for t in &targets {
+        if t.starts_with('#') {
+            continue;
+        }
+        assert!(
+            !t.contains("://") && !t.starts_with('/'),
+            "not relative: {t}"
+        );
+        assert!(out.join(t).is_file(), "{t} is linked but missing");
+        files += 1;
+    }
+    // Every cell of every round: its image, mask and error image, each linked.
+    let surface = &s["surfaces"][0];
+    let cells = surface["cells"].as_array().expect("cells");
+    for c in cells {
+        let stem = format!(
+            "cells/emulate-24/round{}/f{}_u{}",
+            c["round"],
+            num(&c["factor"]),
+            num(&c["units"])
+        );
+        for name in [
+            format!("{stem}.png"),
+            format!("{stem}-mask.png"),
+            format!("{stem}-error.png"),
+        ] {
+            assert!(targets.contains(&name), "{name} not linked");
+        }
+    }
+    assert!(
+        files >= 3 * cells.len(),
+        "{files} links for {} cells",
+        cells.len()
+    );
+    // The error image colours false shadow orange and missed shadow blue, as compare's.
+    let first = &cells[0];
+    let error = image::open(out.join(format!(
+        "cells/emulate-24/round1/f{}_u{}-error.png",
+        num(&first["factor"]),
+        num(&first["units"])
+    )))
+    .expect("an error image")
+    .to_rgb8();
+    let orange = error.pixels().filter(|p| p.0 == [240, 120, 0]).count() as u64;
+    assert_eq!(orange, counts(first).0, "false shadow pixels");
+    // The best cell is highlighted and its units shown in depth steps.
+    assert_eq!(html.matches("class=\"best\"").count(), 1, "one best cell");
+    assert!(html.contains("8 LSB of 24-bit depth"));
+    // Each round's heatmap is on the page.
+    for r in surface["rounds"].as_array().expect("rounds") {
+        let n = r["round"].as_u64().expect("round");
+        let name = if n == 1 {
+            "heatmap-emulate-24.png".to_string()
+        } else {
+            format!("heatmap-emulate-24-round{n}.png")
+        };
+        assert!(targets.contains(&name), "{name}");
+    }
+}

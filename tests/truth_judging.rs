@@ -7,7 +7,7 @@
 
 use fixedfunc::gpu::Backend;
 use fixedfunc::render::{render, RenderError, RenderOptions, Session};
-use fixedfunc::scene::{OffsetSetting, Projection, Scene};
+use fixedfunc::scene::{LightKind, OffsetSetting, Projection, Scene};
 use fixedfunc::truth::{self, TruthOptions};
 use fixedfunc::vocab::{PipelineKind, PolygonOffset, TechniqueId};
 
@@ -131,4 +131,29 @@ fn large_far_over_near_ratios_are_judged_on_their_geometry() {
             );
         }
     }
+}
+
+/// `render` judges an area-light scene against a truth of the scene's `[truth] samples`,
+/// unless its options give another count (what `truth --samples` sets).
+#[test]
+fn a_render_takes_the_truth_samples_from_the_scene_unless_told() {
+    let mut scene = Scene::default_scene();
+    let light = &mut scene.lights[0];
+    let centre = light.view.eye;
+    light.kind = LightKind::Area {
+        corner: centre - glam::Vec3::new(1.0, 0.0, 1.0),
+        edge_u: glam::Vec3::new(2.0, 0.0, 0.0),
+        edge_v: glam::Vec3::new(0.0, 0.0, 2.0),
+    };
+    scene.truth.samples = 8;
+    let mut options = options(TechniqueId::None);
+    let samples = |o: &fixedfunc::render::RenderOutcome| {
+        o.truth.area.expect("an area light's truth").samples()
+    };
+    let outcome = render(&scene, &options).expect("render");
+    assert_eq!(samples(&outcome), 8, "the scene's count");
+    options.truth.area_samples = Some(32);
+    let outcome = render(&scene, &options).expect("render");
+    assert_eq!(samples(&outcome), 32, "the options' count");
+    assert!(outcome.truth.area.expect("area").standard_error > 0.0);
 }

@@ -39,6 +39,11 @@ pub struct Args {
     /// Image size WxH (default: the scene's).
     #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]
     pub size: Option<ImageSize>,
+    /// Picture every pass of each measured row (its colour, depth, stencil, alpha and map
+    /// buffers, as `render --passes`) and give each card a strip of them: a session more
+    /// per row, and the pictures held until the report is written.
+    #[arg(long)]
+    pub passes: bool,
     #[command(flatten)]
     pub shadow: ShadowArgs,
 }
@@ -65,6 +70,11 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
         backend: args.backend,
         frames: args.frames,
         size: args.size,
+        passes: if args.passes {
+            study::PassStrips::With
+        } else {
+            study::PassStrips::Without
+        },
     };
     let mut bar = StudyBar::new("compare", Estimate::Never);
     let comparison = study::compare(&scene, &spec, |p| bar.update(p));

@@ -38,6 +38,15 @@ pub enum CliError {
     Study(#[from] fixedfunc::study::StudyError),
     #[error(transparent)]
     Report(#[from] fixedfunc::report::ReportError),
+    #[error(transparent)]
+    View(#[from] fixedfunc::view::ViewError),
+    #[error("{path}: {source}")]
+    KeyScript {
+        path: String,
+        source: fixedfunc::view::ScriptError,
+    },
+    #[error("{0}")]
+    Usage(String),
     #[error("osmesa-dir: {0}")]
     Osmesa(String),
     #[error("cannot write to standard output: {0}")]

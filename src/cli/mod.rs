@@ -23,6 +23,7 @@ mod bench;
 mod compare;
 mod error;
 mod expect;
+mod explain;
 mod info;
 mod named;
 mod osmesa_dir;
@@ -38,6 +39,7 @@ mod shadow_args;
 pub mod signals;
 mod sweep_bias;
 mod truth;
+mod view;
 
 use fixedfunc::vocab::{PipelineKind, TechniqueId};
 use std::io::Write;
@@ -110,8 +112,16 @@ enum Command {
         /// only when the light moved (unless --remake-maps always).
         #[arg(long, value_name = "WHAT:DEGREES")]
         orbit: Option<fixedfunc::render::Orbit>,
+        /// Place the light or the camera before frame 1: light:AZ[,EL] or camera:AZ[,EL]
+        /// turns its eye by EL degrees of elevation (kept within ±85°) then AZ degrees
+        /// about the vertical through what it looks at (repeatable; `view`'s `p` prints
+        /// these).
+        #[arg(long = "turn", value_name = "WHAT:AZ[,EL]", allow_hyphen_values = true)]
+        turns: Vec<fixedfunc::render::Turn>,
         #[command(flatten)]
         expect: expect::ExpectArgs,
+        #[command(flatten)]
+        passes: render::PassesArgs,
     },
     /// Every technique on both pipelines against one ground truth, frames interleaved: a
     /// table, and a report folder (report.html, results.csv/json, accuracy_vs_time.svg/png,
@@ -122,22 +132,7 @@ enum Command {
     /// cell.
     SweepBias(sweep_bias::Args),
     /// The CPU ground truth of a scene (no GL): shadow mask and soft-shadow visibility.
-    Truth {
-        /// Scene file (TOML); the built-in default scene when omitted.
-        scene: Option<PathBuf>,
-        /// Where the mask goes (PNG: 255 lit, 0 shadowed, 128 background).
-        #[arg(long, default_value = "truth.png")]
-        mask: PathBuf,
-        /// Also write the visibility fraction (grey + alpha PNG; alpha 0 on background).
-        #[arg(long)]
-        visibility: Option<PathBuf>,
-        /// Image size WxH (default: the scene's).
-        #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]
-        size: Option<ImageSize>,
-        /// Which of the scene's lights casts the shadows (0-based).
-        #[arg(long, default_value_t = 0)]
-        light: usize,
-    },
+    Truth(truth::Args),
     /// Which backends work here: GL strings, limits, depth/stencil bits, shadow extensions.
     Info {
         /// Only this backend (default: all three).
@@ -149,6 +144,16 @@ enum Command {
     },
     /// Run a script of GL 1.x calls (valid C99) and write the image it draws.
     Replay(replay::Args),
+    /// The scene in a window: keys change the technique, its polygon offset, depth bits,
+    /// map size, filter, precision, pipeline and what is shown; the mouse turns the light
+    /// (shift: the camera); the status bar gives the error against the truth. Starts a
+    /// private Xvfb when no display is set.
+    #[command(after_help = view::keys_help())]
+    View(view::Args),
+    /// Print a technique's frame as the era wrote it: a C99 program on the OSMesa API
+    /// (`--format c`), the replay script (`script`), or a page of each pass's purpose, state
+    /// and GLSL with the figures that decide success (`markdown`).
+    Explain(explain::Args),
     /// Print each distinct program a script needs: its key and its generated GLSL.
     Shaders {
         /// A GL script; without it, one frame of `--scene` (the default scene) with its
@@ -188,6 +193,8 @@ pub fn run() -> ExitCode {
         Command::Compare(args) => compare::run(args, limits),
         Command::SweepBias(args) => sweep_bias::run(args, limits),
         Command::Replay(args) => replay::run(args),
+        Command::Explain(args) => explain::run(args, limits),
+        Command::View(args) => view::run(args, limits),
         Command::Shaders {
             file,
             scene,
@@ -216,8 +223,10 @@ pub fn run() -> ExitCode {
             remake_maps,
             depth_map,
             orbit,
+            turns,
             expect,
-        } => render::run(
+            passes,
+        } => render::run_with_passes(
             render::Args {
                 scene,
                 technique,
@@ -231,26 +240,13 @@ pub fn run() -> ExitCode {
                 remake_maps,
                 depth_map,
                 orbit,
+                turns,
                 expect,
             },
+            passes,
             limits,
         ),
-        Command::Truth {
-            scene,
-            mask,
-            visibility,
-            size,
-            light,
-        } => truth::run(
-            truth::Args {
-                scene,
-                mask,
-                visibility,
-                size,
-                light,
-            },
-            limits,
-        ),
+        Command::Truth(args) => truth::run(args, limits),
     };
     match result.and_then(|()| output::flush()) {
         Ok(()) => ExitCode::SUCCESS,

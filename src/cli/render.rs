@@ -1,6 +1,10 @@
 //! `fixedfunc render`: renders a scene, writes the image and the shadow mask, prints the
 //! figures line. Progress bars for multiple frames and for the ground truth (stderr; hidden
 //! when stderr is not a terminal).
+//!
+//! `--passes DIR` also writes what every pass of the last frame left in the buffers
+//! (`render::pass_images`, pictured by `report::write_pass_images`): captured in a session
+//! of its own after the render, so the figures line is the render's alone.
 
 use fixedfunc::vocab::{PipelineKind, TechniqueId};
 use std::path::PathBuf;
@@ -31,12 +35,33 @@ pub struct Args {
     pub remake_maps: RemakeMaps,
     pub depth_map: Option<PathBuf>,
     pub orbit: Option<fixedfunc::render::Orbit>,
+    pub turns: Vec<fixedfunc::render::Turn>,
     pub expect: ExpectArgs,
 }
 
-pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
+/// `--passes DIR`, kept apart from [`Args`] so that the command's parser can flatten it.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct PassesArgs {
+    /// Also write, for every pass of the last frame (the light's map passes included), its
+    /// colour, depth (normalised) and stencil buffers, the light's map where a pass leaves
+    /// it in a texture, and for alpha-tested passes the alpha before the test and (8-bit
+    /// maps) the map minus the ramp in 8-bit steps, as DIR/NN-PASS-KIND.png, with
+    /// DIR/legend.txt. Captured in a render of its own: the figures are unchanged.
+    #[arg(long, value_name = "DIR")]
+    pub passes: Option<PathBuf>,
+}
+
+/// `render`, with `--passes` when given.
+pub fn run_with_passes(args: Args, passes: PassesArgs, limits: Limits) -> Result<(), CliError> {
     let mut scene = scene_arg::load(args.scene.as_deref(), limits)?;
     args.shadow.apply(&mut scene);
+    if let Some(dir) = &passes.passes {
+        // The folder must take files before the render, not after.
+        report::check_output_dir(dir)?;
+    }
+    for turn in &args.turns {
+        scene = turn.apply(&scene);
+    }
     let mut outputs = vec![
         ("--out", args.out.as_path()),
         ("--mask", args.mask.as_path()),
@@ -110,6 +135,9 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
             )?;
         }
     }
+    if let Some(dir) = &passes.passes {
+        write_passes(&scene, &options, dir)?;
+    }
     outln!("{}", outcome.figures())?;
     for note in &outcome.notes {
         outln!("note: {note}")?;
@@ -123,4 +151,22 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
         outcome.context_path
     )?;
     args.expect.check(&outcome.image, &args.out)
+}
+
+/// Captures the last frame's passes and writes their pictures into `dir`.
+fn write_passes(
+    scene: &fixedfunc::scene::Scene,
+    options: &RenderOptions,
+    dir: &std::path::Path,
+) -> Result<(), CliError> {
+    let images = render::pass_images::capture(scene, options)?;
+    let (_, written) = report::write_pass_images(&images, dir, "")?;
+    outln!(
+        "pass images {} ({} passes, {} files, legend {})",
+        dir.display(),
+        images.passes.len(),
+        written.files.len(),
+        report::legend_name("")
+    )?;
+    Ok(())
 }

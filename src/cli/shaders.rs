@@ -43,8 +43,27 @@ fn scene_frame(
     let prepared = techniques::Prepared::new(&scene_value);
     let plan = (t.plan)(&scene_value, &prepared).map_err(RenderError::from)?;
     let label = format!("{} ({id})", super::scene_arg::name(scene));
-    let commands = plan.setup.iter().chain(plan.frame_commands()).cloned();
-    Ok((label, commands.collect()))
+    Ok((label, frame_commands(&plan)))
+}
+
+/// A plan's setup and one frame that makes its maps, as Commands (what `shaders` and
+/// `explain` show of a scene's technique).
+pub fn frame_commands(plan: &techniques::Plan) -> Vec<Command> {
+    plan.setup
+        .iter()
+        .chain(plan.frame_commands())
+        .cloned()
+        .collect()
+}
+
+/// Program `index` as `shaders` prints it: its key, then its generated GLSL.
+pub fn program_text(index: usize, key: &ShaderKey) -> String {
+    let program = shadergen::generate(key);
+    format!(
+        "=== program {index} ===\n--- key ---\n{key:#?}\n--- vertex shader ---\n{}\n\
+         --- fragment shader ---\n{}",
+        program.vertex, program.fragment
+    )
 }
 
 pub fn run(
@@ -60,10 +79,7 @@ pub fn run(
     let keys = distinct_keys(&commands);
     outln!("{label}: {} distinct program(s)", keys.len())?;
     for (i, key) in keys.iter().enumerate() {
-        let program = shadergen::generate(key);
-        outln!("\n=== program {i} ===\n--- key ---\n{key:#?}")?;
-        outln!("--- vertex shader ---\n{}", program.vertex)?;
-        outln!("--- fragment shader ---\n{}", program.fragment)?;
+        outln!("\n{}", program_text(i, key))?;
     }
     Ok(())
 }

@@ -3,7 +3,9 @@
 //! would — the exit status is the signal's, `128 + n` in a shell: 130, 143, 129, 141 — but
 //! first the handler stops the private X servers the process started
 //! (`gpu::stop_private_displays`): a process ended by a signal runs no destructors, and
-//! an Xvfb left behind outlives it and keeps its display number.
+//! an Xvfb left behind outlives it and keeps its display number. A window's thread that
+//! sees its connection to that server break meanwhile waits for the signal rather than
+//! letting Xlib exit with status 1 (`gpu::mark_ending`).
 //!
 //! The handler is async-signal-safe: the server pids are atomics, and it calls only
 //! `kill`, `waitpid`, `nanosleep` and `raise`. It is installed with `SA_RESETHAND`, so the
@@ -11,6 +13,8 @@
 //! signal is delivered (and ends the process) as the handler returns.
 
 extern "C" fn on_signal(signal: libc::c_int) {
+    // A window's thread that sees its X connection break now waits for this signal.
+    fixedfunc::gpu::mark_ending();
     fixedfunc::gpu::stop_private_displays();
     // SAFETY: `raise` is async-signal-safe; the disposition is already the default.
     unsafe {

@@ -1,23 +1,39 @@
 //! `fixedfunc truth`: the CPU ground truth of a scene (no GL), its mask and optionally its
-//! soft-shadow visibility as PNGs, with the time it took.
+//! soft-shadow visibility as PNGs, with the time it took; for an area light, also how it
+//! was sampled and its own standard error.
 
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use fixedfunc::render::{self, ImageSize, RenderError};
-use fixedfunc::scene::Limits;
+use fixedfunc::scene::{grouped, Limits, TruthSettings};
 use fixedfunc::truth::{self, TruthOptions};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use super::error::CliError;
 use super::scene_arg;
 
+/// Arguments of `truth`.
+#[derive(clap::Args, Debug)]
 pub struct Args {
+    /// Scene file (TOML); the built-in default scene when omitted.
     pub scene: Option<PathBuf>,
+    /// Where the mask goes (PNG: 255 lit, 0 shadowed, 128 background).
+    #[arg(long, default_value = "truth.png")]
     pub mask: PathBuf,
+    /// Also write the visibility fraction (grey + alpha PNG; alpha 0 on background).
+    #[arg(long)]
     pub visibility: Option<PathBuf>,
+    /// Image size WxH (default: the scene's).
+    #[arg(long, value_name = "WxH", value_parser = scene_arg::parse_size)]
     pub size: Option<ImageSize>,
+    /// Which of the scene's lights casts the shadows (0-based).
+    #[arg(long, default_value_t = 0)]
     pub light: usize,
+    /// Shadow rays per pixel for an area light, 1 to 8192, rounded up to two s × s
+    /// stratified grids (2s²) (default: the scene's `[truth] samples`, else 128).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=i64::from(TruthSettings::MAX_SAMPLES)))]
+    pub samples: Option<u32>,
 }
 
 pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
@@ -33,6 +49,7 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
         .map_err(RenderError::from)?;
     let options = TruthOptions {
         light: args.light,
+        area_samples: args.samples,
         ..TruthOptions::default()
     };
     let spinner = ProgressBar::new_spinner()
@@ -70,5 +87,16 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
             .as_ref()
             .map_or(String::new(), |p| format!(", visibility → {}", p.display())),
     )?;
+    if let Some(area) = &truth.area {
+        outln!(
+            "area light: {} samples per pixel (two independent {s}×{s} stratified grids), \
+             standard error {:.4} (RMS over {} geometry pixels of |A − B| / 2, A and B the \
+             grids' visibilities)",
+            area.samples(),
+            area.standard_error,
+            grouped(area.geometry_pixels),
+            s = area.side,
+        )?;
+    }
     Ok(())
 }

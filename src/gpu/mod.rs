@@ -26,6 +26,7 @@ mod target;
 mod trivial;
 #[cfg(feature = "window")]
 mod window;
+mod window_input;
 mod xvfb;
 
 use std::fmt;
@@ -42,7 +43,8 @@ pub use osmesa::WindowBuffer;
 pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8};
 pub use target::{ColorStorage, RenderTarget, TargetSpec};
 pub use trivial::FlatProgram;
-pub use xvfb::{stop_private_displays, VirtualDisplay};
+pub use window_input::{Input, KeyName, Waker};
+pub use xvfb::{mark_ending, stop_private_displays, VirtualDisplay};
 
 /// Which library provides the context.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
@@ -326,6 +328,51 @@ impl GpuContext {
         }
     }
 
+    /// Shows a picture made on the CPU (top row first) in the window, sized to it, and
+    /// returns what the window shows. Only the window backend has a window.
+    pub fn show(&mut self, picture: &image::RgbaImage) -> Result<image::RgbaImage, GpuError> {
+        #[cfg(not(feature = "window"))]
+        let _ = picture;
+        match &mut self.handle {
+            #[cfg(feature = "window")]
+            Handle::Window(w) => w.show(&self.gl, picture),
+            _ => Err(self.no_window()),
+        }
+    }
+
+    /// Waits for the user's input to the window (see [`Input`]), a [`Waker`], or the
+    /// timeout (`None`: none). A headless context has no input and returns at once.
+    pub fn wait_input(&mut self, timeout: Option<std::time::Duration>) -> Vec<Input> {
+        #[cfg(not(feature = "window"))]
+        let _ = timeout;
+        match &mut self.handle {
+            #[cfg(feature = "window")]
+            Handle::Window(w) => w.wait_input(timeout),
+            _ => Vec::new(),
+        }
+    }
+
+    /// What wakes [`wait_input`](Self::wait_input) from another thread.
+    pub fn waker(&self) -> Waker {
+        match &self.handle {
+            #[cfg(feature = "window")]
+            Handle::Window(w) => w.waker(),
+            _ => Waker {
+                #[cfg(feature = "window")]
+                proxy: None,
+            },
+        }
+    }
+
+    fn no_window(&self) -> GpuError {
+        GpuError::Window {
+            detail: format!(
+                "the {} backend has no window to present to; use --backend window",
+                self.backend
+            ),
+        }
+    }
+
     /// Presents `target` in the window and returns what the window shows, top row first.
     /// Only the window backend has something to present to.
     pub fn present(&mut self, target: &RenderTarget) -> Result<image::RgbaImage, GpuError> {
@@ -334,12 +381,7 @@ impl GpuContext {
         match &mut self.handle {
             #[cfg(feature = "window")]
             Handle::Window(w) => w.present(&self.gl, target),
-            _ => Err(GpuError::Window {
-                detail: format!(
-                    "the {} backend has no window to present to; use --backend window",
-                    self.backend
-                ),
-            }),
+            _ => Err(self.no_window()),
         }
     }
 }

@@ -125,6 +125,23 @@ fn remove_leftovers_in_handler(pid: i32, number: u32) {
     }
 }
 
+/// Set when a signal is ending the process (see [`mark_ending`]).
+static ENDING: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Says that a signal is ending the process: a window's X connection that breaks from now
+/// on broke because [`stop_private_displays`] stopped its server, and the thread that
+/// notices waits for the signal to end the process instead of exiting with Xlib's status 1.
+/// Async-signal-safe (an atomic store).
+pub fn mark_ending() {
+    ENDING.store(true, Ordering::SeqCst);
+}
+
+/// Whether [`mark_ending`] was called.
+#[cfg_attr(not(feature = "window"), allow(dead_code))]
+pub fn ending() -> bool {
+    ENDING.load(Ordering::SeqCst)
+}
+
 /// Stops every X server this process started: SIGTERM, a wait of up to [`STOP_WAIT`] for it
 /// to exit, SIGKILL after that; then removes its lock file and socket if it could not (it
 /// was killed, or SIGTERM came before it set up its own handler). For signal handlers: it

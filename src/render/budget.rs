@@ -13,7 +13,9 @@
 //!   index buffers), F·G · (4 colour + depth bytes) for the framebuffer, F·G · 4 for the
 //!   colour readback, W·H · 6 for the image and the mask, map² · 8 for the map's readbacks;
 //! - the truth: W·H · [`TRUTH_BYTES_PER_PIXEL`] (each pixel's primary hit, its shade, the
-//!   mask and the visibility).
+//!   mask and the visibility);
+//! - for `compare --passes`, each row's pass pictures held until the report is written:
+//!   W·H · [`CAPTURE_BYTES_PER_PIXEL`] per row ([`Footprint::with_pass_captures`]).
 //!
 //! Measured (peak resident memory, `/usr/bin/time -f %M`, llvmpipe on EGL): `compare
 //! --size 2048x2048` of the default scene peaks at 1.44 GiB, estimated 1.6 GiB; `render`
@@ -31,6 +33,12 @@ use crate::vocab::DepthBits;
 /// and a flag, 40), the shade (value, visibility, rays: 12), the mask (1), the visibility
 /// (4), rounded up.
 pub const TRUTH_BYTES_PER_PIXEL: u64 = 60;
+
+/// Bytes per image pixel of one row's pass pictures (`render::pass_images`): at most 8
+/// passes (projective's silhouettes and copies, the eye passes), each holding colour (4),
+/// depth (4), stencil (1), the alpha before the test (4, two reads kept as one) and the
+/// map minus the ramp (4).
+pub const CAPTURE_BYTES_PER_PIXEL: u64 = 8 * (4 + 4 + 1 + 4 + 4);
 
 /// A GL context held open: 16 MiB (measured: 13.5 MB per session added to a comparison of
 /// the default scene at 64×64).
@@ -53,6 +61,8 @@ pub struct Footprint {
     pub session_bytes: u64,
     /// The truth's per-pixel buffers.
     pub truth_bytes: u64,
+    /// Pass pictures held for the report (`compare --passes`), all rows together.
+    pub capture_bytes: u64,
 }
 
 impl Footprint {
@@ -86,7 +96,17 @@ impl Footprint {
             scene_bytes: triangles.saturating_mul(BYTES_PER_TRIANGLE),
             session_bytes,
             truth_bytes: w * h * TRUTH_BYTES_PER_PIXEL,
+            capture_bytes: 0,
         }
+    }
+
+    /// With `rows` rows' pass pictures of `scene`'s image held until the report is written.
+    pub fn with_pass_captures(mut self, scene: &Scene, rows: usize) -> Footprint {
+        let pixels = u64::from(scene.image.width) * u64::from(scene.image.height);
+        self.capture_bytes = (rows as u64)
+            .saturating_mul(pixels)
+            .saturating_mul(CAPTURE_BYTES_PER_PIXEL);
+        self
     }
 
     /// Everything together.
@@ -94,6 +114,7 @@ impl Footprint {
         self.scene_bytes
             .saturating_add(self.sessions.saturating_mul(self.session_bytes))
             .saturating_add(self.truth_bytes)
+            .saturating_add(self.capture_bytes)
     }
 
     /// `Err` naming the figures when the triangles are over `limits.max_triangles` (a
@@ -127,15 +148,16 @@ pub enum OverBudget {
     Triangles { triangles: u64, max_triangles: u64 },
     #[error(
         "the run would need ≈ {} ({} for {} triangles, {} × {} per render held open \
-         (geometry, framebuffer, readbacks), {} for the truth's pixels); the memory budget \
-         is {}; raise it with --memory-budget GIB, or ask for a smaller --size or fewer \
-         techniques",
+         (geometry, framebuffer, readbacks), {} for the truth's pixels, {} for pass \
+         pictures); the memory budget is {}; raise it with --memory-budget GIB, or ask for a \
+         smaller --size or fewer techniques",
         human_bytes(.footprint.total_bytes()),
         human_bytes(.footprint.scene_bytes),
         grouped(.footprint.triangles),
         .footprint.sessions,
         human_bytes(.footprint.session_bytes),
         human_bytes(.footprint.truth_bytes),
+        human_bytes(.footprint.capture_bytes),
         human_bytes(*.memory_bytes)
     )]
     Memory {
@@ -169,5 +191,16 @@ mod tests {
             ..big.limits
         };
         assert!(compare.check(&raised).is_ok());
+        // Pass pictures count when asked for: 14 rows of 512² pictures.
+        let pictured = Footprint::of(&scene, 14).with_pass_captures(&scene, 14);
+        let pixels = u64::from(scene.image.width * scene.image.height);
+        assert_eq!(
+            pictured.capture_bytes,
+            14 * pixels * CAPTURE_BYTES_PER_PIXEL
+        );
+        assert_eq!(
+            pictured.total_bytes(),
+            Footprint::of(&scene, 14).total_bytes() + pictured.capture_bytes
+        );
     }
 }

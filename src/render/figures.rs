@@ -15,6 +15,14 @@ use crate::gpu::Backend;
 
 use super::{pipeline_name, FrameTimings};
 
+/// `error 1.23% (false shadow 3, missed shadow 4)`: the part of the line scripts read the
+/// error from (the viewer prints it alike).
+pub fn error_text(wrong_percent: f64, false_shadow: u64, missed_shadow: u64) -> String {
+    format!(
+        "error {wrong_percent:.2}% (false shadow {false_shadow}, missed shadow {missed_shadow})"
+    )
+}
+
 /// The figures of one render.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figures {
@@ -47,8 +55,8 @@ impl fmt::Display for Figures {
         }
         write!(
             f,
-            "error {:.2}% (false shadow {}, missed shadow {}) · ",
-            self.wrong_percent, self.false_shadow, self.missed_shadow,
+            "{} · ",
+            error_text(self.wrong_percent, self.false_shadow, self.missed_shadow)
         )?;
         match self.timings.steady {
             Some(s) => write!(

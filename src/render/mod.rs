@@ -11,7 +11,7 @@
 //!   written once for the studies and the benchmarks;
 //! - [`outcome`](RenderOutcome), [`figures`](Figures): what a render produced and its
 //!   one-line summary; [`light_map`](LightMap): the light's map read back (its pictures
-//!   are `report`'s).
+//!   are `report`'s); [`pass_images`]: what each pass of a frame leaves in the buffers.
 //!
 //! [`render`] is one session from start to end: `frames` frames, then the mask, the image,
 //! the counters, the truth ray-cast on the CPU and the mask compared with it
@@ -37,16 +37,21 @@ mod light_map;
 mod motion;
 mod options;
 mod outcome;
+pub mod pass_images;
 pub mod rounds;
 mod session;
 mod size;
 
-pub use budget::{Footprint, OverBudget, OBJECT_BYTES, SESSION_BYTES, TRUTH_BYTES_PER_PIXEL};
-pub use figures::Figures;
+pub use budget::{
+    Footprint, OverBudget, CAPTURE_BYTES_PER_PIXEL, OBJECT_BYTES, SESSION_BYTES,
+    TRUTH_BYTES_PER_PIXEL,
+};
+pub use figures::{error_text, Figures};
 pub use light_map::{LightMap, MapTexels};
-pub use motion::{Orbit, OrbitTarget};
+pub use motion::{Orbit, OrbitTarget, Turn, MAX_ELEVATION};
 pub use options::{apply_overrides, RemakeMaps, RenderOptions};
 pub use outcome::{FrameTimings, PassTime, RenderOutcome};
+pub use pass_images::{AlphaBeforeTest, Corner, PassImage, PassImages};
 pub use session::Session;
 pub use size::{ImageSize, SizeProblem, MAX_IMAGE_SIZE};
 
@@ -101,6 +106,8 @@ pub enum RenderError {
     Released,
     #[error("the new shadow settings need another framebuffer (depth bits, stencil or size changed): start a new session")]
     Restage,
+    #[error("a session moves only its light and camera: the objects, image size and shadow settings must stay those it was made with")]
+    NotAMove,
     #[error("the depth-map readback is missing or malformed (slot {slot})")]
     MapImage { slot: u32 },
     #[error("image size `{text}`: {problem}")]

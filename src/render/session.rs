@@ -57,6 +57,8 @@ pub struct Session {
     pass_ms: Vec<Vec<f64>>,
     maps_made: u32,
     released: bool,
+    /// Set by [`Session::pass_images`] for the one frame whose passes it pictures.
+    capture: Option<super::pass_images::Capture>,
 }
 
 impl Drop for Session {
@@ -130,6 +132,7 @@ impl Session {
             pass_ms,
             maps_made: 0,
             released: false,
+            capture: None,
         };
         if let Err(e) = setup {
             session.release();
@@ -146,6 +149,16 @@ impl Session {
     /// The technique.
     pub fn technique(&self) -> TechniqueId {
         self.scene.shadow.technique
+    }
+
+    /// Times the map passes ran since the session was made or restaged.
+    pub fn maps_made(&self) -> u32 {
+        self.maps_made
+    }
+
+    /// How the context was obtained (backend and platform).
+    pub fn context_path(&self) -> &str {
+        self.ctx.path()
     }
 
     /// Replaces the scene's `[shadow]` settings (bias, map size, filter…) but its technique,
@@ -219,6 +232,10 @@ impl Session {
                 self.ctx.finish();
                 self.pass_ms[i].push(pass_start.elapsed().as_secs_f64() * 1e3);
             }
+            if let Some(capture) = self.capture.as_mut() {
+                let target = self.target.as_ref();
+                capture.after_pass(self.pipeline.as_mut(), &self.ctx, target, i, pass, n)?;
+            }
         }
         self.ctx.finish();
         let ms = start.elapsed().as_secs_f64() * 1e3;
@@ -228,6 +245,25 @@ impl Session {
         }
         self.frames_ms.push(ms);
         Ok(ms)
+    }
+
+    /// One more frame with what each pass leaves pictured (`render::pass_images`): the
+    /// maps are made again so that their passes are in it, and after it the variants of
+    /// its alpha-tested passes are replayed and its eye passes executed once more, so the
+    /// framebuffer holds its picture again. The frame counts as any frame: its time, its
+    /// maps and the variants' programs are in this session's figures — use
+    /// [`pass_images::capture`](super::pass_images::capture) to keep a measured session's
+    /// figures clean. With an orbit it is the orbit's next frame.
+    pub fn pass_images(&mut self) -> Result<super::PassImages, RenderError> {
+        self.capture = Some(super::pass_images::Capture::new(&self.plan, &self.scene));
+        self.maps_from = None;
+        let frame = self.frame();
+        let capture = self.capture.take();
+        frame?;
+        let capture = capture.expect("set above, and only taken here");
+        let target = self.target.as_ref().ok_or(RenderError::Released)?;
+        let frame = self.frames_ms.len() as u32;
+        capture.finish(self.pipeline.as_mut(), &self.ctx, target, &self.plan, frame)
     }
 
     /// Executes the mask plan, reads the image (and the map when asked), releases the GL
@@ -294,33 +330,73 @@ impl Session {
     }
 
     fn read_results(&mut self) -> Result<GpuResults, RenderError> {
+        // The picture first: mask plans may draw over it.
+        let image = self.image()?;
+        let mask = self.mask()?;
+        let light_map = if self.options.depth_map {
+            self.light_map()?
+        } else {
+            None
+        };
+        Ok((image, mask, light_map))
+    }
+
+    /// The colour image of the last frame: the framebuffer's lower-left corner of the
+    /// scene's image size, top row first, made opaque (destination alpha holds whatever the
+    /// passes computed there — alpha-tested comparisons leave their values behind — while a
+    /// screen shows the picture opaque).
+    pub fn image(&mut self) -> Result<RgbaImage, RenderError> {
         self.ctx.make_current()?;
         let target = self.target.as_ref().ok_or(RenderError::Released)?;
-        let frames = self.frames_ms.len() as u32;
-        let p = self.pipeline.as_mut();
-        // The picture first: mask plans may draw over it.
         let (w, h) = (self.scene.image.width, self.scene.image.height);
         let full = target.read_color(&self.ctx)?;
         // The image is the framebuffer's lower-left w×h: the last h rows, top row first.
         let mut image = image::imageops::crop_imm(&full, 0, full.height() - h, w, h).to_image();
-        // What a screen shows: destination alpha holds whatever the passes computed there
-        // (alpha-tested comparisons leave their values behind); the picture is opaque.
         for px in image.pixels_mut() {
             px.0[3] = 255;
         }
-        run(p, &self.ctx, "mask", frames, &self.plan.mask.commands)?;
-        let mask = self.plan.mask.decode(|slot| p.readback(slot))?;
-        let mut light_map = None;
-        if self.options.depth_map {
-            if let Some(m) = &self.plan.map_image {
-                for pass in &self.plan.maps {
-                    run(p, &self.ctx, pass.name, frames, &pass.commands)?;
-                }
-                run(p, &self.ctx, "depth-map", frames, &m.commands)?;
-                light_map = Some(LightMap::read(m.source, |slot| p.readback(slot))?);
-            }
+        Ok(image)
+    }
+
+    /// The light's map as the technique made it (its map passes run again, then the plan's
+    /// depth-map read-out), or `None` for a technique without one. Draws over the image: read
+    /// the image first.
+    pub fn light_map(&mut self) -> Result<Option<LightMap>, RenderError> {
+        self.ctx.make_current()?;
+        let frames = self.frames_ms.len() as u32;
+        let Some(m) = &self.plan.map_image else {
+            return Ok(None);
+        };
+        let p = self.pipeline.as_mut();
+        for pass in &self.plan.maps {
+            run(p, &self.ctx, pass.name, frames, &pass.commands)?;
         }
-        Ok((image, mask, light_map))
+        run(p, &self.ctx, "depth-map", frames, &m.commands)?;
+        Ok(Some(LightMap::read(m.source, |slot| p.readback(slot))?))
+    }
+
+    /// Moves the light(s) and camera to those of `scene`, which must hold the session's own
+    /// objects (the same meshes, as an [`Orbit`](super::Orbit) or a viewer makes them) and
+    /// differ from its scene only in where things are seen from: the next frame is planned
+    /// over the same prepared geometry, and its maps are made again exactly when its map
+    /// passes differ from those that made the current maps.
+    pub fn move_to(&mut self, scene: Scene) -> Result<(), RenderError> {
+        let same_objects = scene.objects.len() == self.scene.objects.len()
+            && scene
+                .objects
+                .iter()
+                .zip(&self.scene.objects)
+                .all(|(a, b)| std::sync::Arc::ptr_eq(&a.mesh, &b.mesh));
+        if !same_objects || scene.shadow != self.scene.shadow || scene.image != self.scene.image {
+            return Err(RenderError::NotAMove);
+        }
+        self.plan = plan(&scene, &self.prepared)?;
+        if self.maps_from.as_ref() != Some(&self.plan.maps) {
+            self.maps_from = None;
+        }
+        self.base = scene.clone();
+        self.scene = scene;
+        Ok(())
     }
 
     fn release(&mut self) {

@@ -1,5 +1,6 @@
 //! The files of a comparison, written into one folder: per measured row its image, mask
-//! and error image; the truth mask; `results.csv` and `results.json`;
+//! and error image, and its pass images (`SLUG-pass-NN-PASS-KIND.png` and
+//! `SLUG-pass-legend.txt`, `pass_pictures`); the truth mask; `results.csv` and `results.json`;
 //! `accuracy_vs_time.svg`/`.png`; `contact_sheet.png`; and last `report.html`, built from
 //! the list of what was written. The CSV, the JSON and the page each say what produced
 //! them (`provenance`). A `report.html` already in the folder is removed before
@@ -17,7 +18,9 @@ use super::csv::{line, opt};
 use super::file_names::{RowFiles, CSV, HTML, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
 use super::pictures::{self, SheetLine};
 use super::provenance::{self, ContextStrings, Provenance};
-use super::{ensure_dir, html, plot, write_png, write_text, ReportError, ResultRow, Written};
+use super::{
+    ensure_dir, html, pass_pictures, plot, write_png, write_text, ReportError, ResultRow, Written,
+};
 
 /// Writes every file of the comparison into `dir` (created when missing). `scene_name`
 /// names the scene on the page.
@@ -27,7 +30,7 @@ pub fn write_comparison(
     dir: &Path,
 ) -> Result<Written, ReportError> {
     ensure_dir(dir)?;
-    remove_old_page(&dir.join(HTML))?;
+    super::files::remove_if_present(&dir.join(HTML))?;
     let rows = ResultRow::all(&c.rows);
     let produced = Provenance::of_this_process();
     let contexts = provenance::contexts(&rows);
@@ -36,6 +39,7 @@ pub fn write_comparison(
     write_png(dir, TRUTH_MASK, &c.truth.mask.to_image(), &mut written)?;
 
     let mut pictures_of = Vec::new();
+    let mut strips = Vec::new();
     for (row, result) in c.rows.iter().zip(&rows) {
         let Some(outcome) = row.outcome() else {
             continue;
@@ -48,6 +52,16 @@ pub fn write_comparison(
         write_png(dir, &files.mask, &outcome.mask.to_image(), &mut written)?;
         write_png(dir, &files.error, &error, &mut written)?;
         pictures_of.push((pictures::row_label(result), [image, mask, error]));
+        if let Some(passes) = row.pass_images() {
+            let prefix = format!("{}-pass-", row.slug());
+            let (pictures, files) = pass_pictures::write_pass_images(passes, dir, &prefix)?;
+            written.files.extend(files.files);
+            strips.push(html::PassStrip {
+                slug: row.slug(),
+                passes: pass_pictures::strip(&pictures),
+                legend: pass_pictures::legend_name(&prefix),
+            });
+        }
     }
 
     write_text(dir, CSV, &results_csv(c, &rows, &produced), &mut written)?;
@@ -82,20 +96,9 @@ pub fn write_comparison(
 
     let mut facts = scene_facts(&c.scene);
     facts.extend(provenance::facts(&produced, &contexts));
-    let page = html::page(c, &rows, scene_name, &facts, &written);
+    let page = html::page(c, &rows, scene_name, &facts, &written, &strips);
     write_text(dir, HTML, &page, &mut written)?;
     Ok(written)
-}
-
-/// Removes the page of an earlier run, if there is one.
-fn remove_old_page(page: &Path) -> Result<(), ReportError> {
-    match std::fs::remove_file(page) {
-        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(ReportError::Write {
-            path: page.to_path_buf(),
-            source: e,
-        }),
-        _ => Ok(()),
-    }
 }
 
 const CSV_HEADER: [&str; 32] = [

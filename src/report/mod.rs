@@ -28,17 +28,22 @@ pub mod font;
 mod heatmap;
 mod html;
 mod light_map;
+mod pass_pictures;
 mod pictures;
 mod plot;
 pub mod provenance;
 mod rows;
 mod sweep_files;
+pub mod sweep_page;
 mod table;
 
 pub use compare_files::write_comparison;
 pub use files::{check_output, check_output_dir, check_png_name, same_file, save_png, write_file};
 pub use light_map::{light_map_pictures, pseudo_colour};
-pub use pictures::{error_image, ErrorColours, ERROR_COLOURS};
+pub use pass_pictures::{
+    legend_name, pass_pictures, stencil_colour, step_colour, write_pass_images, PassPicture,
+};
+pub use pictures::{error_image, mask_rgb, rgb, ErrorColours, ERROR_COLOURS};
 pub use rows::{pareto_front, FrontPoint, Measured, ResultRow};
 pub use sweep_files::{sweep_summary, write_sweep};
 pub use table::{comparison_table, phase_lines};

@@ -33,7 +33,7 @@ impl Provenance {
 
 /// `a` as one shell word: as it is when it holds only safe characters, else in single
 /// quotes (a quote inside written '\'').
-fn shell_word(a: &str) -> String {
+pub fn shell_word(a: &str) -> String {
     let safe = |c: char| c.is_ascii_alphanumeric() || "-_./,:=+%@".contains(c);
     if !a.is_empty() && a.chars().all(safe) {
         a.to_string()

@@ -3,6 +3,7 @@
 //!
 //! Defaults: a missing `[camera]` or `[image]` is the default scene's; a missing `[shadow]`
 //! is technique `none`, a 256² D24 map, the technique's default offset, float precision, the driver's depth readback, nearest filtering.
+//! A missing `[truth]` is `TruthSettings::DEFAULT_SAMPLES` shadow rays per area-light pixel.
 //! A light's `up` defaults to +y, or −z when the light looks along ±y (gluLookAt needs an
 //! up that is not parallel to the view); an explicit `up` along the view is an error.
 
@@ -57,12 +58,17 @@ pub(super) fn scene(ctx: &mut Ctx, raw: RawScene) -> Result<Scene> {
         Some(s) => shadow(ctx, s.get_ref())?,
         None => ShadowSettings::default(),
     };
+    let truth = match &raw.truth {
+        Some(t) => truth(ctx, t.get_ref())?,
+        None => TruthSettings::default(),
+    };
     Ok(Scene {
         camera,
         image,
         lights,
         objects,
         shadow,
+        truth,
         warnings: std::mem::take(&mut ctx.warnings),
         limits: ctx.limits,
     })
@@ -759,4 +765,24 @@ fn shadow(ctx: &Ctx, s: &RawShadow) -> Result<ShadowSettings> {
         planar_mode: s.planar_mode.unwrap_or(defaults.planar_mode),
         projector: s.projector.unwrap_or(defaults.projector),
     })
+}
+
+/// `[truth] samples`: 1 to `TruthSettings::MAX_SAMPLES`, the whole range named when refused.
+fn truth(ctx: &Ctx, t: &RawTruth) -> Result<TruthSettings> {
+    let samples = match &t.samples {
+        None => TruthSettings::DEFAULT_SAMPLES,
+        Some(n) if (1..=TruthSettings::MAX_SAMPLES).contains(n.get_ref()) => *n.get_ref(),
+        Some(n) => {
+            return Err(ctx.invalid(
+                n.span(),
+                "truth.samples",
+                Problem::OutOfRange {
+                    low: 1.0,
+                    high: TruthSettings::MAX_SAMPLES as f32,
+                    value: *n.get_ref() as f32,
+                },
+            ))
+        }
+    };
+    Ok(TruthSettings { samples })
 }

@@ -172,6 +172,7 @@ impl Scene {
                 ),
             ],
             shadow: ShadowSettings::default(),
+            truth: TruthSettings::default(),
             warnings: Vec::new(),
             limits: Limits::default(),
         }

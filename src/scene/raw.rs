@@ -70,6 +70,7 @@ pub(super) struct RawScene {
     #[serde(default)]
     pub object: Vec<Spanned<RawObject>>,
     pub shadow: S<RawShadow>,
+    pub truth: S<RawTruth>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -222,4 +223,10 @@ pub(super) struct RawShadow {
     pub filter: Option<MapFilter>,
     pub planar_mode: Option<PlanarMode>,
     pub projector: Option<Projector>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawTruth {
+    pub samples: S<u32>,
 }

@@ -35,6 +35,7 @@ fn example_scenes_load() {
 fn minimal_scene_takes_defaults() {
     let scene = parse(CAMERA).expect("parses");
     assert_eq!(scene.shadow, ShadowSettings::default());
+    assert_eq!(scene.truth, TruthSettings::default());
     assert!(scene.objects.is_empty());
     assert_eq!(scene.image, Scene::default_scene().image);
 }
@@ -76,6 +77,10 @@ const BAD: &[(&str, &str, usize, &[&str])] = &[
     ("area without at", "[[light]]\ntype = \"area\"\ncentre = [0,5,0]\nsize = [1,1]\n", 1, &["light[0].at"]),
     ("missing obj", "[[object]]\nmesh = \"does-not-exist.obj\"\n", 2, &["object[0].mesh", "does-not-exist.obj"]),
     ("shininess", "[[object]]\nshape = \"box\"\nshininess = 200\n", 3, &["shininess", "128"]),
+    ("no truth samples", "[truth]\nsamples = 0\n", 2, &["truth.samples", "[1, 8192]", "not 0"]),
+    ("too many truth samples", "[truth]\n\nsamples = 9000\n", 3, &["truth.samples", "[1, 8192]", "9000"]),
+    ("negative truth samples", "[truth]\nsamples = -4\n", 2, &["samples", "-4"]),
+    ("unknown truth key", "[truth]\nsample = 64\n", 2, &["sample", "samples"]),
 ];
 
 #[test]
@@ -412,4 +417,19 @@ fn obj_triangles_count_against_the_budget() {
         }
     )
     .is_ok());
+}
+
+#[test]
+fn truth_samples_are_read_and_bounded() {
+    let scene = parse("[truth]\nsamples = 512\n").expect("parses");
+    assert_eq!(scene.truth.samples, 512);
+    for n in [1, TruthSettings::MAX_SAMPLES] {
+        let scene = parse(&format!("[truth]\nsamples = {n}\n")).expect("in range");
+        assert_eq!(scene.truth.samples, n);
+    }
+    assert_eq!(
+        parse("[truth]\n").expect("parses").truth,
+        TruthSettings::default(),
+        "an empty [truth] takes the defaults"
+    );
 }

@@ -2,7 +2,9 @@
 //!
 //! Order of work: the truth (CPU, timed), every session's setup (context, framebuffer,
 //! programs of the setup commands), `frames` rounds of one frame per live session, then
-//! each session's `finish` with the shared truth. The rounds are `render::rounds`; their
+//! each session's `finish` with the shared truth, and for each measured row its pass images
+//! (`render::pass_images::capture`: the last frame once more in a session of its own, opened
+//! after the measured one is released, so that no measured figure counts the capture). The rounds are `render::rounds`; their
 //! rule here: a session that turns out not to apply (see [`super::not_applicable`]) at
 //! setup or at a frame leaves them and its row says why, any other failure ends the study.
 
@@ -12,7 +14,8 @@ use std::time::Instant;
 use crate::gpu::Backend;
 use crate::render::rounds::{self, Lane, Rules, Verdict};
 use crate::render::{
-    self, pipeline_name, ImageSize, RenderError, RenderOptions, RenderOutcome, Session,
+    self, pass_images, pipeline_name, ImageSize, PassImages, RenderError, RenderOptions,
+    RenderOutcome, Session,
 };
 use crate::scene::Scene;
 use crate::truth::{self, Truth};
@@ -29,6 +32,18 @@ pub struct CompareSpec {
     pub frames: u32,
     /// Replaces the scene's image size.
     pub size: Option<ImageSize>,
+    /// Whether each measured row's passes are pictured for the report's pass strip.
+    pub passes: PassStrips,
+}
+
+/// Whether a comparison pictures every pass of each measured row (`compare --passes`): a
+/// session more per row, and the pictures held until the report is written (counted in
+/// the run's footprint).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum PassStrips {
+    #[default]
+    Without,
+    With,
 }
 
 /// Wall time a row cost the study, by phase (ms).
@@ -40,9 +55,13 @@ pub struct RowCost {
     pub frames_ms: f64,
     /// Mask passes, readback, scoring.
     pub finish_ms: f64,
+    /// The pass images' own session (`pass_images::capture`); not part of
+    /// [`total_ms`](Self::total_ms), which is the measured session's.
+    pub passes_ms: f64,
 }
 
 impl RowCost {
+    /// The measured session's phases: setup, frames, finish.
     pub fn total_ms(&self) -> f64 {
         self.setup_ms + self.frames_ms + self.finish_ms
     }
@@ -54,6 +73,8 @@ pub enum RowResult {
     Measured {
         outcome: Box<RenderOutcome>,
         cost: RowCost,
+        /// What each pass of the last frame left (the report's pass strip), when asked.
+        passes: Option<Box<PassImages>>,
     },
     /// Does not apply here (the reason is the refusing layer's message).
     Skipped { reason: String },
@@ -73,6 +94,14 @@ impl Row {
     pub fn outcome(&self) -> Option<&RenderOutcome> {
         match &self.result {
             RowResult::Measured { outcome, .. } => Some(outcome),
+            RowResult::Skipped { .. } => None,
+        }
+    }
+
+    /// The pass images, when measured.
+    pub fn pass_images(&self) -> Option<&PassImages> {
+        match &self.result {
+            RowResult::Measured { passes, .. } => passes.as_deref(),
             RowResult::Skipped { .. } => None,
         }
     }
@@ -157,7 +186,7 @@ pub fn compare(
         .flat_map(|t| spec.pipelines.iter().map(move |p| (*t, *p)))
         .collect();
     let n = combos.len() as u64;
-    let total = 1 + n * (2 + u64::from(frames));
+    let total = 1 + n * (3 + u64::from(frames));
     let mut done = 0;
     let mut step = |what: String| {
         done += 1;
@@ -177,7 +206,11 @@ pub fn compare(
     };
     let scene = render::apply_overrides(scene, spec.size, None);
     // Every session is held open at once: refuse what will not fit before the first.
-    render::Footprint::of(&scene, combos.len()).check(&scene.limits)?;
+    let mut footprint = render::Footprint::of(&scene, combos.len());
+    if spec.passes == PassStrips::With {
+        footprint = footprint.with_pass_captures(&scene, combos.len());
+    }
+    footprint.check(&scene.limits)?;
     let truth_start = Instant::now();
     let truth = truth::truth(&scene, &base.truth)?;
     let truth_ms = ms_since(truth_start);
@@ -226,6 +259,11 @@ pub fn compare(
             pipeline,
             mut cost,
         } = lane.tag;
+        let options = RenderOptions {
+            pipeline,
+            technique: Some(technique),
+            ..base.clone()
+        };
         let finished = lane.session.and_then(|session| {
             let t0 = Instant::now();
             let outcome = session.finish(Some(&truth));
@@ -233,14 +271,38 @@ pub fn compare(
             outcome
         });
         let result = match finished {
-            Ok(outcome) => RowResult::Measured {
-                outcome: Box::new(outcome),
-                cost,
-            },
+            Ok(outcome) => {
+                step(format!("judged {technique} ({})", pipeline_name(pipeline)));
+                let passes = match spec.passes {
+                    PassStrips::With => {
+                        let t0 = Instant::now();
+                        let passes = pass_images::capture(&scene, &options)
+                            .map_err(|e| failure(technique, pipeline, e))?;
+                        cost.passes_ms = ms_since(t0);
+                        Some(Box::new(passes))
+                    }
+                    PassStrips::Without => None,
+                };
+                RowResult::Measured {
+                    outcome: Box::new(outcome),
+                    cost,
+                    passes,
+                }
+            }
             Err(e) => match not_applicable(&e) {
-                Some(reason) => RowResult::Skipped { reason },
+                Some(reason) => {
+                    step(format!("judged {technique} ({})", pipeline_name(pipeline)));
+                    RowResult::Skipped { reason }
+                }
                 None => return Err(failure(technique, pipeline, e)),
             },
+        };
+        let what = match &result {
+            RowResult::Measured {
+                passes: Some(_), ..
+            } => "pictured the passes of",
+            RowResult::Measured { passes: None, .. } => "finished",
+            RowResult::Skipped { .. } => "no passes to picture for",
         };
         rows.push(Row {
             technique,
@@ -248,7 +310,7 @@ pub fn compare(
             backend: spec.backend,
             result,
         });
-        step(format!("judged {technique} ({})", pipeline_name(pipeline)));
+        step(format!("{what} {technique} ({})", pipeline_name(pipeline)));
     }
 
     Ok(Comparison {

@@ -24,9 +24,12 @@ pub mod compare;
 pub mod range;
 pub mod sweep;
 
-pub use compare::{compare, CompareSpec, Comparison, Row, RowCost, RowResult};
+pub use compare::{compare, CompareSpec, Comparison, PassStrips, Row, RowCost, RowResult};
 pub use range::{RangeProblem, SweepRange};
-pub use sweep::{edges, sweep, Cell, Edge, Surface, SurfaceResult, Sweep, SweepSpec};
+pub use sweep::{
+    best, edges, refine_round, sweep, sweep_with_pictures, Axis, Cell, Edge, Refine, Round, Shot,
+    Surface, SurfaceResult, Sweep, SweepSpec, Verdict, FACTOR_FLOOR, MAX_ROUNDS, UNITS_FLOOR,
+};
 
 use crate::pipeline::PipelineError;
 use crate::render::RenderError;

@@ -62,6 +62,30 @@ impl SweepRange {
             .map(|i| (f64::from(self.start) + span * f64::from(i) / last) as f32)
             .collect()
     }
+
+    /// The distance between neighbouring values (0 for a single value).
+    pub fn spacing(&self) -> f64 {
+        if self.steps <= 1 {
+            0.0
+        } else {
+            (f64::from(self.end) - f64::from(self.start)) / f64::from(self.steps - 1)
+        }
+    }
+
+    /// `steps` values `spacing` apart with `centre` at index ⌊(steps − 1)/2⌋ (the middle
+    /// value, or the lower of the two middle ones), the whole range moved up when its
+    /// start would fall below `lowest`: it then starts at `lowest` and `centre` lies nearer
+    /// its low end (or between two of its values). `steps` ≥ 2 and `spacing` > 0.
+    pub fn around(centre: f32, spacing: f64, steps: u32, lowest: f32) -> SweepRange {
+        let below = f64::from((steps.max(2) - 1) / 2);
+        let start = (f64::from(centre) - spacing * below).max(f64::from(lowest));
+        let end = start + spacing * f64::from(steps.max(2) - 1);
+        SweepRange {
+            start: start as f32,
+            end: end as f32,
+            steps: steps.max(2),
+        }
+    }
 }
 
 fn number(text: &str) -> Result<f32, RangeProblem> {
@@ -155,6 +179,32 @@ mod tests {
             "0..4:5".parse::<SweepRange>().map(|r| r.to_string()),
             Ok("0..4:5".into())
         );
+    }
+
+    #[test]
+    fn a_range_around_a_value_centres_it_and_stops_at_the_lowest() {
+        let r = SweepRange::around(1.0, 0.5, 3, 0.0);
+        assert_eq!((r.values(), r.spacing()), (vec![0.5, 1.0, 1.5], 0.5));
+        // Four values: the centre is the lower of the two middle ones.
+        assert_eq!(
+            SweepRange::around(2.0, 1.0, 4, 0.0).values(),
+            [1.0, 2.0, 3.0, 4.0]
+        );
+        // It would start at −0.25: moved up to start at 0.
+        assert_eq!(
+            SweepRange::around(0.25, 0.5, 3, 0.0).values(),
+            [0.0, 0.5, 1.0]
+        );
+        assert_eq!(
+            SweepRange::around(-1.0, 1.0, 3, -4.0).values(),
+            [-2.0, -1.0, 0.0]
+        );
+        assert_eq!(SweepRange::single(3.0).spacing(), 0.0);
+        assert_eq!(ok_range("0..4:5").spacing(), 1.0);
+    }
+
+    fn ok_range(s: &str) -> SweepRange {
+        s.parse().unwrap_or_else(|e| panic!("{s}: {e}"))
     }
 
     #[test]

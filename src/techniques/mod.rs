@@ -22,6 +22,7 @@
 
 pub mod depth_compare;
 pub mod dual8;
+pub mod explain;
 pub mod linear8;
 pub mod map;
 pub mod multidigit16;
