@@ -179,11 +179,11 @@ impl Lanes {
             padded = p;
             &padded
         };
-        let halves = |a: &[f32; LANES]| -> [Vec4; GROUPS] {
+        let groups = |a: &[f32; LANES]| -> [Vec4; GROUPS] {
             std::array::from_fn(|g| Vec4::from_slice(&a[4 * g..4 * g + 4]))
         };
-        let o = [halves(&rays.o[0]), halves(&rays.o[1]), halves(&rays.o[2])];
-        let d = [halves(&rays.d[0]), halves(&rays.d[1]), halves(&rays.d[2])];
+        let o = [groups(&rays.o[0]), groups(&rays.o[1]), groups(&rays.o[2])];
+        let d = [groups(&rays.d[0]), groups(&rays.d[1]), groups(&rays.d[2])];
         // ±1/ε = ±2²³ exactly.
         let (epsilon, over_epsilon) = (Vec4::splat(f32::EPSILON), Vec4::splat(1.0 / f32::EPSILON));
         let reciprocal = |d: Vec4| {
@@ -216,7 +216,7 @@ impl Lanes {
             };
             Vec4::new(m(0), m(1), m(2), 0.0)
         };
-        let tmax = halves(&rays.tmax);
+        let tmax = groups(&rays.tmax);
         Lanes {
             o,
             d,
