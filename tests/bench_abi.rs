@@ -5,6 +5,8 @@
 //! shadow frame), that the group's JSON has a row per mode, and that a bad mode, a missing
 //! library folder, compiler or header give their stated errors.
 
+#[path = "c/harness.rs"]
+mod harness;
 mod support;
 
 use std::path::{Path, PathBuf};
@@ -19,20 +21,6 @@ use support::{assert_images_match, Tolerance};
 /// 32 × 32 ground and draws everything twice (light pass, eye pass).
 const SPHERES_VERTICES: u64 = 16 * 6 * 48 * 24;
 const SHADOW_VERTICES: u64 = 2 * (SPHERES_VERTICES + 6 * 32 * 32);
-
-/// The folder `fixedfunc osmesa-dir` prints.
-fn fixedfunc_dir() -> PathBuf {
-    let out = Command::new(env!("CARGO_BIN_EXE_fixedfunc"))
-        .arg("osmesa-dir")
-        .output()
-        .expect("fixedfunc runs");
-    assert!(
-        out.status.success(),
-        "fixedfunc osmesa-dir failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    PathBuf::from(String::from_utf8_lossy(&out.stdout).trim())
-}
 
 fn work_dir(name: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
@@ -63,7 +51,7 @@ fn read_ppm(path: &Path) -> RgbaImage {
 fn both_libraries_draw_every_mode_alike() {
     let program = Program::compile().expect("the program compiles");
     let libraries = Libraries {
-        fixedfunc_dir: fixedfunc_dir(),
+        fixedfunc_dir: harness::fixedfunc_dir(),
     };
     let dir = work_dir("modes");
     for mode in AbiMode::all() {

@@ -367,17 +367,6 @@ pub fn offset_units_in_z(depth: DepthBits, units: f32) -> f64 {
     }
 }
 
-/// A number with at most 4 decimals and no trailing zeros.
-fn short(x: f64) -> String {
-    let t = format!("{x:.4}");
-    let t = t.trim_end_matches('0').trim_end_matches('.');
-    if t == "-0" {
-        "0".to_string()
-    } else {
-        t.to_string()
-    }
-}
-
 /// The figures that decide the scene's technique (its `[shadow] technique`).
 pub fn figures(scene: &Scene) -> Vec<Figure> {
     let s = &scene.shadow;
@@ -500,8 +489,8 @@ fn depth_compare_figures(scene: &Scene) -> Vec<Figure> {
             format!(
                 "{} steps of the map's format from the units (the default gives {}; \
                  Kilgard's \"usually works\" (1, 4)); the factor covers slopes",
-                short(given),
-                short(default)
+                crate::vocab::short(given),
+                crate::vocab::short(default)
             ),
         ),
     ]
@@ -543,10 +532,10 @@ fn dual8_figures(scene: &Scene) -> Vec<Figure> {
             format!(
                 "{} 8-bit steps from the units, {} (the technique's default gives {}; the \
                  slide's \"(1.0, 4.0)\" gives {})",
-                short(given),
+                crate::vocab::short(given),
                 verdict(given, 2.0),
-                short(default),
-                short(offset_units_in_z(DepthBits::D24, 4.0) * 255.0)
+                crate::vocab::short(default),
+                crate::vocab::short(offset_units_in_z(DepthBits::D24, 4.0) * 255.0)
             ),
         ),
     ]
@@ -560,7 +549,7 @@ fn linear8_figures(scene: &Scene) -> Vec<Figure> {
     let step = range.map_or(String::new(), |(near, far)| {
         format!(
             "; the light's range {near}…{far} makes one step {} scene units",
-            short(f64::from(far - near) / 256.0)
+            crate::vocab::short(f64::from(far - near) / 256.0)
         )
     });
     vec![
@@ -584,7 +573,7 @@ fn linear8_figures(scene: &Scene) -> Vec<Figure> {
             format!(
                 "b = units/256: {} ramp steps, {} (at least 1 step is needed; polygon offset \
                  cannot move this map, which is colour, and the factor is ignored)",
-                short(f64::from(units)),
+                crate::vocab::short(f64::from(units)),
                 verdict(f64::from(units), 1.0)
             ),
         ),
@@ -624,9 +613,9 @@ fn digit_figures(scene: &Scene) -> Vec<Figure> {
             format!(
                 "{} 16-bit steps from the units, {} (at least 2 are needed: F − D is up to 1 \
                  for the same depth; the default gives {})",
-                short(given),
+                crate::vocab::short(given),
                 verdict(given, 2.0),
-                short(default)
+                crate::vocab::short(default)
             ),
         ),
     ]
@@ -968,7 +957,7 @@ fn number(x: f64) -> String {
     if x != 0.0 && x.abs() < 1e-3 {
         format!("{x:.3e}")
     } else {
-        short(x)
+        crate::vocab::short(x)
     }
 }
 

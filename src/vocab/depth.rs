@@ -58,8 +58,8 @@ impl DepthBits {
     }
 }
 
-/// A number with at most 4 significant decimals, no trailing zeros.
-fn short(x: f64) -> String {
+/// A number with at most 4 decimals, no trailing zeros (`-0` printed as `0`).
+pub fn short(x: f64) -> String {
     let t = format!("{x:.4}");
     let t = t.trim_end_matches('0').trim_end_matches('.');
     if t == "-0" {

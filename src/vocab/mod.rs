@@ -11,7 +11,7 @@ mod settings;
 mod technique;
 
 pub use bias::{default_offset, offset_text, OffsetSource};
-pub use depth::{DepthBits, DepthRule, ReadbackRule};
+pub use depth::{short, DepthBits, DepthRule, ReadbackRule};
 pub use settings::{
     BadOffset, MapFilter, OffsetArg, PipelineKind, PlanarMode, PolygonOffset, Precision, Projector,
 };
