@@ -253,5 +253,8 @@ fn the_last_pass_is_the_image_for_every_technique() {
             );
         }
     }
-    assert_eq!(compared, 2 * TechniqueId::all().len() - 1);
+    // Every technique on both pipelines, but multidigit16 natively and the three the
+    // default scene cannot run: accumulate and occlusion-textures need an area light,
+    // occluder-planes declared shadow planes (each refused as not applicable).
+    assert_eq!(compared, 2 * (TechniqueId::all().len() - 3) - 1);
 }

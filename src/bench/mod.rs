@@ -3,10 +3,11 @@
 //! backend's contexts and producing the first read-back frame) and `pipeline` (the same
 //! frame through the emulated and the native path, interleaved), `truth` and `techniques`
 //! (every shadow technique on both paths, split into light pass, readback + upload and eye
-//! passes), and `abi` (an OSMesa C program on the layer's C library against Mesa's own,
-//! interleaved).
+//! passes), `abi` (an OSMesa C program on the layer's C library against Mesa's own,
+//! interleaved) and `coleman` (Coleman's draw-time experiments with fleets of F-35s).
 
 pub mod abi;
+pub mod coleman;
 pub mod context;
 pub mod pipeline;
 pub mod techniques;
@@ -25,6 +26,9 @@ pub enum BenchGroup {
     Techniques,
     /// The C library against Mesa's OSMesa: one C program, five drawing paths.
     Abi,
+    /// Coleman's experiments: fleets of 1 to 200 F-35s, occluder planes against shadow
+    /// maps and projective shadows, at three scales.
+    Coleman,
 }
 
 impl crate::vocab::Named for BenchGroup {
@@ -34,6 +38,7 @@ impl crate::vocab::Named for BenchGroup {
         ("truth", BenchGroup::Truth),
         ("techniques", BenchGroup::Techniques),
         ("abi", BenchGroup::Abi),
+        ("coleman", BenchGroup::Coleman),
     ];
 
     fn help(self) -> &'static str {
@@ -50,16 +55,21 @@ impl crate::vocab::Named for BenchGroup {
                 "an OSMesa C program on the C library against Mesa's OSMesa: immediate mode, \
                  arrays, lists, buffers, a shadow-map frame"
             }
+            BenchGroup::Coleman => {
+                "Coleman's experiments: 1 to 200 F-35s, occluder planes against depth-compare \
+                 and projective, at three scales"
+            }
         }
     }
 }
 
 impl BenchGroup {
-    pub const ALL: [BenchGroup; 5] = [
+    pub const ALL: [BenchGroup; 6] = [
         BenchGroup::Context,
         BenchGroup::Pipeline,
         BenchGroup::Truth,
         BenchGroup::Techniques,
         BenchGroup::Abi,
+        BenchGroup::Coleman,
     ];
 }

@@ -45,6 +45,7 @@ pub fn run(only: Option<BenchGroup>, repeats: usize, json: bool) -> Result<(), C
             BenchGroup::Truth => run_truth(repeats, json)?,
             BenchGroup::Techniques => run_techniques(repeats, json)?,
             BenchGroup::Abi => run_abi(repeats, json, only.is_none())?,
+            BenchGroup::Coleman => run_coleman(repeats, json)?,
         }
     }
     Ok(())
@@ -204,6 +205,74 @@ fn run_truth(runs: usize, json: bool) -> Result<(), CliError> {
             t.primary_rays_per_s / 1e6,
             t.shadow_rays_per_s / 1e6,
             t.total_ms
+        )?;
+    }
+    Ok(())
+}
+
+fn run_coleman(repeats: usize, json: bool) -> Result<(), CliError> {
+    use fixedfunc::bench::coleman::{self, INSTANCES, SCALES, SPREAD, TECHNIQUES};
+    let rounds = SCALES.len() as u64 * (repeats.max(1) as u64 + 1);
+    let mut bar = CountBar::new("bench coleman", rounds, "rounds");
+    bar.set_what("fleets of F-35s, interleaved".into());
+    let (rows, skipped) = coleman::measure(repeats, || bar.inc())?;
+    bar.finish();
+    if json {
+        let value = serde_json::json!({ "rows": rows, "skipped": skipped });
+        outln!("{}", serde_json::to_string_pretty(&value)?)?;
+        return Ok(());
+    }
+    outln!(
+        "coleman: assets/f35.toml with {INSTANCES:?} aircraft over ±{SPREAD} m (seed {}), emulate, 512², maps each frame; {} steady frames, interleaved per scale; ms median [min–max]",
+        coleman::SEED,
+        repeats.max(1)
+    )?;
+    outln!(
+        "{:<7} {:>9} {:>10} {:>30} {:>30} {:>30}",
+        "scale",
+        "aircraft",
+        "triangles",
+        TECHNIQUES[0].to_string(),
+        TECHNIQUES[1].to_string(),
+        TECHNIQUES[2].to_string()
+    )?;
+    for scale in SCALES {
+        for instances in INSTANCES {
+            let cells: Vec<String> = TECHNIQUES
+                .iter()
+                .map(|&t| {
+                    rows.iter()
+                        .find(|r| r.technique == t && r.instances == instances && r.scale == scale)
+                        .map_or("—".to_string(), |r| {
+                            format!(
+                                "{:.2} [{:.2}–{:.2}]",
+                                r.frame.median, r.frame.min, r.frame.max
+                            )
+                        })
+                })
+                .collect();
+            let triangles = rows
+                .iter()
+                .find(|r| r.instances == instances && r.scale == scale)
+                .map_or(0, |r| r.triangles);
+            outln!(
+                "×{:<6} {:>9} {:>10} {:>30} {:>30} {:>30}",
+                scale,
+                instances,
+                triangles,
+                cells[0],
+                cells[1],
+                cells[2]
+            )?;
+        }
+    }
+    for s in &skipped {
+        outln!(
+            "skipped: {} with {} aircraft at ×{}: {}",
+            s.technique,
+            s.instances,
+            s.scale,
+            s.reason
         )?;
     }
     Ok(())

@@ -19,6 +19,8 @@ pub enum CliError {
     BackendUnavailable { backend: Backend, reasons: String },
     #[error(transparent)]
     Bench(#[from] fixedfunc::bench::pipeline::BenchError),
+    #[error(transparent)]
+    Coleman(#[from] fixedfunc::bench::coleman::ColemanError),
     #[error("cannot write JSON: {0}")]
     Json(#[from] serde_json::Error),
     #[error("{path}: {source}")]

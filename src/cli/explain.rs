@@ -172,6 +172,16 @@ impl Frame {
         let fb = self.plan.framebuffer;
         format!("{}x{}", fb.width, fb.height)
     }
+
+    /// `replay`'s options beyond the size: `--accum` when the plan uses the accumulation
+    /// buffer (glAccum), which a replay's window has only when asked for.
+    fn replay_extra(&self) -> &'static str {
+        if self.plan.needs_accumulation() {
+            " --accum"
+        } else {
+            ""
+        }
+    }
 }
 
 /// When a section runs.
@@ -275,11 +285,12 @@ fn script_text(frame: &Frame) -> String {
         frame.title(),
         String::new(),
         format!(
-            "Written by `fixedfunc explain --format script`; `fixedfunc replay FILE --size {}` \
+            "Written by `fixedfunc explain --format script`; `fixedfunc replay FILE --size {}{}` \
              runs it on the framebuffer the plan asks for: {}×{}, shared by the image (its \
              lower-left {}×{}, what `render` writes) and the light's map, drawn in the same \
              corner before the eye passes.",
             frame.replay_size(),
+            frame.replay_extra(),
             fb.width,
             fb.height,
             frame.scene.image.width,
@@ -665,7 +676,7 @@ fn c_main(frame: &Frame, sections: &[Section], nv: &[String], required: bool) ->
     let mut out = format!(
         "int main(int argc, char **argv) {{\n\
          \x20   const char *out = argc > 1 ? argv[1] : \"{}.ppm\";\n\
-         \x20   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, DEPTH_BITS, STENCIL_BITS, 0, NULL);\n\
+         \x20   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, DEPTH_BITS, STENCIL_BITS, {}, NULL);\n\
          \x20   GLubyte *buffer = malloc((size_t)FB_WIDTH * FB_HEIGHT * 4);\n\
          \x20   if (!ctx || !buffer || !OSMesaMakeCurrent(ctx, buffer, GL_UNSIGNED_BYTE, FB_WIDTH, FB_HEIGHT)) {{\n\
          \x20       fprintf(stderr, \"%s: no OSMesa context of %dx%d with %d depth and %d stencil bits\\n\",\n\
@@ -674,7 +685,9 @@ fn c_main(frame: &Frame, sections: &[Section], nv: &[String], required: bool) ->
          \x20       free(buffer);\n\
          \x20       return 2;\n\
          \x20   }}\n",
-        frame.id.name()
+        frame.id.name(),
+        // glAccum needs the window's accumulation buffer (Mesa gives 16 bits per channel).
+        if frame.plan.needs_accumulation() { 16 } else { 0 },
     );
     out.push_str(
         "    const char *extensions = (const char *)glGetString(GL_EXTENSIONS);\n\

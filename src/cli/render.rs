@@ -1,5 +1,8 @@
 //! `fixedfunc render`: renders a scene, writes the image and the shadow mask, prints the
-//! figures line. Progress bars for multiple frames and for the ground truth (stderr; hidden
+//! figures line. For an area light the line carries the visibility RMSE, a second line the
+//! visibility's other figures (maximum error, penumbra RMSE), and a soft technique's
+//! visibility image (grey = fraction of the light seen, alpha 0 on background) is written
+//! beside the mask as `MASK-visibility.png`. Progress bars for multiple frames and for the ground truth (stderr; hidden
 //! when stderr is not a terminal).
 //!
 //! `--passes DIR` also writes what every pass of the last frame left in the buffers
@@ -69,6 +72,11 @@ pub fn run_with_passes(args: Args, passes: PassesArgs, limits: Limits) -> Result
     if let Some(path) = &args.depth_map {
         outputs.push(("--depth-map", path.as_path()));
     }
+    let visibility_path = scene_arg::beside(&args.mask, "visibility");
+    outputs.push((
+        "the visibility image beside --mask",
+        visibility_path.as_path(),
+    ));
     let picture = args.expect.picture_path(&args.out);
     if let Some(path) = &picture {
         outputs.push(("the --expect difference picture", path.as_path()));
@@ -138,7 +146,38 @@ pub fn run_with_passes(args: Args, passes: PassesArgs, limits: Limits) -> Result
     if let Some(dir) = &passes.passes {
         write_passes(&scene, &options, dir)?;
     }
+    let soft = outcome
+        .visibility
+        .as_ref()
+        .filter(|v| v.source == render::VisibilitySource::Soft);
+    if let Some(v) = soft {
+        scene_arg::save(&v.image.to_image(), &visibility_path)?;
+    }
     outln!("{}", outcome.figures())?;
+    if let Some(v) = &outcome.visibility {
+        let e = &v.errors;
+        let penumbra = e
+            .penumbra_rmse
+            .map_or("no penumbra in the truth".to_string(), |r| {
+                format!("penumbra RMSE {r:.3} over {} pixels", e.penumbra_pixels)
+            });
+        let from = match v.source {
+            render::VisibilitySource::Soft => "the technique's soft visibility",
+            render::VisibilitySource::HardMask => "the hard mask as 0 or 1",
+        };
+        outln!(
+            "visibility ({from}): RMSE {:.3}, max |error| {:.3}, {penumbra}{}",
+            e.rmse,
+            e.max_abs,
+            soft.map_or(String::new(), |_| format!(
+                " · image {}",
+                visibility_path.display()
+            ))
+        )?;
+    }
+    for e in &outcome.objects {
+        outln!("{}", render::object_line(&scene, e))?;
+    }
     for note in &outcome.notes {
         outln!("note: {note}")?;
     }

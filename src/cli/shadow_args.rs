@@ -1,9 +1,9 @@
 //! The shadow-map parameters every rendering command accepts, overriding the scene's
 //! `[shadow]` table: map size, light depth bits, polygon offset, precision, filter,
-//! readback rule, and the projection techniques' modes.
+//! readback rule, the projection techniques' modes, and `accumulate`'s light samples.
 
 use clap::Args;
-use fixedfunc::scene::{OffsetSetting, Scene};
+use fixedfunc::scene::{OffsetSetting, Scene, ShadowSettings};
 use fixedfunc::vocab::{
     DepthBits, MapFilter, OffsetArg, PlanarMode, Precision, Projector, ReadbackRule,
 };
@@ -40,6 +40,10 @@ pub struct ShadowArgs {
     /// projection that clips false shadows (default: the scene's `projector`).
     #[arg(long, value_parser = super::named::named::<Projector>())]
     pub projector: Option<Projector>,
+    /// `accumulate`'s renders per frame, one from each stratified point of the area light,
+    /// 1 to 256 (default: the scene's `light_samples`, else 16).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=i64::from(ShadowSettings::MAX_LIGHT_SAMPLES)))]
+    pub light_samples: Option<u32>,
 }
 
 /// `FACTOR,UNITS` (finite numbers) or `none`, by the vocabulary's rule (clap shows its
@@ -77,6 +81,9 @@ impl ShadowArgs {
         }
         if let Some(v) = self.projector {
             s.projector = v;
+        }
+        if let Some(v) = self.light_samples {
+            s.light_samples = v;
         }
     }
 }

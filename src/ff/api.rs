@@ -502,6 +502,10 @@ macro_rules! gl_entry_table {
         PushName = glPushName(Left; name: GLuint);
         PopName = glPopName(Left; );
         PassThrough = glPassThrough(Left; token: GLfloat);
+        // Shader programs (GL 2.0): plans use them through `ff::program`, which no script
+        // or C program can build, so their entry points are left out here.
+        UseProgram = glUseProgram(Left; program: GLuint);
+        Uniform1f = glUniform1f(Left; location: GLint, v0: GLfloat);
         Map1f = glMap1f(Left; target: GLenum, u1: GLfloat, u2: GLfloat, stride: GLint, order: GLint, points: *const GLfloat);
         Map1d = glMap1d(Left; target: GLenum, u1: GLdouble, u2: GLdouble, stride: GLint, order: GLint, points: *const GLdouble);
         Map2f = glMap2f(Left; target: GLenum, u1: GLfloat, u2: GLfloat, ustride: GLint, uorder: GLint, v1: GLfloat, v2: GLfloat, vstride: GLint, vorder: GLint, points: *const GLfloat);
@@ -1170,6 +1174,8 @@ impl Command {
             Command::DrawBuffer(_) => Entry::DrawBuffer,
             Command::ReadBuffer(_) => Entry::ReadBuffer,
             Command::GenerateMipmap(_) => Entry::GenerateMipmap,
+            Command::UseProgram(_) => Entry::UseProgram,
+            Command::Uniform { .. } => Entry::Uniform1f,
             Command::BlitFramebuffer(_) => Entry::BlitFramebuffer,
             Command::TexSubImage1D(_) => Entry::TexSubImage1D,
             Command::CopyTexImage1D(_) => Entry::CopyTexImage1D,

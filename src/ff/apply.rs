@@ -345,6 +345,9 @@ impl FixedState {
             | Command::ReadBuffer(_)
             | Command::GenerateMipmap(_)
             | Command::Query(_) => {}
+            // A program and its uniforms are the pipeline's (`ff::program`): the model of
+            // the fixed-function state does not change.
+            Command::UseProgram(_) | Command::Uniform { .. } => {}
             Command::RasterPos(p) => self.set_raster_pos(*p),
             Command::WindowPos(p) => self.set_window_pos(*p),
             Command::Bitmap(b) => {

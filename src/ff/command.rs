@@ -506,4 +506,13 @@ pub enum Command {
     LineStipple(LineStipple),
     /// glGenQueries, glDeleteQueries, glBeginQuery, glEndQuery (ff::queries).
     Query(super::queries::QueryCommand),
+    // Shader programs (ff::program): beyond GL 1.x, for the techniques that bring GLSL.
+    /// glUseProgram: draws use `program` instead of the fixed-function pipeline until
+    /// `None` (glUseProgram(0)). Emulate pipeline only.
+    UseProgram(Option<Arc<super::program::ShaderProgram>>),
+    /// glUniform* of the uniform `name` of the program in use.
+    Uniform {
+        name: Arc<str>,
+        value: super::program::UniformValue,
+    },
 }

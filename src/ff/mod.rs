@@ -53,6 +53,7 @@ pub mod matrix;
 pub mod pixels;
 pub mod point;
 pub mod precision;
+pub mod program;
 pub mod queries;
 pub mod query;
 pub mod raster;
@@ -104,6 +105,7 @@ pub use pixels::{
     PixelZoom,
 };
 pub use point::{PointParam, PointParams};
+pub use program::{BuiltIn, SamplerBinding, ShaderProgram, UniformValue};
 pub use query::QueryValue;
 pub use raster::RasterPos;
 pub use state::{

@@ -38,7 +38,11 @@ const FIN: [[f32; 2]; 4] = [[-1.1, 0.0], [-1.75, 0.85], [-2.0, 0.85], [-2.0, 0.0
 
 /// A convex polygon (points in its own (a, b) plane) extruded by ±`half` along the third
 /// axis; `to_xyz` maps (a, b, c) to model space. Flat normals, outward by construction.
-fn slab(outline: &[[f32; 2]], half: f32, to_xyz: impl Fn(f32, f32, f32) -> Vec3) -> Mesh {
+pub(super) fn slab(
+    outline: &[[f32; 2]],
+    half: f32,
+    to_xyz: impl Fn(f32, f32, f32) -> Vec3,
+) -> Mesh {
     let top: Vec<Vec3> = outline.iter().map(|p| to_xyz(p[0], p[1], half)).collect();
     let bottom: Vec<Vec3> = outline.iter().map(|p| to_xyz(p[0], p[1], -half)).collect();
     let centre = top.iter().chain(&bottom).copied().sum::<Vec3>() / (2 * outline.len()) as f32;

@@ -15,11 +15,14 @@
 //! report the count.
 
 mod aircraft;
+mod aircraft_f35;
 mod obj;
+pub mod occluder;
 mod shapes;
 mod teapot;
 
 pub use aircraft::aircraft;
+pub use aircraft_f35::aircraft_f35;
 pub use obj::{load_obj, load_obj_str, ObjMesh};
 pub use shapes::{cuboid, plane, sphere, torus};
 pub use teapot::teapot;
@@ -28,6 +31,26 @@ use crate::ff::{Geometry, Primitive};
 use glam::{Mat3, Mat4, Vec3};
 use std::collections::HashMap;
 use std::path::PathBuf;
+
+/// Which procedural aircraft (`shape = "aircraft"`, `layout = …`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum AircraftLayout {
+    /// The fighter of [`aircraft`] (x forward, y up), `length` units long. The default.
+    Fighter { length: f32 },
+    /// [`aircraft_f35`] in the model space of Coleman's F-35 (z up, metres), which the
+    /// thesis's three shadow planes fit.
+    F35,
+}
+
+impl AircraftLayout {
+    /// The object-space mesh.
+    pub fn mesh(self) -> Mesh {
+        match self {
+            AircraftLayout::Fighter { length } => aircraft(length),
+            AircraftLayout::F35 => aircraft_f35(),
+        }
+    }
+}
 
 /// An indexed triangle mesh with one normal per vertex.
 #[derive(Debug, Clone, Default, PartialEq)]

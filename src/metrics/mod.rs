@@ -13,11 +13,15 @@
 mod band;
 pub mod image_diff;
 mod mask;
+pub mod per_object;
 #[cfg(test)]
 mod tests;
+mod visibility;
 
 pub use band::edge_band;
 pub use mask::{Class, Mask, BACKGROUND, LIT, SHADOWED};
+pub use per_object::{per_object, Cause, ObjectErrors, ShadowCauses};
+pub use visibility::{visibility_errors, VisibilityErrors, VisibilityImage};
 
 use serde::Serialize;
 

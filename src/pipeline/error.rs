@@ -55,6 +55,12 @@ pub enum PipelineError {
     /// for a type other than UNSIGNED_BYTE / UNSIGNED_SHORT).
     #[error("readback_{slot} is not FLOAT depth, or the conversion is not to UNSIGNED_BYTE or UNSIGNED_SHORT")]
     NotFloatDepth { slot: u32 },
+    /// A plan's shader program (`ff::program`) on the native path.
+    #[error("shader programs run on the emulate pipeline; Mesa's fixed function has none (use --pipeline emulate)")]
+    ShaderPrograms,
+    /// glUniform with no program in use (GL's INVALID_OPERATION), refused.
+    #[error("glUniform of `{name}` with no shader program in use")]
+    UniformWithoutProgram { name: String },
     /// A GL object could not be created.
     #[error("GL object creation failed: {0}")]
     Object(String),

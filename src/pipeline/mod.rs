@@ -54,6 +54,28 @@ pub fn create_with(
     }
 }
 
+/// [`create_with`] for a plan that uses the accumulation buffer, `size` pixels of it:
+/// the emulated path keeps Mesa's signed 16-bit values beside the context
+/// (`emulate::accum`) and draws into the bound target; the native path needs framebuffer
+/// 0 of an OSMesa context made with a `gpu::WindowBuffer` (Mesa gives framebuffer objects
+/// none), and binds it — on any other context [`PipelineError::NoAccumBuffer`] names the
+/// backend to use.
+pub fn create_with_accumulation(
+    kind: PipelineKind,
+    ctx: &GpuContext,
+    precision: crate::vocab::Precision,
+    size: (u32, u32),
+) -> Result<Box<dyn Pipeline>, PipelineError> {
+    match kind {
+        PipelineKind::Emulate => {
+            let mut p = emulate::EmulatedPipeline::new(ctx)?.with_precision(precision);
+            p.set_accum_buffer(Some((size.0 as usize, size.1 as usize)));
+            Ok(Box::new(p))
+        }
+        PipelineKind::Native => Ok(Box::new(native::NativePipeline::with_window_accum(ctx)?)),
+    }
+}
+
 /// The bytes one `ReadPixels` (or glGetTexImage) produced, packed with PACK_ALIGNMENT 1,
 /// bottom row first.
 #[derive(Clone, Debug, PartialEq)]

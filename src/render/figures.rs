@@ -7,6 +7,9 @@
 //! `depth-compare · emulate · egl · offset 1,4 (technique default) · error …`.
 //!
 //! Error % = 100 · (false + missed + coverage) / truth geometry pixels (see `metrics`).
+//! For an area light the error is followed by `visibility RMSE 0.034`: √(mean (v_tech −
+//! v_truth)²) over the truth's geometry pixels, a hard mask counting as visibility 0 or 1
+//! (`metrics::visibility_errors`) — printed with three decimals, for scripts to read.
 
 use crate::vocab::{offset_text, OffsetSource, PipelineKind, PolygonOffset, TechniqueId};
 use std::fmt;
@@ -37,6 +40,8 @@ pub struct Figures {
     pub programs: u64,
     /// Times the map passes ran.
     pub maps_made: u32,
+    /// The visibility RMSE against an area light's truth; `None` for other lights.
+    pub visibility_rmse: Option<f64>,
     /// The polygon offset and its source, for a technique that reads one.
     pub offset: Option<(Option<PolygonOffset>, OffsetSource)>,
 }
@@ -58,6 +63,9 @@ impl fmt::Display for Figures {
             "{} · ",
             error_text(self.wrong_percent, self.false_shadow, self.missed_shadow)
         )?;
+        if let Some(rmse) = self.visibility_rmse {
+            write!(f, "visibility RMSE {rmse:.3} · ")?;
+        }
         match self.timings.steady {
             Some(s) => write!(
                 f,
@@ -103,8 +111,18 @@ mod tests {
             passes: 1,
             programs: 2,
             maps_made: 0,
+            visibility_rmse: None,
             offset: None,
         }
+    }
+
+    #[test]
+    fn an_area_light_adds_the_visibility_rmse_after_the_error() {
+        let mut f = figures(vec![1.0]);
+        f.visibility_rmse = Some(0.03449);
+        assert!(f
+            .to_string()
+            .contains("missed shadow 4) · visibility RMSE 0.034 · 1.00 ms"));
     }
 
     #[test]

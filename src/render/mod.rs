@@ -35,6 +35,7 @@ mod budget;
 mod figures;
 mod light_map;
 mod motion;
+mod objects;
 mod options;
 mod outcome;
 pub mod pass_images;
@@ -49,15 +50,16 @@ pub use budget::{
 pub use figures::{error_text, Figures};
 pub use light_map::{LightMap, MapTexels};
 pub use motion::{Orbit, OrbitTarget, Turn, MAX_ELEVATION};
+pub use objects::{object_line, object_lines, object_name};
 pub use options::{apply_overrides, RemakeMaps, RenderOptions};
-pub use outcome::{FrameTimings, PassTime, RenderOutcome};
+pub use outcome::{FrameTimings, PassTime, RenderOutcome, VisibilityOutcome, VisibilitySource};
 pub use pass_images::{AlphaBeforeTest, Corner, PassImage, PassImages};
 pub use session::Session;
 pub use size::{ImageSize, SizeProblem, MAX_IMAGE_SIZE};
 
 use crate::ff::{Command, GlError};
 use crate::gpu::{GpuContext, GpuError};
-use crate::metrics::{self, Mask, Metrics, MetricsError, BACKGROUND};
+use crate::metrics::{self, Mask, Metrics, MetricsError, VisibilityImage, BACKGROUND};
 use crate::pipeline::{Pipeline, PipelineError};
 use crate::scene::Scene;
 use crate::techniques::TechniqueError;
@@ -112,6 +114,10 @@ pub enum RenderError {
     MapImage { slot: u32 },
     #[error("image size `{text}`: {problem}")]
     Size { text: String, problem: SizeProblem },
+    #[error("the native pipeline's accumulation buffer is OSMesa's window buffer, whose depth buffer has 24 bits: a {}-bit map cannot be made there; use depth_bits 24 (or the emulate pipeline)", .depth.bits())]
+    WindowDepth { depth: crate::vocab::DepthBits },
+    #[error("pass images read the render target's buffers, and the native pipeline accumulates in OSMesa's window buffer instead: picture the passes on the emulate pipeline")]
+    WindowPassImages,
 }
 
 /// The name the CLI uses for a pipeline path.
@@ -180,6 +186,29 @@ pub fn judge(mask: &Mask, truth: &Truth, band: u32) -> Result<Metrics, RenderErr
         });
     }
     Ok(metrics)
+}
+
+/// For an area-light truth, the technique's visibility — `soft` when its mask plan
+/// accumulated one, else its hard mask as 0 or 1 — scored against the truth's
+/// (`metrics::visibility_errors`); `None` for any other light.
+pub fn judge_visibility(
+    mask: &Mask,
+    soft: Option<VisibilityImage>,
+    truth: &Truth,
+) -> Result<Option<VisibilityOutcome>, RenderError> {
+    if truth.area.is_none() {
+        return Ok(None);
+    }
+    let (image, source) = match soft {
+        Some(v) => (v, VisibilitySource::Soft),
+        None => (VisibilityImage::from_mask(mask), VisibilitySource::HardMask),
+    };
+    let errors = metrics::visibility_errors(&image, &truth.visibility, &truth.mask)?;
+    Ok(Some(VisibilityOutcome {
+        image,
+        source,
+        errors,
+    }))
 }
 
 /// Executes one pass's commands; a command the model rejected is a technique bug.

@@ -5,7 +5,7 @@ use crate::vocab::{OffsetSource, PipelineKind, PolygonOffset, TechniqueId};
 use image::RgbaImage;
 
 use crate::gpu::Backend;
-use crate::metrics::{Mask, Metrics};
+use crate::metrics::{Mask, Metrics, VisibilityErrors, VisibilityImage};
 use crate::pipeline::Counters;
 use crate::stats::Summary;
 use crate::truth::Truth;
@@ -68,6 +68,13 @@ pub struct RenderOutcome {
     /// The light's map as read back, when asked for and the technique makes one
     /// (`report::light_map_pictures` shows it).
     pub light_map: Option<LightMap>,
+    /// For an area-light scene: the technique's visibility and its errors against the
+    /// truth's; `None` for any other light.
+    pub visibility: Option<VisibilityOutcome>,
+    /// For a scene of several objects, each object's share of the error: its self-shadow,
+    /// the shadow others cast on it, its lit surface (`metrics::per_object`); empty for a
+    /// scene of one object.
+    pub objects: Vec<crate::metrics::ObjectErrors>,
     /// What the technique says about this scene (known failure modes it triggers).
     pub notes: Vec<String>,
     /// The light pass's polygon offset and where it came from.
@@ -76,6 +83,25 @@ pub struct RenderOutcome {
     /// glGetString(GL_RENDERER) and glGetString(GL_VERSION) of the context it ran on.
     pub gl_renderer: String,
     pub gl_version: String,
+}
+
+/// A technique's visibility of an area light, and how far it is from the truth's.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VisibilityOutcome {
+    pub image: VisibilityImage,
+    pub source: VisibilitySource,
+    pub errors: VisibilityErrors,
+}
+
+/// Where a technique's visibility comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum VisibilitySource {
+    /// Its mask plan gave a fraction per pixel (accumulated over the light's samples, or
+    /// looked up in prefiltered occlusion textures).
+    Soft,
+    /// Its hard mask from the light's centre: 1 lit, 0 shadowed.
+    HardMask,
 }
 
 /// One pass's times.
@@ -101,6 +127,7 @@ impl RenderOutcome {
             passes: self.passes,
             programs: self.counters.programs_compiled,
             maps_made: self.maps_made,
+            visibility_rmse: self.visibility.as_ref().map(|v| v.errors.rmse),
             offset: self
                 .technique
                 .uses_offset()

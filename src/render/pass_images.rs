@@ -123,9 +123,12 @@ pub fn map_minus_ramp(technique: TechniqueId) -> Option<&'static str> {
         ),
         TechniqueId::None
         | TechniqueId::DepthCompare
+        | TechniqueId::Accumulate
         | TechniqueId::Multidigit16Combine
         | TechniqueId::Planar
-        | TechniqueId::Projective => None,
+        | TechniqueId::Projective
+        | TechniqueId::OccluderPlanes
+        | TechniqueId::OcclusionTextures => None,
     }
 }
 

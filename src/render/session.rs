@@ -17,20 +17,32 @@
 //!
 //! [`Session::finish`] executes the mask plan, decodes the mask, reads the colour image
 //! (the image's corner of the framebuffer) and the light's map when asked, takes the
-//! counters, releases the GL objects, and judges the mask against the truth.
+//! counters, releases the GL objects, and judges the mask against the truth — and, for an
+//! area light, the visibility too (a soft technique's accumulated one, a hard technique's
+//! mask as 0 or 1: `metrics::visibility_errors`).
+//!
+//! **The accumulation buffer.** A plan whose commands use it (`Plan::needs_accumulation`)
+//! gets one of the framebuffer's size. The emulated path keeps it beside the context and
+//! draws into the render target as always. The native path has one only on an OSMesa
+//! window buffer (Mesa gives framebuffer objects none): the session then asks OSMesa for a
+//! window of the framebuffer's size (24 depth and 8 stencil bits) and draws into
+//! framebuffer 0 instead of a target; on EGL it refuses with
+//! `PipelineError::NoAccumBuffer`, which names `--backend osmesa`.
 
 use glow::HasContext;
 use std::time::Instant;
 
 use image::RgbaImage;
 
-use crate::gpu::{Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay};
-use crate::metrics::Mask;
-use crate::pipeline::Pipeline;
+use crate::gpu::{
+    Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay, WindowBuffer,
+};
+use crate::metrics::{Mask, VisibilityImage};
+use crate::pipeline::{Pipeline, PipelineError};
 use crate::scene::{Scene, ShadowSettings};
 use crate::techniques::{self, Pass, Plan, Prepared};
 use crate::truth::{self, Truth};
-use crate::vocab::TechniqueId;
+use crate::vocab::{DepthBits, PipelineKind, TechniqueId};
 
 use super::{
     apply_overrides, run, Footprint, FrameTimings, LightMap, PassTime, RemakeMaps, RenderError,
@@ -51,6 +63,9 @@ pub struct Session {
     // Dropped in this order: the pipeline and target are released explicitly first.
     pipeline: Box<dyn Pipeline>,
     target: Option<RenderTarget>,
+    /// The OSMesa window the native path draws into when the plan accumulates (no target
+    /// then).
+    window: Option<WindowBuffer>,
     ctx: GpuContext,
     _display: Option<VirtualDisplay>,
     frames_ms: Vec<f64>,
@@ -96,25 +111,58 @@ impl Session {
                 max: MAX_IMAGE_SIZE,
             });
         }
+        let accumulation = plan.needs_accumulation();
+        let window = match (accumulation, options.pipeline) {
+            (true, PipelineKind::Native) => {
+                if options.backend != Backend::OsMesa {
+                    return Err(PipelineError::NoAccumBuffer {
+                        backend: options.backend,
+                    }
+                    .into());
+                }
+                if fb.depth != DepthBits::D24 {
+                    return Err(RenderError::WindowDepth { depth: fb.depth });
+                }
+                Some(WindowBuffer {
+                    width: fb.width,
+                    height: fb.height,
+                })
+            }
+            _ => None,
+        };
         let display = match options.backend {
             Backend::Window => VirtualDisplay::start_if_needed()?,
             Backend::Egl | Backend::OsMesa => None,
         };
-        let ctx = GpuContext::new(&ContextRequest::new(
-            options.backend,
-            crate::pipeline::profile(options.pipeline),
-        ))?;
-        let mut spec = TargetSpec::new(fb.width, fb.height, fb.depth);
-        if fb.stencil {
-            spec = spec.with_stencil();
+        let mut request =
+            ContextRequest::new(options.backend, crate::pipeline::profile(options.pipeline));
+        if let Some(w) = window {
+            request = request.with_window(w);
         }
-        let target = RenderTarget::new(&ctx, spec)?;
-        // Bound once: the binding is the context's state, and a later bind would reset the
-        // viewport behind the emulated pipeline's shadow copy. The pipeline starts from the
-        // target's viewport, as GL starts from the window's.
-        target.bind(&ctx);
-        let mut pipeline =
-            crate::pipeline::create_with(options.pipeline, &ctx, scene.shadow.precision)?;
+        let ctx = GpuContext::new(&request)?;
+        let target = match window {
+            Some(_) => None,
+            None => {
+                let mut spec = TargetSpec::new(fb.width, fb.height, fb.depth);
+                if fb.stencil {
+                    spec = spec.with_stencil();
+                }
+                let target = RenderTarget::new(&ctx, spec)?;
+                // Bound once: the binding is the context's state, and a later bind would
+                // reset the viewport behind the emulated pipeline's shadow copy. The
+                // pipeline starts from the target's viewport, as GL starts from the
+                // window's.
+                target.bind(&ctx);
+                Some(target)
+            }
+        };
+        let precision = scene.shadow.precision;
+        let mut pipeline = if accumulation {
+            let size = (fb.width, fb.height);
+            crate::pipeline::create_with_accumulation(options.pipeline, &ctx, precision, size)?
+        } else {
+            crate::pipeline::create_with(options.pipeline, &ctx, precision)?
+        };
         let setup = run(pipeline.as_mut(), &ctx, "setup", 0, &plan.setup);
         let pass_ms = vec![Vec::new(); plan.pass_count()];
         let mut session = Session {
@@ -125,7 +173,8 @@ impl Session {
             maps_from: None,
             options: options.clone(),
             pipeline,
-            target: Some(target),
+            target,
+            window,
             ctx,
             _display: display,
             frames_ms: Vec::new(),
@@ -193,11 +242,19 @@ impl Session {
 
     /// Executes the mask plan now and decodes the technique's mask of the last frame.
     pub fn mask(&mut self) -> Result<Mask, RenderError> {
+        Ok(self.masks()?.0)
+    }
+
+    /// Executes the mask plan now: the technique's mask of the last frame, and its
+    /// visibility when the technique accumulates one (`MaskSource::Visibility`).
+    pub fn masks(&mut self) -> Result<(Mask, Option<VisibilityImage>), RenderError> {
         self.ctx.make_current()?;
         let frames = self.frames_ms.len() as u32;
         let p = self.pipeline.as_mut();
         run(p, &self.ctx, "mask", frames, &self.plan.mask.commands)?;
-        Ok(self.plan.mask.decode(|slot| p.readback(slot))?)
+        let mask = self.plan.mask.decode(|slot| p.readback(slot))?;
+        let visibility = self.plan.mask.decode_visibility(|slot| p.readback(slot))?;
+        Ok((mask, visibility))
     }
 
     /// Renders one frame and returns its time in milliseconds.
@@ -255,6 +312,9 @@ impl Session {
     /// [`pass_images::capture`](super::pass_images::capture) to keep a measured session's
     /// figures clean. With an orbit it is the orbit's next frame.
     pub fn pass_images(&mut self) -> Result<super::PassImages, RenderError> {
+        if self.window.is_some() {
+            return Err(RenderError::WindowPassImages);
+        }
         self.capture = Some(super::pass_images::Capture::new(&self.plan, &self.scene));
         self.maps_from = None;
         let frame = self.frame();
@@ -280,12 +340,20 @@ impl Session {
             )
         };
         self.release();
-        let (image, mask, light_map) = gpu?;
+        let (image, (mask, soft), light_map) = gpu?;
         let truth = match truth {
             Some(t) => t.clone(),
             None => truth::truth(&self.scene, &self.options.truth)?,
         };
-        let metrics = super::judge(&mask, &truth, self.options.band)?;
+        let mut metrics = super::judge(&mask, &truth, self.options.band)?;
+        let visibility = super::judge_visibility(&mask, soft, &truth)?;
+        metrics.visibility_rmse = visibility.as_ref().map(|v| v.errors.rmse);
+        let objects = if self.scene.objects.len() > 1 {
+            let causes = truth::shadow_causes(&self.scene, self.options.truth.light, &truth.mask)?;
+            crate::metrics::per_object(&mask, &causes)?
+        } else {
+            Vec::new()
+        };
         let cold_ms = self.frames_ms.first().copied().unwrap_or(0.0);
         let steady = self.frames_ms.get(1..).unwrap_or(&[]).to_vec();
         let names = self
@@ -321,6 +389,8 @@ impl Session {
             maps_made: self.maps_made,
             pass_times,
             light_map,
+            visibility,
+            objects,
             notes: self.plan.notes.clone(),
             offset: self.scene.shadow.offset(),
             offset_source: self.scene.shadow.offset_source(),
@@ -332,7 +402,7 @@ impl Session {
     fn read_results(&mut self) -> Result<GpuResults, RenderError> {
         // The picture first: mask plans may draw over it.
         let image = self.image()?;
-        let mask = self.mask()?;
+        let mask = self.masks()?;
         let light_map = if self.options.depth_map {
             self.light_map()?
         } else {
@@ -347,9 +417,14 @@ impl Session {
     /// screen shows the picture opaque).
     pub fn image(&mut self) -> Result<RgbaImage, RenderError> {
         self.ctx.make_current()?;
-        let target = self.target.as_ref().ok_or(RenderError::Released)?;
         let (w, h) = (self.scene.image.width, self.scene.image.height);
-        let full = target.read_color(&self.ctx)?;
+        let full = match (&self.target, self.window) {
+            (_, Some(window)) if !self.released => {
+                self.ctx.read_window_color(window.width, window.height)?
+            }
+            (Some(target), _) => target.read_color(&self.ctx)?,
+            _ => return Err(RenderError::Released),
+        };
         // The image is the framebuffer's lower-left w×h: the last h rows, top row first.
         let mut image = image::imageops::crop_imm(&full, 0, full.height() - h, w, h).to_image();
         for px in image.pixels_mut() {
@@ -412,4 +487,4 @@ impl Session {
     }
 }
 
-type GpuResults = (RgbaImage, Mask, Option<LightMap>);
+type GpuResults = (RgbaImage, (Mask, Option<VisibilityImage>), Option<LightMap>);

@@ -15,7 +15,10 @@ use crate::scene::{LightKind, Scene};
 use crate::study::{Comparison, RowCost, RowResult};
 
 use super::csv::{line, opt};
-use super::file_names::{RowFiles, CSV, HTML, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
+use super::file_names::{
+    RowFiles, CSV, HTML, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK, VISIBILITY_PLOT_PNG,
+    VISIBILITY_PLOT_SVG,
+};
 use super::pictures::{self, SheetLine};
 use super::provenance::{self, ContextStrings, Provenance};
 use super::{
@@ -76,6 +79,17 @@ pub fn write_comparison(
     let png = plot::accuracy_vs_time(&rows, &svg)?;
     written.push(svg);
     write_png(dir, PLOT_PNG, &png, &mut written)?;
+    // An area light: every row's visibility RMSE on one plot, soft and hard alike.
+    if rows.iter().any(|r| {
+        r.measured
+            .as_ref()
+            .is_some_and(|m| m.visibility_rmse.is_some())
+    }) {
+        let svg = dir.join(VISIBILITY_PLOT_SVG);
+        let png = plot::visibility_vs_time(&rows, &svg)?;
+        written.push(svg);
+        write_png(dir, VISIBILITY_PLOT_PNG, &png, &mut written)?;
+    }
 
     let mut lines = vec![SheetLine {
         label: "ground truth (ray-cast): shadow mask, and the colours of the error images"
@@ -101,7 +115,7 @@ pub fn write_comparison(
     Ok(written)
 }
 
-const CSV_HEADER: [&str; 32] = [
+const CSV_HEADER: [&str; 35] = [
     "technique",
     "pipeline",
     "backend",
@@ -118,6 +132,9 @@ const CSV_HEADER: [&str; 32] = [
     "outside_band_error_percent",
     "outside_band_false_shadow",
     "outside_band_missed_shadow",
+    "visibility_rmse",
+    "visibility_max_abs",
+    "penumbra_rmse",
     "ms_median",
     "ms_min",
     "ms_max",
@@ -166,6 +183,9 @@ fn results_csv(c: &Comparison, rows: &[ResultRow], produced: &Provenance) -> Str
             opt(m.map(|m| m.outside_band_error_percent)),
             opt(m.map(|m| m.outside_band_false_shadow)),
             opt(m.map(|m| m.outside_band_missed_shadow)),
+            opt(m.and_then(|m| m.visibility_rmse)),
+            opt(m.and_then(|m| m.visibility_max_abs)),
+            opt(m.and_then(|m| m.penumbra_rmse)),
             opt(m.and_then(|m| m.ms_median)),
             opt(m.and_then(|m| m.ms_min)),
             opt(m.and_then(|m| m.ms_max)),
@@ -261,7 +281,10 @@ pub(super) fn scene_facts(scene: &Scene) -> Vec<(String, String)> {
             LightKind::Directional { direction } => {
                 format!("directional light along {}", v(direction))
             }
-            LightKind::Area { .. } => "area light (hard mask from its centre)".to_string(),
+            LightKind::Area { .. } => {
+                "area light (hard mask from its centre; visibility from the whole rectangle)"
+                    .to_string()
+            }
         };
         facts.push((
             format!("light {i}"),

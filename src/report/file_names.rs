@@ -23,6 +23,9 @@ impl RowFiles {
 pub(super) const TRUTH_MASK: &str = "truth-mask.png";
 pub(super) const PLOT_SVG: &str = "accuracy_vs_time.svg";
 pub(super) const PLOT_PNG: &str = "accuracy_vs_time.png";
+/// Area lights only: visibility RMSE against time, every technique.
+pub(super) const VISIBILITY_PLOT_SVG: &str = "visibility_vs_time.svg";
+pub(super) const VISIBILITY_PLOT_PNG: &str = "visibility_vs_time.png";
 pub(super) const SHEET: &str = "contact_sheet.png";
 pub(super) const CSV: &str = "results.csv";
 pub(super) const JSON: &str = "results.json";

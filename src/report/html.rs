@@ -24,7 +24,9 @@ use crate::study::{Comparison, RowResult};
 use crate::techniques::parts::ShadowLight;
 use crate::vocab::{Named, TechniqueId};
 
-use super::file_names::{RowFiles, CSV, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK};
+use super::file_names::{
+    RowFiles, CSV, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK, VISIBILITY_PLOT_SVG,
+};
 use super::pass_pictures::StripPass;
 use super::table::ms_cell;
 use super::{ResultRow, Written, ERROR_COLOURS};
@@ -314,6 +316,21 @@ fn plot_and_truth(h: &mut String, written: &Written) {
         img(TRUTH_MASK, "ground-truth shadow mask", written),
         error_legend(),
     );
+    if written.contains(VISIBILITY_PLOT_SVG) {
+        let _ = writeln!(
+            h,
+            "<section><h2>Visibility error against time</h2>{}\
+             <p class=\"muted\">The scene's light is an area light: each run's visibility \
+             (the fraction of the light each pixel sees; a hard shadow counts as 0 or 1) \
+             against the truth's, as an RMSE over the geometry pixels. Soft and hard \
+             techniques on one plot; the green staircase is its Pareto front.</p></section>",
+            img(
+                VISIBILITY_PLOT_SVG,
+                "visibility RMSE against time per frame",
+                written
+            ),
+        );
+    }
 }
 
 fn cards(
@@ -547,10 +564,13 @@ fn map_step(scene: &Scene, technique: TechniqueId) -> Option<MapStep> {
         }
         TechniqueId::None
         | TechniqueId::DepthCompare
+        | TechniqueId::Accumulate
         | TechniqueId::Multidigit16
         | TechniqueId::Multidigit16Combine
         | TechniqueId::Planar
-        | TechniqueId::Projective => None,
+        | TechniqueId::Projective
+        | TechniqueId::OccluderPlanes
+        | TechniqueId::OcclusionTextures => None,
     }
 }
 

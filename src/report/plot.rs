@@ -4,6 +4,10 @@
 //! below and left of which no measured row lies. Time starts at 0 so that distances
 //! read as ratios on the time axis; the error axis is logarithmic. Drawn once for SVG and once for PNG by the same function.
 //!
+//! `visibility_vs_time` is the same plot with the visibility RMSE against an area light's
+//! truth on the y axis ([`Accuracy::VisibilityRmse`]): soft and hard techniques together,
+//! its own Pareto front computed on that error.
+//!
 //! **Labels never collide** ([`place_labels`]): each label takes the first of a list of
 //! places around its point (emulate above, native below first; then the other side, then
 //! further out) whose box overlaps no label placed before it, no point's marker and stays
@@ -32,29 +36,103 @@ struct Point {
     pareto: bool,
 }
 
-fn points(rows: &[ResultRow]) -> Vec<Point> {
-    rows.iter()
+/// Which error a plot puts on its y axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Accuracy {
+    /// Error % of the hard mask (the rows' own Pareto front).
+    ErrorPercent,
+    /// Visibility RMSE against an area light's truth (rows without one are left out; the
+    /// front is computed on it).
+    VisibilityRmse,
+}
+
+impl Accuracy {
+    fn caption(self) -> &'static str {
+        match self {
+            Accuracy::ErrorPercent => "Shadow error against time per frame",
+            Accuracy::VisibilityRmse => "Visibility error against time per frame (area light)",
+        }
+    }
+
+    fn y_desc(self) -> &'static str {
+        match self {
+            Accuracy::ErrorPercent => "error, % of geometry pixels (log scale)",
+            Accuracy::VisibilityRmse => "visibility RMSE against the truth (log scale)",
+        }
+    }
+
+    /// The smallest error the axis shows, and the error axis's least top.
+    fn axis_floor_and_top(self) -> (f64, f64) {
+        match self {
+            Accuracy::ErrorPercent => (0.01, 1.0),
+            Accuracy::VisibilityRmse => (0.001, 0.1),
+        }
+    }
+}
+
+fn points(rows: &[ResultRow], accuracy: Accuracy) -> Vec<Point> {
+    let error = |m: &super::Measured| match accuracy {
+        Accuracy::ErrorPercent => Some(m.error_percent),
+        Accuracy::VisibilityRmse => m.visibility_rmse,
+    };
+    let measured: Vec<(&ResultRow, &super::Measured, f64)> = rows
+        .iter()
         .filter_map(|r| {
-            r.measured.as_ref().map(|m| Point {
-                label: r.technique.to_string(),
-                ms: m.typical_ms,
-                error: m.error_percent,
-                pipeline: r.pipeline,
-                pareto: r.pareto,
-            })
+            let m = r.measured.as_ref()?;
+            Some((r, m, error(m)?))
+        })
+        .collect();
+    // The visibility plot's own front: the rows' `pareto` weighs the error %.
+    let front: Vec<usize> = match accuracy {
+        Accuracy::ErrorPercent => Vec::new(),
+        Accuracy::VisibilityRmse => {
+            let at: Vec<Option<super::FrontPoint>> = measured
+                .iter()
+                .map(|(_, m, e)| {
+                    Some(super::FrontPoint {
+                        error: *e,
+                        ..super::FrontPoint::of(m)
+                    })
+                })
+                .collect();
+            super::pareto_front(&at)
+        }
+    };
+    measured
+        .iter()
+        .enumerate()
+        .map(|(i, (r, m, error))| Point {
+            label: r.technique.to_string(),
+            ms: m.typical_ms,
+            error: *error,
+            pipeline: r.pipeline,
+            pareto: match accuracy {
+                Accuracy::ErrorPercent => r.pareto,
+                Accuracy::VisibilityRmse => front.contains(&i),
+            },
         })
         .collect()
 }
 
 /// Writes the plot as SVG to `svg` and returns the PNG picture.
 pub fn accuracy_vs_time(rows: &[ResultRow], svg: &Path) -> Result<RgbImage, ReportError> {
+    plot(rows, svg, Accuracy::ErrorPercent)
+}
+
+/// The visibility-RMSE plot of an area-light comparison, as SVG to `svg`; the PNG picture.
+pub fn visibility_vs_time(rows: &[ResultRow], svg: &Path) -> Result<RgbImage, ReportError> {
+    plot(rows, svg, Accuracy::VisibilityRmse)
+}
+
+fn plot(rows: &[ResultRow], svg: &Path, accuracy: Accuracy) -> Result<RgbImage, ReportError> {
     font::ensure()?;
-    let pts = points(rows);
+    let pts = points(rows, accuracy);
     let err = super::plot_error(svg);
     let mut text = String::new();
     draw(
         SVGBackend::with_string(&mut text, SIZE).into_drawing_area(),
         &pts,
+        accuracy,
     )
     .map_err(|e| err(&e))?;
     super::files::write_file(svg, text.as_bytes())?;
@@ -62,6 +140,7 @@ pub fn accuracy_vs_time(rows: &[ResultRow], svg: &Path) -> Result<RgbImage, Repo
     draw(
         BitMapBackend::with_buffer(&mut png, SIZE).into_drawing_area(),
         &pts,
+        accuracy,
     )
     .map_err(|e| err(&e))?;
     Ok(png)
@@ -148,26 +227,28 @@ fn place_labels(
     offsets
 }
 
-fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, pts: &[Point]) -> Result<(), String> {
+fn draw<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    pts: &[Point],
+    accuracy: Accuracy,
+) -> Result<(), String> {
     let e = |x: &dyn std::fmt::Display| x.to_string();
     root.fill(&WHITE).map_err(|x| e(&x))?;
     let max_ms = pts.iter().map(|p| p.ms).fold(0.0, f64::max).max(0.1) * 1.25;
     // Errors span orders of magnitude (a self-shadowing 8-bit map near 90%, a good map
     // under 1%): the error axis is logarithmic, and an error of 0 sits on its floor.
+    let (least, top) = accuracy.axis_floor_and_top();
     let floor = pts
         .iter()
         .map(|p| p.error)
         .filter(|&e| e > 0.0)
-        .fold(1.0, f64::min)
-        .max(0.01)
+        .fold(top, f64::min)
+        .max(least)
         / 2.0;
-    let max_err = pts.iter().map(|p| p.error).fold(1.0, f64::max) * 2.0;
+    let max_err = pts.iter().map(|p| p.error).fold(top, f64::max) * 2.0;
     let y = |err: f64| err.max(floor);
     let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "Shadow error against time per frame",
-            (font::FAMILY, 24).into_font(),
-        )
+        .caption(accuracy.caption(), (font::FAMILY, 24).into_font())
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(64)
@@ -176,7 +257,7 @@ fn draw<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, pts: &[Point]) -> Resu
     chart
         .configure_mesh()
         .x_desc("ms per frame (median of the steady frames)")
-        .y_desc("error, % of geometry pixels (log scale)")
+        .y_desc(accuracy.y_desc())
         .y_label_formatter(&|v: &f64| {
             if *v >= 1.0 {
                 format!("{v:.0}")

@@ -30,6 +30,12 @@ pub struct Measured {
     pub outside_band_error_percent: f64,
     pub outside_band_false_shadow: u64,
     pub outside_band_missed_shadow: u64,
+    /// Against an area light's truth (`metrics::visibility_errors`; a hard mask counts as
+    /// visibility 0 or 1): RMSE, maximum |error| and RMSE in the truth's penumbra. `None`
+    /// for other lights (and the penumbra's when the truth has none).
+    pub visibility_rmse: Option<f64>,
+    pub visibility_max_abs: Option<f64>,
+    pub penumbra_rmse: Option<f64>,
     /// Steady frames (2…N): median, min, max; `None` with one frame.
     pub ms_median: Option<f64>,
     pub ms_min: Option<f64>,
@@ -78,6 +84,12 @@ impl Measured {
             outside_band_error_percent: band.wrong_percent,
             outside_band_false_shadow: band.false_shadow,
             outside_band_missed_shadow: band.missed_shadow,
+            visibility_rmse: fig.visibility_rmse,
+            visibility_max_abs: outcome.visibility.as_ref().map(|v| v.errors.max_abs),
+            penumbra_rmse: outcome
+                .visibility
+                .as_ref()
+                .and_then(|v| v.errors.penumbra_rmse),
             ms_median: steady.map(|s| s.median),
             ms_min: steady.map(|s| s.min),
             ms_max: steady.map(|s| s.max),

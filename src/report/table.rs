@@ -6,7 +6,7 @@ use crate::study::{Comparison, RowResult};
 
 use super::ResultRow;
 
-const HEADER: [&str; 12] = [
+const HEADER: [&str; 13] = [
     "technique",
     "pipeline",
     "offset",
@@ -14,6 +14,7 @@ const HEADER: [&str; 12] = [
     "false",
     "missed",
     "outside band %",
+    "visibility RMSE",
     "ms/frame median [min–max]",
     "cold ms",
     "passes",
@@ -44,6 +45,8 @@ pub fn comparison_table(rows: &[ResultRow]) -> String {
                 m.false_shadow.to_string(),
                 m.missed_shadow.to_string(),
                 format!("{:.2}", m.outside_band_error_percent),
+                m.visibility_rmse
+                    .map_or("—".to_string(), |r| format!("{r:.3}")),
                 ms_cell(m),
                 format!("{:.2}", m.cold_ms),
                 m.passes.to_string(),
@@ -143,6 +146,9 @@ mod tests {
             outside_band_error_percent: 0.25,
             outside_band_false_shadow: 2,
             outside_band_missed_shadow: 0,
+            visibility_rmse: Some(0.0345),
+            visibility_max_abs: Some(0.5),
+            penumbra_rmse: None,
             ms_median: Some(2.0),
             ms_min: Some(1.5),
             ms_max: Some(3.0),
@@ -176,6 +182,10 @@ mod tests {
         assert!(text.contains("dual8 *"), "{text}");
         assert!(text.contains("1,4 (scene)"), "{text}");
         assert!(text.contains("2.00 [1.50–3.00]"), "{text}");
+        assert!(
+            text.contains("visibility RMSE") && text.contains("0.035"),
+            "{text}"
+        );
         assert!(
             text.contains("skipped multidigit16 on native: register combiners are not supported"),
             "{text}"

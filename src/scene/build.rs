@@ -12,7 +12,7 @@ use super::error::{Problem, SceneError, SceneWarning, WarningKind};
 use super::limits::MAX_IMAGE_SIZE;
 use super::raw::*;
 use super::types::*;
-use crate::mesh;
+use crate::mesh::{self, AircraftLayout};
 use crate::vocab::{DepthBits, Named, OffsetSource, PolygonOffset, TechniqueId};
 use glam::Vec3;
 use std::ops::Range;
@@ -45,8 +45,19 @@ pub(super) fn scene(ctx: &mut Ctx, raw: RawScene) -> Result<Scene> {
         shapes.push(shape);
     }
     let mut objects = Vec::with_capacity(raw.object.len());
+    let mut planes = Vec::new();
+    let mut plane_count = 0usize;
     for (i, (o, shape)) in raw.object.iter().zip(shapes).enumerate() {
         let object = object(ctx, o, shape, &format!("object[{i}]."))?;
+        let declared = super::planes::object_planes(ctx, o, &object, &format!("object[{i}]."))?;
+        if !declared.is_empty() {
+            plane_count += declared.len();
+            super::planes::within_units(ctx, o, plane_count, &format!("object[{i}]."))?;
+            planes.push(ObjectPlanes {
+                object: i,
+                planes: declared,
+            });
+        }
         if let Shape::Obj { .. } = object.shape {
             // An OBJ's count is known once it is read.
             triangles = triangles.saturating_add(object.mesh.triangle_count() as u64);
@@ -54,10 +65,11 @@ pub(super) fn scene(ctx: &mut Ctx, raw: RawScene) -> Result<Scene> {
         }
         objects.push(object);
     }
-    let shadow = match &raw.shadow {
+    let mut shadow = match &raw.shadow {
         Some(s) => shadow(ctx, s.get_ref())?,
         None => ShadowSettings::default(),
     };
+    shadow.planes = planes;
     let truth = match &raw.truth {
         Some(t) => truth(ctx, t.get_ref())?,
         None => TruthSettings::default(),
@@ -551,6 +563,7 @@ fn shape(
         ("rings", span_of(&o.rings)),
         ("sides", span_of(&o.sides)),
         ("length", span_of(&o.length)),
+        ("layout", span_of(&o.layout)),
     ];
     let (kind, valid): (&str, &[&'static str]) = match (&o.shape, &o.mesh) {
         (Some(_), Some(m)) => return Err(ctx.invalid(m.span(), &key("mesh"), Problem::Conflicts { other: "shape" })),
@@ -570,7 +583,10 @@ fn shape(
             ShapeType::Sphere => ("sphere", &["radius", "slices", "stacks"]),
             ShapeType::Torus => ("torus", &["major_radius", "minor_radius", "rings", "sides"]),
             ShapeType::Teapot => ("teapot", &["size", "tessellation"]),
-            ShapeType::Aircraft => ("aircraft", &["length"]),
+            ShapeType::Aircraft => match o.layout.as_ref().map(|l| *l.get_ref()) {
+                Some(AircraftLayoutName::F35) => ("f35 aircraft (its size is the thesis's, in metres; scale it with `scale`)", &["layout"]),
+                Some(AircraftLayoutName::Fighter) | None => ("aircraft", &["length", "layout"]),
+            },
         },
     };
     ctx.only(&given, valid, kind, prefix)?;
@@ -601,7 +617,12 @@ fn shape(
             tessellation: ctx.count(&o.tessellation, &key("tessellation"), 8, 1)?,
         },
         Some(ShapeType::Aircraft) | None => Shape::Aircraft {
-            length: ctx.size(&o.length, &key("length"), 4.0)?,
+            layout: match o.layout.as_ref().map(|l| *l.get_ref()) {
+                Some(AircraftLayoutName::F35) => AircraftLayout::F35,
+                Some(AircraftLayoutName::Fighter) | None => AircraftLayout::Fighter {
+                    length: ctx.size(&o.length, &key("length"), 4.0)?,
+                },
+            },
         },
     };
     Ok((shape, None))
@@ -764,7 +785,48 @@ fn shadow(ctx: &Ctx, s: &RawShadow) -> Result<ShadowSettings> {
         filter: s.filter.unwrap_or(defaults.filter),
         planar_mode: s.planar_mode.unwrap_or(defaults.planar_mode),
         projector: s.projector.unwrap_or(defaults.projector),
+        light_samples: light_samples(ctx, &s.light_samples)?,
+        // Gathered from the objects by `scene`.
+        planes: Vec::new(),
+        slices: slices(ctx, &s.slices)?,
+        prefilter: s.prefilter.unwrap_or(defaults.prefilter),
+        combine: s.combine.unwrap_or(defaults.combine),
     })
+}
+
+/// `[shadow] slices`: one of `SLICE_COUNTS`, named when refused.
+fn slices(ctx: &Ctx, v: &S<u32>) -> Result<u32> {
+    match v {
+        None => Ok(ShadowSettings::default().slices),
+        Some(n) if super::SLICE_COUNTS.contains(n.get_ref()) => Ok(*n.get_ref()),
+        Some(n) => Err(ctx.invalid(
+            n.span(),
+            "shadow.slices",
+            Problem::NotOneOf {
+                value: n.get_ref().to_string(),
+                expected: vec!["4", "8", "16"],
+            },
+        )),
+    }
+}
+
+/// `[shadow] light_samples`: 1 to `ShadowSettings::MAX_LIGHT_SAMPLES`, the whole range
+/// named when refused.
+fn light_samples(ctx: &Ctx, v: &S<u32>) -> Result<u32> {
+    let max = ShadowSettings::MAX_LIGHT_SAMPLES;
+    match v {
+        None => Ok(ShadowSettings::DEFAULT_LIGHT_SAMPLES),
+        Some(n) if (1..=max).contains(n.get_ref()) => Ok(*n.get_ref()),
+        Some(n) => Err(ctx.invalid(
+            n.span(),
+            "shadow.light_samples",
+            Problem::OutOfRange {
+                low: 1.0,
+                high: max as f32,
+                value: *n.get_ref() as f32,
+            },
+        )),
+    }
 }
 
 /// `[truth] samples`: 1 to `TruthSettings::MAX_SAMPLES`, the whole range named when refused.

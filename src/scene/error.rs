@@ -2,6 +2,7 @@
 //! for validation failures, which key and what would have been accepted.
 
 use super::limits::{grouped, human_bytes};
+use crate::mesh::occluder::{FrameProblem, OccluderError};
 use crate::mesh::MeshError;
 use glam::Vec3;
 use std::fmt;
@@ -105,6 +106,10 @@ pub enum Problem {
     Missing { what: String },
     #[error("cannot be combined with `{other}`")]
     Conflicts { other: &'static str },
+    #[error("{0}")]
+    Frame(FrameProblem),
+    #[error("makes {count} shadow planes in the scene; the fixed-function pipeline has {max} texture units (GL_MAX_TEXTURE_UNITS), one per plane")]
+    TooManyPlanes { count: usize, max: usize },
     #[error("must be one of {}, not {value}", .expected.join(", "))]
     NotOneOf {
         value: String,
@@ -137,6 +142,13 @@ pub enum SceneError {
         problem: Problem,
     },
     #[error("{at}: `{key}`: {source}")]
+    Occluder {
+        at: Location,
+        key: String,
+        #[source]
+        source: OccluderError,
+    },
+    #[error("{at}: `{key}`: {source}")]
     Mesh {
         at: Location,
         key: String,
@@ -152,6 +164,7 @@ impl SceneError {
             SceneError::Read { .. } => None,
             SceneError::Parse { at, .. }
             | SceneError::Invalid { at, .. }
+            | SceneError::Occluder { at, .. }
             | SceneError::Mesh { at, .. } => Some(at),
         }
     }

@@ -22,6 +22,7 @@
 //! `Scene::parse_with` / `load_with`, and the scene carries it to the run).
 
 use super::types::Shape;
+use crate::mesh::AircraftLayout;
 
 /// The largest image width or height accepted: 8192. A larger frame's colour target alone
 /// is ≥ 256 MiB and its truth ≥ 67 million primary rays; llvmpipe's renderbuffer limit is
@@ -117,7 +118,12 @@ impl Shape {
                 n(tessellation.max(1)),
                 n(tessellation.max(1)),
             ]),
-            Shape::Aircraft { .. } => AIRCRAFT_TRIANGLES,
+            Shape::Aircraft {
+                layout: AircraftLayout::Fighter { .. },
+            } => AIRCRAFT_TRIANGLES,
+            Shape::Aircraft {
+                layout: AircraftLayout::F35,
+            } => F35_TRIANGLES,
             Shape::Obj { .. } => 0,
         }
     }
@@ -128,6 +134,8 @@ const TEAPOT_PATCHES: u64 = 32;
 
 /// `mesh::aircraft`'s fixed triangle count (a test keeps it equal to the mesh's).
 const AIRCRAFT_TRIANGLES: u64 = 408;
+/// `mesh::aircraft_f35`'s fixed triangle count (a test keeps it equal to the mesh's).
+const F35_TRIANGLES: u64 = 408;
 
 #[cfg(test)]
 mod tests {
@@ -153,7 +161,12 @@ mod tests {
                 rings: 11,
                 sides: 6,
             },
-            Shape::Aircraft { length: 4.0 },
+            Shape::Aircraft {
+                layout: AircraftLayout::Fighter { length: 4.0 },
+            },
+            Shape::Aircraft {
+                layout: AircraftLayout::F35,
+            },
         ];
         for shape in exact {
             let mesh = shape.procedural_mesh().expect("procedural");

@@ -21,6 +21,8 @@ mod build;
 mod check;
 mod error;
 mod limits;
+mod occlusion;
+mod planes;
 mod raw;
 #[cfg(test)]
 mod tests;
@@ -31,6 +33,7 @@ pub use limits::{
     grouped, human_bytes, Limits, BYTES_PER_TRIANGLE, DEFAULT_MAX_TRIANGLES, DEFAULT_MEMORY_BYTES,
     GPU_BYTES_PER_TRIANGLE, MAX_IMAGE_SIZE,
 };
+pub use occlusion::{Combine, Prefilter, SLICE_COUNTS};
 pub use types::*;
 
 use glam::Vec3;

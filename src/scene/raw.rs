@@ -147,6 +147,46 @@ pub(super) enum ShapeType {
     Aircraft,
 }
 
+/// `layout` of an aircraft.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub(super) enum AircraftLayoutName {
+    Fighter,
+    F35,
+}
+
+/// `[[object.plane]]`: a shadow plane of the object (object space).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawPlane {
+    pub origin: S<Numbers<3>>,
+    pub normal: S<Numbers<3>>,
+    pub up: S<Numbers<3>>,
+    pub right: S<Numbers<3>>,
+    pub width: S<f32>,
+    pub height: S<f32>,
+    pub occluder: S<RawOccluder>,
+}
+
+/// `occluder = "silhouette" | "black"` or a table: `{ png = "file.png" }` or the
+/// silhouette's recipe `{ size, depth, dilate, extend }`.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub(super) enum RawOccluder {
+    Named(String),
+    Table(RawOccluderTable),
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawOccluderTable {
+    pub png: Option<String>,
+    pub size: Option<u32>,
+    pub depth: Option<f32>,
+    pub dilate: Option<u32>,
+    pub extend: Option<u32>,
+}
+
 /// A size written as one number or as [x, y, z].
 #[derive(Debug, Clone, Copy, Deserialize)]
 #[serde(untagged)]
@@ -186,6 +226,9 @@ pub(super) struct RawObject {
     pub rings: S<u32>,
     pub sides: S<u32>,
     pub length: S<f32>,
+    pub layout: S<AircraftLayoutName>,
+    #[serde(default)]
+    pub plane: Vec<Spanned<RawPlane>>,
     pub translate: S<Numbers<3>>,
     pub rotate: S<Rotations>,
     pub scale: S<Extent>,
@@ -223,6 +266,10 @@ pub(super) struct RawShadow {
     pub filter: Option<MapFilter>,
     pub planar_mode: Option<PlanarMode>,
     pub projector: Option<Projector>,
+    pub light_samples: S<u32>,
+    pub slices: S<u32>,
+    pub prefilter: Option<super::occlusion::Prefilter>,
+    pub combine: Option<super::occlusion::Combine>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -1,6 +1,7 @@
 //! The validated scene: every number finite and in range, every mesh loaded.
 
-use crate::mesh::{self, Mesh};
+use crate::mesh::occluder::{OccluderSource, OccluderTexture, PlaneFrame};
+use crate::mesh::{self, AircraftLayout, Mesh};
 use crate::vocab::{
     default_offset, DepthBits, MapFilter, OffsetSource, PlanarMode, PolygonOffset, Precision,
     Projector, ReadbackRule, TechniqueId,
@@ -157,7 +158,7 @@ pub enum Shape {
         tessellation: u32,
     },
     Aircraft {
-        length: f32,
+        layout: AircraftLayout,
     },
     /// An OBJ file, resolved against the scene file's folder.
     Obj {
@@ -184,7 +185,7 @@ impl Shape {
                 sides,
             } => mesh::torus(major_radius, minor_radius, rings, sides),
             Shape::Teapot { size, tessellation } => mesh::teapot(size, tessellation),
-            Shape::Aircraft { length } => mesh::aircraft(length),
+            Shape::Aircraft { layout } => layout.mesh(),
             Shape::Obj { .. } => return None,
         })
     }
@@ -269,6 +270,26 @@ impl Object {
     }
 }
 
+/// A shadow plane of an object (Coleman's occluder planes): its frame in the object's own
+/// space, where its occluder texture came from, and the texture.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OccluderPlane {
+    /// Unit axes (validated orthogonal), origin at the texture's corner s = t = 0.
+    pub frame: PlaneFrame,
+    pub source: OccluderSource,
+    /// Made once when the scene is read (generated from the mesh, or the PNG).
+    pub texture: Arc<OccluderTexture>,
+}
+
+/// The shadow planes declared under one `[[object]]` (`[[object.plane]]`), or supplied by
+/// its shape (the `f35` aircraft layout's three planes).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ObjectPlanes {
+    /// Index into [`Scene::objects`].
+    pub object: usize,
+    pub planes: Vec<OccluderPlane>,
+}
+
 /// A polygon offset as the scene and the command line leave it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum OffsetSetting {
@@ -316,6 +337,19 @@ pub struct ShadowSettings {
     pub planar_mode: PlanarMode,
     /// `projective`'s projection. Default PseudoDepth.
     pub projector: Projector,
+    /// `accumulate`'s hard-shadow renders per frame, one from each stratified point of the
+    /// area light, 1 to [`ShadowSettings::MAX_LIGHT_SAMPLES`]. Default
+    /// [`ShadowSettings::DEFAULT_LIGHT_SAMPLES`].
+    pub light_samples: u32,
+    /// The objects' shadow planes, for `occluder-planes` (declared per object, gathered
+    /// here with the object's index). Default none.
+    pub planes: Vec<ObjectPlanes>,
+    /// `occlusion-textures`' slice count: 4, 8 or 16 ([`super::SLICE_COUNTS`]). Default 16.
+    pub slices: u32,
+    /// `occlusion-textures`' prefilter. Default Mipmap.
+    pub prefilter: super::Prefilter,
+    /// `occlusion-textures`' combination rule. Default Probabilistic (equation 5).
+    pub combine: super::Combine,
 }
 
 impl Default for ShadowSettings {
@@ -330,11 +364,25 @@ impl Default for ShadowSettings {
             filter: MapFilter::Nearest,
             planar_mode: PlanarMode::Offset,
             projector: Projector::PseudoDepth,
+            light_samples: ShadowSettings::DEFAULT_LIGHT_SAMPLES,
+            planes: Vec::new(),
+            slices: 16,
+            prefilter: super::Prefilter::Mipmap,
+            combine: super::Combine::Probabilistic,
         }
     }
 }
 
 impl ShadowSettings {
+    /// 16 renders: a 4 × 4 grid over the light, the Red Book's order of magnitude.
+    pub const DEFAULT_LIGHT_SAMPLES: u32 = 16;
+
+    /// 256 renders. Each adds q(255/255 · 32767/N) to a 16-bit accumulation value
+    /// (`ff::accum`), so the weight of one render falls to 127/32767 at N = 256 and the
+    /// truncation costs up to N/32767 of the light (0.8% at 256); beyond it the buffer's
+    /// precision, not the sampling, would bound the soft shadow.
+    pub const MAX_LIGHT_SAMPLES: u32 = 256;
+
     /// The polygon offset the light pass uses: the one given, else the technique's default
     /// for the map's depth bits.
     pub fn offset(&self) -> Option<PolygonOffset> {

@@ -50,6 +50,48 @@ const HISTORICAL: &[HistoricalShader] = &[
         origin: "C. R. Coleman, Fast Self-Shadowing Using Occluder Textures, M.S. thesis, \
                  Texas A&M University, 2006: Appendix B, Example Fragment Shader Source (Cg)",
     },
+    HistoricalShader {
+        name: "eisemann/nbuffer.vert",
+        stage: Stage::Vertex,
+        source: include_str!("../../shaders/eisemann/nbuffer.vert"),
+        origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
+                 Computer Graphics Forum 27(1), 2008: §3.2, a full-window pass per N-buffer level",
+    },
+    HistoricalShader {
+        name: "eisemann/nbuffer.frag",
+        stage: Stage::Fragment,
+        source: include_str!("../../shaders/eisemann/nbuffer.frag"),
+        origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
+                 Computer Graphics Forum 27(1), 2008: §3.2, N-buffers' dyadic construction",
+    },
+    HistoricalShader {
+        name: "eisemann/slices.vert",
+        stage: Stage::Vertex,
+        source: include_str!("../../shaders/eisemann/slices.vert"),
+        origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
+                 Computer Graphics Forum 27(1), 2008: §3.4 and Figure 5, the slicing view from a centre of projection behind the light",
+    },
+    HistoricalShader {
+        name: "eisemann/slices.frag",
+        stage: Stage::Fragment,
+        source: include_str!("../../shaders/eisemann/slices.frag"),
+        origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
+                 Computer Graphics Forum 27(1), 2008: §3.4, slices packed four to an RGBA texture; §3.4.1, the light-leak fix",
+    },
+    HistoricalShader {
+        name: "eisemann/visibility.vert",
+        stage: Stage::Vertex,
+        source: include_str!("../../shaders/eisemann/visibility.vert"),
+        origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
+                 Computer Graphics Forum 27(1), 2008: §3.5, the observer's pass: each fragment's position in the light's frame",
+    },
+    HistoricalShader {
+        name: "eisemann/visibility.frag",
+        stage: Stage::Fragment,
+        source: include_str!("../../shaders/eisemann/visibility.frag"),
+        origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
+                 Computer Graphics Forum 27(1), 2008: §3.1 equation 4, §3.2 prefiltering, §3.3 equation 5, §3.4.2 self shadowing",
+    },
 ];
 
 /// Every embedded shader; a program's stages in pipeline order.

@@ -17,8 +17,11 @@
 //! **Not applicable is not a failure.** A combination the pipeline refuses
 //! (`PipelineError::Unsupported`: register combiners on the native path) or the technique
 //! refuses for these settings (`TechniqueError::NeedsStencil` with a 16-bit depth buffer,
-//! `NoLight`) becomes a skipped entry carrying the reason, and the study goes on. Any other
-//! error is a real failure and ends the study.
+//! `NoLight`, `NoAreaLight` for `accumulate` under a point light; the native path's
+//! missing accumulation buffer outside OSMesa, `PipelineError::NoAccumBuffer`, and its
+//! window's fixed 24-bit depth, `RenderError::WindowDepth`) becomes a skipped entry
+//! carrying the reason, and the study goes on. Any other error is a real failure and ends
+//! the study.
 
 pub mod compare;
 pub mod range;
@@ -73,10 +76,18 @@ pub struct Progress {
 /// The reason to skip a combination that does not apply, or `None` for a real failure.
 pub fn not_applicable(error: &RenderError) -> Option<String> {
     match error {
-        RenderError::Pipeline(e @ PipelineError::Unsupported { .. }) => Some(e.to_string()),
-        RenderError::Technique(
-            e @ (TechniqueError::NeedsStencil { .. } | TechniqueError::NoLight { .. }),
+        RenderError::Pipeline(
+            e @ (PipelineError::Unsupported { .. }
+            | PipelineError::NoAccumBuffer { .. }
+            | PipelineError::ShaderPrograms),
         ) => Some(e.to_string()),
+        RenderError::Technique(
+            e @ (TechniqueError::NeedsStencil { .. }
+            | TechniqueError::NoLight { .. }
+            | TechniqueError::NoAreaLight { .. }
+            | TechniqueError::NoShadowPlanes { .. }),
+        ) => Some(e.to_string()),
+        e @ RenderError::WindowDepth { .. } => Some(e.to_string()),
         _ => None,
     }
 }

@@ -85,6 +85,38 @@ const DEPTH_COMPARE: &[(&str, &str)] = &[
     ),
 ];
 
+const ACCUMULATE: &[(&str, &str)] = &[
+    (
+        "accum-clear",
+        "glClear(GL_ACCUM_BUFFER_BIT) with the clear value glClearAccum(0, 0, 0, 0) set \
+         once: the sum of the samples' pictures starts at 0 every frame.",
+    ),
+    ("light", LIGHT),
+    (
+        "copy",
+        "glCopyTexImage2D copies the corner's depth into the one map texture, as \
+         depth-compare's copy: each sample of the light re-makes it from its own point, \
+         every frame.",
+    ),
+    ("dim", DIM),
+    (
+        "lit",
+        "depth-compare's lit pass with the shadowing light a point at this sample's place \
+         on the rectangle: its contribution added where the map's compare says lit.",
+    ),
+    (
+        "accum",
+        "glAccum(GL_ACCUM, 1/N): the colour buffer, weighted by 1/N, added to the \
+         accumulation buffer (signed 16-bit per channel on Mesa: each add truncates).",
+    ),
+    (
+        "return",
+        "glAccum(GL_RETURN, 1): the sum — the average of the N hard-shadow pictures, a \
+         penumbra where some points of the light are hidden — written back to the colour \
+         buffer.",
+    ),
+];
+
 const DUAL8: &[(&str, &str)] = &[
     ("light", LIGHT),
     (
@@ -270,17 +302,60 @@ const PROJECTIVE: &[(&str, &str)] = &[
     ),
 ];
 
+const OCCLUDER_PLANES: &[(&str, &str)] = &[
+    ("dim", DIM),
+    (
+        "lit",
+        "The shadowing light alone, added (ONE, ONE) where DepthFunc(EQUAL) finds the dim \
+         pass's surface. Unit k holds plane k's occluder as a two-slice 3D texture and \
+         MODULATEs: OBJECT_LINEAR S, T, R, Q are the plane's rows for the receiver being \
+         drawn (with a point light, on the texture matrix), so (s, t) is where the ray \
+         towards the light meets the plane and r picks the white slice when the plane is \
+         not between the fragment and the light. The light arrives times the product of \
+         the factors.",
+    ),
+];
+
+const OCCLUSION_TEXTURES: &[(&str, &str)] = &[
+    (
+        "slices",
+        "The casters from behind the area light (the centre of projection offset on its axis, \
+         the near window fitted around the light) into a framebuffer object, once per RGBA \
+         occlusion texture, with Eisemann & Décoret's slicing program: each fragment writes 1 \
+         into the channel of its depth slice (and of the next slice: the light-leak fix), \
+         blended ONE, ONE so that a channel holds the union of its slice's occluders.",
+    ),
+    (
+        "prefilter",
+        "`prefilter = \"mipmap\"`: glGenerateMipmap of each occlusion texture, a box of 2^l \
+         texels read at level l, trilinearly. `\"nbuffers\"`: full-window program passes into \
+         a framebuffer object build level l (the mean of 2^l × 2^l texels) from four texels \
+         of level l − 1, even and odd levels in two textures so none is read while written.",
+    ),
+    ("dim", DIM),
+    (
+        "lit",
+        "The shadowing light's diffuse term added (ONE, ONE) where DepthFunc(EQUAL) finds the \
+         dim pass's surface, times the visibility the program computes: for every slice \
+         between the fragment and the light, the blocked fraction read with a box of the \
+         light's size scaled by d(P, slice)/d(P, light), combined as Π(1 − I_k).",
+    ),
+];
+
 /// Pass name → paragraph, for every pass `id`'s plans make.
 pub fn pass_notes(id: TechniqueId) -> &'static [(&'static str, &'static str)] {
     match id {
         TechniqueId::None => NONE,
         TechniqueId::DepthCompare => DEPTH_COMPARE,
+        TechniqueId::Accumulate => ACCUMULATE,
         TechniqueId::Dual8 => DUAL8,
         TechniqueId::Linear8 => LINEAR8,
         TechniqueId::Multidigit16 => MULTIDIGIT16,
         TechniqueId::Multidigit16Combine => MULTIDIGIT16_COMBINE,
         TechniqueId::Planar => PLANAR,
         TechniqueId::Projective => PROJECTIVE,
+        TechniqueId::OccluderPlanes => OCCLUDER_PLANES,
+        TechniqueId::OcclusionTextures => OCCLUSION_TEXTURES,
     }
 }
 
@@ -297,12 +372,15 @@ fn module_source(id: TechniqueId) -> &'static str {
     match id {
         TechniqueId::None => include_str!("none.rs"),
         TechniqueId::DepthCompare => include_str!("depth_compare.rs"),
+        TechniqueId::Accumulate => include_str!("accumulate.rs"),
         TechniqueId::Dual8 => include_str!("dual8.rs"),
         TechniqueId::Linear8 => include_str!("linear8.rs"),
         TechniqueId::Multidigit16 => include_str!("multidigit16.rs"),
         TechniqueId::Multidigit16Combine => include_str!("multidigit16_combine.rs"),
         TechniqueId::Planar => include_str!("planar.rs"),
         TechniqueId::Projective => include_str!("projective.rs"),
+        TechniqueId::OccluderPlanes => include_str!("occluder_planes.rs"),
+        TechniqueId::OcclusionTextures => include_str!("occlusion_textures.rs"),
     }
 }
 
@@ -384,6 +462,20 @@ pub fn figures(scene: &Scene) -> Vec<Figure> {
     match id {
         TechniqueId::None => {}
         TechniqueId::DepthCompare => out.extend(depth_compare_figures(scene)),
+        TechniqueId::Accumulate => {
+            out.extend(depth_compare_figures(scene));
+            let n = s.light_samples;
+            out.push(figure(
+                "light samples",
+                format!(
+                    "{n} hard-shadow renders a frame from stratified points of the area light, \
+                     each added with glAccum(GL_ACCUM, 1/{n}); one render weighs \
+                     q(32767/{n}) = {} of 32767, so the returned visibility is exact to \
+                     {n}/32767 of the light",
+                    crate::ff::accum::q(32767.0 / n.max(1) as f32)
+                ),
+            ));
+        }
         TechniqueId::Dual8 => out.extend(dual8_figures(scene)),
         TechniqueId::Linear8 => out.extend(linear8_figures(scene)),
         TechniqueId::Multidigit16 | TechniqueId::Multidigit16Combine => {
@@ -410,6 +502,29 @@ pub fn figures(scene: &Scene) -> Vec<Figure> {
                 crate::vocab::Named::name(s.projector)
             ),
         )),
+        TechniqueId::OccluderPlanes => out.push(figure(
+            "shadow planes",
+            format!(
+                "{} planes, one texture unit each (of {}); no map, no depth compare, so no bias",
+                s.planes.iter().map(|p| p.planes.len()).sum::<usize>(),
+                crate::ff::MAX_TEXTURE_UNITS
+            ),
+        )),
+        TechniqueId::OcclusionTextures => {
+            let o = super::occlusion_textures::OcclusionSettings::of(scene);
+            out.push(figure(
+                "occlusion textures",
+                format!(
+                    "{} slices in {} RGBA textures of {}² ({:?} prefilter, {:?} combination); \
+                     shader programs, so the emulate pipeline only",
+                    o.slices,
+                    o.slices.div_ceil(4),
+                    o.size,
+                    o.prefilter,
+                    o.combine
+                ),
+            ));
+        }
     }
     out
 }
@@ -1062,11 +1177,28 @@ mod tests {
 
     /// The default scene with `id` and each of its variants that changes the plan's shape.
     fn scenes(id: TechniqueId) -> Vec<Scene> {
-        let mut base = Scene::default_scene();
+        // Occluder planes need an object that declares planes: the F-35 scene.
+        let mut base = match id {
+            TechniqueId::OccluderPlanes => {
+                let path = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/f35.toml");
+                Scene::load(std::path::Path::new(path)).expect("assets/f35.toml loads")
+            }
+            _ => Scene::default_scene(),
+        };
         base.image.width = 64;
         base.image.height = 64;
         base.shadow.map_size = 64;
         base.shadow.technique = id;
+        if matches!(id, TechniqueId::Accumulate | TechniqueId::OcclusionTextures) {
+            // Its light is a rectangle: the spot light's place, 2 × 2.
+            let light = &mut base.lights[0];
+            light.kind = crate::scene::LightKind::Area {
+                corner: light.view.eye - glam::Vec3::new(1.0, 0.0, 1.0),
+                edge_u: glam::Vec3::X * 2.0,
+                edge_v: glam::Vec3::Z * 2.0,
+            };
+            base.shadow.light_samples = 2;
+        }
         let mut stencil = base.clone();
         stencil.shadow.planar_mode = PlanarMode::Stencil;
         let mut perspective = base.clone();

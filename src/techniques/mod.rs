@@ -20,6 +20,7 @@
 //! and decodes their readback with [`MaskPlan::decode`] into a [`Mask`] (255 lit, 0
 //! shadowed, 128 background, top row first) that `metrics` compares with the truth.
 
+pub mod accumulate;
 pub mod depth_compare;
 pub mod dual8;
 pub mod explain;
@@ -28,6 +29,8 @@ pub mod map;
 pub mod multidigit16;
 pub mod multidigit16_combine;
 pub mod none;
+pub mod occluder_planes;
+pub mod occlusion_textures;
 pub mod parts;
 pub mod planar;
 pub mod plane;
@@ -38,7 +41,7 @@ use crate::vocab::{DepthBits, Named, TechniqueId};
 use std::sync::Arc;
 
 use crate::ff::{Command, Geometry, PixelFormat, PixelType, MAX_LIGHTS};
-use crate::metrics::{Mask, BACKGROUND, LIT, SHADOWED};
+use crate::metrics::{Mask, VisibilityImage, BACKGROUND, LIT, SHADOWED};
 use crate::pipeline::Readback;
 use crate::scene::Scene;
 
@@ -60,6 +63,22 @@ pub enum TechniqueError {
     TooManyFlatReceivers { technique: TechniqueId, max: usize },
     #[error("`{technique}` with `projector = \"pseudo-depth\"` projects onto a flat receiver, and no flat receiver of this scene has the light strictly on one side of its plane (p·l ≠ 0); use `projector = \"perspective\"` or add a flat receiver")]
     NoProjectionPlane { technique: TechniqueId },
+    #[error("`{technique}` needs an area light to sample, and the scene's first light is {found}: make it `type = \"area\"` with `corner`, `edge_u` and `edge_v` (or `centre`, `size` and `at`)")]
+    NoAreaLight {
+        technique: TechniqueId,
+        found: &'static str,
+    },
+    #[error("{samples} light samples asked for; `accumulate` takes 1 to {max}")]
+    LightSamples { samples: u32, max: u32 },
+    #[error("`{technique}` needs shadow planes, and no object that casts declares any: add `[[object.plane]]` tables (origin, normal, up, right, width, height, occluder) or use `shape = \"aircraft\", layout = \"f35\"`, which brings the thesis's three")]
+    NoShadowPlanes { technique: TechniqueId },
+    #[error("the casters declare {count} shadow planes; one texture unit each, and the fixed-function pipeline has {max} (GL_MAX_TEXTURE_UNITS)")]
+    TooManyShadowPlanes { count: usize, max: usize },
+    #[error("`{technique}` with `prefilter = \"{prefilter}\"` is not built yet; use \"mipmap\" or \"nbuffers\"")]
+    PrefilterNotBuilt {
+        technique: TechniqueId,
+        prefilter: &'static str,
+    },
     #[error("the mask readback (slot {slot}) is missing: the pipeline did not execute ReadPixels")]
     MissingReadback { slot: u32 },
     #[error("the mask readback is {got_w}×{got_h} {format:?}/{ty:?}; expected {w}×{h} {expected_format:?}/{expected_ty:?}", got_w = .got.0, got_h = .got.1, w = .expected.0, h = .expected.1)]
@@ -93,12 +112,15 @@ pub fn technique(id: TechniqueId) -> &'static Technique {
     match id {
         TechniqueId::None => &none::TECHNIQUE,
         TechniqueId::DepthCompare => &depth_compare::TECHNIQUE,
+        TechniqueId::Accumulate => &accumulate::TECHNIQUE,
         TechniqueId::Dual8 => &dual8::TECHNIQUE,
         TechniqueId::Linear8 => &linear8::TECHNIQUE,
         TechniqueId::Multidigit16 => &multidigit16::TECHNIQUE,
         TechniqueId::Multidigit16Combine => &multidigit16_combine::TECHNIQUE,
         TechniqueId::Planar => &planar::TECHNIQUE,
         TechniqueId::Projective => &projective::TECHNIQUE,
+        TechniqueId::OccluderPlanes => &occluder_planes::TECHNIQUE,
+        TechniqueId::OcclusionTextures => &occlusion_textures::TECHNIQUE,
     }
 }
 
@@ -189,6 +211,21 @@ impl Plan {
     pub fn pass_count(&self) -> usize {
         self.maps.len() + self.passes.len()
     }
+
+    /// Whether any command of the plan uses the accumulation buffer (glAccum, or a clear
+    /// of ACCUM_BUFFER_BIT): the renderer then gives the framebuffer one (`render::Session`).
+    pub fn needs_accumulation(&self) -> bool {
+        let uses = |c: &Command| match c {
+            Command::Accum { .. } => true,
+            Command::Clear(mask) => mask.accum,
+            _ => false,
+        };
+        self.setup
+            .iter()
+            .chain(self.frame_commands())
+            .chain(&self.mask.commands)
+            .any(uses)
+    }
 }
 
 /// The framebuffer a plan needs: at least the image and the light's map (they share one
@@ -256,6 +293,12 @@ pub enum MaskSource {
     /// iff red ≥ 128 (a filtered compare that is at least half lit counts as lit),
     /// shadowed below.
     Colour { slot: u32, width: u32, height: u32 },
+    /// Mask passes accumulated over the light's samples (`accumulate`), read as
+    /// RGBA/UNSIGNED_BYTE: each geometry pixel grey, its red the fraction of the samples
+    /// that saw the light (0–255); the background (0, 0, ≈255) — blue ahead of red by at
+    /// least 128. The mask is lit iff red ≥ 128, as for `Colour`;
+    /// [`MaskPlan::decode_visibility`] gives the fraction itself.
+    Visibility { slot: u32, width: u32, height: u32 },
 }
 
 /// The mask plan of a technique whose `passes` were built in the mask look: the passes,
@@ -304,6 +347,11 @@ impl MaskPlan {
                 (PixelFormat::DepthComponent, PixelType::Float),
             ),
             MaskSource::Colour {
+                slot,
+                width,
+                height,
+            }
+            | MaskSource::Visibility {
                 slot,
                 width,
                 height,
@@ -358,12 +406,72 @@ impl MaskPlan {
                     }
                 })
                 .collect(),
+            MaskSource::Visibility { .. } => pixels
+                .map(|p| match accumulated_visibility(p) {
+                    None => BACKGROUND,
+                    Some(v) if v >= 128 => LIT,
+                    Some(_) => SHADOWED,
+                })
+                .collect(),
         };
         Ok(Mask {
             width,
             height,
             data,
         })
+    }
+
+    /// The visibility a [`MaskSource::Visibility`] readback holds (`None` for any other
+    /// source): per pixel, top row first, `None` on background, else the red channel —
+    /// the fraction of the light's samples that saw the pixel, in 255ths.
+    pub fn decode_visibility<'r>(
+        &self,
+        readback: impl Fn(u32) -> Option<&'r Readback>,
+    ) -> Result<Option<VisibilityImage>, TechniqueError> {
+        let MaskSource::Visibility {
+            slot,
+            width,
+            height,
+        } = self.source
+        else {
+            return Ok(None);
+        };
+        // The shape was checked by `decode` on the same readback; checked again here.
+        let r = readback(slot).ok_or(TechniqueError::MissingReadback { slot })?;
+        let n = width as usize * height as usize;
+        if (r.width, r.height) != (width, height) || r.bytes.len() != n * 4 {
+            return Err(TechniqueError::ReadbackShape {
+                got: (r.width, r.height),
+                expected: (width, height),
+                format: r.format,
+                ty: r.ty,
+                expected_format: PixelFormat::Rgba,
+                expected_ty: PixelType::UnsignedByte,
+            });
+        }
+        let row = width as usize * 4;
+        let data = r
+            .bytes
+            .chunks_exact(row.max(1))
+            .rev()
+            .flat_map(|line| line.chunks_exact(4))
+            .map(accumulated_visibility)
+            .collect();
+        Ok(Some(VisibilityImage {
+            width,
+            height,
+            data,
+        }))
+    }
+}
+
+/// An accumulated mask pixel: background when blue leads red by 128 or more (the mask
+/// background (0, 0, 255) averaged with itself), else its red, the lit fraction in 255ths.
+fn accumulated_visibility(p: &[u8]) -> Option<u8> {
+    if i32::from(p[2]) - i32::from(p[0]) >= 128 {
+        None
+    } else {
+        Some(p[0])
     }
 }
 

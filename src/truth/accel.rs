@@ -248,18 +248,33 @@ pub(super) struct Accel {
     pub normals: Vec<Vec3>,
     /// Whether the triangle's object receives shadows, in leaf order.
     pub receives: Vec<bool>,
+    /// The index in the scene's objects of the triangle's object, in leaf order.
+    pub objects: Vec<u32>,
 }
 
 impl Accel {
     /// Builds over the triangles of the objects `keep` selects; `None` when there are none.
     pub fn build(scene: &Scene, keep: impl Fn(&crate::scene::Object) -> bool) -> Option<Accel> {
+        Accel::build_where(scene, |_, o| keep(o))
+    }
+
+    /// Builds over the triangles of the objects `keep(index, object)` selects.
+    pub fn build_where(
+        scene: &Scene,
+        keep: impl Fn(usize, &crate::scene::Object) -> bool,
+    ) -> Option<Accel> {
         let mut corners = Vec::new();
         let mut receives = Vec::new();
-        for object in scene.objects.iter().filter(|o| keep(o)) {
+        let mut objects = Vec::new();
+        for (index, object) in scene.objects.iter().enumerate() {
+            if !keep(index, object) {
+                continue;
+            }
             let mesh = object.world_mesh();
             for t in 0..mesh.triangle_count() {
                 corners.push(mesh.corners(t));
                 receives.push(object.receives);
+                objects.push(index as u32);
             }
         }
         if corners.is_empty() {
@@ -288,6 +303,7 @@ impl Accel {
             })
             .collect();
         let receives = order.iter().map(|&i| receives[i]).collect();
+        let objects = order.iter().map(|&i| objects[i]).collect();
         let normals = order
             .iter()
             .map(|&i| {
@@ -300,6 +316,7 @@ impl Accel {
             tris,
             normals,
             receives,
+            objects,
         })
     }
 

@@ -85,12 +85,15 @@
 mod accel;
 pub mod bench;
 mod camera;
+mod objects;
 mod shade;
 #[cfg(test)]
 mod tests;
 
 use crate::metrics::Mask;
 use crate::scene::{LightKind, Scene, TruthSettings};
+pub use objects::shadow_causes;
+
 use accel::Accel;
 use camera::PrimaryRays;
 use glam::Vec3;
@@ -125,6 +128,9 @@ pub enum TruthError {
     /// An area-light sample count outside 1 to `max`.
     #[error("{samples} samples per pixel asked for; the truth takes 1 to {max}")]
     Samples { samples: u32, max: u32 },
+    /// A mask given to [`shadow_causes`] that is not of the scene's image size.
+    #[error("the truth mask is {}×{}, the scene's image {}×{}", .mask.0, .mask.1, .image.0, .image.1)]
+    MaskSize { mask: (u32, u32), image: (u32, u32) },
 }
 
 /// "the scene has no lights" / "the scene has 1 light (index 0)" / "… 3 lights (indices
@@ -224,34 +230,7 @@ pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError>
             max: TruthSettings::MAX_SAMPLES,
         });
     }
-    let emitter = match scene.lights.get(options.light) {
-        None if scene.lights.is_empty() && options.light == 0 => Emitter::None,
-        None => {
-            return Err(TruthError::NoSuchLight {
-                index: options.light,
-                count: scene.lights.len(),
-            })
-        }
-        Some(light) => match (light.kind, light.position()) {
-            (LightKind::Directional { direction }, _) => {
-                Emitter::Directional(-direction.normalize())
-            }
-            (
-                LightKind::Area {
-                    corner,
-                    edge_u,
-                    edge_v,
-                },
-                _,
-            ) => Emitter::Area {
-                corner,
-                u: edge_u,
-                v: edge_v,
-            },
-            (_, Some(p)) => Emitter::Point(p),
-            (_, None) => Emitter::None,
-        },
-    };
+    let emitter = emitter(scene, options.light)?;
     let start = Instant::now();
     let all = Accel::build(scene, |_| true);
     // When every object casts, the shadow rays use the primary BVH: one build, not two.
@@ -338,6 +317,39 @@ pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError>
         primary_rays: u64::from(w) * u64::from(h),
         shadow_rays: tally.rays,
         area,
+    })
+}
+
+/// The light `light` of the scene as the shader sees it (an area light whole; its centre
+/// is the hard mask's point).
+fn emitter(scene: &Scene, light: usize) -> Result<Emitter, TruthError> {
+    Ok(match scene.lights.get(light) {
+        None if scene.lights.is_empty() && light == 0 => Emitter::None,
+        None => {
+            return Err(TruthError::NoSuchLight {
+                index: light,
+                count: scene.lights.len(),
+            })
+        }
+        Some(light) => match (light.kind, light.position()) {
+            (LightKind::Directional { direction }, _) => {
+                Emitter::Directional(-direction.normalize())
+            }
+            (
+                LightKind::Area {
+                    corner,
+                    edge_u,
+                    edge_v,
+                },
+                _,
+            ) => Emitter::Area {
+                corner,
+                u: edge_u,
+                v: edge_v,
+            },
+            (_, Some(p)) => Emitter::Point(p),
+            (_, None) => Emitter::None,
+        },
     })
 }
 

@@ -734,3 +734,83 @@ fn default_samples_converge() {
         }
     }
 }
+
+/// A flat torus over the ground under a low directional light: the ring's near half
+/// shadows its far half (the object shadows itself), its underside faces away, and the
+/// ground takes the shadow of the torus (shadow from another object).
+fn torus_over_ground(with_ground: bool) -> Scene {
+    let torus = object(
+        Shape::Torus {
+            major_radius: 1.5,
+            minor_radius: 0.5,
+            rings: 48,
+            sides: 24,
+        },
+        Vec3::new(0.0, 0.6, 0.0),
+        true,
+    );
+    let ground = object(
+        Shape::Plane {
+            size: 8.0,
+            tessellation: 2,
+        },
+        Vec3::ZERO,
+        true,
+    );
+    let mut light = point_light(Vec3::new(0.0, 8.0, 0.0));
+    light.kind = LightKind::Directional {
+        direction: Vec3::new(-1.0, -0.08, 0.1).normalize(),
+    };
+    let objects = if with_ground {
+        vec![ground, torus]
+    } else {
+        vec![torus]
+    };
+    top_down(96, 4.0, vec![light], objects)
+}
+
+#[test]
+fn shadow_causes_agree_with_the_mask_and_tell_self_from_others() {
+    use crate::metrics::Cause;
+    let scene = torus_over_ground(true);
+    let t = truth(&scene, &TruthOptions::default()).expect("truth");
+    let causes = shadow_causes(&scene, 0, &t.mask).expect("causes");
+    let mut count = std::collections::HashMap::new();
+    for (i, (&cause, &v)) in causes.cause.iter().zip(&t.mask.data).enumerate() {
+        let expected = match cause {
+            Cause::Background => BACKGROUND,
+            Cause::Lit => LIT,
+            _ => SHADOWED,
+        };
+        assert_eq!(v, expected, "pixel {i}: {cause:?}");
+        *count.entry((causes.object[i], cause)).or_insert(0u32) += 1;
+    }
+    let n = |object: u32, cause| count.get(&(object, cause)).copied().unwrap_or(0);
+    // The ground faces the light and cannot occlude itself: only the torus shadows it.
+    assert!(n(0, Cause::OtherOccluder) > 100, "{count:?}");
+    assert_eq!(n(0, Cause::FacesAway) + n(0, Cause::OwnOccluder), 0);
+    // The torus shadows itself both ways, and nothing else is between it and the light.
+    assert!(n(1, Cause::OwnOccluder) > 20, "{count:?}");
+    assert!(n(1, Cause::FacesAway) > 20, "{count:?}");
+    assert_eq!(n(1, Cause::OtherOccluder), 0, "{count:?}");
+
+    // Without the ground, the torus's own shadow is the same pixels.
+    let alone = torus_over_ground(false);
+    let t_alone = truth(&alone, &TruthOptions::default()).expect("truth");
+    let alone_causes = shadow_causes(&alone, 0, &t_alone.mask).expect("causes");
+    for (i, &cause) in causes.cause.iter().enumerate() {
+        if causes.object[i] == 1 && cause == Cause::OwnOccluder {
+            assert_eq!(alone_causes.cause[i], Cause::OwnOccluder, "pixel {i}");
+        }
+    }
+}
+
+#[test]
+fn shadow_causes_refuse_a_mask_of_another_size() {
+    let scene = torus_over_ground(true);
+    let mask = crate::metrics::Mask::filled(3, 3, LIT);
+    assert!(matches!(
+        shadow_causes(&scene, 0, &mask),
+        Err(TruthError::MaskSize { .. })
+    ));
+}

@@ -353,7 +353,11 @@ mod tests {
         assert_eq!(v.act(Action::Technique(-1), &initial), Change::Rebuild);
         v.act(Action::Technique(-1), &initial);
         v.act(Action::Technique(-1), &initial);
-        assert_eq!(v.technique(), TechniqueId::Projective, "wraps around");
+        assert_eq!(
+            v.technique(),
+            TechniqueId::OcclusionTextures,
+            "wraps around"
+        );
         let mut v = initial.clone();
         let kilgard = v.shadow.offset().expect("depth-compare has a default");
         assert_eq!(v.act(Action::Units(1), &initial), Change::Restage);

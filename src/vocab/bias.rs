@@ -54,8 +54,12 @@ pub fn default_offset(technique: TechniqueId, depth: DepthBits) -> Option<Polygo
         DepthBits::D32F => units * 2.0,
     };
     let units = match technique {
-        TechniqueId::None | TechniqueId::Planar | TechniqueId::Projective => return None,
-        TechniqueId::DepthCompare | TechniqueId::Linear8 => 4.0,
+        TechniqueId::None
+        | TechniqueId::Planar
+        | TechniqueId::Projective
+        | TechniqueId::OccluderPlanes
+        | TechniqueId::OcclusionTextures => return None,
+        TechniqueId::DepthCompare | TechniqueId::Accumulate | TechniqueId::Linear8 => 4.0,
         TechniqueId::Dual8 => in_24_bit_units(3.0 * 16_777_215.0 / 255.0 / 2.0),
         TechniqueId::Multidigit16 | TechniqueId::Multidigit16Combine => in_24_bit_units(256.0),
     };

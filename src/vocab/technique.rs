@@ -16,6 +16,9 @@ pub enum TechniqueId {
     Multidigit16Combine,
     Planar,
     Projective,
+    Accumulate,
+    OccluderPlanes,
+    OcclusionTextures,
 }
 
 impl Named for TechniqueId {
@@ -28,6 +31,9 @@ impl Named for TechniqueId {
         ("multidigit16-combine", TechniqueId::Multidigit16Combine),
         ("planar", TechniqueId::Planar),
         ("projective", TechniqueId::Projective),
+        ("accumulate", TechniqueId::Accumulate),
+        ("occluder-planes", TechniqueId::OccluderPlanes),
+        ("occlusion-textures", TechniqueId::OcclusionTextures),
     ];
 }
 
@@ -38,6 +44,7 @@ impl TechniqueId {
         matches!(
             self,
             TechniqueId::DepthCompare
+                | TechniqueId::Accumulate
                 | TechniqueId::Dual8
                 | TechniqueId::Linear8
                 | TechniqueId::Multidigit16

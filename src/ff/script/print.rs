@@ -205,6 +205,10 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
         Command::Raise { error, call } => out.push_str(&format!(
             "/* {call}: {error:?} raised here by a display list */\n"
         )),
+        Command::UseProgram(_) | Command::Uniform { .. } => {
+            out.push_str(&program_comment(c));
+            out.push('\n');
+        }
         Command::Bitmap(_) | Command::DrawPixels(_) | Command::PolygonStipple(_) => line(
             out,
             format_args!("{}", super::print_pixels::call(c, unpack_alignment)),
@@ -528,6 +532,7 @@ fn call(c: &Command) -> String {
         }
         Command::DeleteFramebuffers(names) => name_list(Entry::DeleteFramebuffers, names),
         Command::Query(q) => query(q),
+        Command::UseProgram(_) | Command::Uniform { .. } => program_comment(c),
         Command::BindRenderbuffer(name) => {
             format!("{}(GL_RENDERBUFFER, {name})", Entry::BindRenderbuffer)
         }
@@ -1226,5 +1231,15 @@ fn draw_arrays(out: &mut String, g: &Geometry, indices: Option<&[u32]>) {
     }
     for name in &enabled {
         line(out, format_args!("{}({name})", Entry::DisableClientState));
+    }
+}
+
+/// A shader-program command as a comment: no script can build a program (`ff::program`).
+fn program_comment(c: &Command) -> String {
+    match c {
+        Command::UseProgram(Some(p)) => format!("/* {}(\"{}\") */", Entry::UseProgram, p.name),
+        Command::UseProgram(None) => format!("/* {}(0) */", Entry::UseProgram),
+        Command::Uniform { name, value } => format!("/* glUniform(\"{name}\", {value:?}) */"),
+        _ => String::new(),
     }
 }

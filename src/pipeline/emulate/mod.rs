@@ -30,6 +30,7 @@ pub mod texel_store;
 pub mod texture_calls;
 pub mod textures;
 pub mod uniforms;
+pub mod user_program;
 
 use std::sync::Arc;
 
@@ -77,6 +78,8 @@ pub struct Emulate {
     accum: Option<crate::ff::accum::AccumBuffer>,
     /// The generic attribute values last sent (`draw::SentAttribs`).
     sent: draw::SentAttribs,
+    /// A plan's own programs and the one in use (`user_program`).
+    user: user_program::UserPrograms,
 }
 
 /// Commands executed by generated programs on a core 3.3 context.
@@ -100,6 +103,7 @@ impl EmulatedPipeline {
             pixel_image: None,
             accum: None,
             sent: draw::SentAttribs::default(),
+            user: user_program::UserPrograms::default(),
             programs: ProgramCache::default(),
             geometry: GeometryCache::default(),
             textures: Textures::default(),
@@ -165,6 +169,9 @@ impl Emulate {
         state: &FixedState,
         geometry: &Arc<Geometry>,
     ) -> Result<(), PipelineError> {
+        if self.user.current().is_some() {
+            return self.draw_with_program(gl, state, geometry);
+        }
         let base = ShaderKey::from_state(state, self.precision);
         let mut passes = polygon::passes(
             state.polygon_mode,
@@ -260,6 +267,36 @@ impl Emulate {
         Ok(())
     }
 
+    /// A draw with the plan's program in use (`user_program`): its built-ins from the
+    /// state, its samplers' textures, the raster state of each polygon pass, the geometry.
+    fn draw_with_program(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        geometry: &Arc<Geometry>,
+    ) -> Result<(), PipelineError> {
+        let Some(program) = self.user.current().cloned() else {
+            return Ok(());
+        };
+        program.bind(gl, state);
+        self.textures
+            .bind_units(gl, state, &program.texture_units())?;
+        let passes = polygon::passes(
+            state.polygon_mode,
+            state.cull_face.get(),
+            state.offset_enables,
+            geometry.primitive,
+            polygon::Outline::of(geometry),
+        );
+        for pass in passes {
+            self.raster.sync(gl, state, Some(&pass));
+            self.geometry
+                .get(gl, geometry)?
+                .draw(gl, &mut self.sent, state);
+        }
+        Ok(())
+    }
+
     fn clear(&mut self, gl: &glow::Context, state: &FixedState, mask: crate::ff::ClearMask) {
         self.raster.sync(gl, state, None);
         let c = state.clear;
@@ -308,6 +345,8 @@ impl Issue for Emulate {
         }
         match cmd {
             Command::GenerateMipmap(t) => self.textures.generate_mipmap(gl, state, *t)?,
+            Command::UseProgram(p) => self.user.use_program(gl, p.as_ref())?,
+            Command::Uniform { name, value } => self.user.uniform(gl, name, value)?,
             Command::Draw(g) => {
                 self.draw(gl, state, g)?;
                 core.counters.draws += 1;
@@ -419,7 +458,7 @@ impl Issue for Emulate {
     fn counters(&self, core: &Counters) -> Counters {
         let (sent, skipped) = self.raster.counts();
         Counters {
-            programs_compiled: self.programs.compiles() as u64,
+            programs_compiled: (self.programs.compiles() + self.user.compiles()) as u64,
             state_calls_sent: sent,
             state_calls_skipped: skipped + self.textures.binds_skipped,
             texture_uploads: self.textures.uploads,
@@ -433,6 +472,7 @@ impl Issue for Emulate {
         for p in self.programs.drain() {
             p.delete(gl);
         }
+        self.user.release(gl);
         self.geometry.release(gl);
         self.textures.release(gl);
         self.framebuffers.release(gl);

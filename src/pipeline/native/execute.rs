@@ -18,6 +18,7 @@
 //! - **Register combiners** have no native path (Mesa dropped NV_register_combiners): their
 //!   commands change only the model, and a draw with REGISTER_COMBINERS_NV enabled is
 //!   refused with `PipelineError::Unsupported` instead of drawing something else.
+//! - **Shader programs** (`ff::program`) are refused with `PipelineError::ShaderPrograms`.
 
 use glam::Mat4;
 
@@ -275,6 +276,10 @@ impl Native {
             | Command::ReadBuffer(_) => {}
             // Issued by the path's query mirror (`pipeline::queries`).
             Command::Query(_) => {}
+            // Mesa's fixed function has no programs (`ff::program`).
+            Command::UseProgram(_) | Command::Uniform { .. } => {
+                return Err(PipelineError::ShaderPrograms)
+            }
             Command::GenerateMipmap(t) => unsafe { g.GenerateMipmap(conv::value(*t)) },
             Command::BlitFramebuffer(b) => {
                 let (s, d) = (b.src, b.dst);
