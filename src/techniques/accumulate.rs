@@ -38,8 +38,8 @@ use glam::{Vec3, Vec4};
 
 use crate::ff::accum::AccumOp;
 use crate::ff::{
-    ClearMask, Command, CompareFunc, CompareMode, CopyTexImage, DepthTextureMode, PixelFormat,
-    PixelType, TexParam, TextureTarget,
+    ClearMask, Command, CompareFunc, CompareMode, DepthTextureMode, PixelFormat, PixelType,
+    TexParam, TextureTarget,
 };
 use crate::scene::{Light, LightKind, Scene, ShadowSettings};
 use crate::vocab::TechniqueId;
@@ -214,7 +214,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
             passes.push(light_pass(
                 sample, prepared, light, map.size, map.offset, false,
             ));
-            passes.push(copy_pass(&map));
+            passes.push(map.copy_depth_pass());
             let planes = [0, 1, 2, 3].map(|i| light.plane(i));
             passes.extend(dim_then_added_light(sample, prepared, planes, look));
             passes.push(Pass {
@@ -264,27 +264,6 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
              so \"maps made\" counts none and --remake-maps changes nothing"
         )],
     })
-}
-
-/// glCopyTexImage2D of the corner's depth into the map, as depth-compare's copy.
-fn copy_pass(map: &MapSettings) -> Pass {
-    Pass {
-        name: "copy",
-        commands: vec![
-            Command::ActiveTexture(0),
-            bind_map(),
-            Command::CopyTexImage2D(CopyTexImage {
-                requested: None,
-                level: 0,
-                internal_format: map.depth_format(),
-                x: 0,
-                y: 0,
-                width: map.size as i32,
-                height: map.size as i32,
-                border: 0,
-            }),
-        ],
-    }
 }
 
 /// The accumulated mask passes, then glReadPixels of the image as RGBA/UNSIGNED_BYTE,

@@ -21,8 +21,8 @@
 //! far plane compare as 1 and stay lit only where the stored depth is 1.
 
 use crate::ff::{
-    Command, CompareFunc, CompareMode, CopyTexImage, DepthTextureMode, PixelFormat, PixelType,
-    TexParam, TextureTarget,
+    Command, CompareFunc, CompareMode, DepthTextureMode, PixelFormat, PixelType, TexParam,
+    TextureTarget,
 };
 use crate::scene::Scene;
 use crate::vocab::TechniqueId;
@@ -56,28 +56,11 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
         param(TexParam::CompareFunc(CompareFunc::Lequal)),
         param(TexParam::DepthTextureMode(DepthTextureMode::Luminance)),
     ]);
-    let copy = Pass {
-        name: "copy",
-        commands: vec![
-            Command::ActiveTexture(0),
-            bind_map(),
-            Command::CopyTexImage2D(CopyTexImage {
-                requested: None,
-                level: 0,
-                internal_format: map.depth_format(),
-                x: 0,
-                y: 0,
-                width: map.size as i32,
-                height: map.size as i32,
-                border: 0,
-            }),
-        ],
-    };
     Ok(Plan {
         setup,
         maps: vec![
             light_pass(scene, prepared, &light, map.size, map.offset, false),
-            copy,
+            map.copy_depth_pass(),
         ],
         passes: eye_passes(scene, prepared, &light, Look::Shaded),
         mask: colour_mask(scene, eye_passes(scene, prepared, &light, Look::Mask)),

@@ -227,6 +227,30 @@ pub fn upload_map(
     })
 }
 
+impl MapSettings {
+    /// The `copy` pass of the depth-texture techniques: glCopyTexImage2D of the corner's
+    /// depth (map × map at (0, 0)) into the map on unit 0, in the map's depth format.
+    pub fn copy_depth_pass(&self) -> super::Pass {
+        super::Pass {
+            name: "copy",
+            commands: vec![
+                Command::ActiveTexture(0),
+                bind_map(),
+                Command::CopyTexImage2D(crate::ff::CopyTexImage {
+                    requested: None,
+                    level: 0,
+                    internal_format: self.depth_format(),
+                    x: 0,
+                    y: 0,
+                    width: self.size as i32,
+                    height: self.size as i32,
+                    border: 0,
+                }),
+            ],
+        }
+    }
+}
+
 /// Binds the map on the active unit.
 pub fn bind_map() -> Command {
     Command::BindTexture {

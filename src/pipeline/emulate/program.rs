@@ -14,19 +14,22 @@ pub struct Program {
     uniforms: Vec<(UniformSource, Option<glow::UniformLocation>)>,
 }
 
-fn compile_stage(
+/// Compiles one stage; a failure carries `label` (the program's key or name), the GLSL and
+/// the driver's log.
+pub(super) fn compile_stage(
     gl: &glow::Context,
     kind: u32,
     stage: ShaderStage,
     source: &str,
-    key: &ShaderKey,
+    label: &str,
 ) -> Result<glow::Shader, ShaderError> {
     let err = |log: String| ShaderError {
         stage,
-        key: format!("{key:?}"),
+        key: label.to_string(),
         glsl: source.to_string(),
         log,
     };
+    // SAFETY: plain GL calls on the current context.
     unsafe {
         let shader = gl.create_shader(kind).map_err(err)?;
         gl.shader_source(shader, source);
@@ -48,13 +51,20 @@ impl Program {
             fragment,
             uniforms,
         } = shadergen::generate(key);
-        let vs = compile_stage(gl, glow::VERTEX_SHADER, ShaderStage::Vertex, &vertex, key)?;
+        let label = format!("{key:?}");
+        let vs = compile_stage(
+            gl,
+            glow::VERTEX_SHADER,
+            ShaderStage::Vertex,
+            &vertex,
+            &label,
+        )?;
         let fs = compile_stage(
             gl,
             glow::FRAGMENT_SHADER,
             ShaderStage::Fragment,
             &fragment,
-            key,
+            &label,
         )?;
         unsafe {
             let link_err = |log: String| ShaderError {

@@ -16,6 +16,7 @@ use std::sync::Arc;
 use glow::HasContext;
 
 use super::cache::ProgramCache;
+use super::program::compile_stage;
 use super::uniforms::{self, LightValue, MaterialValue, UniformSource};
 use crate::ff::{BuiltIn, FixedState, ShaderProgram, TextureTarget, UniformValue};
 use crate::pipeline::{PipelineError, ShaderError, ShaderStage};
@@ -102,43 +103,17 @@ impl UserPrograms {
     }
 }
 
-fn compile(
-    gl: &glow::Context,
-    kind: u32,
-    stage: ShaderStage,
-    source: &str,
-    name: &str,
-) -> Result<glow::Shader, ShaderError> {
-    let err = |log: String| ShaderError {
-        stage,
-        key: name.to_string(),
-        glsl: source.to_string(),
-        log,
-    };
-    unsafe {
-        let shader = gl.create_shader(kind).map_err(err)?;
-        gl.shader_source(shader, source);
-        gl.compile_shader(shader);
-        if !gl.get_shader_compile_status(shader) {
-            let log = gl.get_shader_info_log(shader);
-            gl.delete_shader(shader);
-            return Err(err(log));
-        }
-        Ok(shader)
-    }
-}
-
 impl UserProgram {
     /// Compiles and links `p`, binds its samplers to their units and finds its built-ins.
     pub fn build(gl: &glow::Context, p: &ShaderProgram) -> Result<UserProgram, ShaderError> {
-        let vs = compile(
+        let vs = compile_stage(
             gl,
             glow::VERTEX_SHADER,
             ShaderStage::Vertex,
             &p.vertex,
             &p.name,
         )?;
-        let fs = compile(
+        let fs = compile_stage(
             gl,
             glow::FRAGMENT_SHADER,
             ShaderStage::Fragment,
