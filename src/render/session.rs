@@ -320,6 +320,7 @@ impl Session {
         let frame = self.frame();
         let capture = self.capture.take();
         frame?;
+        // Cannot fail: set four lines above, and `frame` only borrows it (`as_mut`).
         let capture = capture.expect("set above, and only taken here");
         let target = self.target.as_ref().ok_or(RenderError::Released)?;
         let frame = self.frames_ms.len() as u32;

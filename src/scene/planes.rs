@@ -19,7 +19,9 @@ use super::limits::MAX_IMAGE_SIZE;
 use super::raw::{RawObject, RawOccluder, RawOccluderTable, RawPlane};
 use super::types::{Object, OccluderPlane, Shape};
 use crate::ff::MAX_TEXTURE_UNITS;
-use crate::mesh::occluder::{occluder_texture, OccluderRecipe, OccluderSource, PlaneFrame};
+use crate::mesh::occluder::{
+    occluder_texture, silhouette, OccluderRecipe, OccluderSource, PlaneFrame,
+};
 use crate::mesh::AircraftLayout;
 use crate::shaders::F35_PLANES;
 use glam::Vec3;
@@ -83,9 +85,9 @@ pub(super) fn object_planes(
                         width: p.width,
                         height: p.height,
                     };
+                    // A silhouette is rasterised from the mesh: nothing to fail.
+                    let texture = silhouette(&object.mesh, &frame, &recipe);
                     let source = OccluderSource::Silhouette(recipe);
-                    let texture = occluder_texture(&object.mesh, &frame, &source, recipe.size)
-                        .expect("a silhouette is always made");
                     OccluderPlane {
                         frame,
                         source,

@@ -16,7 +16,7 @@ pub struct Program {
 
 /// Compiles one stage; a failure carries `label` (the program's key or name), the GLSL and
 /// the driver's log.
-pub(super) fn compile_stage(
+fn compile_stage(
     gl: &glow::Context,
     kind: u32,
     stage: ShaderStage,
@@ -43,6 +43,46 @@ pub(super) fn compile_stage(
     }
 }
 
+/// Compiles both stages and links them; a failure carries `label` (the program's key or
+/// name), the GLSL and the driver's log, and leaves no shader or program behind.
+pub(super) fn compile_and_link(
+    gl: &glow::Context,
+    vertex: &str,
+    fragment: &str,
+    label: &str,
+) -> Result<glow::Program, ShaderError> {
+    let vs = compile_stage(gl, glow::VERTEX_SHADER, ShaderStage::Vertex, vertex, label)?;
+    // SAFETY: plain GL calls on the current context, on the shaders just made.
+    unsafe {
+        let fs = compile_stage(
+            gl,
+            glow::FRAGMENT_SHADER,
+            ShaderStage::Fragment,
+            fragment,
+            label,
+        )
+        .inspect_err(|_| gl.delete_shader(vs))?;
+        let link_err = |log: String| ShaderError {
+            stage: ShaderStage::Link,
+            key: label.to_string(),
+            glsl: format!("{vertex}\n// ---- fragment ----\n{fragment}"),
+            log,
+        };
+        let program = gl.create_program().map_err(link_err)?;
+        gl.attach_shader(program, vs);
+        gl.attach_shader(program, fs);
+        gl.link_program(program);
+        gl.delete_shader(vs);
+        gl.delete_shader(fs);
+        if !gl.get_program_link_status(program) {
+            let log = gl.get_program_info_log(program);
+            gl.delete_program(program);
+            return Err(link_err(log));
+        }
+        Ok(program)
+    }
+}
+
 impl Program {
     /// Generates, compiles and links the program of `key`.
     pub fn build(gl: &glow::Context, key: &ShaderKey) -> Result<Program, ShaderError> {
@@ -51,39 +91,9 @@ impl Program {
             fragment,
             uniforms,
         } = shadergen::generate(key);
-        let label = format!("{key:?}");
-        let vs = compile_stage(
-            gl,
-            glow::VERTEX_SHADER,
-            ShaderStage::Vertex,
-            &vertex,
-            &label,
-        )?;
-        let fs = compile_stage(
-            gl,
-            glow::FRAGMENT_SHADER,
-            ShaderStage::Fragment,
-            &fragment,
-            &label,
-        )?;
+        let program = compile_and_link(gl, &vertex, &fragment, &format!("{key:?}"))?;
+        // SAFETY: uniform queries on the program just linked, on the current context.
         unsafe {
-            let link_err = |log: String| ShaderError {
-                stage: ShaderStage::Link,
-                key: format!("{key:?}"),
-                glsl: format!("{vertex}\n// ---- fragment ----\n{fragment}"),
-                log,
-            };
-            let program = gl.create_program().map_err(link_err)?;
-            gl.attach_shader(program, vs);
-            gl.attach_shader(program, fs);
-            gl.link_program(program);
-            gl.delete_shader(vs);
-            gl.delete_shader(fs);
-            if !gl.get_program_link_status(program) {
-                let log = gl.get_program_info_log(program);
-                gl.delete_program(program);
-                return Err(link_err(log));
-            }
             let uniforms = uniforms
                 .into_iter()
                 .map(|u| (u, gl.get_uniform_location(program, &u.name())))

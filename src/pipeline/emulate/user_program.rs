@@ -16,10 +16,10 @@ use std::sync::Arc;
 use glow::HasContext;
 
 use super::cache::ProgramCache;
-use super::program::compile_stage;
+use super::program::compile_and_link;
 use super::uniforms::{self, LightValue, MaterialValue, UniformSource};
 use crate::ff::{BuiltIn, FixedState, ShaderProgram, TextureTarget, UniformValue};
-use crate::pipeline::{PipelineError, ShaderError, ShaderStage};
+use crate::pipeline::{PipelineError, ShaderError};
 
 /// A linked plan program and the locations of the built-ins it declares.
 pub struct UserProgram {
@@ -106,39 +106,9 @@ impl UserPrograms {
 impl UserProgram {
     /// Compiles and links `p`, binds its samplers to their units and finds its built-ins.
     pub fn build(gl: &glow::Context, p: &ShaderProgram) -> Result<UserProgram, ShaderError> {
-        let vs = compile_stage(
-            gl,
-            glow::VERTEX_SHADER,
-            ShaderStage::Vertex,
-            &p.vertex,
-            &p.name,
-        )?;
-        let fs = compile_stage(
-            gl,
-            glow::FRAGMENT_SHADER,
-            ShaderStage::Fragment,
-            &p.fragment,
-            &p.name,
-        )
-        .inspect_err(|_| unsafe { gl.delete_shader(vs) })?;
+        let program = compile_and_link(gl, &p.vertex, &p.fragment, &p.name)?;
+        // SAFETY: uniform calls on the program just linked, on the current context.
         unsafe {
-            let link_err = |log: String| ShaderError {
-                stage: ShaderStage::Link,
-                key: p.name.clone(),
-                glsl: format!("{}\n// ---- fragment ----\n{}", p.vertex, p.fragment),
-                log,
-            };
-            let program = gl.create_program().map_err(link_err)?;
-            gl.attach_shader(program, vs);
-            gl.attach_shader(program, fs);
-            gl.link_program(program);
-            gl.delete_shader(vs);
-            gl.delete_shader(fs);
-            if !gl.get_program_link_status(program) {
-                let log = gl.get_program_info_log(program);
-                gl.delete_program(program);
-                return Err(link_err(log));
-            }
             gl.use_program(Some(program));
             for s in &p.samplers {
                 if let Some(loc) = gl.get_uniform_location(program, &s.name) {
