@@ -135,6 +135,17 @@ fn scene_for(id: TechniqueId) -> Result<Option<&'static str>, &'static str> {
     }
 }
 
+/// `scene_for` as command-line arguments; `None` (saying why) for a technique left out.
+fn scene_args(id: TechniqueId) -> Option<Vec<&'static str>> {
+    match scene_for(id) {
+        Ok(scene) => Some(scene.into_iter().collect()),
+        Err(why) => {
+            eprintln!("{}: left out: {why}", id.name());
+            None
+        }
+    }
+}
+
 /// Whether a technique runs on Mesa's fixed-function path; the reason when it does not
 /// (as `compare` skips it).
 fn native_skip(id: TechniqueId) -> Option<&'static str> {
@@ -169,12 +180,8 @@ fn corner(full: &RgbaImage) -> RgbaImage {
 fn the_script_replays_to_the_image_render_draws() {
     for id in TechniqueId::all() {
         let t = id.name();
-        let scene: Vec<&str> = match scene_for(id) {
-            Ok(scene) => scene.into_iter().collect(),
-            Err(why) => {
-                eprintln!("{t}: left out: {why}");
-                continue;
-            }
+        let Some(scene) = scene_args(id) else {
+            continue;
         };
         let script = explain_with(t, "script", &format!("{t}.script.c"), &scene);
         let text = std::fs::read_to_string(&script).unwrap();
@@ -217,12 +224,8 @@ fn the_script_replays_to_the_image_render_draws() {
 fn the_c_program_renders_on_mesa_and_on_the_layer_as_render_does() {
     for id in TechniqueId::all() {
         let t = id.name();
-        let scene: Vec<&str> = match scene_for(id) {
-            Ok(scene) => scene.into_iter().collect(),
-            Err(why) => {
-                eprintln!("{t}: left out: {why}");
-                continue;
-            }
+        let Some(scene) = scene_args(id) else {
+            continue;
         };
         let source = explain_with(t, "c", &format!("{t}.c"), &scene);
         let exe = work_dir().join(format!("{t}-program"));

@@ -435,19 +435,8 @@ fn slice_pass(
             Paint::Flat(Vec4::ONE),
         ));
     }
+    commands.extend(back_to_the_window());
     commands.extend([
-        Command::UseProgram(None),
-        Command::FramebufferTexture {
-            target: FramebufferTarget::Both,
-            attachment: AttachmentPoint::Color(0),
-            texture: None,
-            level: 0,
-            layer: 0,
-        },
-        Command::BindFramebuffer {
-            target: FramebufferTarget::Both,
-            name: 0,
-        },
         Command::Disable(Capability::Blend),
         Command::Enable(Capability::DepthTest),
     ]);
@@ -566,7 +555,18 @@ fn nbuffer_pass(settings: &OcclusionSettings) -> Pass {
             ]);
         }
     }
-    commands.extend([
+    commands.extend(back_to_the_window());
+    commands.extend([Command::Enable(Capability::DepthTest)]);
+    Pass {
+        name: "prefilter",
+        commands,
+    }
+}
+
+/// After a pass into the occlusion textures: fixed function again, colour attachment 0
+/// detached and the window's framebuffer (0) bound.
+fn back_to_the_window() -> [Command; 3] {
+    [
         Command::UseProgram(None),
         Command::FramebufferTexture {
             target: FramebufferTarget::Both,
@@ -579,12 +579,7 @@ fn nbuffer_pass(settings: &OcclusionSettings) -> Pass {
             target: FramebufferTarget::Both,
             name: 0,
         },
-        Command::Enable(Capability::DepthTest),
-    ]);
-    Pass {
-        name: "prefilter",
-        commands,
-    }
+    ]
 }
 
 /// The prefilter of §3.2 on each occlusion texture.
