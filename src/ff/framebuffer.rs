@@ -270,6 +270,7 @@ pub fn texture_bits(f: TexFormat) -> Bits {
         TexFormat::DepthComponent16 => bits(0, 0, 0, 0, 16, 0),
         TexFormat::DepthComponent24 => bits(0, 0, 0, 0, 24, 0),
         TexFormat::DepthComponent32F => bits(0, 0, 0, 0, 32, 0),
+        TexFormat::Rgba32F => bits(32, 32, 32, 32, 0, 0),
     }
 }
 

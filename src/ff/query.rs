@@ -815,6 +815,7 @@ fn bits(f: TexFormat, c: Component) -> i32 {
         (TexFormat::DepthComponent16, C::Depth) => 16,
         (TexFormat::DepthComponent24, C::Depth) => 24,
         (TexFormat::DepthComponent32F, C::Depth) => 32,
+        (TexFormat::Rgba32F, C::Red | C::Green | C::Blue | C::Alpha) => 32,
         _ => 0,
     }
 }

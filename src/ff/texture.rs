@@ -72,6 +72,10 @@ pub enum TexFormat {
     DepthComponent16,
     DepthComponent24,
     DepthComponent32F,
+    /// RGBA in 32-bit floats, unclamped (ARB_texture_float's RGBA32F). Only the
+    /// techniques' own programs make it (the summed-area tables of `occlusion-textures`);
+    /// the script dialect and the C library do not take it.
+    Rgba32F,
 }
 
 /// The base internal format, which decides how texenv treats a texel (GL 1.5 Table 3.23).
@@ -89,7 +93,7 @@ pub enum BaseFormat {
 impl TexFormat {
     pub fn base(self) -> BaseFormat {
         match self {
-            TexFormat::Rgba8 => BaseFormat::Rgba,
+            TexFormat::Rgba8 | TexFormat::Rgba32F => BaseFormat::Rgba,
             TexFormat::Rgb8 => BaseFormat::Rgb,
             TexFormat::Luminance8 => BaseFormat::Luminance,
             TexFormat::Intensity8 => BaseFormat::Intensity,

@@ -51,11 +51,12 @@ const HISTORICAL: &[HistoricalShader] = &[
                  Texas A&M University, 2006: Appendix B, Example Fragment Shader Source (Cg)",
     },
     HistoricalShader {
-        name: "eisemann/nbuffer.vert",
+        name: "eisemann/window.vert",
         stage: Stage::Vertex,
-        source: include_str!("../../shaders/eisemann/nbuffer.vert"),
+        source: include_str!("../../shaders/eisemann/window.vert"),
         origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
-                 Computer Graphics Forum 27(1), 2008: §3.2, a full-window pass per N-buffer level",
+                 Computer Graphics Forum 27(1), 2008: §3.2, a full-window pass per N-buffer level \
+                 or summed-area-table step",
     },
     HistoricalShader {
         name: "eisemann/nbuffer.frag",
@@ -63,6 +64,14 @@ const HISTORICAL: &[HistoricalShader] = &[
         source: include_str!("../../shaders/eisemann/nbuffer.frag"),
         origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
                  Computer Graphics Forum 27(1), 2008: §3.2, N-buffers' dyadic construction",
+    },
+    HistoricalShader {
+        name: "eisemann/sat.frag",
+        stage: Stage::Fragment,
+        source: include_str!("../../shaders/eisemann/sat.frag"),
+        origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
+                 Computer Graphics Forum 27(1), 2008: §3.2, summed-area tables [Cro84] built by \
+                 recursive doubling [HSC*05]",
     },
     HistoricalShader {
         name: "eisemann/slices.vert",

@@ -61,6 +61,8 @@ pub const TECHNIQUE: Technique = Technique {
 pub const OCCLUSION_TEXTURE_BASE: u32 = 96;
 /// The texture names of the N-buffer levels (`nbuffer_texture`).
 pub const NBUFFER_TEXTURE_BASE: u32 = 112;
+/// The texture names of the summed-area tables (`sat_texture`).
+pub const SAT_TEXTURE_BASE: u32 = 120;
 /// The framebuffer object the slices are drawn into.
 pub const SLICE_FRAMEBUFFER: u32 = 96;
 
@@ -76,6 +78,23 @@ impl OcclusionSettings {
     /// N-buffer levels: box sizes 2^0 … 2^(levels − 1) = the texture's edge.
     pub fn levels(&self) -> u32 {
         self.size.max(1).ilog2() + 1
+    }
+
+    /// The summed-area table's doubling steps per axis: ⌈log2(size)⌉, so that the last
+    /// step's reach 2^steps covers the whole row.
+    pub fn sat_steps_per_axis(&self) -> u32 {
+        self.size.max(1).next_power_of_two().ilog2()
+    }
+
+    /// The summed-area table's doubling steps: along x, then along y.
+    pub fn sat_steps(&self) -> u32 {
+        2 * self.sat_steps_per_axis()
+    }
+
+    /// The parity of the texture the last doubling step writes (a table of one texel,
+    /// no steps, is the occlusion texture copied by a first step of offset 0).
+    pub fn sat_parity(&self) -> u32 {
+        self.sat_steps().max(1).saturating_sub(1) % 2
     }
 }
 
@@ -255,12 +274,21 @@ fn prefilter_define(p: Prefilter) -> u32 {
 
 /// What the visibility program samples: (sampler, unit, texture name). Mipmaps: the
 /// occlusion texture k on unit k. N-buffers: texture k's even levels on unit k, its odd
-/// levels on unit 4 + k.
+/// levels on unit 4 + k. Summed-area tables: texture k's table on unit k.
 fn sampled_textures(settings: &OcclusionSettings) -> Vec<(String, u8, u32)> {
     let textures = settings.textures();
     match settings.prefilter {
-        Prefilter::Mipmap | Prefilter::Sat => (0..textures)
+        Prefilter::Mipmap => (0..textures)
             .map(|k| (format!("occlusion{k}"), k as u8, OCCLUSION_TEXTURE_BASE + k))
+            .collect(),
+        Prefilter::Sat => (0..textures)
+            .map(|k| {
+                (
+                    format!("sat{k}"),
+                    k as u8,
+                    sat_texture(k, settings.sat_parity()),
+                )
+            })
             .collect(),
         Prefilter::Nbuffers => (0..textures)
             .flat_map(|k| {
@@ -278,6 +306,12 @@ pub fn nbuffer_texture(k: u32, parity: u32) -> u32 {
     NBUFFER_TEXTURE_BASE + 2 * k + parity
 }
 
+/// The summed-area-table texture of occlusion texture k written by the doubling steps of
+/// parity `parity` (step i writes parity i mod 2, reading the other).
+pub fn sat_texture(k: u32, parity: u32) -> u32 {
+    SAT_TEXTURE_BASE + 2 * k + parity
+}
+
 /// The occlusion area light, or [`TechniqueError::NoAreaLight`] naming this technique.
 fn area_light(scene: &Scene) -> Result<AreaRectangle, TechniqueError> {
     AreaRectangle::of(scene).map_err(|e| match e {
@@ -293,26 +327,23 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
     check_light_count(scene)?;
     let area = area_light(scene)?;
     let settings = OcclusionSettings::of(scene);
-    if settings.prefilter == Prefilter::Sat {
-        return Err(TechniqueError::PrefilterNotBuilt {
-            technique: ID,
-            prefilter: "sat",
-        });
-    }
     let view = SliceView::of(scene, &area, settings.slices);
     let mut setup = Vec::new();
     for k in 0..settings.textures() {
         setup.extend(texture_setup(k, &settings));
-        if settings.prefilter == Prefilter::Nbuffers {
-            for parity in 0..2 {
-                setup.extend(nbuffer_setup(k, parity, &settings));
+        for parity in 0..2 {
+            match settings.prefilter {
+                Prefilter::Mipmap => {}
+                Prefilter::Nbuffers => setup.extend(nbuffer_setup(k, parity, &settings)),
+                Prefilter::Sat => setup.extend(sat_setup(k, parity, &settings)),
             }
         }
     }
     setup.push(Command::ActiveTexture(0));
     let filter = match settings.prefilter {
-        Prefilter::Mipmap | Prefilter::Sat => filter_pass(&settings),
+        Prefilter::Mipmap => filter_pass(&settings),
         Prefilter::Nbuffers => nbuffer_pass(&settings),
+        Prefilter::Sat => sat_pass(&settings),
     };
     let maps = vec![slice_pass(scene, prepared, &settings, &view), filter];
     let passes = eye_passes(scene, prepared, &settings, &view, Look::Shaded);
@@ -341,13 +372,14 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
 }
 
 /// Occlusion texture k: RGBA8 of size², LINEAR_MIPMAP_LINEAR for the mipmap prefilter
-/// (NEAREST when N-buffers read it texel by texel: complete without mipmaps),
+/// (NEAREST when N-buffers or the summed-area table read it texel by texel: complete
+/// without mipmaps, as texelFetch needs),
 /// CLAMP_TO_BORDER with a border of 0 (no occluder outside the window).
 fn texture_setup(k: u32, settings: &OcclusionSettings) -> Vec<Command> {
     let size = settings.size;
     let min_filter = match settings.prefilter {
-        Prefilter::Mipmap | Prefilter::Sat => Filter::LinearMipmapLinear,
-        Prefilter::Nbuffers => Filter::Nearest,
+        Prefilter::Mipmap => Filter::LinearMipmapLinear,
+        Prefilter::Nbuffers | Prefilter::Sat => Filter::Nearest,
     };
     let param = |param| Command::TexParameter {
         target: TextureTarget::Texture2D,
@@ -497,7 +529,7 @@ fn window_quad() -> Arc<crate::ff::Geometry> {
 fn nbuffer_pass(settings: &OcclusionSettings) -> Pass {
     let program = Arc::new(ShaderProgram {
         name: "eisemann/nbuffer".into(),
-        vertex: shader("eisemann/nbuffer.vert").into(),
+        vertex: shader("eisemann/window.vert").into(),
         fragment: shader("eisemann/nbuffer.frag").into(),
         samplers: vec![SamplerBinding {
             name: "source".into(),
@@ -551,6 +583,113 @@ fn nbuffer_pass(settings: &OcclusionSettings) -> Pass {
                 uniform("source_row", UniformValue::Int(source_row)),
                 uniform("target_row", UniformValue::Int(target_row)),
                 uniform("half_box", UniformValue::Int(half_box)),
+                Command::Draw(quad.clone()),
+            ]);
+        }
+    }
+    commands.extend(back_to_the_window());
+    commands.extend([Command::Enable(Capability::DepthTest)]);
+    Pass {
+        name: "prefilter",
+        commands,
+    }
+}
+
+/// Summed-area table k of parity `parity`: RGBA32F of size² (sums of up to size² binary
+/// texels: integers, exact in a float up to 2^24, i.e. maps up to 4096²; larger ones round
+/// the sums far from the origin), LINEAR (the look-up interpolates
+/// the table between texel corners, see visibility.frag), CLAMP_TO_BORDER with a border of
+/// 0 (the sum before the first texel).
+pub fn sat_setup(k: u32, parity: u32, settings: &OcclusionSettings) -> Vec<Command> {
+    let param = |param| Command::TexParameter {
+        target: TextureTarget::Texture2D,
+        param,
+    };
+    vec![
+        Command::BindTexture {
+            target: TextureTarget::Texture2D,
+            name: sat_texture(k, parity),
+        },
+        Command::TexImage(TexImage {
+            target: TextureTarget::Texture2D,
+            level: 0,
+            internal_format: TexFormat::Rgba32F,
+            requested: None,
+            width: settings.size as i32,
+            height: settings.size as i32,
+            depth: 1,
+            border: 0,
+            format: PixelFormat::Rgba,
+            ty: PixelType::Float,
+            data: TexData::Null,
+        }),
+        param(TexParam::MinFilter(Filter::Linear)),
+        param(TexParam::MagFilter(Filter::Linear)),
+        param(TexParam::WrapS(Wrap::ClampToBorder)),
+        param(TexParam::WrapT(Wrap::ClampToBorder)),
+        param(TexParam::BorderColor(Vec4::ZERO)),
+    ]
+}
+
+/// The summed-area tables of §3.2 by recursive doubling (eisemann/sat): step i < ⌈log2 n⌉
+/// adds the texel 2^i to the left, step ⌈log2 n⌉ + i the texel 2^i below; step 0 reads the
+/// occlusion texture, step i the table of parity (i − 1) mod 2, and writes parity i mod 2.
+pub fn sat_pass(settings: &OcclusionSettings) -> Pass {
+    let program = Arc::new(ShaderProgram {
+        name: "eisemann/sat".into(),
+        vertex: shader("eisemann/window.vert").into(),
+        fragment: shader("eisemann/sat.frag").into(),
+        samplers: vec![SamplerBinding {
+            name: "source".into(),
+            unit: 0,
+        }],
+    });
+    let size = settings.size as i32;
+    let quad = window_quad();
+    let per_axis = settings.sat_steps_per_axis();
+    let mut commands = vec![
+        Command::BindFramebuffer {
+            target: FramebufferTarget::Both,
+            name: SLICE_FRAMEBUFFER,
+        },
+        Command::Viewport(Viewport {
+            x: 0,
+            y: 0,
+            width: size,
+            height: size,
+        }),
+        Command::Disable(Capability::DepthTest),
+        Command::Disable(Capability::Blend),
+        Command::UseProgram(Some(program)),
+        Command::ActiveTexture(0),
+    ];
+    for k in 0..settings.textures() {
+        for i in 0..settings.sat_steps().max(1) {
+            let source = match i {
+                0 => OCCLUSION_TEXTURE_BASE + k,
+                _ => sat_texture(k, (i - 1) % 2),
+            };
+            // A one-texel table is the texel: one step of offset 0 would double it, so
+            // that step adds nothing (the offset points past the texture).
+            let (offset_x, offset_y) = match (settings.sat_steps(), i < per_axis) {
+                (0, _) => (size, 0),
+                (_, true) => (1 << i, 0),
+                (_, false) => (0, 1 << (i - per_axis)),
+            };
+            commands.extend([
+                Command::FramebufferTexture {
+                    target: FramebufferTarget::Both,
+                    attachment: AttachmentPoint::Color(0),
+                    texture: Some((TextureTarget::Texture2D, sat_texture(k, i % 2))),
+                    level: 0,
+                    layer: 0,
+                },
+                Command::BindTexture {
+                    target: TextureTarget::Texture2D,
+                    name: source,
+                },
+                uniform("offset_x", UniformValue::Int(offset_x)),
+                uniform("offset_y", UniformValue::Int(offset_y)),
                 Command::Draw(quad.clone()),
             ]);
         }
@@ -822,10 +961,47 @@ mod tests {
             err.contains("occlusion-textures") && err.contains("a spot light"),
             "{err}"
         );
-        let mut scene = area_scene();
-        scene.shadow.prefilter = Prefilter::Sat;
-        let err = plan(&scene, &prepared).unwrap_err().to_string();
-        assert!(err.contains("prefilter = \"sat\""), "{err}");
+    }
+
+    #[test]
+    fn the_summed_area_table_takes_two_doubling_steps_per_power_of_two_and_ends_sampled() {
+        // (map size, steps per axis): ⌈log2 n⌉, so that the last step reaches the row's end.
+        for (size, per_axis) in [(1, 0), (2, 1), (256, 8), (300, 9), (512, 9)] {
+            let mut scene = area_scene();
+            scene.shadow.prefilter = Prefilter::Sat;
+            scene.shadow.map_size = size;
+            scene.shadow.slices = 8;
+            let settings = OcclusionSettings::of(&scene);
+            assert_eq!(settings.sat_steps_per_axis(), per_axis, "{size}");
+            let prepared = Prepared::new(&scene);
+            let plan = plan(&scene, &prepared).expect("plans");
+            let draws = |pass: &Pass| {
+                pass.commands
+                    .iter()
+                    .filter(|c| matches!(c, Command::Draw(_)))
+                    .count() as u32
+            };
+            // Two textures of four slices, each its steps (one copy step for one texel).
+            assert_eq!(draws(&plan.maps[1]), 2 * (2 * per_axis).max(1), "{size}");
+            // The look-up samples the texture the last step wrote.
+            let written: Vec<u32> = plan.maps[1]
+                .commands
+                .iter()
+                .filter_map(|c| match c {
+                    Command::FramebufferTexture {
+                        texture: Some((_, name)),
+                        ..
+                    } => Some(*name),
+                    _ => None,
+                })
+                .collect();
+            let sampled: Vec<u32> = sampled_textures(&settings)
+                .into_iter()
+                .map(|(_, _, name)| name)
+                .collect();
+            let steps = written.len() / 2;
+            assert_eq!(sampled, vec![written[steps - 1], written[2 * steps - 1]]);
+        }
     }
 
     #[test]

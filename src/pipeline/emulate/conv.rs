@@ -35,6 +35,7 @@ pub fn tex_format(f: TexFormat) -> (u32, [u32; 4]) {
         TexFormat::DepthComponent16 => (glow::DEPTH_COMPONENT16, RGBA),
         TexFormat::DepthComponent24 => (glow::DEPTH_COMPONENT24, RGBA),
         TexFormat::DepthComponent32F => (glow::DEPTH_COMPONENT32F, RGBA),
+        TexFormat::Rgba32F => (glow::RGBA32F, RGBA),
     }
 }
 
