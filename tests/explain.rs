@@ -123,7 +123,7 @@ fn assert_drawn(name: &str, img: &RgbaImage) {
 /// `occluder-planes` needs declared shadow planes, which the F-35 scene has.
 fn scene_for(id: TechniqueId) -> Result<Option<&'static str>, &'static str> {
     match id {
-        TechniqueId::Accumulate => Err("needs an area light; tests/soft_shadows.rs"),
+        TechniqueId::Accumulate => Err("needs an area light or a sun; tests/soft_shadows.rs"),
         TechniqueId::OcclusionTextures => {
             Err("shader programs, no GL 1.x form; tests/occlusion_textures.rs")
         }

@@ -202,7 +202,7 @@ fn the_mask_is_the_cpu_model_of_the_planes_for_directional_and_point_lights() {
         let scene = ground_under_the_f35(light);
         let l = scene.lights[0];
         let towards = |p: Vec3| match l.kind {
-            LightKind::Directional { direction } => -direction.normalize(),
+            LightKind::Directional { direction, .. } => -direction.normalize(),
             _ => l.view.eye - p,
         };
         let size = scene.image.width;

@@ -7,6 +7,8 @@
 // (x, y, z) lands at x·cop / (half_window.x · (z + cop)), which gl_Position's w = z + cop
 // divides. Every occluder of the scene is thus "X-rayed" from the same point, whatever its
 // slice.
+// SUN 1 (§3.5, a source at infinity): the frame's z runs along the sun's light and the
+// view is orthographic, (x, y) / half_window; `cop` is unused.
 layout(location = 0) in vec4 position;
 
 uniform mat4 ff_modelview;
@@ -20,5 +22,9 @@ out float depth;
 void main() {
     vec4 q = ff_modelview * position;
     depth = q.z / q.w;
+#if SUN
+    gl_Position = vec4(q.xy / (half_window * q.w), 0.0, 1.0);
+#else
     gl_Position = vec4(q.xy * cop / half_window, 0.0, q.z + cop * q.w);
+#endif
 }

@@ -23,6 +23,12 @@
 // The visibility is multiplied by the fraction of the light in front of P's plane
 // (the truth's "facing" test, exact for the rectangle), P's plane the triangle's own
 // (from the screen-space derivatives), turned towards the viewer.
+// SUN 1 (§3.5, "sunlight"): the frame's z runs along the sun's light (the light is at
+// z = −∞), the slicing view is orthographic, and from P the sun is a cone of half-angle θ:
+// at a slice Δz closer to the sun it is the disc of radius R = Δz · tan θ around P's own
+// (x, y), read as a Gaussian of deviation R/2 from the Gaussian pyramid in the occlusion
+// textures' mipmap levels (gauss.frag: level l has deviation ≈ 0.645 · 2^l texels, so
+// lod = log2(0.775 · R)). The facing term is the part of the sun's disc above P's plane.
 // LOOK 1 (mask): the visibility as grey; LOOK 0 (shaded): light 0's diffuse term times
 // the visibility, added over the fixed-function dim pass.
 
@@ -70,6 +76,9 @@ uniform float slice_depth;  // Δ
 uniform float texels;       // occlusion texture edge, in texels
 uniform float receives;     // 1: the object takes shadows; 0: only the facing term
 uniform vec4 camera_light;  // the camera's position in the light's frame (w = 1)
+#if SUN
+uniform float sun_tan;      // tan θ: the sun's disc radius per unit of distance
+#endif
 #if LOOK == 0
 uniform vec4 ff_light0_position;
 uniform vec4 ff_light0_diffuse;
@@ -189,6 +198,7 @@ float slice_occlusion(int j, vec2 uv, vec2 box) {
 }
 #endif
 
+#if !SUN
 // The fraction of the light rectangle where n · (q − p) > 0: the rectangle clipped by the
 // plane (Sutherland–Hodgman against f(x, y) = n.x·x + n.y·y − n·p), its area by the
 // shoelace formula, over the rectangle's.
@@ -218,6 +228,23 @@ float facing_fraction(vec3 p, vec3 n) {
     }
     return clamp(0.5 * abs(area) / (4.0 * light_half.x * light_half.y), 0.0, 1.0);
 }
+#endif
+
+#if SUN
+// The fraction of the sun's disc where n · ω > 0. In the plane across the cone's axis
+// w = (0, 0, −1) the disc has radius tan θ and the plane n cuts it along a line at signed
+// distance h = (n · w) / (|n − (n · w) w| · tan θ) disc radii from the centre; the part on
+// the centre's side is 1 − (acos h − h √(1 − h²)) / π (the circular segment's area).
+float facing_fraction(vec3 p, vec3 n) {
+    float along = -n.z;
+    float across = length(n.xy);
+    if (across <= 1e-6) {
+        return along > 0.0 ? 1.0 : 0.0;
+    }
+    float h = clamp(along / (across * sun_tan), -1.0, 1.0);
+    return clamp(1.0 - (acos(h) - h * sqrt(1.0 - h * h)) / 3.14159265, 0.0, 1.0);
+}
+#endif
 
 float visibility(vec3 p) {
     float product = 1.0;  // equation 5
@@ -226,6 +253,15 @@ float visibility(vec3 p) {
     for (int j = 0; j < SLICES; ++j) {
         float z_top = slice_near + float(j) * slice_depth;
         float weight = clamp((p.z - (z_top + slice_depth)) / slice_depth, 0.0, 1.0);
+#if SUN
+        if (weight <= 0.0) {
+            break; // this slice and the ones below it are not between P and the sun
+        }
+        float z_s = z_top + 0.5 * slice_depth;
+        vec2 uv = 0.5 + 0.5 * p.xy / half_window;   // the rays towards the sun are parallel
+        float radius = (p.z - z_s) * sun_tan * texels / (2.0 * half_window.x); // R, texels
+        vec2 box = vec2(0.775 * radius);            // lod = log2(0.775 R), see the header
+#else
         if (weight <= 0.0 || p.z <= 0.0) {
             break; // this slice and the ones below it are not between P and the light
         }
@@ -235,6 +271,7 @@ float visibility(vec3 p) {
         vec2 to_texture = cop / ((z_s + cop) * half_window); // plane → [−1, 1] of the window
         vec2 uv = 0.5 + 0.5 * centre * to_texture;
         vec2 box = light_half * t * to_texture * texels;     // box size in texels
+#endif
         float occluded = weight * slice_occlusion(j, uv, box);
         product *= 1.0 - occluded;
         sum += occluded;

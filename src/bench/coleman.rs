@@ -1,10 +1,12 @@
 //! `bench --only coleman`: Coleman's draw-time experiments (thesis, §6) repeated on the
 //! layer. The F-35 scene (`assets/f35.toml`, embedded) with its aircraft replaced by 1,
 //! 10, 50, 100 and 200 instances placed at random (a fixed seed: every run draws the same
-//! fleet), drawn by `occluder-planes` (the fixed-function form: per instance, its three
-//! planes' texgen), `depth-compare` and `projective` on the emulated path; and the same
-//! fleets scaled ×10 (the aircraft cover the image: fill-limited) and ×1/100 (a few pixels
-//! each: vertex-limited).
+//! fleet), drawn by `occluder-planes` in its three forms — fixed function (per instance,
+//! its three planes' texgen), the generated GLSL program (`program = "generic"`) and the
+//! thesis's own shaders (`"coleman"`, which hard-code one aircraft's planes: the
+//! one-aircraft rows only) — beside `depth-compare` and `projective`, on the emulated path;
+//! and the same fleets scaled ×10 (the aircraft cover the image: fill-limited) and ×1/100
+//! (a few pixels each: vertex-limited).
 //!
 //! Every session of a scale is made first and their frames are interleaved round-robin,
 //! so machine noise hits each alike; the first frame (maps, uploads, program compiles) is
@@ -16,9 +18,9 @@
 //! [3, 9] at every scale (×10 aircraft overlap and fill the image), turned by a uniform yaw and a bank within ±20°, from a 32-bit LCG
 //! (Numerical Recipes' constants) seeded with `SEED`.
 
-use crate::scene::{Object, Rotation, Scene, SceneError};
+use crate::scene::{Object, OccluderProgram, Rotation, Scene, SceneError};
 use crate::stats::Summary;
-use crate::vocab::{PipelineKind, TechniqueId};
+use crate::vocab::{Named, PipelineKind, TechniqueId};
 use glam::Vec3;
 use serde::Serialize;
 use std::path::Path;
@@ -27,11 +29,50 @@ use crate::render::{ImageSize, RemakeMaps, RenderError, RenderOptions, Session};
 
 /// The fleet sizes, as in the thesis.
 pub const INSTANCES: [usize; 5] = [1, 10, 50, 100, 200];
-/// The techniques compared.
-pub const TECHNIQUES: [TechniqueId; 3] = [
-    TechniqueId::OccluderPlanes,
-    TechniqueId::DepthCompare,
-    TechniqueId::Projective,
+/// One column of the tables: a technique, and for `occluder-planes` its program form.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Entrant {
+    pub technique: TechniqueId,
+    pub program: Option<OccluderProgram>,
+}
+
+impl Entrant {
+    const fn plain(technique: TechniqueId) -> Entrant {
+        Entrant {
+            technique,
+            program: None,
+        }
+    }
+
+    const fn planes(program: OccluderProgram) -> Entrant {
+        Entrant {
+            technique: TechniqueId::OccluderPlanes,
+            program: Some(program),
+        }
+    }
+
+    /// The column's name: the technique's, with the form's after a slash.
+    pub fn label(self) -> String {
+        match self.program {
+            Some(p) => format!("{}/{}", self.technique, p.name()),
+            None => self.technique.to_string(),
+        }
+    }
+
+    /// Whether the entrant runs `instances` aircraft: the thesis's shaders hard-code the
+    /// planes of one.
+    pub fn takes(self, instances: usize) -> bool {
+        self.program != Some(OccluderProgram::Coleman) || instances == 1
+    }
+}
+
+/// The columns compared.
+pub const ENTRANTS: [Entrant; 5] = [
+    Entrant::planes(OccluderProgram::FixedFunction),
+    Entrant::planes(OccluderProgram::Generic),
+    Entrant::planes(OccluderProgram::Coleman),
+    Entrant::plain(TechniqueId::DepthCompare),
+    Entrant::plain(TechniqueId::Projective),
 ];
 /// The aircraft's scale against the scene file's: as given, fill-limited, vertex-limited.
 pub const SCALES: [f32; 3] = [1.0, 10.0, 0.01];
@@ -57,6 +98,8 @@ pub enum ColemanError {
 #[derive(Debug, Clone, Serialize)]
 pub struct ColemanRow {
     pub technique: TechniqueId,
+    /// `occluder-planes`' form (`fixed-function`, `generic`, `coleman`); none for the others.
+    pub program: Option<&'static str>,
     pub instances: usize,
     pub scale: f32,
     pub triangles: usize,
@@ -68,6 +111,7 @@ pub struct ColemanRow {
 #[derive(Debug, Clone, Serialize)]
 pub struct ColemanSkipped {
     pub technique: TechniqueId,
+    pub program: Option<&'static str>,
     pub instances: usize,
     pub scale: f32,
     pub reason: String,
@@ -122,9 +166,12 @@ pub fn measure(
     for scale in SCALES {
         let mut lanes = Vec::new();
         for instances in INSTANCES {
-            let scene = fleet(instances, scale)?;
+            let mut scene = fleet(instances, scale)?;
             let triangles = scene.objects.iter().map(|o| o.mesh.triangle_count()).sum();
-            for technique in TECHNIQUES {
+            for entrant in ENTRANTS.into_iter().filter(|e| e.takes(instances)) {
+                let technique = entrant.technique;
+                let program = entrant.program.map(|p| p.name());
+                scene.shadow.occluder_program = entrant.program.unwrap_or_default();
                 let options = RenderOptions {
                     pipeline: PipelineKind::Emulate,
                     technique: Some(technique),
@@ -136,9 +183,12 @@ pub fn measure(
                     ..RenderOptions::default()
                 };
                 match Session::new(&scene, &options) {
-                    Ok(session) => lanes.push((technique, instances, triangles, session, vec![])),
+                    Ok(session) => {
+                        lanes.push((entrant, instances, triangles, session, vec![]));
+                    }
                     Err(e) => skipped.push(ColemanSkipped {
                         technique,
+                        program,
                         instances,
                         scale,
                         reason: e.to_string(),
@@ -148,12 +198,13 @@ pub fn measure(
         }
         for _ in 0..frames {
             let mut failed = Vec::new();
-            for (i, (technique, instances, _, session, ms)) in lanes.iter_mut().enumerate() {
+            for (i, (entrant, instances, _, session, ms)) in lanes.iter_mut().enumerate() {
                 match session.frame() {
                     Ok(t) => ms.push(t),
                     Err(e) => {
                         skipped.push(ColemanSkipped {
-                            technique: *technique,
+                            technique: entrant.technique,
+                            program: entrant.program.map(|p| p.name()),
                             instances: *instances,
                             scale,
                             reason: e.to_string(),
@@ -167,12 +218,13 @@ pub fn measure(
             }
             tick();
         }
-        for (technique, instances, triangles, _, ms) in lanes {
+        for (entrant, instances, triangles, _, ms) in lanes {
             let (Some(&cold_ms), Some(frame)) = (ms.first(), Summary::of(&ms[1..])) else {
                 continue;
             };
             rows.push(ColemanRow {
-                technique,
+                technique: entrant.technique,
+                program: entrant.program.map(|p| p.name()),
                 instances,
                 scale,
                 triangles,

@@ -4,12 +4,16 @@
 //! frame through the emulated and the native path, interleaved), `truth` and `techniques`
 //! (every shadow technique on both paths, split into light pass, readback + upload and eye
 //! passes), `abi` (an OSMesa C program on the layer's C library against Mesa's own,
-//! interleaved) and `coleman` (Coleman's draw-time experiments with fleets of F-35s).
+//! interleaved), `coleman` (Coleman's draw-time experiments with fleets of F-35s) and
+//! `soft` (Eisemann & Décoret's claims: occlusion textures and the accumulation buffer,
+//! time and visibility error against slices, texture size, prefilter, combination rule,
+//! geometry and light size).
 
 pub mod abi;
 pub mod coleman;
 pub mod context;
 pub mod pipeline;
+pub mod soft;
 pub mod techniques;
 
 /// Which measurements to run.
@@ -29,6 +33,10 @@ pub enum BenchGroup {
     /// Coleman's experiments: fleets of 1 to 200 F-35s, occluder planes against shadow
     /// maps and projective shadows, at three scales.
     Coleman,
+    /// Eisemann & Décoret's claims: `occlusion-textures` and `accumulate`, time and
+    /// visibility error against slices, texture size, prefilter, combination rule,
+    /// geometry count and light size.
+    Soft,
 }
 
 impl crate::vocab::Named for BenchGroup {
@@ -39,6 +47,7 @@ impl crate::vocab::Named for BenchGroup {
         ("techniques", BenchGroup::Techniques),
         ("abi", BenchGroup::Abi),
         ("coleman", BenchGroup::Coleman),
+        ("soft", BenchGroup::Soft),
     ];
 
     fn help(self) -> &'static str {
@@ -59,17 +68,23 @@ impl crate::vocab::Named for BenchGroup {
                 "Coleman's experiments: 1 to 200 F-35s, occluder planes against depth-compare \
                  and projective, at three scales"
             }
+            BenchGroup::Soft => {
+                "Eisemann & Décoret's claims: occlusion textures and accumulate, time and \
+                 visibility RMSE against slices, texture size, prefilter, combine rule, \
+                 geometry and light size"
+            }
         }
     }
 }
 
 impl BenchGroup {
-    pub const ALL: [BenchGroup; 6] = [
+    pub const ALL: [BenchGroup; 7] = [
         BenchGroup::Context,
         BenchGroup::Pipeline,
         BenchGroup::Truth,
         BenchGroup::Techniques,
         BenchGroup::Abi,
         BenchGroup::Coleman,
+        BenchGroup::Soft,
     ];
 }

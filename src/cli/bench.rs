@@ -46,6 +46,7 @@ pub fn run(only: Option<BenchGroup>, repeats: usize, json: bool) -> Result<(), C
             BenchGroup::Techniques => run_techniques(repeats, json)?,
             BenchGroup::Abi => run_abi(repeats, json, only.is_none())?,
             BenchGroup::Coleman => run_coleman(repeats, json)?,
+            BenchGroup::Soft => run_soft(repeats, json)?,
         }
     }
     Ok(())
@@ -211,7 +212,7 @@ fn run_truth(runs: usize, json: bool) -> Result<(), CliError> {
 }
 
 fn run_coleman(repeats: usize, json: bool) -> Result<(), CliError> {
-    use fixedfunc::bench::coleman::{self, INSTANCES, SCALES, SPREAD, TECHNIQUES};
+    use fixedfunc::bench::coleman::{self, ENTRANTS, INSTANCES, SCALES, SPREAD};
     let rounds = SCALES.len() as u64 * (repeats.max(1) as u64 + 1);
     let mut bar = CountBar::new("bench coleman", rounds, "rounds");
     bar.set_what("fleets of F-35s, interleaved".into());
@@ -227,22 +228,23 @@ fn run_coleman(repeats: usize, json: bool) -> Result<(), CliError> {
         coleman::SEED,
         repeats.max(1)
     )?;
-    outln!(
-        "{:<7} {:>9} {:>10} {:>30} {:>30} {:>30}",
-        "scale",
-        "aircraft",
-        "triangles",
-        TECHNIQUES[0].to_string(),
-        TECHNIQUES[1].to_string(),
-        TECHNIQUES[2].to_string()
-    )?;
+    let mut header = format!("{:<7} {:>9} {:>10}", "scale", "aircraft", "triangles");
+    for e in ENTRANTS {
+        header.push_str(&format!(" {:>30}", e.label()));
+    }
+    outln!("{header}")?;
     for scale in SCALES {
         for instances in INSTANCES {
-            let cells: Vec<String> = TECHNIQUES
+            let cells: Vec<String> = ENTRANTS
                 .iter()
-                .map(|&t| {
+                .map(|e| {
                     rows.iter()
-                        .find(|r| r.technique == t && r.instances == instances && r.scale == scale)
+                        .find(|r| {
+                            r.technique == e.technique
+                                && r.program == e.program.map(|p| p.name())
+                                && r.instances == instances
+                                && r.scale == scale
+                        })
                         .map_or("—".to_string(), |r| {
                             format!(
                                 "{:.2} [{:.2}–{:.2}]",
@@ -255,27 +257,154 @@ fn run_coleman(repeats: usize, json: bool) -> Result<(), CliError> {
                 .iter()
                 .find(|r| r.instances == instances && r.scale == scale)
                 .map_or(0, |r| r.triangles);
-            outln!(
-                "×{:<6} {:>9} {:>10} {:>30} {:>30} {:>30}",
-                scale,
-                instances,
-                triangles,
-                cells[0],
-                cells[1],
-                cells[2]
-            )?;
+            let mut line = format!("×{scale:<6} {instances:>9} {triangles:>10}");
+            for cell in &cells {
+                line.push_str(&format!(" {cell:>30}"));
+            }
+            outln!("{line}")?;
         }
     }
     for s in &skipped {
         outln!(
-            "skipped: {} with {} aircraft at ×{}: {}",
+            "skipped: {}{} with {} aircraft at ×{}: {}",
             s.technique,
+            s.program.map(|p| format!("/{p}")).unwrap_or_default(),
             s.instances,
             s.scale,
             s.reason
         )?;
     }
     Ok(())
+}
+
+/// `bench --only soft`: one table per axis (`bench::soft`), skipped configurations in
+/// their axis's table with the reason.
+fn run_soft(repeats: usize, json: bool) -> Result<(), CliError> {
+    use fixedfunc::bench::soft::{self, Axis, SceneId, Step};
+    let entries = soft::plan();
+    let mut bar = CountBar::new("bench soft", soft::steps(&entries, repeats), "steps");
+    bar.set_what("ray-casting the first scene's truth".into());
+    let frames = repeats.max(1) + 1;
+    let measured = soft::measure(&entries, soft::IMAGE, repeats, |step| {
+        bar.set_what(match step {
+            Step::Truth { scene } => format!("{}: truth ray-cast", scene_label(scene)),
+            Step::Round { scene, round } => {
+                format!("{}: frame {round}/{frames} of each", scene_label(scene))
+            }
+        });
+        bar.inc();
+    });
+    bar.finish();
+    let (rows, skipped) = measured.map_err(soft_error)?;
+    if json {
+        let value = serde_json::json!({ "rows": rows, "skipped": skipped });
+        outln!("{}", serde_json::to_string_pretty(&value)?)?;
+        return Ok(());
+    }
+    outln!(
+        "soft: Eisemann & Décoret's claims; emulate, {0}² image, maps remade each frame; {1} \
+         steady frames after a cold one, interleaved per scene; ms median [min–max]; \
+         visibility against the scene's truth (stratified, ray-cast once per scene): RMSE \
+         over geometry pixels, over the penumbra (truth strictly between 0 and 1), max |d|",
+        soft::IMAGE,
+        repeats.max(1)
+    )?;
+    for axis in Axis::ALL {
+        outln!()?;
+        outln!("{}", axis.title())?;
+        outln!(
+            "{:<22} {:<19} {:<34} {:>9} {:>24} {:>8} {:>7} {:>9} {:>6}",
+            "scene",
+            "technique",
+            "setting",
+            "triangles",
+            "frame ms",
+            "cold ms",
+            "RMSE",
+            "penumbra",
+            "max|d|"
+        )?;
+        for r in rows.iter().filter(|r| r.axis == axis) {
+            let v = &r.visibility;
+            outln!(
+                "{:<22} {:<19} {:<34} {:>9} {:>24} {:>8.1} {:>7.4} {:>9} {:>6.3}",
+                scene_label(r.scene),
+                r.technique,
+                r.setting.label(),
+                r.triangles,
+                format!(
+                    "{:.2} [{:.2}–{:.2}]",
+                    r.frame.median, r.frame.min, r.frame.max
+                ),
+                r.cold_ms,
+                v.rmse,
+                v.penumbra_rmse
+                    .map_or("—".to_string(), |p| format!("{p:.4}")),
+                v.max_abs
+            )?;
+        }
+        for s in skipped.iter().filter(|s| s.axis == axis) {
+            outln!(
+                "{:<22} {:<19} {:<34} skipped: {}",
+                scene_label(s.scene),
+                s.technique,
+                s.setting.label(),
+                s.reason
+            )?;
+        }
+        if axis == Axis::Geometry {
+            // Cost growth with the geometry: the most copies' steady frame over one copy's.
+            let (few, many) = (soft::COPIES[0], soft::COPIES[soft::COPIES.len() - 1]);
+            let of = |copies, setting| {
+                rows.iter().find(|r| {
+                    r.axis == axis && r.scene == SceneId::Scaling { copies } && r.setting == setting
+                })
+            };
+            for r in rows
+                .iter()
+                .filter(|r| r.axis == axis && r.scene == SceneId::Scaling { copies: few })
+            {
+                if let (Some(a), Some(b)) = (of(few, r.setting), of(many, r.setting)) {
+                    outln!(
+                        "{} {}: {many} copies / {few} copy = {:.2}× the frame time for {:.0}× \
+                         the triangles",
+                        r.technique,
+                        r.setting.label(),
+                        b.frame.median / a.frame.median,
+                        b.triangles as f64 / a.triangles.max(1) as f64
+                    )?;
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A scene as the soft tables name it: its file, and the light's scale when not 1.
+fn scene_label(scene: fixedfunc::bench::soft::SceneId) -> String {
+    use fixedfunc::bench::soft::SceneId;
+    let file = scene.file();
+    let file = file.trim_start_matches("assets/");
+    match scene {
+        SceneId::Soft { light_scale } if light_scale != 1.0 => {
+            format!("{file} light ×{light_scale}")
+        }
+        _ => file.to_string(),
+    }
+}
+
+/// The soft group's failures as the CLI reports them. A scene or truth error keeps its
+/// own variant; `NotAreaLight` and `NoScalingScene` name embedded scenes, which the
+/// group's unit tests check, so they are reached only from a broken build.
+fn soft_error(e: fixedfunc::bench::soft::SoftError) -> CliError {
+    use fixedfunc::bench::soft::SoftError;
+    match e {
+        SoftError::Scene { source, .. } => CliError::Scene(*source),
+        SoftError::Truth { source, .. } => CliError::Truth(source),
+        e @ (SoftError::NotAreaLight { .. } | SoftError::NoScalingScene { .. }) => {
+            CliError::Usage(format!("bench soft: {e}"))
+        }
+    }
 }
 
 fn run_techniques(repeats: usize, json: bool) -> Result<(), CliError> {

@@ -1,5 +1,5 @@
 //! `fixedfunc render`: renders a scene, writes the image and the shadow mask, prints the
-//! figures line. For an area light the line carries the visibility RMSE, a second line the
+//! figures line. For a soft light (an area light or a sun) the line carries the visibility RMSE, a second line the
 //! visibility's other figures (maximum error, penumbra RMSE), and a soft technique's
 //! visibility image (grey = fraction of the light seen, alpha 0 on background) is written
 //! beside the mask as `MASK-visibility.png`. Progress bars for multiple frames and for the ground truth (stderr; hidden

@@ -3,7 +3,7 @@
 //! readback rule, the projection techniques' modes, and `accumulate`'s light samples.
 
 use clap::Args;
-use fixedfunc::scene::{OffsetSetting, Scene, ShadowSettings};
+use fixedfunc::scene::{OccluderProgram, OffsetSetting, Scene, ShadowSettings};
 use fixedfunc::vocab::{
     DepthBits, MapFilter, OffsetArg, PlanarMode, Precision, Projector, ReadbackRule,
 };
@@ -40,10 +40,15 @@ pub struct ShadowArgs {
     /// projection that clips false shadows (default: the scene's `projector`).
     #[arg(long, value_parser = super::named::named::<Projector>())]
     pub projector: Option<Projector>,
-    /// `accumulate`'s renders per frame, one from each stratified point of the area light,
+    /// `accumulate`'s renders per frame, one from each stratified point of the area light
+    /// (or direction of the sun's disc),
     /// 1 to 256 (default: the scene's `light_samples`, else 16).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=i64::from(ShadowSettings::MAX_LIGHT_SAMPLES)))]
     pub light_samples: Option<u32>,
+    /// `occluder-planes`' form: fixed-function texgen, the thesis's shaders (`coleman`, the
+    /// F-35 only) or a generated program (`generic`) (default: the scene's `program`).
+    #[arg(long, value_parser = super::named::named::<OccluderProgram>())]
+    pub occluder_program: Option<OccluderProgram>,
 }
 
 /// `FACTOR,UNITS` (finite numbers) or `none`, by the vocabulary's rule (clap shows its
@@ -84,6 +89,9 @@ impl ShadowArgs {
         }
         if let Some(v) = self.light_samples {
             s.light_samples = v;
+        }
+        if let Some(v) = self.occluder_program {
+            s.occluder_program = v;
         }
     }
 }

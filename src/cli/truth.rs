@@ -1,5 +1,5 @@
 //! `fixedfunc truth`: the CPU ground truth of a scene (no GL), its mask and optionally its
-//! soft-shadow visibility as PNGs, with the time it took; for an area light, also how it
+//! soft-shadow visibility as PNGs, with the time it took; for a soft light (area or sun), also how it
 //! was sampled and its own standard error.
 
 use std::path::PathBuf;
@@ -30,8 +30,8 @@ pub struct Args {
     /// Which of the scene's lights casts the shadows (0-based).
     #[arg(long, default_value_t = 0)]
     pub light: usize,
-    /// Shadow rays per pixel for an area light, 1 to 8192, rounded up to two s × s
-    /// stratified grids (2s²) (default: the scene's `[truth] samples`, else 128).
+    /// Shadow rays per pixel for a soft light (area or sun), 1 to 8192, rounded up to two
+    /// s × s stratified grids (2s²) (default: the scene's `[truth] samples`, else 242).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=i64::from(TruthSettings::MAX_SAMPLES)))]
     pub samples: Option<u32>,
 }
@@ -88,10 +88,15 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
             .map_or(String::new(), |p| format!(", visibility → {}", p.display())),
     )?;
     if let Some(area) = &truth.area {
+        let sun = scene.lights.get(args.light).and_then(|l| l.sun());
         outln!(
-            "area light: {} samples per pixel (two independent {s}×{s} stratified grids), \
+            "{}: {} samples per pixel (two independent {s}×{s} stratified grids), \
              standard error {:.4} (RMS over {} geometry pixels of |A − B| / 2, A and B the \
              grids' visibilities)",
+            sun.map_or("area light".to_string(), |s| format!(
+                "sun of {:.2}°",
+                s.angular_diameter.to_degrees()
+            )),
             area.samples(),
             area.standard_error,
             grouped(area.geometry_pixels),

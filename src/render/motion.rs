@@ -76,7 +76,7 @@ impl Orbit {
                 if let Some(light) = scene.lights.first_mut() {
                     let v = &mut light.view;
                     v.eye = v.at + turn * (v.eye - v.at);
-                    if let LightKind::Directional { direction } = &mut light.kind {
+                    if let LightKind::Directional { direction, .. } = &mut light.kind {
                         *direction = turn * *direction;
                     }
                 }
@@ -170,7 +170,7 @@ impl Turn {
                     let v = &mut light.view;
                     let turn = self.rotation(v.eye - v.at);
                     v.eye = v.at + turn * (v.eye - v.at);
-                    if let LightKind::Directional { direction } = &mut light.kind {
+                    if let LightKind::Directional { direction, .. } = &mut light.kind {
                         *direction = turn * *direction;
                     }
                 }

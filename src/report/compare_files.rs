@@ -278,8 +278,20 @@ pub(super) fn scene_facts(scene: &Scene) -> Vec<(String, String)> {
         let kind = match light.kind {
             LightKind::Point => "point light".to_string(),
             LightKind::Spot { cutoff, .. } => format!("spot light, cutoff {cutoff}°"),
-            LightKind::Directional { direction } => {
-                format!("directional light along {}", v(direction))
+            LightKind::Directional {
+                direction,
+                angular_diameter,
+            } => {
+                if angular_diameter > 0.0 {
+                    format!(
+                        "sun along {}, {:.2}° across (hard mask from its centre; visibility from \
+                     the whole disc)",
+                        v(direction),
+                        angular_diameter.to_degrees()
+                    )
+                } else {
+                    format!("directional light along {}", v(direction))
+                }
             }
             LightKind::Area { .. } => {
                 "area light (hard mask from its centre; visibility from the whole rectangle)"

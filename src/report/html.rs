@@ -320,7 +320,7 @@ fn plot_and_truth(h: &mut String, written: &Written) {
         let _ = writeln!(
             h,
             "<section><h2>Visibility error against time</h2>{}\
-             <p class=\"muted\">The scene's light is an area light: each run's visibility \
+             <p class=\"muted\">The scene's light is soft (an area light or a sun): each run's visibility \
              (the fraction of the light each pixel sees; a hard shadow counts as 0 or 1) \
              against the truth's, as an RMSE over the geometry pixels. Soft and hard \
              techniques on one plot; the green staircase is its Pareto front.</p></section>",

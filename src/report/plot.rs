@@ -1,8 +1,10 @@
 //! `accuracy_vs_time`: error % of geometry pixels (y) against ms per frame (x), one point per
 //! measured technique × pipeline (emulate filled circles, native hollow squares), each
 //! labelled, and the Pareto front drawn as the staircase through its points: the frontier
-//! below and left of which no measured row lies. Time starts at 0 so that distances
-//! read as ratios on the time axis; the error axis is logarithmic. Drawn once for SVG and once for PNG by the same function.
+//! below and left of which no measured row lies. Both axes are logarithmic: equal
+//! distances are equal ratios, so techniques a hundred times apart in time (a soft shadow
+//! beside a hard one) or in error stay readable. Tick labels carry two significant digits.
+//! Drawn once for SVG and once for PNG by the same function.
 //!
 //! `visibility_vs_time` is the same plot with the visibility RMSE against an area light's
 //! truth on the y axis ([`Accuracy::VisibilityRmse`]): soft and hard techniques together,
@@ -50,7 +52,7 @@ impl Accuracy {
     fn caption(self) -> &'static str {
         match self {
             Accuracy::ErrorPercent => "Shadow error against time per frame",
-            Accuracy::VisibilityRmse => "Visibility error against time per frame (area light)",
+            Accuracy::VisibilityRmse => "Visibility error against time per frame (soft light)",
         }
     }
 
@@ -234,7 +236,13 @@ fn draw<DB: DrawingBackend>(
 ) -> Result<(), String> {
     let e = |x: &dyn std::fmt::Display| x.to_string();
     root.fill(&WHITE).map_err(|x| e(&x))?;
-    let max_ms = pts.iter().map(|p| p.ms).fold(0.0, f64::max).max(0.1) * 1.25;
+    let max_ms = pts.iter().map(|p| p.ms).fold(0.0, f64::max).max(0.1) * 1.5;
+    let min_ms = pts
+        .iter()
+        .map(|p| p.ms)
+        .filter(|&ms| ms > 0.0)
+        .fold(max_ms, f64::min)
+        / 1.5;
     // Errors span orders of magnitude (a self-shadowing 8-bit map near 90%, a good map
     // under 1%): the error axis is logarithmic, and an error of 0 sits on its floor.
     let (least, top) = accuracy.axis_floor_and_top();
@@ -252,19 +260,14 @@ fn draw<DB: DrawingBackend>(
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(64)
-        .build_cartesian_2d(0.0..max_ms, (floor..max_err).log_scale())
+        .build_cartesian_2d((min_ms..max_ms).log_scale(), (floor..max_err).log_scale())
         .map_err(|x| e(&x))?;
     chart
         .configure_mesh()
-        .x_desc("ms per frame (median of the steady frames)")
+        .x_desc("ms per frame (median of the steady frames, log scale)")
         .y_desc(accuracy.y_desc())
-        .y_label_formatter(&|v: &f64| {
-            if *v >= 1.0 {
-                format!("{v:.0}")
-            } else {
-                format!("{v}")
-            }
-        })
+        .x_label_formatter(&|v: &f64| tick_label(*v))
+        .y_label_formatter(&|v: &f64| tick_label(*v))
         .label_style((font::FAMILY, 14))
         .axis_desc_style((font::FAMILY, 16))
         .light_line_style(RGBColor(235, 235, 235))
@@ -277,7 +280,7 @@ fn draw<DB: DrawingBackend>(
         // Staircase: from each front point right to the next one's time, then down.
         let mut stairs = Vec::new();
         for (i, p) in front.iter().enumerate() {
-            stairs.push((p.ms, y(p.error)));
+            stairs.push((p.ms.max(min_ms), y(p.error)));
             if let Some(next) = front.get(i + 1) {
                 stairs.push((next.ms, y(p.error)));
             }
@@ -298,7 +301,7 @@ fn draw<DB: DrawingBackend>(
             continue;
         }
         let name = format!("{} pipeline", pipeline_name(kind));
-        let at = |p: &&Point| (p.ms, y(p.error));
+        let at = |p: &&Point| (p.ms.max(min_ms), y(p.error));
         match kind {
             PipelineKind::Emulate => {
                 chart
@@ -326,7 +329,7 @@ fn draw<DB: DrawingBackend>(
     let label_style: TextStyle = label_font.clone().into();
     let at: Vec<(i32, i32)> = pts
         .iter()
-        .map(|p| chart.backend_coord(&(p.ms, y(p.error))))
+        .map(|p| chart.backend_coord(&(p.ms.max(min_ms), y(p.error))))
         .collect();
     let mut sizes = Vec::new();
     for p in pts {
@@ -374,9 +377,40 @@ fn draw<DB: DrawingBackend>(
     Ok(())
 }
 
+/// A tick value with two significant digits and no trailing zeros: 0.30000000000000004
+/// → "0.3", 0.05 → "0.05", 250 → "250", 1500 → "1500".
+fn tick_label(v: f64) -> String {
+    if !v.is_finite() || v <= 0.0 {
+        return format!("{v}");
+    }
+    let decimals = (1 - v.log10().floor() as i32).max(0) as usize;
+    let text = format!("{v:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn tick_labels_have_two_significant_digits() {
+        for (v, label) in [
+            (0.30000000000000004, "0.3"),
+            (0.05, "0.05"),
+            (0.043, "0.043"),
+            (0.0004, "0.0004"),
+            (1.0, "1"),
+            (2.5, "2.5"),
+            (250.0, "250"),
+            (1500.0, "1500"),
+        ] {
+            assert_eq!(tick_label(v), label, "{v}");
+        }
+    }
 
     #[test]
     fn labels_of_crowded_points_do_not_collide_or_leave_the_plot() {

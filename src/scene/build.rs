@@ -4,6 +4,8 @@
 //! Defaults: a missing `[camera]` or `[image]` is the default scene's; a missing `[shadow]`
 //! is technique `none`, a 256² D24 map, the technique's default offset, float precision, the driver's depth readback, nearest filtering.
 //! A missing `[truth]` is `TruthSettings::DEFAULT_SAMPLES` shadow rays per area-light pixel.
+//! A directional light's `angular_diameter` (degrees, (0, 30]) makes it a sun (`SunDisc`);
+//! without it the light is hard (0).
 //! A light's `up` defaults to +y, or −z when the light looks along ±y (gluLookAt needs an
 //! up that is not parallel to the view); an explicit `up` along the view is an error.
 
@@ -11,6 +13,7 @@ use super::check::{span_of, Ctx, Result};
 use super::error::{Problem, SceneError, SceneWarning, WarningKind};
 use super::limits::MAX_IMAGE_SIZE;
 use super::raw::*;
+use super::sun::MAX_SUN_DIAMETER_DEGREES;
 use super::types::*;
 use crate::mesh::{self, AircraftLayout};
 use crate::vocab::{DepthBits, Named, OffsetSource, PolygonOffset, TechniqueId};
@@ -285,6 +288,7 @@ fn light(ctx: &Ctx, table: &Spanned<RawLight>, prefix: &str) -> Result<Light> {
         ("cutoff", span_of(&l.cutoff)),
         ("exponent", span_of(&l.exponent)),
         ("direction", span_of(&l.direction)),
+        ("angular_diameter", span_of(&l.angular_diameter)),
         ("extent", span_of(&l.extent)),
         ("distance", span_of(&l.distance)),
         ("corner", span_of(&l.corner)),
@@ -307,7 +311,16 @@ fn light(ctx: &Ctx, table: &Spanned<RawLight>, prefix: &str) -> Result<Light> {
         ),
         LightType::Directional => (
             "directional light",
-            vec!["direction", "at", "up", "extent", "distance", "near", "far"],
+            vec![
+                "direction",
+                "angular_diameter",
+                "at",
+                "up",
+                "extent",
+                "distance",
+                "near",
+                "far",
+            ],
         ),
         LightType::Area => (
             "area light",
@@ -404,7 +417,15 @@ fn light(ctx: &Ctx, table: &Spanned<RawLight>, prefix: &str) -> Result<Light> {
                 near,
                 far,
             };
-            (LightKind::Directional { direction: d }, view)
+            let angular_diameter =
+                angular_diameter(ctx, &l.angular_diameter, &key("angular_diameter"))?;
+            (
+                LightKind::Directional {
+                    direction: d,
+                    angular_diameter,
+                },
+                view,
+            )
         }
         LightType::Area => area_light(ctx, l, span.clone(), prefix, up_span, &frustum)?,
     };
@@ -414,6 +435,27 @@ fn light(ctx: &Ctx, table: &Spanned<RawLight>, prefix: &str) -> Result<Light> {
         colour,
         intensity,
     })
+}
+
+/// A directional light's `angular_diameter`: absent, 0 (a hard light); given, degrees in
+/// (0, `MAX_SUN_DIAMETER_DEGREES`], returned in radians.
+fn angular_diameter(ctx: &Ctx, v: &S<f32>, key: &str) -> Result<f32> {
+    let Some(v) = v else {
+        return Ok(0.0);
+    };
+    let degrees = ctx.finite(v, key)?;
+    if degrees > 0.0 && degrees <= MAX_SUN_DIAMETER_DEGREES {
+        Ok(degrees.to_radians())
+    } else {
+        Err(ctx.invalid(
+            v.span(),
+            key,
+            Problem::DegreesOutOfRange {
+                max: MAX_SUN_DIAMETER_DEGREES,
+                value: degrees,
+            },
+        ))
+    }
 }
 
 fn area_light(
@@ -791,6 +833,7 @@ fn shadow(ctx: &Ctx, s: &RawShadow) -> Result<ShadowSettings> {
         slices: slices(ctx, &s.slices)?,
         prefilter: s.prefilter.unwrap_or(defaults.prefilter),
         combine: s.combine.unwrap_or(defaults.combine),
+        occluder_program: s.program.unwrap_or(defaults.occluder_program),
     })
 }
 

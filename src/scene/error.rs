@@ -72,6 +72,8 @@ pub enum Problem {
     OutOfRange { low: f32, high: f32, value: f32 },
     #[error("must be in (0, 180) degrees, not {0}")]
     FovyOutOfRange(f32),
+    #[error("must be in (0, {max}] degrees, not {value}")]
+    DegreesOutOfRange { max: f32, value: f32 },
     #[error("is parallel to the view direction {view}; give an up vector that is not")]
     UpAlongView { view: Vec3 },
     #[error("must not be the zero vector")]

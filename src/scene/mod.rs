@@ -24,6 +24,7 @@ mod limits;
 mod occlusion;
 mod planes;
 mod raw;
+mod sun;
 #[cfg(test)]
 mod tests;
 mod types;
@@ -34,6 +35,8 @@ pub use limits::{
     GPU_BYTES_PER_TRIANGLE, MAX_IMAGE_SIZE,
 };
 pub use occlusion::{Combine, Prefilter, SLICE_COUNTS};
+pub use planes::OccluderProgram;
+pub use sun::{concentric, SunDisc, MAX_SUN_DIAMETER_DEGREES};
 pub use types::*;
 
 use glam::Vec3;

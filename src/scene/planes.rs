@@ -24,6 +24,7 @@ use crate::mesh::occluder::{
 };
 use crate::mesh::AircraftLayout;
 use crate::shaders::F35_PLANES;
+use crate::vocab::Named;
 use glam::Vec3;
 use std::sync::Arc;
 use toml::Spanned;
@@ -56,6 +57,40 @@ pub const F35_RECIPES: [OccluderRecipe; 3] = [
         extend: 16,
     },
 ];
+
+/// `[shadow] program`: which form of `occluder-planes` draws the eye pass. Read by serde
+/// (an unknown value is refused at its line with the valid ones listed) and by the command
+/// line (`--occluder-program`) through the same names ([`Named`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum OccluderProgram {
+    /// Object-linear texgen per receiver, a 2-slice 3D texture per plane, MODULATE: runs on
+    /// both pipelines.
+    #[default]
+    FixedFunction,
+    /// The thesis's shaders (`shaders/coleman/`), unchanged: the F-35's three planes only,
+    /// under a directional light. Emulated pipeline only.
+    Coleman,
+    /// One GLSL program generated for the scene's planes, directional or point light.
+    /// Emulated pipeline only.
+    Generic,
+}
+
+impl Named for OccluderProgram {
+    const NAMES: &'static [(&'static str, Self)] = &[
+        ("fixed-function", OccluderProgram::FixedFunction),
+        ("coleman", OccluderProgram::Coleman),
+        ("generic", OccluderProgram::Generic),
+    ];
+
+    fn help(self) -> &'static str {
+        match self {
+            OccluderProgram::FixedFunction => "texgen and 3D textures, both pipelines",
+            OccluderProgram::Coleman => "the thesis's F-35 shaders (shaders/coleman/)",
+            OccluderProgram::Generic => "one generated program for any planes",
+        }
+    }
+}
 
 /// The edge of an all-black occluder, texels: the white border blends in over half a
 /// texel, 1/32 of the rectangle.
@@ -391,6 +426,30 @@ mod tests {
             err.contains("object[2].plane")
                 && err.contains("9 shadow planes")
                 && err.contains("8 texture units"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn the_program_key_reads_its_three_names_and_refuses_others_at_their_line() {
+        use super::OccluderProgram;
+        use crate::vocab::Named;
+        assert_eq!(
+            parse(F35).unwrap().shadow.occluder_program,
+            OccluderProgram::FixedFunction
+        );
+        for v in OccluderProgram::all() {
+            let scene = parse(&format!("{F35}[shadow]\nprogram = \"{}\"\n", v.name())).unwrap();
+            assert_eq!(scene.shadow.occluder_program, v);
+        }
+        let err = parse(&format!("{F35}[shadow]\nprogram = \"cg\"\n"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains("planes.toml:5")
+                && ["fixed-function", "coleman", "generic"]
+                    .iter()
+                    .all(|n| err.contains(n)),
             "{err}"
         );
     }

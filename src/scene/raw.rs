@@ -125,6 +125,8 @@ pub(super) struct RawLight {
     pub cutoff: S<f32>,
     pub exponent: S<f32>,
     pub direction: S<Numbers<3>>,
+    /// A sun's full apparent diameter, degrees.
+    pub angular_diameter: S<f32>,
     pub extent: S<f32>,
     pub distance: S<f32>,
     pub corner: S<Numbers<3>>,
@@ -270,6 +272,7 @@ pub(super) struct RawShadow {
     pub slices: S<u32>,
     pub prefilter: Option<super::occlusion::Prefilter>,
     pub combine: Option<super::occlusion::Combine>,
+    pub program: Option<super::planes::OccluderProgram>,
 }
 
 #[derive(Debug, Deserialize)]

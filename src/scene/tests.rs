@@ -74,6 +74,12 @@ const BAD: &[(&str, &str, usize, &[&str])] = &[
     ("light key not for type", "[[light]]\ntype = \"point\"\nposition = [0,5,1]\nat = [0,0,0]\ncutoff = 30\n", 5, &["light[0].cutoff", "point light", "position"]),
     ("unknown light type", "[[light]]\ntype = \"laser\"\n", 2, &["laser", "spot", "area"]),
     ("directional zero", "[[light]]\ntype = \"directional\"\ndirection = [0,0,0]\n", 3, &["direction", "zero"]),
+    ("sun too wide", "[[light]]\ntype = \"directional\"\ndirection = [0,-1,0]\nangular_diameter = 45\n", 4, &["light[0].angular_diameter", "(0, 30] degrees", "not 45"]),
+    ("sun of zero size", "[[light]]\ntype = \"directional\"\n\nangular_diameter = 0\ndirection = [0,-1,0]\n", 4, &["light[0].angular_diameter", "(0, 30]", "not 0"]),
+    ("sun negative", "[[light]]\ntype = \"directional\"\ndirection = [0,-1,0]\nangular_diameter = -0.5\n", 4, &["angular_diameter", "not -0.5"]),
+    ("sun nan", "[[light]]\ntype = \"directional\"\ndirection = [0,-1,0]\nangular_diameter = nan\n", 4, &["angular_diameter", "finite"]),
+    ("sun size on a point light", "[[light]]\ntype = \"point\"\nposition = [0,5,1]\nat = [0,0,0]\nangular_diameter = 1\n", 5, &["light[0].angular_diameter", "point light", "position"]),
+    ("sun size on an area light", "[[light]]\ntype = \"area\"\ncentre = [0,5,0]\nsize = [1,1]\nat = [0,0,0]\nangular_diameter = 1\n", 6, &["light[0].angular_diameter", "area light", "edge_u"]),
     ("area without at", "[[light]]\ntype = \"area\"\ncentre = [0,5,0]\nsize = [1,1]\n", 1, &["light[0].at"]),
     ("missing obj", "[[object]]\nmesh = \"does-not-exist.obj\"\n", 2, &["object[0].mesh", "does-not-exist.obj"]),
     ("shininess", "[[object]]\nshape = \"box\"\nshininess = 200\n", 3, &["shininess", "128"]),
@@ -227,6 +233,42 @@ at = [0, 0, 0]
         scene.lights[2].position(),
         Some(glam::Vec3::new(0.0, 8.0, 0.0))
     );
+    // Without `angular_diameter` a directional light is hard.
+    assert!(matches!(
+        scene.lights[1].kind,
+        LightKind::Directional {
+            angular_diameter: 0.0,
+            ..
+        }
+    ));
+    assert!(scene.lights[1].sun().is_none() && !scene.lights[1].is_soft());
+    assert!(scene.lights[2].is_soft() && !scene.lights[0].is_soft());
+}
+
+#[test]
+fn a_sun_takes_its_angular_diameter_in_degrees_up_to_30() {
+    let sun = |degrees: &str| {
+        let text = format!(
+            "[[light]]\ntype = \"directional\"\ndirection = [1, -2, 0]\nangular_diameter = {degrees}\n"
+        );
+        parse(&text).map(|s| s.lights[0])
+    };
+    let light = sun("0.53").expect("the real sun");
+    let LightKind::Directional {
+        direction,
+        angular_diameter,
+    } = light.kind
+    else {
+        panic!("a directional light: {:?}", light.kind);
+    };
+    assert!((angular_diameter - 0.53f32.to_radians()).abs() < 1e-7);
+    let disc = light.sun().expect("a sun");
+    assert_eq!(disc.angular_diameter, angular_diameter);
+    assert!((disc.towards + direction.normalize()).length() < 1e-6);
+    assert!(light.is_soft() && light.position().is_none());
+    assert!(sun("30").is_ok(), "30° is the top of the range");
+    assert!(sun("30.01").is_err());
+    assert!(sun("1e-6").is_ok(), "any size above 0");
 }
 
 #[test]

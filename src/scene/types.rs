@@ -107,7 +107,13 @@ pub enum LightKind {
     /// A spot light at `view.eye` aimed at `view.at`; GL_SPOT_CUTOFF and GL_SPOT_EXPONENT.
     Spot { cutoff: f32, exponent: f32 },
     /// Light travelling along `direction` (GL position w = 0, pointing at −direction).
-    Directional { direction: Vec3 },
+    /// A sun when `angular_diameter` > 0: the source is a disc of that full apparent
+    /// diameter, in radians, centred on −direction (scene key `angular_diameter`, in
+    /// degrees, (0, 30]); 0 is a hard directional light. The hard mask is the centre's.
+    Directional {
+        direction: Vec3,
+        angular_diameter: f32,
+    },
     /// A rectangle corner + s·edge_u + t·edge_v, s, t ∈ [0, 1], emitting on both sides.
     Area {
         corner: Vec3,
@@ -117,6 +123,24 @@ pub enum LightKind {
 }
 
 impl Light {
+    /// The sun's disc when this is a directional light with an angular size; `None` for
+    /// every other light, a hard directional one included.
+    pub fn sun(&self) -> Option<super::SunDisc> {
+        match self.kind {
+            LightKind::Directional {
+                direction,
+                angular_diameter,
+            } if angular_diameter > 0.0 => Some(super::SunDisc::new(direction, angular_diameter)),
+            _ => None,
+        }
+    }
+
+    /// Whether the light has a size, so that its shadows are judged by visibility: an
+    /// area light or a sun.
+    pub fn is_soft(&self) -> bool {
+        matches!(self.kind, LightKind::Area { .. }) || self.sun().is_some()
+    }
+
     /// The point the hard shadow is cast from: the position, or an area light's centre;
     /// `None` for a directional light.
     pub fn position(&self) -> Option<Vec3> {
@@ -350,6 +374,8 @@ pub struct ShadowSettings {
     pub prefilter: super::Prefilter,
     /// `occlusion-textures`' combination rule. Default Probabilistic (equation 5).
     pub combine: super::Combine,
+    /// `occluder-planes`' form (`[shadow] program`). Default FixedFunction.
+    pub occluder_program: super::OccluderProgram,
 }
 
 impl Default for ShadowSettings {
@@ -369,6 +395,7 @@ impl Default for ShadowSettings {
             slices: 16,
             prefilter: super::Prefilter::Mipmap,
             combine: super::Combine::Probabilistic,
+            occluder_program: super::OccluderProgram::FixedFunction,
         }
     }
 }

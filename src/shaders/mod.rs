@@ -59,6 +59,14 @@ const HISTORICAL: &[HistoricalShader] = &[
                  or summed-area-table step",
     },
     HistoricalShader {
+        name: "eisemann/gauss.frag",
+        stage: Stage::Fragment,
+        source: include_str!("../../shaders/eisemann/gauss.frag"),
+        origin: "E. Eisemann and X. Décoret, Occlusion Textures for Plausible Soft Shadows, \
+                 Computer Graphics Forum 27(1), 2008: §3.5, sunlight's Gaussian instead of a box \
+                 filter, as a Gaussian pyramid",
+    },
+    HistoricalShader {
         name: "eisemann/nbuffer.frag",
         stage: Stage::Fragment,
         source: include_str!("../../shaders/eisemann/nbuffer.frag"),

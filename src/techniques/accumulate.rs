@@ -1,5 +1,6 @@
 //! `accumulate`: the era's soft shadow, as the Red Book drew it — N hard shadows, each
-//! from another point of the area light, averaged in the accumulation buffer.
+//! from another point of the area light (or another direction of a sun's disc), averaged
+//! in the accumulation buffer.
 //!
 //! ```text
 //! setup          the map texture as depth-compare's; glClearAccum(0, 0, 0, 0)
@@ -19,6 +20,15 @@
 //! N frusta are parallel; the light's `fovy` has to leave a margin of half the light's size
 //! around what it must cover (outside the map is lit, `map`).
 //!
+//! **Sun directions.** A sun (a directional light with `angular_diameter` α > 0) is
+//! sampled the same way over the unit square — the same a × b strata, the same jitter and
+//! seed — each point carried onto the cone of half-angle α/2 around −direction by
+//! `scene::SunDisc::direction`, as the truth carries its samples (Shirley–Chiu's
+//! concentric map onto the disc, then the cap uniformly in solid angle). Render k is a
+//! hard directional light along −ω_k, its view (eye, up) turned about the view's `at` by
+//! the rotation taking the sun's centre to ω_k, so each map is an orthographic box of the
+//! same size turned by at most α/2.
+//!
 //! **Maps are remade per frame per sample.** One map texture serves every sample: sample k's
 //! light pass and copy run just before its eye passes, every frame, so the N maps cost N
 //! light passes a frame. That is how the era's programs ran it (N depth textures of 256²
@@ -34,14 +44,14 @@
 //! decodes blue-dominated pixels (b − r ≥ 128) as background and the red of the others as
 //! the visibility; the hard mask is its threshold at one half, as a filtered compare's.
 
-use glam::{Vec3, Vec4};
+use glam::{Quat, Vec3, Vec4};
 
 use crate::ff::accum::AccumOp;
 use crate::ff::{
     ClearMask, Command, CompareFunc, CompareMode, DepthTextureMode, PixelFormat, PixelType,
     TexParam, TextureTarget,
 };
-use crate::scene::{Light, LightKind, Scene, ShadowSettings};
+use crate::scene::{Light, LightKind, Scene, ShadowSettings, SunDisc};
 use crate::vocab::TechniqueId;
 
 use super::map::{bind_map, map_parameters, read_corner, MapSettings, MAP_IMAGE_SLOT};
@@ -55,7 +65,7 @@ pub const ID: TechniqueId = TechniqueId::Accumulate;
 
 pub const TECHNIQUE: Technique = Technique {
     summary: "the Red Book's soft shadow: N depth-compare renders from stratified points of \
-              the area light, averaged with glAccum",
+              the area light (or directions of a sun), averaged with glAccum",
     plan,
 };
 
@@ -89,6 +99,9 @@ impl AreaRectangle {
             None => "no light",
             Some(LightKind::Point) => "a point light",
             Some(LightKind::Spot { .. }) => "a spot light",
+            Some(LightKind::Directional {
+                angular_diameter, ..
+            }) if angular_diameter > 0.0 => "a sun (a directional light with a disc)",
             Some(LightKind::Directional { .. }) => "a directional light",
         };
         Err(TechniqueError::NoAreaLight {
@@ -105,6 +118,31 @@ impl AreaRectangle {
     /// The point at (s, t) ∈ [0, 1]²: corner + s·edge_u + t·edge_v.
     pub fn at(&self, s: f32, t: f32) -> Vec3 {
         self.corner + s * self.edge_u + t * self.edge_v
+    }
+}
+
+/// What `accumulate` samples: the area light's rectangle or the sun's disc of directions.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SoftSource {
+    Rectangle(AreaRectangle),
+    Sun(SunDisc),
+}
+
+impl SoftSource {
+    /// The scene's first light as a source to sample, or [`TechniqueError::NoAreaLight`]
+    /// naming what the scene has instead (a hard directional light: "a directional light
+    /// without `angular_diameter`").
+    pub fn of(scene: &Scene) -> Result<SoftSource, TechniqueError> {
+        match scene.lights.first() {
+            Some(light) if matches!(light.kind, LightKind::Directional { .. }) => light
+                .sun()
+                .map(SoftSource::Sun)
+                .ok_or(TechniqueError::NoAreaLight {
+                    technique: ID,
+                    found: "a directional light without `angular_diameter` (a sun needs one)",
+                }),
+            _ => AreaRectangle::of(scene).map(SoftSource::Rectangle),
+        }
     }
 }
 
@@ -153,6 +191,57 @@ pub fn light_points(area: &AreaRectangle, n: u32, seed: u64) -> Vec<Vec3> {
         .collect()
 }
 
+/// The N sun directions (towards the sun): the unit square cut into the strata of N equal
+/// cells, (i, j) holding sample k = j·a + i at ((i + ξ)/a, (j + η)/b) with the light
+/// points' jitter, carried onto the cone by [`SunDisc::direction`].
+pub fn sun_directions(sun: &SunDisc, n: u32, seed: u64) -> Vec<Vec3> {
+    let (a, b) = strata(n, true);
+    (0..a * b)
+        .map(|k| {
+            let (i, j) = (k % a, k / a);
+            let s = (i as f32 + unit(seed, k, 0)) / a as f32;
+            let t = (j as f32 + unit(seed, k, 1)) / b as f32;
+            sun.direction(s, t)
+        })
+        .collect()
+}
+
+/// The scene with its first light made a hard directional light from `towards` (light
+/// travelling along −towards), its view turned about `at` by the rotation R taking the
+/// sun's centre to `towards`: eye′ = at + R (eye − at), up′ = R up.
+fn sun_sample_scene(scene: &Scene, sun: &SunDisc, towards: Vec3) -> Scene {
+    let mut sample = scene.clone();
+    if let Some(light) = sample.lights.first_mut() {
+        let turn = Quat::from_rotation_arc(sun.towards, towards);
+        let mut view = light.view;
+        view.eye = view.at + turn * (view.eye - view.at);
+        view.up = turn * view.up;
+        *light = Light {
+            kind: LightKind::Directional {
+                direction: -towards,
+                angular_diameter: 0.0,
+            },
+            view,
+            ..*light
+        };
+    }
+    sample
+}
+
+/// The N single-light scenes a frame renders, one per sample of `source`.
+fn sample_scenes(scene: &Scene, source: &SoftSource, n: u32) -> Vec<Scene> {
+    match source {
+        SoftSource::Rectangle(area) => light_points(area, n, SEED)
+            .into_iter()
+            .map(|p| sample_scene(scene, area, p))
+            .collect(),
+        SoftSource::Sun(sun) => sun_directions(sun, n, SEED)
+            .into_iter()
+            .map(|w| sun_sample_scene(scene, sun, w))
+            .collect(),
+    }
+}
+
 /// The scene with its first light made a point light at `point`, its view translated by
 /// `point` − the rectangle's centre (parallel frusta), colour and intensity kept.
 fn sample_scene(scene: &Scene, area: &AreaRectangle, point: Vec3) -> Scene {
@@ -173,7 +262,7 @@ fn sample_scene(scene: &Scene, area: &AreaRectangle, point: Vec3) -> Scene {
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
-    let area = AreaRectangle::of(scene)?;
+    let source = SoftSource::of(scene)?;
     let n = scene.shadow.light_samples;
     let max = ShadowSettings::MAX_LIGHT_SAMPLES;
     if !(1..=max).contains(&n) {
@@ -192,10 +281,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
         param(TexParam::DepthTextureMode(DepthTextureMode::Luminance)),
         Command::ClearAccum(Vec4::ZERO),
     ]);
-    let samples: Vec<Scene> = light_points(&area, n, SEED)
-        .into_iter()
-        .map(|p| sample_scene(scene, &area, p))
-        .collect();
+    let samples = sample_scenes(scene, &source, n);
     let lights = samples
         .iter()
         .map(|s| ShadowLight::of(s, ID))
@@ -236,7 +322,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
         });
         passes
     };
-    // The light's map as `--depth-map` shows it: from the rectangle's centre.
+    // The light's map as `--depth-map` shows it: from the rectangle's (or the sun's) centre.
     let centre = ShadowLight::of(scene, ID)?;
     let mut map_commands =
         light_pass(scene, prepared, &centre, map.size, map.offset, false).commands;
@@ -297,6 +383,91 @@ mod tests {
         scene.shadow.technique = ID;
         scene.shadow.light_samples = samples;
         scene
+    }
+
+    /// The default scene lit by a sun of 3° along its spot light's axis.
+    fn sun_scene(samples: u32) -> Scene {
+        let mut scene = area_scene(samples);
+        let light = &mut scene.lights[0];
+        light.kind = LightKind::Directional {
+            direction: light.view.at - light.view.eye,
+            angular_diameter: 3f32.to_radians(),
+        };
+        scene
+    }
+
+    #[test]
+    fn sun_directions_fill_the_disc_one_per_stratum_the_same_every_time() {
+        let sun = SunDisc::new(Vec3::new(0.3, -1.0, 0.2), 4f32.to_radians());
+        let ws = sun_directions(&sun, 16, SEED);
+        assert_eq!(ws.len(), 16);
+        assert_eq!(ws, sun_directions(&sun, 16, SEED));
+        assert_ne!(ws, sun_directions(&sun, 16, SEED + 1));
+        let mut mean = Vec3::ZERO;
+        for (k, w) in ws.iter().enumerate() {
+            let angle = w.dot(sun.towards).clamp(-1.0, 1.0).acos();
+            assert!(angle <= sun.half_angle() + 1e-5, "{k}: {angle}");
+            for v in &ws[k + 1..] {
+                assert!(w.dot(*v) < 1.0 - 1e-9, "two samples share a direction");
+            }
+            mean += *w;
+        }
+        // Stratified over the disc: their mean sits near the centre (well within a tenth of
+        // the half-angle; 16 independent samples would scatter by about a quarter).
+        let off = (mean / 16.0)
+            .normalize()
+            .dot(sun.towards)
+            .clamp(-1.0, 1.0)
+            .acos();
+        assert!(off < 0.1 * sun.half_angle(), "{off}");
+    }
+
+    #[test]
+    fn a_sun_renders_once_per_direction_each_from_its_own_turned_view() {
+        let scene = sun_scene(4);
+        let prepared = Prepared::new(&scene);
+        let plan = plan(&scene, &prepared).expect("plans a sun");
+        let sun = scene.lights[0].sun().expect("a sun");
+        let light = scene.lights[0];
+        let accums = plan
+            .passes
+            .iter()
+            .flat_map(|p| &p.commands)
+            .filter(|c| matches!(c, Command::Accum { .. }))
+            .count();
+        assert_eq!(accums, 5, "four GL_ACCUM and one GL_RETURN");
+        for w in sun_directions(&sun, 4, SEED) {
+            let sample = sun_sample_scene(&scene, &sun, w);
+            let turned = sample.lights[0];
+            assert_eq!(
+                turned.kind,
+                LightKind::Directional {
+                    direction: -w,
+                    angular_diameter: 0.0
+                }
+            );
+            // The view turned about `at`: the same distance, looking along −w.
+            let (eye, at) = (turned.view.eye, turned.view.at);
+            assert_eq!(at, light.view.at);
+            assert!(((eye - at).length() - (light.view.eye - at).length()).abs() < 1e-4);
+            assert!(((eye - at).normalize() - w).length() < 1e-5);
+        }
+        let views: Vec<&Command> = plan
+            .passes
+            .iter()
+            .filter(|p| p.name == "light")
+            .flat_map(|p| {
+                p.commands
+                    .iter()
+                    .filter(|c| matches!(c, Command::LoadMatrix(_)))
+            })
+            .collect();
+        assert_eq!(views.len(), 4);
+        for (i, a) in views.iter().enumerate() {
+            for b in &views[i + 1..] {
+                assert_ne!(a, b);
+            }
+        }
     }
 
     #[test]
@@ -458,5 +629,17 @@ mod tests {
         let scene = area_scene(0);
         let err = plan(&scene, &prepared).unwrap_err().to_string();
         assert!(err.contains("1 to 256"), "{err}");
+        let mut hard = sun_scene(4);
+        if let LightKind::Directional {
+            angular_diameter, ..
+        } = &mut hard.lights[0].kind
+        {
+            *angular_diameter = 0.0;
+        }
+        let err = plan(&hard, &prepared).unwrap_err().to_string();
+        assert!(
+            err.contains("a directional light without `angular_diameter`"),
+            "{err}"
+        );
     }
 }

@@ -42,6 +42,11 @@
 //! `diffuse · shadowPercent + ambient`. Every receiver looks up every caster's planes, its
 //! own included (self-shadowing), so the scene may hold at most MAX_TEXTURE_UNITS planes.
 //! A plane parallel to the light (|n·L| < 10⁻⁶) casts nothing: its R is a constant 0.
+//!
+//! **Other forms.** `[shadow] program = "coleman"` runs the thesis's own shaders and
+//! `"generic"` a program generated for the scene's planes (`occluder_program`); both keep
+//! this mask (white × Π factors over the dim pass's black) and run on the emulated
+//! pipeline only.
 
 use glam::{Mat4, Vec3, Vec4};
 use std::sync::Arc;
@@ -51,9 +56,10 @@ use crate::ff::{
     TexFormat, TexGenMode, TexGenParam, TexImage, TexParam, TextureTarget, Wrap, MAX_TEXTURE_UNITS,
 };
 use crate::mesh::occluder::{OccluderTexture, PlaneFrame, PASSES};
-use crate::scene::{LightKind, OccluderPlane, Scene};
+use crate::scene::{LightKind, OccluderPlane, OccluderProgram, Scene};
 use crate::vocab::TechniqueId;
 
+use super::occluder_program as program;
 use super::parts::{dim_pass, does_not_receive, lighting, objects, reset, LightSet, Look};
 use super::{check_light_count, colour_mask, Pass, Plan, Prepared, Technique, TechniqueError};
 
@@ -125,7 +131,7 @@ pub fn world_light(scene: &Scene) -> Result<LightAt, TechniqueError> {
         .ok_or(TechniqueError::NoLight { technique: ID })?;
     Ok(match (light.kind, light.position()) {
         // `direction` is where the light travels; towards the light is its opposite.
-        (LightKind::Directional { direction }, _) => LightAt::Direction(-direction),
+        (LightKind::Directional { direction, .. }, _) => LightAt::Direction(-direction),
         (_, Some(p)) => LightAt::Point(p),
         (_, None) => LightAt::Direction(light.view.eye - light.view.at),
     })
@@ -228,15 +234,35 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
     check_light_count(scene)?;
     let planes = scene_planes(scene)?;
     let light = world_light(scene)?;
-    let mut setup = Vec::new();
-    for (k, p) in planes.iter().enumerate() {
-        setup.extend(texture_commands(texture_name(k), &p.plane.texture));
-    }
-    let passes = eye_passes(scene, prepared, &planes, light, Look::Shaded);
-    let mask = colour_mask(
-        scene,
-        eye_passes(scene, prepared, &planes, light, Look::Mask),
-    );
+    let (setup, passes, mask) = match scene.shadow.occluder_program {
+        OccluderProgram::FixedFunction => {
+            let mut setup = Vec::new();
+            for (k, p) in planes.iter().enumerate() {
+                setup.extend(texture_commands(texture_name(k), &p.plane.texture));
+            }
+            let look = |look| eye_passes(scene, prepared, &planes, light, look);
+            (setup, look(Look::Shaded), look(Look::Mask))
+        }
+        OccluderProgram::Generic => {
+            let look = |look| program::generic_passes(scene, prepared, &planes, light, look);
+            (
+                program::setup(&planes),
+                look(Look::Shaded),
+                look(Look::Mask),
+            )
+        }
+        OccluderProgram::Coleman => {
+            let fit = program::coleman_fit(scene, &planes, light)
+                .map_err(|why| TechniqueError::ColemanDoesNotFit { why })?;
+            let look = |look| program::coleman_passes(scene, prepared, &fit, look);
+            (
+                program::setup(&planes),
+                look(Look::Shaded),
+                look(Look::Mask),
+            )
+        }
+    };
+    let mask = colour_mask(scene, mask);
     let (width, height) = (scene.image.width, scene.image.height);
     let mut plan = Plan::single(
         passes,
@@ -249,6 +275,13 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
         },
     );
     plan.setup = setup;
+    if scene.shadow.occluder_program == OccluderProgram::Coleman && scene.lights.len() > 1 {
+        plan.notes.push(format!(
+            "program = \"coleman\" lights the receivers with the first light only (the \
+             appendix's glstate.light[0]); the other {} are left out of them",
+            scene.lights.len() - 1
+        ));
+    }
     Ok(plan)
 }
 

@@ -42,7 +42,8 @@ use crate::ff::{
 use crate::scene::{Combine, Prefilter, Scene};
 use crate::vocab::{DepthBits, TechniqueId};
 
-use super::accumulate::AreaRectangle;
+use super::accumulate::{AreaRectangle, SoftSource};
+use super::occlusion_sun::{gauss_pass, gauss_setup, sun_view};
 use super::parts::{dim_pass, eye_start, lighting, objects, reset, LightSet, Look, Paint};
 use super::{
     check_light_count, FramebufferNeeds, MaskPlan, MaskSource, Pass, Plan, Prepared, Technique,
@@ -109,20 +110,31 @@ pub struct OcclusionSettings {
     pub combine: Combine,
     /// §3.4.1: each slice also projected onto the next.
     pub leak_fix: bool,
+    /// The light is a sun (§3.5): orthographic slices and the Gaussian pyramid in the
+    /// occlusion textures' mipmap levels, whatever `prefilter` says.
+    pub sun: bool,
 }
 
 impl OcclusionSettings {
     pub fn of(scene: &Scene) -> OcclusionSettings {
+        let sun = scene.lights.first().and_then(|l| l.sun()).is_some();
         OcclusionSettings {
             slices: scene.shadow.slices,
             size: scene.shadow.map_size,
-            prefilter: scene.shadow.prefilter,
+            // A sun's Gaussian pyramid is read as mipmaps are (trilinear at a lod).
+            prefilter: if sun {
+                Prefilter::Mipmap
+            } else {
+                scene.shadow.prefilter
+            },
             combine: scene.shadow.combine,
             leak_fix: true,
+            sun,
         }
     }
 
-    fn textures(&self) -> u32 {
+    /// RGBA textures of four slices each.
+    pub fn textures(&self) -> u32 {
         self.slices.div_ceil(4)
     }
 }
@@ -141,6 +153,28 @@ pub struct SliceView {
     /// The first slice's top depth and one slice's depth.
     pub near: f32,
     pub slice_depth: f32,
+    /// A sun's tan(α/2), the disc's radius per unit of distance (`occlusion_sun`); `None`
+    /// for a rectangle.
+    pub sun_tan: Option<f32>,
+}
+
+/// The casters' world-space bounding-box corners.
+pub fn caster_corners(scene: &Scene) -> Vec<Vec3> {
+    scene
+        .objects
+        .iter()
+        .filter(|o| o.casts)
+        .filter_map(|o| o.world_mesh().bounds())
+        .flat_map(|(lo, hi)| {
+            (0..8).map(move |i| {
+                Vec3::new(
+                    if i & 1 == 0 { lo.x } else { hi.x },
+                    if i & 2 == 0 { lo.y } else { hi.y },
+                    if i & 4 == 0 { lo.z } else { hi.z },
+                )
+            })
+        })
+        .collect()
 }
 
 impl SliceView {
@@ -149,22 +183,7 @@ impl SliceView {
         let (a, b) = (area.edge_u.length() * 0.5, area.edge_v.length() * 0.5);
         let u = area.edge_u.normalize_or_zero();
         let mut n = area.edge_u.cross(area.edge_v).normalize_or_zero();
-        // The casters' world-space bounding-box corners.
-        let corners: Vec<Vec3> = scene
-            .objects
-            .iter()
-            .filter(|o| o.casts)
-            .filter_map(|o| o.world_mesh().bounds())
-            .flat_map(|(lo, hi)| {
-                (0..8).map(move |i| {
-                    Vec3::new(
-                        if i & 1 == 0 { lo.x } else { hi.x },
-                        if i & 2 == 0 { lo.y } else { hi.y },
-                        if i & 4 == 0 { lo.z } else { hi.z },
-                    )
-                })
-            })
-            .collect();
+        let corners = caster_corners(scene);
         let mean = corners.iter().copied().sum::<Vec3>() / corners.len().max(1) as f32;
         if n.dot(mean - centre) < 0.0 {
             n = -n;
@@ -198,28 +217,34 @@ impl SliceView {
             cop,
             near,
             slice_depth: (far - near) / slices as f32,
+            sun_tan: None,
         }
     }
 
-    /// The uniforms both programs share.
+    /// The uniforms both programs share (`cop` only for a rectangle: the sun's view is
+    /// orthographic).
     fn uniforms(&self) -> Vec<Command> {
-        vec![
-            uniform("cop", UniformValue::Float(self.cop)),
+        let mut commands = vec![
             uniform("half_window", UniformValue::Vec2(self.half_window)),
             uniform("slice_near", UniformValue::Float(self.near)),
             uniform("slice_depth", UniformValue::Float(self.slice_depth)),
-        ]
+        ];
+        commands.push(match self.sun_tan {
+            Some(tan) => uniform("sun_tan", UniformValue::Float(tan)),
+            None => uniform("cop", UniformValue::Float(self.cop)),
+        });
+        commands
     }
 }
 
-fn uniform(name: &str, value: UniformValue) -> Command {
+pub(crate) fn uniform(name: &str, value: UniformValue) -> Command {
     Command::Uniform {
         name: Arc::from(name),
         value,
     }
 }
 
-fn shader(name: &str) -> &'static str {
+pub(crate) fn shader(name: &str) -> &'static str {
     crate::shaders::find(name).map_or("", |s| s.source)
 }
 
@@ -228,10 +253,11 @@ fn slice_program(settings: &OcclusionSettings) -> Arc<ShaderProgram> {
     let defines = [
         ("SLICES", settings.slices.to_string()),
         ("LEAK_FIX", u32::from(settings.leak_fix).to_string()),
+        ("SUN", u32::from(settings.sun).to_string()),
     ];
     Arc::new(ShaderProgram {
         name: "eisemann/slices".into(),
-        vertex: shader("eisemann/slices.vert").into(),
+        vertex: with_defines(shader("eisemann/slices.vert"), &defines),
         fragment: with_defines(shader("eisemann/slices.frag"), &defines),
         samplers: Vec::new(),
     })
@@ -252,6 +278,7 @@ fn visibility_program(settings: &OcclusionSettings, look: Look) -> Arc<ShaderPro
         ("COMBINE", settings.combine_define().to_string()),
         ("LEVELS", settings.levels().to_string()),
         ("LOOK", look_value.to_string()),
+        ("SUN", u32::from(settings.sun).to_string()),
     ];
     Arc::new(ShaderProgram {
         name: "eisemann/visibility".into(),
@@ -312,9 +339,9 @@ pub fn sat_texture(k: u32, parity: u32) -> u32 {
     SAT_TEXTURE_BASE + 2 * k + parity
 }
 
-/// The occlusion area light, or [`TechniqueError::NoAreaLight`] naming this technique.
-fn area_light(scene: &Scene) -> Result<AreaRectangle, TechniqueError> {
-    AreaRectangle::of(scene).map_err(|e| match e {
+/// The scene's rectangle or sun, or [`TechniqueError::NoAreaLight`] naming this technique.
+fn soft_source(scene: &Scene) -> Result<SoftSource, TechniqueError> {
+    SoftSource::of(scene).map_err(|e| match e {
         TechniqueError::NoAreaLight { found, .. } => TechniqueError::NoAreaLight {
             technique: ID,
             found,
@@ -325,12 +352,18 @@ fn area_light(scene: &Scene) -> Result<AreaRectangle, TechniqueError> {
 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
-    let area = area_light(scene)?;
+    let source = soft_source(scene)?;
     let settings = OcclusionSettings::of(scene);
-    let view = SliceView::of(scene, &area, settings.slices);
+    let view = match &source {
+        SoftSource::Rectangle(area) => SliceView::of(scene, area, settings.slices),
+        SoftSource::Sun(sun) => sun_view(scene, sun, settings.slices),
+    };
     let mut setup = Vec::new();
     for k in 0..settings.textures() {
         setup.extend(texture_setup(k, &settings));
+        if settings.sun {
+            setup.extend(gauss_setup(k, &settings));
+        }
         for parity in 0..2 {
             match settings.prefilter {
                 Prefilter::Mipmap => {}
@@ -341,6 +374,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
     }
     setup.push(Command::ActiveTexture(0));
     let filter = match settings.prefilter {
+        Prefilter::Mipmap if settings.sun => gauss_pass(&settings),
         Prefilter::Mipmap => filter_pass(&settings),
         Prefilter::Nbuffers => nbuffer_pass(&settings),
         Prefilter::Sat => sat_pass(&settings),
@@ -361,11 +395,16 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
         },
         map_image: None,
         notes: vec![format!(
-            "{} slices in {} RGBA textures of {}², {:?} prefilter, {:?} combination",
+            "{} slices in {} RGBA textures of {}², {}, {:?} combination",
             settings.slices,
             settings.textures(),
             settings.size,
-            settings.prefilter,
+            match settings.sun {
+                true => "a sun: orthographic slices, Gaussian pyramid (§3.5; `prefilter` is \
+                         for rectangular lights)"
+                    .to_string(),
+                false => format!("{:?} prefilter", settings.prefilter),
+            },
             settings.combine
         )],
     })
@@ -512,7 +551,7 @@ fn nbuffer_setup(k: u32, parity: u32, settings: &OcclusionSettings) -> Vec<Comma
 }
 
 /// A quad covering the window in clip coordinates (for full-window program passes).
-fn window_quad() -> Arc<crate::ff::Geometry> {
+pub(crate) fn window_quad() -> Arc<crate::ff::Geometry> {
     let corners = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
     Arc::new(crate::ff::Geometry::new(
         crate::ff::Primitive::Quads,
@@ -704,7 +743,7 @@ pub fn sat_pass(settings: &OcclusionSettings) -> Pass {
 
 /// After a pass into the occlusion textures: fixed function again, colour attachment 0
 /// detached and the window's framebuffer (0) bound.
-fn back_to_the_window() -> [Command; 3] {
+pub(crate) fn back_to_the_window() -> [Command; 3] {
     [
         Command::UseProgram(None),
         Command::FramebufferTexture {
@@ -882,7 +921,9 @@ mod tests {
     #[test]
     fn every_caster_projects_inside_the_window_and_the_slices_span_the_casters() {
         let scene = area_scene();
-        let area = area_light(&scene).unwrap();
+        let SoftSource::Rectangle(area) = soft_source(&scene).unwrap() else {
+            panic!("the scene's light is a rectangle");
+        };
         let view = SliceView::of(&scene, &area, 16);
         assert!(view.half_window.x >= view.light_half.x - 1e-6);
         // The window keeps the light's aspect.

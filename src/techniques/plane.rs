@@ -47,7 +47,9 @@ pub const FLATNESS: f32 = 1e-5;
 /// area light's centre, as the truth's hard mask), (−direction, 0) for a directional one.
 pub fn light_vector(light: &Light) -> Vec4 {
     match (light.kind, light.position()) {
-        (LightKind::Directional { direction }, _) => (-direction.normalize_or_zero()).extend(0.0),
+        (LightKind::Directional { direction, .. }, _) => {
+            (-direction.normalize_or_zero()).extend(0.0)
+        }
         (_, Some(p)) => p.extend(1.0),
         (_, None) => light.view.eye.extend(1.0),
     }

@@ -94,7 +94,7 @@ pub fn light_commands(index: u8, light: &Light) -> Vec<Command> {
     };
     let position = match light.kind {
         // GL's directional position points towards the light: −(direction of travel).
-        LightKind::Directional { direction } => Vec4::from((-direction.normalize(), 0.0)),
+        LightKind::Directional { direction, .. } => Vec4::from((-direction.normalize(), 0.0)),
         _ => light
             .position()
             .map_or(Vec4::new(0.0, 0.0, 1.0, 0.0), |p| p.extend(1.0)),

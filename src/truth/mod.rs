@@ -38,6 +38,20 @@
 //! sees, visibility = (a + b) / 2s². The hard mask is the centre's, as for a point light.
 //! Point lights' visibility is 1 or 0 with the mask.
 //!
+//! **Suns.** A directional light with `angular_diameter` α > 0 is a disc of directions, the
+//! cone of half-angle α/2 around w = −direction. It is sampled as an area light is, with
+//! the same two s × s grids and the same jitter, each jittered point (s, t) of the unit
+//! square carried onto the cone by `scene::SunDisc::direction` (Shirley–Chiu's concentric
+//! map onto the disc, then the cap uniformly in solid angle: 1 − cos θ = r² (1 − cos α/2)),
+//! so the strata stay strata. A sample is seen when n · ω > 0 (the part of the sun above
+//! the receiver's plane, as for an area light's points) and no caster lies along ω; the
+//! visibility is again (a + b) / 2s², with the same standard error. The hard mask is w's
+//! ray, the same as a hard directional light's. Its cost, measured at 512² and 242
+//! samples: `assets/sunlight.toml`, 41.5 M shadow rays in 1.5–1.7 s on 2 cores, against
+//! 1.0–1.1 s for the same count under `assets/soft.toml`'s area light; a sun of 10⁻⁴°
+//! over the same scene takes as long, so the spread of the directions costs nothing — the
+//! map itself is ≈ 13 ns a sample (sin_cos, one root).
+//!
 //! **The truth's own error.** A and B are independent unbiased estimates of the same
 //! visibility V, so E[((A − B)/2)²] = (Var A + Var B)/4 = Var((A + B)/2): the per-pixel
 //! (A − B)²/4 is an unbiased estimate of the squared error of the visibility given, and
@@ -157,7 +171,8 @@ impl Timings {
     }
 }
 
-/// How an area light's visibility was sampled, and how close it is to the exact one.
+/// How an area light's (or a sun's) visibility was sampled, and how close it is to the
+/// exact one.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AreaEstimate {
     /// Each of the two stratified grids is `side` × `side`.
@@ -187,7 +202,8 @@ pub struct Truth {
     pub triangles: usize,
     pub primary_rays: u64,
     pub shadow_rays: u64,
-    /// For an area light: the sampling and its standard error; `None` otherwise.
+    /// For an area light or a sun: the sampling and its standard error; `None` otherwise
+    /// (its presence is what makes a scene judged by visibility).
     pub area: Option<AreaEstimate>,
 }
 
@@ -296,7 +312,8 @@ pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError>
     };
     let shadow = start.elapsed();
 
-    let area = matches!(emitter, Emitter::Area { .. }).then(|| AreaEstimate {
+    let soft = matches!(emitter, Emitter::Area { .. } | Emitter::Sun(_));
+    let area = soft.then(|| AreaEstimate {
         side,
         standard_error: tally.standard_error(side),
         geometry_pixels: tally.geometry_pixels,
@@ -320,8 +337,8 @@ pub fn truth(scene: &Scene, options: &TruthOptions) -> Result<Truth, TruthError>
     })
 }
 
-/// The light `light` of the scene as the shader sees it (an area light whole; its centre
-/// is the hard mask's point).
+/// The light `light` of the scene as the shader sees it (an area light or a sun whole; its
+/// centre is the hard mask's point or direction).
 fn emitter(scene: &Scene, light: usize) -> Result<Emitter, TruthError> {
     Ok(match scene.lights.get(light) {
         None if scene.lights.is_empty() && light == 0 => Emitter::None,
@@ -332,9 +349,10 @@ fn emitter(scene: &Scene, light: usize) -> Result<Emitter, TruthError> {
             })
         }
         Some(light) => match (light.kind, light.position()) {
-            (LightKind::Directional { direction }, _) => {
-                Emitter::Directional(-direction.normalize())
-            }
+            (LightKind::Directional { direction, .. }, _) => match light.sun() {
+                Some(sun) => Emitter::Sun(sun),
+                None => Emitter::Directional(-direction.normalize()),
+            },
             (
                 LightKind::Area {
                     corner,

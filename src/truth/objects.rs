@@ -6,7 +6,8 @@
 //! traced again exactly as `truth` traces them (same ray, same BVH, same hit point and
 //! flipped normal), and only the mask's shadowed pixels that face the light get one more
 //! shadow ray — against a BVH of the pixel's own object alone, from the same origin
-//! p + ε n towards the same point (the light, or an area light's centre). A hit there
+//! p + ε n towards the same point (the light, or an area light's centre; the direction,
+//! or a sun's centre). A hit there
 //! means the object shadows itself, whatever else also blocks the light; no hit means
 //! only other objects do. An object that does not cast cannot shadow itself that way.
 
@@ -34,6 +35,7 @@ pub fn shadow_causes(scene: &Scene, light: usize, mask: &Mask) -> Result<ShadowC
         Emitter::Point(q) => Some(Toward::Point(q)),
         Emitter::Directional(d) => Some(Toward::Direction(d)),
         Emitter::Area { corner, u, v } => Some(Toward::Point(corner + 0.5 * (u + v))),
+        Emitter::Sun(sun) => Some(Toward::Direction(sun.towards)),
     };
     let n = w as usize * h as usize;
     let mut causes = ShadowCauses {

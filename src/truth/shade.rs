@@ -1,11 +1,13 @@
 //! The shadow phase, one image row at a time: each pixel's primary hit, the light's
-//! samples it faces, their shadow rays gathered into packets of [`LANES`] (one pixel's
-//! samples share an origin; consecutive pixels share a point light), and the counts each
-//! packet's answer adds to its pixels. Counts are integers, so the result does not depend
-//! on how rows are spread over threads.
+//! samples it faces (points of an area light, directions of a sun's disc), their shadow
+//! rays gathered into packets of [`LANES`] (one pixel's samples share an origin;
+//! consecutive pixels share a point light), and the counts each packet's answer adds to
+//! its pixels. Counts are integers, so the result does not depend on how rows are spread
+//! over threads.
 
 use super::accel::{Accel, LaneMask, Packet, LANES};
 use crate::metrics::{BACKGROUND, LIT, SHADOWED};
+use crate::scene::SunDisc;
 use glam::Vec3;
 
 /// Where the light is, as seen from a point.
@@ -14,7 +16,13 @@ pub(super) enum Emitter {
     None,
     Point(Vec3),
     Directional(Vec3),
-    Area { corner: Vec3, u: Vec3, v: Vec3 },
+    Area {
+        corner: Vec3,
+        u: Vec3,
+        v: Vec3,
+    },
+    /// A directional light with a disc: its centre's direction is the hard mask's.
+    Sun(SunDisc),
 }
 
 /// The primary hit of a pixel: the point and the leaf-order triangle of the primary BVH,
@@ -54,8 +62,8 @@ struct Surface {
     receives: bool,
 }
 
-/// What a shadow ray counts towards: the hard mask's ray (to the point light, or the area
-/// light's centre) or a sample of grid A or B.
+/// What a shadow ray counts towards: the hard mask's ray (to the point light, the area
+/// light's centre or the sun's) or a sample of grid A or B.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 enum Role {
     #[default]
@@ -119,7 +127,7 @@ pub(super) struct Shader<'a> {
     pub emitter: Emitter,
     /// The shadow-ray offset ε.
     pub epsilon: f32,
-    /// Each area-light grid is side × side.
+    /// Each area-light (or sun) grid is side × side.
     pub side: u32,
     pub seed: u32,
 }
@@ -166,7 +174,19 @@ impl Shader<'_> {
                 self.row_hard(Some(Toward::Direction(d)), hits, mask, visibility, scratch)
             }
             Emitter::Area { corner, u, v } => {
-                return self.row_area((corner, u, v), first, hits, mask, visibility, scratch)
+                let centre = Toward::Point(corner + 0.5 * (u + v));
+                // The sample at (s, t) of the unit square: corner + s·u + t·v.
+                let sample = |s: f32, t: f32| Toward::Point(corner + u * s + v * t);
+                let out = (mask, visibility);
+                return self.row_soft(centre, sample, first, hits, out, scratch);
+            }
+            Emitter::Sun(sun) => {
+                let centre = Toward::Direction(sun.towards);
+                // The sample at (s, t): the concentric map onto the disc, then the cap
+                // (`scene::sun`).
+                let sample = |s: f32, t: f32| Toward::Direction(sun.direction(s, t));
+                let out = (mask, visibility);
+                return self.row_soft(centre, sample, first, hits, out, scratch);
             }
         }
         Tally {
@@ -207,22 +227,22 @@ impl Shader<'_> {
         self.flush(scratch, &mut out);
     }
 
-    /// A row lit by an area light: the centre's ray for the mask, and each grid's samples
+    /// A row lit by an area light or a sun: the centre's ray for the mask, and each grid's
+    /// samples — `sample(s, t)` for (s, t) jittered in the cells of the unit square —
     /// counted per pixel.
-    fn row_area(
+    fn row_soft(
         &self,
-        (corner, u, v): (Vec3, Vec3, Vec3),
+        centre: Toward,
+        sample: impl Fn(f32, f32) -> Toward,
         first: u32,
         hits: &[Hit],
-        mask: &mut [u8],
-        visibility: &mut [f32],
+        (mask, visibility): (&mut [u8], &mut [f32]),
         scratch: &mut Scratch,
     ) -> Tally {
         let mut counts = std::mem::take(&mut scratch.counts);
         counts.clear();
         counts.resize(hits.len(), [0; 3]);
         let mut record = Counted(&mut counts);
-        let centre = corner + 0.5 * (u + v);
         let side = self.side;
         let cell = 1.0 / side as f32;
         for (x, hit) in hits.iter().enumerate() {
@@ -230,22 +250,15 @@ impl Shader<'_> {
                 continue;
             };
             let x = x as u32;
-            self.cast(
-                &surface,
-                Toward::Point(centre),
-                (x, Role::Centre),
-                scratch,
-                &mut record,
-            );
+            self.cast(&surface, centre, (x, Role::Centre), scratch, &mut record);
             for (grid, role) in [(0, Role::GridA), (1, Role::GridB)] {
                 let stream = self.seed.wrapping_mul(2).wrapping_add(grid);
                 let base = pixel_hash(stream, first + x);
                 for b in 0..side {
                     for a in 0..side {
                         let (ja, jb) = jitter(base, b * side + a);
-                        let q =
-                            corner + u * ((a as f32 + ja) * cell) + v * ((b as f32 + jb) * cell);
-                        self.cast(&surface, Toward::Point(q), (x, role), scratch, &mut record);
+                        let q = sample((a as f32 + ja) * cell, (b as f32 + jb) * cell);
+                        self.cast(&surface, q, (x, role), scratch, &mut record);
                     }
                 }
             }
@@ -343,7 +356,7 @@ impl Record for Written<'_> {
     }
 }
 
-/// An area light's row: answers counted per pixel and role.
+/// An area light's or a sun's row: answers counted per pixel and role.
 struct Counted<'a>(&'a mut [[u32; 3]]);
 
 impl Record for Counted<'_> {

@@ -135,6 +135,7 @@ fn sphere_terminator_is_where_n_dot_l_is_zero() {
     let light = Light {
         kind: LightKind::Directional {
             direction: -Vec3::X,
+            angular_diameter: 0.0,
         },
         view: Camera {
             eye: Vec3::new(10.0, 0.0, 0.0),
@@ -661,6 +662,7 @@ fn a_light_straight_down_casts_its_shadow() {
     let mut light = point_light(Vec3::new(0.0, 8.0, 0.0));
     light.kind = LightKind::Directional {
         direction: -Vec3::Y,
+        angular_diameter: 0.0,
     };
     let mut scene = top_down(32, 4.0, vec![light], vec![ground, occluder]);
     scene.camera.eye = Vec3::new(0.0, 3.0, 0.0);
@@ -760,6 +762,7 @@ fn torus_over_ground(with_ground: bool) -> Scene {
     let mut light = point_light(Vec3::new(0.0, 8.0, 0.0));
     light.kind = LightKind::Directional {
         direction: Vec3::new(-1.0, -0.08, 0.1).normalize(),
+        angular_diameter: 0.0,
     };
     let objects = if with_ground {
         vec![ground, torus]
