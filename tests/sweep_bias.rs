@@ -1,7 +1,8 @@
 //! `fixedfunc sweep-bias` end to end on real EGL contexts at small sizes: a cell equals a
 //! `render` with its offset (the first cell, made by a fresh session, and a later one,
 //! made after `Session::restage`), the best cell is no worse than any other, formats a
-//! technique cannot use are skipped with the reason, and bad ranges are refused clearly.
+//! technique cannot use are skipped with the reason, and bad ranges and techniques that read
+//! no polygon offset are refused clearly.
 
 use std::path::Path;
 use std::process::{Command, Output};
@@ -518,5 +519,34 @@ fn the_page_links_every_cell_to_its_image_mask_and_error_image_and_every_link_re
             format!("heatmap-emulate-24-round{n}.png")
         };
         assert!(targets.contains(&name), "{name}");
+    }
+}
+
+#[test]
+fn a_technique_that_reads_no_polygon_offset_is_refused_before_the_folder_is_touched() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("sweep");
+    for technique in ["occluder-planes", "projective"] {
+        let run = fixedfunc(&[
+            "sweep-bias",
+            "--technique",
+            technique,
+            "--factor",
+            "0..2:3",
+            "--units",
+            "0..4:3",
+            "--size",
+            "64x64",
+            "--out",
+            arg(&out),
+        ]);
+        assert!(!run.status.success(), "{technique} swept");
+        let err = text(&run.stderr);
+        assert!(
+            err.contains(&format!("`{technique}` reads no polygon offset"))
+                && err.contains("depth-compare"),
+            "{technique}: {err}"
+        );
+        assert!(!out.exists(), "{technique}: the folder was made");
     }
 }

@@ -458,16 +458,7 @@ impl Context {
     /// attribute or a vertex yields no command.
     #[inline]
     pub fn attribute_in_pair(&mut self, entry: Entry, args: &[CArg]) -> bool {
-        let Some(form) = entry.attrib_call() else {
-            return false;
-        };
-        if !self.client.immediate.is_open() || self.client.lists.compiling().is_some() {
-            return false;
-        }
-        match super::vertex_calls::read(form, args) {
-            Some((unit, c)) => self.client.immediate.in_pair(form.attrib, unit, c),
-            None => false,
-        }
+        super::vertex_calls::in_pair(&mut self.client, entry, args)
     }
 
     fn execute(&mut self, cmd: &Command) {

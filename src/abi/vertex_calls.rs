@@ -12,9 +12,28 @@
 //! way, which gives the error.
 
 use super::cargs::{read_elements, CArg};
-use crate::ff::api::{Attrib, AttribCall};
+use crate::ff::api::{Attrib, AttribCall, Entry};
+use crate::ff::front::Client;
 use crate::ff::glenum::Family;
 use crate::ff::immediate::{component, DEFAULT_COMPONENTS};
+
+/// A vertex-attribute call inside glBegin/glEnd, straight into `client`'s open pair;
+/// `false` when the call takes the general path (`Client::call`): not an attribute call,
+/// no pair open, a list being compiled (which keeps the call), or arguments [`read`] does
+/// not take. Inside the pair an attribute or a vertex yields no command.
+#[inline]
+pub fn in_pair(client: &mut Client, entry: Entry, args: &[CArg]) -> bool {
+    let Some(form) = entry.attrib_call() else {
+        return false;
+    };
+    if !client.immediate.is_open() || client.lists.compiling().is_some() {
+        return false;
+    }
+    match read(form, args) {
+        Some((unit, c)) => client.immediate.in_pair(form.attrib, unit, c),
+        None => false,
+    }
+}
 
 /// The call's unit (glMultiTexCoord; 0 otherwise) and components; `None` to take the
 /// general path.

@@ -17,10 +17,17 @@
 //! Placement: instance i stands at (x, h, z) with x, z uniform in ±`SPREAD` and h in
 //! [3, 9] at every scale (×10 aircraft overlap and fill the image), turned by a uniform yaw and a bank within ±20°, from a 32-bit LCG
 //! (Numerical Recipes' constants) seeded with `SEED`.
+//!
+//! His CPU-limit test ([`measure_submissions`]): the ×1 fleets drawn by `SUBMITTED` with
+//! the aircraft (and the ground) submitted through each of GL's doors (`Submission`,
+//! `render::submission`): immediate mode, a display list per object compiled once, and
+//! the buffers every other row uses. Only the sessions of one fleet size are open at a
+//! time (six contexts, not thirty): the comparison is within a row, whose frames are
+//! interleaved as above.
 
 use crate::scene::{Object, OccluderProgram, Rotation, Scene, SceneError};
 use crate::stats::Summary;
-use crate::vocab::{Named, PipelineKind, TechniqueId};
+use crate::vocab::{Named, PipelineKind, Submission, TechniqueId};
 use glam::Vec3;
 use serde::Serialize;
 use std::path::Path;
@@ -74,6 +81,17 @@ pub const ENTRANTS: [Entrant; 5] = [
     Entrant::plain(TechniqueId::DepthCompare),
     Entrant::plain(TechniqueId::Projective),
 ];
+/// The columns of the CPU-limit test: one pass against two.
+pub const SUBMITTED: [Entrant; 2] = [
+    Entrant::planes(OccluderProgram::FixedFunction),
+    Entrant::plain(TechniqueId::DepthCompare),
+];
+/// The doors compared, in the table's order.
+pub const SUBMISSIONS: [Submission; 3] = [
+    Submission::Immediate,
+    Submission::DisplayList,
+    Submission::Buffers,
+];
 /// The aircraft's scale against the scene file's: as given, fill-limited, vertex-limited.
 pub const SCALES: [f32; 3] = [1.0, 10.0, 0.01];
 /// Half the side of the square the instances stand over, in scene units (metres).
@@ -100,6 +118,8 @@ pub struct ColemanRow {
     pub technique: TechniqueId,
     /// `occluder-planes`' form (`fixed-function`, `generic`, `coleman`); none for the others.
     pub program: Option<&'static str>,
+    /// How the objects' draws were submitted (buffers outside the CPU-limit test).
+    pub submission: Submission,
     pub instances: usize,
     pub scale: f32,
     pub triangles: usize,
@@ -112,6 +132,7 @@ pub struct ColemanRow {
 pub struct ColemanSkipped {
     pub technique: TechniqueId,
     pub program: Option<&'static str>,
+    pub submission: Submission,
     pub instances: usize,
     pub scale: f32,
     pub reason: String,
@@ -160,80 +181,151 @@ pub fn measure(
     repeats: usize,
     mut tick: impl FnMut(),
 ) -> Result<(Vec<ColemanRow>, Vec<ColemanSkipped>), ColemanError> {
-    let mut rows = Vec::new();
-    let mut skipped = Vec::new();
-    let frames = repeats.max(1) + 1;
+    let mut results = (Vec::new(), Vec::new());
     for scale in SCALES {
         let mut lanes = Vec::new();
         for instances in INSTANCES {
             let mut scene = fleet(instances, scale)?;
-            let triangles = scene.objects.iter().map(|o| o.mesh.triangle_count()).sum();
             for entrant in ENTRANTS.into_iter().filter(|e| e.takes(instances)) {
-                let technique = entrant.technique;
-                let program = entrant.program.map(|p| p.name());
-                scene.shadow.occluder_program = entrant.program.unwrap_or_default();
-                let options = RenderOptions {
-                    pipeline: PipelineKind::Emulate,
-                    technique: Some(technique),
-                    size: Some(ImageSize {
-                        width: 512,
-                        height: 512,
-                    }),
-                    remake_maps: RemakeMaps::Always,
-                    ..RenderOptions::default()
+                let to = Column {
+                    entrant,
+                    submission: Submission::Buffers,
+                    instances,
+                    scale,
                 };
-                match Session::new(&scene, &options) {
-                    Ok(session) => {
-                        lanes.push((entrant, instances, triangles, session, vec![]));
-                    }
-                    Err(e) => skipped.push(ColemanSkipped {
-                        technique,
-                        program,
-                        instances,
-                        scale,
-                        reason: e.to_string(),
-                    }),
-                }
+                lanes.extend(open(&mut scene, to, &mut results.1));
             }
         }
-        for _ in 0..frames {
-            let mut failed = Vec::new();
-            for (i, (entrant, instances, _, session, ms)) in lanes.iter_mut().enumerate() {
-                match session.frame() {
-                    Ok(t) => ms.push(t),
-                    Err(e) => {
-                        skipped.push(ColemanSkipped {
-                            technique: entrant.technique,
-                            program: entrant.program.map(|p| p.name()),
-                            instances: *instances,
-                            scale,
-                            reason: e.to_string(),
-                        });
-                        failed.push(i);
-                    }
-                }
+        interleave(lanes, repeats, &mut tick, &mut results);
+    }
+    Ok(results)
+}
+
+/// The CPU-limit test: `SUBMITTED` on the ×1 fleets of `instances` aircraft through every
+/// door of `SUBMISSIONS`, one fleet size at a time; `tick` after each round.
+pub fn measure_submissions(
+    repeats: usize,
+    instances: &[usize],
+    mut tick: impl FnMut(),
+) -> Result<(Vec<ColemanRow>, Vec<ColemanSkipped>), ColemanError> {
+    let mut results = (Vec::new(), Vec::new());
+    for &n in instances {
+        let mut scene = fleet(n, 1.0)?;
+        let mut lanes = Vec::new();
+        for entrant in SUBMITTED.into_iter().filter(|e| e.takes(n)) {
+            for submission in SUBMISSIONS {
+                let to = Column {
+                    entrant,
+                    submission,
+                    instances: n,
+                    scale: 1.0,
+                };
+                lanes.extend(open(&mut scene, to, &mut results.1));
             }
-            for i in failed.into_iter().rev() {
-                lanes.remove(i);
-            }
-            tick();
         }
-        for (entrant, instances, triangles, _, ms) in lanes {
-            let (Some(&cold_ms), Some(frame)) = (ms.first(), Summary::of(&ms[1..])) else {
-                continue;
-            };
-            rows.push(ColemanRow {
-                technique: entrant.technique,
-                program: entrant.program.map(|p| p.name()),
-                instances,
-                scale,
-                triangles,
-                cold_ms,
-                frame,
-            });
+        interleave(lanes, repeats, &mut tick, &mut results);
+    }
+    Ok(results)
+}
+
+/// What one session measures.
+#[derive(Clone, Copy)]
+struct Column {
+    entrant: Entrant,
+    submission: Submission,
+    instances: usize,
+    scale: f32,
+}
+
+impl Column {
+    fn skipped(self, reason: String) -> ColemanSkipped {
+        ColemanSkipped {
+            technique: self.entrant.technique,
+            program: self.entrant.program.map(|p| p.name()),
+            submission: self.submission,
+            instances: self.instances,
+            scale: self.scale,
+            reason,
         }
     }
-    Ok((rows, skipped))
+}
+
+/// One open session and its frame times.
+struct Lane {
+    to: Column,
+    triangles: usize,
+    session: Session,
+    ms: Vec<f64>,
+}
+
+/// The session of `to` on `scene` (its occluder program set to the entrant's), or its
+/// failure in `skipped`.
+fn open(scene: &mut Scene, to: Column, skipped: &mut Vec<ColemanSkipped>) -> Option<Lane> {
+    scene.shadow.occluder_program = to.entrant.program.unwrap_or_default();
+    let options = RenderOptions {
+        pipeline: PipelineKind::Emulate,
+        technique: Some(to.entrant.technique),
+        size: Some(ImageSize {
+            width: 512,
+            height: 512,
+        }),
+        remake_maps: RemakeMaps::Always,
+        submission: to.submission,
+        ..RenderOptions::default()
+    };
+    match Session::new(scene, &options) {
+        Ok(session) => Some(Lane {
+            to,
+            triangles: scene.objects.iter().map(|o| o.mesh.triangle_count()).sum(),
+            session,
+            ms: Vec::new(),
+        }),
+        Err(e) => {
+            skipped.push(to.skipped(e.to_string()));
+            None
+        }
+    }
+}
+
+/// `repeats` + 1 frames of every lane, round-robin (`tick` after each round); a row per
+/// lane: the first frame cold, the others summarised.
+fn interleave(
+    mut lanes: Vec<Lane>,
+    repeats: usize,
+    tick: &mut impl FnMut(),
+    (rows, skipped): &mut (Vec<ColemanRow>, Vec<ColemanSkipped>),
+) {
+    for _ in 0..repeats.max(1) + 1 {
+        lanes.retain_mut(|lane| match lane.session.frame() {
+            Ok(t) => {
+                lane.ms.push(t);
+                true
+            }
+            Err(e) => {
+                skipped.push(lane.to.skipped(e.to_string()));
+                false
+            }
+        });
+        tick();
+    }
+    for lane in lanes {
+        let (Some(&cold_ms), Some(frame)) =
+            (lane.ms.first(), lane.ms.get(1..).and_then(Summary::of))
+        else {
+            continue;
+        };
+        let to = lane.to;
+        rows.push(ColemanRow {
+            technique: to.entrant.technique,
+            program: to.entrant.program.map(|p| p.name()),
+            submission: to.submission,
+            instances: to.instances,
+            scale: to.scale,
+            triangles: lane.triangles,
+            cold_ms,
+            frame,
+        });
+    }
 }
 
 /// x ← 1664525 x + 1013904223 (mod 2³²).

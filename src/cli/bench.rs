@@ -1,10 +1,11 @@
 //! `fixedfunc bench`: repeated timings with medians, a progress bar while they run.
 
 use fixedfunc::bench::abi::{self, AbiError, AbiMode, AbiRow, Heap, Verdict};
+use fixedfunc::bench::coleman::{ColemanRow, Entrant, INSTANCES};
 use fixedfunc::bench::pipeline::BenchError;
 use fixedfunc::bench::{context, pipeline, BenchGroup};
 use fixedfunc::gpu::{Backend, Profile, VirtualDisplay};
-use fixedfunc::vocab::Named;
+use fixedfunc::vocab::{Named, Submission};
 use std::io::IsTerminal;
 
 use indicatif::ProgressBar;
@@ -212,14 +213,22 @@ fn run_truth(runs: usize, json: bool) -> Result<(), CliError> {
 }
 
 fn run_coleman(repeats: usize, json: bool) -> Result<(), CliError> {
-    use fixedfunc::bench::coleman::{self, ENTRANTS, INSTANCES, SCALES, SPREAD};
-    let rounds = SCALES.len() as u64 * (repeats.max(1) as u64 + 1);
+    use fixedfunc::bench::coleman::{self, ENTRANTS, SCALES, SPREAD, SUBMISSIONS, SUBMITTED};
+    let frames = repeats.max(1) as u64 + 1;
+    let rounds = (SCALES.len() + INSTANCES.len()) as u64 * frames;
     let mut bar = CountBar::new("bench coleman", rounds, "rounds");
     bar.set_what("fleets of F-35s, interleaved".into());
-    let (rows, skipped) = coleman::measure(repeats, || bar.inc())?;
+    let (rows, mut skipped) = coleman::measure(repeats, || bar.inc())?;
+    bar.set_what("immediate mode, display lists, buffers".into());
+    let (submissions, also) = coleman::measure_submissions(repeats, &INSTANCES, || bar.inc())?;
+    skipped.extend(also);
     bar.finish();
     if json {
-        let value = serde_json::json!({ "rows": rows, "skipped": skipped });
+        let value = serde_json::json!({
+            "rows": rows,
+            "submissions": submissions,
+            "skipped": skipped,
+        });
         outln!("{}", serde_json::to_string_pretty(&value)?)?;
         return Ok(());
     }
@@ -228,51 +237,73 @@ fn run_coleman(repeats: usize, json: bool) -> Result<(), CliError> {
         coleman::SEED,
         repeats.max(1)
     )?;
-    let mut header = format!("{:<7} {:>9} {:>10}", "scale", "aircraft", "triangles");
-    for e in ENTRANTS {
-        header.push_str(&format!(" {:>30}", e.label()));
-    }
-    outln!("{header}")?;
-    for scale in SCALES {
-        for instances in INSTANCES {
-            let cells: Vec<String> = ENTRANTS
-                .iter()
-                .map(|e| {
-                    rows.iter()
-                        .find(|r| {
-                            r.technique == e.technique
-                                && r.program == e.program.map(|p| p.name())
-                                && r.instances == instances
-                                && r.scale == scale
-                        })
-                        .map_or("—".to_string(), |r| {
-                            format!(
-                                "{:.2} [{:.2}–{:.2}]",
-                                r.frame.median, r.frame.min, r.frame.max
-                            )
-                        })
-                })
-                .collect();
-            let triangles = rows
-                .iter()
-                .find(|r| r.instances == instances && r.scale == scale)
-                .map_or(0, |r| r.triangles);
-            let mut line = format!("×{scale:<6} {instances:>9} {triangles:>10}");
-            for cell in &cells {
-                line.push_str(&format!(" {cell:>30}"));
-            }
-            outln!("{line}")?;
-        }
-    }
+    let columns: Vec<_> = ENTRANTS.iter().map(|e| (e.label(), *e, None)).collect();
+    coleman_table(&rows, &columns, &SCALES)?;
+    outln!()?;
+    outln!(
+        "coleman, his CPU-limit test: the ×1 fleets with the objects submitted in immediate mode (glBegin/glNormal3f/glVertex3f/glEnd), display lists (compiled once, glCallList) and buffers, through the C library's front; interleaved per fleet; ms median [min–max]"
+    )?;
+    let columns: Vec<_> = SUBMITTED
+        .iter()
+        .flat_map(|e| SUBMISSIONS.map(|s| (format!("{} {s}", e.label()), *e, Some(s))))
+        .collect();
+    coleman_table(&submissions, &columns, &[1.0])?;
     for s in &skipped {
         outln!(
-            "skipped: {}{} with {} aircraft at ×{}: {}",
+            "skipped: {}{} ({}) with {} aircraft at ×{}: {}",
             s.technique,
             s.program.map(|p| format!("/{p}")).unwrap_or_default(),
+            s.submission,
             s.instances,
             s.scale,
             s.reason
         )?;
+    }
+    Ok(())
+}
+
+/// One table of `bench --only coleman`: a line per scale and fleet, a cell per column (its
+/// label, its entrant and, for the CPU-limit test, its submission).
+fn coleman_table(
+    rows: &[ColemanRow],
+    columns: &[(String, Entrant, Option<Submission>)],
+    scales: &[f32],
+) -> Result<(), CliError> {
+    let widths: Vec<usize> = columns
+        .iter()
+        .map(|(label, ..)| label.chars().count().max(30))
+        .collect();
+    let mut header = format!("{:<7} {:>9} {:>10}", "scale", "aircraft", "triangles");
+    for ((label, ..), w) in columns.iter().zip(&widths) {
+        header.push_str(&format!(" {label:>w$}"));
+    }
+    outln!("{header}")?;
+    for &scale in scales {
+        for instances in INSTANCES {
+            let at = |r: &&ColemanRow| r.instances == instances && r.scale == scale;
+            let mut line = format!(
+                "×{scale:<6} {instances:>9} {:>10}",
+                rows.iter().find(at).map_or(0, |r| r.triangles)
+            );
+            for ((_, e, s), w) in columns.iter().zip(&widths) {
+                let cell = rows
+                    .iter()
+                    .filter(at)
+                    .find(|r| {
+                        r.technique == e.technique
+                            && r.program == e.program.map(|p| p.name())
+                            && s.is_none_or(|s| r.submission == s)
+                    })
+                    .map_or("—".to_string(), |r| {
+                        format!(
+                            "{:.2} [{:.2}–{:.2}]",
+                            r.frame.median, r.frame.min, r.frame.max
+                        )
+                    });
+                line.push_str(&format!(" {cell:>w$}"));
+            }
+            outln!("{line}")?;
+        }
     }
     Ok(())
 }

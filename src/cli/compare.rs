@@ -1,6 +1,6 @@
 //! `fixedfunc compare`: every technique × pipeline on one scene, frames interleaved, one
-//! truth; prints the table and writes the report folder (HTML page, CSV, JSON, plot,
-//! contact sheet).
+//! truth; prints the table (and, for a scene of several objects, the error by object) and
+//! writes the report folder (HTML page, CSVs, JSON, plot, contact sheet).
 
 use std::path::PathBuf;
 
@@ -82,8 +82,9 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
     let comparison = comparison?;
     let name = scene_arg::name(args.scene.as_deref());
     let written = report::write_comparison(&comparison, &name, &args.out)?;
-    let rows = report::ResultRow::all(&comparison.rows);
+    let rows = report::ResultRow::all(&comparison.rows, &comparison.scene);
     out!("{}", report::comparison_table(&rows))?;
+    out!("{}", report::objects_table(&rows))?;
     out!("{}", report::phase_lines(&comparison))?;
     outln!(
         "report {} ({} files)",

@@ -33,7 +33,8 @@ fn parse_range(text: &str) -> Result<SweepRange, String> {
 pub struct Args {
     /// Scene file (TOML); the built-in default scene when omitted.
     pub scene: Option<PathBuf>,
-    /// The technique whose bias is swept.
+    /// The technique whose bias is swept: one that reads the polygon offset (a shadow-map
+    /// technique); any other is refused, its cells would all score the same mask.
     #[arg(long, value_parser = technique_parser())]
     pub technique: TechniqueId,
     /// glPolygonOffset factors: A..B[:STEPS] (5 steps when omitted) or one number.
@@ -77,8 +78,6 @@ pub struct Args {
 
 pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
     let mut scene = scene_arg::load(args.scene.as_deref(), limits)?;
-    // The folder must take files before the study runs, not after.
-    report::check_output_dir(&args.out)?;
     ShadowArgs {
         map_size: args.map_size,
         precision: args.precision,
@@ -102,6 +101,10 @@ pub fn run(args: Args, limits: Limits) -> Result<(), CliError> {
         size: args.size,
         refine: args.refine.map(|max_rounds| Refine { max_rounds }),
     };
+    // Refused before the folder is touched; the folder must take files before the study
+    // runs, not after.
+    spec.check()?;
+    report::check_output_dir(&args.out)?;
     // The old page goes before the first picture is written.
     let mut pictures = SweepPictures::begin(&args.out)?;
     let mut bar = StudyBar::new("sweep-bias", Estimate::FromSecondUnit);

@@ -42,6 +42,7 @@ pub mod pass_images;
 pub mod rounds;
 mod session;
 mod size;
+mod submission;
 
 pub use budget::{
     Footprint, OverBudget, CAPTURE_BYTES_PER_PIXEL, OBJECT_BYTES, SESSION_BYTES,
@@ -50,7 +51,7 @@ pub use budget::{
 pub use figures::{error_text, Figures};
 pub use light_map::{LightMap, MapTexels};
 pub use motion::{Orbit, OrbitTarget, Turn, MAX_ELEVATION};
-pub use objects::{object_line, object_lines, object_name};
+pub use objects::{object_causes, object_line, object_lines, object_name, object_split};
 pub use options::{apply_overrides, RemakeMaps, RenderOptions};
 pub use outcome::{FrameTimings, PassTime, RenderOutcome, VisibilityOutcome, VisibilitySource};
 pub use pass_images::{AlphaBeforeTest, Corner, PassImage, PassImages};

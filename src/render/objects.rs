@@ -7,11 +7,42 @@
 //! occluder 40 of 450) · from others wrong 0.00% (0 of 0 px) · lit wrong 0.40% (12 of
 //! 3000 px)` — one line per object that shows in the image, in scene order. An object
 //! without a name is called by its index and shape.
+//!
+//! The split is made in two steps so that a study judging many masks against one truth
+//! traces the causes once: [`object_causes`] (one extra shadow ray per shadowed pixel that
+//! faces the light) and [`object_split`] (one pass over the pixels). A scene of one object
+//! has no split: its one line would only repeat the figures line.
 
 use crate::metrics::{per_object, Mask, ObjectErrors, ShadowCauses};
 use crate::scene::{Scene, Shape};
+use crate::truth::{self, TruthError};
 
 use super::RenderError;
+
+/// Why each pixel of `truth`, the truth mask of `scene` for its light `light`, is lit or
+/// shadowed, by object; `None` for a scene of one object (no split).
+pub fn object_causes(
+    scene: &Scene,
+    light: usize,
+    truth: &Mask,
+) -> Result<Option<ShadowCauses>, TruthError> {
+    if scene.objects.len() < 2 {
+        return Ok(None);
+    }
+    truth::shadow_causes(scene, light, truth).map(Some)
+}
+
+/// Each object's share of `mask`'s errors against the truth `causes` were made from
+/// (`metrics::per_object`); empty without causes.
+pub fn object_split(
+    mask: &Mask,
+    causes: Option<&ShadowCauses>,
+) -> Result<Vec<ObjectErrors>, RenderError> {
+    Ok(match causes {
+        Some(causes) => per_object(mask, causes)?,
+        None => Vec::new(),
+    })
+}
 
 /// The per-object split of `mask`'s errors, one line each (see the module note).
 pub fn object_lines(

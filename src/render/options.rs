@@ -7,7 +7,7 @@
 use crate::gpu::Backend;
 use crate::scene::Scene;
 use crate::truth::TruthOptions;
-use crate::vocab::{PipelineKind, TechniqueId};
+use crate::vocab::{PipelineKind, Submission, TechniqueId};
 
 use super::{ImageSize, Orbit};
 
@@ -34,6 +34,9 @@ pub struct RenderOptions {
     pub depth_map: bool,
     /// Something moving from frame to frame (`None`: a static scene).
     pub orbit: Option<Orbit>,
+    /// How the objects' draws reach the pipeline (`render::submission`): through the C
+    /// library's front in immediate mode or display lists, or from buffers as planned.
+    pub submission: Submission,
 }
 
 impl Default for RenderOptions {
@@ -50,6 +53,7 @@ impl Default for RenderOptions {
             pass_times: false,
             depth_map: false,
             orbit: None,
+            submission: Submission::Buffers,
         }
     }
 }

@@ -6,7 +6,9 @@
 //! display is set), the framebuffer the plan asks for (RGBA8, the light's depth bits,
 //! stencil when a technique uses it; large enough for the image and the light's map, which
 //! share it as on the era's hardware) and the pipeline (`pipeline::create_with`, the only
-//! code naming a concrete path), then executes the plan's setup once.
+//! code naming a concrete path; behind the C library's front when the objects are
+//! submitted in immediate mode or display lists: `render::submission`), then executes the
+//! plan's setup once.
 //!
 //! [`Session::frame`] is timed from its first command to glFinish returning, so the
 //! driver's work is inside the figure. Frame 1 is *cold* (programs compiled, buffers
@@ -19,7 +21,9 @@
 //! (the image's corner of the framebuffer) and the light's map when asked, takes the
 //! counters, releases the GL objects, and judges the mask against the truth — and, for an
 //! area light, the visibility too (a soft technique's accumulated one, a hard technique's
-//! mask as 0 or 1: `metrics::visibility_errors`).
+//! mask as 0 or 1: `metrics::visibility_errors`) and, for a scene of several objects, the
+//! error by object (`render::object_split`; a study traces the truth's causes once and
+//! hands them to every [`Session::finish_with_causes`]).
 //!
 //! **The accumulation buffer.** A plan whose commands use it (`Plan::needs_accumulation`)
 //! gets one of the framebuffer's size. The emulated path keeps it beside the context and
@@ -37,7 +41,7 @@ use image::RgbaImage;
 use crate::gpu::{
     Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay, WindowBuffer,
 };
-use crate::metrics::{Mask, VisibilityImage};
+use crate::metrics::{Mask, ShadowCauses, VisibilityImage};
 use crate::pipeline::{Pipeline, PipelineError};
 use crate::scene::{Scene, ShadowSettings};
 use crate::techniques::{self, Pass, Plan, Prepared};
@@ -157,12 +161,14 @@ impl Session {
             }
         };
         let precision = scene.shadow.precision;
-        let mut pipeline = if accumulation {
+        let pipeline = if accumulation {
             let size = (fb.width, fb.height);
             crate::pipeline::create_with_accumulation(options.pipeline, &ctx, precision, size)?
         } else {
             crate::pipeline::create_with(options.pipeline, &ctx, precision)?
         };
+        let mut pipeline =
+            super::submission::submitting(pipeline, options.submission, &prepared.objects);
         let setup = run(pipeline.as_mut(), &ctx, "setup", 0, &plan.setup);
         let pass_ms = vec![Vec::new(); plan.pass_count()];
         let mut session = Session {
@@ -328,8 +334,28 @@ impl Session {
     }
 
     /// Executes the mask plan, reads the image (and the map when asked), releases the GL
-    /// objects, and judges the mask against `truth` (ray-cast now when `None`).
-    pub fn finish(mut self, truth: Option<&Truth>) -> Result<RenderOutcome, RenderError> {
+    /// objects, and judges the mask against `truth` (ray-cast now when `None`), splitting
+    /// the error by object for a scene of several (`render::object_causes`).
+    pub fn finish(self, truth: Option<&Truth>) -> Result<RenderOutcome, RenderError> {
+        self.finish_split(truth, Split::Trace)
+    }
+
+    /// As [`finish`](Self::finish) against `truth`, with the per-object split made from
+    /// `causes`, the causes of that truth (`render::object_causes`, traced once by a study
+    /// for all its sessions); `None`: no split.
+    pub fn finish_with_causes(
+        self,
+        truth: &Truth,
+        causes: Option<&ShadowCauses>,
+    ) -> Result<RenderOutcome, RenderError> {
+        self.finish_split(Some(truth), Split::Given(causes))
+    }
+
+    fn finish_split(
+        mut self,
+        truth: Option<&Truth>,
+        split: Split<'_>,
+    ) -> Result<RenderOutcome, RenderError> {
         let gpu = self.read_results();
         // What ran it, while the context is current (`read_results` made it so).
         // SAFETY: glGetString on the current context.
@@ -349,11 +375,13 @@ impl Session {
         let mut metrics = super::judge(&mask, &truth, self.options.band)?;
         let visibility = super::judge_visibility(&mask, soft, &truth)?;
         metrics.visibility_rmse = visibility.as_ref().map(|v| v.errors.rmse);
-        let objects = if self.scene.objects.len() > 1 {
-            let causes = truth::shadow_causes(&self.scene, self.options.truth.light, &truth.mask)?;
-            crate::metrics::per_object(&mask, &causes)?
-        } else {
-            Vec::new()
+        let objects = match split {
+            Split::Trace => {
+                let light = self.options.truth.light;
+                let causes = super::object_causes(&self.scene, light, &truth.mask)?;
+                super::object_split(&mask, causes.as_ref())?
+            }
+            Split::Given(causes) => super::object_split(&mask, causes)?,
         };
         let cold_ms = self.frames_ms.first().copied().unwrap_or(0.0);
         let steady = self.frames_ms.get(1..).unwrap_or(&[]).to_vec();
@@ -486,6 +514,14 @@ impl Session {
             }
         }
     }
+}
+
+/// Where [`Session::finish`]'s per-object split gets the truth's shadow causes.
+enum Split<'a> {
+    /// Traced from the scene and the truth now.
+    Trace,
+    /// Traced already (`None`: no split).
+    Given(Option<&'a ShadowCauses>),
 }
 
 type GpuResults = (RgbaImage, (Mask, Option<VisibilityImage>), Option<LightMap>);

@@ -1,11 +1,12 @@
 //! The files of a comparison, written into one folder: per measured row its image, mask
 //! and error image, and its pass images (`SLUG-pass-NN-PASS-KIND.png` and
-//! `SLUG-pass-legend.txt`, `pass_pictures`); the truth mask; `results.csv` and `results.json`;
-//! `accuracy_vs_time.svg`/`.png`; `contact_sheet.png`; and last `report.html`, built from
-//! the list of what was written. The CSV, the JSON and the page each say what produced
-//! them (`provenance`). A `report.html` already in the folder is removed before
-//! the first new file is written: a run stopped half-way leaves new pictures and no page,
-//! never an old page that links new pictures under its old names.
+//! `SLUG-pass-legend.txt`, `pass_pictures`); the truth mask; `results.csv`, `objects.csv`
+//! (the error by object, `objects`) and `results.json`; `accuracy_vs_time.svg`/`.png`;
+//! `contact_sheet.png`; and last `report.html`, built from the list of what was written.
+//! The CSVs, the JSON and the page each say what produced them (`provenance`). A
+//! `report.html` already in the folder is removed before the first new file is written: a
+//! run stopped half-way leaves new pictures and no page, never an old page that links new
+//! pictures under its old names.
 
 use std::path::Path;
 
@@ -16,13 +17,14 @@ use crate::study::{Comparison, RowCost, RowResult};
 
 use super::csv::{line, opt};
 use super::file_names::{
-    RowFiles, CSV, HTML, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK, VISIBILITY_PLOT_PNG,
-    VISIBILITY_PLOT_SVG,
+    RowFiles, CSV, HTML, JSON, OBJECTS_CSV, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK,
+    VISIBILITY_PLOT_PNG, VISIBILITY_PLOT_SVG,
 };
 use super::pictures::{self, SheetLine};
 use super::provenance::{self, ContextStrings, Provenance};
 use super::{
-    ensure_dir, html, pass_pictures, plot, write_png, write_text, ReportError, ResultRow, Written,
+    ensure_dir, html, objects, pass_pictures, plot, write_png, write_text, ReportError, ResultRow,
+    Written,
 };
 
 /// Writes every file of the comparison into `dir` (created when missing). `scene_name`
@@ -34,7 +36,7 @@ pub fn write_comparison(
 ) -> Result<Written, ReportError> {
     ensure_dir(dir)?;
     super::files::remove_if_present(&dir.join(HTML))?;
-    let rows = ResultRow::all(&c.rows);
+    let rows = ResultRow::all(&c.rows, &c.scene);
     let produced = Provenance::of_this_process();
     let contexts = provenance::contexts(&rows);
     let mut written = Written::default();
@@ -68,6 +70,8 @@ pub fn write_comparison(
     }
 
     write_text(dir, CSV, &results_csv(c, &rows, &produced), &mut written)?;
+    let objects = objects::objects_csv(&rows, &produced);
+    write_text(dir, OBJECTS_CSV, &objects, &mut written)?;
     write_text(
         dir,
         JSON,

@@ -29,4 +29,6 @@ pub(super) const VISIBILITY_PLOT_PNG: &str = "visibility_vs_time.png";
 pub(super) const SHEET: &str = "contact_sheet.png";
 pub(super) const CSV: &str = "results.csv";
 pub(super) const JSON: &str = "results.json";
+/// One line per row × object: each object's share of the row's error.
+pub(super) const OBJECTS_CSV: &str = "objects.csv";
 pub(super) const HTML: &str = "report.html";

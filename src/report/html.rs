@@ -1,5 +1,6 @@
 //! The comparison as one HTML page: a headline (most accurate, fastest, the Pareto front),
-//! the table with bars for error and time, the plot beside the truth and the error colours,
+//! the table with bars for error and time, the error by object (a scene of several
+//! objects only), the plot beside the truth and the error colours,
 //! a card per technique × pipeline (image, mask, error image, figures, why it is right or
 //! wrong here, notes, the strip of its passes), the scene, and where the time went. Inline
 //! CSS, no scripts, no network: pictures are referred to by bare file name and only when
@@ -25,8 +26,9 @@ use crate::techniques::parts::ShadowLight;
 use crate::vocab::{Named, TechniqueId};
 
 use super::file_names::{
-    RowFiles, CSV, JSON, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK, VISIBILITY_PLOT_SVG,
+    RowFiles, CSV, JSON, OBJECTS_CSV, PLOT_PNG, PLOT_SVG, SHEET, TRUTH_MASK, VISIBILITY_PLOT_SVG,
 };
+use super::objects::{columns, share_of, Share};
 use super::pass_pictures::StripPass;
 use super::table::ms_cell;
 use super::{ResultRow, Written, ERROR_COLOURS};
@@ -116,6 +118,7 @@ pub fn page(
     );
     headline(&mut h, c, rows, scene);
     table(&mut h, rows);
+    objects_table(&mut h, rows);
     plot_and_truth(&mut h, written);
     cards(&mut h, c, rows, written, strips);
     scene_section(&mut h, facts, c);
@@ -263,6 +266,70 @@ fn table(h: &mut String, rows: &[ResultRow]) {
          (acne). Missed shadow: shadowed in the truth, lit by the technique (peter-panning). \
          The edge band excludes pixels next to the truth's shadow edges, where one pixel of \
          aliasing is expected.</p>\n",
+    );
+}
+
+/// "Error by object": one row per run, three columns per object (self-shadow, from
+/// others, lit: wrong % of the truth's pixels of that kind, the counts in the cell's
+/// title). Only for a scene of several objects: no row has a split otherwise.
+fn objects_table(h: &mut String, rows: &[ResultRow]) {
+    let columns = columns(rows);
+    if columns.is_empty() {
+        return;
+    }
+    h.push_str(
+        "<h2>Error by object</h2><div class=\"wide\"><table><tr><th class=\"name\" rowspan=\"2\">technique</th>\
+         <th class=\"name\" rowspan=\"2\">pipeline</th>",
+    );
+    for (_, name) in &columns {
+        let _ = write!(h, "<th colspan=\"3\">{}</th>", escape(name));
+    }
+    h.push_str("</tr>\n<tr>");
+    for _ in &columns {
+        h.push_str("<th>self-shadow %</th><th>from others %</th><th>lit %</th>");
+    }
+    h.push_str("</tr>\n");
+    let cell = |s: &Share| format!("<td title=\"{} of {} px\">{}</td>", s.wrong, s.of, s.cell());
+    for r in rows {
+        let name = format!(
+            "<td class=\"name\">{}</td><td class=\"name\">{}</td>",
+            escape(r.technique.name()),
+            pipeline_name(r.pipeline)
+        );
+        if r.measured.is_none() {
+            let _ = writeln!(
+                h,
+                "<tr class=\"skip\">{name}<td class=\"name\" colspan=\"{}\">skipped: {}</td></tr>",
+                3 * columns.len(),
+                escape(r.skipped.as_deref().unwrap_or("not run"))
+            );
+            continue;
+        }
+        let _ = write!(h, "<tr>{name}");
+        for (i, _) in &columns {
+            match share_of(r, *i) {
+                Some(o) => {
+                    let _ = write!(
+                        h,
+                        "{}{}{}",
+                        cell(&o.self_shadow),
+                        cell(&o.from_others),
+                        cell(&o.lit)
+                    );
+                }
+                None => h.push_str("<td>—</td><td>—</td><td>—</td>"),
+            }
+        }
+        h.push_str("</tr>\n");
+    }
+    h.push_str(
+        "</table></div><p class=\"muted\">Wrong % of the truth's pixels of each kind on each \
+         object (hover for the counts; — where the object has none). Self-shadow: the surface \
+         faces away from the light, or the object's own geometry blocks it. From others: \
+         only other objects block it. Lit: the truth lights it, and the technique shadowed it \
+         or drew background. Over the objects the counts add up to the row's wrong pixels \
+         (false shadow, missed shadow, background where the truth has geometry); \
+         <code>objects.csv</code> has them all.</p>\n",
     );
 }
 
@@ -610,7 +677,7 @@ fn scene_section(h: &mut String, facts: &[(String, String)], c: &Comparison) {
 
 fn footer(h: &mut String, c: &Comparison, written: &Written) {
     let mut links = Vec::new();
-    for name in [CSV, JSON, PLOT_PNG, SHEET] {
+    for name in [CSV, OBJECTS_CSV, JSON, PLOT_PNG, SHEET] {
         if written.contains(name) {
             links.push(format!("<a href=\"{0}\">{0}</a>", escape(name)));
         }

@@ -28,6 +28,7 @@ pub mod font;
 mod heatmap;
 mod html;
 mod light_map;
+mod objects;
 mod pass_pictures;
 mod pictures;
 mod plot;
@@ -40,6 +41,7 @@ mod table;
 pub use compare_files::write_comparison;
 pub use files::{check_output, check_output_dir, check_png_name, same_file, save_png, write_file};
 pub use light_map::{light_map_pictures, pseudo_colour};
+pub use objects::{objects_table, ObjectShare, Share};
 pub use pass_pictures::{
     legend_name, pass_pictures, stencil_colour, step_colour, write_pass_images, PassPicture,
 };

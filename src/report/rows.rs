@@ -9,8 +9,11 @@ use serde::Serialize;
 
 use crate::gpu::Backend;
 use crate::render::RenderOutcome;
+use crate::scene::Scene;
 use crate::study::{Row, RowResult};
 use crate::techniques;
+
+use super::objects::ObjectShare;
 
 /// The figures of a measured row.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -56,6 +59,9 @@ pub struct Measured {
     /// glGetString(GL_RENDERER) and (GL_VERSION) of the context the row ran on.
     pub gl_renderer: String,
     pub gl_version: String,
+    /// Each object's share of the error, in scene order; empty for a scene of one object
+    /// (`super::objects`).
+    pub objects: Vec<ObjectShare>,
 }
 
 impl Measured {
@@ -69,8 +75,9 @@ impl Measured {
 }
 
 impl Measured {
-    /// From a render outcome, through the same `figures()` `render` prints.
-    pub fn of(outcome: &RenderOutcome) -> Measured {
+    /// From a render outcome of `scene`, through the same `figures()` `render` prints
+    /// (and the same per-object split; `scene` names its objects).
+    pub fn of(outcome: &RenderOutcome, scene: &Scene) -> Measured {
         let fig = outcome.figures();
         let band = &outcome.metrics.outside_band;
         let steady = fig.timings.steady;
@@ -104,6 +111,7 @@ impl Measured {
             offset_source: fig.offset.map(|(_, source)| source),
             gl_renderer: outcome.gl_renderer.clone(),
             gl_version: outcome.gl_version.clone(),
+            objects: ObjectShare::all(scene, &outcome.objects),
         }
     }
 }
@@ -123,10 +131,10 @@ pub struct ResultRow {
 }
 
 impl ResultRow {
-    /// The study's row, not yet placed on the front.
-    pub fn of(row: &Row) -> ResultRow {
+    /// The study's row of `scene`, not yet placed on the front.
+    pub fn of(row: &Row, scene: &Scene) -> ResultRow {
         let (skipped, measured) = match &row.result {
-            RowResult::Measured { outcome, .. } => (None, Some(Measured::of(outcome))),
+            RowResult::Measured { outcome, .. } => (None, Some(Measured::of(outcome, scene))),
             RowResult::Skipped { reason } => (Some(reason.clone()), None),
         };
         ResultRow {
@@ -140,9 +148,9 @@ impl ResultRow {
         }
     }
 
-    /// Every row of a study, with the Pareto front marked.
-    pub fn all(rows: &[Row]) -> Vec<ResultRow> {
-        let mut out: Vec<ResultRow> = rows.iter().map(ResultRow::of).collect();
+    /// Every row of a study of `scene`, with the Pareto front marked.
+    pub fn all(rows: &[Row], scene: &Scene) -> Vec<ResultRow> {
+        let mut out: Vec<ResultRow> = rows.iter().map(|r| ResultRow::of(r, scene)).collect();
         let points: Vec<Option<FrontPoint>> = out
             .iter()
             .map(|r| r.measured.as_ref().map(FrontPoint::of))

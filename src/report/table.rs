@@ -163,6 +163,7 @@ mod tests {
             offset_source: Some(crate::vocab::OffsetSource::Scene),
             gl_renderer: "llvmpipe".to_string(),
             gl_version: "3.3".to_string(),
+            objects: Vec::new(),
         };
         let row = |t: TechniqueId, m: Option<super::super::Measured>| ResultRow {
             technique: t,

@@ -1,12 +1,14 @@
 //! Every chosen technique × pipeline on one scene, frames interleaved, one truth.
 //!
-//! Order of work: the truth (CPU, timed), every session's setup (context, framebuffer,
-//! programs of the setup commands), `frames` rounds of one frame per live session, then
-//! each session's `finish` with the shared truth, and for each measured row its pass images
-//! (`render::pass_images::capture`: the last frame once more in a session of its own, opened
-//! after the measured one is released, so that no measured figure counts the capture). The rounds are `render::rounds`; their
-//! rule here: a session that turns out not to apply (see [`super::not_applicable`]) at
-//! setup or at a frame leaves them and its row says why, any other failure ends the study.
+//! Order of work: the truth and, for a scene of several objects, its shadow causes by
+//! object (CPU, timed together; each row's error by object is split from them), every
+//! session's setup (context, framebuffer, programs of the setup commands), `frames` rounds
+//! of one frame per live session, then each session's `finish` with the shared truth, and
+//! for each measured row its pass images (`render::pass_images::capture`: the last frame
+//! once more in a session of its own, opened after the measured one is released, so that
+//! no measured figure counts the capture). The rounds are `render::rounds`; their rule
+//! here: a session that turns out not to apply (see [`super::not_applicable`]) at setup or
+//! at a frame leaves them and its row says why, any other failure ends the study.
 
 use crate::vocab::{PipelineKind, TechniqueId};
 use std::time::Instant;
@@ -118,7 +120,7 @@ pub struct Comparison {
     /// The scene as rendered (size override applied).
     pub scene: Scene,
     pub truth: Truth,
-    /// Wall time of the truth (ms).
+    /// Wall time of the truth and of its shadow causes by object (ms).
     pub truth_ms: f64,
     /// Rows in the order technique-major, pipeline-minor.
     pub rows: Vec<Row>,
@@ -213,6 +215,9 @@ pub fn compare(
     footprint.check(&scene.limits)?;
     let truth_start = Instant::now();
     let truth = truth::truth(&scene, &base.truth)?;
+    // Why each truth pixel is lit or shadowed, by object: traced once, every row's
+    // per-object split is made from it.
+    let causes = render::object_causes(&scene, base.truth.light, &truth.mask)?;
     let truth_ms = ms_since(truth_start);
     step("ground truth".to_string());
 
@@ -266,7 +271,7 @@ pub fn compare(
         };
         let finished = lane.session.and_then(|session| {
             let t0 = Instant::now();
-            let outcome = session.finish(Some(&truth));
+            let outcome = session.finish_with_causes(&truth, causes.as_ref());
             cost.finish_ms = ms_since(t0);
             outcome
         });

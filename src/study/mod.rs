@@ -58,6 +58,26 @@ pub enum StudyError {
     Technique(#[from] TechniqueError),
     #[error("nothing to study: no technique or no pipeline was chosen")]
     Empty,
+    /// A bias sweep of a technique whose passes read no polygon offset: every cell would
+    /// render the same mask.
+    #[error(
+        "`{technique}` reads no polygon offset (it makes no depth map of the light to \
+         offset), so every cell of the sweep would score the same mask; the techniques \
+         that read one: {}",
+        offset_techniques()
+    )]
+    NoOffset { technique: TechniqueId },
+}
+
+/// The techniques whose passes read the polygon offset, by name, comma-separated.
+fn offset_techniques() -> String {
+    use crate::vocab::Named;
+    let names: Vec<&str> = TechniqueId::all()
+        .into_iter()
+        .filter(|t| t.uses_offset())
+        .map(|t| t.name())
+        .collect();
+    names.join(", ")
 }
 
 /// Progress of a study, for progress bars and progress lines.

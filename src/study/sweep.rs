@@ -412,15 +412,30 @@ pub fn sweep_with_pictures(
     run_sweep(scene, spec, progress, Some(&mut shot))
 }
 
+impl SweepSpec {
+    /// Whether there is something to sweep: a depth format, a pipeline, and a technique
+    /// that reads the polygon offset (`TechniqueId::uses_offset`; the others would score
+    /// one mask in every cell).
+    pub fn check(&self) -> Result<(), StudyError> {
+        if self.depths.is_empty() || self.pipelines.is_empty() {
+            return Err(StudyError::Empty);
+        }
+        if !self.technique.uses_offset() {
+            return Err(StudyError::NoOffset {
+                technique: self.technique,
+            });
+        }
+        Ok(())
+    }
+}
+
 fn run_sweep(
     scene: &Scene,
     spec: &SweepSpec,
     mut progress: impl FnMut(Progress),
     mut shot: Option<&mut dyn FnMut(Shot<'_>)>,
 ) -> Result<Sweep, StudyError> {
-    if spec.depths.is_empty() || spec.pipelines.is_empty() {
-        return Err(StudyError::Empty);
-    }
+    spec.check()?;
     let start = Instant::now();
     let first_offset = offsets(spec.factor, spec.units).first().copied();
     // The work is counted in cells: the truth before them is reported as cell 0 done, and

@@ -8,6 +8,7 @@
 mod bias;
 mod depth;
 mod settings;
+mod submission;
 mod technique;
 
 pub use bias::{default_offset, offset_text, OffsetSource};
@@ -15,6 +16,7 @@ pub use depth::{short, DepthBits, DepthRule, ReadbackRule};
 pub use settings::{
     BadOffset, MapFilter, OffsetArg, PipelineKind, PlanarMode, PolygonOffset, Precision, Projector,
 };
+pub use submission::Submission;
 pub use technique::TechniqueId;
 
 /// A value with user-facing names: the first name of a value is the one printed, later
@@ -83,6 +85,7 @@ mod tests {
         serde_agrees::<PlanarMode>();
         serde_agrees::<Projector>();
         serde_agrees::<ReadbackRule>();
+        serde_agrees::<Submission>();
     }
 
     #[test]
@@ -100,6 +103,7 @@ mod tests {
         check::<MapFilter>();
         check::<PlanarMode>();
         check::<Projector>();
+        check::<Submission>();
         assert_eq!(DepthBits::from_name("32f"), Some(DepthBits::D32F));
         assert_eq!(TechniqueId::from_name("dual9"), None);
     }
