@@ -80,6 +80,11 @@ pub enum BuiltIn {
     Light0Diffuse,
     /// `uniform vec4 ff_front_diffuse;` the front material's diffuse colour (glMaterial).
     FrontDiffuse,
+    /// `uniform vec4 ff_clip_plane0;` … user clip plane i in eye coordinates, as glClipPlane
+    /// stored it (§2.12). A program is clipped by an enabled plane i only where it writes
+    /// `gl_ClipDistance[i]` (GL 3.0 §2.17): `dot(ff_clip_plane{i}, eye)` is the fixed-function
+    /// rule.
+    ClipPlane(u8),
 }
 
 impl BuiltIn {
@@ -97,6 +102,7 @@ impl BuiltIn {
             BuiltIn::Light0Diffuse,
             BuiltIn::FrontDiffuse,
         ]);
+        all.extend((0..super::MAX_CLIP_PLANES as u8).map(BuiltIn::ClipPlane));
         all
     }
 
@@ -111,6 +117,7 @@ impl BuiltIn {
             BuiltIn::Light0Position => "ff_light0_position".into(),
             BuiltIn::Light0Diffuse => "ff_light0_diffuse".into(),
             BuiltIn::FrontDiffuse => "ff_front_diffuse".into(),
+            BuiltIn::ClipPlane(i) => format!("ff_clip_plane{i}"),
         }
     }
 }

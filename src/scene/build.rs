@@ -49,16 +49,24 @@ pub(super) fn scene(ctx: &mut Ctx, raw: RawScene) -> Result<Scene> {
     }
     let mut objects = Vec::with_capacity(raw.object.len());
     let mut planes = Vec::new();
-    let mut plane_count = 0usize;
     for (i, (o, shape)) in raw.object.iter().zip(shapes).enumerate() {
-        let object = object(ctx, o, shape, &format!("object[{i}]."))?;
-        let declared = super::planes::object_planes(ctx, o, &object, &format!("object[{i}]."))?;
+        let prefix = format!("object[{i}].");
+        let object = object(ctx, o, shape, &prefix)?;
+        let declared = super::planes::object_planes(ctx, o, &object, &prefix)?;
+        if let Some(first) = o.get_ref().section.first().filter(|_| declared.is_empty()) {
+            let what = "section (`[[object.section]]` cuts an object with shadow planes)";
+            return Err(ctx.invalid(
+                first.span(),
+                &format!("{prefix}plane"),
+                Problem::Missing { what: what.into() },
+            ));
+        }
+        let sections = super::planes::object_sections(ctx, o, declared.len(), &prefix)?;
         if !declared.is_empty() {
-            plane_count += declared.len();
-            super::planes::within_units(ctx, o, plane_count, &format!("object[{i}]."))?;
             planes.push(ObjectPlanes {
                 object: i,
                 planes: declared,
+                sections,
             });
         }
         if let Shape::Obj { .. } = object.shape {
@@ -68,6 +76,7 @@ pub(super) fn scene(ctx: &mut Ctx, raw: RawScene) -> Result<Scene> {
         }
         objects.push(object);
     }
+    super::planes::within_units(ctx, &raw.object, &objects, &planes)?;
     let mut shadow = match &raw.shadow {
         Some(s) => shadow(ctx, s.get_ref())?,
         None => ShadowSettings::default(),

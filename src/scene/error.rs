@@ -110,8 +110,20 @@ pub enum Problem {
     Conflicts { other: &'static str },
     #[error("{0}")]
     Frame(FrameProblem),
-    #[error("makes {count} shadow planes in the scene; the fixed-function pipeline has {max} texture units (GL_MAX_TEXTURE_UNITS), one per plane")]
-    TooManyPlanes { count: usize, max: usize },
+    #[error("makes {count} shadow planes for {receiver} to look up; the fixed-function pipeline has {max} texture units (GL_MAX_TEXTURE_UNITS), one per plane (`[[object.section]]` cuts an object into parts that each look up fewer)")]
+    TooManyPlanes {
+        count: usize,
+        max: usize,
+        receiver: String,
+    },
+    #[error("makes {count} shadow planes in the scene, and it may hold {max} (each has a texture of its own)")]
+    TooManyScenePlanes { count: usize, max: usize },
+    #[error("names plane {index}, and the object has {count} (`[[object.plane]]` 0 to {last})", last = .count.saturating_sub(1))]
+    NoSuchPlane { index: u32, count: usize },
+    #[error("is on the last section, which takes the rest of the object: the last `[[object.section]]` has no `cut`")]
+    CutOnLastSection,
+    #[error("makes {count} sections; section k is drawn with up to k + 1 clip planes, and GL_MAX_CLIP_PLANES is {max}")]
+    TooManySections { count: usize, max: usize },
     #[error("must be one of {}, not {value}", .expected.join(", "))]
     NotOneOf {
         value: String,

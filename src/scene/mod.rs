@@ -35,7 +35,7 @@ pub use limits::{
     GPU_BYTES_PER_TRIANGLE, MAX_IMAGE_SIZE,
 };
 pub use occlusion::{Combine, Prefilter, SLICE_COUNTS};
-pub use planes::OccluderProgram;
+pub use planes::{plane_lookups, OccluderProgram, PlaneLookup, MAX_SCENE_PLANES};
 pub use sun::{concentric, SunDisc, MAX_SUN_DIAMETER_DEGREES};
 pub use types::*;
 

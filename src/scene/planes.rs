@@ -17,8 +17,8 @@ use super::check::{span_of, Ctx, Result};
 use super::error::{Problem, SceneError};
 use super::limits::MAX_IMAGE_SIZE;
 use super::raw::{RawObject, RawOccluder, RawOccluderTable, RawPlane};
-use super::types::{Object, OccluderPlane, Shape};
-use crate::ff::MAX_TEXTURE_UNITS;
+use super::types::{Object, ObjectPlanes, OccluderPlane, PlaneSection, Shape};
+use crate::ff::{MAX_CLIP_PLANES, MAX_TEXTURE_UNITS};
 use crate::mesh::occluder::{
     occluder_texture, silhouette, OccluderRecipe, OccluderSource, PlaneFrame,
 };
@@ -139,27 +139,199 @@ pub(super) fn object_planes(
         .collect()
 }
 
-/// Refuses a running total of planes above the texture units.
-pub(super) fn within_units(
+/// `[[object.section]]` of an object with `plane_count` planes: every section but the last
+/// has a `cut` (finite, not all zero in a, b, c), the last none; plane indices exist; at
+/// most `MAX_CLIP_PLANES` + 1 sections (the last is drawn with one clip plane per earlier
+/// cut).
+pub(super) fn object_sections(
     ctx: &Ctx,
     table: &Spanned<RawObject>,
-    count: usize,
+    plane_count: usize,
     prefix: &str,
-) -> Result<()> {
-    if count <= MAX_TEXTURE_UNITS {
-        return Ok(());
+) -> Result<Vec<PlaneSection>> {
+    let raw = &table.get_ref().section;
+    if raw.len() > MAX_CLIP_PLANES + 1 {
+        return Err(ctx.invalid(
+            raw[MAX_CLIP_PLANES + 1].span(),
+            &format!("{prefix}section"),
+            Problem::TooManySections {
+                count: raw.len(),
+                max: MAX_CLIP_PLANES,
+            },
+        ));
     }
+    let last = raw.len().saturating_sub(1);
+    let mut sections = Vec::with_capacity(raw.len());
+    for (k, section) in raw.iter().enumerate() {
+        let (r, span) = (section.get_ref(), section.span());
+        let key = |k2: &str| format!("{prefix}section[{k}].{k2}");
+        let cut = match (&r.cut, k == last) {
+            (Some(c), true) => {
+                return Err(ctx.invalid(c.span(), &key("cut"), Problem::CutOnLastSection))
+            }
+            (None, true) => None,
+            (c, false) => {
+                let c =
+                    ctx.required(c, &key("cut"), "section that is not the last", span.clone())?;
+                let v = glam::Vec4::from_array(c.get_ref().0);
+                if !v.is_finite() {
+                    return Err(ctx.invalid(c.span(), &key("cut"), Problem::NotFinite));
+                }
+                if v.truncate().length_squared() == 0.0 {
+                    return Err(ctx.invalid(c.span(), &key("cut"), Problem::ZeroVector));
+                }
+                Some(v)
+            }
+        };
+        let listed = ctx.required(&r.planes, &key("planes"), "section", span.clone())?;
+        let mut planes = Vec::with_capacity(listed.get_ref().len());
+        for index in listed.get_ref() {
+            let i = *index.get_ref();
+            if i as usize >= plane_count {
+                return Err(ctx.invalid(
+                    index.span(),
+                    &key("planes"),
+                    Problem::NoSuchPlane {
+                        index: i,
+                        count: plane_count,
+                    },
+                ));
+            }
+            planes.push(i as usize);
+        }
+        sections.push(PlaneSection { cut, planes });
+    }
+    Ok(sections)
+}
+
+/// Shadow planes a scene may declare in all: each has its own texture name
+/// (`occluder-planes` numbers them from 64 for the fixed-function form, from 80 for the
+/// programs).
+pub const MAX_SCENE_PLANES: usize = 15;
+
+/// One draw of a receiver in `occluder-planes`' lit pass: the receiver cut to one section
+/// (glClipPlane equations in its object space; none for a whole object) and the planes it
+/// looks up, one texture unit each, as (caster object, index among its planes).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlaneLookup {
+    pub receiver: usize,
+    pub clips: Vec<glam::Vec4>,
+    pub planes: Vec<(usize, usize)>,
+}
+
+/// Every receiver's draws: a receiver with sections once per section (section k keeps its
+/// cut and the negation of every earlier cut; it looks up its own listed planes), any
+/// other once (its own planes, if it casts, all of them); each also looks up every other
+/// caster's planes. Casters that do not cast shadows contribute none.
+pub fn plane_lookups(objects: &[Object], planes: &[ObjectPlanes]) -> Vec<PlaneLookup> {
+    let casting: Vec<&ObjectPlanes> = planes
+        .iter()
+        .filter(|p| objects.get(p.object).is_some_and(|o| o.casts))
+        .collect();
+    let others = |receiver: usize| -> Vec<(usize, usize)> {
+        casting
+            .iter()
+            .filter(|p| p.object != receiver)
+            .flat_map(|p| (0..p.planes.len()).map(move |k| (p.object, k)))
+            .collect()
+    };
+    let mut lookups = Vec::new();
+    for (r, object) in objects.iter().enumerate() {
+        if !object.receives {
+            continue;
+        }
+        let own = casting.iter().find(|p| p.object == r);
+        match own {
+            Some(p) if !p.sections.is_empty() => {
+                for (k, section) in p.sections.iter().enumerate() {
+                    let mut clips: Vec<glam::Vec4> = p.sections[..k]
+                        .iter()
+                        .filter_map(|s| s.cut.map(|c| -c))
+                        .collect();
+                    clips.extend(section.cut);
+                    let mut looked: Vec<(usize, usize)> =
+                        section.planes.iter().map(|&i| (r, i)).collect();
+                    looked.extend(others(r));
+                    lookups.push(PlaneLookup {
+                        receiver: r,
+                        clips,
+                        planes: looked,
+                    });
+                }
+            }
+            _ => {
+                let mut looked: Vec<(usize, usize)> = own
+                    .map(|p| (0..p.planes.len()).map(|k| (r, k)).collect())
+                    .unwrap_or_default();
+                looked.extend(others(r));
+                looked.sort_unstable();
+                lookups.push(PlaneLookup {
+                    receiver: r,
+                    clips: Vec::new(),
+                    planes: looked,
+                });
+            }
+        }
+    }
+    lookups
+}
+
+/// Refuses a scene in which some receiver's draw would look up more planes than there are
+/// texture units, at the last object that declares planes.
+pub(super) fn within_units(
+    ctx: &Ctx,
+    tables: &[Spanned<RawObject>],
+    objects: &[Object],
+    planes: &[ObjectPlanes],
+) -> Result<()> {
+    let total: usize = planes.iter().map(|p| p.planes.len()).sum();
+    if let Some(last) = planes.last().filter(|_| total > MAX_SCENE_PLANES) {
+        let table = &tables[last.object];
+        return Err(ctx.invalid(
+            table
+                .get_ref()
+                .plane
+                .last()
+                .map_or(table.span(), Spanned::span),
+            &format!("object[{}].plane", last.object),
+            Problem::TooManyScenePlanes {
+                count: total,
+                max: MAX_SCENE_PLANES,
+            },
+        ));
+    }
+    let Some(worst) = plane_lookups(objects, planes)
+        .into_iter()
+        .max_by_key(|l| l.planes.len())
+        .filter(|l| l.planes.len() > MAX_TEXTURE_UNITS)
+    else {
+        return Ok(());
+    };
+    let Some(last) = planes.last() else {
+        return Ok(());
+    };
+    let table = &tables[last.object];
     let span = table
         .get_ref()
         .plane
         .last()
         .map_or(table.span(), Spanned::span);
+    let receiver = objects[worst.receiver]
+        .name
+        .clone()
+        .unwrap_or_else(|| format!("object[{}]", worst.receiver));
+    let receiver = if worst.clips.is_empty() {
+        receiver
+    } else {
+        format!("a section of {receiver}")
+    };
     Err(ctx.invalid(
         span,
-        &format!("{prefix}plane"),
+        &format!("object[{}].plane", last.object),
         Problem::TooManyPlanes {
-            count,
+            count: worst.planes.len(),
             max: MAX_TEXTURE_UNITS,
+            receiver,
         },
     ))
 }
@@ -426,6 +598,102 @@ mod tests {
             err.contains("object[2].plane")
                 && err.contains("9 shadow planes")
                 && err.contains("8 texture units"),
+            "{err}"
+        );
+    }
+
+    /// A box with two planes and `sections`.
+    fn with_sections(sections: &str) -> String {
+        format!("{}[[object.plane]]\n{GOOD}\n{sections}", with_plane(GOOD))
+    }
+
+    #[test]
+    fn sections_keep_their_cuts_and_planes() {
+        let scene = parse(&with_sections(
+            "[[object.section]]\ncut = [0, 1, 0, -0.25]\nplanes = [1]\n\
+             [[object.section]]\nplanes = [0, 1]\n",
+        ))
+        .unwrap();
+        let sections = &scene.shadow.planes[0].sections;
+        assert_eq!(sections.len(), 2);
+        assert_eq!(sections[0].cut, Some(glam::Vec4::new(0.0, 1.0, 0.0, -0.25)));
+        assert_eq!(
+            (sections[1].cut, &sections[1].planes[..]),
+            (None, &[0, 1][..])
+        );
+        // The second section is drawn on the other side of the first's cut.
+        let lookups = super::plane_lookups(&scene.objects, &scene.shadow.planes);
+        assert_eq!(
+            lookups[1].clips,
+            vec![glam::Vec4::new(0.0, -1.0, 0.0, 0.25)]
+        );
+    }
+
+    #[test]
+    fn bad_sections_are_refused_at_their_line_with_what_is_wrong() {
+        // Lines 1–2 the box, 3–9 plane 0, 10–16 plane 1: sections start on line 18.
+        let cases = [
+            (
+                "[[object.section]]\nplanes = [0]\n[[object.section]]\nplanes = [1]\n",
+                ":17",
+                "section[0].cut",
+                "required",
+            ),
+            (
+                "[[object.section]]\ncut = [0, 1, 0, 0]\nplanes = [0]\n",
+                ":18",
+                "section[0].cut",
+                "last section",
+            ),
+            (
+                "[[object.section]]\ncut = [0, 0, 0, 1]\nplanes = [0]\n\
+                 [[object.section]]\nplanes = [1]\n",
+                ":18",
+                "section[0].cut",
+                "zero vector",
+            ),
+            (
+                "[[object.section]]\ncut = [0, 1, 0, nan]\nplanes = [0]\n\
+                 [[object.section]]\nplanes = [1]\n",
+                ":18",
+                "section[0].cut",
+                "finite",
+            ),
+            (
+                "[[object.section]]\ncut = [0, 1, 0, 0]\nplanes = [0]\n\
+                 [[object.section]]\nplanes = [1, 2]\n",
+                ":21",
+                "section[1].planes",
+                "names plane 2, and the object has 2",
+            ),
+            (
+                "[[object.section]]\ncut = [0, 1, 0, 0]\n[[object.section]]\nplanes = [1]\n",
+                ":17",
+                "section[0].planes",
+                "required",
+            ),
+        ];
+        for (sections, line, key, says) in cases {
+            let err = parse(&with_sections(sections)).unwrap_err().to_string();
+            assert!(
+                err.contains(&format!("planes.toml{line}"))
+                    && err.contains(key)
+                    && err.contains(says),
+                "{sections}\n→ {err}"
+            );
+        }
+        let ten: String = (0..10)
+            .map(|_| "[[object.section]]\ncut = [0, 1, 0, 0]\nplanes = [0]\n")
+            .collect();
+        let err = parse(&with_sections(&ten)).unwrap_err().to_string();
+        assert!(
+            err.contains("10 sections") && err.contains("GL_MAX_CLIP_PLANES is 8"),
+            "{err}"
+        );
+        let bare = "[[object]]\nshape = \"box\"\n[[object.section]]\nplanes = [0]\n";
+        let err = parse(bare).unwrap_err().to_string();
+        assert!(
+            err.contains("planes.toml:3") && err.contains("object[0].plane"),
             "{err}"
         );
     }

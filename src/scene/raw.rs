@@ -170,6 +170,15 @@ pub(super) struct RawPlane {
     pub occluder: S<RawOccluder>,
 }
 
+/// `[[object.section]]`: a part of the object for `occluder-planes` — the clip plane that
+/// keeps it (none on the last, which takes the rest) and the planes it looks up.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSection {
+    pub cut: S<Numbers<4>>,
+    pub planes: S<Vec<Spanned<u32>>>,
+}
+
 /// `occluder = "silhouette" | "black"` or a table: `{ png = "file.png" }` or the
 /// silhouette's recipe `{ size, depth, dilate, extend }`.
 #[derive(Debug, Deserialize)]
@@ -231,6 +240,8 @@ pub(super) struct RawObject {
     pub layout: S<AircraftLayoutName>,
     #[serde(default)]
     pub plane: Vec<Spanned<RawPlane>>,
+    #[serde(default)]
+    pub section: Vec<Spanned<RawSection>>,
     pub translate: S<Numbers<3>>,
     pub rotate: S<Rotations>,
     pub scale: S<Extent>,

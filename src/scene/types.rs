@@ -312,6 +312,20 @@ pub struct ObjectPlanes {
     /// Index into [`Scene::objects`].
     pub object: usize,
     pub planes: Vec<OccluderPlane>,
+    /// `[[object.section]]`: the object cut into parts, each looking up only its own
+    /// planes (Coleman's teapot, thesis §5). Empty: the whole object looks up all of them.
+    pub sections: Vec<PlaneSection>,
+}
+
+/// One part of an object for `occluder-planes`: drawn with the clip planes that keep it,
+/// it looks up `planes` (indices into the object's own planes) and every other caster's.
+/// Section k keeps `cut` ≥ 0 and the other side of every earlier section's cut; the last
+/// section has no cut and takes the rest, so the sections cover the object.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlaneSection {
+    /// glClipPlane's equation in object space: (a, b, c, d) keeps a·x + b·y + c·z + d ≥ 0.
+    pub cut: Option<glam::Vec4>,
+    pub planes: Vec<usize>,
 }
 
 /// A polygon offset as the scene and the command line leave it.

@@ -40,7 +40,15 @@
 //! the previous unit's result: the shadowing light's contribution × Π factor_k, added
 //! over the dim pass, which keeps the ambient — Coleman's
 //! `diffuse · shadowPercent + ambient`. Every receiver looks up every caster's planes, its
-//! own included (self-shadowing), so the scene may hold at most MAX_TEXTURE_UNITS planes.
+//! own included (self-shadowing), at most MAX_TEXTURE_UNITS in one draw.
+//!
+//! **Sections** (`[[object.section]]`, the thesis's teapot, §5: "any one section of the
+//! teapot would only have to consider shadow planes for that section"): a receiver cut
+//! into sections is drawn once per section in the lit pass, clipped to it by user clip
+//! planes (section k: its cut and the other side of every earlier cut), looking up only
+//! that section's own planes and the other casters'. A fragment on a cut itself is kept by
+//! both sides (glClipPlane keeps a·p ≥ 0) and may be lit twice there.
+//!
 //! A plane parallel to the light (|n·L| < 10⁻⁶) casts nothing: its R is a constant 0.
 //!
 //! **Other forms.** `[shadow] program = "coleman"` runs the thesis's own shaders and
@@ -60,7 +68,9 @@ use crate::scene::{LightKind, OccluderPlane, OccluderProgram, Scene};
 use crate::vocab::TechniqueId;
 
 use super::occluder_program as program;
-use super::parts::{dim_pass, does_not_receive, lighting, objects, reset, LightSet, Look};
+use super::parts::{
+    dim_pass, does_not_receive, eye_start, lighting, objects, reset, LightSet, Look,
+};
 use super::{check_light_count, colour_mask, Pass, Plan, Prepared, Technique, TechniqueError};
 
 pub const ID: TechniqueId = TechniqueId::OccluderPlanes;
@@ -114,13 +124,108 @@ pub fn scene_planes(scene: &Scene) -> Result<Vec<ScenePlane>, TechniqueError> {
     if planes.is_empty() {
         return Err(TechniqueError::NoShadowPlanes { technique: ID });
     }
-    if planes.len() > MAX_TEXTURE_UNITS {
-        return Err(TechniqueError::TooManyShadowPlanes {
-            count: planes.len(),
-            max: MAX_TEXTURE_UNITS,
+    Ok(planes)
+}
+
+/// One draw of a receiver in the lit pass (`scene::plane_lookups`): the clip planes that
+/// cut it to a section (object space) and the planes it looks up, as indices into
+/// [`scene_planes`]' list; unit u reads `planes[u]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReceiverDraw {
+    pub receiver: usize,
+    pub clips: Vec<Vec4>,
+    pub planes: Vec<usize>,
+}
+
+/// Every receiver's draws, refused when one looks up more planes than there are texture
+/// units (a scene read from a file was refused already, at its line).
+pub fn receiver_draws(
+    scene: &Scene,
+    planes: &[ScenePlane],
+) -> Result<Vec<ReceiverDraw>, TechniqueError> {
+    let first = |caster: usize| planes.iter().position(|p| p.caster == caster);
+    crate::scene::plane_lookups(&scene.objects, &scene.shadow.planes)
+        .into_iter()
+        .map(|l| {
+            let looked: Vec<usize> = l
+                .planes
+                .iter()
+                .filter_map(|&(caster, k)| first(caster).map(|f| f + k))
+                .collect();
+            if looked.len() > MAX_TEXTURE_UNITS {
+                return Err(TechniqueError::TooManyShadowPlanes {
+                    count: looked.len(),
+                    max: MAX_TEXTURE_UNITS,
+                });
+            }
+            Ok(ReceiverDraw {
+                receiver: l.receiver,
+                clips: l.clips,
+                planes: looked,
+            })
+        })
+        .collect()
+}
+
+/// Clip planes 0… set to `clips` (object space: specified under the receiver's model
+/// matrix, which glClipPlane applies the inverse of) and enabled.
+pub fn clip_commands(model: Mat4, clips: &[Vec4]) -> Vec<Command> {
+    if clips.is_empty() {
+        return Vec::new();
+    }
+    let mut commands = vec![Command::PushMatrix, Command::MultMatrix(model)];
+    for (c, &equation) in clips.iter().enumerate() {
+        commands.push(Command::ClipPlane {
+            plane: c as u8,
+            equation,
         });
     }
-    Ok(planes)
+    commands.push(Command::PopMatrix);
+    commands.extend((0..clips.len()).map(|c| Command::Enable(Capability::ClipPlane(c as u8))));
+    commands
+}
+
+/// The dim pass with each sectioned receiver drawn section by section, clipped as the lit
+/// pass draws it: clipping makes new vertices, whose interpolated depths need not equal
+/// the whole triangle's, so both passes draw the same clipped triangles and the lit pass's
+/// DepthFunc(EQUAL) finds the depths the dim pass wrote (GL's invariance holds only for
+/// the same primitives, Appendix A).
+pub fn sectioned_dim_pass(
+    scene: &Scene,
+    prepared: &Prepared,
+    look: Look,
+    draws: &[ReceiverDraw],
+) -> Pass {
+    let clipped: Vec<&ReceiverDraw> = draws.iter().filter(|d| !d.clips.is_empty()).collect();
+    if clipped.is_empty() {
+        return dim_pass(scene, prepared, look, false);
+    }
+    let mut commands = eye_start(scene, look, false);
+    commands.extend(lighting(scene, look, LightSet::Dim));
+    let paint = look.paint(false);
+    let is_cut = |o: &crate::scene::Object| {
+        clipped
+            .iter()
+            .any(|d| std::ptr::eq(&scene.objects[d.receiver], o))
+    };
+    commands.extend(objects(scene, prepared, |o| !is_cut(o), paint));
+    for draw in clipped {
+        let object = &scene.objects[draw.receiver];
+        commands.extend(clip_commands(object.transform.matrix(), &draw.clips));
+        commands.extend(objects(scene, prepared, |o| std::ptr::eq(o, object), paint));
+        commands.extend(unclip_commands(&draw.clips));
+    }
+    Pass {
+        name: "dim",
+        commands,
+    }
+}
+
+/// The clip planes `clip_commands` enabled, disabled.
+pub fn unclip_commands(clips: &[Vec4]) -> Vec<Command> {
+    (0..clips.len())
+        .map(|c| Command::Disable(Capability::ClipPlane(c as u8)))
+        .collect()
 }
 
 /// The shadowing light (the scene's first) in world space.
@@ -233,6 +338,7 @@ pub fn factor_at(scene: &Scene, light: LightAt, p: &ScenePlane, x: Vec3) -> f32 
 pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> {
     check_light_count(scene)?;
     let planes = scene_planes(scene)?;
+    let draws = receiver_draws(scene, &planes)?;
     let light = world_light(scene)?;
     let (setup, passes, mask) = match scene.shadow.occluder_program {
         OccluderProgram::FixedFunction => {
@@ -240,11 +346,12 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
             for (k, p) in planes.iter().enumerate() {
                 setup.extend(texture_commands(texture_name(k), &p.plane.texture));
             }
-            let look = |look| eye_passes(scene, prepared, &planes, light, look);
+            let look = |look| eye_passes(scene, prepared, &planes, &draws, light, look);
             (setup, look(Look::Shaded), look(Look::Mask))
         }
         OccluderProgram::Generic => {
-            let look = |look| program::generic_passes(scene, prepared, &planes, light, look);
+            let look =
+                |look| program::generic_passes(scene, prepared, &planes, &draws, light, look);
             (
                 program::setup(&planes),
                 look(Look::Shaded),
@@ -294,39 +401,55 @@ pub fn texture_name(k: usize) -> u32 {
 /// LINEAR; S and T CLAMP_TO_BORDER with a white border (outside the plane's rectangle
 /// nothing occludes), R CLAMP_TO_EDGE (the behind-the-plane ramp saturates).
 pub fn texture_commands(name: u32, texture: &OccluderTexture) -> Vec<Command> {
-    let target = TextureTarget::Texture3D;
-    let param = |param| Command::TexParameter { target, param };
     let mut texels = vec![PASSES; texture.texels.len()];
     texels.extend_from_slice(&texture.texels);
-    vec![
+    luminance_texture(TextureTarget::Texture3D, name, texture, 2, texels)
+}
+
+/// A LUMINANCE8 occluder texture of `depth` slices of `texture`'s size: LINEAR, S and T
+/// CLAMP_TO_BORDER with a white border, R (3D only) CLAMP_TO_EDGE.
+pub fn luminance_texture(
+    target: TextureTarget,
+    name: u32,
+    texture: &OccluderTexture,
+    depth: i32,
+    texels: Vec<u8>,
+) -> Vec<Command> {
+    let param = |param| Command::TexParameter { target, param };
+    let mut commands = vec![
         Command::BindTexture { target, name },
         param(TexParam::MinFilter(Filter::Linear)),
         param(TexParam::MagFilter(Filter::Linear)),
         param(TexParam::WrapS(Wrap::ClampToBorder)),
         param(TexParam::WrapT(Wrap::ClampToBorder)),
         param(TexParam::BorderColor(Vec4::ONE)),
-        param(TexParam::WrapR(Wrap::ClampToEdge)),
-        Command::TexImage(TexImage {
-            target,
-            level: 0,
-            internal_format: TexFormat::Luminance8,
-            requested: None,
-            width: texture.width as i32,
-            height: texture.height as i32,
-            depth: 2,
-            border: 0,
-            format: PixelFormat::Luminance,
-            ty: PixelType::UnsignedByte,
-            data: TexData::Bytes(Arc::from(texels)),
-        }),
-    ]
+    ];
+    if target == TextureTarget::Texture3D {
+        commands.push(param(TexParam::WrapR(Wrap::ClampToEdge)));
+    }
+    commands.push(Command::TexImage(TexImage {
+        target,
+        level: 0,
+        internal_format: TexFormat::Luminance8,
+        requested: None,
+        width: texture.width as i32,
+        height: texture.height as i32,
+        depth,
+        border: 0,
+        format: PixelFormat::Luminance,
+        ty: PixelType::UnsignedByte,
+        data: TexData::Bytes(Arc::from(texels)),
+    }));
+    commands
 }
 
-/// The dim pass, then the shadowing light added through every plane's unit.
+/// The dim pass, then the shadowing light added, receiver draw by receiver draw, through
+/// the units of the planes each looks up.
 fn eye_passes(
     scene: &Scene,
     prepared: &Prepared,
     planes: &[ScenePlane],
+    draws: &[ReceiverDraw],
     light: LightAt,
     look: Look,
 ) -> Vec<Pass> {
@@ -341,24 +464,39 @@ fn eye_passes(
         },
     ];
     lit.extend(lighting(scene, look, LightSet::ShadowingOnly));
-    for k in 0..planes.len() {
-        lit.extend(unit_commands(k as u8, texture_name(k), projective));
+    let used = draws.iter().map(|d| d.planes.len()).max().unwrap_or(0);
+    for u in 0..used {
+        lit.extend(unit_commands(u as u8, projective));
     }
     let paint = look.paint(true);
-    for (i, object) in scene.objects.iter().enumerate() {
-        if !object.receives {
-            continue;
-        }
-        for (k, p) in planes.iter().enumerate() {
-            lit.push(Command::ActiveTexture(k as u8));
+    for draw in draws {
+        let object = &scene.objects[draw.receiver];
+        for (u, &k) in draw.planes.iter().enumerate() {
+            lit.extend([
+                Command::ActiveTexture(u as u8),
+                Command::BindTexture {
+                    target: TextureTarget::Texture3D,
+                    name: texture_name(k),
+                },
+                Command::Enable(Capability::Texture3D),
+            ]);
             lit.extend(plane_commands(
-                receiver_matrix(scene, light, p, i),
+                receiver_matrix(scene, light, &planes[k], draw.receiver),
                 projective,
             ));
         }
+        for u in draw.planes.len()..used {
+            lit.extend([
+                Command::ActiveTexture(u as u8),
+                Command::Disable(Capability::Texture3D),
+            ]);
+        }
+        lit.push(Command::ActiveTexture(0));
+        lit.extend(clip_commands(object.transform.matrix(), &draw.clips));
         lit.extend(objects(scene, prepared, |o| std::ptr::eq(o, object), paint));
+        lit.extend(unclip_commands(&draw.clips));
     }
-    let units: Vec<u8> = (0..planes.len() as u8).collect();
+    let units: Vec<u8> = (0..used as u8).collect();
     for &u in &units {
         lit.push(Command::ActiveTexture(u));
         lit.push(Command::Disable(Capability::Texture3D));
@@ -373,7 +511,7 @@ fn eye_passes(
     lit.extend(reset(&units));
     lit.extend(objects(scene, prepared, does_not_receive, paint));
     vec![
-        dim_pass(scene, prepared, look, false),
+        sectioned_dim_pass(scene, prepared, look, draws),
         Pass {
             name: "lit",
             commands: lit,
@@ -381,16 +519,12 @@ fn eye_passes(
     ]
 }
 
-/// Unit `unit`: the texture `name` (3D), MODULATE, OBJECT_LINEAR on S, T, R, Q; with a
-/// point light the planes are the identity's rows (x, y, z, 1), set once here.
-fn unit_commands(unit: u8, name: u32, projective: bool) -> Vec<Command> {
+/// Unit `unit`: MODULATE, OBJECT_LINEAR on S, T, R, Q; with a point light the planes are
+/// the identity's rows (x, y, z, 1), set once here. Each draw binds and enables its
+/// plane's 3D texture.
+fn unit_commands(unit: u8, projective: bool) -> Vec<Command> {
     let mut commands = vec![
         Command::ActiveTexture(unit),
-        Command::BindTexture {
-            target: TextureTarget::Texture3D,
-            name,
-        },
-        Command::Enable(Capability::Texture3D),
         Command::TexEnv(ff::TexEnvParam::Mode(ff::TexEnvMode::Modulate)),
     ];
     for coord in TexCoord::ALL {

@@ -58,25 +58,26 @@ use std::sync::Arc;
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use crate::ff::{
-    self, Capability, Command, Filter, Geometry, PixelFormat, PixelType, SamplerBinding,
-    ShaderProgram, TexData, TexFormat, TexImage, TexParam, TextureTarget, UniformValue, Wrap,
+    self, Capability, Command, Geometry, SamplerBinding, ShaderProgram, TextureTarget, UniformValue,
 };
 use crate::mesh::occluder::{OccluderTexture, PASSES};
 use crate::mesh::AircraftLayout;
 use crate::scene::{Scene, Shape};
 use crate::shaders::F35_PLANES;
 
-use super::occluder_planes::{LightAt, ScenePlane};
-use super::parts::{
-    dim_pass, does_not_receive, eye_start, lighting, objects, receives, reset, LightSet, Look,
+use super::occluder_planes::{
+    clip_commands, sectioned_dim_pass, unclip_commands, LightAt, ReceiverDraw, ScenePlane,
 };
+use super::parts::{does_not_receive, eye_start, lighting, objects, reset, LightSet, Look};
 use super::setup::GLOBAL_AMBIENT;
 use super::{Pass, Prepared};
 
-/// The 2D texture name of plane k's occluder: `OCCLUDER_2D_BASE + k`.
+/// The 2D texture name of plane k's occluder: `OCCLUDER_2D_BASE + k` (80 to 94 for
+/// `scene::MAX_SCENE_PLANES`, below occlusion-textures' 96).
 pub const OCCLUDER_2D_BASE: u32 = 80;
-/// The white 1×1 texture Coleman's colorTEX reads.
-pub const WHITE_TEXTURE: u32 = OCCLUDER_2D_BASE + ff::MAX_TEXTURE_UNITS as u32;
+/// The white 1×1 texture Coleman's colorTEX reads (and an unused slot of the generic
+/// program), above the fixed-function form's 3D names (64 to 78).
+pub const WHITE_TEXTURE: u32 = OCCLUDER_2D_BASE - 1;
 
 /// Below this |n·L| / (|n|·|L|) a plane is taken as parallel to the ray (the fixed-function
 /// form's threshold).
@@ -109,14 +110,19 @@ pub enum Output {
 pub struct GenericKey {
     /// 1 to `ff::MAX_TEXTURE_UNITS`: plane k reads unit k.
     pub planes: u8,
+    /// The user clip planes the draws enable (a sectioned receiver's cuts): the vertex
+    /// stage writes gl_ClipDistance[0..clips] from `ff_clip_plane{i}`, since a program is
+    /// clipped only where it writes them (GL 3.0 §2.17).
+    pub clips: u8,
     pub ray: RayForm,
     pub output: Output,
 }
 
 impl GenericKey {
-    pub fn of(planes: usize, light: LightAt, look: Look) -> GenericKey {
+    pub fn of(planes: usize, clips: usize, light: LightAt, look: Look) -> GenericKey {
         GenericKey {
             planes: planes.min(ff::MAX_TEXTURE_UNITS) as u8,
+            clips: clips.min(ff::MAX_CLIP_PLANES) as u8,
             ray: match light {
                 LightAt::Direction(_) => RayForm::Directional,
                 LightAt::Point(_) => RayForm::Point,
@@ -211,6 +217,9 @@ fn emit_vertex(key: &GenericKey) -> String {
     s.push_str("layout(location = 0) in vec4 a_position;\n");
     s.push_str("uniform mat4 ff_modelview;\nuniform mat4 ff_modelview_projection;\n");
     s.push_str("out vec3 v_eye;\n");
+    for i in 0..key.clips {
+        s.push_str(&format!("uniform vec4 ff_clip_plane{i};\n"));
+    }
     let lit = key.output == Output::Lit;
     if lit {
         s.push_str(
@@ -225,6 +234,12 @@ fn emit_vertex(key: &GenericKey) -> String {
         "void main()\n{\n    vec4 eye = ff_modelview * a_position;\n    v_eye = eye.xyz / eye.w;\n\
          \x20   gl_Position = ff_modelview_projection * a_position;\n",
     );
+    for i in 0..key.clips {
+        // User clip plane i (GL 1.5 §2.12): kept where p′·x_eye ≥ 0, p′ the eye plane.
+        s.push_str(&format!(
+            "    gl_ClipDistance[{i}] = dot(ff_clip_plane{i}, eye);\n"
+        ));
+    }
     if lit {
         s.push_str(&format!(
             "    vec3 n = normalize(ff_normal_matrix * a_normal);\n\
@@ -328,29 +343,13 @@ fn uniform(name: &str, value: UniformValue) -> Command {
 /// The 2D texture of an occluder: LUMINANCE8, LINEAR, CLAMP_TO_BORDER with a white border
 /// (outside the plane's rectangle nothing occludes).
 pub fn texture_2d_commands(name: u32, texture: &OccluderTexture) -> Vec<Command> {
-    let target = TextureTarget::Texture2D;
-    let param = |param| Command::TexParameter { target, param };
-    vec![
-        Command::BindTexture { target, name },
-        param(TexParam::MinFilter(Filter::Linear)),
-        param(TexParam::MagFilter(Filter::Linear)),
-        param(TexParam::WrapS(Wrap::ClampToBorder)),
-        param(TexParam::WrapT(Wrap::ClampToBorder)),
-        param(TexParam::BorderColor(Vec4::ONE)),
-        Command::TexImage(TexImage {
-            target,
-            level: 0,
-            internal_format: TexFormat::Luminance8,
-            requested: None,
-            width: texture.width as i32,
-            height: texture.height as i32,
-            depth: 1,
-            border: 0,
-            format: PixelFormat::Luminance,
-            ty: PixelType::UnsignedByte,
-            data: TexData::Bytes(Arc::from(texture.texels.clone())),
-        }),
-    ]
+    super::occluder_planes::luminance_texture(
+        TextureTarget::Texture2D,
+        name,
+        texture,
+        1,
+        texture.texels.clone(),
+    )
 }
 
 /// The setup of the program forms: plane k's occluder as 2D texture 80 + k, and the white
@@ -436,10 +435,13 @@ pub fn generic_passes(
     scene: &Scene,
     prepared: &Prepared,
     planes: &[ScenePlane],
+    draws: &[ReceiverDraw],
     light: LightAt,
     look: Look,
 ) -> Vec<Pass> {
-    let key = GenericKey::of(planes.len(), light, look);
+    let used = draws.iter().map(|d| d.planes.len()).max().unwrap_or(0);
+    let clips = draws.iter().map(|d| d.clips.len()).max().unwrap_or(0);
+    let key = GenericKey::of(used.max(1), clips, light, look);
     let mut lit = vec![
         Command::DepthFunc(ff::CompareFunc::Equal),
         Command::DepthMask(false),
@@ -450,26 +452,48 @@ pub fn generic_passes(
         },
     ];
     lit.extend(lighting(scene, look, LightSet::ShadowingOnly));
-    let units: Vec<(u8, u32)> = (0..planes.len())
-        .map(|k| (k as u8, OCCLUDER_2D_BASE + k as u32))
-        .collect();
-    lit.extend(bind_2d(&units));
     lit.push(Command::UseProgram(Some(Arc::new(generate(&key)))));
     lit.push(uniform(
         LIGHT_UNIFORM,
         UniformValue::Vec3(eye_light(scene, light).truncate()),
     ));
-    for (k, p) in planes.iter().enumerate() {
-        lit.extend(plane_uniforms(scene, k, p));
-    }
     let paint = look.paint(true);
-    lit.extend(objects(scene, prepared, receives, paint));
+    let slots = usize::from(key.planes);
+    for draw in draws {
+        // Slot u reads plane draw.planes[u]; a slot the draw does not use reads the white
+        // texture (factor 1) with any plane's uniforms.
+        let units: Vec<(u8, u32)> = (0..slots)
+            .map(|u| {
+                let name = draw
+                    .planes
+                    .get(u)
+                    .map_or(WHITE_TEXTURE, |&k| OCCLUDER_2D_BASE + k as u32);
+                (u as u8, name)
+            })
+            .collect();
+        lit.extend(bind_2d(&units));
+        for u in 0..slots {
+            let k = draw
+                .planes
+                .get(u)
+                .or(draw.planes.first())
+                .copied()
+                .unwrap_or(0);
+            if let Some(p) = planes.get(k) {
+                lit.extend(plane_uniforms(scene, u, p));
+            }
+        }
+        let object = &scene.objects[draw.receiver];
+        lit.extend(clip_commands(object.transform.matrix(), &draw.clips));
+        lit.extend(objects(scene, prepared, |o| std::ptr::eq(o, object), paint));
+        lit.extend(unclip_commands(&draw.clips));
+    }
     lit.push(Command::UseProgram(None));
     lit.extend(objects(scene, prepared, does_not_receive, paint));
-    let used: Vec<u8> = units.iter().map(|&(u, _)| u).collect();
+    let used: Vec<u8> = (0..slots as u8).collect();
     lit.extend(reset(&used));
     vec![
-        dim_pass(scene, prepared, look, false),
+        sectioned_dim_pass(scene, prepared, look, draws),
         Pass {
             name: "lit",
             commands: lit,
@@ -488,6 +512,8 @@ pub enum ColemanMisfit {
     NotTheF35 { object: String },
     #[error("the F-35's planes are not the thesis's three (declared `[[object.plane]]` tables replace them)")]
     OtherPlanes,
+    #[error("the aircraft is cut into `[[object.section]]`s, and the shaders draw it whole")]
+    Sectioned,
     #[error("the shadowing light is a {found} light, and the vertex shader reads light 0's position as a direction (w ignored)")]
     NotDirectional { found: &'static str },
 }
@@ -532,6 +558,11 @@ pub fn coleman_fit(
     }
     if !thesis_planes(planes) {
         return Err(ColemanMisfit::OtherPlanes);
+    }
+    let sectioned =
+        |p: &&crate::scene::ObjectPlanes| p.object == aircraft && !p.sections.is_empty();
+    if scene.shadow.planes.iter().any(|p| sectioned(&p)) {
+        return Err(ColemanMisfit::Sectioned);
     }
     match light {
         LightAt::Direction(towards) => Ok(ColemanFit { aircraft, towards }),
@@ -853,6 +884,7 @@ mod tests {
     fn the_key_shapes_the_code() {
         let key = GenericKey {
             planes: 3,
+            clips: 0,
             ray: RayForm::Point,
             output: Output::Mask,
         };
@@ -870,6 +902,12 @@ mod tests {
         });
         assert!(lit.fragment.contains("vec3 L = u_light;"));
         assert!(lit.vertex.contains("ff_normal_matrix"));
+        assert!(!lit.vertex.contains("gl_ClipDistance"));
+        let cut = generate(&GenericKey { clips: 2, ..key });
+        assert!(cut
+            .vertex
+            .contains("gl_ClipDistance[1] = dot(ff_clip_plane1, eye);"));
+        assert!(!cut.vertex.contains("gl_ClipDistance[2]"));
     }
 
     #[test]

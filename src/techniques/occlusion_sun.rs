@@ -31,20 +31,18 @@
 //! trilinearly between levels (visibility.frag with SUN 1). Levels hold 8 bits, as the rest of the
 //! occlusion texture; taps beyond the texture read 0 (no occluder outside the window).
 
-use std::sync::Arc;
-
 use glam::{Mat4, Vec2, Vec3, Vec4};
 
 use crate::ff::framebuffer::{AttachmentPoint, FramebufferTarget};
 use crate::ff::{
-    Capability, Command, Filter, PixelFormat, PixelType, SamplerBinding, ShaderProgram, TexData,
-    TexFormat, TexImage, TexParam, TextureTarget, UniformValue, Viewport, Wrap,
+    Command, Filter, PixelFormat, PixelType, TexData, TexFormat, TexImage, TexParam, TextureTarget,
+    UniformValue, Viewport, Wrap,
 };
 use crate::scene::{Scene, SunDisc};
 
 use super::occlusion_textures::{
-    back_to_the_window, caster_corners, shader, uniform, window_quad, OcclusionSettings, SliceView,
-    OCCLUSION_TEXTURE_BASE, SLICE_FRAMEBUFFER,
+    caster_corners, prefilter_pass, uniform, window_quad, OcclusionSettings, SliceView,
+    OCCLUSION_TEXTURE_BASE,
 };
 use super::Pass;
 
@@ -159,26 +157,8 @@ pub fn gauss_setup(k: u32, settings: &OcclusionSettings) -> Vec<Command> {
 /// column pass reads those and writes level l. The texture a pass writes is never the one
 /// its program samples (unit 0).
 pub fn gauss_pass(settings: &OcclusionSettings) -> Pass {
-    let program = Arc::new(ShaderProgram {
-        name: "eisemann/gauss".into(),
-        vertex: shader("eisemann/window.vert").into(),
-        fragment: shader("eisemann/gauss.frag").into(),
-        samplers: vec![SamplerBinding {
-            name: "source".into(),
-            unit: 0,
-        }],
-    });
     let quad = window_quad();
-    let mut commands = vec![
-        Command::BindFramebuffer {
-            target: FramebufferTarget::Both,
-            name: SLICE_FRAMEBUFFER,
-        },
-        Command::Disable(Capability::DepthTest),
-        Command::Disable(Capability::Blend),
-        Command::UseProgram(Some(program)),
-        Command::ActiveTexture(0),
-    ];
+    let mut commands = Vec::new();
     for k in 0..settings.textures() {
         let texture = OCCLUSION_TEXTURE_BASE + k;
         for l in 1..settings.levels() {
@@ -225,12 +205,7 @@ pub fn gauss_pass(settings: &OcclusionSettings) -> Pass {
             }
         }
     }
-    commands.extend(back_to_the_window());
-    commands.extend([Command::Enable(Capability::DepthTest)]);
-    Pass {
-        name: "prefilter",
-        commands,
-    }
+    prefilter_pass("eisemann/gauss", commands)
 }
 
 #[cfg(test)]

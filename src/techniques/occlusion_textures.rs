@@ -566,28 +566,9 @@ pub(crate) fn window_quad() -> Arc<crate::ff::Geometry> {
 /// (eisemann/nbuffer), each level drawn into the rows of its parity's texture while the
 /// other parity's texture is read — no texture is read and written in one draw.
 fn nbuffer_pass(settings: &OcclusionSettings) -> Pass {
-    let program = Arc::new(ShaderProgram {
-        name: "eisemann/nbuffer".into(),
-        vertex: shader("eisemann/window.vert").into(),
-        fragment: shader("eisemann/nbuffer.frag").into(),
-        samplers: vec![SamplerBinding {
-            name: "source".into(),
-            unit: 0,
-        }],
-    });
     let size = settings.size as i32;
     let quad = window_quad();
-    let mut commands = vec![
-        Command::BindFramebuffer {
-            target: FramebufferTarget::Both,
-            name: SLICE_FRAMEBUFFER,
-        },
-        Command::Disable(Capability::DepthTest),
-        Command::Disable(Capability::Blend),
-        Command::UseProgram(Some(program)),
-        uniform("texels", UniformValue::Int(size)),
-        Command::ActiveTexture(0),
-    ];
+    let mut commands = vec![uniform("texels", UniformValue::Int(size))];
     for k in 0..settings.textures() {
         // Level 0: the occlusion texture copied (a box of one texel: half_box 0 reads the
         // same texel four times).
@@ -626,12 +607,7 @@ fn nbuffer_pass(settings: &OcclusionSettings) -> Pass {
             ]);
         }
     }
-    commands.extend(back_to_the_window());
-    commands.extend([Command::Enable(Capability::DepthTest)]);
-    Pass {
-        name: "prefilter",
-        commands,
-    }
+    prefilter_pass("eisemann/nbuffer", commands)
 }
 
 /// Summed-area table k of parity `parity`: RGBA32F of size² (sums of up to size² binary
@@ -674,34 +650,15 @@ pub fn sat_setup(k: u32, parity: u32, settings: &OcclusionSettings) -> Vec<Comma
 /// adds the texel 2^i to the left, step ⌈log2 n⌉ + i the texel 2^i below; step 0 reads the
 /// occlusion texture, step i the table of parity (i − 1) mod 2, and writes parity i mod 2.
 pub fn sat_pass(settings: &OcclusionSettings) -> Pass {
-    let program = Arc::new(ShaderProgram {
-        name: "eisemann/sat".into(),
-        vertex: shader("eisemann/window.vert").into(),
-        fragment: shader("eisemann/sat.frag").into(),
-        samplers: vec![SamplerBinding {
-            name: "source".into(),
-            unit: 0,
-        }],
-    });
     let size = settings.size as i32;
     let quad = window_quad();
     let per_axis = settings.sat_steps_per_axis();
-    let mut commands = vec![
-        Command::BindFramebuffer {
-            target: FramebufferTarget::Both,
-            name: SLICE_FRAMEBUFFER,
-        },
-        Command::Viewport(Viewport {
-            x: 0,
-            y: 0,
-            width: size,
-            height: size,
-        }),
-        Command::Disable(Capability::DepthTest),
-        Command::Disable(Capability::Blend),
-        Command::UseProgram(Some(program)),
-        Command::ActiveTexture(0),
-    ];
+    let mut commands = vec![Command::Viewport(Viewport {
+        x: 0,
+        y: 0,
+        width: size,
+        height: size,
+    })];
     for k in 0..settings.textures() {
         for i in 0..settings.sat_steps().max(1) {
             let source = match i {
@@ -733,8 +690,35 @@ pub fn sat_pass(settings: &OcclusionSettings) -> Pass {
             ]);
         }
     }
+    prefilter_pass("eisemann/sat", commands)
+}
+
+/// A prefilter pass: the program `eisemann/window.vert` + `PROGRAM.frag` (its one sampler
+/// `source` on unit 0) drawn by `draws` into the slice framebuffer with the depth test
+/// and blending off; then fixed function and the window again, the depth test back on.
+pub(crate) fn prefilter_pass(program: &str, draws: Vec<Command>) -> Pass {
+    let program = Arc::new(ShaderProgram {
+        name: program.into(),
+        vertex: shader("eisemann/window.vert").into(),
+        fragment: shader(&format!("{program}.frag")).into(),
+        samplers: vec![SamplerBinding {
+            name: "source".into(),
+            unit: 0,
+        }],
+    });
+    let mut commands = vec![
+        Command::BindFramebuffer {
+            target: FramebufferTarget::Both,
+            name: SLICE_FRAMEBUFFER,
+        },
+        Command::Disable(Capability::DepthTest),
+        Command::Disable(Capability::Blend),
+        Command::UseProgram(Some(program)),
+        Command::ActiveTexture(0),
+    ];
+    commands.extend(draws);
     commands.extend(back_to_the_window());
-    commands.extend([Command::Enable(Capability::DepthTest)]);
+    commands.push(Command::Enable(Capability::DepthTest));
     Pass {
         name: "prefilter",
         commands,

@@ -140,6 +140,7 @@ impl UserProgram {
                     BuiltIn::Light0Position => UniformSource::Light(0, LightValue::Position),
                     BuiltIn::Light0Diffuse => UniformSource::Light(0, LightValue::Diffuse),
                     BuiltIn::FrontDiffuse => UniformSource::Material(0, MaterialValue::Diffuse),
+                    BuiltIn::ClipPlane(i) => UniformSource::ClipPlane(*i),
                     BuiltIn::Projection => {
                         let m = state.projection_matrix().to_cols_array();
                         gl.uniform_matrix_4_f32_slice(Some(loc), false, &m);
