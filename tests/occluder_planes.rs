@@ -26,7 +26,7 @@ use fixedfunc::shaders::ShadowPlane;
 use fixedfunc::techniques::{lookup, Prepared, TechniqueError};
 use fixedfunc::vocab::PipelineKind;
 use glam::Vec3;
-use projection::{mask_difference, run, scene};
+use projection::{mask_difference, run, scene, shadowed};
 use std::path::Path;
 use support::{assert_images_match, Tolerance};
 
@@ -77,12 +77,7 @@ fn emulate_and_native_agree(name: &str) {
         },
     );
     // Shadowed somewhere, lit elsewhere.
-    let shadowed = emulate
-        .mask
-        .data
-        .iter()
-        .filter(|&&v| Class::of(v) == Class::Shadowed)
-        .count();
+    let shadowed = shadowed(&emulate.mask);
     // At 256²: 208 on the teapot (its handle and lid), thousands on the F-35.
     assert!(
         shadowed > pixels / 1000,

@@ -19,13 +19,13 @@
 mod projection;
 mod support;
 
-use fixedfunc::metrics::{Class, Mask};
+use fixedfunc::metrics::Mask;
 use fixedfunc::render::{render, ImageSize, RenderOptions};
 use fixedfunc::scene::{LightKind, OccluderProgram, Scene};
 use fixedfunc::techniques::{lookup, parse_name, Prepared, TechniqueError};
 use fixedfunc::vocab::PipelineKind;
 use glam::Vec3;
-use projection::{mask_difference, run};
+use projection::{mask_difference, run, shadowed};
 use std::path::Path;
 
 const SIZE: ImageSize = ImageSize {
@@ -61,13 +61,6 @@ fn mask(scene: &Scene, program: OccluderProgram) -> Mask {
         SIZE,
     )
     .mask
-}
-
-fn shadowed(mask: &Mask) -> usize {
-    mask.data
-        .iter()
-        .filter(|&&v| Class::of(v) == Class::Shadowed)
-        .count()
 }
 
 /// Pixels of a different class between `a` and `b`, printed, and at most `allowed`.

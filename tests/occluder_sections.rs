@@ -18,11 +18,10 @@
 mod projection;
 mod support;
 
-use fixedfunc::metrics::Class;
 use fixedfunc::render::ImageSize;
 use fixedfunc::scene::{OccluderProgram, Scene};
 use fixedfunc::vocab::PipelineKind;
-use projection::{mask_difference, run};
+use projection::{mask_difference, run, shadowed};
 use std::path::Path;
 use support::{assert_images_match, Tolerance};
 
@@ -74,12 +73,7 @@ fn emulate_and_native_draw_the_same_sectioned_teapot() {
             max_bad_pixels: PIXELS / 1000,
         },
     );
-    let shadowed = emulate
-        .mask
-        .data
-        .iter()
-        .filter(|&&v| Class::of(v) == Class::Shadowed)
-        .count();
+    let shadowed = shadowed(&emulate.mask);
     assert!(shadowed > PIXELS / 1000, "{shadowed} shadowed pixels");
     let wrong = emulate.metrics.all.wrong_percent;
     assert!(wrong < 12.0, "{wrong}% of the geometry pixels wrong");

@@ -23,6 +23,7 @@ use crate::scene::Scene;
 
 use super::csv::{line, opt};
 use super::provenance::Provenance;
+use super::table::{aligned, HeaderRule};
 use super::ResultRow;
 
 /// Pixels of one kind on one object, and how many of them the technique got wrong.
@@ -205,35 +206,10 @@ pub fn objects_table(rows: &[ResultRow]) -> String {
         }));
         lines.push(l);
     }
-    let widths: Vec<usize> = (0..lines[0].len())
-        .map(|c| {
-            lines
-                .iter()
-                .map(|l| l[c].chars().count())
-                .max()
-                .unwrap_or(0)
-        })
-        .collect();
     let mut out = "error by object, wrong %: self-shadow / from others / lit (— no such pixels)\n"
         .to_string();
-    for l in &lines {
-        let cells: Vec<String> = l
-            .iter()
-            .zip(&widths)
-            .enumerate()
-            .map(|(c, (text, &w))| {
-                let pad = " ".repeat(w - text.chars().count());
-                // Names left, figures right.
-                if c < 2 {
-                    format!("{text}{pad}")
-                } else {
-                    format!("{pad}{text}")
-                }
-            })
-            .collect();
-        out.push_str(cells.join("  ").trim_end());
-        out.push('\n');
-    }
+    // Names left, figures right.
+    out.push_str(&aligned(&lines, 2, HeaderRule::None));
     out
 }
 

@@ -61,38 +61,8 @@ pub fn comparison_table(rows: &[ResultRow]) -> String {
             )),
         }
     }
-    let widths: Vec<usize> = (0..HEADER.len())
-        .map(|c| {
-            lines
-                .iter()
-                .map(|l| l[c].chars().count())
-                .max()
-                .unwrap_or(0)
-        })
-        .collect();
-    let mut out = String::new();
-    for (i, l) in lines.iter().enumerate() {
-        let cells: Vec<String> = l
-            .iter()
-            .zip(&widths)
-            .enumerate()
-            .map(|(c, (text, &w))| {
-                let pad = w - text.chars().count();
-                // Names (and the offset) left, numbers right.
-                if c < 3 {
-                    format!("{text}{}", " ".repeat(pad))
-                } else {
-                    format!("{}{text}", " ".repeat(pad))
-                }
-            })
-            .collect();
-        out.push_str(cells.join("  ").trim_end());
-        out.push('\n');
-        if i == 0 {
-            out.push_str(&"-".repeat(widths.iter().sum::<usize>() + 2 * (widths.len() - 1)));
-            out.push('\n');
-        }
-    }
+    // Names (and the offset) left, numbers right.
+    let mut out = aligned(&lines, 3, HeaderRule::Dashes);
     out.push_str(
         "* on the Pareto front: no other row is faster beyond doubt (all its frames quicker) \
          and as accurate, or as fast within the frames' spread and more accurate\n",
@@ -123,6 +93,52 @@ pub fn phase_lines(c: &Comparison) -> String {
                 cost.frames_ms,
                 cost.finish_ms
             ));
+        }
+    }
+    out
+}
+
+/// Whether a rule of dashes follows the first line of an [`aligned`] table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum HeaderRule {
+    Dashes,
+    None,
+}
+
+/// `lines` as columns two spaces apart, each as wide as its widest cell: the first `left`
+/// columns left-aligned (names), the others right-aligned (figures); a line each.
+pub(super) fn aligned(lines: &[Vec<String>], left: usize, rule: HeaderRule) -> String {
+    let columns = lines.first().map_or(0, Vec::len);
+    let widths: Vec<usize> = (0..columns)
+        .map(|c| {
+            lines
+                .iter()
+                .map(|l| l.get(c).map_or(0, |t| t.chars().count()))
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let mut out = String::new();
+    for (i, l) in lines.iter().enumerate() {
+        let cells: Vec<String> = l
+            .iter()
+            .zip(&widths)
+            .enumerate()
+            .map(|(c, (text, &w))| {
+                let pad = " ".repeat(w.saturating_sub(text.chars().count()));
+                if c < left {
+                    format!("{text}{pad}")
+                } else {
+                    format!("{pad}{text}")
+                }
+            })
+            .collect();
+        out.push_str(cells.join("  ").trim_end());
+        out.push('\n');
+        if i == 0 && rule == HeaderRule::Dashes {
+            let width = widths.iter().sum::<usize>() + 2 * widths.len().saturating_sub(1);
+            out.push_str(&"-".repeat(width));
+            out.push('\n');
         }
     }
     out

@@ -87,6 +87,14 @@ pub fn score(mask: &Mask, truth: &Mask, pixels: &[bool], band: u32) -> Score {
     s
 }
 
+/// Pixels a mask shadows.
+pub fn shadowed(mask: &Mask) -> usize {
+    mask.data
+        .iter()
+        .filter(|&&v| Class::of(v) == Class::Shadowed)
+        .count()
+}
+
 /// Pixels whose class differs between two masks.
 pub fn mask_difference(a: &Mask, b: &Mask) -> usize {
     a.data
