@@ -94,7 +94,8 @@ fn alpha_test(reference: &str) -> String {
 
 const CASES: &[Case] = &[
     // glColor: GL 1.x clamps the vertex colour to [0, 1] before rasterisation (§2.13.6
-    // "Colors and Coloring"). Measured native: +∞ → 1, −∞ → 0, NaN → 0, 1e39 → 1.
+    // "Colors and Coloring"). Measured native, the current colour: +∞ → 1, −∞ → 0, NaN → 0,
+    // 1e39 → 1.
     Case {
         name: "color_positive_infinity",
         script: || format!("glColor4f(INFINITY, 0, 0, 1);\n{}", quad(0.0)),
@@ -135,6 +136,52 @@ glEnd();
             )
         },
         pixel: None,
+    },
+    // A NaN given per vertex (glColor inside glBegin/glEnd) is a vertex attribute, and the
+    // vertex clamp sends it to 1, alpha too; the current colour's NaN (`color_nan`) to 0.
+    // Measured native: magenta, opaque; the emulated path drew opaque-less blue.
+    Case {
+        name: "color_per_vertex_nan",
+        script: || {
+            format!(
+                "glBegin(GL_QUADS);
+glColor4f(NAN, 0, 1, NAN); glVertex2f(0, 0);
+glColor4f(NAN, 0, 1, NAN); glVertex2f({W}, 0);
+glColor4f(NAN, 0, 1, NAN); glVertex2f({W}, {H});
+glColor4f(NAN, 0, 1, NAN); glVertex2f(0, {H});
+glEnd();
+"
+            )
+        },
+        pixel: Some([255, 0, 255, 255]),
+    },
+    // The secondary colour follows the same rule: per vertex NaN → 1, current NaN → 0.
+    Case {
+        name: "secondary_color_per_vertex_nan",
+        script: || {
+            format!(
+                "glEnable(GL_COLOR_SUM);
+glColor4f(0, 0, 0, 1);
+glBegin(GL_QUADS);
+glSecondaryColor3f(NAN, 0, 0.5); glVertex2f(0, 0);
+glSecondaryColor3f(NAN, 0, 0.5); glVertex2f({W}, 0);
+glSecondaryColor3f(NAN, 0, 0.5); glVertex2f({W}, {H});
+glSecondaryColor3f(NAN, 0, 0.5); glVertex2f(0, {H});
+glEnd();
+"
+            )
+        },
+        pixel: Some([255, 0, 128, 255]),
+    },
+    Case {
+        name: "secondary_color_nan",
+        script: || {
+            format!(
+                "glEnable(GL_COLOR_SUM);\nglColor4f(0, 0, 0, 1);\nglSecondaryColor3f(NAN, 0, 0.5);\n{}",
+                quad(0.0)
+            )
+        },
+        pixel: Some([0, 0, 128, 255]),
     },
     // COLOR_MATERIAL tracks the unclamped current colour; lighting then clamps its sum. The
     // red sum is ∞ + ∞·0 (the light's ambient is 0) = NaN, and a lit NaN clamps to 1.
@@ -487,6 +534,9 @@ named_cases!(
     color_1e39,
     color_alpha_nan,
     color_per_vertex_infinity,
+    color_per_vertex_nan,
+    secondary_color_per_vertex_nan,
+    secondary_color_nan,
     color_material_infinity,
     alpha_func_ref_nan,
     alpha_func_ref_positive_infinity,

@@ -417,11 +417,23 @@ pub fn set_current_values(
             sent.set(gl, location, [n.x, n.y, n.z, 0.0]);
         }
     }
+    // A NaN in the current colour drawn unlit becomes 0, where the program's clamp sends a
+    // per-vertex NaN to 1 (Mesa's native path, measured: `shadergen::vertex::SATURATE`).
+    // Lit, the current colour feeds COLOR_MATERIAL, whose NaN the lighting clamps to 1.
     if !arrays.colors {
-        sent.set(gl, ATTRIB_COLOR, cur.color.to_array());
+        let color = if state.lighting {
+            cur.color
+        } else {
+            nan_to_zero(cur.color)
+        };
+        sent.set(gl, ATTRIB_COLOR, color.to_array());
     }
     if !arrays.secondary_colors {
-        sent.set(gl, ATTRIB_SECONDARY, cur.secondary_color.to_array());
+        sent.set(
+            gl,
+            ATTRIB_SECONDARY,
+            nan_to_zero(cur.secondary_color).to_array(),
+        );
     }
     if !arrays.fog_coords {
         sent.set(gl, ATTRIB_FOG_COORD, [cur.fog_coord, 0.0, 0.0, 1.0]);
@@ -431,6 +443,11 @@ pub fn set_current_values(
             sent.set(gl, ATTRIB_TEXCOORD0 + u as u32, t.to_array());
         }
     }
+}
+
+/// `v` with each NaN component 0.
+fn nan_to_zero(v: Vec4) -> Vec4 {
+    Vec4::select(v.is_nan_mask(), Vec4::ZERO, v)
 }
 
 /// The generic attribute values last sent with glVertexAttrib4f — context state in core

@@ -113,17 +113,16 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
 /// The vertex colour clamp of GL 1.x (§2.13.6): every colour leaving the vertex stage is
 /// clamped to [0, 1] before rasterisation, so +∞ (and 1e39, +∞ as a GLfloat) becomes 1 and
 /// −∞ becomes 0. NaN, which the spec leaves undefined, follows Mesa 22.3.6 llvmpipe's native
-/// path (measured, `tests/fidelity_nonfinite.rs`): an unlit colour's NaN becomes 0
-/// (glColor4f(NaN, 0, 1, 1) draws blue), a lit colour's NaN becomes 1 (a NaN diffuse
-/// material draws full red, as if the lighting sum were clamped min-then-max by a min and
-/// a max that drop a NaN operand). GLSL leaves clamp() of NaN undefined, hence the explicit
-/// isnan. Clamping after interpolation instead would not do: ∞ interpolated across a
-/// triangle is NaN.
+/// path (measured, `tests/fidelity_nonfinite.rs`): a NaN the vertex stage computes or reads
+/// per vertex becomes 1 — a NaN diffuse material draws full red, and so does a colour
+/// array's or a glColor4f(NaN, 0, 1, 1) inside glBegin/glEnd (magenta), primary and
+/// secondary, alpha too — as if clamped by a min and a max that drop a NaN operand. A NaN
+/// in the *current* colour drawn unlit becomes 0 (glColor4f(NaN, 0, 1, 1) before glBegin
+/// draws blue): that one is replaced on the CPU where it is sent (`draw::set_current_values`).
+/// GLSL leaves clamp() of NaN undefined, hence the explicit isnan. Clamping after
+/// interpolation instead would not do: ∞ interpolated across a triangle is NaN.
 const SATURATE: &str =
-    "vec4 saturate(vec4 v) { return mix(clamp(v, 0.0, 1.0), vec4(0.0), isnan(v)); }";
-/// The lit-colour clamp: NaN → 1 (see [`SATURATE`]).
-const SATURATE_LIT: &str =
-    "vec4 saturate_lit(vec4 v) { return mix(clamp(v, 0.0, 1.0), vec4(1.0), isnan(v)); }";
+    "vec4 saturate(vec4 v) { return mix(clamp(v, 0.0, 1.0), vec4(1.0), isnan(v)); }";
 
 /// The secondary colour of an unlit vertex (GL 1.4 §2.7): its attribute (under flat
 /// shading the provoking vertex's, as for the primary colour), clamped as every colour
@@ -351,14 +350,11 @@ fn emit_face(
     for light in &lighting.lights {
         emit_light(w, lighting, inputs, *light, face, n, [&c, &secondary]);
     }
-    w.declare(SATURATE_LIT);
-    w.line(format!(
-        "{} = saturate_lit(vec4({c}, {diffuse}.a));",
-        out[0]
-    ));
+    w.declare(SATURATE);
+    w.line(format!("{} = saturate(vec4({c}, {diffuse}.a));", out[0]));
     if lighting.separate_specular {
         w.line(format!(
-            "{} = vec4(saturate_lit(vec4({secondary}, 0.0)).rgb, 0.0);",
+            "{} = vec4(saturate(vec4({secondary}, 0.0)).rgb, 0.0);",
             out[1]
         ));
     }
