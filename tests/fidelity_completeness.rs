@@ -276,3 +276,119 @@ fn copied_depth_texture_without_min_filter_is_incomplete() {
         check(name, &src, expected);
     }
 }
+
+/// TEXTURE_MAX_LEVEL 0 makes level 0 alone a complete mipmap texture under the default
+/// filter (the common idiom for a texture without mipmaps): green.
+#[test]
+fn max_level_0_completes_a_lone_level_0() {
+    case_2d(
+        "complete-max-level-0",
+        &format!(
+            "{}glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);\n",
+            image_2d(0, "GL_RGBA8", 4, 4)
+        ),
+        GREEN,
+    );
+}
+
+/// TEXTURE_BASE_LEVEL 1: level 1 (blue, 2×2) is the base. Without level 0 the texture is
+/// complete under NEAREST, incomplete under a mipmap filter until level 2 (1×1) is given.
+#[test]
+fn base_level_1_is_the_base() {
+    let blue = texel(1);
+    let base = "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);\n";
+    let nearest = "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);\n";
+    let level1 = image_2d(1, "GL_RGBA8", 2, 2);
+    case_2d(
+        "complete-base-1-nearest",
+        &format!("{level1}{base}{nearest}"),
+        blue,
+    );
+    case_2d(
+        "complete-base-1-mipmap-short",
+        &format!("{level1}{base}"),
+        RED,
+    );
+    let level2 = image_2d(2, "GL_RGBA8", 1, 1);
+    case_2d(
+        "complete-base-1-mipmap",
+        &format!("{level1}{level2}{base}"),
+        blue,
+    );
+}
+
+/// BASE_LEVEL above MAX_LEVEL under a mipmap filter: incomplete, red. (Under NEAREST Mesa
+/// 22.3.6 samples a mixture no rule gives — measured (0x70, 0, 0x8f) over a green, blue,
+/// white, grey chain — and the model calls that incomplete too; not compared.)
+#[test]
+fn base_level_above_max_level_is_incomplete() {
+    case_2d(
+        "complete-base-above-max",
+        &format!(
+            "{}glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 2);\nglTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1);\n",
+            chain(full)
+        ),
+        RED,
+    );
+}
+
+/// Minified to one pixel, MAX_LEVEL and the LOD clamps choose the level: the paths agree
+/// exactly, and the level is the one the parameters name — MAX_LEVEL 1 and MAX_LOD 1 stop
+/// at level 1 (blue); MIN_LOD 2 reads level 2 (white) even magnified.
+#[test]
+fn level_and_lod_clamps_choose_the_level() {
+    let nearest_mipmap =
+        "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);\n";
+    let one_pixel = "glBegin(GL_QUADS);
+glTexCoord2f(0, 0); glVertex2f(0, 0);
+glTexCoord2f(4, 0); glVertex2f(4, 0);
+glTexCoord2f(4, 4); glVertex2f(4, 4);
+glTexCoord2f(0, 4); glVertex2f(0, 4);
+glEnd();
+";
+    for (name, param, expected, quad) in [
+        (
+            "lod-max-level-1",
+            "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1);\n",
+            texel(1),
+            one_pixel,
+        ),
+        (
+            "lod-max-lod-1",
+            "glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 1.0);\n",
+            texel(1),
+            one_pixel,
+        ),
+        (
+            "lod-min-lod-2",
+            "glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 2.0);\n",
+            texel(2),
+            QUAD,
+        ),
+    ] {
+        let src = format!(
+            "{}glBindTexture(GL_TEXTURE_2D, 1);\n{}{nearest_mipmap}{param}glEnable(GL_TEXTURE_2D);\n{quad}",
+            frame_start(),
+            chain(full)
+        );
+        check(name, &src, expected);
+    }
+}
+
+/// GENERATE_MIPMAP derives the levels above the base level when the base level changes,
+/// and nothing when another level does: with BASE_LEVEL 1, re-specifying level 1 completes
+/// the chain (blue); specifying level 0 leaves it incomplete (red).
+#[test]
+fn generate_mipmap_follows_the_base_level() {
+    let setup = "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);\nglTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);\n";
+    case_2d(
+        "complete-generate-base-1",
+        &format!("{setup}{}", image_2d(1, "GL_RGBA8", 2, 2)),
+        texel(1),
+    );
+    case_2d(
+        "complete-generate-level-0-base-1",
+        &format!("{setup}{}", image_2d(0, "GL_RGBA8", 4, 4)),
+        RED,
+    );
+}

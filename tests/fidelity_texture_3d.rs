@@ -85,14 +85,13 @@ fn script() -> String {
     // Panel 4: LINEAR between the images, r from 0 to 1 across the panel.
     s.push_str(&filters("GL_LINEAR", "GL_LINEAR"));
     s.push_str(&panel(4, 0, (0.0, 1.0)));
-    // Panels 5–7: r beyond 1 under REPEAT and CLAMP_TO_EDGE, and up to 1 under CLAMP,
-    // whose LINEAR filter blends the border in there (LINEAR). The emulated path's CLAMP
-    // is CLAMP_TO_BORDER (`pipeline::emulate::conv`): beyond 1 it reads the border alone,
-    // where Mesa still blends half the edge texel in.
+    // Panels 5–7: r beyond 1 under REPEAT, CLAMP_TO_EDGE and CLAMP, whose LINEAR filter
+    // blends half the edge texel with the border from r = 1 on (the emulated path clamps r
+    // to [0, 1] and samples with CLAMP_TO_BORDER, `key::ClampKey`).
     for (k, (mode, r)) in [
         ("GL_REPEAT", (0.9, 1.6)),
         ("GL_CLAMP_TO_EDGE", (0.9, 1.6)),
-        ("GL_CLAMP", (0.5, 1.0)),
+        ("GL_CLAMP", (0.9, 1.6)),
     ]
     .iter()
     .enumerate()

@@ -518,9 +518,7 @@ impl FixedState {
         };
         let tex = self.bound_mut(t.target)?;
         tex.set_level(t.level, level);
-        if t.level == 0 {
-            tex.base_level_changed();
-        }
+        tex.level_changed(t.level);
         Ok(())
     }
 
@@ -575,9 +573,7 @@ impl FixedState {
             // Mixed formats or unknown texels: only the GPU copy is authoritative.
             _ => None,
         };
-        if t.level == 0 {
-            tex.base_level_changed();
-        }
+        tex.level_changed(t.level);
         Ok(())
     }
 
@@ -594,9 +590,7 @@ impl FixedState {
         };
         let tex = self.bound_mut(TextureTarget::Texture2D)?;
         tex.set_level(c.level, level);
-        if c.level == 0 {
-            tex.base_level_changed();
-        }
+        tex.level_changed(c.level);
         Ok(())
     }
 

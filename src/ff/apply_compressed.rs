@@ -47,9 +47,7 @@ impl FixedState {
         };
         let tex = self.bound_mut(TextureTarget::Texture2D)?;
         tex.set_level(t.level, level);
-        if t.level == 0 {
-            tex.base_level_changed();
-        }
+        tex.level_changed(t.level);
         Ok(())
     }
 

@@ -111,9 +111,9 @@ impl FixedState {
             Command::ReadBuffer(b) => fb.set_color_buffer(true, *b)?,
             Command::GenerateMipmap(target) => {
                 let tex = self.bound_texture_mut(*target)?;
-                if tex.level(0).is_none() {
+                if tex.base().is_none() {
                     return Err(GlError::invalid_operation(
-                        "glGenerateMipmap needs an image at level 0",
+                        "glGenerateMipmap needs an image at the base level",
                     ));
                 }
                 tex.generate_levels();

@@ -668,6 +668,10 @@ impl FixedState {
                         TexParam::DepthTextureMode(p.depth_texture_mode),
                         TexParam::CompareFailValue(p.compare_fail_value),
                         TexParam::GenerateMipmap(p.generate_mipmap),
+                        TexParam::BaseLevel(p.base_level),
+                        TexParam::MaxLevel(p.max_level),
+                        TexParam::MinLod(p.min_lod),
+                        TexParam::MaxLod(p.max_lod),
                     ] {
                         out.push(Command::TexParameter { target, param });
                     }

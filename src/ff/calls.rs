@@ -5,6 +5,7 @@ use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
 use super::glenum::{Family, GlEnum};
 use super::pixel_types;
+use super::texture::level_from_float;
 use super::*;
 
 fn volume<A: Args>(c: &A) -> Result<ViewVolume, A::Error> {
@@ -341,6 +342,10 @@ const TEX_PARAMS: &[&str] = &[
     "GL_DEPTH_TEXTURE_MODE",
     "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB",
     "GL_GENERATE_MIPMAP",
+    "GL_TEXTURE_BASE_LEVEL",
+    "GL_TEXTURE_MAX_LEVEL",
+    "GL_TEXTURE_MIN_LOD",
+    "GL_TEXTURE_MAX_LOD",
 ];
 
 const ENV_PARAMS: &[&str] = &[
@@ -582,6 +587,10 @@ pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
         "GL_TEXTURE_COMPARE_FUNC" => TexParam::CompareFunc(c.enm(2)?),
         "GL_DEPTH_TEXTURE_MODE" => TexParam::DepthTextureMode(c.enm(2)?),
         "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB" => TexParam::CompareFailValue(c.f32(2)?),
+        "GL_TEXTURE_BASE_LEVEL" => TexParam::BaseLevel(level_from_float(c.f64(2)?)),
+        "GL_TEXTURE_MAX_LEVEL" => TexParam::MaxLevel(level_from_float(c.f64(2)?)),
+        "GL_TEXTURE_MIN_LOD" => TexParam::MinLod(c.f32(2)?),
+        "GL_TEXTURE_MAX_LOD" => TexParam::MaxLod(c.f32(2)?),
         _ => TexParam::GenerateMipmap(c.boolean(2)?),
     })
 }

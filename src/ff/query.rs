@@ -688,8 +688,7 @@ impl FixedState {
     }
 
     /// glGetTexParameter{f,i}v(target, pname): the texture bound to `target` on the active
-    /// unit. BASE_LEVEL, MAX_LEVEL, MIN_LOD and MAX_LOD are not settable in the model and
-    /// answer their GL defaults (0, 1000, −1000, 1000).
+    /// unit.
     pub fn get_tex_parameter(&self, target: u32, pname: u32) -> Result<Queried, GlErrorKind> {
         let t = TextureTarget::from_gl_value(target).ok_or(GlErrorKind::InvalidEnum)?;
         let name = self.units[self.active_unit()].bound(t);
@@ -709,10 +708,10 @@ impl FixedState {
             r::DEPTH_TEXTURE_MODE => enm(p.depth_texture_mode),
             r::GENERATE_MIPMAP => boolean(p.generate_mipmap),
             TEXTURE_COMPARE_FAIL_VALUE_ARB => floats(&[p.compare_fail_value]),
-            r::TEXTURE_BASE_LEVEL => int(0),
-            r::TEXTURE_MAX_LEVEL => int(1000),
-            r::TEXTURE_MIN_LOD => floats(&[-1000.0]),
-            r::TEXTURE_MAX_LOD => floats(&[1000.0]),
+            r::TEXTURE_BASE_LEVEL => int(p.base_level),
+            r::TEXTURE_MAX_LEVEL => int(p.max_level),
+            r::TEXTURE_MIN_LOD => floats(&[p.min_lod]),
+            r::TEXTURE_MAX_LOD => floats(&[p.max_lod]),
             // Not kept by the model either: their GL 1.5 defaults (Table 6.16; every
             // texture is resident).
             r::TEXTURE_LOD_BIAS => floats(&[0.0]),

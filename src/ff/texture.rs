@@ -221,10 +221,21 @@ impl Filter {
     pub fn uses_mipmaps(self) -> bool {
         !matches!(self, Filter::Nearest | Filter::Linear)
     }
+
+    /// Whether texels within a level are blended (LINEAR, LINEAR_MIPMAP_*) rather than
+    /// the nearest taken (NEAREST, NEAREST_MIPMAP_*).
+    pub fn blends_within_level(self) -> bool {
+        matches!(
+            self,
+            Filter::Linear | Filter::LinearMipmapNearest | Filter::LinearMipmapLinear
+        )
+    }
 }
 
-/// Wrap modes. CLAMP blends with the border colour at the edge under LINEAR; CLAMP_TO_EDGE
-/// never samples the border; CLAMP_TO_BORDER samples only the border outside [0, 1].
+/// Wrap modes. CLAMP clamps the coordinate to [0, 1] before filtering, so LINEAR blends the
+/// edge texel half and half with the border colour there and NEAREST takes the edge texel;
+/// CLAMP_TO_EDGE never samples the border; CLAMP_TO_BORDER samples only the border outside
+/// [0, 1].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Wrap {
     Repeat,
@@ -272,6 +283,26 @@ pub enum TexParam {
     CompareFailValue(f32),
     /// GENERATE_MIPMAP (GL 1.4).
     GenerateMipmap(bool),
+    /// TEXTURE_BASE_LEVEL (GL 1.2): negative is INVALID_VALUE.
+    BaseLevel(i32),
+    /// TEXTURE_MAX_LEVEL (GL 1.2): negative is INVALID_VALUE.
+    MaxLevel(i32),
+    /// TEXTURE_MIN_LOD (GL 1.2): any value, NaN kept (Mesa stores it as given).
+    MinLod(f32),
+    /// TEXTURE_MAX_LOD (GL 1.2).
+    MaxLod(f32),
+}
+
+/// A level parameter (BASE_LEVEL, MAX_LEVEL) from glTexParameterf's float as Mesa converts
+/// it (measured): rounded to nearest, halves away from zero (1.7 → 2, −0.4 → 0), saturated
+/// to the GLint range (3e9 → 2147483647); NaN becomes the most negative GLint, which the
+/// parameter then refuses as INVALID_VALUE.
+pub fn level_from_float(v: f64) -> i32 {
+    if v.is_nan() {
+        i32::MIN
+    } else {
+        v.round().clamp(f64::from(i32::MIN), f64::from(i32::MAX)) as i32
+    }
 }
 
 /// The parameters of one texture object.
@@ -299,6 +330,14 @@ pub struct TexParams {
     pub compare_fail_value: f32,
     /// GL default: FALSE.
     pub generate_mipmap: bool,
+    /// GL default: 0.
+    pub base_level: i32,
+    /// GL default: 1000.
+    pub max_level: i32,
+    /// GL default: −1000.
+    pub min_lod: f32,
+    /// GL default: 1000.
+    pub max_lod: f32,
 }
 
 impl TexParams {
@@ -314,6 +353,10 @@ impl TexParams {
         depth_texture_mode: DepthTextureMode::Luminance,
         compare_fail_value: 0.0,
         generate_mipmap: false,
+        base_level: 0,
+        max_level: 1000,
+        min_lod: -1000.0,
+        max_lod: 1000.0,
     };
 
     /// glTexParameter: validates, then sets.
@@ -337,6 +380,15 @@ impl TexParams {
             TexParam::DepthTextureMode(m) => self.depth_texture_mode = m,
             TexParam::CompareFailValue(v) => self.compare_fail_value = v.clamp(0.0, 1.0),
             TexParam::GenerateMipmap(b) => self.generate_mipmap = b,
+            TexParam::BaseLevel(l) | TexParam::MaxLevel(l) if l < 0 => {
+                return Err(GlError::invalid_value(
+                    "TEXTURE_BASE_LEVEL and TEXTURE_MAX_LEVEL must not be negative",
+                ));
+            }
+            TexParam::BaseLevel(l) => self.base_level = l,
+            TexParam::MaxLevel(l) => self.max_level = l,
+            TexParam::MinLod(v) => self.min_lod = v,
+            TexParam::MaxLod(v) => self.max_lod = v,
         }
         Ok(())
     }
@@ -370,10 +422,12 @@ pub struct TexLevel {
 /// Why a texture is incomplete (GL 1.5 §3.8.10): the first rule it breaks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Incomplete {
-    /// Level 0 was never specified.
+    /// The base level (TEXTURE_BASE_LEVEL, 0 by default) was never specified.
     NoBaseLevel,
-    /// Level 0 has a zero width, height or depth.
+    /// The base level has a zero width, height or depth.
     EmptyBaseLevel,
+    /// TEXTURE_BASE_LEVEL is above TEXTURE_MAX_LEVEL.
+    BaseAboveMax,
     /// A mipmap filter, and this level of the chain is not specified.
     MissingLevel(i32),
     /// A mipmap filter, and this level is not half the previous one (rounded down, min 1).
@@ -412,22 +466,48 @@ impl TextureObject {
             .and_then(Option::as_ref)
     }
 
-    /// The base level's internal format, if specified.
-    pub fn format(&self) -> Option<TexFormat> {
-        self.level(0).map(|l| l.internal_format)
+    /// The base level (TEXTURE_BASE_LEVEL), if specified.
+    pub fn base(&self) -> Option<&TexLevel> {
+        self.level(self.params.base_level)
     }
 
-    /// Texture completeness (GL 1.5 §3.8.10), with BASE_LEVEL 0 and MAX_LEVEL 1000 (the
-    /// model has neither parameter, so both keep their GL defaults):
-    /// - the base level (0) is specified with a non-zero width and height (Mesa:
+    /// The base level's internal format, if specified.
+    pub fn format(&self) -> Option<TexFormat> {
+        self.base().map(|l| l.internal_format)
+    }
+
+    /// The last level a mipmap filter reads, q = min(base + p, MAX_LEVEL) (GL 1.5
+    /// §3.8.8), p the log2 of the base level's largest dimension; the base level without
+    /// one.
+    pub fn last_level(&self) -> i32 {
+        let b = self.params.base_level;
+        let Some(base) = self.base() else {
+            return b;
+        };
+        let mut size = (base.width, base.height, base.depth);
+        let mut p = 0;
+        while let Some(next) = half(size) {
+            p += 1;
+            size = next;
+        }
+        b.saturating_add(p).min(self.params.max_level.max(b))
+    }
+
+    /// Texture completeness (GL 1.5 §3.8.10), from b = TEXTURE_BASE_LEVEL to
+    /// q = [`TextureObject::last_level`]:
+    /// - the base level b is specified with a non-zero width and height (Mesa:
     ///   "texture width or height = 0"); a default object never given an image is
     ///   incomplete;
+    /// - b ≤ TEXTURE_MAX_LEVEL. Mesa 22.3.6 (measured) treats b > MAX_LEVEL as incomplete
+    ///   under a mipmap filter only, and under NEAREST or LINEAR samples a mixture of
+    ///   levels that no rule gives; the model calls it incomplete under any filter, as
+    ///   GL 3.0 §3.9.10 says;
     /// - with a non-mipmap MIN_FILTER (NEAREST, LINEAR) that is all;
-    /// - with a mipmap MIN_FILTER, levels 1..=p are specified too, p = log2 of the larger
-    ///   base dimension, each level max(1, ⌊previous / 2⌋) in each dimension (so the last is
-    ///   1×1; a 1D texture halves its width only, its height stays 1; a 3D texture halves
-    ///   its depth too, p the log2 of the largest of the three), all in the base level's
-    ///   internal format and border. Levels after p are ignored.
+    /// - with a mipmap MIN_FILTER, levels b + 1..=q are specified too, each level
+    ///   max(1, ⌊previous / 2⌋) in each dimension (so a full chain ends 1×1; a 1D texture
+    ///   halves its width only, its height stays 1; a 3D texture halves its depth too),
+    ///   all in the base level's internal format and border. Levels outside b..=q are
+    ///   ignored.
     ///
     /// Borders: the model accepts border 0 only (`check_image_size`), so they always agree.
     /// Cube maps are not in the model, so cube completeness is not either.
@@ -436,16 +516,21 @@ impl TextureObject {
     /// receives, as if texturing were off for it (§3.8.15) — Mesa's native path does so,
     /// and the emulated path drops the unit from the `ShaderKey`.
     pub fn completeness(&self) -> Result<TexFormat, Incomplete> {
-        let base = self.level(0).ok_or(Incomplete::NoBaseLevel)?;
+        let base = self.base().ok_or(Incomplete::NoBaseLevel)?;
         if base.width <= 0 || base.height <= 0 || base.depth <= 0 {
             return Err(Incomplete::EmptyBaseLevel);
+        }
+        if self.params.base_level > self.params.max_level {
+            return Err(Incomplete::BaseAboveMax);
         }
         if !self.params.min_filter.uses_mipmaps() {
             return Ok(base.internal_format);
         }
         let mut size = (base.width, base.height, base.depth);
-        let mut level = 0;
-        while let Some(next) = half(size) {
+        let last = self.last_level();
+        let mut level = self.params.base_level;
+        while level < last {
+            let Some(next) = half(size) else { break };
             level += 1;
             size = next;
             let l = self.level(level).ok_or(Incomplete::MissingLevel(level))?;
@@ -468,21 +553,23 @@ impl TextureObject {
         self.completeness().is_ok()
     }
 
-    /// GENERATE_MIPMAP (GL 1.4 §3.8.8): after the base level changes (TexImage,
-    /// CopyTexImage, TexSubImage) while the parameter is TRUE, levels 1..=p are replaced by
-    /// images derived from it — halved sizes down to 1×1, the base internal format. The
-    /// texels are the GL's to compute (a box filter is typical), so the model records the
-    /// levels with unknown texels.
-    pub(crate) fn base_level_changed(&mut self) {
-        if self.params.generate_mipmap {
+    /// GENERATE_MIPMAP (GL 1.4 §3.8.8): after the base level (TEXTURE_BASE_LEVEL) changes
+    /// (TexImage, CopyTexImage, TexSubImage) while the parameter is TRUE, the levels above
+    /// it are replaced by images derived from it ([`TextureObject::generate_levels`]); a
+    /// change to another level derives nothing (Mesa, measured). The texels are the GL's to
+    /// compute (a box filter is typical), so the model records the levels with unknown
+    /// texels.
+    pub(crate) fn level_changed(&mut self, level: i32) {
+        if self.params.generate_mipmap && level == self.params.base_level {
             self.generate_levels();
         }
     }
 
-    /// Levels 1..=p derived from level 0 (glGenerateMipmap, GENERATE_MIPMAP): halved
-    /// sizes down to 1×1, the base internal format, texels unknown to the model.
+    /// Levels b + 1..=q derived from the base level b (glGenerateMipmap, GENERATE_MIPMAP):
+    /// halved sizes down to 1×1 or MAX_LEVEL, the base internal format, texels unknown to
+    /// the model.
     pub(crate) fn generate_levels(&mut self) {
-        let Some(base) = self.level(0) else {
+        let Some(base) = self.base() else {
             return;
         };
         let format = base.internal_format;
@@ -491,8 +578,10 @@ impl TextureObject {
         if size.0 <= 0 || size.1 <= 0 || size.2 <= 0 {
             return;
         }
-        let mut level = 0;
-        while let Some(next) = half(size) {
+        let last = self.last_level();
+        let mut level = self.params.base_level;
+        while level < last {
+            let Some(next) = half(size) else { break };
             level += 1;
             size = next;
             self.set_level(
@@ -705,6 +794,52 @@ mod tests {
 
     /// GL 1.5 §3.8.10, case by case: (name, MIN_FILTER, levels, verdict).
     #[test]
+    fn level_parameters_round_saturate_and_refuse_negatives() {
+        assert_eq!(level_from_float(1.7), 2);
+        assert_eq!(level_from_float(1.4), 1);
+        assert_eq!(level_from_float(-0.4), 0);
+        assert_eq!(level_from_float(2.5), 3);
+        assert_eq!(level_from_float(3e9), i32::MAX);
+        assert_eq!(level_from_float(f64::NAN), i32::MIN);
+        let mut p = TexParams::DEFAULT;
+        assert!(p.set(TexParam::BaseLevel(-1)).is_err());
+        assert!(p
+            .set(TexParam::MaxLevel(level_from_float(f64::NAN)))
+            .is_err());
+        assert_eq!((p.base_level, p.max_level), (0, 1000));
+        p.set(TexParam::MaxLod(f32::NAN)).unwrap();
+        assert!(p.max_lod.is_nan());
+    }
+
+    #[test]
+    fn the_level_range_bounds_the_chain() {
+        use Filter::*;
+        let mut t = TextureObject::new(TextureTarget::Texture2D);
+        t.set_level(0, level(TexFormat::Rgba8, 8, 8).unwrap());
+        assert_eq!(t.last_level(), 3);
+        assert_eq!(t.completeness(), Err(Incomplete::MissingLevel(1)));
+        t.params.max_level = 0;
+        assert_eq!(t.last_level(), 0);
+        assert!(t.is_complete());
+        t.params.max_level = 1000;
+        t.params.base_level = 1;
+        assert_eq!(t.completeness(), Err(Incomplete::NoBaseLevel));
+        t.set_level(1, level(TexFormat::Rgba8, 4, 4).unwrap());
+        t.params.min_filter = Nearest;
+        assert!(t.is_complete());
+        t.params.min_filter = NearestMipmapNearest;
+        assert_eq!(t.completeness(), Err(Incomplete::MissingLevel(2)));
+        t.params.generate_mipmap = true;
+        t.level_changed(0);
+        assert_eq!(t.completeness(), Err(Incomplete::MissingLevel(2)));
+        t.level_changed(1);
+        assert_eq!(t.last_level(), 3);
+        assert!(t.is_complete());
+        t.params.max_level = 0;
+        assert_eq!(t.completeness(), Err(Incomplete::BaseAboveMax));
+    }
+
+    #[test]
     fn completeness_rules() {
         use Filter::*;
         use TexFormat::{Luminance8, Rgba8};
@@ -841,10 +976,10 @@ mod tests {
     fn generated_mipmaps_complete_the_chain() {
         let mut t = object(Filter::LinearMipmapLinear, vec![]);
         t.set_level(0, level(TexFormat::Rgba8, 6, 3).unwrap());
-        t.base_level_changed();
+        t.level_changed(0);
         assert_eq!(t.completeness(), Err(Incomplete::MissingLevel(1)));
         t.params.generate_mipmap = true;
-        t.base_level_changed();
+        t.level_changed(0);
         assert_eq!(t.completeness(), Ok(TexFormat::Rgba8));
         let sizes: Vec<_> = t
             .levels

@@ -182,9 +182,7 @@ impl FixedState {
                 requested: c.requested,
             },
         );
-        if c.level == 0 {
-            tex.base_level_changed();
-        }
+        tex.level_changed(c.level);
         Ok(())
     }
 
@@ -211,9 +209,7 @@ impl FixedState {
             ));
         }
         level.data = None;
-        if c.level == 0 {
-            tex.base_level_changed();
-        }
+        tex.level_changed(c.level);
         Ok(())
     }
 

@@ -26,7 +26,7 @@ fn volume_chains_halve_every_dimension() {
     t.params.min_filter = Filter::LinearMipmapLinear;
     t.params.generate_mipmap = true;
     t.set_level(0, volume(TexFormat::Rgba8, (8, 4, 2)).unwrap());
-    t.base_level_changed();
+    t.level_changed(0);
     let sizes: Vec<_> = t
         .levels
         .iter()

@@ -151,6 +151,33 @@ int main(void) {
   printf("%-28s %d  err 0x%x\n", "min filter", iv[0], glGetError());
   glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, iv);
   printf("%-28s %d  err 0x%x\n", "wrap s", iv[0], glGetError());
+  /* GL 1.2's level range and LOD clamps: floats rounded to levels, negatives and NaN
+   * refused, kept through glPushAttrib(GL_TEXTURE_BIT). */
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1.7f);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, iv);
+  printf("%-28s %d  err 0x%x\n", "base level (1.7)", iv[0], glGetError());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, -1);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, iv);
+  printf("%-28s %d  err 0x%x\n", "max level (-1)", iv[0], glGetError());
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3e9f);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, iv);
+  printf("%-28s %d  err 0x%x\n", "max level (3e9)", iv[0], glGetError());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 3);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 2.6f);
+  glPushAttrib(GL_TEXTURE_BIT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 9);
+  glPopAttrib();
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, iv);
+  printf("%-28s %d  err 0x%x\n", "base level (popped)", iv[0], glGetError());
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, v);
+  fv("min lod", v, 1);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, iv);
+  printf("%-28s %d  err 0x%x\n", "max lod as int (2.6)", iv[0], glGetError());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1000);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, -1000);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 1000);
   glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, iv);
   printf("%-28s %d  err 0x%x\n", "level 0 width", iv[0], glGetError());
   glGetTexEnviv(GL_TEXTURE_ENV, GL_COMBINE_RGB, iv);

@@ -876,6 +876,20 @@ fn tex_param(target: &str, p: &TexParam) -> String {
         TexParam::CompareFunc(v) => ("GL_TEXTURE_COMPARE_FUNC", n(*v)),
         TexParam::DepthTextureMode(v) => ("GL_DEPTH_TEXTURE_MODE", n(*v)),
         TexParam::GenerateMipmap(v) => ("GL_GENERATE_MIPMAP", b(*v)),
+        TexParam::BaseLevel(v) | TexParam::MaxLevel(v) => {
+            let pname = match p {
+                TexParam::BaseLevel(_) => "GL_TEXTURE_BASE_LEVEL",
+                _ => "GL_TEXTURE_MAX_LEVEL",
+            };
+            return format!("{}({target}, {pname}, {v})", Entry::TexParameteri);
+        }
+        TexParam::MinLod(v) | TexParam::MaxLod(v) => {
+            let pname = match p {
+                TexParam::MinLod(_) => "GL_TEXTURE_MIN_LOD",
+                _ => "GL_TEXTURE_MAX_LOD",
+            };
+            return format!("{}({target}, {pname}, {})", Entry::TexParameterf, f(*v));
+        }
     };
     format!("{}({target}, {pname}, {value})", Entry::TexParameteri)
 }

@@ -8,9 +8,9 @@ use crate::ff::{PixelFormat, TexFormat, Wrap};
 
 pub use crate::ff::glenum::gl as value;
 
-/// CLAMP (GL 1.x: clamp s to [0,1], so LINEAR mixes in the border colour) has no core
-/// equivalent; CLAMP_TO_BORDER reproduces it exactly for LINEAR and is CLAMP_TO_EDGE-like
-/// for NEAREST, which is what CLAMP does there too.
+/// CLAMP (GL 1.x: clamp s to [0, 1], so LINEAR mixes in the border colour and NEAREST takes
+/// the edge texel) has no core equivalent: it is sampled with CLAMP_TO_BORDER from
+/// coordinates the program has clamped (`key::ClampKey`), which gives both.
 pub fn wrap(w: Wrap) -> u32 {
     match w {
         Wrap::Repeat => glow::REPEAT,

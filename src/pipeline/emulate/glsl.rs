@@ -9,6 +9,8 @@ use super::uniforms::UniformSource;
 /// Builds one shader's source: declarations first, then `main`'s body.
 #[derive(Default, Debug)]
 pub struct GlslWriter {
+    /// `#extension` directives, which GLSL wants before any other token.
+    extensions: String,
     declarations: String,
     body: String,
     uniforms: Vec<UniformSource>,
@@ -53,11 +55,19 @@ impl GlslWriter {
         &self.uniforms
     }
 
-    /// The complete source, `#version 330 core` first.
+    /// Requires a GLSL extension (`#extension NAME : require`), once.
+    pub fn extension(&mut self, name: &str) {
+        let line = format!("#extension {name} : require\n");
+        if !self.extensions.contains(&line) {
+            self.extensions.push_str(&line);
+        }
+    }
+
+    /// The complete source, `#version 330 core` first, then the extensions.
     pub fn finish(&self) -> String {
         format!(
-            "#version 330 core\n{}\nvoid main() {{\n{}}}\n",
-            self.declarations, self.body
+            "#version 330 core\n{}{}\nvoid main() {{\n{}}}\n",
+            self.extensions, self.declarations, self.body
         )
     }
 }

@@ -11,8 +11,9 @@ use super::polygon::EdgeRule;
 use crate::ff::{
     AlphaTest, BaseFormat, ColorControl, ColorMaterialMode, Combine, CombineFunc, CombineOperand,
     CombineScale, CombineSource, CombinerInput, CompareFunc, CompareMode, DepthTextureMode, Face,
-    FixedState, FogCoordSource, FogMode, GeneralStage, ShadeModel, TexCoord, TexEnvMode, TexFormat,
-    TexGenMode, TextureTarget, MAX_CLIP_PLANES, MAX_LIGHTS, MAX_TEXTURE_UNITS,
+    Filter, FixedState, FogCoordSource, FogMode, GeneralStage, ShadeModel, TexCoord, TexEnvMode,
+    TexFormat, TexGenMode, TexParams, TextureTarget, Wrap, MAX_CLIP_PLANES, MAX_LIGHTS,
+    MAX_TEXTURE_UNITS,
 };
 use crate::vocab::Precision;
 
@@ -171,6 +172,58 @@ pub struct FragmentUnitKey {
     pub target: TextureTarget,
     pub texel: TexelKey,
     pub env: EnvKey,
+    /// GL 1.x's CLAMP on some of the texture's axes; `None` without it.
+    pub clamp: Option<ClampKey>,
+}
+
+/// CLAMP (GL 1.5 §3.8.7), which core GL lacks: the coordinate is clamped to [0, 1] before
+/// the filter, so LINEAR blends the edge texel half and half with the border colour at
+/// s = 1 and NEAREST takes the edge texel (i = 2ⁿ − 1 at s = 1). The program clamps the
+/// axes and samples with CLAMP_TO_BORDER (`conv::wrap`), the level of detail from the
+/// unclamped coordinates; which rule applies depends on the filter the fragment uses
+/// (measured on Mesa 22.3.6 llvmpipe: a texture with MIN_FILTER NEAREST and MAG_FILTER
+/// LINEAR takes the edge texel where minified and blends with the border where magnified).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ClampKey {
+    /// s, t, r: which axes wrap with CLAMP (only those the target has).
+    pub axes: [bool; 3],
+    /// Whether the MIN_FILTER blends within a level.
+    pub minified: InLevel,
+    /// Whether the MAG_FILTER does.
+    pub magnified: InLevel,
+}
+
+/// How a filter reads within one level.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum InLevel {
+    Nearest,
+    Linear,
+}
+
+impl InLevel {
+    fn of(f: Filter) -> InLevel {
+        if f.blends_within_level() {
+            InLevel::Linear
+        } else {
+            InLevel::Nearest
+        }
+    }
+}
+
+/// The CLAMP axes of a texture sampled through `target`, if any.
+fn clamp_key(target: TextureTarget, p: &TexParams) -> Option<ClampKey> {
+    let dims = match target {
+        TextureTarget::Texture1D => 1,
+        TextureTarget::Texture2D => 2,
+        TextureTarget::Texture3D => 3,
+    };
+    let wraps = [p.wrap_s, p.wrap_t, p.wrap_r];
+    let axes: [bool; 3] = std::array::from_fn(|i| i < dims && wraps[i] == Wrap::Clamp);
+    axes.contains(&true).then(|| ClampKey {
+        axes,
+        minified: InLevel::of(p.min_filter),
+        magnified: InLevel::of(p.mag_filter),
+    })
 }
 
 /// NV_register_combiners: the stages that run and the final combiner (the constant
@@ -255,7 +308,7 @@ impl ShaderKey {
         };
         let vertex_units: Vec<VertexUnitKey> = units
             .iter()
-            .map(|&(unit, _, _)| VertexUnitKey {
+            .map(|&(unit, ..)| VertexUnitKey {
                 unit: unit as u8,
                 coords: TexCoord::ALL.map(|c| match state.units[unit].texgen(c) {
                     Some(g) if !(g.mode == TexGenMode::SphereMap && c.index() >= 2) => {
@@ -297,7 +350,7 @@ impl ShaderKey {
         let fragment = FragmentKey {
             units: units
                 .iter()
-                .map(|&(unit, target, texel)| match combiners {
+                .map(|&(unit, target, texel, clamp)| match combiners {
                     // Register combiners replace the environments and read a depth texel
                     // in one fixed layout (`shadergen::fragment::emit_texel`): neither the
                     // env nor DEPTH_TEXTURE_MODE changes the code.
@@ -306,12 +359,14 @@ impl ShaderKey {
                         target,
                         texel: texel.under_combiners(),
                         env: EnvKey::Modulate,
+                        clamp,
                     },
                     None => FragmentUnitKey {
                         unit: unit as u8,
                         target,
                         texel,
                         env: env_key(state, unit),
+                        clamp,
                     },
                 })
                 .collect(),
@@ -340,7 +395,7 @@ impl ShaderKey {
 /// unit leaves the key, so the program is the one with the unit off — what Mesa's native
 /// path does (measured: level 0 alone under the default NEAREST_MIPMAP_LINEAR draws the
 /// untextured colour, `tests/fidelity_completeness.rs`).
-fn enabled_units(state: &FixedState) -> Vec<(usize, TextureTarget, TexelKey)> {
+fn enabled_units(state: &FixedState) -> Vec<(usize, TextureTarget, TexelKey, Option<ClampKey>)> {
     (0..MAX_TEXTURE_UNITS)
         .filter_map(|unit| {
             let target = state.units[unit].enabled_target()?;
@@ -351,7 +406,7 @@ fn enabled_units(state: &FixedState) -> Vec<(usize, TextureTarget, TexelKey)> {
                 texture.params.compare_mode,
                 texture.params.depth_texture_mode,
             );
-            Some((unit, target, texel))
+            Some((unit, target, texel, clamp_key(target, &texture.params)))
         })
         .collect()
 }

@@ -352,11 +352,12 @@ fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel, state: &Fix
     }
 }
 
-/// GENERATE_MIPMAP (GL 1.4): a change to the base level rebuilds levels 1..=p. The model
-/// has recorded those levels (`TextureObject::base_level_changed`); glGenerateMipmap makes
+/// GENERATE_MIPMAP (GL 1.4): a change to the base level rebuilds the levels above it. The
+/// model has recorded those levels (`TextureObject::level_changed`); glGenerateMipmap makes
 /// their texels, with MAX_LEVEL already covering them.
 pub(super) fn generate_mipmap(gl: &glow::Context, target: u32, object: &TextureObject, level: i32) {
-    if level == 0 && object.params.generate_mipmap && object.level(0).is_some() {
+    if level == object.params.base_level && object.params.generate_mipmap && object.base().is_some()
+    {
         unsafe { gl.generate_mipmap(target) };
     }
 }
@@ -367,7 +368,11 @@ pub(super) fn generate_mipmap(gl: &glow::Context, target: u32, object: &TextureO
 /// never sampled (its unit leaves the key), whatever GL would make of it.
 pub(super) fn apply_params(gl: &glow::Context, target: u32, object: &TextureObject) {
     let p = &object.params;
-    let max_level = object.levels.iter().rposition(Option::is_some).unwrap_or(0) as i32;
+    // GL's range is the model's b..=q, cut at the last level the model holds (levels
+    // outside the range, which GL 1.x ignores, would make core GL's texture incomplete).
+    let held = object.levels.iter().rposition(Option::is_some).unwrap_or(0) as i32;
+    let base_level = p.base_level;
+    let max_level = object.last_level().min(held).max(base_level);
     let (_, swizzle) = object.format().map(conv::tex_format).unwrap_or((
         glow::RGBA8,
         [glow::RED, glow::GREEN, glow::BLUE, glow::ALPHA],
@@ -392,7 +397,10 @@ pub(super) fn apply_params(gl: &glow::Context, target: u32, object: &TextureObje
             glow::TEXTURE_BORDER_COLOR,
             &p.border_color.to_array(),
         );
+        gl.tex_parameter_i32(target, glow::TEXTURE_BASE_LEVEL, base_level);
         gl.tex_parameter_i32(target, glow::TEXTURE_MAX_LEVEL, max_level);
+        gl.tex_parameter_f32(target, glow::TEXTURE_MIN_LOD, p.min_lod);
+        gl.tex_parameter_f32(target, glow::TEXTURE_MAX_LOD, p.max_lod);
         let swizzle = swizzle.map(|s| s as i32);
         gl.tex_parameter_i32_slice(target, glow::TEXTURE_SWIZZLE_RGBA, &swizzle);
         if is_depth {

@@ -221,6 +221,11 @@ pub fn tex_parameter(g: &gl::Gl, target: TextureTarget, param: TexParam) -> bool
         // ARB_shadow_ambient is absent from Mesa: the model keeps the value, GL never sees it.
         TexParam::CompareFailValue(_) => return false,
         TexParam::GenerateMipmap(b) => int(gl::GENERATE_MIPMAP, u32::from(b)),
+        // SAFETY (the four below): plain GL calls on the current context.
+        TexParam::BaseLevel(l) => unsafe { g.TexParameteri(t, gl::TEXTURE_BASE_LEVEL, l) },
+        TexParam::MaxLevel(l) => unsafe { g.TexParameteri(t, gl::TEXTURE_MAX_LEVEL, l) },
+        TexParam::MinLod(v) => unsafe { g.TexParameterf(t, gl::TEXTURE_MIN_LOD, v) },
+        TexParam::MaxLod(v) => unsafe { g.TexParameterf(t, gl::TEXTURE_MAX_LOD, v) },
     }
     true
 }

@@ -8,7 +8,9 @@ use crate::ff::{
     FogMode, TextureTarget,
 };
 use crate::pipeline::emulate::glsl::GlslWriter;
-use crate::pipeline::emulate::key::{EnvKey, FragmentKey, FragmentUnitKey, TexelKey};
+use crate::pipeline::emulate::key::{
+    ClampKey, EnvKey, FragmentKey, FragmentUnitKey, InLevel, TexelKey,
+};
 use crate::pipeline::emulate::polygon::EdgeRule;
 use crate::pipeline::emulate::uniforms::UniformSource;
 use crate::vocab::Precision;
@@ -188,22 +190,50 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
     w.declare(&format!("in vec4 v_tc{u};"));
     projected(w);
     w.line(format!("vec4 p{u} = project(v_tc{u});"));
+    // The coordinates the filter reads (s; s, t; s, t, r) and, for a compare, the r it
+    // compares. CLAMP axes are clamped first (`clamp_coordinates`).
+    let (vector, axes) = match unit.target {
+        TextureTarget::Texture1D => ("float", "x"),
+        TextureTarget::Texture2D => ("vec2", "xy"),
+        TextureTarget::Texture3D => ("vec3", "xyz"),
+    };
+    let read = match unit.clamp {
+        Some(clamp) => {
+            w.line(format!("{vector} w{u} = p{u}.{axes};"));
+            w.line(format!("{vector} k{u} = w{u};"));
+            Some(clamp)
+        }
+        None => None,
+    };
+    let filtered = match read {
+        Some(_) => format!("k{u}"),
+        None => format!("p{u}.{axes}"),
+    };
     let (sampler_type, coord) = match (unit.target, unit.texel) {
         (TextureTarget::Texture2D, TexelKey::Compare(_)) => (
             "sampler2DShadow",
-            format!("vec3(p{u}.xy, clamp(p{u}.z, 0.0, 1.0))"),
+            format!("vec3({filtered}, clamp(p{u}.z, 0.0, 1.0))"),
         ),
         (TextureTarget::Texture1D, TexelKey::Compare(_)) => (
             "sampler1DShadow",
-            format!("vec3(p{u}.x, 0.0, clamp(p{u}.z, 0.0, 1.0))"),
+            format!("vec3({filtered}, 0.0, clamp(p{u}.z, 0.0, 1.0))"),
         ),
-        (TextureTarget::Texture2D, _) => ("sampler2D", format!("p{u}.xy")),
-        (TextureTarget::Texture1D, _) => ("sampler1D", format!("p{u}.x")),
+        (TextureTarget::Texture2D, _) => ("sampler2D", filtered),
+        (TextureTarget::Texture1D, _) => ("sampler1D", filtered),
         // (s, t, r)/q; no depth format is a 3D texture (`ff::texture_volume`), so the
         // texel is a colour.
-        (TextureTarget::Texture3D, _) => ("sampler3D", format!("p{u}.xyz")),
+        (TextureTarget::Texture3D, _) => ("sampler3D", filtered),
     };
     let s = w.uniform_typed(UniformSource::Sampler(u), sampler_type);
+    // texture(), or with CLAMP textureGrad() from the unclamped coordinates' derivatives:
+    // the level of detail is the unclamped coordinates' (GL computes λ before it wraps).
+    let sample = |coord: &str| match read {
+        Some(_) => format!("textureGrad({s}, {coord}, dFdx(w{u}), dFdy(w{u}))"),
+        None => format!("texture({s}, {coord})"),
+    };
+    if let Some(clamp) = read {
+        clamp_coordinates(w, u, unit.target, &s, clamp);
+    }
     let as_mode = |m: DepthTextureMode, v: &str| match m {
         DepthTextureMode::Luminance => format!("vec4(vec3({v}), 1.0)"),
         DepthTextureMode::Intensity => format!("vec4({v})"),
@@ -211,21 +241,22 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
     };
     match unit.texel {
         // The texture's swizzle already gives (L,L,L,1), (I,I,I,I), (0,0,0,A), (L,L,L,A).
-        TexelKey::Color(_) => w.line(format!("vec4 t{u} = texture({s}, {coord});")),
+        TexelKey::Color(_) => w.line(format!("vec4 t{u} = {};", sample(&coord))),
         TexelKey::Depth(_) if combiners => {
             w.line(format!(
-                "vec4 t{u} = vec4(0.0, 0.0, 0.0, texture({s}, {coord}).r);"
+                "vec4 t{u} = vec4(0.0, 0.0, 0.0, {}.r);",
+                sample(&coord)
             ));
         }
         TexelKey::Depth(m) => {
-            w.line(format!("float d{u} = texture({s}, {coord}).r;"));
+            w.line(format!("float d{u} = {}.r;", sample(&coord)));
             w.line(format!("vec4 t{u} = {};", as_mode(m, &format!("d{u}"))));
         }
         TexelKey::Compare(m) => {
             // ARB_shadow_ambient: a failing compare gives the fail value instead of 0; with
             // LINEAR filtering the pass fraction f blends: fail + f·(1 − fail).
             let fail = w.uniform(UniformSource::CompareFail(u));
-            w.line(format!("float c{u} = texture({s}, {coord});"));
+            w.line(format!("float c{u} = {};", sample(&coord)));
             w.line(format!("c{u} = {fail} + c{u} * (1.0 - {fail});"));
             let m = if combiners {
                 DepthTextureMode::Intensity
@@ -234,6 +265,47 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
             };
             w.line(format!("vec4 t{u} = {};", as_mode(m, &format!("c{u}"))));
         }
+    }
+}
+
+/// The largest coordinate below 1 that NEAREST reads as the edge texel: ⌊2ⁿ · s⌋ = 2ⁿ − 1
+/// for every level up to 2²⁰ texels (GL 1.5 §3.8.8: i = 2ⁿ − 1 at s = 1 under CLAMP).
+const BELOW_ONE: &str = "0.99999905";
+
+/// Clamps k{u}'s CLAMP axes to [0, 1] for a blending filter (the edge texel meets the
+/// border half and half at s = 1, sampled with CLAMP_TO_BORDER) or to [0, 1 − 2⁻²⁰] for
+/// NEAREST (the edge texel). When MIN_FILTER and MAG_FILTER read differently, the fragment's
+/// own choice decides: minified where textureQueryLOD's λ is above 0 (GL's c = 0 for
+/// these pairs, §3.8.9).
+fn clamp_coordinates(
+    w: &mut GlslWriter,
+    u: u8,
+    target: TextureTarget,
+    sampler: &str,
+    clamp: ClampKey,
+) {
+    let top = |f: InLevel| match f {
+        InLevel::Linear => "1.0",
+        InLevel::Nearest => BELOW_ONE,
+    };
+    let hi = if clamp.minified == clamp.magnified {
+        top(clamp.minified).to_string()
+    } else {
+        w.extension("GL_ARB_texture_query_lod");
+        w.line(format!(
+            "float hi{u} = textureQueryLOD({sampler}, w{u}).y > 0.0 ? {} : {};",
+            top(clamp.minified),
+            top(clamp.magnified)
+        ));
+        format!("hi{u}")
+    };
+    for (i, _) in clamp.axes.iter().enumerate().filter(|(_, a)| **a) {
+        // A 1D texture's coordinate is a float, which GLSL 3.30 cannot swizzle.
+        let c = match target {
+            TextureTarget::Texture1D => String::new(),
+            _ => format!(".{}", ["x", "y", "z"][i]),
+        };
+        w.line(format!("k{u}{c} = clamp(w{u}{c}, 0.0, {hi});"));
     }
 }
 
