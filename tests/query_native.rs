@@ -780,6 +780,23 @@ fn textures_scene() -> Vec<Command> {
             target: t1,
             param: TexParam::MinFilter(Filter::LinearMipmapNearest),
         },
+        // GL 1.2's level range and LOD clamps, answered as set.
+        Command::TexParameter {
+            target: t1,
+            param: TexParam::BaseLevel(1),
+        },
+        Command::TexParameter {
+            target: t1,
+            param: TexParam::MaxLevel(3),
+        },
+        Command::TexParameter {
+            target: t1,
+            param: TexParam::MinLod(-2.5),
+        },
+        Command::TexParameter {
+            target: t1,
+            param: TexParam::MaxLod(2.6),
+        },
         Command::ActiveTexture(0),
         Command::TexParameter {
             target: t2,
@@ -1264,6 +1281,32 @@ fn raster_position_clipping_and_window_pos_agree() {
         Command::WindowPos(Vec3::new(-3.5, 40.25, 0.75)),
     ];
     assert_agree("window position", &window);
+}
+
+/// Non-finite and zero-w positions as Mesa takes them: a NaN or an infinity passes the
+/// clip test (only a failing comparison rejects) and leaves a valid position whose window
+/// coordinates are NaN; w = 0 with x = y = z = 0 lands at the viewport's centre. Both
+/// before and after a user clip plane.
+#[test]
+fn non_finite_raster_positions_agree() {
+    for (name, p) in [
+        ("NaN x", Vec4::new(f32::NAN, 0.0, 0.0, 1.0)),
+        ("NaN w", Vec4::new(0.0, 0.0, 0.0, f32::NAN)),
+        ("+inf x", Vec4::new(f32::INFINITY, 0.0, 0.0, 1.0)),
+        ("w = 0", Vec4::new(0.0, 0.0, 0.0, 0.0)),
+    ] {
+        let scene = vec![Command::RasterPos(p)];
+        assert_agree(&format!("raster position {name}"), &scene);
+        let clipped = vec![
+            Command::ClipPlane {
+                plane: 0,
+                equation: Vec4::new(1.0, 0.0, 0.0, 0.0),
+            },
+            Command::Enable(Capability::ClipPlane(0)),
+            Command::RasterPos(p),
+        ];
+        assert_agree(&format!("raster position {name}, user plane"), &clipped);
+    }
 }
 
 #[test]

@@ -60,20 +60,26 @@ impl FixedState {
     pub(crate) fn set_raster_pos(&mut self, object: Vec4) {
         let eye = self.modelview_matrix() * object;
         let clip = self.projection_matrix() * eye;
-        // Clipping (§2.12): −w ≤ x, y, z ≤ w; a user plane keeps p′·v_e ≥ 0. A NaN fails.
-        let inside = [clip.x, clip.y, clip.z]
+        // Clipping (§2.12): −w ≤ x, y, z ≤ w; a user plane keeps p′·v_e ≥ 0. As Mesa tests
+        // it (measured through OSMesa): rejected only where a comparison fails outright
+        // (x > w, x < −w, p′·v_e < 0), so a NaN or an infinity that makes one passes, and the
+        // position is valid with NaN window coordinates, which draw nothing.
+        let outside = [clip.x, clip.y, clip.z]
             .iter()
-            .all(|c| -clip.w <= *c && *c <= clip.w);
-        let kept = self
+            .any(|c| *c > clip.w || *c < -clip.w);
+        let rejected = self
             .clip_planes
             .iter()
             .filter(|p| p.enabled)
-            .all(|p| p.value.dot(eye) >= 0.0);
-        if !(inside && kept) {
+            .any(|p| p.value.dot(eye) < 0.0);
+        if outside || rejected {
             self.raster.valid = false;
             return;
         }
-        let ndc = clip.truncate() / clip.w;
+        // Normalised device coordinates x/w; Mesa divides by 1 where w = 0 (the point
+        // (0, 0, 0, 0) passes the test above and lands at the viewport's centre).
+        let w = if clip.w == 0.0 { 1.0 } else { clip.w };
+        let ndc = clip.truncate() / w;
         let v = self.viewport;
         let (n, f) = (self.depth_range.near, self.depth_range.far);
         // x_w = (p_x/2)·x_d + o_x with p_x = width, o_x = x + width/2 (§2.11.1); likewise y;
