@@ -334,7 +334,8 @@ fn base_level_above_max_level_is_incomplete() {
 
 /// Minified to one pixel, MAX_LEVEL and the LOD clamps choose the level: the paths agree
 /// exactly, and the level is the one the parameters name — MAX_LEVEL 1 and MAX_LOD 1 stop
-/// at level 1 (blue); MIN_LOD 2 reads level 2 (white) even magnified.
+/// at level 1 (blue); MIN_LOD 2 reads level 2 (white) even magnified; a unit LOD bias of 1
+/// reads level 1 where the quad is not minified.
 #[test]
 fn level_and_lod_clamps_choose_the_level() {
     let nearest_mipmap =
@@ -363,6 +364,14 @@ glEnd();
             "lod-min-lod-2",
             "glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 2.0);\n",
             texel(2),
+            QUAD,
+        ),
+        // GL 1.4's unit LOD bias: the 4×4 texture over 4×4 pixels (λ = 0, magnified) is
+        // read at λ = 1, level 1, under a bias of 1.
+        (
+            "lod-unit-bias-1",
+            "glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 1.0);\n",
+            texel(1),
             QUAD,
         ),
     ] {

@@ -1098,7 +1098,9 @@ impl Command {
             },
             Command::TexEnv(p) => match p {
                 TexEnvParam::Color(_) => Entry::TexEnvfv,
-                TexEnvParam::RgbScale(_) | TexEnvParam::AlphaScale(_) => Entry::TexEnvf,
+                TexEnvParam::RgbScale(_) | TexEnvParam::AlphaScale(_) | TexEnvParam::LodBias(_) => {
+                    Entry::TexEnvf
+                }
                 _ => Entry::TexEnvi,
             },
             Command::CombinerParameter(p) => match p {

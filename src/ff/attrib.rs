@@ -702,6 +702,7 @@ impl FixedState {
             out.push(Command::TexEnv(TexEnvParam::AlphaScale(
                 e.alpha.scale.factor(),
             )));
+            out.push(Command::TexEnv(TexEnvParam::LodBias(e.lod_bias)));
             for c in TexCoord::ALL {
                 let g = unit.texgen[c.index()].value;
                 for param in [

@@ -513,12 +513,11 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::TexEnvi | Entry::TexEnvf => {
             c.count(3)?;
-            env_target(c)?;
-            Command::TexEnv(tex_env(c)?)
+            Command::TexEnv(env_scalar(c)?)
         }
         Entry::TexEnvfv => {
             c.count(3)?;
-            env_target(c)?;
+            c.pname(0, &["GL_TEXTURE_ENV"])?;
             c.pname(1, &["GL_TEXTURE_ENV_COLOR"])?;
             Command::TexEnv(TexEnvParam::Color(c.vec4_array(2)?))
         }
@@ -572,8 +571,16 @@ fn component_count<A: Args>(c: &A, i: usize) -> Option<TexFormat> {
     }
 }
 
-fn env_target<A: Args>(c: &A) -> Result<(), A::Error> {
-    c.pname(0, &["GL_TEXTURE_ENV"]).map(|_| ())
+/// A scalar glTexEnv: of target TEXTURE_ENV any of its parameters, of TEXTURE_FILTER_CONTROL
+/// (GL 1.4) only TEXTURE_LOD_BIAS; anything else INVALID_ENUM.
+pub(super) fn env_scalar<A: Args>(c: &A) -> Result<TexEnvParam, A::Error> {
+    match c.pname(0, &["GL_TEXTURE_ENV", "GL_TEXTURE_FILTER_CONTROL"])? {
+        "GL_TEXTURE_ENV" => tex_env(c),
+        _ => {
+            c.pname(1, &["GL_TEXTURE_LOD_BIAS"])?;
+            Ok(TexEnvParam::LodBias(c.f32(2)?))
+        }
+    }
 }
 
 pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {

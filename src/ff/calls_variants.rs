@@ -13,7 +13,7 @@
 use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
 use super::calls::{
-    light_scalar, material_vector, tex_env, tex_param, LIGHT_SCALARS, LIGHT_VECTORS,
+    env_scalar, light_scalar, material_vector, tex_param, LIGHT_SCALARS, LIGHT_VECTORS,
     MATERIAL_VECTORS,
 };
 use super::client::ArrayData;
@@ -108,10 +108,7 @@ pub fn variants<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                     c.pname(0, &["GL_TEXTURE_ENV"])?;
                     Command::TexEnv(TexEnvParam::Color(int_color(c, 2)?))
                 }
-                _ => {
-                    c.pname(0, &["GL_TEXTURE_ENV"])?;
-                    Command::TexEnv(tex_env(&ScalarAt::new(c, 2)?)?)
-                }
+                _ => Command::TexEnv(env_scalar(&ScalarAt::new(c, 2)?)?),
             }
         }
         Entry::TexParameteriv | Entry::TexParameterfv => {

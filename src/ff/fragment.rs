@@ -290,6 +290,8 @@ pub enum HintTarget {
     Fog,
     /// GL 1.3's TEXTURE_COMPRESSION_HINT.
     TextureCompression,
+    /// GL 1.4's GENERATE_MIPMAP_HINT.
+    GenerateMipmap,
 }
 
 /// glHint modes. GL default: DONT_CARE for every target.
@@ -310,6 +312,7 @@ pub struct Hints {
     pub polygon_smooth: HintMode,
     pub fog: HintMode,
     pub texture_compression: HintMode,
+    pub generate_mipmap: HintMode,
 }
 
 impl Hints {
@@ -320,6 +323,7 @@ impl Hints {
         polygon_smooth: HintMode::DontCare,
         fog: HintMode::DontCare,
         texture_compression: HintMode::DontCare,
+        generate_mipmap: HintMode::DontCare,
     };
 
     /// glHint(target, mode).
@@ -331,12 +335,13 @@ impl Hints {
             HintTarget::PolygonSmooth => &mut self.polygon_smooth,
             HintTarget::Fog => &mut self.fog,
             HintTarget::TextureCompression => &mut self.texture_compression,
+            HintTarget::GenerateMipmap => &mut self.generate_mipmap,
         };
         *slot = mode;
     }
 
     /// Every target with its mode.
-    pub fn all(&self) -> [(HintTarget, HintMode); 6] {
+    pub fn all(&self) -> [(HintTarget, HintMode); 7] {
         [
             (
                 HintTarget::PerspectiveCorrection,
@@ -347,6 +352,7 @@ impl Hints {
             (HintTarget::PolygonSmooth, self.polygon_smooth),
             (HintTarget::Fog, self.fog),
             (HintTarget::TextureCompression, self.texture_compression),
+            (HintTarget::GenerateMipmap, self.generate_mipmap),
         ]
     }
 }

@@ -248,6 +248,7 @@ gl_enums!(HintTarget {
     POLYGON_SMOOTH_HINT => HintTarget::PolygonSmooth,
     FOG_HINT => HintTarget::Fog,
     TEXTURE_COMPRESSION_HINT => HintTarget::TextureCompression,
+    GENERATE_MIPMAP_HINT => HintTarget::GenerateMipmap,
 });
 
 gl_enums!(HintMode {

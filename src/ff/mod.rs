@@ -114,7 +114,7 @@ pub use state::{
 pub use stipple::{LineStipple, PolygonStipple};
 pub use texenv::{
     Combine, CombineArg, CombineFunc, CombineOperand, CombineScale, CombineSource, TexEnv,
-    TexEnvMode, TexEnvParam,
+    TexEnvMode, TexEnvParam, MAX_TEXTURE_LOD_BIAS,
 };
 pub use texgen::{TexCoord, TexGen, TexGenMode, TexGenParam};
 pub use texture::{

@@ -394,6 +394,7 @@ pnames! {
     MAX_LIGHTS => |_| count(MAX_LIGHTS),
     MAX_TEXTURE_UNITS => |_| count(MAX_TEXTURE_UNITS),
     MAX_TEXTURE_SIZE => |_| int(MAX_TEXTURE_SIZE),
+    MAX_TEXTURE_LOD_BIAS => |_| floats(&[super::texenv::MAX_TEXTURE_LOD_BIAS]),
     MAX_3D_TEXTURE_SIZE => |_| int(MAX_3D_TEXTURE_SIZE),
 
     // NV_register_combiners (not in Mesa: the oracle test leaves these out).
@@ -437,6 +438,9 @@ pnames! {
     POLYGON_SMOOTH_HINT => |s| enm(s.hints.polygon_smooth),
     FOG_HINT => |s| enm(s.hints.fog),
     TEXTURE_COMPRESSION_HINT => |s| enm(s.hints.texture_compression),
+    GENERATE_MIPMAP_HINT => |s| enm(s.hints.generate_mipmap),
+    // Selection and feedback are left out: the render mode is always RENDER.
+    RENDER_MODE => |_| vec![QueryValue::Enum(r::RENDER)],
     // The S3TC formats the layer decodes, of Mesa's twelve (`ff::compressed`).
     NUM_COMPRESSED_TEXTURE_FORMATS => |_| count(CompressedFormat::LISTED.len()),
     COMPRESSED_TEXTURE_FORMATS => |_| CompressedFormat::LISTED
@@ -646,10 +650,12 @@ impl FixedState {
     /// glGetTexEnv{f,i}v(TEXTURE_ENV, pname) of the active unit. Other targets and pnames:
     /// INVALID_ENUM.
     pub fn get_tex_env(&self, target: u32, pname: u32) -> Result<Queried, GlErrorKind> {
-        if target != r::TEXTURE_ENV {
-            return Err(GlErrorKind::InvalidEnum);
-        }
         let e: &TexEnv = &self.units[self.active_unit()].env;
+        match (target, pname) {
+            (r::TEXTURE_FILTER_CONTROL, r::TEXTURE_LOD_BIAS) => return Ok(floats(&[e.lod_bias])),
+            (r::TEXTURE_ENV, _) => {}
+            _ => return Err(GlErrorKind::InvalidEnum),
+        }
         let src = |v: CombineSource| vec![QueryValue::Enum(source(v))];
         Ok(match pname {
             r::TEXTURE_ENV_MODE => enm(e.mode),

@@ -166,7 +166,14 @@ pub enum TexEnvParam {
     /// 1, 2 or 4.
     RgbScale(f32),
     AlphaScale(f32),
+    /// GL 1.4's TEXTURE_LOD_BIAS of target TEXTURE_FILTER_CONTROL: added to the level of
+    /// detail of every texture the unit samples (§3.8.8), the sum with the texture's own
+    /// bias clamped to ±MAX_TEXTURE_LOD_BIAS. Kept as given.
+    LodBias(f32),
 }
+
+/// MAX_TEXTURE_LOD_BIAS: Mesa 22.3.6 llvmpipe's (measured).
+pub const MAX_TEXTURE_LOD_BIAS: f32 = 16.0;
 
 /// The combine setup of the RGB or the alpha portion.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -190,6 +197,8 @@ pub struct TexEnv {
     /// GL default: MODULATE; sources TEXTURE, PREVIOUS, CONSTANT; operands SRC_ALPHA ×3;
     /// scale 1.
     pub alpha: Combine,
+    /// TEXTURE_LOD_BIAS (TEXTURE_FILTER_CONTROL). GL default: 0.
+    pub lod_bias: f32,
 }
 
 impl TexEnv {
@@ -220,6 +229,7 @@ impl TexEnv {
             operands: [CombineOperand::SrcAlpha; 3],
             scale: CombineScale::One,
         },
+        lod_bias: 0.0,
     };
 
     /// glTexEnv: validates, then sets. `units` bounds TEXTUREn sources.
@@ -253,6 +263,7 @@ impl TexEnv {
             }
             TexEnvParam::RgbScale(s) => self.rgb.scale = CombineScale::from_f32(s)?,
             TexEnvParam::AlphaScale(s) => self.alpha.scale = CombineScale::from_f32(s)?,
+            TexEnvParam::LodBias(b) => self.lod_bias = b,
         }
         Ok(())
     }

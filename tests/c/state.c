@@ -188,6 +188,17 @@ int main(void) {
   fv("object plane s", v, 4);
   glGetTexGeniv(GL_S, GL_TEXTURE_GEN_MODE, iv);
   printf("%-28s %d  err 0x%x\n", "texgen mode s", iv[0], glGetError());
+  glHint(GL_GENERATE_MIPMAP_HINT, GL_NICEST);
+  ints("generate mipmap hint", GL_GENERATE_MIPMAP_HINT, 1);
+  ints("render mode", GL_RENDER_MODE, 1);
+  glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 2.5f);
+  glGetTexEnvfv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, v);
+  fv("lod bias", v, 1);
+  glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_LOD_BIAS, 1.0f);
+  printf("%-28s err 0x%x\n", "lod bias on TEXTURE_ENV", glGetError());
+  glGetFloatv(GL_MAX_TEXTURE_LOD_BIAS, v);
+  fv("max lod bias", v, 1);
+  glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 0.0f);
   glActiveTexture(GL_TEXTURE0);
   enabled("texture 2d (unit 0)", GL_TEXTURE_2D);
 

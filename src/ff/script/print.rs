@@ -931,6 +931,11 @@ fn tex_env(p: &TexEnvParam) -> String {
                 f(*s)
             )
         }
+        TexEnvParam::LodBias(b) => format!(
+            "{}(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, {})",
+            Entry::TexEnvf,
+            f(*b)
+        ),
     }
 }
 

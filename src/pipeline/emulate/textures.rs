@@ -8,7 +8,9 @@ use std::collections::HashMap;
 use glow::HasContext;
 
 use super::conv;
-use crate::ff::{CompareMode, FixedState, TexLevel, TextureObject, TextureTarget};
+use crate::ff::{
+    CompareMode, FixedState, TexLevel, TextureObject, TextureTarget, MAX_TEXTURE_LOD_BIAS,
+};
 use crate::pipeline::PipelineError;
 
 /// Our key for a GL texture: (target, model name). Name 0 is each target's default texture.
@@ -27,6 +29,8 @@ pub struct Textures {
     objects: HashMap<TextureId, glow::Texture>,
     /// What is bound on each image unit, to skip redundant binds.
     bound: HashMap<u8, (TextureTarget, glow::Texture)>,
+    /// The TEXTURE_LOD_BIAS each GL object was last given (absent: 0).
+    lod_bias: HashMap<glow::Texture, f32>,
     pub uploads: u64,
     pub binds_skipped: u64,
 }
@@ -78,6 +82,7 @@ impl Textures {
             for target in TextureTarget::ALL {
                 if let Some(t) = self.objects.remove(&(target, *name)) {
                     self.bound.retain(|_, (_, b)| *b != t);
+                    self.lod_bias.remove(&t);
                     unsafe { gl.delete_texture(t) };
                 }
             }
@@ -259,6 +264,25 @@ impl Textures {
         for &(unit, target) in units {
             let name = state.units[unit as usize].bound(target);
             let t = self.object(gl, (target, name))?;
+            // The unit's TEXTURE_LOD_BIAS (GL 1.4) as the object's, which core GL adds to
+            // λ as the unit's would be (the texture's own bias is 0 in GL 1.x), clamped to
+            // ±MAX_TEXTURE_LOD_BIAS; Mesa passes it to llvmpipe's sampler the same way. A
+            // texture bound on two units of different biases takes the later unit's.
+            let bias = state.units[unit as usize]
+                .env
+                .lod_bias
+                .clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS);
+            let bias = if bias.is_nan() { 0.0 } else { bias };
+            if self.lod_bias.get(&t).copied().unwrap_or(0.0).to_bits() != bias.to_bits() {
+                unsafe {
+                    gl.active_texture(glow::TEXTURE0 + u32::from(unit));
+                    gl.bind_texture(gl_target(target), Some(t));
+                    gl.tex_parameter_f32(gl_target(target), glow::TEXTURE_LOD_BIAS, bias);
+                }
+                self.lod_bias.insert(t, bias);
+                self.bound.insert(unit, (target, t));
+                continue;
+            }
             if self.bound.get(&unit) == Some(&(target, t)) {
                 self.binds_skipped += 1;
                 continue;
@@ -277,6 +301,7 @@ impl Textures {
             unsafe { gl.delete_texture(t) };
         }
         self.bound.clear();
+        self.lod_bias.clear();
     }
 }
 

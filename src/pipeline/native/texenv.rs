@@ -53,5 +53,9 @@ pub fn texenv(g: &gl::Gl, param: TexEnvParam) {
         // SAFETY (both): plain GL calls on the current context.
         TexEnvParam::RgbScale(s) => unsafe { g.TexEnvf(t, gl::RGB_SCALE, s) },
         TexEnvParam::AlphaScale(s) => unsafe { g.TexEnvf(t, gl::ALPHA_SCALE, s) },
+        // SAFETY: a plain GL call on the current context.
+        TexEnvParam::LodBias(b) => unsafe {
+            g.TexEnvf(gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS, b)
+        },
     }
 }
