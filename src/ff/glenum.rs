@@ -383,8 +383,8 @@ gl_enums!(TexFormat {
     ALPHA => TexFormat::Alpha8,
     LUMINANCE_ALPHA => TexFormat::Luminance8Alpha8,
     DEPTH_COMPONENT => TexFormat::DepthComponent24,
-    // GL 1.1's other sized formats (Table 3.16), kept in the 8-bit format of their base
-    // (`TexFormat`'s note).
+    // GL 1.1's other sized formats (Table 3.16): the model's format is their base's 8-bit
+    // one; the bits they are stored at are `texture_storage`'s (from the requested name).
     ALPHA4 => TexFormat::Alpha8,
     ALPHA12 => TexFormat::Alpha8,
     ALPHA16 => TexFormat::Alpha8,

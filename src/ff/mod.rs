@@ -75,6 +75,7 @@ pub mod pixel_map;
 pub mod pixel_store;
 pub mod pixel_types;
 pub mod texture_calls;
+pub mod texture_storage;
 pub mod texture_volume;
 
 #[cfg(test)]

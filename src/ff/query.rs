@@ -763,7 +763,23 @@ impl FixedState {
                 Component::Alpha if c.format.has_alpha() => 4,
                 _ => 0,
             }),
-            None => int(format.map_or(0, |f| bits(f, component))),
+            None => int(
+                match l
+                    .and_then(|l| l.requested)
+                    .and_then(super::texture_storage::stored_bits)
+                {
+                    Some(b) => match component {
+                        Component::Red => b.red,
+                        Component::Green => b.green,
+                        Component::Blue => b.blue,
+                        Component::Alpha => b.alpha,
+                        Component::Luminance => b.luminance,
+                        Component::Intensity => b.intensity,
+                        Component::Depth => 0,
+                    },
+                    None => format.map_or(0, |f| bits(f, component)),
+                },
+            ),
         };
         Ok(match pname {
             r::TEXTURE_WIDTH => int(l.map_or(0, |l| l.width)),

@@ -188,6 +188,21 @@ int main(void) {
   fv("object plane s", v, 4);
   glGetTexGeniv(GL_S, GL_TEXTURE_GEN_MODE, iv);
   printf("%-28s %d  err 0x%x\n", "texgen mode s", iv[0], glGetError());
+  {
+    /* Sizes of a level stored at the requested format's bits (RGBA4, RGB10_A2, LUMINANCE16). */
+    GLint bound, bits[3];
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    const GLenum formats[3] = {GL_RGBA4, GL_RGB10_A2, GL_LUMINANCE16};
+    for (int f = 0; f < 3; f++) {
+      glBindTexture(GL_TEXTURE_2D, 900 + f);
+      glTexImage2D(GL_TEXTURE_2D, 0, formats[f], 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+      glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &bits[0]);
+      glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_ALPHA_SIZE, &bits[1]);
+      glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_LUMINANCE_SIZE, &bits[2]);
+      printf("%-28s r%d a%d l%d  err 0x%x\n", "stored bits", bits[0], bits[1], bits[2], glGetError());
+    }
+    glBindTexture(GL_TEXTURE_2D, bound);
+  }
   glHint(GL_GENERATE_MIPMAP_HINT, GL_NICEST);
   ints("generate mipmap hint", GL_GENERATE_MIPMAP_HINT, 1);
   ints("render mode", GL_RENDER_MODE, 1);

@@ -21,6 +21,14 @@ pub fn wrap(w: Wrap) -> u32 {
     }
 }
 
+/// The core internal format a level is stored in: the one of the bits Mesa stores the
+/// requested format at (`ff::texture_storage`), else the base's 8-bit core format.
+pub fn stored_format(f: TexFormat, requested: Option<u32>) -> u32 {
+    requested
+        .and_then(crate::ff::texture_storage::core_format)
+        .unwrap_or_else(|| tex_format(f).0)
+}
+
 /// Core storage and the swizzle (R, G, B, A sources) giving GL 1.x's texel per base format:
 /// LUMINANCE (L,L,L,1), INTENSITY (I,I,I,I), ALPHA (0,0,0,A), LUMINANCE_ALPHA (L,L,L,A).
 pub fn tex_format(f: TexFormat) -> (u32, [u32; 4]) {

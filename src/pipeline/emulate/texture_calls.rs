@@ -166,7 +166,7 @@ impl Textures {
         let name = state.units[state.active_unit()].bound(target);
         let bytes = read_as_stored(gl, state, [c.x, c.y, c.width, 1], c.internal_format);
         let gl_t = self.edit(gl, (target, name))?;
-        let (internal, _) = conv::tex_format(c.internal_format);
+        let internal = conv::stored_format(c.internal_format, c.requested);
         let (format, ty, _) = storage(c.internal_format);
         unsafe {
             gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);

@@ -180,7 +180,7 @@ impl Textures {
         let rect = [copy.x, copy.y, copy.width, copy.height];
         let bytes = through_cpu.then(|| super::texture_calls::read_as_stored(gl, state, rect, f));
         let gl_t = self.edit(gl, (target, name))?;
-        let (internal, _) = conv::tex_format(f);
+        let internal = conv::stored_format(f, copy.requested);
         unsafe {
             match &bytes {
                 Some(b) => {
@@ -311,7 +311,7 @@ const SCRATCH_UNIT: u32 = 15;
 /// Level `level` of `l`, its client bytes converted where the storage would hold
 /// something else (`texel_store`, under the state's pixel transfer).
 fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel, state: &FixedState) {
-    let (internal, _) = conv::tex_format(l.internal_format);
+    let internal = conv::stored_format(l.internal_format, l.requested);
     let stored = l.data.as_ref().and_then(|d| {
         super::texel_store::stored_image(
             &d.bytes,

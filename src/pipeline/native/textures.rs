@@ -80,7 +80,12 @@ pub fn tex_image(g: &gl::Gl, t: &TexImage) {
         .data
         .bytes()
         .map_or(std::ptr::null(), |d| d.as_ptr().cast::<c_void>());
-    let internal = conv::int(conv::value(t.internal_format));
+    // The format as the program named it, so that Mesa stores the level at its bits
+    // (`ff::texture_storage`).
+    let internal = conv::int(
+        t.requested
+            .unwrap_or_else(|| conv::value(t.internal_format)),
+    );
     let format = conv::value(t.format);
     let ty = conv::value(t.ty);
     // SAFETY: `pixels` is NULL or holds width·height·components·size bytes (model-checked);
@@ -186,7 +191,8 @@ pub fn copy_tex_image(g: &gl::Gl, c: &CopyTexImage) {
         g.CopyTexImage2D(
             gl::TEXTURE_2D,
             c.level,
-            conv::value(c.internal_format),
+            c.requested
+                .unwrap_or_else(|| conv::value(c.internal_format)),
             c.x,
             c.y,
             c.width,
