@@ -34,6 +34,10 @@ pub enum ColorFormat {
     Argb,
     Rgb,
     Bgr,
+    /// OSMESA_RGB_565: one GLushort per pixel, red in the top 5 bits, with
+    /// GL_UNSIGNED_SHORT_5_6_5 only; rendered into an RGB565 colour buffer (RED_BITS 5,
+    /// GREEN_BITS 6, no alpha), as Mesa's.
+    Rgb565,
 }
 
 impl ColorFormat {
@@ -42,6 +46,7 @@ impl ColorFormat {
     pub const ARGB: u32 = 0x2;
     pub const RGB: u32 = 0x1907;
     pub const BGR: u32 = 0x4;
+    pub const RGB_565: u32 = 0x5;
 
     pub fn from_osmesa(v: u32) -> Option<ColorFormat> {
         Some(match v {
@@ -50,6 +55,7 @@ impl ColorFormat {
             Self::ARGB => ColorFormat::Argb,
             Self::RGB => ColorFormat::Rgb,
             Self::BGR => ColorFormat::Bgr,
+            Self::RGB_565 => ColorFormat::Rgb565,
             _ => return None,
         })
     }
@@ -61,6 +67,7 @@ impl ColorFormat {
             ColorFormat::Argb => Self::ARGB,
             ColorFormat::Rgb => Self::RGB,
             ColorFormat::Bgr => Self::BGR,
+            ColorFormat::Rgb565 => Self::RGB_565,
         }
     }
 
@@ -68,6 +75,7 @@ impl ColorFormat {
     pub fn bytes(self) -> usize {
         match self {
             ColorFormat::Rgb | ColorFormat::Bgr => 3,
+            ColorFormat::Rgb565 => 2,
             _ => 4,
         }
     }
@@ -80,6 +88,7 @@ impl ColorFormat {
             ColorFormat::Argb => &[3, 0, 1, 2],
             ColorFormat::Rgb => &[0, 1, 2],
             ColorFormat::Bgr => &[2, 1, 0],
+            ColorFormat::Rgb565 => &[0, 1, 2],
         }
     }
 
@@ -109,6 +118,15 @@ impl ColorFormat {
             (ColorFormat::Bgr, 1) => {
                 for (s, d) in pixels.zip(dst.chunks_exact_mut(3)) {
                     d.copy_from_slice(&[s[2], s[1], s[0]]);
+                }
+            }
+            // The RGB565 buffer read as bytes holds v8 = round(v·255/(2ⁿ − 1)) per
+            // component; v = round(v8·(2ⁿ − 1)/255) recovers each exactly.
+            (ColorFormat::Rgb565, 1) => {
+                let bits = |v: u8, max: u16| (u16::from(v) * max + 127) / 255;
+                for (s, d) in pixels.zip(dst.chunks_exact_mut(2)) {
+                    let packed = bits(s[0], 31) << 11 | bits(s[1], 63) << 5 | bits(s[2], 31);
+                    d.copy_from_slice(&packed.to_ne_bytes());
                 }
             }
             _ => {
@@ -144,6 +162,8 @@ pub enum ColorType {
     UnsignedByte,
     UnsignedShort,
     Float,
+    /// GL_UNSIGNED_SHORT_5_6_5, for OSMESA_RGB_565 only.
+    UnsignedShort565,
 }
 
 impl ColorType {
@@ -152,6 +172,7 @@ impl ColorType {
             0x1401 => ColorType::UnsignedByte,
             0x1403 => ColorType::UnsignedShort,
             0x1406 => ColorType::Float,
+            0x8363 => ColorType::UnsignedShort565,
             _ => return None,
         })
     }
@@ -161,6 +182,7 @@ impl ColorType {
             ColorType::UnsignedByte => ColorStorage::Rgba8,
             ColorType::UnsignedShort => ColorStorage::Rgba16,
             ColorType::Float => ColorStorage::Rgba32F,
+            ColorType::UnsignedShort565 => ColorStorage::Rgb565,
         }
     }
 }
@@ -272,7 +294,16 @@ impl Context {
     pub fn bind_buffer(&mut self, buffer: ClientBuffer) -> Result<(), AbiError> {
         self.write_back();
         let (w, h) = (buffer.width as u32, buffer.height as u32);
-        let storage = ColorType::from_gl(buffer.ty).map_or(ColorStorage::Rgba8, ColorType::storage);
+        let storage = match (
+            self.format,
+            ColorType::from_gl(buffer.ty).map_or(ColorStorage::Rgba8, ColorType::storage),
+        ) {
+            // A buffer without alpha: Mesa's has ALPHA_BITS 0 and a destination alpha of 1.
+            (ColorFormat::Rgb | ColorFormat::Bgr, ColorStorage::Rgba8) => ColorStorage::Rgb8,
+            (ColorFormat::Rgb | ColorFormat::Bgr, ColorStorage::Rgba16) => ColorStorage::Rgb16,
+            (ColorFormat::Rgb | ColorFormat::Bgr, ColorStorage::Rgba32F) => ColorStorage::Rgb32F,
+            (_, storage) => storage,
+        };
         let same = self
             .target
             .as_ref()

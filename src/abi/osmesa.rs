@@ -44,7 +44,7 @@ fn create(format: GLenum, depth: GLint, stencil: GLint, accum: GLint) -> OSMesaC
     let Some(format) = ColorFormat::from_osmesa(format) else {
         return refuse(&format!(
             "OSMesaCreateContext: format {format:#x} is not one of OSMESA_RGBA, OSMESA_BGRA, \
-             OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR"
+             OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR, OSMESA_RGB_565"
         ));
     };
     // Creating the EGL context makes it current on this thread.
@@ -169,10 +169,19 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
         eprintln!("fixedfunc: OSMesaMakeCurrent: size {width}×{height} outside 1…{MAX_SIZE}");
         return 0;
     }
-    if ColorType::from_gl(ty).is_none() {
+    let Some(color_type) = ColorType::from_gl(ty) else {
         eprintln!(
             "fixedfunc: OSMesaMakeCurrent: type {ty:#x}; this library writes GL_UNSIGNED_BYTE, \
-             GL_UNSIGNED_SHORT and GL_FLOAT buffers"
+             GL_UNSIGNED_SHORT, GL_FLOAT and (OSMESA_RGB_565) GL_UNSIGNED_SHORT_5_6_5 buffers"
+        );
+        return 0;
+    };
+    // SAFETY: a live context (OSMesaMakeCurrent's contract).
+    let rgb565 = unsafe { (*ctx).format } == ColorFormat::Rgb565;
+    if rgb565 != (color_type == ColorType::UnsignedShort565) {
+        eprintln!(
+            "fixedfunc: OSMesaMakeCurrent: OSMESA_RGB_565 takes GL_UNSIGNED_SHORT_5_6_5 and \
+             GL_UNSIGNED_SHORT_5_6_5 only OSMESA_RGB_565 (type {ty:#x})"
         );
         return 0;
     }

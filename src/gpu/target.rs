@@ -23,6 +23,16 @@ pub enum ColorStorage {
     Rgba16,
     /// RGBA32F (an OSMesa GL_FLOAT buffer).
     Rgba32F,
+    /// RGB8, no alpha (an OSMesa OSMESA_RGB or OSMESA_BGR buffer of GL_UNSIGNED_BYTE): the
+    /// framebuffer has ALPHA_BITS 0 and blending reads a destination alpha of 1, as on
+    /// Mesa's buffer of that format.
+    Rgb8,
+    /// RGB16 (an OSMESA_RGB or OSMESA_BGR buffer of GL_UNSIGNED_SHORT), no alpha.
+    Rgb16,
+    /// RGB32F (an OSMESA_RGB or OSMESA_BGR buffer of GL_FLOAT), no alpha.
+    Rgb32F,
+    /// RGB565 (an OSMESA_RGB_565 buffer), read back as bytes.
+    Rgb565,
 }
 
 impl ColorStorage {
@@ -32,6 +42,10 @@ impl ColorStorage {
             ColorStorage::Rgba8 => (glow::RGBA8, glow::UNSIGNED_BYTE, 1),
             ColorStorage::Rgba16 => (glow::RGBA16, glow::UNSIGNED_SHORT, 2),
             ColorStorage::Rgba32F => (glow::RGBA32F, glow::FLOAT, 4),
+            ColorStorage::Rgb8 => (glow::RGB8, glow::UNSIGNED_BYTE, 1),
+            ColorStorage::Rgb16 => (glow::RGB16, glow::UNSIGNED_SHORT, 2),
+            ColorStorage::Rgb32F => (glow::RGB32F, glow::FLOAT, 4),
+            ColorStorage::Rgb565 => (glow::RGB565, glow::UNSIGNED_BYTE, 1),
         }
     }
 

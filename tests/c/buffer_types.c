@@ -87,5 +87,46 @@ int main(void) {
       printf("%-24s %.4f %.4f %.4f %.4f\n", "clear value", v[0], v[1], v[2], v[3]);
       OSMesaDestroyContext(ctx);
     }
+  /* Buffers without alpha: OSMESA_RGB of bytes and floats has ALPHA_BITS 0, and blending
+   * reads a destination alpha of 1 (the clear's alpha 0.5 is not kept). */
+  static const struct { GLenum type; const char *name; void *buffer; } rgb[] = {
+      {GL_UNSIGNED_BYTE, "RGB ubyte", bbuf}, {GL_FLOAT, "RGB float", fbuf}};
+  for (int t = 0; t < 2; t++) {
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGB, 24, 8, 0, NULL);
+    if (!ctx || !OSMesaMakeCurrent(ctx, rgb[t].buffer, rgb[t].type, W, H)) return 1;
+    GLint alpha = -1;
+    glGetIntegerv(GL_ALPHA_BITS, &alpha);
+    printf("%-24s %d\n", rgb[t].name, alpha);
+    draw();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_DST_ALPHA);
+    glColor4f(1, 1, 1, 1);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(-1, -1);
+    glVertex2f(1, -1);
+    glVertex2f(1, 1);
+    glEnd();
+    glFinish();
+    show("dst alpha blend", rgb[t].type, 3, W - 1, 3);
+    OSMesaDestroyContext(ctx);
+  }
+  /* OSMESA_RGB_565: one GLushort a pixel, rounded to 5, 6 and 5 bits; the other types are
+   * refused for it. */
+  {
+    static GLushort b565[W * H];
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGB_565, 24, 8, 0, NULL);
+    if (!ctx) return 1;
+    printf("%-24s %d\n", "565 as ubyte", OSMesaMakeCurrent(ctx, bbuf, GL_UNSIGNED_BYTE, W, H));
+    if (!OSMesaMakeCurrent(ctx, b565, GL_UNSIGNED_SHORT_5_6_5, W, H)) return 1;
+    GLint bits[3];
+    glGetIntegerv(GL_RED_BITS, &bits[0]);
+    glGetIntegerv(GL_GREEN_BITS, &bits[1]);
+    glGetIntegerv(GL_ALPHA_BITS, &bits[2]);
+    printf("%-24s %d %d %d\n", "565 bits", bits[0], bits[1], bits[2]);
+    draw();
+    printf("%-24s 0x%04x 0x%04x 0x%04x\n", "565 flat clear smooth", b565[1 * W + 1],
+           b565[3 * W + W - 1], b565[7 * W + 3]);
+    OSMesaDestroyContext(ctx);
+  }
   return 0;
 }
