@@ -55,6 +55,9 @@ int main(void) {
   for (int i = 0; i < 31; i++) glPopMatrix();
   CHECK(glPopMatrix());
   CHECK(glGetString(0x1234));
+  /* The imaging subset links and is refused, as on Mesa. */
+  CHECK(glHistogram(GL_HISTOGRAM, 16, GL_RGBA, GL_FALSE));
+  CHECK(glResetMinmax(GL_MINMAX));
   printf("vendor set: %d\n", glGetString(GL_VENDOR) != NULL);
   OSMesaDestroyContext(ctx);
   return 0;
