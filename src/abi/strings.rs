@@ -45,6 +45,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_texture_compression_s3tc",
     "GL_EXT_bgra",
     "GL_EXT_packed_pixels",
+    "GL_SGIS_texture_lod",
+    "GL_EXT_texture_lod_bias",
 ];
 
 struct Strings {
