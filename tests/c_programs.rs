@@ -969,6 +969,51 @@ fn volumes_answer_and_draw_as_on_mesa() {
     assert_trace_replays("tex3d", &compile("tex3d", Linking::Direct), &[], "128x64");
 }
 
+/// `tests/c/cubemap.c`: GL 1.3's cube maps — the face targets of the 2D image calls,
+/// TEXTURE_BINDING_CUBE_MAP, MAX_CUBE_MAP_TEXTURE_SIZE, the enable on the attribute
+/// stack, REFLECTION_MAP and NORMAL_MAP — answer and fail as on Mesa; panels sampling
+/// faces by direction, over a 2D texture, by texgen on lit spheres, with a negative q,
+/// incomplete, patched and minified are Mesa's image within 3/255 on 99% of pixels (a
+/// lit sphere's silhouette pixel differs by a face), and the trace replays.
+#[test]
+fn cube_maps_answer_and_draw_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("cubemap");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "MAX_CUBE_MAP_TEXTURE_SIZE                16384  err 0x0",
+            "glTexImage2D(TEXTURE_CUBE_MAP)           err 0x500",
+            "glBindTexture(a face)                    err 0x500",
+            "a 2x4 face                               err 0x501",
+            "glGetTexImage(-Z)                        255 0 255  err 0x0",
+            "glCopyTexImage2D(+Y) 2x4                 err 0x501",
+            "Q REFLECTION_MAP                         err 0x500",
+            "R TEXTURE_GEN_MODE                       0x8511  err 0x0",
+            "glGenerateMipmap, faces differ           err 0x502",
+            "panels                                   err 0x0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 40, "a cube map answer");
+    // Each of Mesa's eight 32×32 panels shows something other than the background at
+    // its centre.
+    let background = [26, 26, 26];
+    for panel in 0..8u32 {
+        let (x, y) = ((panel % 4) * 32 + 16, 63 - ((panel / 4) * 32 + 16));
+        let p = mesa.get_pixel(x, y).0;
+        assert!(
+            (0..3).any(|k| p[k].abs_diff(background[k]) > 20),
+            "panel {panel} of Mesa's image is empty"
+        );
+    }
+    assert_images_match("cubemap", &ours, &mesa, within_3_on_99_percent(&mesa));
+    assert_trace_replays(
+        "cubemap",
+        &compile("cubemap", Linking::Direct),
+        &[],
+        "128x64",
+    );
+}
+
 /// `tests/c/formats.c`: GL 1.0's component counts and GL 1.1's sized internal formats in
 /// glTexImage2D, and GL 1.4's MIRRORED_REPEAT, sample as on Mesa (texels exact in 4 bits),
 /// with Mesa's errors (a component count in glCopyTexImage2D is INVALID_ENUM); Mesa's

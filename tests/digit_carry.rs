@@ -77,6 +77,7 @@ fn texture(unit: u8, target: TextureTarget, format: TexFormat, texel: &[u8]) -> 
             TextureTarget::Texture1D => Capability::Texture1D,
             TextureTarget::Texture2D => Capability::Texture2D,
             TextureTarget::Texture3D => Capability::Texture3D,
+            TextureTarget::CubeMap | TextureTarget::CubeFace(_) => Capability::TextureCubeMap,
         }),
     ]
 }

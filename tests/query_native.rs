@@ -26,11 +26,11 @@ use fixedfunc::ff::query::{self, NV_PNAMES};
 use fixedfunc::ff::{
     AttribGroup, AttribMask, BlendFactor, Capability, ClearMask, ColorControl, ColorMask,
     ColorMaterialMode, CombineArg, CombineFunc, CombineOperand, CombineSource, Command,
-    CompareFunc, CompareMode, DepthTextureMode, Face, Filter, FixedState, FrontFace, Geometry,
-    GlErrorKind, LightModelParam, LightParam, MaterialParam, MatrixMode, PixelFormat, PixelType,
-    PolygonMode, Primitive, QueryValue, ShadeModel, StencilOp, TexCoord, TexEnvMode, TexEnvParam,
-    TexFormat, TexGenMode, TexGenParam, TexImage, TexParam, TextureTarget, ViewVolume, Viewport,
-    Wrap, MAX_TEXTURE_UNITS,
+    CompareFunc, CompareMode, CubeFace, DepthTextureMode, Face, Filter, FixedState, FrontFace,
+    Geometry, GlErrorKind, LightModelParam, LightParam, MaterialParam, MatrixMode, PixelFormat,
+    PixelType, PolygonMode, Primitive, QueryValue, ShadeModel, StencilOp, TexCoord, TexEnvMode,
+    TexEnvParam, TexFormat, TexGenMode, TexGenParam, TexImage, TexParam, TextureTarget, ViewVolume,
+    Viewport, Wrap, MAX_TEXTURE_UNITS,
 };
 use fixedfunc::gpu::{Backend, GpuContext, Profile, RenderTarget};
 use fixedfunc::pipeline::native::{bindings as gl, NativeGl, NativePipeline};
@@ -320,11 +320,15 @@ impl Oracle<'_> {
             }
         }
         for target in [r::TEXTURE_1D, r::TEXTURE_2D] {
-            self.texture(s, u, target);
+            self.texture(s, u, target, &[target]);
         }
+        // A cube map's parameters are the cube's, its levels the faces'.
+        let faces: Vec<u32> = (0..6).map(|f| r::TEXTURE_CUBE_MAP_POSITIVE_X + f).collect();
+        self.texture(s, u, r::TEXTURE_CUBE_MAP, &faces);
     }
 
-    fn texture(&mut self, s: &FixedState, u: usize, target: u32) {
+    /// The parameters of `target`'s texture and the levels of its image targets.
+    fn texture(&mut self, s: &FixedState, u: usize, target: u32, images: &[u32]) {
         let params = [
             r::TEXTURE_MIN_FILTER,
             r::TEXTURE_MAG_FILTER,
@@ -370,7 +374,7 @@ impl Oracle<'_> {
             r::TEXTURE_DEPTH_SIZE,
             r::TEXTURE_COMPRESSED,
         ];
-        for level in 0..3 {
+        for (&target, level) in images.iter().flat_map(|t| (0..3).map(move |l| (t, l))) {
             for p in level_params {
                 let model = s.get_tex_level_parameter(target, level, p).unwrap();
                 let (mut f, mut i) = (vec![0f32; 16], vec![0i32; 16]);
@@ -797,6 +801,35 @@ fn textures_scene() -> Vec<Command> {
             target: t1,
             param: TexParam::MaxLod(2.6),
         },
+        // GL 1.3's cube map on unit 2: six RGBA faces, −Z also at level 1, wrapped and
+        // enabled over the unit's 2D texture.
+        Command::ActiveTexture(2),
+        Command::BindTexture {
+            target: TextureTarget::CubeMap,
+            name: 11,
+        },
+    ]);
+    for f in CubeFace::ALL {
+        cmds.push(image(TextureTarget::CubeFace(f), 0, TexFormat::Rgba8, 4, 4));
+    }
+    cmds.extend([
+        image(
+            TextureTarget::CubeFace(CubeFace::NegativeZ),
+            1,
+            TexFormat::Luminance8,
+            2,
+            2,
+        ),
+        Command::TexParameter {
+            target: TextureTarget::CubeMap,
+            param: TexParam::WrapT(Wrap::ClampToEdge),
+        },
+        Command::TexParameter {
+            target: TextureTarget::CubeMap,
+            param: TexParam::MinFilter(Filter::Linear),
+        },
+        Command::Enable(Capability::TextureCubeMap),
+        Command::Enable(Capability::Texture2D),
         Command::ActiveTexture(0),
         Command::TexParameter {
             target: t2,

@@ -25,6 +25,8 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_NV_register_combiners",
     "GL_SGIS_generate_mipmap",
     "GL_EXT_texture3D",
+    "GL_ARB_texture_cube_map",
+    "GL_EXT_texture_cube_map",
     "GL_EXT_framebuffer_blit",
     "GL_EXT_framebuffer_object",
     "GL_ARB_vertex_buffer_object",

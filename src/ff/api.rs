@@ -1113,7 +1113,9 @@ impl Command {
             Command::DeleteTextures(_) => Entry::DeleteTextures,
             Command::TexImage(t) => match t.target {
                 super::texture::TextureTarget::Texture1D => Entry::TexImage1D,
-                super::texture::TextureTarget::Texture2D => Entry::TexImage2D,
+                super::texture::TextureTarget::Texture2D
+                | super::texture::TextureTarget::CubeMap
+                | super::texture::TextureTarget::CubeFace(_) => Entry::TexImage2D,
                 super::texture::TextureTarget::Texture3D => Entry::TexImage3D,
             },
             Command::ProxyTexImage(_) => Entry::TexImage3D,
@@ -1218,7 +1220,9 @@ impl Command {
             Command::CopyTexImage1D(_) => Entry::CopyTexImage1D,
             Command::CopyTexSubImage(c) => match c.target {
                 super::texture::TextureTarget::Texture1D => Entry::CopyTexSubImage1D,
-                super::texture::TextureTarget::Texture2D => Entry::CopyTexSubImage2D,
+                super::texture::TextureTarget::Texture2D
+                | super::texture::TextureTarget::CubeMap
+                | super::texture::TextureTarget::CubeFace(_) => Entry::CopyTexSubImage2D,
                 super::texture::TextureTarget::Texture3D => Entry::CopyTexSubImage3D,
             },
             Command::GetTexImage(_) => Entry::GetTexImage,

@@ -132,12 +132,15 @@ impl FixedState {
                             if u.bound_3d == name {
                                 u.bound_3d = 0;
                             }
+                            if u.bound_cube_map == name {
+                                u.bound_cube_map = 0;
+                            }
                         }
                     }
                 }
             }
             Command::TexImage(t) => self.tex_image(t)?,
-            Command::TexSubImage2D(t) => self.tex_sub_image(t, TextureTarget::Texture2D)?,
+            Command::TexSubImage2D(t) => self.tex_sub_image(t, t.target_2d())?,
             Command::CopyTexImage2D(c) => {
                 self.check_read_framebuffer(None)?;
                 self.copy_tex_image(c)?
@@ -402,6 +405,7 @@ impl FixedState {
             Capability::Texture1D => self.units[unit].texture_1d = on,
             Capability::Texture2D => self.units[unit].texture_2d = on,
             Capability::Texture3D => self.units[unit].texture_3d = on,
+            Capability::TextureCubeMap => self.units[unit].texture_cube_map = on,
             Capability::TextureGen(c) => self.units[unit].texgen[c.index()].enabled = on,
             Capability::AlphaTest => self.alpha_test.enabled = on,
             Capability::DepthTest => self.depth_test.enabled = on,
@@ -472,6 +476,12 @@ impl FixedState {
             TextureTarget::Texture1D => u.bound_1d = name,
             TextureTarget::Texture2D => u.bound_2d = name,
             TextureTarget::Texture3D => u.bound_3d = name,
+            TextureTarget::CubeMap => u.bound_cube_map = name,
+            TextureTarget::CubeFace(_) => {
+                return Err(GlError::invalid_enum(
+                    "a cube map face is an image target, not bindable",
+                ))
+            }
         }
         Ok(())
     }
@@ -487,7 +497,17 @@ impl FixedState {
     fn tex_image(&mut self, t: &TexImage) -> GlResult {
         match t.target {
             TextureTarget::Texture3D => check_volume_image(t)?,
+            TextureTarget::CubeMap => {
+                return Err(GlError::invalid_enum(
+                    "TEXTURE_CUBE_MAP is not an image target: name a face",
+                ))
+            }
             _ => check_image_size(t.level, t.width, t.height, t.border)?,
+        }
+        if t.target.face().is_some() && t.width != t.height {
+            return Err(GlError::invalid_value(
+                "a cube map face is square (width = height)",
+            ));
         }
         if t.target == TextureTarget::Texture1D && t.height != 1 {
             return Err(GlError::invalid_value("TexImage1D has height 1"));
@@ -516,9 +536,9 @@ impl FixedState {
             compressed: None,
             requested: t.requested,
         };
-        let tex = self.bound_mut(t.target)?;
-        tex.set_level(t.level, level);
-        tex.level_changed(t.level);
+        let tex = self.bound_mut(t.target.binding())?;
+        tex.set_level_in(t.target, t.level, level);
+        tex.level_changed_in(t.target, t.level);
         Ok(())
     }
 
@@ -529,10 +549,12 @@ impl FixedState {
         if target == TextureTarget::Texture3D {
             check_sub_volume(t)?;
         }
-        let tex = self.bound_mut(target)?;
-        let level = tex.level_mut(t.level).ok_or(GlError::invalid_operation(
-            "glTexSubImage of an unspecified level",
-        ))?;
+        let tex = self.bound_mut(target.binding())?;
+        let level = tex
+            .level_in_mut(target, t.level)
+            .ok_or(GlError::invalid_operation(
+                "glTexSubImage of an unspecified level",
+            ))?;
         if t.width < 0
             || t.height < 0
             || t.depth < 0
@@ -573,12 +595,17 @@ impl FixedState {
             // Mixed formats or unknown texels: only the GPU copy is authoritative.
             _ => None,
         };
-        tex.level_changed(t.level);
+        tex.level_changed_in(target, t.level);
         Ok(())
     }
 
     fn copy_tex_image(&mut self, c: &CopyTexImage) -> GlResult {
         check_image_size(c.level, c.width, c.height, c.border)?;
+        if c.face.is_some() && c.width != c.height {
+            return Err(GlError::invalid_value(
+                "a cube map face is square (width = height)",
+            ));
+        }
         let level = TexLevel {
             internal_format: c.internal_format,
             width: c.width,
@@ -588,9 +615,10 @@ impl FixedState {
             compressed: None,
             requested: c.requested,
         };
-        let tex = self.bound_mut(TextureTarget::Texture2D)?;
-        tex.set_level(c.level, level);
-        tex.level_changed(c.level);
+        let target = c.target_2d();
+        let tex = self.bound_mut(target.binding())?;
+        tex.set_level_in(target, c.level, level);
+        tex.level_changed_in(target, c.level);
         Ok(())
     }
 

@@ -116,6 +116,13 @@ impl FixedState {
                         "glGenerateMipmap needs an image at the base level",
                     ));
                 }
+                // A cube map's six base levels must be alike (cube complete, GL 3.0
+                // §3.9.7; Mesa: INVALID_OPERATION).
+                if tex.target == TextureTarget::CubeMap && !tex.faces_alike() {
+                    return Err(GlError::invalid_operation(
+                        "glGenerateMipmap of a cube map whose faces differ",
+                    ));
+                }
                 tex.generate_levels();
             }
             _ => return Ok(false),

@@ -278,6 +278,7 @@ impl FixedState {
             u.texture_1d = saved.texture_1d;
             u.texture_2d = saved.texture_2d;
             u.texture_3d = saved.texture_3d;
+            u.texture_cube_map = saved.texture_cube_map;
             for (g, sg) in u.texgen.iter_mut().zip(&saved.texgen) {
                 g.enabled = sg.enabled;
             }
@@ -580,6 +581,7 @@ impl FixedState {
         out.push(toggle(Capability::Texture1D, unit.texture_1d));
         out.push(toggle(Capability::Texture2D, unit.texture_2d));
         out.push(toggle(Capability::Texture3D, unit.texture_3d));
+        out.push(toggle(Capability::TextureCubeMap, unit.texture_cube_map));
         for c in TexCoord::ALL {
             out.push(toggle(
                 Capability::TextureGen(c),

@@ -394,7 +394,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::BindTexture => {
             c.count(2)?;
             Command::BindTexture {
-                target: c.enm(0)?,
+                target: bindable_target(c)?,
                 name: c.u32(1)?,
             }
         }
@@ -422,7 +422,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::TexImage2D => {
             c.count(9)?;
-            target_is(c, TextureTarget::Texture2D)?;
+            let target = image_2d_target(c)?;
             let shape = PixelShape::groups(c.i32(3)?, c.i32(4)?, c.enm(6)?, c.enm(7)?);
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
@@ -430,7 +430,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let (format, ty, data) = pixel_types::model_tex_data(c, 8, shape)?;
             Command::TexImage(TexImage {
                 requested: requested_format(c, 2),
-                target: TextureTarget::Texture2D,
+                target,
                 level: c.i32(1)?,
                 internal_format: internal_format(c, 2)?,
                 width: shape.width,
@@ -444,13 +444,14 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::TexSubImage2D => {
             c.count(9)?;
-            target_is(c, TextureTarget::Texture2D)?;
+            let face = image_2d_target(c)?.face();
             let shape = PixelShape::groups(c.i32(4)?, c.i32(5)?, c.enm(6)?, c.enm(7)?);
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_pixels(c, 8, shape)?;
             Command::TexSubImage2D(TexSubImage {
+                face,
                 level: c.i32(1)?,
                 x: c.i32(2)?,
                 y: c.i32(3)?,
@@ -465,8 +466,9 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::CopyTexImage2D => {
             c.count(8)?;
-            target_is(c, TextureTarget::Texture2D)?;
+            let face = image_2d_target(c)?.face();
             Command::CopyTexImage2D(CopyTexImage {
+                face,
                 requested: requested_format(c, 2),
                 level: c.i32(1)?,
                 // A component count is INVALID_ENUM here on Mesa 22.3 (tests/c/formats.c).
@@ -481,7 +483,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::TexParameteri | Entry::TexParameterf => {
             c.count(3)?;
             Command::TexParameter {
-                target: c.enm(0)?,
+                target: bindable_target(c)?,
                 param: tex_param(c)?,
             }
         }
@@ -489,7 +491,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(3)?;
             c.pname(1, &["GL_TEXTURE_BORDER_COLOR"])?;
             Command::TexParameter {
-                target: c.enm(0)?,
+                target: bindable_target(c)?,
                 param: TexParam::BorderColor(c.vec4_array(2)?),
             }
         }
@@ -523,6 +525,43 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         _ => return Ok(None),
     }))
+}
+
+/// Argument 0 of a 2D image call: TEXTURE_2D or a cube map face (GL 1.3); TEXTURE_CUBE_MAP
+/// itself is not an image target (INVALID_ENUM, as Mesa).
+pub(crate) fn image_2d_target<A: Args>(c: &A) -> Result<TextureTarget, A::Error> {
+    let t: TextureTarget = c.enm(0)?;
+    match t {
+        TextureTarget::Texture2D | TextureTarget::CubeFace(_) => Ok(t),
+        _ => Err(c.unknown(
+            0,
+            vec![
+                "GL_TEXTURE_2D",
+                "GL_TEXTURE_CUBE_MAP_POSITIVE_X",
+                "GL_TEXTURE_CUBE_MAP_NEGATIVE_X",
+                "GL_TEXTURE_CUBE_MAP_POSITIVE_Y",
+                "GL_TEXTURE_CUBE_MAP_NEGATIVE_Y",
+                "GL_TEXTURE_CUBE_MAP_POSITIVE_Z",
+                "GL_TEXTURE_CUBE_MAP_NEGATIVE_Z",
+            ],
+        )),
+    }
+}
+
+/// Argument 0 of glBindTexture and glTexParameter: a bindable target (a cube face is
+/// INVALID_ENUM, as Mesa).
+fn bindable_target<A: Args>(c: &A) -> Result<TextureTarget, A::Error> {
+    let t: TextureTarget = c.enm(0)?;
+    if t.face().is_some() {
+        return Err(c.unknown(
+            0,
+            TextureTarget::ALL
+                .iter()
+                .filter_map(|t| t.gl_name())
+                .collect(),
+        ));
+    }
+    Ok(t)
 }
 
 fn target_is<A: Args>(c: &A, want: TextureTarget) -> Result<(), A::Error> {

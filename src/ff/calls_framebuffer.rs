@@ -104,7 +104,12 @@ pub fn framebuffer<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         E::GenerateMipmap | E::GenerateMipmapEXT => {
             c.count(1)?;
-            Command::GenerateMipmap(c.enm(0)?)
+            let target: TextureTarget = c.enm(0)?;
+            // A cube map's faces are generated together: a face alone is INVALID_ENUM.
+            if target.face().is_some() {
+                return Err(c.unknown(0, vec!["GL_TEXTURE_CUBE_MAP"]));
+            }
+            Command::GenerateMipmap(target)
         }
         E::BlitFramebuffer | E::BlitFramebufferEXT => {
             c.count(10)?;

@@ -37,7 +37,7 @@ use super::point::PointParam;
 use super::stipple::{LineStipple, PolygonStipple};
 use super::texenv::TexEnvParam;
 use super::texgen::{TexCoord, TexGenParam};
-use super::texture::{PixelFormat, PixelType, TexFormat, TexParam, TextureTarget};
+use super::texture::{CubeFace, PixelFormat, PixelType, TexFormat, TexParam, TextureTarget};
 
 /// glEnable / glDisable capabilities.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -54,6 +54,9 @@ pub enum Capability {
     Texture2D,
     /// Of the active texture unit (GL 1.2).
     Texture3D,
+    /// TEXTURE_CUBE_MAP of the active texture unit (GL 1.3); a face's name is
+    /// INVALID_ENUM.
+    TextureCubeMap,
     /// TEXTURE_GEN_S/T/R/Q of the active texture unit.
     TextureGen(TexCoord),
     AlphaTest,
@@ -168,6 +171,9 @@ impl From<Vec<u8>> for TexData {
 /// TexSubImage3D); for 3D the data holds `depth` images of `height` rows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TexSubImage {
+    /// glTexSubImage2D of a cube face (TEXTURE_CUBE_MAP_POSITIVE_X …); `None`: the
+    /// call's own target.
+    pub face: Option<CubeFace>,
     pub level: i32,
     pub x: i32,
     pub y: i32,
@@ -182,9 +188,27 @@ pub struct TexSubImage {
     pub data: Arc<[u8]>,
 }
 
-/// glCopyTexImage2D (target TEXTURE_2D) from the current read buffer.
+impl TexSubImage {
+    /// The image target of a glTexSubImage2D: TEXTURE_2D or its cube face.
+    pub fn target_2d(&self) -> TextureTarget {
+        self.face
+            .map_or(TextureTarget::Texture2D, TextureTarget::CubeFace)
+    }
+}
+
+impl CopyTexImage {
+    /// The image target of a glCopyTexImage2D: TEXTURE_2D or its cube face.
+    pub fn target_2d(&self) -> TextureTarget {
+        self.face
+            .map_or(TextureTarget::Texture2D, TextureTarget::CubeFace)
+    }
+}
+
+/// glCopyTexImage2D (target TEXTURE_2D or a cube face) from the current read buffer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct CopyTexImage {
+    /// glCopyTexImage2D of a cube face; `None`: the call's own target.
+    pub face: Option<CubeFace>,
     pub level: i32,
     pub internal_format: TexFormat,
     /// The internal format as the program named it (GL_RGB, 3, GL_RGB5), which

@@ -107,6 +107,7 @@ impl CompressedTexSubImage {
     pub fn texels(&self) -> Option<super::command::TexSubImage> {
         let blocks = self.data.as_ref()?;
         Some(super::command::TexSubImage {
+            face: None,
             level: self.level,
             x: self.x,
             y: self.y,

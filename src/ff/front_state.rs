@@ -186,7 +186,7 @@ fn compressed_image(state: &FixedState, target: u32, level: i32) -> Result<Vec<u
     let l = state
         .texture(t, name)
         .filter(|_| (0..=t.max_level()).contains(&level))
-        .and_then(|o| o.level(level))
+        .and_then(|o| o.level_in(t, level))
         .ok_or(GlErrorKind::InvalidValue)?;
     l.compressed
         .as_ref()

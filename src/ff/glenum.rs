@@ -14,6 +14,7 @@ use super::compressed::CompressedFormat;
 use super::framebuffer::{AttachmentPoint, ColorBuffer, FramebufferTarget, RenderbufferFormat};
 use super::pixel_map::PixelMapName;
 use super::pixel_types::PackedType;
+use super::texture::CubeFace;
 use super::*;
 
 /// Every enumerant of the registry, as `pub const NAME: u32`.
@@ -191,6 +192,7 @@ gl_enums!(Capability {
     TEXTURE_1D => Capability::Texture1D,
     TEXTURE_2D => Capability::Texture2D,
     TEXTURE_3D => Capability::Texture3D,
+    TEXTURE_CUBE_MAP => Capability::TextureCubeMap,
     TEXTURE_GEN_S => Capability::TextureGen(TexCoord::S),
     TEXTURE_GEN_T => Capability::TextureGen(TexCoord::T),
     TEXTURE_GEN_R => Capability::TextureGen(TexCoord::R),
@@ -363,6 +365,13 @@ gl_enums!(TextureTarget {
     TEXTURE_1D => TextureTarget::Texture1D,
     TEXTURE_2D => TextureTarget::Texture2D,
     TEXTURE_3D => TextureTarget::Texture3D,
+    TEXTURE_CUBE_MAP => TextureTarget::CubeMap,
+    TEXTURE_CUBE_MAP_POSITIVE_X => TextureTarget::CubeFace(CubeFace::PositiveX),
+    TEXTURE_CUBE_MAP_NEGATIVE_X => TextureTarget::CubeFace(CubeFace::NegativeX),
+    TEXTURE_CUBE_MAP_POSITIVE_Y => TextureTarget::CubeFace(CubeFace::PositiveY),
+    TEXTURE_CUBE_MAP_NEGATIVE_Y => TextureTarget::CubeFace(CubeFace::NegativeY),
+    TEXTURE_CUBE_MAP_POSITIVE_Z => TextureTarget::CubeFace(CubeFace::PositiveZ),
+    TEXTURE_CUBE_MAP_NEGATIVE_Z => TextureTarget::CubeFace(CubeFace::NegativeZ),
 });
 
 // Unsized names of the era are accepted as aliases of the sized formats they give.
@@ -506,6 +515,8 @@ gl_enums!(TexGenMode {
     OBJECT_LINEAR => TexGenMode::ObjectLinear,
     EYE_LINEAR => TexGenMode::EyeLinear,
     SPHERE_MAP => TexGenMode::SphereMap,
+    REFLECTION_MAP => TexGenMode::ReflectionMap,
+    NORMAL_MAP => TexGenMode::NormalMap,
 });
 
 gl_enums!(TexEnvMode {

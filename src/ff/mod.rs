@@ -119,6 +119,7 @@ pub use texenv::{
 };
 pub use texgen::{TexCoord, TexGen, TexGenMode, TexGenParam};
 pub use texture::{
-    BaseFormat, CompareMode, DepthTextureMode, Filter, Incomplete, PixelData, PixelFormat,
-    PixelType, TexFormat, TexLevel, TexParam, TexParams, TextureObject, TextureTarget, Wrap,
+    BaseFormat, CompareMode, CubeFace, DepthTextureMode, Filter, Incomplete, PixelData,
+    PixelFormat, PixelType, TexFormat, TexLevel, TexParam, TexParams, TextureObject, TextureTarget,
+    Wrap,
 };

@@ -59,7 +59,9 @@ use super::pixel_map::{PixelMapName, MAX_PIXEL_MAP_TABLE};
 use super::state::{FixedState, MAX_TEXTURE_UNITS};
 use super::texenv::{CombineSource, TexEnv};
 use super::texgen::TexCoord;
-use super::texture::{TexFormat, TextureTarget, MAX_3D_TEXTURE_SIZE, MAX_TEXTURE_SIZE};
+use super::texture::{
+    TexFormat, TextureTarget, MAX_3D_TEXTURE_SIZE, MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
+};
 
 /// GL_TEXTURE_COMPARE_FAIL_VALUE_ARB (ARB_shadow_ambient, outside the registry subset
 /// `build.rs` reads).
@@ -319,6 +321,7 @@ pnames! {
     TEXTURE_BINDING_1D => |s| name(s.units[s.active_unit()].bound_1d),
     TEXTURE_BINDING_2D => |s| name(s.units[s.active_unit()].bound_2d),
     TEXTURE_BINDING_3D => |s| name(s.units[s.active_unit()].bound_3d),
+    TEXTURE_BINDING_CUBE_MAP => |s| name(s.units[s.active_unit()].bound_cube_map),
 
     // Per-fragment operations (Table 6.21) and framebuffer control (Table 6.22).
     ALPHA_TEST_FUNC => |s| enm(s.alpha_test.value.func),
@@ -396,6 +399,7 @@ pnames! {
     MAX_TEXTURE_SIZE => |_| int(MAX_TEXTURE_SIZE),
     MAX_TEXTURE_LOD_BIAS => |_| floats(&[super::texenv::MAX_TEXTURE_LOD_BIAS]),
     MAX_3D_TEXTURE_SIZE => |_| int(MAX_3D_TEXTURE_SIZE),
+    MAX_CUBE_MAP_TEXTURE_SIZE => |_| int(MAX_CUBE_MAP_TEXTURE_SIZE),
 
     // NV_register_combiners (not in Mesa: the oracle test leaves these out).
     NUM_GENERAL_COMBINERS_NV => |s| count(s.register_combiners.value.num_general),
@@ -575,6 +579,7 @@ impl FixedState {
             Capability::Texture1D => unit.texture_1d,
             Capability::Texture2D => unit.texture_2d,
             Capability::Texture3D => unit.texture_3d,
+            Capability::TextureCubeMap => unit.texture_cube_map,
             Capability::TextureGen(c) => unit.texgen[c.index()].enabled,
             Capability::AlphaTest => self.alpha_test.enabled,
             Capability::DepthTest => self.depth_test.enabled,
@@ -696,7 +701,9 @@ impl FixedState {
     /// glGetTexParameter{f,i}v(target, pname): the texture bound to `target` on the active
     /// unit.
     pub fn get_tex_parameter(&self, target: u32, pname: u32) -> Result<Queried, GlErrorKind> {
-        let t = TextureTarget::from_gl_value(target).ok_or(GlErrorKind::InvalidEnum)?;
+        let t = TextureTarget::from_gl_value(target)
+            .filter(|t| t.face().is_none())
+            .ok_or(GlErrorKind::InvalidEnum)?;
         let name = self.units[self.active_unit()].bound(t);
         let p = self
             .texture(t, name)
@@ -742,17 +749,21 @@ impl FixedState {
         level: i32,
         pname: u32,
     ) -> Result<Queried, GlErrorKind> {
-        let object = if target == r::PROXY_TEXTURE_3D {
-            &self.proxy_3d
+        // A cube map's levels are its faces' (TEXTURE_CUBE_MAP itself: INVALID_ENUM, Mesa).
+        let (object, image) = if target == r::PROXY_TEXTURE_3D {
+            (&self.proxy_3d, TextureTarget::Texture3D)
         } else {
-            let t = TextureTarget::from_gl_value(target).ok_or(GlErrorKind::InvalidEnum)?;
+            let t = TextureTarget::from_gl_value(target)
+                .filter(|t| *t != TextureTarget::CubeMap)
+                .ok_or(GlErrorKind::InvalidEnum)?;
             let name = self.units[self.active_unit()].bound(t);
-            self.texture(t, name).ok_or(GlErrorKind::InvalidOperation)?
+            let object = self.texture(t, name).ok_or(GlErrorKind::InvalidOperation)?;
+            (object, t)
         };
         if !(0..=object.target.max_level()).contains(&level) {
             return Err(GlErrorKind::InvalidValue);
         }
-        let l = object.level(level);
+        let l = object.level_in(image, level);
         let format = l.map(|l| l.internal_format);
         let compressed = l.and_then(|l| l.compressed.as_ref());
         // A compressed level's sizes are Mesa's for S3TC: 4 bits a colour component, alpha

@@ -97,11 +97,15 @@ pub struct TextureUnit {
     pub texture_2d: bool,
     /// TEXTURE_3D enable (GL 1.2). GL default: FALSE.
     pub texture_3d: bool,
+    /// TEXTURE_CUBE_MAP enable (GL 1.3). GL default: FALSE.
+    pub texture_cube_map: bool,
     /// Names bound to TEXTURE_1D, TEXTURE_2D and TEXTURE_3D. GL default: 0 (the default
     /// textures).
     pub bound_1d: u32,
     pub bound_2d: u32,
     pub bound_3d: u32,
+    /// The name bound to TEXTURE_CUBE_MAP (GL 1.3). GL default: 0.
+    pub bound_cube_map: u32,
     /// GL default: [`TexEnv::DEFAULT`].
     pub env: TexEnv,
     /// S, T, R, Q. GL default: disabled, EYE_LINEAR, planes per [`TexGen::default_for`].
@@ -114,18 +118,22 @@ impl TextureUnit {
             texture_1d: false,
             texture_2d: false,
             texture_3d: false,
+            texture_cube_map: false,
             bound_1d: 0,
             bound_2d: 0,
             bound_3d: 0,
+            bound_cube_map: 0,
             env: TexEnv::DEFAULT,
             texgen: TexCoord::ALL.map(|c| Toggle::off(TexGen::default_for(c))),
         }
     }
 
-    /// The target that texturing uses: 3D wins over 2D, 2D over 1D (GL 1.5 §3.8.15; the
-    /// model has no cube maps, which would win over all three); `None` = unit off.
+    /// The target that texturing uses: the cube map wins over 3D, 3D over 2D, 2D over 1D
+    /// (GL 1.5 §3.8.15); `None` = unit off.
     pub fn enabled_target(&self) -> Option<TextureTarget> {
-        if self.texture_3d {
+        if self.texture_cube_map {
+            Some(TextureTarget::CubeMap)
+        } else if self.texture_3d {
             Some(TextureTarget::Texture3D)
         } else if self.texture_2d {
             Some(TextureTarget::Texture2D)
@@ -136,11 +144,13 @@ impl TextureUnit {
         }
     }
 
+    /// The name bound to `target` (a cube face's: the cube map's).
     pub fn bound(&self, target: TextureTarget) -> u32 {
         match target {
             TextureTarget::Texture1D => self.bound_1d,
             TextureTarget::Texture2D => self.bound_2d,
             TextureTarget::Texture3D => self.bound_3d,
+            TextureTarget::CubeMap | TextureTarget::CubeFace(_) => self.bound_cube_map,
         }
     }
 
@@ -205,6 +215,8 @@ pub struct FixedState {
     pub default_1d: TextureObject,
     pub default_2d: TextureObject,
     pub default_3d: TextureObject,
+    /// The default TEXTURE_CUBE_MAP (GL 1.3).
+    pub default_cube_map: TextureObject,
     /// PROXY_TEXTURE_3D's levels (GL 1.5 §3.8.11): what glTexImage3D on the proxy target
     /// found acceptable, every field 0 where it did not; no unit samples it. GL default:
     /// no level specified.
@@ -330,6 +342,7 @@ impl FixedState {
             default_1d: TextureObject::new(TextureTarget::Texture1D),
             default_2d: TextureObject::new(TextureTarget::Texture2D),
             default_3d: TextureObject::new(TextureTarget::Texture3D),
+            default_cube_map: TextureObject::new(TextureTarget::CubeMap),
             proxy_3d: TextureObject::new(TextureTarget::Texture3D),
             register_combiners: Toggle::off(RegisterCombiners::DEFAULT),
             alpha_test: Toggle::off(AlphaTest::DEFAULT),
@@ -414,12 +427,15 @@ impl FixedState {
             .map_or(Mat4::IDENTITY, MatrixStack::top)
     }
 
-    /// The texture object `name` of `target` (0 = the default texture).
+    /// The texture object `name` of `target` (0 = the default texture); a cube face's is
+    /// its cube map.
     pub fn texture(&self, target: TextureTarget, name: u32) -> Option<&TextureObject> {
+        let target = target.binding();
         match (name, target) {
             (0, TextureTarget::Texture1D) => Some(&self.default_1d),
             (0, TextureTarget::Texture2D) => Some(&self.default_2d),
             (0, TextureTarget::Texture3D) => Some(&self.default_3d),
+            (0, TextureTarget::CubeMap) => Some(&self.default_cube_map),
             _ => self.textures.get(&name).filter(|t| t.target == target),
         }
     }
@@ -441,10 +457,12 @@ impl FixedState {
         target: TextureTarget,
         name: u32,
     ) -> Option<&mut TextureObject> {
+        let target = target.binding();
         match (name, target) {
             (0, TextureTarget::Texture1D) => Some(&mut self.default_1d),
             (0, TextureTarget::Texture2D) => Some(&mut self.default_2d),
             (0, TextureTarget::Texture3D) => Some(&mut self.default_3d),
+            (0, TextureTarget::CubeMap) => Some(&mut self.default_cube_map),
             _ => self.textures.get_mut(&name).filter(|t| t.target == target),
         }
     }

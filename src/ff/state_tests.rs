@@ -323,6 +323,7 @@ fn texture_table() {
             param: TexParam::CompareMode(CompareMode::CompareRToTexture),
         },
         Command::TexSubImage2D(TexSubImage {
+            face: None,
             level: 0,
             x: 1,
             y: 1,

@@ -41,6 +41,12 @@ pub enum TexGenMode {
     EyeLinear,
     /// S and T only: the reflection vector mapped into a sphere map.
     SphereMap,
+    /// S, T and R (GL 1.3 §2.10.4, ARB_texture_cube_map): the eye-space reflection
+    /// vector r = u − 2n(n·u), u the unit vector from the eye to the vertex, n the eye
+    /// normal; Q refuses it (INVALID_ENUM, Mesa measured).
+    ReflectionMap,
+    /// S, T and R (GL 1.3 §2.10.4): the eye-space normal n; not for Q.
+    NormalMap,
 }
 
 /// One glTexGen parameter.
@@ -77,9 +83,17 @@ impl TexGen {
         }
     }
 
-    /// glTexGen for `coord`; SPHERE_MAP on R or Q is INVALID_ENUM.
+    /// glTexGen for `coord`; SPHERE_MAP on R or Q, REFLECTION_MAP and NORMAL_MAP on Q are
+    /// INVALID_ENUM (Mesa 22.3.6 measured).
     pub fn set(&mut self, coord: TexCoord, param: TexGenParam, modelview: Mat4) -> GlResult {
         match param {
+            TexGenParam::Mode(TexGenMode::ReflectionMap | TexGenMode::NormalMap)
+                if coord == TexCoord::Q =>
+            {
+                return Err(GlError::invalid_enum(
+                    "REFLECTION_MAP and NORMAL_MAP are only valid for S, T and R",
+                ));
+            }
             TexGenParam::Mode(TexGenMode::SphereMap)
                 if matches!(coord, TexCoord::R | TexCoord::Q) =>
             {
@@ -101,9 +115,16 @@ impl TexGen {
         match self.mode {
             TexGenMode::ObjectLinear => Some(self.object_plane.dot(object)),
             TexGenMode::EyeLinear => Some(self.eye_plane.dot(eye)),
-            TexGenMode::SphereMap => None,
+            TexGenMode::SphereMap | TexGenMode::ReflectionMap | TexGenMode::NormalMap => None,
         }
     }
+}
+
+/// REFLECTION_MAP (GL 1.3 §2.10.4): r = u − 2n(n·u), u the unit eye position, n the eye
+/// normal (as the pipeline has it: normalized when NORMALIZE or lighting asks).
+pub fn reflection_map(eye_position: Vec3, eye_normal: Vec3) -> Vec3 {
+    let u = eye_position.normalize_or_zero();
+    u - 2.0 * eye_normal * eye_normal.dot(u)
 }
 
 /// SPHERE_MAP (GL 1.5 §2.11.4): u = unit eye position, n = eye normal, r = u − 2n(n·u),
@@ -134,6 +155,23 @@ mod tests {
             )
             .is_err());
         assert_eq!(g, before);
+    }
+
+    #[test]
+    fn cube_map_modes_on_q_are_invalid_enum_and_on_r_valid() {
+        for mode in [TexGenMode::ReflectionMap, TexGenMode::NormalMap] {
+            let mut q = TexGen::default_for(TexCoord::Q);
+            assert!(q
+                .set(TexCoord::Q, TexGenParam::Mode(mode), Mat4::IDENTITY)
+                .is_err());
+            assert_eq!(q.mode, TexGenMode::EyeLinear);
+            let mut r = TexGen::default_for(TexCoord::R);
+            r.set(TexCoord::R, TexGenParam::Mode(mode), Mat4::IDENTITY)
+                .unwrap();
+            assert_eq!(r.mode, mode);
+        }
+        // Looking down −z at a surface facing the viewer: r points back at the eye.
+        assert!(reflection_map(Vec3::new(0.0, 0.0, -3.0), Vec3::Z).abs_diff_eq(Vec3::Z, 1e-6));
     }
 
     #[test]

@@ -1,6 +1,10 @@
 //! Texture objects, formats and parameters (GL 1.5 §3.8, ARB_depth_texture, ARB_shadow,
 //! ARB_shadow_ambient), with GL 1.2's 3D textures (EXT_texture3D; their calls are
-//! `texture_volume`'s).
+//! `texture_volume`'s) and GL 1.3's cube maps (ARB_texture_cube_map).
+//!
+//! A cube map is one object (bound, enabled and given parameters as TEXTURE_CUBE_MAP)
+//! with six sets of levels, one per face; the faces are the image targets of
+//! glTexImage2D and the other 2D image calls (`TextureTarget::CubeFace`), never bound.
 //!
 //! A level has a width, a height and a depth; a 1D level has height 1, a 1D or 2D level
 //! depth 1, so one completeness rule serves every target: each mip level is
@@ -25,6 +29,9 @@ pub use super::pixel_types::PackedType;
 pub const MAX_TEXTURE_SIZE: i32 = 16384;
 /// Highest mip level accepted: log2(MAX_TEXTURE_SIZE).
 pub const MAX_TEXTURE_LEVEL: i32 = 14;
+/// GL_MAX_CUBE_MAP_TEXTURE_SIZE: Mesa 22.3.6 llvmpipe answers 16384 (measured natively),
+/// the 2D limit, so a face's size checks are the 2D image's.
+pub const MAX_CUBE_MAP_TEXTURE_SIZE: i32 = MAX_TEXTURE_SIZE;
 /// GL_MAX_3D_TEXTURE_SIZE: Mesa 22.3 llvmpipe answers 2048 (measured natively); every GL
 /// 3.3 context has at least 256, and llvmpipe's core context has 2048 too.
 pub const MAX_3D_TEXTURE_SIZE: i32 = 2048;
@@ -39,22 +46,80 @@ pub enum TextureTarget {
     Texture2D,
     /// GL 1.2: images of width × height × depth texels, sampled at (s, t, r).
     Texture3D,
+    /// GL 1.3 (ARB_texture_cube_map): six square faces sampled by the direction (s, t, r);
+    /// what glBindTexture, glEnable and glTexParameter name. Not an image target.
+    CubeMap,
+    /// One face of the bound cube map: an image target of glTexImage2D, glTexSubImage2D,
+    /// glCopyTexImage2D, glCopyTexSubImage2D, glGetTexImage and glGetTexLevelParameter;
+    /// not bindable.
+    CubeFace(CubeFace),
+}
+
+/// The faces of a cube map, in the order of their GL names (face i is
+/// TEXTURE_CUBE_MAP_POSITIVE_X plus i): the face a direction selects is its major axis
+/// and that axis' sign (GL 1.5 Table 3.21).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CubeFace {
+    PositiveX,
+    NegativeX,
+    PositiveY,
+    NegativeY,
+    PositiveZ,
+    NegativeZ,
+}
+
+impl CubeFace {
+    pub const ALL: [CubeFace; 6] = [
+        CubeFace::PositiveX,
+        CubeFace::NegativeX,
+        CubeFace::PositiveY,
+        CubeFace::NegativeY,
+        CubeFace::PositiveZ,
+        CubeFace::NegativeZ,
+    ];
+
+    /// 0 for +X … 5 for −Z: the offset of the face's GL name from
+    /// TEXTURE_CUBE_MAP_POSITIVE_X.
+    pub fn index(self) -> usize {
+        self as usize
+    }
 }
 
 impl TextureTarget {
-    /// Every target, in the order texturing ranks them from the lowest (GL 1.5 §3.8.15:
-    /// 3D wins over 2D, 2D over 1D).
-    pub const ALL: [TextureTarget; 3] = [
+    /// Every bindable target, in the order texturing ranks them from the lowest (GL 1.5
+    /// §3.8.15: the cube map wins over 3D, 3D over 2D, 2D over 1D).
+    pub const ALL: [TextureTarget; 4] = [
         TextureTarget::Texture1D,
         TextureTarget::Texture2D,
         TextureTarget::Texture3D,
+        TextureTarget::CubeMap,
     ];
+
+    /// The target an object of this image target is bound to: a cube face's is
+    /// TEXTURE_CUBE_MAP, every other target its own.
+    pub fn binding(self) -> TextureTarget {
+        match self {
+            TextureTarget::CubeFace(_) => TextureTarget::CubeMap,
+            t => t,
+        }
+    }
+
+    /// The cube face this image target names, if it names one.
+    pub fn face(self) -> Option<CubeFace> {
+        match self {
+            TextureTarget::CubeFace(f) => Some(f),
+            _ => None,
+        }
+    }
 
     /// The highest mip level an image of this target may have: log2 of the target's
     /// largest size (MAX_TEXTURE_SIZE, MAX_3D_TEXTURE_SIZE).
     pub fn max_level(self) -> i32 {
         match self {
-            TextureTarget::Texture1D | TextureTarget::Texture2D => MAX_TEXTURE_LEVEL,
+            TextureTarget::Texture1D
+            | TextureTarget::Texture2D
+            | TextureTarget::CubeMap
+            | TextureTarget::CubeFace(_) => MAX_TEXTURE_LEVEL,
             TextureTarget::Texture3D => MAX_3D_TEXTURE_LEVEL,
         }
     }
@@ -439,6 +504,9 @@ pub enum Incomplete {
     },
     /// A mipmap filter, and this level's internal format is not the base level's.
     FormatDiffers(i32),
+    /// A cube map whose faces' base levels differ in size or internal format (GL 1.5
+    /// §3.8.10's cube completeness); a face without a base level is `NoBaseLevel`.
+    FacesDiffer(CubeFace),
 }
 
 /// A texture object: what glBindTexture names.
@@ -446,8 +514,10 @@ pub enum Incomplete {
 pub struct TextureObject {
     pub target: TextureTarget,
     pub params: TexParams,
-    /// Index = mip level; `None` = level not specified.
+    /// Index = mip level; `None` = level not specified. A cube map's face +X.
     pub levels: Vec<Option<TexLevel>>,
+    /// A cube map's other faces' levels, −X, +Y, −Y, +Z, −Z (empty for other targets).
+    pub other_faces: [Vec<Option<TexLevel>>; 5],
 }
 
 impl TextureObject {
@@ -456,6 +526,63 @@ impl TextureObject {
             target,
             params: TexParams::DEFAULT,
             levels: Vec::new(),
+            other_faces: Default::default(),
+        }
+    }
+
+    /// The levels of an image target: a cube face's own, the object's for any other.
+    pub fn images(&self, target: TextureTarget) -> &[Option<TexLevel>] {
+        match target.face().map(CubeFace::index) {
+            Some(i @ 1..) => &self.other_faces[i - 1],
+            _ => &self.levels,
+        }
+    }
+
+    fn images_mut(&mut self, target: TextureTarget) -> &mut Vec<Option<TexLevel>> {
+        match target.face().map(CubeFace::index) {
+            Some(i @ 1..) => &mut self.other_faces[i - 1],
+            _ => &mut self.levels,
+        }
+    }
+
+    /// A level of an image target (a cube face, or the object's own target).
+    pub fn level_in(&self, target: TextureTarget, level: i32) -> Option<&TexLevel> {
+        usize::try_from(level)
+            .ok()
+            .and_then(|l| self.images(target).get(l))
+            .and_then(Option::as_ref)
+    }
+
+    pub(crate) fn level_in_mut(
+        &mut self,
+        target: TextureTarget,
+        level: i32,
+    ) -> Option<&mut TexLevel> {
+        usize::try_from(level)
+            .ok()
+            .and_then(|l| self.images_mut(target).get_mut(l))
+            .and_then(Option::as_mut)
+    }
+
+    pub(crate) fn set_level_in(&mut self, target: TextureTarget, level: i32, image: TexLevel) {
+        let Ok(l) = usize::try_from(level) else {
+            return;
+        };
+        let levels = self.images_mut(target);
+        if levels.len() <= l {
+            levels.resize(l + 1, None);
+        }
+        levels[l] = Some(image);
+    }
+
+    /// The image targets holding this object's levels: its six faces for a cube map,
+    /// its own target otherwise.
+    pub fn image_targets(&self) -> Vec<TextureTarget> {
+        match self.target {
+            TextureTarget::CubeMap | TextureTarget::CubeFace(_) => {
+                CubeFace::ALL.map(TextureTarget::CubeFace).to_vec()
+            }
+            t => vec![t],
         }
     }
 
@@ -480,8 +607,13 @@ impl TextureObject {
     /// §3.8.8), p the log2 of the base level's largest dimension; the base level without
     /// one.
     pub fn last_level(&self) -> i32 {
+        self.last_level_in(self.target)
+    }
+
+    /// [`TextureObject::last_level`] from one image target's base level (a cube face's).
+    pub fn last_level_in(&self, target: TextureTarget) -> i32 {
         let b = self.params.base_level;
-        let Some(base) = self.base() else {
+        let Some(base) = self.level_in(target, b) else {
             return b;
         };
         let mut size = (base.width, base.height, base.depth);
@@ -510,13 +642,53 @@ impl TextureObject {
     ///   ignored.
     ///
     /// Borders: the model accepts border 0 only (`check_image_size`), so they always agree.
-    /// Cube maps are not in the model, so cube completeness is not either.
+    /// A cube map is complete when each face is, and the faces' base levels agree in size
+    /// and internal format (cube completeness); q is computed from face +X's base level,
+    /// which the others equal when complete.
     ///
     /// An incomplete texture disables its unit: the fragment gets the colour the unit
     /// receives, as if texturing were off for it (§3.8.15) — Mesa's native path does so,
     /// and the emulated path drops the unit from the `ShaderKey`.
     pub fn completeness(&self) -> Result<TexFormat, Incomplete> {
-        let base = self.base().ok_or(Incomplete::NoBaseLevel)?;
+        if self.target != TextureTarget::CubeMap {
+            return self.images_completeness(self.target);
+        }
+        // Cube completeness (GL 1.5 §3.8.10): the six base levels alike in size and
+        // internal format (square, as every face image is), and each face complete as a
+        // 2D texture under the filter.
+        let first = self.images_completeness(TextureTarget::CubeFace(CubeFace::PositiveX))?;
+        let size = |t| {
+            self.level_in(t, self.params.base_level)
+                .map(|l| (l.width, l.height, l.internal_format))
+        };
+        let base = size(TextureTarget::CubeFace(CubeFace::PositiveX));
+        for face in &CubeFace::ALL[1..] {
+            let target = TextureTarget::CubeFace(*face);
+            self.images_completeness(target)?;
+            if size(target) != base {
+                return Err(Incomplete::FacesDiffer(*face));
+            }
+        }
+        Ok(first)
+    }
+
+    /// Whether a cube map's six base levels are all specified, alike in size and
+    /// internal format (the first half of cube completeness).
+    pub fn faces_alike(&self) -> bool {
+        let base = |f| {
+            self.level_in(TextureTarget::CubeFace(f), self.params.base_level)
+                .map(|l| (l.width, l.height, l.internal_format))
+        };
+        let first = base(CubeFace::PositiveX);
+        first.is_some() && CubeFace::ALL.iter().all(|f| base(*f) == first)
+    }
+
+    /// [`TextureObject::completeness`] of one image target's levels (one face of a cube
+    /// map).
+    fn images_completeness(&self, target: TextureTarget) -> Result<TexFormat, Incomplete> {
+        let base = self
+            .level_in(target, self.params.base_level)
+            .ok_or(Incomplete::NoBaseLevel)?;
         if base.width <= 0 || base.height <= 0 || base.depth <= 0 {
             return Err(Incomplete::EmptyBaseLevel);
         }
@@ -527,13 +699,15 @@ impl TextureObject {
             return Ok(base.internal_format);
         }
         let mut size = (base.width, base.height, base.depth);
-        let last = self.last_level();
+        let last = self.last_level_in(target);
         let mut level = self.params.base_level;
         while level < last {
             let Some(next) = half(size) else { break };
             level += 1;
             size = next;
-            let l = self.level(level).ok_or(Incomplete::MissingLevel(level))?;
+            let l = self
+                .level_in(target, level)
+                .ok_or(Incomplete::MissingLevel(level))?;
             if (l.width, l.height, l.depth) != size {
                 return Err(Incomplete::WrongSize {
                     level,
@@ -560,8 +734,15 @@ impl TextureObject {
     /// compute (a box filter is typical), so the model records the levels with unknown
     /// texels.
     pub(crate) fn level_changed(&mut self, level: i32) {
+        let target = self.target;
+        self.level_changed_in(target, level);
+    }
+
+    /// [`TextureObject::level_changed`] for one image target: a cube face's change
+    /// derives that face's levels.
+    pub(crate) fn level_changed_in(&mut self, target: TextureTarget, level: i32) {
         if self.params.generate_mipmap && level == self.params.base_level {
-            self.generate_levels();
+            self.generate_levels_in(target);
         }
     }
 
@@ -569,7 +750,14 @@ impl TextureObject {
     /// halved sizes down to 1×1 or MAX_LEVEL, the base internal format, texels unknown to
     /// the model.
     pub(crate) fn generate_levels(&mut self) {
-        let Some(base) = self.base() else {
+        for target in self.image_targets() {
+            self.generate_levels_in(target);
+        }
+    }
+
+    /// [`TextureObject::generate_levels`] of one image target (one cube face).
+    fn generate_levels_in(&mut self, target: TextureTarget) {
+        let Some(base) = self.level_in(target, self.params.base_level) else {
             return;
         };
         let format = base.internal_format;
@@ -578,13 +766,14 @@ impl TextureObject {
         if size.0 <= 0 || size.1 <= 0 || size.2 <= 0 {
             return;
         }
-        let last = self.last_level();
+        let last = self.last_level_in(target);
         let mut level = self.params.base_level;
         while level < last {
             let Some(next) = half(size) else { break };
             level += 1;
             size = next;
-            self.set_level(
+            self.set_level_in(
+                target,
                 level,
                 TexLevel {
                     internal_format: format,
@@ -988,6 +1177,67 @@ mod tests {
             .map(|l| (l.width, l.height))
             .collect();
         assert_eq!(sizes, [(6, 3), (3, 1), (1, 1)]);
+    }
+
+    /// Cube completeness (GL 1.5 §3.8.10): six faces, alike in size and format, each
+    /// mipmap-complete under a mipmap filter; GENERATE_MIPMAP derives a face's own levels.
+    #[test]
+    fn cube_completeness_needs_six_alike_faces() {
+        let face = |f| TextureTarget::CubeFace(f);
+        let mut t = TextureObject::new(TextureTarget::CubeMap);
+        t.params.min_filter = Filter::Nearest;
+        for f in &CubeFace::ALL[..5] {
+            t.set_level_in(face(*f), 0, level(TexFormat::Rgba8, 4, 4).unwrap());
+        }
+        assert_eq!(t.completeness(), Err(Incomplete::NoBaseLevel));
+        assert!(!t.faces_alike());
+        t.set_level_in(
+            face(CubeFace::NegativeZ),
+            0,
+            level(TexFormat::Rgba8, 2, 2).unwrap(),
+        );
+        assert_eq!(
+            t.completeness(),
+            Err(Incomplete::FacesDiffer(CubeFace::NegativeZ))
+        );
+        t.set_level_in(
+            face(CubeFace::NegativeZ),
+            0,
+            level(TexFormat::Luminance8, 4, 4).unwrap(),
+        );
+        assert_eq!(
+            t.completeness(),
+            Err(Incomplete::FacesDiffer(CubeFace::NegativeZ))
+        );
+        t.set_level_in(
+            face(CubeFace::NegativeZ),
+            0,
+            level(TexFormat::Rgba8, 4, 4).unwrap(),
+        );
+        assert_eq!(t.completeness(), Ok(TexFormat::Rgba8));
+        assert_eq!(t.level_in(face(CubeFace::PositiveX), 0), t.level(0));
+        t.params.min_filter = Filter::LinearMipmapNearest;
+        assert_eq!(t.completeness(), Err(Incomplete::MissingLevel(1)));
+        t.params.generate_mipmap = true;
+        t.level_changed_in(face(CubeFace::PositiveY), 0);
+        assert_eq!(
+            t.level_in(face(CubeFace::PositiveY), 2).map(|l| l.width),
+            Some(1)
+        );
+        assert_eq!(t.completeness(), Err(Incomplete::MissingLevel(1)));
+        t.generate_levels();
+        assert_eq!(t.completeness(), Ok(TexFormat::Rgba8));
+    }
+
+    #[test]
+    fn face_targets_bind_as_their_cube_and_rank_first() {
+        assert_eq!(
+            TextureTarget::CubeFace(CubeFace::NegativeY).binding(),
+            TextureTarget::CubeMap
+        );
+        assert_eq!(TextureTarget::Texture3D.binding(), TextureTarget::Texture3D);
+        assert_eq!(TextureTarget::ALL.last(), Some(&TextureTarget::CubeMap));
+        assert_eq!(TextureTarget::CubeMap.max_level(), MAX_TEXTURE_LEVEL);
     }
 
     #[test]

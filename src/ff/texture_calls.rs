@@ -49,6 +49,16 @@ pub struct GetTexImage {
     pub slot: u32,
 }
 
+/// glGetTexImage's target: an image target, TEXTURE_CUBE_MAP not (a face is; Mesa:
+/// INVALID_ENUM).
+fn image_target<A: Args>(c: &A) -> Result<TextureTarget, A::Error> {
+    let t: TextureTarget = c.enm(0)?;
+    if t == TextureTarget::CubeMap {
+        return Err(c.unknown(0, vec!["GL_TEXTURE_CUBE_MAP_POSITIVE_X"]));
+    }
+    Ok(t)
+}
+
 fn target<A: Args>(c: &A, want: TextureTarget) -> Result<TextureTarget, A::Error> {
     let t: TextureTarget = c.enm(0)?;
     if t == want {
@@ -70,6 +80,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             }
             let (format, ty, data) = pixel_types::model_pixels(c, 6, shape)?;
             Command::TexSubImage1D(TexSubImage {
+                face: None,
                 level: c.i32(1)?,
                 x: c.i32(2)?,
                 y: 0,
@@ -86,6 +97,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             c.count(7)?;
             target(c, TextureTarget::Texture1D)?;
             Command::CopyTexImage1D(CopyTexImage {
+                face: None,
                 requested: super::calls::requested_format(c, 2),
                 level: c.i32(1)?,
                 internal_format: c.enm(2)?,
@@ -113,7 +125,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::CopyTexSubImage2D => {
             c.count(8)?;
             Command::CopyTexSubImage(CopyTexSubImage {
-                target: target(c, TextureTarget::Texture2D)?,
+                target: super::calls::image_2d_target(c)?,
                 level: c.i32(1)?,
                 xoffset: c.i32(2)?,
                 yoffset: c.i32(3)?,
@@ -131,7 +143,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 return Ok(Some(refused));
             }
             Command::GetTexImage(GetTexImage {
-                target: c.enm(0)?,
+                target: image_target(c)?,
                 level: c.i32(1)?,
                 format,
                 ty,
@@ -193,10 +205,12 @@ impl FixedState {
         if c.width < 0 || c.height < 0 {
             return Err(GlError::invalid_value("negative width or height"));
         }
-        let tex = self.bound_object_mut(c.target)?;
-        let level = tex.level_mut(c.level).ok_or(GlError::invalid_operation(
-            "glCopyTexSubImage of a level never specified",
-        ))?;
+        let tex = self.bound_object_mut(c.target.binding())?;
+        let level = tex
+            .level_in_mut(c.target, c.level)
+            .ok_or(GlError::invalid_operation(
+                "glCopyTexSubImage of a level never specified",
+            ))?;
         if c.xoffset < 0
             || c.yoffset < 0
             || c.zoffset < 0
@@ -209,7 +223,7 @@ impl FixedState {
             ));
         }
         level.data = None;
-        tex.level_changed(c.level);
+        tex.level_changed_in(c.target, c.level);
         Ok(())
     }
 
@@ -223,7 +237,10 @@ impl FixedState {
             ));
         }
         let name = self.units[self.active_unit()].bound(g.target);
-        let Some(level) = self.texture(g.target, name).and_then(|t| t.level(g.level)) else {
+        let Some(level) = self
+            .texture(g.target, name)
+            .and_then(|t| t.level_in(g.target, g.level))
+        else {
             return Ok(false);
         };
         check_format_pair(level.internal_format, g.format)
@@ -234,7 +251,7 @@ impl FixedState {
     /// The level glGetTexImage reads, if it was specified.
     pub fn get_tex_image_level(&self, g: &GetTexImage) -> Option<&TexLevel> {
         let name = self.units[self.active_unit()].bound(g.target);
-        self.texture(g.target, name)?.level(g.level)
+        self.texture(g.target, name)?.level_in(g.target, g.level)
     }
 }
 

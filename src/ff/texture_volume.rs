@@ -74,6 +74,7 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             }
             let (format, ty, data) = pixel_types::model_pixels(c, 10, shape)?;
             Command::TexSubImage3D(TexSubImage {
+                face: None,
                 level: c.i32(1)?,
                 x: c.i32(2)?,
                 y: c.i32(3)?,

@@ -160,6 +160,7 @@ mod calls {
 
     fn sub(level: i32, at: (i32, i32, i32), size: (i32, i32, i32), data: Vec<u8>) -> Command {
         Command::TexSubImage3D(TexSubImage {
+            face: None,
             level,
             x: at.0,
             y: at.1,

@@ -975,6 +975,7 @@ fn texture_differences(
         TextureTarget::Texture1D => unit.bound_1d = name,
         TextureTarget::Texture2D => unit.bound_2d = name,
         TextureTarget::Texture3D => unit.bound_3d = name,
+        TextureTarget::CubeMap | TextureTarget::CubeFace(_) => unit.bound_cube_map = name,
     }
     // The fresh context answers for its default texture of the target (name 0).
     let then = with_unit(fresh, 0);

@@ -237,6 +237,7 @@ impl MapSettings {
                 Command::ActiveTexture(0),
                 bind_map(),
                 Command::CopyTexImage2D(crate::ff::CopyTexImage {
+                    face: None,
                     requested: None,
                     level: 0,
                     internal_format: self.depth_format(),

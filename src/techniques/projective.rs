@@ -278,6 +278,7 @@ pub fn plan(scene: &Scene, prepared: &Prepared) -> Result<Plan, TechniqueError> 
                 Command::ActiveTexture(0),
                 bind(k),
                 Command::CopyTexImage2D(CopyTexImage {
+                    face: None,
                     requested: None,
                     level: 0,
                     internal_format: TexFormat::Rgb8,

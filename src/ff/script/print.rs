@@ -170,8 +170,9 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
         Command::TexSubImage2D(t) => line(
             out,
             format_args!(
-                "{}(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {}, {})",
+                "{}({}, {}, {}, {}, {}, {}, {}, {}, {})",
                 Entry::TexSubImage2D,
+                n(t.target_2d()),
                 t.level,
                 t.x,
                 t.y,
@@ -315,8 +316,9 @@ fn call(c: &Command) -> String {
             format!("{}({}, {name})", Entry::BindTexture, n(*target))
         }
         Command::CopyTexImage2D(t) => format!(
-            "{}(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {})",
+            "{}({}, {}, {}, {}, {}, {}, {}, {})",
             Entry::CopyTexImage2D,
+            n(t.target_2d()),
             t.level,
             internal_format(t.internal_format, t.requested),
             t.x,
@@ -600,17 +602,20 @@ fn call(c: &Command) -> String {
                 c.y,
                 c.width
             ),
-            TextureTarget::Texture2D => format!(
-                "{}(GL_TEXTURE_2D, {}, {}, {}, {}, {}, {}, {})",
-                Entry::CopyTexSubImage2D,
-                c.level,
-                c.xoffset,
-                c.yoffset,
-                c.x,
-                c.y,
-                c.width,
-                c.height
-            ),
+            TextureTarget::Texture2D | TextureTarget::CubeMap | TextureTarget::CubeFace(_) => {
+                format!(
+                    "{}({}, {}, {}, {}, {}, {}, {}, {})",
+                    Entry::CopyTexSubImage2D,
+                    n(c.target),
+                    c.level,
+                    c.xoffset,
+                    c.yoffset,
+                    c.x,
+                    c.y,
+                    c.width,
+                    c.height
+                )
+            }
             TextureTarget::Texture3D => format!(
                 "{}(GL_TEXTURE_3D, {}, {}, {}, {}, {}, {}, {}, {})",
                 Entry::CopyTexSubImage3D,
@@ -1038,7 +1043,7 @@ fn tex_image(out: &mut String, t: &TexImage, target: &str, unpack_alignment: usi
     };
     let (name, size) = match t.target {
         TextureTarget::Texture1D => (Entry::TexImage1D.name(), format!("{}", t.width)),
-        TextureTarget::Texture2D => (
+        TextureTarget::Texture2D | TextureTarget::CubeMap | TextureTarget::CubeFace(_) => (
             Entry::TexImage2D.name(),
             format!("{}, {}", t.width, t.height),
         ),

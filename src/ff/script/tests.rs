@@ -388,6 +388,7 @@ fn sample_commands() -> Vec<Command> {
             data: TexData::Null,
         }),
         Command::TexSubImage2D(TexSubImage {
+            face: None,
             level: 0,
             x: 1,
             y: 0,
@@ -431,6 +432,7 @@ fn sample_commands() -> Vec<Command> {
             data: TexData::Null,
         }),
         Command::TexSubImage3D(TexSubImage {
+            face: None,
             level: 0,
             x: 1,
             y: 0,
@@ -472,7 +474,82 @@ fn sample_commands() -> Vec<Command> {
             ty: PixelType::Float,
             slot: 3,
         }),
+        // GL 1.3's cube maps: the cube bound, enabled and given parameters; its faces the
+        // image targets; texgen REFLECTION_MAP and NORMAL_MAP.
+        Command::BindTexture {
+            target: TextureTarget::CubeMap,
+            name: 11,
+        },
+        Command::TexImage(TexImage {
+            requested: None,
+            target: TextureTarget::CubeFace(crate::ff::CubeFace::NegativeY),
+            level: 1,
+            internal_format: TexFormat::Rgba8,
+            width: 1,
+            height: 1,
+            depth: 1,
+            border: 0,
+            format: PixelFormat::Rgba,
+            ty: PixelType::UnsignedByte,
+            data: TexData::Bytes(vec![1u8, 2, 3, 4].into()),
+        }),
+        Command::TexSubImage2D(TexSubImage {
+            face: Some(crate::ff::CubeFace::PositiveZ),
+            level: 0,
+            x: 0,
+            y: 0,
+            z: 0,
+            width: 1,
+            height: 1,
+            depth: 1,
+            format: PixelFormat::Rgba,
+            ty: PixelType::UnsignedByte,
+            data: Arc::from(vec![9u8; 4]),
+        }),
         Command::CopyTexImage2D(CopyTexImage {
+            face: Some(crate::ff::CubeFace::NegativeX),
+            requested: None,
+            level: 0,
+            internal_format: TexFormat::Rgb8,
+            x: 1,
+            y: 2,
+            width: 4,
+            height: 4,
+            border: 0,
+        }),
+        Command::CopyTexSubImage(crate::ff::texture_calls::CopyTexSubImage {
+            target: TextureTarget::CubeFace(crate::ff::CubeFace::PositiveY),
+            level: 0,
+            xoffset: 1,
+            yoffset: 1,
+            zoffset: 0,
+            x: 0,
+            y: 0,
+            width: 2,
+            height: 2,
+        }),
+        Command::GetTexImage(crate::ff::texture_calls::GetTexImage {
+            target: TextureTarget::CubeFace(crate::ff::CubeFace::PositiveX),
+            level: 0,
+            format: PixelFormat::Rgb,
+            ty: PixelType::UnsignedByte,
+            slot: 4,
+        }),
+        Command::TexParameter {
+            target: TextureTarget::CubeMap,
+            param: TexParam::WrapS(Wrap::ClampToEdge),
+        },
+        Command::Enable(Capability::TextureCubeMap),
+        Command::TexGen {
+            coord: TexCoord::R,
+            param: TexGenParam::Mode(crate::ff::TexGenMode::ReflectionMap),
+        },
+        Command::TexGen {
+            coord: TexCoord::S,
+            param: TexGenParam::Mode(crate::ff::TexGenMode::NormalMap),
+        },
+        Command::CopyTexImage2D(CopyTexImage {
+            face: None,
             requested: None,
             level: 0,
             internal_format: TexFormat::DepthComponent16,
@@ -813,6 +890,7 @@ fn printed_script_is_valid_c() {
     let src = format!(
         "#define GL_GLEXT_PROTOTYPES 1\n#include <GL/gl.h>\n#include <GL/glext.h>\n#include <math.h>\n#include <stddef.h>\n\
          static GLuint readback_3[16];\n\
+         static GLubyte readback_4[16];\n\
          const void *fixedfunc_depth_ubyte_truncate(const void *);\n\
          const void *fixedfunc_depth_ubyte_round(const void *);\n\
          const void *fixedfunc_depth_ushort_truncate(const void *);\n\

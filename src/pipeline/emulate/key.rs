@@ -210,12 +210,16 @@ impl InLevel {
     }
 }
 
-/// The CLAMP axes of a texture sampled through `target`, if any.
+/// The CLAMP axes of a texture sampled through `target`, if any. A cube map has none:
+/// its (s, t, r) is a direction, and the face coordinates GL wraps are the sampler's to
+/// compute, always in [0, 1], where CLAMP_TO_BORDER (CLAMP on the emulated path,
+/// `conv::wrap`) samples as CLAMP does.
 fn clamp_key(target: TextureTarget, p: &TexParams) -> Option<ClampKey> {
     let dims = match target {
         TextureTarget::Texture1D => 1,
         TextureTarget::Texture2D => 2,
         TextureTarget::Texture3D => 3,
+        TextureTarget::CubeMap | TextureTarget::CubeFace(_) => return None,
     };
     let wraps = [p.wrap_s, p.wrap_t, p.wrap_r];
     let axes: [bool; 3] = std::array::from_fn(|i| i < dims && wraps[i] == Wrap::Clamp);
@@ -318,12 +322,18 @@ impl ShaderKey {
                 }),
             })
             .collect();
-        // The eye-space normal exists only for lighting and SPHERE_MAP; without them
-        // NORMALIZE and RESCALE_NORMAL change no code, so they are not in the key.
+        // The eye-space normal exists only for lighting, SPHERE_MAP, REFLECTION_MAP and
+        // NORMAL_MAP; without them NORMALIZE and RESCALE_NORMAL change no code, so they
+        // are not in the key.
         let normal_used = lighting.is_some()
             || vertex_units.iter().any(|u| {
-                u.coords
-                    .contains(&CoordSource::Generated(TexGenMode::SphereMap))
+                [
+                    TexGenMode::SphereMap,
+                    TexGenMode::ReflectionMap,
+                    TexGenMode::NormalMap,
+                ]
+                .iter()
+                .any(|m| u.coords.contains(&CoordSource::Generated(*m)))
             });
         let clip_planes = (0..MAX_CLIP_PLANES)
             .filter(|&i| state.clip_planes[i].enabled)
@@ -401,11 +411,13 @@ fn enabled_units(state: &FixedState) -> Vec<(usize, TextureTarget, TexelKey, Opt
             let target = state.units[unit].enabled_target()?;
             let texture = state.enabled_texture(unit)?;
             let format = texture.completeness().ok()?;
-            let texel = texel_key(
-                format,
-                texture.params.compare_mode,
-                texture.params.depth_texture_mode,
-            );
+            // ARB_shadow compares r with a 1D or 2D depth texel; a depth cube map is read
+            // for its depth (a compare there is outside GL 1.x and not modelled).
+            let compare = match target {
+                TextureTarget::CubeMap => CompareMode::None,
+                _ => texture.params.compare_mode,
+            };
+            let texel = texel_key(format, compare, texture.params.depth_texture_mode);
             Some((unit, target, texel, clamp_key(target, &texture.params)))
         })
         .collect()

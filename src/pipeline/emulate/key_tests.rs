@@ -554,6 +554,7 @@ fn same_code() -> Vec<Case> {
                     8,
                 ),
                 Command::TexSubImage2D(TexSubImage {
+                    face: None,
                     level: 0,
                     x: 0,
                     y: 0,

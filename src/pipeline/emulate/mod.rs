@@ -397,10 +397,7 @@ impl Issue for Emulate {
                 }
             }
             Command::DeleteTextures(names) => self.textures.delete(gl, names),
-            Command::TexSubImage2D(t) => {
-                self.textures
-                    .sub_image(gl, state, TextureTarget::Texture2D, t)?
-            }
+            Command::TexSubImage2D(t) => self.textures.sub_image(gl, state, t.target_2d(), t)?,
             Command::TexSubImage3D(t) => {
                 self.textures
                     .sub_image(gl, state, TextureTarget::Texture3D, t)?

@@ -116,7 +116,10 @@ pub(super) fn stored_sub_image(
     name: u32,
     t: &TexSubImage,
 ) -> Option<((u32, u32), Vec<u8>)> {
-    let internal = state.texture(target, name)?.level(t.level)?.internal_format;
+    let internal = state
+        .texture(target, name)?
+        .level_in(target, t.level)?
+        .internal_format;
     let bytes = texel_store::stored_image(
         &t.data,
         t.format,
@@ -202,7 +205,7 @@ impl Textures {
         let Some(object) = state.texture(c.target, name) else {
             return Ok(());
         };
-        let Some(level) = object.level(c.level) else {
+        let Some(level) = object.level_in(c.target, c.level) else {
             return Ok(());
         };
         let f = level.internal_format;
@@ -213,10 +216,10 @@ impl Textures {
             TextureTarget::Texture1D => {
                 sub_image_1d(ctx, c.level, c.xoffset, c.width, (format, ty), &bytes)?
             }
-            TextureTarget::Texture2D => unsafe {
+            TextureTarget::Texture2D | TextureTarget::CubeMap | TextureTarget::CubeFace(_) => unsafe {
                 gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
                 gl.tex_sub_image_2d(
-                    gl_t,
+                    super::textures::gl_image_target(c.target),
                     c.level,
                     c.xoffset,
                     c.yoffset,
@@ -266,11 +269,11 @@ impl Textures {
         let d = level.depth.max(0) as usize;
         let (format, ty, size) = storage(f);
         let mut stored = vec![0u8; w * h * d * size];
-        let gl_t = self.edit(gl, (g.target, name))?;
+        self.edit(gl, (g.target, name))?;
         unsafe {
             gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
             gl.get_tex_image(
-                gl_t,
+                super::textures::gl_image_target(g.target),
                 g.level,
                 format,
                 ty,

@@ -14,13 +14,24 @@ use crate::ff::{
 use crate::pipeline::PipelineError;
 
 /// Our key for a GL texture: (target, model name). Name 0 is each target's default texture.
+/// A cube face's key is its cube map's (`TextureTarget::binding`).
 type TextureId = (TextureTarget, u32);
 
+/// The GL target an object is bound to.
 fn gl_target(t: TextureTarget) -> u32 {
     match t {
         TextureTarget::Texture1D => glow::TEXTURE_1D,
         TextureTarget::Texture2D => glow::TEXTURE_2D,
         TextureTarget::Texture3D => glow::TEXTURE_3D,
+        TextureTarget::CubeMap | TextureTarget::CubeFace(_) => glow::TEXTURE_CUBE_MAP,
+    }
+}
+
+/// The GL target an image call names: a cube face's own, else the object's.
+pub(super) fn gl_image_target(t: TextureTarget) -> u32 {
+    match t {
+        TextureTarget::CubeFace(f) => glow::TEXTURE_CUBE_MAP_POSITIVE_X + f.index() as u32,
+        t => gl_target(t),
     }
 }
 
@@ -41,6 +52,7 @@ impl Textures {
         gl: &glow::Context,
         id: TextureId,
     ) -> Result<glow::Texture, PipelineError> {
+        let id = (id.0.binding(), id.1);
         if let Some(t) = self.objects.get(&id) {
             return Ok(*t);
         }
@@ -54,7 +66,9 @@ impl Textures {
     /// scratch unit, so that a framebuffer can attach it.
     pub fn gl_name(&mut self, gl: &glow::Context, target: TextureTarget, name: u32) -> Option<u32> {
         self.edit(gl, (target, name)).ok()?;
-        self.objects.get(&(target, name)).map(|t| t.0.get())
+        self.objects
+            .get(&(target.binding(), name))
+            .map(|t| t.0.get())
     }
 
     /// glGenerateMipmap of the active unit's texture bound to `target`.
@@ -113,11 +127,11 @@ impl Textures {
         let Some(object) = state.texture(target, name) else {
             return Ok(());
         };
-        let Some(l) = object.level(level) else {
+        let Some(l) = object.level_in(target, level) else {
             return Ok(());
         };
         let gl_t = self.edit(gl, (target, name))?;
-        upload(gl, gl_t, level, l, state);
+        upload(gl, gl_image_target(target), level, l, state);
         apply_params(gl, gl_t, object);
         generate_mipmap(gl, gl_t, object, level);
         self.uploads += 1;
@@ -150,8 +164,17 @@ impl Textures {
                 TextureTarget::Texture3D => gl.tex_sub_image_3d(
                     gl_t, t.level, t.x, t.y, t.z, t.width, t.height, t.depth, format, ty, data,
                 ),
-                _ => gl
-                    .tex_sub_image_2d(gl_t, t.level, t.x, t.y, t.width, t.height, format, ty, data),
+                _ => gl.tex_sub_image_2d(
+                    gl_image_target(target),
+                    t.level,
+                    t.x,
+                    t.y,
+                    t.width,
+                    t.height,
+                    format,
+                    ty,
+                    data,
+                ),
             }
         }
         if let Some(object) = state.texture(target, name) {
@@ -171,7 +194,7 @@ impl Textures {
         copy: &crate::ff::CopyTexImage,
     ) -> Result<(), PipelineError> {
         use crate::ff::texture::BaseFormat;
-        let target = TextureTarget::Texture2D;
+        let target = copy.target_2d();
         let name = state.units[state.active_unit()].bound(target);
         let f = copy.internal_format;
         let through_cpu = !f.is_depth()
@@ -187,7 +210,7 @@ impl Textures {
                     let (format, ty, _) = super::texel_store::storage(f);
                     gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
                     gl.tex_image_2d(
-                        gl_t,
+                        gl_image_target(target),
                         copy.level,
                         internal as i32,
                         copy.width,
@@ -199,7 +222,7 @@ impl Textures {
                     );
                 }
                 None => gl.copy_tex_image_2d(
-                    gl_t,
+                    gl_image_target(target),
                     copy.level,
                     internal,
                     copy.x,
@@ -380,9 +403,15 @@ fn upload(gl: &glow::Context, target: u32, level: i32, l: &TexLevel, state: &Fix
 /// GENERATE_MIPMAP (GL 1.4): a change to the base level rebuilds the levels above it. The
 /// model has recorded those levels (`TextureObject::level_changed`); glGenerateMipmap makes
 /// their texels, with MAX_LEVEL already covering them.
+///
+/// A cube map's faces are derived together once all six base levels are alike (core GL
+/// refuses glGenerateMipmap of a cube that is not); until then the model's levels wait.
 pub(super) fn generate_mipmap(gl: &glow::Context, target: u32, object: &TextureObject, level: i32) {
-    if level == object.params.base_level && object.params.generate_mipmap && object.base().is_some()
-    {
+    let ready = match object.target {
+        TextureTarget::CubeMap => object.faces_alike(),
+        _ => object.base().is_some(),
+    };
+    if level == object.params.base_level && object.params.generate_mipmap && ready {
         unsafe { gl.generate_mipmap(target) };
     }
 }

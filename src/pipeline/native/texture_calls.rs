@@ -54,16 +54,17 @@ pub fn copy_tex_sub_image(g: &gl::Gl, c: &CopyTexSubImage) {
             TextureTarget::Texture1D => {
                 g.CopyTexSubImage1D(gl::TEXTURE_1D, c.level, c.xoffset, c.x, c.y, c.width)
             }
-            TextureTarget::Texture2D => g.CopyTexSubImage2D(
-                gl::TEXTURE_2D,
-                c.level,
-                c.xoffset,
-                c.yoffset,
-                c.x,
-                c.y,
-                c.width,
-                c.height,
-            ),
+            TextureTarget::Texture2D | TextureTarget::CubeMap | TextureTarget::CubeFace(_) => g
+                .CopyTexSubImage2D(
+                    conv::value(c.target),
+                    c.level,
+                    c.xoffset,
+                    c.yoffset,
+                    c.x,
+                    c.y,
+                    c.width,
+                    c.height,
+                ),
             TextureTarget::Texture3D => g.CopyTexSubImage3D(
                 gl::TEXTURE_3D,
                 c.level,
@@ -87,7 +88,9 @@ pub fn get_tex_image(g: &gl::Gl, state: &FixedState, r: &GetTexImage) -> Option<
     let mut bytes = vec![0u8; volume_size(r.format, r.ty, w, h, d)];
     let (target, depth) = match r.target {
         TextureTarget::Texture1D => (gl::TEXTURE_1D, None),
-        TextureTarget::Texture2D => (gl::TEXTURE_2D, None),
+        TextureTarget::Texture2D | TextureTarget::CubeMap | TextureTarget::CubeFace(_) => {
+            (conv::value(r.target), None)
+        }
         TextureTarget::Texture3D => (gl::TEXTURE_3D, Some(d.max(0) as u32)),
     };
     // SAFETY: `bytes` holds the level's width·height·depth groups, PACK_ALIGNMENT is 1 and

@@ -103,30 +103,31 @@ pub fn tex_image(g: &gl::Gl, t: &TexImage) {
                 ty,
                 pixels,
             ),
-            TextureTarget::Texture2D => g.TexImage2D(
-                gl::TEXTURE_2D,
-                t.level,
-                internal,
-                t.width,
-                t.height,
-                t.border,
-                format,
-                ty,
-                pixels,
-            ),
+            TextureTarget::Texture2D | TextureTarget::CubeMap | TextureTarget::CubeFace(_) => g
+                .TexImage2D(
+                    conv::value(t.target),
+                    t.level,
+                    internal,
+                    t.width,
+                    t.height,
+                    t.border,
+                    format,
+                    ty,
+                    pixels,
+                ),
             // Sent by `texture_volume` above.
             TextureTarget::Texture3D => {}
         }
     }
 }
 
-/// glTexSubImage2D into the bound 2D texture.
+/// glTexSubImage2D into the bound 2D texture or cube face.
 pub fn tex_sub_image(g: &gl::Gl, t: &TexSubImage) {
     // SAFETY: the model checked that `data` holds the region's bytes.
     unsafe {
         g.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
         g.TexSubImage2D(
-            gl::TEXTURE_2D,
+            conv::value(t.target_2d()),
             t.level,
             t.x,
             t.y,
@@ -184,12 +185,12 @@ pub fn compressed_tex_sub_image(g: &gl::Gl, t: &CompressedTexSubImage) {
     };
 }
 
-/// glCopyTexImage2D from the current read framebuffer into the bound 2D texture.
+/// glCopyTexImage2D from the current read framebuffer into the bound 2D texture or cube face.
 pub fn copy_tex_image(g: &gl::Gl, c: &CopyTexImage) {
     // SAFETY: plain GL call on the current context.
     unsafe {
         g.CopyTexImage2D(
-            gl::TEXTURE_2D,
+            conv::value(c.target_2d()),
             c.level,
             c.requested
                 .unwrap_or_else(|| conv::value(c.internal_format)),

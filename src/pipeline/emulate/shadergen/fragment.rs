@@ -196,6 +196,9 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
         TextureTarget::Texture1D => ("float", "x"),
         TextureTarget::Texture2D => ("vec2", "xy"),
         TextureTarget::Texture3D => ("vec3", "xyz"),
+        // The direction (s, t, r), divided by q as Mesa's fixed-function program divides
+        // it (a negative q turns the direction round; measured, `fidelity_cube_map`).
+        TextureTarget::CubeMap | TextureTarget::CubeFace(_) => ("vec3", "xyz"),
     };
     let read = match unit.clamp {
         Some(clamp) => {
@@ -223,6 +226,9 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
         // (s, t, r)/q; no depth format is a 3D texture (`ff::texture_volume`), so the
         // texel is a colour.
         (TextureTarget::Texture3D, _) => ("sampler3D", filtered),
+        // A depth cube map is sampled for its depth, never compared: the model keeps
+        // compare off for cube maps (`key`).
+        (TextureTarget::CubeMap | TextureTarget::CubeFace(_), _) => ("samplerCube", filtered),
     };
     let s = w.uniform_typed(UniformSource::Sampler(u), sampler_type);
     // texture(), or with CLAMP textureGrad() from the unclamped coordinates' derivatives:

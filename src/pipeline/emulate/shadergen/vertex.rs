@@ -477,6 +477,18 @@ fn emit_texcoords(w: &mut GlslWriter, eye: &mut EyeTerms, key: &VertexKey, unit:
             "float sm_m{u} = 2.0 * sqrt(sm_r{u}.x * sm_r{u}.x + sm_r{u}.y * sm_r{u}.y + (sm_r{u}.z + 1.0) * (sm_r{u}.z + 1.0));"
         ));
     }
+    let generated = |m| unit.coords.contains(&CoordSource::Generated(m));
+    if generated(TexGenMode::ReflectionMap) {
+        // r = u − 2n(n·u), u the unit eye position (GL 1.3 §2.10.4).
+        let e = eye.position(w);
+        let n = eye.normal(w, key);
+        w.line(format!("vec3 rm_r{u} = reflect(normalize({e}.xyz), {n});"));
+    }
+    let normal_map = if generated(TexGenMode::NormalMap) {
+        Some(eye.normal(w, key))
+    } else {
+        None
+    };
     let mut parts = Vec::new();
     for coord in TexCoord::ALL {
         let i = coord.index();
@@ -494,6 +506,11 @@ fn emit_texcoords(w: &mut GlslWriter, eye: &mut EyeTerms, key: &VertexKey, unit:
             }
             CoordSource::Generated(TexGenMode::SphereMap) => {
                 format!("(sm_r{u}.{comp} / sm_m{u} + 0.5)")
+            }
+            CoordSource::Generated(TexGenMode::ReflectionMap) => format!("rm_r{u}.{comp}"),
+            // S, T and R only (Q refuses the mode), so `comp` is x, y or z.
+            CoordSource::Generated(TexGenMode::NormalMap) => {
+                format!("{}.{comp}", normal_map.unwrap_or("vec3(0.0)"))
             }
         });
     }
