@@ -17,7 +17,8 @@
 //! **Not applicable is not a failure.** A combination the pipeline refuses
 //! (`PipelineError::Unsupported`: register combiners on the native path) or the technique
 //! refuses for these settings (`TechniqueError::NeedsStencil` with a 16-bit depth buffer,
-//! `NoLight`, `NoAreaLight` for `accumulate` under a point light; the native path's
+//! `NoLight`, `NoAreaLight` for `accumulate` under a point light, a scene without the
+//! shadow planes, flat receiver or F-35 a technique or program form needs; the native path's
 //! missing accumulation buffer outside OSMesa, `PipelineError::NoAccumBuffer`, and its
 //! window's fixed 24-bit depth, `RenderError::WindowDepth`) becomes a skipped entry
 //! carrying the reason, and the study goes on. Any other error is a real failure and ends
@@ -105,7 +106,10 @@ pub fn not_applicable(error: &RenderError) -> Option<String> {
             e @ (TechniqueError::NeedsStencil { .. }
             | TechniqueError::NoLight { .. }
             | TechniqueError::NoAreaLight { .. }
-            | TechniqueError::NoShadowPlanes { .. }),
+            | TechniqueError::NoShadowPlanes { .. }
+            | TechniqueError::NoProjectionPlane { .. }
+            | TechniqueError::TooManyFlatReceivers { .. }
+            | TechniqueError::ColemanDoesNotFit { .. }),
         ) => Some(e.to_string()),
         e @ RenderError::WindowDepth { .. } => Some(e.to_string()),
         _ => None,
@@ -115,4 +119,23 @@ pub fn not_applicable(error: &RenderError) -> Option<String> {
 /// Milliseconds since `start`.
 fn ms_since(start: std::time::Instant) -> f64 {
     start.elapsed().as_secs_f64() * 1e3
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vocab::TechniqueId;
+
+    /// A technique that cannot draw this scene is skipped with its reason; a broken scene
+    /// (more lights than GL has) stays a failure.
+    #[test]
+    fn scene_misfits_are_skipped_and_other_errors_fail() {
+        let misfit = RenderError::Technique(TechniqueError::NoProjectionPlane {
+            technique: TechniqueId::Projective,
+        });
+        let reason = not_applicable(&misfit).unwrap_or_default();
+        assert!(reason.contains("pseudo-depth"), "{reason}");
+        let broken = RenderError::Technique(TechniqueError::TooManyLights { count: 9, max: 8 });
+        assert_eq!(not_applicable(&broken), None);
+    }
 }
