@@ -533,17 +533,13 @@ pub(crate) fn image_2d_target<A: Args>(c: &A) -> Result<TextureTarget, A::Error>
     let t: TextureTarget = c.enm(0)?;
     match t {
         TextureTarget::Texture2D | TextureTarget::CubeFace(_) => Ok(t),
+        // The names from the enum's own table, 2D first, then the faces in order.
         _ => Err(c.unknown(
             0,
-            vec![
-                "GL_TEXTURE_2D",
-                "GL_TEXTURE_CUBE_MAP_POSITIVE_X",
-                "GL_TEXTURE_CUBE_MAP_NEGATIVE_X",
-                "GL_TEXTURE_CUBE_MAP_POSITIVE_Y",
-                "GL_TEXTURE_CUBE_MAP_NEGATIVE_Y",
-                "GL_TEXTURE_CUBE_MAP_POSITIVE_Z",
-                "GL_TEXTURE_CUBE_MAP_NEGATIVE_Z",
-            ],
+            std::iter::once(TextureTarget::Texture2D)
+                .chain(CubeFace::ALL.map(TextureTarget::CubeFace))
+                .filter_map(GlEnum::gl_name)
+                .collect(),
         )),
     }
 }

@@ -200,15 +200,7 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
         // it (a negative q turns the direction round; measured, `fidelity_cube_map`).
         TextureTarget::CubeMap | TextureTarget::CubeFace(_) => ("vec3", "xyz"),
     };
-    let read = match unit.clamp {
-        Some(clamp) => {
-            w.line(format!("{vector} w{u} = p{u}.{axes};"));
-            w.line(format!("{vector} k{u} = w{u};"));
-            Some(clamp)
-        }
-        None => None,
-    };
-    let filtered = match read {
+    let filtered = match unit.clamp {
         Some(_) => format!("k{u}"),
         None => format!("p{u}.{axes}"),
     };
@@ -233,11 +225,13 @@ fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
     let s = w.uniform_typed(UniformSource::Sampler(u), sampler_type);
     // texture(), or with CLAMP textureGrad() from the unclamped coordinates' derivatives:
     // the level of detail is the unclamped coordinates' (GL computes λ before it wraps).
-    let sample = |coord: &str| match read {
+    let sample = |coord: &str| match unit.clamp {
         Some(_) => format!("textureGrad({s}, {coord}, dFdx(w{u}), dFdy(w{u}))"),
         None => format!("texture({s}, {coord})"),
     };
-    if let Some(clamp) = read {
+    if let Some(clamp) = unit.clamp {
+        w.line(format!("{vector} w{u} = p{u}.{axes};"));
+        w.line(format!("{vector} k{u} = w{u};"));
         clamp_coordinates(w, u, unit.target, &s, clamp);
     }
     let as_mode = |m: DepthTextureMode, v: &str| match m {
