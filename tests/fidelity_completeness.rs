@@ -374,6 +374,14 @@ glEnd();
             texel(1),
             QUAD,
         ),
+        // A NaN bias makes λ NaN, which Mesa's sampler takes as magnification: level 0
+        // where the quad is minified to level 2 (measured through OSMesa).
+        (
+            "lod-unit-bias-nan",
+            "glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, NAN);\n",
+            texel(0),
+            one_pixel,
+        ),
     ] {
         let src = format!(
             "{}glBindTexture(GL_TEXTURE_2D, 1);\n{}{nearest_mipmap}{param}glEnable(GL_TEXTURE_2D);\n{quad}",

@@ -159,6 +159,9 @@ int main(void) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, -1);
   glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, iv);
   printf("%-28s %d  err 0x%x\n", "max level (-1)", iv[0], glGetError());
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0.0f / 0.0f);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, iv);
+  printf("%-28s %d  err 0x%x\n", "base level (NaN)", iv[0], glGetError());
   glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3e9f);
   glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, iv);
   printf("%-28s %d  err 0x%x\n", "max level (3e9)", iv[0], glGetError());

@@ -289,30 +289,28 @@ impl Textures {
             let t = self.object(gl, (target, name))?;
             // The unit's TEXTURE_LOD_BIAS (GL 1.4) as the object's, which core GL adds to
             // λ as the unit's would be (the texture's own bias is 0 in GL 1.x), clamped to
-            // ±MAX_TEXTURE_LOD_BIAS; Mesa passes it to llvmpipe's sampler the same way. A
-            // texture bound on two units of different biases takes the later unit's.
+            // ±MAX_TEXTURE_LOD_BIAS; Mesa passes it to llvmpipe's sampler the same way, a
+            // NaN as NaN (λ NaN reads as magnification there and here). A texture bound on
+            // two units of different biases takes the later unit's.
             let bias = state.units[unit as usize]
                 .env
                 .lod_bias
                 .clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS);
-            let bias = if bias.is_nan() { 0.0 } else { bias };
-            if self.lod_bias.get(&t).copied().unwrap_or(0.0).to_bits() != bias.to_bits() {
-                unsafe {
-                    gl.active_texture(glow::TEXTURE0 + u32::from(unit));
-                    gl.bind_texture(gl_target(target), Some(t));
-                    gl.tex_parameter_f32(gl_target(target), glow::TEXTURE_LOD_BIAS, bias);
-                }
-                self.lod_bias.insert(t, bias);
-                self.bound.insert(unit, (target, t));
-                continue;
-            }
-            if self.bound.get(&unit) == Some(&(target, t)) {
+            let new_bias =
+                self.lod_bias.get(&t).copied().unwrap_or(0.0).to_bits() != bias.to_bits();
+            if !new_bias && self.bound.get(&unit) == Some(&(target, t)) {
                 self.binds_skipped += 1;
                 continue;
             }
             unsafe {
                 gl.active_texture(glow::TEXTURE0 + u32::from(unit));
                 gl.bind_texture(gl_target(target), Some(t));
+                if new_bias {
+                    gl.tex_parameter_f32(gl_target(target), glow::TEXTURE_LOD_BIAS, bias);
+                }
+            }
+            if new_bias {
+                self.lod_bias.insert(t, bias);
             }
             self.bound.insert(unit, (target, t));
         }
