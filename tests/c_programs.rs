@@ -191,6 +191,51 @@ fn client_arrays_draw_as_on_mesa() {
     assert_images_match("arrays", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
 
+/// The dominant-colour pixels of panel `i` (three across, two up, 64×64, panel 0 at the
+/// bottom left) for each of red, green and blue.
+fn panel_colours(img: &RgbaImage, i: u32) -> [usize; 3] {
+    let (x0, y0) = ((i % 3) * 64, 64 - (i / 3) * 64);
+    let panel = image::imageops::crop_imm(img, x0, y0, 64, 64).to_image();
+    [0, 1, 2].map(|c| count_dominant(&panel, c))
+}
+
+#[test]
+fn client_arrays_rewritten_in_place_draw_their_new_bytes_as_on_mesa() {
+    let mesa = render("rewrites", Linking::Direct, Library::Mesa, &[]);
+    let ours = render("rewrites", Linking::Direct, Library::Fixedfunc, &[]);
+    assert_images_match("rewrites", &ours, &mesa, within_3_on_99_percent(&mesa));
+    // What each panel must show, whatever Mesa showed: an unchanged draw repeats the
+    // red triangle, each rewrite shows its new bytes.
+    for img in [&mesa, &ours] {
+        let [red0, ..] = panel_colours(img, 0);
+        let [red1, ..] = panel_colours(img, 1);
+        assert!(
+            red0 > 1000 && red1 == red0,
+            "panels 0 and 1: {red0} and {red1} red pixels"
+        );
+        let [red2, green2, _] = panel_colours(img, 2);
+        assert!(
+            red2 == 0 && green2 > 1000,
+            "panel 2 is green after the colour rewrite"
+        );
+        let [_, green3, _] = panel_colours(img, 3);
+        assert!(
+            green3 < green2 * 3 / 4,
+            "panel 3: the apex moved down ({green3} vs {green2})"
+        );
+        let [_, green4, _] = panel_colours(img, 4);
+        assert!(
+            green4 > green3,
+            "panel 4: the fourth vertex widens the triangle"
+        );
+        let [_, _, blue5] = panel_colours(img, 5);
+        assert!(
+            blue5 > 50,
+            "panel 5: the rewritten apex is blue ({blue5} pixels)"
+        );
+    }
+}
+
 #[test]
 fn display_lists_run_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("lists");

@@ -83,6 +83,30 @@ impl ArrayPointer {
         }
     }
 
+    /// (components per element, bytes per component, bytes from one element to the next):
+    /// element i starts at i × stride (stride 0: the elements are packed).
+    fn layout(&self) -> (usize, usize, usize) {
+        let size = (self.size.max(0) as usize).min(4);
+        let elem = ctype_size(self.ty);
+        let stride = if self.stride > 0 {
+            self.stride as usize
+        } else {
+            size * elem
+        };
+        (size, elem, stride)
+    }
+
+    /// The bytes a read of elements `which` spans, as (start, length): from the first
+    /// element's start to the last one's end. `None` for no elements, or a span past the
+    /// address space.
+    fn span(&self, which: Vertices) -> Option<(usize, usize)> {
+        let (size, elem, stride) = self.layout();
+        let (lo, hi) = which.bounds()?;
+        let start = lo.checked_mul(stride)?;
+        let len = (hi - lo).checked_mul(stride)?.checked_add(size * elem)?;
+        Some((start, len))
+    }
+
     /// The components of elements `which`, each over `default` and taken by `take` (a
     /// normalisation, or the float as it is); an element the memory does not hold is
     /// `default`. The span from the first to the last element named is read once, as GL
@@ -96,22 +120,15 @@ impl ArrayPointer {
         take: impl Fn(f64) -> f32,
         make: impl Fn([f32; 4]) -> T,
     ) -> Vec<T> {
-        let size = (self.size.max(0) as usize).min(4);
-        let elem = ctype_size(self.ty);
-        let stride = if self.stride > 0 {
-            self.stride as usize
-        } else {
-            size * elem
-        };
+        let (size, elem, stride) = self.layout();
         let decode_one = |bytes: &[u8]| make(decode_element(self.ty, bytes, size, default, &take));
-        let Some((lo, hi)) = which.bounds() else {
+        let Some((lo, _)) = which.bounds() else {
             return Vec::new();
         };
-        let span = lo
-            .checked_mul(stride)
-            .zip((hi - lo).checked_mul(stride))
-            .and_then(|(start, len)| Some((start, len.checked_add(size * elem)?)));
-        if let Some(bytes) = span.and_then(|(start, len)| mem.read(&self.data, start, len)) {
+        if let Some(bytes) = self
+            .span(which)
+            .and_then(|(start, len)| mem.read(&self.data, start, len))
+        {
             let element = |i: usize| bytes.get((i - lo) * stride..(i - lo) * stride + size * elem);
             if let (CType::Float, Vertices::Run(..), true) = (self.ty, which, stride > 0) {
                 // A run of elements `stride` apart: the span holds every one whole (it
@@ -743,6 +760,33 @@ impl ClientArrays {
         .chain(self.texcoord.iter_mut())
     }
 
+    /// The arrays a draw reads: every enabled one but the colour-index array, which only
+    /// glArrayElement reads.
+    pub fn drawn(&self) -> impl Iterator<Item = &ArrayPointer> + '_ {
+        [
+            &self.vertex,
+            &self.normal,
+            &self.color,
+            &self.edge_flag,
+            &self.secondary_color,
+            &self.fog_coord,
+        ]
+        .into_iter()
+        .chain(self.texcoord.iter())
+        .filter(|a| a.enabled)
+    }
+
+    /// What a draw of elements `first..end` reads from each array it reads: the array's
+    /// memory and the span of it, (start, length) in bytes.
+    pub fn spans(
+        &self,
+        first: usize,
+        end: usize,
+    ) -> impl Iterator<Item = (&ArrayData, Option<(usize, usize)>)> + '_ {
+        self.drawn()
+            .map(move |a| (&a.data, a.span(Vertices::Run(first, end))))
+    }
+
     /// The geometry of vertices `which` (each an element index), drawn through `indices`
     /// into them when given.
     fn geometry(
@@ -815,7 +859,10 @@ impl ClientArrays {
         indices: Vec<u32>,
         mem: &dyn ClientMemory,
     ) -> Option<Geometry> {
-        let n = indices.iter().max().map_or(0, |&m| m as usize + 1);
+        let n = match indices.is_empty() {
+            true => 0,
+            false => super::geometry::max_index(&indices) as usize + 1,
+        };
         self.geometry(mode, Vertices::Run(0, n), Some(indices), mem)
     }
 

@@ -7,7 +7,6 @@ use std::borrow::Cow;
 use std::sync::Arc;
 
 use super::args::Args;
-use super::buffer_draws::BufferDraws;
 use super::buffers::Buffers;
 use super::client::{ArrayData, ClientArrays, ClientEffect, ClientMemory};
 use super::client_attrib::ClientAttribStack;
@@ -16,6 +15,7 @@ use super::error::GlErrorKind;
 use super::immediate::{decode, Immediate, Op};
 use super::lists::{compiled, follow, Item, ListMode, Lists, MAX_LIST_NESTING};
 use super::pixel_store::PixelStore;
+use super::repeated_draws::RepeatedDraws;
 use super::state::{CurrentValues, FixedState};
 use crate::ff::api::{CType, Entry};
 
@@ -32,7 +32,7 @@ pub struct Client {
     pub pixel_store: PixelStore,
     pub client_attrib: ClientAttribStack,
     /// The last draw from buffer objects, drawn again while nothing it reads changed.
-    buffer_draws: BufferDraws,
+    repeated_draws: RepeatedDraws,
 }
 
 /// What a call gives back to its caller. The C library returns or writes it out; a script
@@ -175,7 +175,10 @@ impl Client {
             mem,
             buffers: &self.buffers,
         };
-        if let Some(g) = self.buffer_draws.get(c, &self.arrays, &self.buffers) {
+        if let Some(g) = self
+            .repeated_draws
+            .get(c, &self.arrays, &self.buffers, &mem)
+        {
             out.push(Command::Draw(g));
             return Ok(Reply::None);
         }
@@ -183,8 +186,8 @@ impl Client {
             ClientEffect::State | ClientEffect::Draw(None) => {}
             ClientEffect::Draw(Some(g)) => {
                 let g = Arc::new(g);
-                self.buffer_draws
-                    .remember(c, &self.arrays, &self.buffers, &g);
+                self.repeated_draws
+                    .remember(c, &self.arrays, &self.buffers, &mem, &g);
                 out.push(Command::Draw(g));
             }
             ClientEffect::Draws(draws) => {
@@ -204,7 +207,7 @@ impl Client {
         if self.immediate.is_open() {
             return Err(c.immediate("a buffer-object call inside glBegin/glEnd"));
         }
-        self.buffer_draws.forget();
+        self.repeated_draws.forget_buffer_reads();
         let reply = self.buffers.call(c, mem)?;
         if matches!(c.entry(), Entry::DeleteBuffers | Entry::DeleteBuffersARB) {
             for name in self.arrays.buffer_names() {

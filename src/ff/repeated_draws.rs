@@ -1,0 +1,260 @@
+//! Draws remembered: a glDrawArrays, glDrawElements or glDrawRangeElements that reads
+//! exactly what an earlier one read gives that draw's `Geometry` — one of the last
+//! [`REMEMBERED`], so a frame of many objects, each its own draw, repeats every one of them
+//! — and a pipeline that keeps uploaded geometry by its `Arc` uploads it once. Mesa keeps a
+//! buffer object's store in a GPU buffer the same way; for client arrays it copies the
+//! arrays at every draw, which this replaces by a comparison.
+//!
+//! The geometry is a function of the draw's arguments, the client arrays (pointers,
+//! enables, the offsets into buffers they captured), the buffers' stores and the program's
+//! memory where the arrays and indices point. The key holds the first two. The stores
+//! change only through a buffer-object call — which forgets the draws that read a buffer
+//! ([`RepeatedDraws::forget_buffer_reads`]) — or through a mapped pointer, so no draw is
+//! remembered while a buffer it reads is mapped. The program's memory may change at any
+//! time (GL reads client arrays when the draw is called, GL 1.5 §2.8), so a remembered
+//! draw keeps a copy of the bytes it read there, and a later draw is the same only if
+//! every one of those spans still holds the same bytes: the indices first (they fix which
+//! elements the arrays' spans cover), then each array's span from its first element read
+//! to its last. The copies are held to [`MAX_COPIED_BYTES`].
+
+use std::sync::Arc;
+
+use super::api::Entry;
+use super::args::Args;
+use super::buffers::Buffers;
+use super::client::{ArrayData, ClientArrays, ClientMemory};
+use super::geometry::{Geometry, Primitive};
+
+/// glDrawElements' index types and their sizes in bytes.
+const INDEX_TYPES: [(&str, usize); 3] = [
+    ("GL_UNSIGNED_BYTE", 1),
+    ("GL_UNSIGNED_SHORT", 2),
+    ("GL_UNSIGNED_INT", 4),
+];
+
+/// How many draws are remembered (the most recent ones).
+pub const REMEMBERED: usize = 64;
+
+/// The most bytes of the program's memory the remembered draws hold copies of; the oldest
+/// are forgotten past it, and a draw that read more than a quarter of it is not remembered
+/// (a comparison as long as the copy it replaces would gain little).
+pub const MAX_COPIED_BYTES: usize = 64 << 20;
+
+/// What a draw reads besides the buffers' stores and the program's memory.
+#[derive(Clone, Debug, PartialEq)]
+struct Key {
+    entry: Entry,
+    mode: Primitive,
+    /// first and count (glDrawArrays); count (glDrawElements); count, start and end
+    /// (glDrawRangeElements).
+    counts: [i64; 3],
+    /// The indices' type name and size in bytes.
+    ty: Option<(&'static str, usize)>,
+    /// The indices: program memory, or an offset into the element buffer.
+    indices: Option<ArrayData>,
+    arrays: ClientArrays,
+}
+
+impl Key {
+    /// Whether any array or the indices are in a buffer object.
+    fn reads_buffer(&self) -> bool {
+        self.arrays
+            .drawn()
+            .map(|a| &a.data)
+            .chain(self.indices.as_ref())
+            .any(|d| matches!(d, ArrayData::Buffer { .. }))
+    }
+
+    /// The elements the arrays are read for, `first..end`, given the geometry the draw
+    /// made: glDrawArrays reads from `first`, the indexed draws from 0 to the largest
+    /// index (`ClientArrays::indexed`); either way one position per element.
+    fn elements(&self, g: &Geometry) -> (usize, usize) {
+        let first = match self.entry {
+            Entry::DrawArrays => usize::try_from(self.counts[0]).unwrap_or(0),
+            _ => 0,
+        };
+        (first, first + g.positions.len())
+    }
+}
+
+/// Bytes a remembered draw read from the program's memory, and where.
+#[derive(Debug)]
+struct Copy {
+    data: ArrayData,
+    start: usize,
+    bytes: Box<[u8]>,
+}
+
+impl Copy {
+    /// Whether the memory still holds these bytes.
+    fn holds(&self, mem: &dyn ClientMemory) -> bool {
+        mem.read(&self.data, self.start, self.bytes.len())
+            .is_some_and(|now| *now == *self.bytes)
+    }
+}
+
+#[derive(Debug)]
+struct Remembered {
+    key: Key,
+    copies: Vec<Copy>,
+    geometry: Arc<Geometry>,
+}
+
+impl Remembered {
+    fn copied_bytes(&self) -> usize {
+        self.copies.iter().map(|c| c.bytes.len()).sum()
+    }
+}
+
+/// The last draws and their geometry, the most recent last.
+#[derive(Debug, Default)]
+pub struct RepeatedDraws {
+    last: Vec<Remembered>,
+    /// The bytes the copies hold.
+    copied: usize,
+}
+
+impl RepeatedDraws {
+    /// A buffer-object call may change a store: no remembered draw that reads a buffer
+    /// survives it.
+    pub fn forget_buffer_reads(&mut self) {
+        self.last.retain(|r| !r.key.reads_buffer());
+        self.copied = self.last.iter().map(Remembered::copied_bytes).sum();
+    }
+
+    /// The geometry of draw `c` if it repeats a remembered one; `None` otherwise.
+    pub fn get<A: Args>(
+        &self,
+        c: &A,
+        arrays: &ClientArrays,
+        buffers: &Buffers,
+        mem: &dyn ClientMemory,
+    ) -> Option<Arc<Geometry>> {
+        let key = key_of(c, arrays, buffers)?;
+        self.last
+            .iter()
+            .rev()
+            .find(|r| r.key == key && r.copies.iter().all(|copy| copy.holds(mem)))
+            .map(|r| Arc::clone(&r.geometry))
+    }
+
+    /// Remembers the geometry draw `c` made, unless it reads a mapped buffer or more of
+    /// the program's memory than a quarter of [`MAX_COPIED_BYTES`].
+    pub fn remember<A: Args>(
+        &mut self,
+        c: &A,
+        arrays: &ClientArrays,
+        buffers: &Buffers,
+        mem: &dyn ClientMemory,
+        geometry: &Arc<Geometry>,
+    ) {
+        let Some(key) = key_of(c, arrays, buffers) else {
+            return;
+        };
+        let Some(copies) = copies_of(&key, geometry, mem) else {
+            return;
+        };
+        let entry = Remembered {
+            key,
+            copies,
+            geometry: Arc::clone(geometry),
+        };
+        let size = entry.copied_bytes();
+        if size > MAX_COPIED_BYTES / 4 {
+            return;
+        }
+        self.last.retain(|r| r.key != entry.key);
+        self.copied = self.last.iter().map(Remembered::copied_bytes).sum();
+        while !self.last.is_empty()
+            && (self.last.len() >= REMEMBERED || self.copied + size > MAX_COPIED_BYTES)
+        {
+            let oldest = self.last.remove(0);
+            self.copied -= oldest.copied_bytes();
+        }
+        self.last.push(entry);
+        self.copied += size;
+    }
+}
+
+/// The key of draw `c`: `None` for a call other than the three draws, or a draw that
+/// reads a buffer that is mapped (or gone).
+fn key_of<A: Args>(c: &A, arrays: &ClientArrays, buffers: &Buffers) -> Option<Key> {
+    let entry = c.entry();
+    let mode: Primitive = c.enm(0).ok()?;
+    let index_type = |i: usize| {
+        let name = c.pname(i, &INDEX_TYPES.map(|(n, _)| n)).ok()?;
+        INDEX_TYPES.into_iter().find(|(n, _)| *n == name)
+    };
+    let element = buffers.bound.element;
+    let (counts, ty, indices) = match entry {
+        Entry::DrawArrays => {
+            let counts = [c.i32(1).ok()?.into(), c.i32(2).ok()?.into(), 0];
+            (counts, None, None)
+        }
+        Entry::DrawElements => {
+            let indices = Buffers::source(c, 3, element).ok()?;
+            (
+                [c.i32(1).ok()?.into(), 0, 0],
+                Some(index_type(2)?),
+                Some(indices),
+            )
+        }
+        Entry::DrawRangeElements => {
+            let counts = [
+                c.i32(3).ok()?.into(),
+                c.u32(1).ok()?.into(),
+                c.u32(2).ok()?.into(),
+            ];
+            let indices = Buffers::source(c, 5, element).ok()?;
+            (counts, Some(index_type(4)?), Some(indices))
+        }
+        _ => return None,
+    };
+    for data in arrays.drawn().map(|a| &a.data).chain(indices.as_ref()) {
+        if let ArrayData::Buffer { name, .. } = data {
+            if buffers.get(*name).is_none_or(|b| b.mapped.is_some()) {
+                return None;
+            }
+        }
+    }
+    Some(Key {
+        entry,
+        mode,
+        counts,
+        ty,
+        indices,
+        arrays: arrays.clone(),
+    })
+}
+
+/// Copies of what the draw of `key`, which made `g`, read from the program's memory: the
+/// indices, then each array's span. `None` when a span cannot be named or read.
+fn copies_of(key: &Key, g: &Geometry, mem: &dyn ClientMemory) -> Option<Vec<Copy>> {
+    let mut copies = Vec::new();
+    let mut copy = |data: &ArrayData, start: usize, len: usize| -> Option<()> {
+        if let ArrayData::Address(_) = data {
+            let bytes = mem.read(data, start, len)?;
+            copies.push(Copy {
+                data: data.clone(),
+                start,
+                bytes: bytes.into_owned().into_boxed_slice(),
+            });
+        }
+        Some(())
+    };
+    if let (Some(indices), Some((_, size))) = (&key.indices, key.ty) {
+        let count = usize::try_from(key.counts[0]).ok()?;
+        copy(indices, 0, count.checked_mul(size)?)?;
+    }
+    let (first, end) = key.elements(g);
+    for (data, span) in key.arrays.spans(first, end) {
+        if let ArrayData::Address(_) = data {
+            let (start, len) = span?;
+            copy(data, start, len)?;
+        }
+    }
+    Some(copies)
+}
+
+#[cfg(test)]
+mod tests;
