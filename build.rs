@@ -32,6 +32,7 @@ const MODEL_EXTENSIONS: &[&str] = &[
     "GL_EXT_secondary_color",
     "GL_EXT_fog_coord",
     "GL_EXT_texture_compression_s3tc",
+    "GL_EXT_compiled_vertex_array",
 ];
 
 fn main() {

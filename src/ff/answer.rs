@@ -285,6 +285,8 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
         CLIENT_ATTRIB_STACK_DEPTH => int(c.client_attrib.depth() as i64),
         MAX_CLIENT_ATTRIB_STACK_DEPTH_PNAME => int(MAX_CLIENT_ATTRIB_STACK_DEPTH as i64),
         r::CLIENT_ACTIVE_TEXTURE => enm(r::TEXTURE0 + u32::from(a.client_active)),
+        r::ARRAY_ELEMENT_LOCK_FIRST_EXT => int(a.lock.map_or(0, |l| l.first).into()),
+        r::ARRAY_ELEMENT_LOCK_COUNT_EXT => int(a.lock.map_or(0, |l| l.count).into()),
         r::VERTEX_ARRAY_SIZE => int(i64::from(a.vertex.size)),
         r::VERTEX_ARRAY_TYPE => enm(ty(a.vertex.ty)),
         r::VERTEX_ARRAY_STRIDE => int(i64::from(a.vertex.stride)),

@@ -322,6 +322,8 @@ macro_rules! gl_entry_table {
         MultiDrawElements = glMultiDrawElements(Script; mode: GLenum, count: *const GLsizei, r#type: GLenum, indices: *const *const c_void, drawcount: GLsizei);
         ArrayElement = glArrayElement(Script; i: GLint);
         InterleavedArrays = glInterleavedArrays(Script; format: GLenum, stride: GLsizei, pointer: *const c_void);
+        LockArraysEXT = glLockArraysEXT(Script; first: GLint, count: GLsizei);
+        UnlockArraysEXT = glUnlockArraysEXT(Script; );
         // Fog, scissor, clip planes, logic op, blending (GL 1.0–1.4), hints.
         Fogf = glFogf(Script; pname: GLenum, param: GLfloat);
         Fogi = glFogi(Script; pname: GLenum, param: GLint);

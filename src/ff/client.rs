@@ -334,6 +334,17 @@ pub struct ClientArrays {
     /// glClientActiveTexture: the unit glTexCoordPointer and the TEXTURE_COORD_ARRAY
     /// enable address. GL default: 0.
     pub client_active: u8,
+    /// glLockArraysEXT's range (EXT_compiled_vertex_array), `None` when unlocked. A hint
+    /// that the locked elements will not change: draws read the arrays as they are either
+    /// way, as Mesa does, so only the queries and the errors see it.
+    pub lock: Option<ArrayLock>,
+}
+
+/// The elements glLockArraysEXT locked: ARRAY_ELEMENT_LOCK_FIRST_EXT and _COUNT_EXT.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ArrayLock {
+    pub first: i32,
+    pub count: i32,
 }
 
 impl Default for ClientArrays {
@@ -351,6 +362,7 @@ impl Default for ClientArrays {
             fog_coord: ArrayPointer::new(1),
             index: ArrayPointer::new(1),
             client_active: 0,
+            lock: None,
         }
     }
 }
@@ -446,6 +458,8 @@ impl ClientArrays {
                 | Entry::MultiDrawElements
                 | Entry::ArrayElement
                 | Entry::InterleavedArrays
+                | Entry::LockArraysEXT
+                | Entry::UnlockArraysEXT
         )
     }
 
@@ -672,6 +686,26 @@ impl ClientArrays {
                 return Ok(ClientEffect::Element(self.element(i as usize, mem)));
             }
             Entry::InterleavedArrays => self.interleaved(c, bound)?,
+            // EXT_compiled_vertex_array, checked in Mesa's order (measured: first < 0 and
+            // count ≤ 0 are INVALID_VALUE before a held lock is INVALID_OPERATION).
+            Entry::LockArraysEXT => {
+                let (first, count) = (c.i32(0)?, c.i32(1)?);
+                if first < 0 {
+                    return Err(c.bad(0, "a first element of 0 or more"));
+                }
+                if count <= 0 {
+                    return Err(c.bad(1, "a count of 1 or more"));
+                }
+                if self.lock.is_some() {
+                    return Err(c.immediate("the arrays are already locked"));
+                }
+                self.lock = Some(ArrayLock { first, count });
+            }
+            Entry::UnlockArraysEXT => {
+                if self.lock.take().is_none() {
+                    return Err(c.immediate("the arrays are not locked"));
+                }
+            }
             _ => return Err(c.unsupported()),
         }
         Ok(ClientEffect::State)

@@ -156,17 +156,22 @@ impl Client {
             self.immediate.call(c, current, out)?;
             return Ok(Reply::None);
         }
-        let draws = matches!(
-            entry,
+        // Inside glBegin/glEnd: INVALID_OPERATION (GL 1.5 §2.6.3; EXT_compiled_vertex_array
+        // for the lock, Mesa measured alike).
+        let refused_in_pair = match entry {
             Entry::DrawArrays
-                | Entry::DrawElements
-                | Entry::DrawRangeElements
-                | Entry::MultiDrawArrays
-                | Entry::MultiDrawElements
-                | Entry::InterleavedArrays
-        );
-        if draws && self.immediate.is_open() {
-            return Err(c.immediate("a draw inside glBegin/glEnd"));
+            | Entry::DrawElements
+            | Entry::DrawRangeElements
+            | Entry::MultiDrawArrays
+            | Entry::MultiDrawElements
+            | Entry::InterleavedArrays => Some("a draw inside glBegin/glEnd"),
+            Entry::LockArraysEXT | Entry::UnlockArraysEXT => {
+                Some("locking the arrays inside glBegin/glEnd")
+            }
+            _ => None,
+        };
+        if let (Some(rule), true) = (refused_in_pair, self.immediate.is_open()) {
+            return Err(c.immediate(rule));
         }
         // A draw from a mapped buffer: GL 1.5 §2.9.3 makes it INVALID_OPERATION, llvmpipe's
         // Mesa draws it without an error (tests/c/buffers.c). Followed: Mesa; the draw

@@ -75,6 +75,8 @@ pub fn compiled(entry: Entry) -> bool {
             | Entry::EnableClientState
             | Entry::DisableClientState
             | Entry::InterleavedArrays
+            | Entry::LockArraysEXT
+            | Entry::UnlockArraysEXT
     ) && !super::framebuffer::never_compiled(entry)
         && !super::queries::never_compiled(entry)
 }

@@ -58,6 +58,32 @@ int main(void) {
   /* The imaging subset links and is refused, as on Mesa. */
   CHECK(glHistogram(GL_HISTOGRAM, 16, GL_RGBA, GL_FALSE));
   CHECK(glResetMinmax(GL_MINMAX));
+  /* EXT_compiled_vertex_array, resolved as programs of its era resolved it: the range is
+   * checked before a held lock, a second lock and an unlock without one are refused, and
+   * the client attrib stack keeps the lock. */
+  PFNGLLOCKARRAYSEXTPROC lock = (PFNGLLOCKARRAYSEXTPROC)OSMesaGetProcAddress("glLockArraysEXT");
+  PFNGLUNLOCKARRAYSEXTPROC unlock =
+      (PFNGLUNLOCKARRAYSEXTPROC)OSMesaGetProcAddress("glUnlockArraysEXT");
+  if (!lock || !unlock) return 3;
+  GLint range[2];
+#define LOCKED()                                                   \
+  glGetIntegerv(GL_ARRAY_ELEMENT_LOCK_FIRST_EXT, range);           \
+  glGetIntegerv(GL_ARRAY_ELEMENT_LOCK_COUNT_EXT, range + 1);       \
+  printf("locked elements %d, %d\n", range[0], range[1])
+  LOCKED();
+  CHECK(lock(-1, 3));
+  CHECK(lock(0, 0));
+  CHECK(unlock());
+  CHECK(lock(2, 5));
+  CHECK(lock(1, 1));
+  LOCKED();
+  CHECK(glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT); unlock());
+  LOCKED();
+  CHECK(glPopClientAttrib());
+  LOCKED();
+  CHECK(glBegin(GL_POINTS); unlock(); glEnd());
+  CHECK(glNewList(1, GL_COMPILE); unlock(); glEndList(); glCallList(1));
+  LOCKED();
   printf("vendor set: %d\n", glGetString(GL_VENDOR) != NULL);
   OSMesaDestroyContext(ctx);
   return 0;

@@ -171,6 +171,8 @@ glBegin(GL_POINTS);
 glArrayElement(0);
 glEnd();
 glInterleavedArrays(GL_V2F, 0, (GLfloat[]){0, 0, 1, 0, 0, 1});
+glLockArraysEXT(0, 3);
+glUnlockArraysEXT();
 glDisableClientState(GL_VERTEX_ARRAY);
 glNewList(1, GL_COMPILE);
 glEndList();
