@@ -133,10 +133,12 @@ impl ArrayPointer {
             if let (CType::Float, Vertices::Run(..), true) = (self.ty, which, stride > 0) {
                 // A run of elements `stride` apart: the span holds every one whole (it
                 // ends with the last element's own bytes).
-                return bytes
-                    .chunks(stride)
-                    .map(|e| make(floats(e.get(..size * elem).unwrap_or_default(), default)))
-                    .collect();
+                return match size {
+                    1 => float_run::<1, T>(&bytes, stride, default, &make),
+                    2 => float_run::<2, T>(&bytes, stride, default, &make),
+                    3 => float_run::<3, T>(&bytes, stride, default, &make),
+                    _ => float_run::<4, T>(&bytes, stride, default, &make),
+                };
             }
             if self.ty == CType::Float {
                 // Every `take` is the identity on GLfloat (a float array is neither
@@ -201,6 +203,30 @@ fn ctype_size(t: CType) -> usize {
         CType::Int | CType::UInt | CType::Float => 4,
         CType::Double => 8,
     }
+}
+
+/// The first N GLfloats of each element of a run `stride` bytes apart, over `default`:
+/// with N a constant each element is one fixed-size copy (this runs per vertex of every
+/// client-array draw that is not a repeat).
+fn float_run<const N: usize, T>(
+    bytes: &[u8],
+    stride: usize,
+    default: [f32; 4],
+    make: &impl Fn([f32; 4]) -> T,
+) -> Vec<T> {
+    bytes
+        .chunks(stride)
+        .map(|e| {
+            let mut c = default;
+            if let Some(e) = e.get(..4 * N) {
+                for (k, slot) in c.iter_mut().enumerate().take(N) {
+                    let at = 4 * k;
+                    *slot = f32::from_ne_bytes([e[at], e[at + 1], e[at + 2], e[at + 3]]);
+                }
+            }
+            make(c)
+        })
+        .collect()
 }
 
 /// The GLfloat components in `bytes` over `default` (up to four).
@@ -1034,10 +1060,14 @@ fn read_indices(
     // own loop.
     Some(match ty {
         CType::UByte | CType::Byte => bytes.iter().map(|&b| u32::from(b)).collect(),
-        CType::UShort | CType::Short => bytes
-            .chunks_exact(2)
-            .map(|b| u32::from(u16::from_ne_bytes([b[0], b[1]])))
-            .collect(),
+        // Aligned (as a program's GLushort array is), widened in one vectorised pass.
+        CType::UShort | CType::Short => match bytemuck::try_cast_slice::<u8, u16>(&bytes) {
+            Ok(shorts) => shorts.iter().map(|&i| u32::from(i)).collect(),
+            Err(_) => bytes
+                .chunks_exact(2)
+                .map(|b| u32::from(u16::from_ne_bytes([b[0], b[1]])))
+                .collect(),
+        },
         _ => bytes
             .chunks_exact(4)
             .map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))

@@ -276,7 +276,7 @@ impl GpuGeometry {
                 (Some(mode), Some(indices)) => {
                     let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
                     gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
-                    let short = indices.iter().all(|&i| i <= u32::from(u16::MAX));
+                    let short = crate::ff::max_index(indices) <= u32::from(u16::MAX);
                     let index_type = if short {
                         let narrow: Vec<u16> = indices.iter().map(|&i| i as u16).collect();
                         gl.buffer_data_u8_slice(
