@@ -102,6 +102,10 @@ impl Client {
     ) -> Result<Reply, A::Error> {
         let entry = c.entry();
         let current = &state.current;
+        // The material a glBegin starts from (a display list's own commands move it on).
+        if !self.immediate.is_open() {
+            self.immediate.materials = state.materials;
+        }
         if super::front_state::handles(entry) {
             return self.front_state_call(c, state, out);
         }
@@ -320,6 +324,19 @@ impl Client {
         for item in items {
             let before = out.len();
             match item {
+                Item::Command(Command::Material { face, param }) if self.immediate.is_open() => {
+                    match param {
+                        crate::ff::MaterialParam::Shininess(v) if !(0.0..=128.0).contains(v) => out
+                            .push(Command::Raise {
+                                error: GlErrorKind::InvalidValue,
+                                call: Entry::Materialf,
+                            }),
+                        _ => {
+                            let op = Op::Material(*face, *param);
+                            let _ = self.immediate.apply(&op, &current, out);
+                        }
+                    }
+                }
                 Item::Command(cmd) => {
                     if self.immediate.is_open() && !matches!(cmd, Command::Raise { .. }) {
                         out.push(Command::Raise {
@@ -360,6 +377,7 @@ impl Client {
             }
             for cmd in &out[before..] {
                 follow(&mut current, cmd);
+                self.immediate.follow(cmd);
             }
         }
     }

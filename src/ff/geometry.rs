@@ -45,6 +45,89 @@ pub struct Geometry {
     pub fog_coords: Option<Vec<f32>>,
     /// Indices into the arrays; `None` draws them in order.
     pub indices: Option<Vec<u32>>,
+    /// Materials per vertex: glMaterial called inside glBegin/glEnd (GL 1.5 §2.14.3).
+    pub materials: Option<Box<VertexMaterials>>,
+}
+
+/// A material value a vertex can carry: a colour of a face, or a face's shininess.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MaterialSlot {
+    Color(MaterialSide, MaterialColor),
+    Shininess(MaterialSide),
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MaterialSide {
+    Front,
+    Back,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MaterialColor {
+    Ambient,
+    Diffuse,
+    Specular,
+    Emission,
+}
+
+impl MaterialSlot {
+    /// Every slot, in bit order ([`MaterialSlot::bit`]).
+    pub const ALL: [MaterialSlot; 10] = {
+        use MaterialColor::*;
+        use MaterialSide::*;
+        [
+            MaterialSlot::Color(Front, Ambient),
+            MaterialSlot::Color(Front, Diffuse),
+            MaterialSlot::Color(Front, Specular),
+            MaterialSlot::Color(Front, Emission),
+            MaterialSlot::Color(Back, Ambient),
+            MaterialSlot::Color(Back, Diffuse),
+            MaterialSlot::Color(Back, Specular),
+            MaterialSlot::Color(Back, Emission),
+            MaterialSlot::Shininess(Front),
+            MaterialSlot::Shininess(Back),
+        ]
+    };
+
+    /// The slot's position in [`MaterialSlot::ALL`]: its bit in a mask of slots, and its
+    /// attribute's offset in the emulated program.
+    pub fn bit(self) -> usize {
+        let side = |s: MaterialSide| match s {
+            MaterialSide::Front => 0,
+            MaterialSide::Back => 1,
+        };
+        match self {
+            MaterialSlot::Color(s, c) => 4 * side(s) + c as usize,
+            MaterialSlot::Shininess(s) => 8 + side(s),
+        }
+    }
+}
+
+/// The per-vertex materials of a draw, one array per slot that a glMaterial inside the
+/// pair set (each vertex holds the value current when it was specified); the other slots
+/// take the material state. Shininess arrays hold (s, 0, 0, 1).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct VertexMaterials {
+    pub arrays: [Option<Vec<Vec4>>; 10],
+}
+
+impl VertexMaterials {
+    /// The slots with an array, as a mask of [`MaterialSlot::bit`]s.
+    pub fn mask(&self) -> u16 {
+        self.arrays
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| a.is_some())
+            .fold(0, |m, (i, _)| m | 1 << i)
+    }
+
+    /// The slots with an array and their values.
+    pub fn present(&self) -> impl Iterator<Item = (MaterialSlot, &[Vec4])> + '_ {
+        MaterialSlot::ALL
+            .into_iter()
+            .zip(&self.arrays)
+            .filter_map(|(slot, a)| Some((slot, a.as_deref()?)))
+    }
 }
 
 impl Geometry {
@@ -75,7 +158,11 @@ impl Geometry {
             && self
                 .texcoords
                 .iter()
-                .all(|t| same(t.as_ref().map(Vec::len)));
+                .all(|t| same(t.as_ref().map(Vec::len)))
+            && self
+                .materials
+                .as_ref()
+                .is_none_or(|m| m.arrays.iter().all(|a| same(a.as_ref().map(Vec::len))));
         if !ok {
             return Err(GlError::invalid_value(
                 "attribute arrays differ in length from positions",

@@ -7,7 +7,11 @@
 //! (`Command::Color`…). A draw changes no state, so after it the values the pair left
 //! current follow as their own commands, and the state after the commands equals GL's
 //! after glEnd. Inside the
-//! pair only the attribute calls are allowed (§2.6.3: anything else is INVALID_OPERATION).
+//! pair only the attribute calls and glMaterial are allowed (§2.6.3: anything else is
+//! INVALID_OPERATION). A glMaterial inside the pair gives each vertex from the next on the
+//! material it sets (§2.14.3, as Mesa lights it: per vertex), in per-vertex arrays of the
+//! values it set (`VertexMaterials`); the material at glBegin fills the vertices before
+//! it, and glEnd leaves the last values as the material state.
 
 use std::sync::Arc;
 
@@ -17,8 +21,10 @@ use super::api::{Attrib, AttribCall, Entry};
 use super::args::Args;
 use super::client::Element;
 use super::command::Command;
-use super::geometry::{Geometry, Primitive};
+use super::fragment::Face;
+use super::geometry::{Geometry, MaterialColor, MaterialSide, MaterialSlot, Primitive};
 use super::glenum::Family;
+use super::light::{Material, MaterialParam, Materials};
 use super::state::{CurrentValues, MAX_TEXTURE_UNITS};
 
 /// The immediate-mode half of a front end: whether a glBegin is open, and what it holds.
@@ -28,6 +34,9 @@ pub struct Immediate {
     /// The vertex count of the last pair: the arrays of the next are sized for it (a
     /// program draws the same shapes frame after frame).
     last_vertices: usize,
+    /// The material state where the calls are (outside a pair): the front end sets it from
+    /// the model before a call and follows a display list's commands through it.
+    pub materials: Materials,
 }
 
 /// A glBegin not yet ended.
@@ -45,6 +54,13 @@ struct Open {
     pending: bool,
     /// Some texture unit has an array (the vertex loop over the units is skipped if not).
     texcoord_arrays: bool,
+    /// The material at glBegin, and as the glMaterial calls inside the pair have set it.
+    begin_materials: Materials,
+    materials: Materials,
+    /// The material slots set inside the pair (bits of `MaterialSlot::bit`).
+    material_called: u16,
+    /// The pair's glMaterial calls, in order: they follow the draw as state commands.
+    material_calls: Vec<Command>,
 }
 
 /// The attributes a pair tracks, each at its slot: colour (0), normal (1), one texture
@@ -134,6 +150,9 @@ pub enum Op {
     Rect([f32; 4]),
     /// glArrayElement's values.
     Element(Box<Element>),
+    /// glMaterial inside the pair (a display list's compiled glMaterial met while a pair
+    /// is open, or the call itself).
+    Material(Face, MaterialParam),
 }
 
 /// The immediate-mode call `c` is, with its values read and converted; `None` for any
@@ -263,6 +282,23 @@ impl Immediate {
                 .apply(&op, current, out)
                 .map_err(|rule| c.immediate(rule)),
             None => {
+                let material = matches!(
+                    c.entry(),
+                    Entry::Materialf | Entry::Materialfv | Entry::Materiali | Entry::Materialiv
+                );
+                if let (Some(open), true) = (self.open.as_mut(), material) {
+                    // glMaterial inside the pair: errors as outside it (a shininess beyond
+                    // [0, 128] is INVALID_VALUE, Mesa measured alike), then per vertex.
+                    if let Command::Material { face, param } = super::calls::command(c)? {
+                        if let MaterialParam::Shininess(v) = param {
+                            if !(0.0..=128.0).contains(&v) {
+                                return Err(c.bad(2, "a shininess in [0, 128]"));
+                            }
+                        }
+                        open.material(face, param);
+                    }
+                    return Ok(());
+                }
                 if self.open.is_some() {
                     return Err(
                         c.immediate("only vertex attributes are allowed inside glBegin/glEnd")
@@ -318,6 +354,22 @@ impl Immediate {
                 self.end(out)
             }
             Op::Element(e) => self.array_element(e, out),
+            Op::Material(face, param) => {
+                let open = self
+                    .open
+                    .as_mut()
+                    .ok_or("glMaterial outside glBegin/glEnd")?;
+                open.material(*face, *param);
+                Ok(())
+            }
+        }
+    }
+
+    /// Follows a command the front end emitted outside a pair into the material state.
+    pub fn follow(&mut self, cmd: &Command) {
+        if let Command::Material { face, param } = cmd {
+            // An invalid value is refused by the model and changes nothing.
+            let _ = self.materials.set(*face, *param);
         }
     }
 
@@ -344,6 +396,10 @@ impl Immediate {
             called: [false; SLOTS],
             pending: false,
             texcoord_arrays: false,
+            begin_materials: self.materials,
+            materials: self.materials,
+            material_called: 0,
+            material_calls: Vec::new(),
         });
         Ok(())
     }
@@ -381,6 +437,10 @@ impl Immediate {
         let (begin, cur) = (open.begin, open.current);
         out.push(Command::Draw(Arc::new(open.geometry)));
         changed_current(&begin, &cur, out);
+        for cmd in open.material_calls {
+            self.follow(&cmd);
+            out.push(cmd);
+        }
         Ok(())
     }
 }
@@ -447,6 +507,50 @@ impl Open {
                 }
             }
         }
+        if let Some(m) = &mut g.materials {
+            for (slot, a) in MaterialSlot::ALL.into_iter().zip(m.arrays.iter_mut()) {
+                if let Some(a) = a {
+                    a.push(slot_value(&self.materials, slot));
+                }
+            }
+        }
+    }
+
+    /// glMaterial inside the pair: the material from the next vertex on. Out-of-range
+    /// values are refused before (`Client::call`), as the model refuses them.
+    fn material(&mut self, face: Face, param: MaterialParam) {
+        if self.materials.set(face, param).is_err() {
+            return;
+        }
+        self.material_calls.push(Command::Material { face, param });
+        let sides: &[MaterialSide] = match face {
+            Face::Front => &[MaterialSide::Front],
+            Face::Back => &[MaterialSide::Back],
+            Face::FrontAndBack => &[MaterialSide::Front, MaterialSide::Back],
+        };
+        let colors: &[MaterialColor] = match param {
+            MaterialParam::Ambient(_) => &[MaterialColor::Ambient],
+            MaterialParam::Diffuse(_) => &[MaterialColor::Diffuse],
+            MaterialParam::AmbientAndDiffuse(_) => {
+                &[MaterialColor::Ambient, MaterialColor::Diffuse]
+            }
+            MaterialParam::Specular(_) => &[MaterialColor::Specular],
+            MaterialParam::Emission(_) => &[MaterialColor::Emission],
+            MaterialParam::Shininess(_) => &[],
+        };
+        for &side in sides {
+            let slots: Vec<MaterialSlot> = match param {
+                MaterialParam::Shininess(_) => vec![MaterialSlot::Shininess(side)],
+                _ => colors
+                    .iter()
+                    .map(|&c| MaterialSlot::Color(side, c))
+                    .collect(),
+            };
+            for slot in slots {
+                self.material_called |= 1 << slot.bit();
+            }
+        }
+        self.pending = true;
     }
 
     /// An attribute inside the pair: the current value, and an array from the next vertex.
@@ -501,6 +605,36 @@ impl Open {
             v.resize(n, self.begin.edge_flag);
             g.edge_flags = Some(v);
         }
+        if self.material_called != 0 {
+            let m = g.materials.get_or_insert_with(Box::default);
+            for (slot, a) in MaterialSlot::ALL.into_iter().zip(m.arrays.iter_mut()) {
+                if self.material_called & (1 << slot.bit()) != 0 && a.is_none() {
+                    *a = Some(vec![slot_value(&self.begin_materials, slot); n]);
+                }
+            }
+        }
+    }
+}
+
+/// The value of a material slot, as its array holds it (shininess as (s, 0, 0, 1)).
+fn slot_value(m: &Materials, slot: MaterialSlot) -> Vec4 {
+    let side = |s: MaterialSide| -> &Material {
+        match s {
+            MaterialSide::Front => &m.front,
+            MaterialSide::Back => &m.back,
+        }
+    };
+    match slot {
+        MaterialSlot::Color(s, c) => {
+            let f = side(s);
+            match c {
+                MaterialColor::Ambient => f.ambient,
+                MaterialColor::Diffuse => f.diffuse,
+                MaterialColor::Specular => f.specular,
+                MaterialColor::Emission => f.emission,
+            }
+        }
+        MaterialSlot::Shininess(s) => Vec4::new(side(s).shininess, 0.0, 0.0, 1.0),
     }
 }
 

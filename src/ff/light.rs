@@ -221,6 +221,12 @@ pub struct Materials {
     pub back: Material,
 }
 
+impl Default for Materials {
+    fn default() -> Self {
+        Materials::DEFAULT
+    }
+}
+
 impl Materials {
     pub const DEFAULT: Self = Self {
         front: Material::DEFAULT,

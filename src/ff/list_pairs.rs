@@ -113,7 +113,8 @@ fn assemble_pair(items: Vec<Item>) -> Option<Pair> {
                     vertices += 1;
                 }
             }
-            Op::Rect(_) => return None,
+            // A material set inside the pair fills earlier vertices from glBegin's.
+            Op::Rect(_) | Op::Material(..) => return None,
         }
     }
     // The vertices no longer depend on glBegin's values: assemble them from any.

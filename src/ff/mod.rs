@@ -95,7 +95,9 @@ pub use fragment::{
     DepthRange, DepthTest, Face, FrontFace, HintMode, HintTarget, Hints, LogicOp, OffsetEnables,
     PolygonMode, ScissorBox, ShadeModel, StencilOp, StencilTest, Toggle, Viewport,
 };
-pub use geometry::{max_index, Geometry, Primitive};
+pub use geometry::{
+    max_index, Geometry, MaterialColor, MaterialSide, MaterialSlot, Primitive, VertexMaterials,
+};
 pub use light::{
     ColorControl, ColorMaterial, ColorMaterialMode, Light, LightModel, LightModelParam, LightParam,
     Material, MaterialParam, Materials, MAX_LIGHTS,

@@ -25,8 +25,9 @@ use glow::HasContext;
 use super::assembly::{self, Diagonal};
 use super::polygon::{split_corners, Corner, Outline};
 use super::shadergen::{
-    ATTRIB_COLOR, ATTRIB_COUNT, ATTRIB_EDGE, ATTRIB_FOG_COORD, ATTRIB_NORMAL, ATTRIB_POSITION,
-    ATTRIB_SECONDARY, ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0,
+    material_location, ATTRIB_COLOR, ATTRIB_COUNT, ATTRIB_EDGE, ATTRIB_FOG_COORD, ATTRIB_NORMAL,
+    ATTRIB_POSITION, ATTRIB_SECONDARY, ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION,
+    ATTRIB_TEXCOORD0,
 };
 use super::shared_vertices::{self, Shared};
 use crate::ff::{FixedState, Geometry, Primitive, ShadeModel, MAX_TEXTURE_UNITS};
@@ -261,6 +262,18 @@ impl GpuGeometry {
             ] {
                 let Some(c) = values else { continue };
                 let a = Floats::of4(c);
+                let own = buffer(&a.bytes(order))?;
+                point(own, location, 4);
+                if let Some(p) = provoking {
+                    colors.push((location, own, buffer(&a.bytes(Some(p)))?));
+                }
+            }
+            // Per-vertex materials (glMaterial inside glBegin/glEnd): bound as the colours
+            // are, a split polygon's provoking values kept for flat draws.
+            let mask = g.materials.as_ref().map_or(0, |m| m.mask());
+            for (slot, values) in g.materials.iter().flat_map(|m| m.present()) {
+                let location = material_location(mask, slot.bit());
+                let a = Floats::of4(values);
                 let own = buffer(&a.bytes(order))?;
                 point(own, location, 4);
                 if let Some(p) = provoking {

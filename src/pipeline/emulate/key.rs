@@ -45,6 +45,9 @@ pub struct LightingKey {
     /// LIGHT_MODEL_COLOR_CONTROL = SEPARATE_SPECULAR_COLOR: the specular terms go to the
     /// secondary colour instead of the primary (GL 1.2 §2.13.1).
     pub separate_specular: bool,
+    /// The material values the draw's vertices carry (glMaterial inside glBegin/glEnd), as
+    /// a mask of `MaterialSlot::bit`s: read from attributes instead of uniforms.
+    pub vertex_materials: u16,
 }
 
 /// How one texture coordinate is produced.
@@ -515,7 +518,16 @@ fn lighting_key(state: &FixedState) -> Option<LightingKey> {
         two_side,
         color_material,
         separate_specular: state.light_model.color_control == ColorControl::SeparateSpecularColor,
+        vertex_materials: 0,
     })
+}
+
+impl LightingKey {
+    /// The material values `g`'s vertices carry (all of them: their attribute locations
+    /// follow from the whole mask, `shadergen::material_location`).
+    pub fn with_vertex_materials(&mut self, g: &crate::ff::Geometry) {
+        self.vertex_materials = g.materials.as_ref().map_or(0, |m| m.mask());
+    }
 }
 
 #[cfg(test)]

@@ -30,7 +30,8 @@ pub struct Shared {
 
 /// `g`'s vertices shared, or `None` when `g` is indexed already or repeats too few.
 pub fn of(g: &Geometry) -> Option<Shared> {
-    if g.indices.is_some() || g.positions.is_empty() {
+    // Per-vertex materials are not in a vertex's bits: such a draw keeps its vertices.
+    if g.indices.is_some() || g.positions.is_empty() || g.materials.is_some() {
         return None;
     }
     let n = g.positions.len();

@@ -12,7 +12,10 @@ use std::ffi::c_void;
 
 use glam::{Vec3, Vec4};
 
-use crate::ff::{FixedState, Geometry, MAX_TEXTURE_UNITS};
+use crate::ff::{
+    FixedState, Geometry, MaterialColor, MaterialSide, MaterialSlot, VertexMaterials,
+    MAX_TEXTURE_UNITS,
+};
 
 use super::bindings as gl;
 use super::bindings::types::GLsizei;
@@ -101,14 +104,10 @@ pub fn draw(g: &gl::Gl, geometry: &Geometry) {
             g.EnableClientState(gl::TEXTURE_COORD_ARRAY);
             g.TexCoordPointer(4, gl::FLOAT, 0, t.as_ptr().cast::<c_void>());
         }
-        match &geometry.indices {
-            Some(idx) => g.DrawElements(
-                mode,
-                count(idx.len()),
-                gl::UNSIGNED_INT,
-                idx.as_ptr().cast::<c_void>(),
-            ),
-            None => g.DrawArrays(mode, 0, count(geometry.positions.len())),
+        if let Some(m) = &geometry.materials {
+            draw_with_materials(g, geometry, m, mode);
+        } else {
+            draw_arrays(g, geometry, mode);
         }
         // Leave no array enabled: the next draw enables exactly what it has.
         for (unit, _) in &arrays.texcoords {
@@ -122,6 +121,97 @@ pub fn draw(g: &gl::Gl, geometry: &Geometry) {
         g.DisableClientState(gl::FOG_COORD_ARRAY);
         g.DisableClientState(gl::NORMAL_ARRAY);
         g.DisableClientState(gl::VERTEX_ARRAY);
+    }
+}
+
+/// The enabled arrays drawn in one call.
+///
+/// # Safety
+/// The arrays set on `g` hold every vertex and index of `geometry`.
+unsafe fn draw_arrays(g: &gl::Gl, geometry: &Geometry, mode: u32) {
+    unsafe {
+        match &geometry.indices {
+            Some(idx) => g.DrawElements(
+                mode,
+                count(idx.len()),
+                gl::UNSIGNED_INT,
+                idx.as_ptr().cast::<c_void>(),
+            ),
+            None => g.DrawArrays(mode, 0, count(geometry.positions.len())),
+        }
+    }
+}
+
+/// A draw whose vertices carry materials, as the program gave it: glBegin, then per
+/// element the glMaterial calls whose value changes at it and glArrayElement, then glEnd.
+/// The material state is the model's again afterwards ([`restore_materials`]).
+///
+/// # Safety
+/// As [`draw_arrays`].
+unsafe fn draw_with_materials(g: &gl::Gl, geometry: &Geometry, m: &VertexMaterials, mode: u32) {
+    let order: Vec<u32> = match &geometry.indices {
+        Some(idx) => idx.clone(),
+        None => (0..geometry.positions.len() as u32).collect(),
+    };
+    unsafe {
+        g.Begin(mode);
+        for (k, &i) in order.iter().enumerate() {
+            for (slot, values) in m.present() {
+                let v = values[i as usize];
+                let before = k.checked_sub(1).map(|p| values[order[p] as usize]);
+                if before != Some(v) {
+                    send_material(g, slot, v);
+                }
+            }
+            g.ArrayElement(i as i32);
+        }
+        g.End();
+    }
+}
+
+/// glMaterialfv of one slot's value.
+fn send_material(g: &gl::Gl, slot: MaterialSlot, v: Vec4) {
+    let side = |s: MaterialSide| match s {
+        MaterialSide::Front => gl::FRONT,
+        MaterialSide::Back => gl::BACK,
+    };
+    let (face, pname) = match slot {
+        MaterialSlot::Color(s, c) => (
+            side(s),
+            match c {
+                MaterialColor::Ambient => gl::AMBIENT,
+                MaterialColor::Diffuse => gl::DIFFUSE,
+                MaterialColor::Specular => gl::SPECULAR,
+                MaterialColor::Emission => gl::EMISSION,
+            },
+        ),
+        MaterialSlot::Shininess(s) => (side(s), gl::SHININESS),
+    };
+    let values = v.to_array();
+    // SAFETY: a plain GL call with four floats.
+    unsafe { g.Materialfv(face, pname, values.as_ptr()) };
+}
+
+/// Sends the model's material for every slot a draw's vertices carried: GL's material is
+/// the last vertex's after such a draw, the model's until the commands after the draw.
+pub fn restore_materials(g: &gl::Gl, state: &FixedState, geometry: &Geometry) {
+    let Some(m) = &geometry.materials else {
+        return;
+    };
+    for (slot, _) in m.present() {
+        let (f, s) = match slot {
+            MaterialSlot::Color(MaterialSide::Front, _)
+            | MaterialSlot::Shininess(MaterialSide::Front) => (&state.materials.front, slot),
+            _ => (&state.materials.back, slot),
+        };
+        let v = match s {
+            MaterialSlot::Color(_, MaterialColor::Ambient) => f.ambient,
+            MaterialSlot::Color(_, MaterialColor::Diffuse) => f.diffuse,
+            MaterialSlot::Color(_, MaterialColor::Specular) => f.specular,
+            MaterialSlot::Color(_, MaterialColor::Emission) => f.emission,
+            MaterialSlot::Shininess(_) => Vec4::new(f.shininess, 0.0, 0.0, 1.0),
+        };
+        send_material(g, slot, v);
     }
 }
 

@@ -262,6 +262,7 @@ impl Native {
                 }
                 draw::draw(g, geometry);
                 draw::restore_current(g, &core.state, geometry);
+                draw::restore_materials(g, &core.state, geometry);
                 core.counters.draws += 1;
             }
             // Issued by the framebuffer mirror (`pipeline::framebuffers`).

@@ -40,6 +40,15 @@ pub const ATTRIB_SECONDARY: u32 = ATTRIB_EDGE + 3;
 pub const ATTRIB_FOG_COORD: u32 = ATTRIB_EDGE + 4;
 /// One past the last location: at most MAX_VERTEX_ATTRIBS = 16 on llvmpipe.
 pub const ATTRIB_COUNT: u32 = ATTRIB_EDGE + 5;
+/// Where the per-vertex material values of a draw with glMaterial inside glBegin/glEnd go:
+/// core GL gives 16 attributes and the layer uses them all, so the values take the
+/// locations of the last texture units' coordinates, the first slot present (in
+/// `MaterialSlot::bit` order of `mask`) unit 7's, the next unit 6's. The draw checks that
+/// no unit it reads is among them (`Emulate::draw`).
+pub fn material_location(mask: u16, bit: usize) -> u32 {
+    let rank = (mask & ((1u16 << bit) - 1)).count_ones();
+    ATTRIB_TEXCOORD0 + crate::ff::MAX_TEXTURE_UNITS as u32 - 1 - rank
+}
 
 /// Half the side of the viewport a `PositionSource::Window` pass draws with: the viewport
 /// (−S, −S, 2S, 2S) has scale S and translation 0, so x_w = (x_w / S) · S exactly for a

@@ -17,8 +17,9 @@ use crate::pipeline::emulate::key::{
 use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
 
 use super::{
-    ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_FOG_COORD, ATTRIB_NORMAL, ATTRIB_POSITION, ATTRIB_SECONDARY,
-    ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0, ATTRIB_WINDOW, WINDOW_SPAN,
+    material_location, ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_FOG_COORD, ATTRIB_NORMAL, ATTRIB_POSITION,
+    ATTRIB_SECONDARY, ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION, ATTRIB_TEXCOORD0, ATTRIB_WINDOW,
+    WINDOW_SPAN,
 };
 
 pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
@@ -298,6 +299,7 @@ fn emit_lighting(w: &mut GlslWriter, lighting: &LightingKey, inputs: &Inputs, fl
 fn material(
     w: &mut GlslWriter,
     cm: Option<ColorMaterialKey>,
+    per_vertex: u16,
     color: &str,
     face: u8,
     value: MaterialValue,
@@ -316,9 +318,41 @@ fn material(
     });
     if tracks {
         color.to_string()
+    } else if let Some(a) = vertex_material(w, per_vertex, face, value) {
+        a
     } else {
         w.uniform(UniformSource::Material(face, value))
     }
+}
+
+/// The attribute of a material value a glMaterial inside glBegin/glEnd set per vertex
+/// (bit `MaterialSlot::bit` of `per_vertex`), declared at its location; `None` when the
+/// value is the material state's. Shininess arrays hold (s, 0, 0, 1): `.x`.
+fn vertex_material(
+    w: &mut GlslWriter,
+    per_vertex: u16,
+    face: u8,
+    value: MaterialValue,
+) -> Option<String> {
+    let face = u32::from(face);
+    let index = match value {
+        MaterialValue::Ambient => 4 * face,
+        MaterialValue::Diffuse => 4 * face + 1,
+        MaterialValue::Specular => 4 * face + 2,
+        MaterialValue::Emission => 4 * face + 3,
+        MaterialValue::Shininess => 8 + face,
+    };
+    if per_vertex & (1 << index) == 0 {
+        return None;
+    }
+    w.declare(&format!(
+        "layout(location = {}) in vec4 a_material{index};",
+        material_location(per_vertex, index as usize)
+    ));
+    Some(match value {
+        MaterialValue::Shininess => format!("a_material{index}.x"),
+        _ => format!("a_material{index}"),
+    })
 }
 
 /// c = e_m + a_m·a_cs + Σ att·spot·(a_m·a_l + max(n·L,0)·d_m·d_l + f·max(n·h,0)^s·s_m·s_l),
@@ -335,9 +369,30 @@ fn emit_face(
 ) {
     let cm = lighting.color_material;
     let color = inputs.color;
-    let emission = material(w, cm, color, face, MaterialValue::Emission);
-    let ambient = material(w, cm, color, face, MaterialValue::Ambient);
-    let diffuse = material(w, cm, color, face, MaterialValue::Diffuse);
+    let emission = material(
+        w,
+        cm,
+        lighting.vertex_materials,
+        color,
+        face,
+        MaterialValue::Emission,
+    );
+    let ambient = material(
+        w,
+        cm,
+        lighting.vertex_materials,
+        color,
+        face,
+        MaterialValue::Ambient,
+    );
+    let diffuse = material(
+        w,
+        cm,
+        lighting.vertex_materials,
+        color,
+        face,
+        MaterialValue::Diffuse,
+    );
     let scene = w.uniform(UniformSource::LightModelAmbient);
     let c = format!("c{face}");
     w.line(format!(
@@ -379,10 +434,32 @@ fn emit_light(
     let ld = u(w, LightValue::Diffuse);
     let ls = u(w, LightValue::Specular);
     let cm = lighting.color_material;
-    let ma = material(w, cm, color, face, MaterialValue::Ambient);
-    let md = material(w, cm, color, face, MaterialValue::Diffuse);
-    let ms = material(w, cm, color, face, MaterialValue::Specular);
-    let shin = w.uniform(UniformSource::Material(face, MaterialValue::Shininess));
+    let ma = material(
+        w,
+        cm,
+        lighting.vertex_materials,
+        color,
+        face,
+        MaterialValue::Ambient,
+    );
+    let md = material(
+        w,
+        cm,
+        lighting.vertex_materials,
+        color,
+        face,
+        MaterialValue::Diffuse,
+    );
+    let ms = material(
+        w,
+        cm,
+        lighting.vertex_materials,
+        color,
+        face,
+        MaterialValue::Specular,
+    );
+    let shin = vertex_material(w, lighting.vertex_materials, face, MaterialValue::Shininess)
+        .unwrap_or_else(|| w.uniform(UniformSource::Material(face, MaterialValue::Shininess)));
     let v = format!("l{i}_{face}");
     w.line(format!(
         "// light {i}, {} face",
