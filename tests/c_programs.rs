@@ -237,6 +237,18 @@ fn client_arrays_rewritten_in_place_draw_their_new_bytes_as_on_mesa() {
 }
 
 #[test]
+fn materials_set_inside_a_pair_light_per_vertex_as_on_mesa() {
+    let (mesa, ours) = texts("materials");
+    // Mesa lit the three corners with their own diffuse colours (the pixel rows differ).
+    assert_mesa_printed(&mesa, &["front diffuse after       0 0 1 1"]);
+    assert!(
+        mesa.contains("(184, 57, 35)"),
+        "the red corner is not red on Mesa:\n{mesa}"
+    );
+    assert_same_text(&mesa, &ours, 7, "a per-vertex material");
+}
+
+#[test]
 fn display_lists_run_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("lists");
     assert!(
