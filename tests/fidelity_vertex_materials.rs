@@ -113,3 +113,28 @@ glEnd();
     assert_eq!(state.materials.back.shininess, 7.0);
     assert_eq!(state.materials.front.shininess, 0.0);
 }
+
+#[test]
+fn a_printed_pair_gives_its_vertices_the_same_materials() {
+    // The trace of a C program prints what the library received (`ff::script::print`):
+    // printed and read again, each draw's vertices carry the same materials.
+    let draws = |commands: &[fixedfunc::ff::Command]| -> Vec<fixedfunc::ff::Geometry> {
+        commands
+            .iter()
+            .filter_map(|c| match c {
+                fixedfunc::ff::Command::Draw(g) => Some((**g).clone()),
+                _ => None,
+            })
+            .collect()
+    };
+    let first = fidelity::parse(SCRIPT);
+    let printed = fixedfunc::ff::script::print(&first);
+    let again = fidelity::parse(&printed);
+    let (a, b) = (draws(&first), draws(&again));
+    assert_eq!(a.len(), b.len());
+    assert!(a.iter().filter(|g| g.materials.is_some()).count() >= 3);
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!(x.materials, y.materials, "printed:\n{printed}");
+        assert_eq!(x.positions, y.positions);
+    }
+}

@@ -1070,6 +1070,10 @@ fn draw(out: &mut String, g: &Geometry) {
     if let Some(idx) = &g.indices {
         return draw_arrays(out, g, Some(idx));
     }
+    // Per-vertex materials print as the pair that made them (`material_pair`).
+    if g.materials.is_some() {
+        return draw_arrays(out, g, None);
+    }
     // A draw with attribute arrays prints as client arrays too: glColor and its kin inside
     // glBegin/glEnd would also set the current values, which a draw does not.
     if g.colors.is_some()
@@ -1215,8 +1219,9 @@ fn draw_arrays(out: &mut String, g: &Geometry, indices: Option<&[u32]>) {
             format_args!("{}(GL_TEXTURE_COORD_ARRAY)", Entry::EnableClientState),
         );
     }
-    match indices {
-        Some(idx) => {
+    match (indices, &g.materials) {
+        (_, Some(m)) => material_pair(out, g, indices, m),
+        (Some(idx), None) => {
             let list: Vec<String> = idx.iter().map(u32::to_string).collect();
             line(
                 out,
@@ -1229,7 +1234,7 @@ fn draw_arrays(out: &mut String, g: &Geometry, indices: Option<&[u32]>) {
                 ),
             );
         }
-        None => line(
+        (None, None) => line(
             out,
             format_args!(
                 "{}({}, 0, {})",
@@ -1255,6 +1260,66 @@ fn draw_arrays(out: &mut String, g: &Geometry, indices: Option<&[u32]>) {
     }
     for name in &enabled {
         line(out, format_args!("{}({name})", Entry::DisableClientState));
+    }
+}
+
+/// A draw whose vertices carry materials, over the arrays just set: glBegin, then per
+/// element the glMaterial calls whose value changes at it and glArrayElement, then glEnd —
+/// the pair gives each vertex its material again (`ff::immediate`).
+fn material_pair(out: &mut String, g: &Geometry, indices: Option<&[u32]>, m: &VertexMaterials) {
+    let order: Vec<u32> = match indices {
+        Some(idx) => idx.to_vec(),
+        None => (0..g.positions.len() as u32).collect(),
+    };
+    line(out, format_args!("{}({})", Entry::Begin, n(g.primitive)));
+    for (k, &i) in order.iter().enumerate() {
+        for (slot, values) in m.present() {
+            let Some(&v) = values.get(i as usize) else {
+                continue;
+            };
+            let before = k.checked_sub(1).and_then(|p| values.get(order[p] as usize));
+            if before != Some(&v) {
+                material_call(out, slot, v);
+            }
+        }
+        line(out, format_args!("  {}({i})", Entry::ArrayElement));
+    }
+    line(out, format_args!("{}()", Entry::End));
+}
+
+/// glMaterialfv (glMaterialf for shininess) of one per-vertex material value.
+fn material_call(out: &mut String, slot: MaterialSlot, v: Vec4) {
+    let face = |s: MaterialSide| match s {
+        MaterialSide::Front => "GL_FRONT",
+        MaterialSide::Back => "GL_BACK",
+    };
+    match slot {
+        MaterialSlot::Color(side, color) => {
+            let pname = match color {
+                MaterialColor::Ambient => "GL_AMBIENT",
+                MaterialColor::Diffuse => "GL_DIFFUSE",
+                MaterialColor::Specular => "GL_SPECULAR",
+                MaterialColor::Emission => "GL_EMISSION",
+            };
+            line(
+                out,
+                format_args!(
+                    "  {}({}, {pname}, {})",
+                    Entry::Materialfv,
+                    face(side),
+                    v4(v)
+                ),
+            );
+        }
+        MaterialSlot::Shininess(side) => line(
+            out,
+            format_args!(
+                "  {}({}, GL_SHININESS, {})",
+                Entry::Materialf,
+                face(side),
+                fs(&[v.x])
+            ),
+        ),
     }
 }
 
