@@ -233,6 +233,10 @@ pub struct Context {
     /// The largest texture name generated or bound: glGenTextures continues after it, as
     /// Mesa's name table does (names grow; deleted ones are not reused).
     texture_max: u32,
+    /// The names glGenTextures handed out that glDeleteTextures has not deleted: Mesa makes
+    /// a texture object at glGenTextures, which glAreTexturesResident finds before any
+    /// bind (glIsTexture, which asks for a target, does not).
+    textures_generated: HashSet<u32>,
     /// FIXEDFUNC_TRACE is set: each executed command is written to the trace.
     tracing: bool,
     /// The framebuffer and renderbuffer names glGen* handed out.
@@ -279,6 +283,7 @@ impl Context {
             warned: HashSet::new(),
             depth_copy: Vec::new(),
             texture_max: 0,
+            textures_generated: HashSet::new(),
             tracing: super::trace::enabled(),
             generated: Default::default(),
         })
@@ -395,6 +400,26 @@ impl Context {
             Entry::GenTextures if !inside => {
                 self.gen_textures(args);
                 return Ret::None;
+            }
+            Entry::DeleteTextures if !inside => {
+                for name in names_at(args) {
+                    self.textures_generated.remove(&name);
+                }
+            }
+            Entry::AreTexturesResident if !inside => {
+                // Every name a texture object, generated or bound: all resident (TRUE, the
+                // residences untouched). Otherwise the model's check gives the error.
+                let state = self.pipeline.as_ref().map(|p| p.state());
+                let names = names_at(args);
+                let known = |n: &u32| {
+                    *n != 0
+                        && (self.textures_generated.contains(n)
+                            || state.is_some_and(|s| s.textures.contains_key(n)))
+                };
+                if matches!(args.first(), Some(CArg::Int(n)) if *n >= 0) && names.iter().all(known)
+                {
+                    return Ret::Enum(1);
+                }
             }
             _ if super::framebuffers::handles(entry) && !inside => {
                 let Some(p) = self.pipeline.as_ref() else {
@@ -528,6 +553,7 @@ impl Context {
         }
         for k in 0..*n as usize {
             self.texture_max = self.texture_max.saturating_add(1);
+            self.textures_generated.insert(self.texture_max);
             // SAFETY: the program's array holds n names (glGenTextures' contract).
             unsafe {
                 dst.cast::<u32>()
@@ -692,4 +718,22 @@ impl Context {
 /// The GLenum glGetError returns for a kind.
 pub fn error_code(kind: GlErrorKind) -> u32 {
     kind.code()
+}
+
+/// The `n` texture names of a glDeleteTextures or glAreTexturesResident call (arguments
+/// n, names); none for a negative n or a NULL array.
+fn names_at(args: &[CArg]) -> Vec<u32> {
+    let (Some(CArg::Int(n)), Some(CArg::Ptr(names, _))) = (args.first(), args.get(1)) else {
+        return Vec::new();
+    };
+    let Ok(n) = usize::try_from(*n) else {
+        return Vec::new();
+    };
+    if names.is_null() {
+        return Vec::new();
+    }
+    // SAFETY: the program's array holds n names (the calls' contract).
+    (0..n)
+        .map(|k| unsafe { names.cast::<u32>().add(k).read_unaligned() })
+        .collect()
 }

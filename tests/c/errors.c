@@ -84,6 +84,17 @@ int main(void) {
   CHECK(glBegin(GL_POINTS); unlock(); glEnd());
   CHECK(glNewList(1, GL_COMPILE); unlock(); glEndList(); glCallList(1));
   LOCKED();
+  /* A generated name is a texture object before its first bind (Mesa makes it at
+   * glGenTextures): resident, though glIsTexture says no; 0 and a deleted name are not. */
+  GLuint tex[2];
+  GLboolean residences[2] = {7, 7};
+  glGenTextures(2, tex);
+  printf("resident, generated: %d\n", glAreTexturesResident(2, tex, residences));
+  CHECK(printf("is texture: %d\n", glIsTexture(tex[0])));
+  glDeleteTextures(1, tex);
+  printf("resident, one deleted: %d\n", glAreTexturesResident(2, tex, residences));
+  CHECK((void)0);
+  printf("residences untouched: %d %d\n", residences[0], residences[1]);
   printf("vendor set: %d\n", glGetString(GL_VENDOR) != NULL);
   OSMesaDestroyContext(ctx);
   return 0;
