@@ -5,8 +5,9 @@
 //! expanded by 255/15 — and RGB5_A1 drops that alpha to 0; the 10-bit formats keep 10 bits
 //! and the 12- and 16-bit ones 16. Every other sized format of a base (ALPHA4,
 //! LUMINANCE6_ALPHA2, INTENSITY4 …) is its base's 8-bit format (`TexFormat`), as Mesa
-//! stores it too — except LUMINANCE4_ALPHA4, which Mesa keeps at 4 bits and the layer at
-//! 8 (core GL has no two-component 4-bit format to sample it from).
+//! stores it too — except LUMINANCE4_ALPHA4, which Mesa keeps at 4 bits: core GL has no
+//! two-component 4-bit format, so the emulated path stores luminance and alpha in the red
+//! and green of an RGBA4 level, which the LUMINANCE_ALPHA swizzle (L, L, L, A) reads.
 //!
 //! Both paths store the level so: the native path names the requested format to Mesa, the
 //! emulated path asks core GL for the format of the same bits ([`core_format`]), which
@@ -59,6 +60,7 @@ pub fn stored_bits(requested: u32) -> Option<StoredBits> {
         r::RGBA2 | r::RGBA4 => rgba(4, 4, 4, 4),
         r::RGB5_A1 => rgba(5, 5, 5, 1),
         r::RGB10_A2 => rgba(10, 10, 10, 2),
+        r::LUMINANCE4_ALPHA4 => legacy(4, 4, 0),
         r::RGBA12 | r::RGBA16 => rgba(16, 16, 16, 16),
         r::ALPHA12 | r::ALPHA16 => legacy(16, 0, 0),
         r::LUMINANCE12 | r::LUMINANCE16 => legacy(0, 16, 0),
@@ -84,6 +86,7 @@ pub fn core_format(requested: u32) -> Option<u32> {
         | r::INTENSITY12
         | r::INTENSITY16 => r::R16,
         r::LUMINANCE12_ALPHA4 | r::LUMINANCE12_ALPHA12 | r::LUMINANCE16_ALPHA16 => r::RG16,
+        r::LUMINANCE4_ALPHA4 => r::RGBA4,
         other => other,
     })
 }
@@ -96,14 +99,7 @@ mod tests {
     fn reduced_formats_keep_their_bits_and_others_are_eight() {
         assert_eq!(stored_bits(r::RGBA4), Some(rgba(4, 4, 4, 4)));
         assert_eq!(stored_bits(r::RGB5_A1).map(|b| b.alpha), Some(1));
-        for eight in [
-            r::RGBA8,
-            r::RGB,
-            3,
-            r::ALPHA4,
-            r::LUMINANCE4_ALPHA4,
-            r::INTENSITY4,
-        ] {
+        for eight in [r::RGBA8, r::RGB, 3, r::ALPHA4, r::INTENSITY4] {
             assert_eq!(stored_bits(eight), None);
             assert_eq!(core_format(eight), None);
         }
