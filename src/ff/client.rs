@@ -788,22 +788,13 @@ impl ClientArrays {
 
     /// The buffers the arrays point into.
     pub fn buffer_names(&self) -> Vec<u32> {
-        [
-            &self.vertex,
-            &self.normal,
-            &self.color,
-            &self.edge_flag,
-            &self.secondary_color,
-            &self.fog_coord,
-            &self.index,
-        ]
-        .into_iter()
-        .chain(self.texcoord.iter())
-        .filter_map(|a| match a.data {
-            ArrayData::Buffer { name, .. } => Some(name),
-            _ => None,
-        })
-        .collect()
+        self.vertex_pointers()
+            .chain(std::iter::once(&self.index))
+            .filter_map(|a| match a.data {
+                ArrayData::Buffer { name, .. } => Some(name),
+                _ => None,
+            })
+            .collect()
     }
 
     fn pointers_mut(&mut self) -> impl Iterator<Item = &mut ArrayPointer> {
@@ -820,9 +811,8 @@ impl ClientArrays {
         .chain(self.texcoord.iter_mut())
     }
 
-    /// The arrays a draw reads: every enabled one but the colour-index array, which only
-    /// glArrayElement reads.
-    pub fn drawn(&self) -> impl Iterator<Item = &ArrayPointer> + '_ {
+    /// Every array but the colour-index one, which only glArrayElement reads.
+    fn vertex_pointers(&self) -> impl Iterator<Item = &ArrayPointer> + '_ {
         [
             &self.vertex,
             &self.normal,
@@ -833,7 +823,11 @@ impl ClientArrays {
         ]
         .into_iter()
         .chain(self.texcoord.iter())
-        .filter(|a| a.enabled)
+    }
+
+    /// The arrays a draw reads: the enabled ones but the colour-index array.
+    pub fn drawn(&self) -> impl Iterator<Item = &ArrayPointer> + '_ {
+        self.vertex_pointers().filter(|a| a.enabled)
     }
 
     /// What a draw of elements `first..end` reads from each array it reads: the array's
