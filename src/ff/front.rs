@@ -12,11 +12,11 @@ use super::client::{ArrayData, ClientArrays, ClientEffect, ClientMemory};
 use super::client_attrib::ClientAttribStack;
 use super::command::Command;
 use super::error::GlErrorKind;
-use super::immediate::{decode, Immediate, Op};
-use super::lists::{compiled, follow, Item, ListMode, Lists, MAX_LIST_NESTING};
+use super::immediate::{decode, Immediate, Op, Start};
+use super::lists::{compiled, Item, ListMode, Lists, MAX_LIST_NESTING};
 use super::pixel_store::PixelStore;
-use super::repeated_draws::RepeatedDraws;
-use super::state::{CurrentValues, FixedState};
+use super::repeated_draws::{Lookup, RepeatedDraws};
+use super::state::FixedState;
 use crate::ff::api::{CType, Entry};
 
 /// Immediate mode, client arrays, display lists, buffer objects, pixel storage and the
@@ -101,11 +101,6 @@ impl Client {
         out: &mut Vec<Command>,
     ) -> Result<Reply, A::Error> {
         let entry = c.entry();
-        let current = &state.current;
-        // The material a glBegin starts from (a display list's own commands move it on).
-        if !self.immediate.is_open() {
-            self.immediate.materials = state.materials;
-        }
         if super::front_state::handles(entry) {
             return self.front_state_call(c, state, out);
         }
@@ -131,7 +126,7 @@ impl Client {
                     return Ok(Reply::None);
                 }
                 if mode == ListMode::CompileAndExecute {
-                    self.run(&items, 0, *current, out);
+                    self.run(&items, 0, Start::of(state), out);
                 }
                 for item in items {
                     self.lists.record(item);
@@ -142,12 +137,12 @@ impl Client {
         match entry {
             Entry::CallList => {
                 let item = Item::Call(c.u32(0)?);
-                self.run(&[item], 0, *current, out);
+                self.run(&[item], 0, Start::of(state), out);
                 return Ok(Reply::None);
             }
             Entry::CallLists => {
                 let item = Item::CallMany(list_names(c)?);
-                self.run(&[item], 0, *current, out);
+                self.run(&[item], 0, Start::of(state), out);
                 return Ok(Reply::None);
             }
             Entry::ListBase => {
@@ -157,7 +152,8 @@ impl Client {
             _ => {}
         }
         if !ClientArrays::handles(entry) {
-            self.immediate.call(c, current, out)?;
+            self.immediate
+                .call(c, &state.current, &state.materials, out)?;
             return Ok(Reply::None);
         }
         // Inside glBegin/glEnd: INVALID_OPERATION (GL 1.5 §2.6.3; EXT_compiled_vertex_array
@@ -184,19 +180,23 @@ impl Client {
             mem,
             buffers: &self.buffers,
         };
-        if let Some(g) = self
+        let key = match self
             .repeated_draws
             .get(c, &self.arrays, &self.buffers, &mem)
         {
-            out.push(Command::Draw(g));
-            return Ok(Reply::None);
-        }
+            Lookup::Repeat(g) => {
+                out.push(Command::Draw(g));
+                return Ok(Reply::None);
+            }
+            Lookup::New(key) => key,
+        };
         match self.arrays.call(c, &mem, self.buffers.bound)? {
             ClientEffect::State | ClientEffect::Draw(None) => {}
             ClientEffect::Draw(Some(g)) => {
                 let g = Arc::new(g);
-                self.repeated_draws
-                    .remember(c, &self.arrays, &self.buffers, &mem, &g);
+                if let Some(key) = key {
+                    self.repeated_draws.remember(key, &mem, &g);
+                }
                 out.push(Command::Draw(g));
             }
             ClientEffect::Draws(draws) => {
@@ -204,7 +204,12 @@ impl Client {
             }
             ClientEffect::Element(e) => self
                 .immediate
-                .apply(&Op::Element(Box::new(e)), current, out)
+                .apply(
+                    &Op::Element(Box::new(e)),
+                    &state.current,
+                    &state.materials,
+                    out,
+                )
                 .map_err(|rule| c.immediate(rule))?,
         }
         Ok(Reply::None)
@@ -314,13 +319,7 @@ impl Client {
     /// INVALID_OPERATION instead), immediate-mode calls to the open glBegin, calls of
     /// other lists recurse up to GL_MAX_LIST_NESTING deep; a name without a list does
     /// nothing.
-    fn run(
-        &mut self,
-        items: &[Item],
-        depth: usize,
-        mut current: CurrentValues,
-        out: &mut Vec<Command>,
-    ) {
+    fn run(&mut self, items: &[Item], depth: usize, mut start: Start, out: &mut Vec<Command>) {
         for item in items {
             let before = out.len();
             match item {
@@ -333,7 +332,9 @@ impl Client {
                             }),
                         _ => {
                             let op = Op::Material(*face, *param);
-                            let _ = self.immediate.apply(&op, &current, out);
+                            let _ =
+                                self.immediate
+                                    .apply(&op, &start.current, &start.materials, out);
                         }
                     }
                 }
@@ -348,52 +349,49 @@ impl Client {
                     }
                 }
                 Item::Immediate(op) => {
-                    if self.immediate.apply(op, &current, out).is_err() {
+                    if self
+                        .immediate
+                        .apply(op, &start.current, &start.materials, out)
+                        .is_err()
+                    {
                         out.push(Command::Raise {
                             error: GlErrorKind::InvalidOperation,
                             call: Entry::Begin,
                         });
                     }
                 }
-                Item::Call(name) => self.call_list(*name, depth, current, out),
+                Item::Call(name) => self.call_list(*name, depth, start, out),
                 Item::CallMany(names) => {
                     for n in names {
                         let name = self.lists.base.wrapping_add(*n);
-                        let mut cur = current;
+                        let mut now = start;
                         for cmd in &out[before..] {
-                            follow(&mut cur, cmd);
+                            now.follow(cmd);
                         }
-                        self.call_list(name, depth, cur, out);
+                        self.call_list(name, depth, now, out);
                     }
                 }
                 Item::Base(b) => self.lists.base = *b,
                 Item::Pair(pair) => {
                     if self.immediate.is_open() {
-                        self.run(&pair.items, depth, current, out);
+                        self.run(&pair.items, depth, start, out);
                     } else {
-                        pair.replay(&current, out);
+                        pair.replay(&start.current, out);
                     }
                 }
             }
             for cmd in &out[before..] {
-                follow(&mut current, cmd);
-                self.immediate.follow(cmd);
+                start.follow(cmd);
             }
         }
     }
 
-    fn call_list(
-        &mut self,
-        name: u32,
-        depth: usize,
-        current: CurrentValues,
-        out: &mut Vec<Command>,
-    ) {
+    fn call_list(&mut self, name: u32, depth: usize, start: Start, out: &mut Vec<Command>) {
         if depth >= MAX_LIST_NESTING {
             return;
         }
         if let Some(items) = self.lists.get(name) {
-            self.run(&items, depth + 1, current, out);
+            self.run(&items, depth + 1, start, out);
         }
     }
 }

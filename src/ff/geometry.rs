@@ -128,6 +128,23 @@ impl VertexMaterials {
             .zip(&self.arrays)
             .filter_map(|(slot, a)| Some((slot, a.as_deref()?)))
     }
+
+    /// The values that change at the k-th vertex of `order` (vertex indices in drawing
+    /// order): every slot at the first, then those that differ from the vertex before —
+    /// the glMaterial calls a pair drawing `order` makes before that vertex.
+    pub fn changes_at<'a>(
+        &'a self,
+        order: &'a [u32],
+        k: usize,
+    ) -> impl Iterator<Item = (MaterialSlot, Vec4)> + 'a {
+        let at =
+            |values: &[Vec4], k: usize| order.get(k).and_then(|&i| values.get(i as usize)).copied();
+        self.present().filter_map(move |(slot, values)| {
+            let v = at(values, k)?;
+            let before = k.checked_sub(1).and_then(|p| at(values, p));
+            (before != Some(v)).then_some((slot, v))
+        })
+    }
 }
 
 impl Geometry {

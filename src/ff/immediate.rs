@@ -22,9 +22,9 @@ use super::args::Args;
 use super::client::Element;
 use super::command::Command;
 use super::fragment::Face;
-use super::geometry::{Geometry, MaterialColor, MaterialSide, MaterialSlot, Primitive};
+use super::geometry::{Geometry, MaterialSlot, Primitive};
 use super::glenum::Family;
-use super::light::{Material, MaterialParam, Materials};
+use super::light::{MaterialParam, Materials};
 use super::state::{CurrentValues, MAX_TEXTURE_UNITS};
 
 /// The immediate-mode half of a front end: whether a glBegin is open, and what it holds.
@@ -34,9 +34,41 @@ pub struct Immediate {
     /// The vertex count of the last pair: the arrays of the next are sized for it (a
     /// program draws the same shapes frame after frame).
     last_vertices: usize,
-    /// The material state where the calls are (outside a pair): the front end sets it from
-    /// the model before a call and follows a display list's commands through it.
+}
+
+/// What a glBegin starts from, as the commands so far leave it: the current values each
+/// vertex copies (GL 1.5 §2.7) and the material (§2.14.3), which a glMaterial inside the
+/// pair makes per vertex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Start {
+    pub current: CurrentValues,
     pub materials: Materials,
+}
+
+impl Start {
+    /// GL's initial values.
+    pub const DEFAULT: Start = Start {
+        current: CurrentValues::DEFAULT,
+        materials: Materials::DEFAULT,
+    };
+
+    /// The model's values.
+    pub fn of(state: &super::state::FixedState) -> Start {
+        Start {
+            current: state.current,
+            materials: state.materials,
+        }
+    }
+
+    /// Follows a command emitted after this point (a display list's commands, met before
+    /// the model applies them).
+    pub fn follow(&mut self, cmd: &Command) {
+        super::lists::follow(&mut self.current, cmd);
+        if let Command::Material { face, param } = cmd {
+            // An invalid value is refused by the model and changes nothing.
+            let _ = self.materials.set(*face, *param);
+        }
+    }
 }
 
 /// A glBegin not yet ended.
@@ -268,18 +300,19 @@ impl Immediate {
         self.open = None;
     }
 
-    /// Converts one call, appending what it yields to `out`. `current` is the state's
-    /// current values (read at glBegin and by glRect). Calls other than immediate mode go
+    /// Converts one call, appending what it yields to `out`. `current` and `materials` are
+    /// the model's (read at glBegin and by glRect: [`Start`]). Calls other than immediate mode go
     /// to [`calls::command`](super::calls::command).
     pub fn call<A: Args>(
         &mut self,
         c: &A,
         current: &CurrentValues,
+        materials: &Materials,
         out: &mut Vec<Command>,
     ) -> Result<(), A::Error> {
         match decode(c)? {
             Some(op) => self
-                .apply(&op, current, out)
+                .apply(&op, current, materials, out)
                 .map_err(|rule| c.immediate(rule)),
             None => {
                 let material = matches!(
@@ -335,10 +368,11 @@ impl Immediate {
         &mut self,
         op: &Op,
         current: &CurrentValues,
+        materials: &Materials,
         out: &mut Vec<Command>,
     ) -> Result<(), Rule> {
         match op {
-            Op::Begin(p) => self.begin(*p, current),
+            Op::Begin(p) => self.begin(*p, current, materials),
             Op::End => self.end(out),
             Op::Vertex(v) => self.vertex(*v),
             Op::Attribute(a) => self.attribute(*a, out),
@@ -347,7 +381,7 @@ impl Immediate {
                     return Err("glRect inside glBegin/glEnd");
                 }
                 // Mesa draws glRect as one GL_QUADS: (x1,y1) (x2,y1) (x2,y2) (x1,y2).
-                self.begin(Primitive::Quads, current)?;
+                self.begin(Primitive::Quads, current, materials)?;
                 for (x, y) in [(x1, y1), (x2, y1), (x2, y2), (x1, y2)] {
                     self.vertex(Vec4::new(*x, *y, 0.0, 1.0))?;
                 }
@@ -365,14 +399,6 @@ impl Immediate {
         }
     }
 
-    /// Follows a command the front end emitted outside a pair into the material state.
-    pub fn follow(&mut self, cmd: &Command) {
-        if let Command::Material { face, param } = cmd {
-            // An invalid value is refused by the model and changes nothing.
-            let _ = self.materials.set(*face, *param);
-        }
-    }
-
     /// glArrayElement: the element's attributes, then its vertex, as the immediate calls
     /// would give them (GL 1.5 §2.8). Outside glBegin/glEnd only the attributes take effect.
     fn array_element(&mut self, e: &Element, out: &mut Vec<Command>) -> Result<(), Rule> {
@@ -385,7 +411,12 @@ impl Immediate {
         }
     }
 
-    fn begin(&mut self, primitive: Primitive, current: &CurrentValues) -> Result<(), Rule> {
+    fn begin(
+        &mut self,
+        primitive: Primitive,
+        current: &CurrentValues,
+        materials: &Materials,
+    ) -> Result<(), Rule> {
         if self.open.is_some() {
             return Err("glBegin inside glBegin/glEnd");
         }
@@ -396,8 +427,8 @@ impl Immediate {
             called: [false; SLOTS],
             pending: false,
             texcoord_arrays: false,
-            begin_materials: self.materials,
-            materials: self.materials,
+            begin_materials: *materials,
+            materials: *materials,
             material_called: 0,
             material_calls: Vec::new(),
         });
@@ -437,10 +468,7 @@ impl Immediate {
         let (begin, cur) = (open.begin, open.current);
         out.push(Command::Draw(Arc::new(open.geometry)));
         changed_current(&begin, &cur, out);
-        for cmd in open.material_calls {
-            self.follow(&cmd);
-            out.push(cmd);
-        }
+        out.extend(open.material_calls);
         Ok(())
     }
 }
@@ -510,7 +538,7 @@ impl Open {
         if let Some(m) = &mut g.materials {
             for (slot, a) in MaterialSlot::ALL.into_iter().zip(m.arrays.iter_mut()) {
                 if let Some(a) = a {
-                    a.push(slot_value(&self.materials, slot));
+                    a.push(self.materials.value(slot));
                 }
             }
         }
@@ -523,33 +551,10 @@ impl Open {
             return;
         }
         self.material_calls.push(Command::Material { face, param });
-        let sides: &[MaterialSide] = match face {
-            Face::Front => &[MaterialSide::Front],
-            Face::Back => &[MaterialSide::Back],
-            Face::FrontAndBack => &[MaterialSide::Front, MaterialSide::Back],
-        };
-        let colors: &[MaterialColor] = match param {
-            MaterialParam::Ambient(_) => &[MaterialColor::Ambient],
-            MaterialParam::Diffuse(_) => &[MaterialColor::Diffuse],
-            MaterialParam::AmbientAndDiffuse(_) => {
-                &[MaterialColor::Ambient, MaterialColor::Diffuse]
-            }
-            MaterialParam::Specular(_) => &[MaterialColor::Specular],
-            MaterialParam::Emission(_) => &[MaterialColor::Emission],
-            MaterialParam::Shininess(_) => &[],
-        };
-        for &side in sides {
-            let slots: Vec<MaterialSlot> = match param {
-                MaterialParam::Shininess(_) => vec![MaterialSlot::Shininess(side)],
-                _ => colors
-                    .iter()
-                    .map(|&c| MaterialSlot::Color(side, c))
-                    .collect(),
-            };
-            for slot in slots {
-                self.material_called |= 1 << slot.bit();
-            }
-        }
+        self.material_called |= MaterialSlot::ALL
+            .into_iter()
+            .filter(|slot| slot.set_by(face, param))
+            .fold(0, |m, slot| m | 1 << slot.bit());
         self.pending = true;
     }
 
@@ -609,32 +614,10 @@ impl Open {
             let m = g.materials.get_or_insert_with(Box::default);
             for (slot, a) in MaterialSlot::ALL.into_iter().zip(m.arrays.iter_mut()) {
                 if self.material_called & (1 << slot.bit()) != 0 && a.is_none() {
-                    *a = Some(vec![slot_value(&self.begin_materials, slot); n]);
+                    *a = Some(vec![self.begin_materials.value(slot); n]);
                 }
             }
         }
-    }
-}
-
-/// The value of a material slot, as its array holds it (shininess as (s, 0, 0, 1)).
-fn slot_value(m: &Materials, slot: MaterialSlot) -> Vec4 {
-    let side = |s: MaterialSide| -> &Material {
-        match s {
-            MaterialSide::Front => &m.front,
-            MaterialSide::Back => &m.back,
-        }
-    };
-    match slot {
-        MaterialSlot::Color(s, c) => {
-            let f = side(s);
-            match c {
-                MaterialColor::Ambient => f.ambient,
-                MaterialColor::Diffuse => f.diffuse,
-                MaterialColor::Specular => f.specular,
-                MaterialColor::Emission => f.emission,
-            }
-        }
-        MaterialSlot::Shininess(s) => Vec4::new(side(s).shininess, 0.0, 0.0, 1.0),
     }
 }
 

@@ -9,6 +9,7 @@ use glam::{Mat4, Vec3, Vec4};
 
 use super::error::{GlError, GlResult};
 use super::fragment::Face;
+use super::geometry::{MaterialColor, MaterialSide, MaterialSlot};
 
 /// GL_MAX_LIGHTS.
 pub const MAX_LIGHTS: usize = 8;
@@ -221,12 +222,6 @@ pub struct Materials {
     pub back: Material,
 }
 
-impl Default for Materials {
-    fn default() -> Self {
-        Materials::DEFAULT
-    }
-}
-
 impl Materials {
     pub const DEFAULT: Self = Self {
         front: Material::DEFAULT,
@@ -247,6 +242,74 @@ impl Materials {
             self.back.set(param);
         }
         Ok(())
+    }
+}
+
+impl Materials {
+    /// The value of a material slot, as a per-vertex array holds it (shininess as
+    /// (s, 0, 0, 1)).
+    pub fn value(&self, slot: MaterialSlot) -> Vec4 {
+        let face = |s: MaterialSide| match s {
+            MaterialSide::Front => &self.front,
+            MaterialSide::Back => &self.back,
+        };
+        match slot {
+            MaterialSlot::Color(s, MaterialColor::Ambient) => face(s).ambient,
+            MaterialSlot::Color(s, MaterialColor::Diffuse) => face(s).diffuse,
+            MaterialSlot::Color(s, MaterialColor::Specular) => face(s).specular,
+            MaterialSlot::Color(s, MaterialColor::Emission) => face(s).emission,
+            MaterialSlot::Shininess(s) => Vec4::new(face(s).shininess, 0.0, 0.0, 1.0),
+        }
+    }
+}
+
+impl MaterialSlot {
+    /// Whether glMaterial(face, param) sets this slot (FRONT_AND_BACK both sides,
+    /// AMBIENT_AND_DIFFUSE both colours).
+    pub fn set_by(self, face: Face, param: MaterialParam) -> bool {
+        let side = match self {
+            MaterialSlot::Color(s, _) | MaterialSlot::Shininess(s) => s,
+        };
+        let on_side = match face {
+            Face::Front => side == MaterialSide::Front,
+            Face::Back => side == MaterialSide::Back,
+            Face::FrontAndBack => true,
+        };
+        on_side
+            && matches!(
+                (self, param),
+                (
+                    MaterialSlot::Color(_, MaterialColor::Ambient),
+                    MaterialParam::Ambient(_)
+                ) | (
+                    MaterialSlot::Color(_, MaterialColor::Diffuse),
+                    MaterialParam::Diffuse(_)
+                ) | (
+                    MaterialSlot::Color(_, MaterialColor::Ambient | MaterialColor::Diffuse),
+                    MaterialParam::AmbientAndDiffuse(_)
+                ) | (
+                    MaterialSlot::Color(_, MaterialColor::Specular),
+                    MaterialParam::Specular(_)
+                ) | (
+                    MaterialSlot::Color(_, MaterialColor::Emission),
+                    MaterialParam::Emission(_)
+                ) | (MaterialSlot::Shininess(_), MaterialParam::Shininess(_))
+            )
+    }
+
+    /// The glMaterial face and parameter names that set this slot alone.
+    pub fn names(self) -> (&'static str, &'static str) {
+        let face = |s: MaterialSide| match s {
+            MaterialSide::Front => "GL_FRONT",
+            MaterialSide::Back => "GL_BACK",
+        };
+        match self {
+            MaterialSlot::Color(s, MaterialColor::Ambient) => (face(s), "GL_AMBIENT"),
+            MaterialSlot::Color(s, MaterialColor::Diffuse) => (face(s), "GL_DIFFUSE"),
+            MaterialSlot::Color(s, MaterialColor::Specular) => (face(s), "GL_SPECULAR"),
+            MaterialSlot::Color(s, MaterialColor::Emission) => (face(s), "GL_EMISSION"),
+            MaterialSlot::Shininess(s) => (face(s), "GL_SHININESS"),
+        }
     }
 }
 

@@ -16,6 +16,7 @@ use std::sync::Arc;
 use super::command::Command;
 use super::geometry::Geometry;
 use super::immediate::{Attr, Immediate, Op, SLOTS};
+use super::light::Materials;
 use super::lists::Item;
 use super::state::CurrentValues;
 
@@ -122,7 +123,7 @@ fn assemble_pair(items: Vec<Item>) -> Option<Pair> {
     let mut draw = Vec::new();
     for op in &ops {
         immediate
-            .apply(op, &CurrentValues::DEFAULT, &mut draw)
+            .apply(op, &CurrentValues::DEFAULT, &Materials::DEFAULT, &mut draw)
             .ok()?;
     }
     let geometry = match draw.into_iter().next()? {
@@ -142,19 +143,8 @@ mod tests {
 
     use glam::{Vec3, Vec4};
 
-    use crate::ff::script::{parse, ScriptError};
+    use crate::ff::script::{draws, parse, ScriptError};
     use crate::ff::{Command, Geometry};
-
-    fn draws(src: &str) -> Vec<Arc<Geometry>> {
-        parse(src)
-            .unwrap()
-            .into_iter()
-            .filter_map(|c| match c {
-                Command::Draw(g) => Some(g),
-                _ => None,
-            })
-            .collect()
-    }
 
     const LIST: &str = "glNewList(1, GL_COMPILE);\n\
         glBegin(GL_TRIANGLES);\n\

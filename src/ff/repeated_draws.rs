@@ -42,7 +42,7 @@ pub const MAX_COPIED_BYTES: usize = 64 << 20;
 
 /// What a draw reads besides the buffers' stores and the program's memory.
 #[derive(Clone, Debug, PartialEq)]
-struct Key {
+pub struct Key {
     entry: Entry,
     mode: Primitive,
     /// first and count (glDrawArrays); count (glDrawElements); count, start and end
@@ -79,13 +79,13 @@ impl Key {
 
 /// Bytes a remembered draw read from the program's memory, and where.
 #[derive(Debug)]
-struct Copy {
+struct Snapshot {
     data: ArrayData,
     start: usize,
     bytes: Box<[u8]>,
 }
 
-impl Copy {
+impl Snapshot {
     /// Whether the memory still holds these bytes.
     fn holds(&self, mem: &dyn ClientMemory) -> bool {
         mem.read(&self.data, self.start, self.bytes.len())
@@ -96,14 +96,22 @@ impl Copy {
 #[derive(Debug)]
 struct Remembered {
     key: Key,
-    copies: Vec<Copy>,
+    snapshots: Vec<Snapshot>,
     geometry: Arc<Geometry>,
 }
 
 impl Remembered {
     fn copied_bytes(&self) -> usize {
-        self.copies.iter().map(|c| c.bytes.len()).sum()
+        self.snapshots.iter().map(|c| c.bytes.len()).sum()
     }
+}
+
+/// What [`RepeatedDraws::get`] found.
+pub enum Lookup {
+    /// The geometry of the remembered draw the call repeats.
+    Repeat(Arc<Geometry>),
+    /// A new draw, with the key to remember it by.
+    New(Option<Box<Key>>),
 }
 
 /// The last draws and their geometry, the most recent last.
@@ -122,41 +130,40 @@ impl RepeatedDraws {
         self.copied = self.last.iter().map(Remembered::copied_bytes).sum();
     }
 
-    /// The geometry of draw `c` if it repeats a remembered one; `None` otherwise.
+    /// The geometry of draw `c` if it repeats a remembered one; otherwise the key to
+    /// remember the draw by (`None` for a call that is no such draw or reads a mapped
+    /// buffer).
     pub fn get<A: Args>(
         &self,
         c: &A,
         arrays: &ClientArrays,
         buffers: &Buffers,
         mem: &dyn ClientMemory,
-    ) -> Option<Arc<Geometry>> {
-        let key = key_of(c, arrays, buffers)?;
-        self.last
+    ) -> Lookup {
+        let Some(key) = key_of(c, arrays, buffers) else {
+            return Lookup::New(None);
+        };
+        match self
+            .last
             .iter()
             .rev()
-            .find(|r| r.key == key && r.copies.iter().all(|copy| copy.holds(mem)))
-            .map(|r| Arc::clone(&r.geometry))
+            .find(|r| r.key == key && r.snapshots.iter().all(|snap| snap.holds(mem)))
+        {
+            Some(r) => Lookup::Repeat(Arc::clone(&r.geometry)),
+            None => Lookup::New(Some(Box::new(key))),
+        }
     }
 
-    /// Remembers the geometry draw `c` made, unless it reads a mapped buffer or more of
-    /// the program's memory than a quarter of [`MAX_COPIED_BYTES`].
-    pub fn remember<A: Args>(
-        &mut self,
-        c: &A,
-        arrays: &ClientArrays,
-        buffers: &Buffers,
-        mem: &dyn ClientMemory,
-        geometry: &Arc<Geometry>,
-    ) {
-        let Some(key) = key_of(c, arrays, buffers) else {
-            return;
-        };
-        let Some(copies) = copies_of(&key, geometry, mem) else {
+    /// Remembers the geometry the draw of `key` made, unless it read more of the
+    /// program's memory than a quarter of [`MAX_COPIED_BYTES`].
+    pub fn remember(&mut self, key: Box<Key>, mem: &dyn ClientMemory, geometry: &Arc<Geometry>) {
+        let key = *key;
+        let Some(snapshots) = snapshots_of(&key, geometry, mem) else {
             return;
         };
         let entry = Remembered {
             key,
-            copies,
+            snapshots,
             geometry: Arc::clone(geometry),
         };
         let size = entry.copied_bytes();
@@ -229,31 +236,28 @@ fn key_of<A: Args>(c: &A, arrays: &ClientArrays, buffers: &Buffers) -> Option<Ke
 
 /// Copies of what the draw of `key`, which made `g`, read from the program's memory: the
 /// indices, then each array's span. `None` when a span cannot be named or read.
-fn copies_of(key: &Key, g: &Geometry, mem: &dyn ClientMemory) -> Option<Vec<Copy>> {
-    let mut copies = Vec::new();
-    let mut copy = |data: &ArrayData, start: usize, len: usize| -> Option<()> {
-        if let ArrayData::Address(_) = data {
+fn snapshots_of(key: &Key, g: &Geometry, mem: &dyn ClientMemory) -> Option<Vec<Snapshot>> {
+    // The indices' span: count × size bytes (counts[0] is the indexed draws' count).
+    let index_span = key.ty.and_then(|(_, size)| {
+        let count = usize::try_from(key.counts[0]).ok()?;
+        Some((0, count.checked_mul(size)?))
+    });
+    let (first, end) = key.elements(g);
+    key.indices
+        .iter()
+        .map(|data| (data, index_span))
+        .chain(key.arrays.spans(first, end))
+        .filter(|(data, _)| matches!(data, ArrayData::Address(_)))
+        .map(|(data, span)| {
+            let (start, len) = span?;
             let bytes = mem.read(data, start, len)?;
-            copies.push(Copy {
+            Some(Snapshot {
                 data: data.clone(),
                 start,
                 bytes: bytes.into_owned().into_boxed_slice(),
-            });
-        }
-        Some(())
-    };
-    if let (Some(indices), Some((_, size))) = (&key.indices, key.ty) {
-        let count = usize::try_from(key.counts[0]).ok()?;
-        copy(indices, 0, count.checked_mul(size)?)?;
-    }
-    let (first, end) = key.elements(g);
-    for (data, span) in key.arrays.spans(first, end) {
-        if let ArrayData::Address(_) = data {
-            let (start, len) = span?;
-            copy(data, start, len)?;
-        }
-    }
-    Some(copies)
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]

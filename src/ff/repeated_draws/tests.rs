@@ -1,18 +1,7 @@
 use std::sync::Arc;
 
-use crate::ff::script::parse;
-use crate::ff::{Command, Geometry};
-
-fn draws(src: &str) -> Vec<Arc<Geometry>> {
-    parse(src)
-        .unwrap()
-        .into_iter()
-        .filter_map(|c| match c {
-            Command::Draw(g) => Some(g),
-            _ => None,
-        })
-        .collect()
-}
+use crate::ff::script::draws;
+use crate::ff::Geometry;
 
 const SETUP: &str = "glBindBuffer(GL_ARRAY_BUFFER, 1);\n\
     glBufferData(GL_ARRAY_BUFFER, 24, (GLfloat[]){0, 0, 1, 0, 0, 1}, GL_STATIC_DRAW);\n\

@@ -94,6 +94,19 @@ fn closest(names: &[&str]) -> String {
     names.iter().take(5).copied().collect::<Vec<_>>().join(", ")
 }
 
+/// The geometry of each draw a script makes (unit tests of the layers that make draws).
+#[cfg(test)]
+pub(crate) fn draws(src: &str) -> Vec<std::sync::Arc<crate::ff::Geometry>> {
+    parse(src)
+        .expect("the script parses")
+        .into_iter()
+        .filter_map(|c| match c {
+            crate::ff::Command::Draw(g) => Some(g),
+            _ => None,
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod every_row_tests;
 #[cfg(test)]

@@ -1273,54 +1273,22 @@ fn material_pair(out: &mut String, g: &Geometry, indices: Option<&[u32]>, m: &Ve
     };
     line(out, format_args!("{}({})", Entry::Begin, n(g.primitive)));
     for (k, &i) in order.iter().enumerate() {
-        for (slot, values) in m.present() {
-            let Some(&v) = values.get(i as usize) else {
-                continue;
-            };
-            let before = k.checked_sub(1).and_then(|p| values.get(order[p] as usize));
-            if before != Some(&v) {
-                material_call(out, slot, v);
+        for (slot, v) in m.changes_at(&order, k) {
+            let (face, pname) = slot.names();
+            match slot {
+                MaterialSlot::Shininess(_) => line(
+                    out,
+                    format_args!("  {}({face}, {pname}, {})", Entry::Materialf, fs(&[v.x])),
+                ),
+                MaterialSlot::Color(..) => line(
+                    out,
+                    format_args!("  {}({face}, {pname}, {})", Entry::Materialfv, v4(v)),
+                ),
             }
         }
         line(out, format_args!("  {}({i})", Entry::ArrayElement));
     }
     line(out, format_args!("{}()", Entry::End));
-}
-
-/// glMaterialfv (glMaterialf for shininess) of one per-vertex material value.
-fn material_call(out: &mut String, slot: MaterialSlot, v: Vec4) {
-    let face = |s: MaterialSide| match s {
-        MaterialSide::Front => "GL_FRONT",
-        MaterialSide::Back => "GL_BACK",
-    };
-    match slot {
-        MaterialSlot::Color(side, color) => {
-            let pname = match color {
-                MaterialColor::Ambient => "GL_AMBIENT",
-                MaterialColor::Diffuse => "GL_DIFFUSE",
-                MaterialColor::Specular => "GL_SPECULAR",
-                MaterialColor::Emission => "GL_EMISSION",
-            };
-            line(
-                out,
-                format_args!(
-                    "  {}({}, {pname}, {})",
-                    Entry::Materialfv,
-                    face(side),
-                    v4(v)
-                ),
-            );
-        }
-        MaterialSlot::Shininess(side) => line(
-            out,
-            format_args!(
-                "  {}({}, GL_SHININESS, {})",
-                Entry::Materialf,
-                face(side),
-                fs(&[v.x])
-            ),
-        ),
-    }
 }
 
 /// A shader-program command as a comment: no script can build a program (`ff::program`).

@@ -522,11 +522,31 @@ fn lighting_key(state: &FixedState) -> Option<LightingKey> {
     })
 }
 
-impl LightingKey {
-    /// The material values `g`'s vertices carry (all of them: their attribute locations
-    /// follow from the whole mask, `shadergen::material_location`).
-    pub fn with_vertex_materials(&mut self, g: &crate::ff::Geometry) {
-        self.vertex_materials = g.materials.as_ref().map_or(0, |m| m.mask());
+impl ShaderKey {
+    /// Lighting that reads the material values `g`'s vertices carry (all of them: their
+    /// attribute locations follow from the whole mask, `shadergen::material_location`).
+    /// Those take the last texture units' coordinate locations: a draw that reads one of
+    /// those units is refused.
+    pub fn with_vertex_materials(
+        &mut self,
+        g: &crate::ff::Geometry,
+    ) -> Result<(), crate::pipeline::PipelineError> {
+        let Some(lighting) = &mut self.vertex.lighting else {
+            return Ok(());
+        };
+        lighting.vertex_materials = g.materials.as_ref().map_or(0, |m| m.mask());
+        let units = crate::ff::MAX_TEXTURE_UNITS;
+        let first = units.saturating_sub(lighting.vertex_materials.count_ones() as usize);
+        let clash = (first..units).any(|u| {
+            g.texcoords[u].is_some() || self.vertex.units.iter().any(|k| usize::from(k.unit) == u)
+        });
+        if clash {
+            return Err(crate::pipeline::PipelineError::Unsupported {
+                what: "glMaterial inside glBegin/glEnd with texture units 8 − (material values set) to 7 in use",
+                path: "emulate",
+            });
+        }
+        Ok(())
     }
 }
 

@@ -172,24 +172,7 @@ impl Emulate {
         if self.user.current().is_some() {
             return self.draw_with_program(gl, state, geometry);
         }
-        let mut base = ShaderKey::from_state(state, self.precision);
-        if let Some(lighting) = &mut base.vertex.lighting {
-            lighting.with_vertex_materials(geometry);
-            // The material values take the last units' coordinate locations: none of those
-            // units may be read by this draw.
-            let taken = lighting.vertex_materials.count_ones() as usize;
-            let first = crate::ff::MAX_TEXTURE_UNITS.saturating_sub(taken);
-            let clash = (first..crate::ff::MAX_TEXTURE_UNITS).any(|u| {
-                geometry.texcoords[u].is_some()
-                    || base.vertex.units.iter().any(|k| usize::from(k.unit) == u)
-            });
-            if clash {
-                return Err(PipelineError::Unsupported {
-                    what: "glMaterial inside glBegin/glEnd with texture units 8 − (material values set) to 7 in use",
-                    path: "emulate",
-                });
-            }
-        }
+        let base = ShaderKey::from_state(state, self.precision);
         let mut passes = polygon::passes(
             state.polygon_mode,
             state.cull_face.get(),
@@ -237,8 +220,12 @@ impl Emulate {
         if outline.is_some() {
             passes.retain(|p| !p.draws_lines);
         }
+        // The geometry's own passes read its per-vertex materials; dashes, drawn from window
+        // positions without them, take the material state.
+        let mut own = base.clone();
+        own.with_vertex_materials(geometry)?;
         for pass in passes {
-            let mut key = base.clone();
+            let mut key = own.clone();
             key.fragment.edges = pass.edges;
             key.vertex.point_size = pass.draws_points().then_some(points);
             key.fragment.point_coverage = pass.draws_points() && points.shape == PointShape::Round;
@@ -267,20 +254,6 @@ impl Emulate {
         pass: &polygon::PolygonPass,
         drawn: Drawn,
     ) -> Result<(), PipelineError> {
-        // Dashes are drawn from window positions without the geometry's material arrays:
-        // they take the material state (the one at glBegin).
-        let dashed;
-        let key = match (&drawn, &key.vertex.lighting) {
-            (Drawn::Dashes(..), Some(l)) if l.vertex_materials != 0 => {
-                let mut k = key.clone();
-                if let Some(l) = &mut k.vertex.lighting {
-                    l.vertex_materials = 0;
-                }
-                dashed = k;
-                &dashed
-            }
-            _ => key,
-        };
         let program = self.programs.get_or_build(key, |k| Program::build(gl, k))?;
         program.bind(gl, state);
         let units: Vec<_> = key

@@ -12,10 +12,8 @@ use std::ffi::c_void;
 
 use glam::{Vec3, Vec4};
 
-use crate::ff::{
-    FixedState, Geometry, MaterialColor, MaterialSide, MaterialSlot, VertexMaterials,
-    MAX_TEXTURE_UNITS,
-};
+use crate::ff::glenum::value_of;
+use crate::ff::{FixedState, Geometry, MaterialSlot, VertexMaterials, MAX_TEXTURE_UNITS};
 
 use super::bindings as gl;
 use super::bindings::types::GLsizei;
@@ -156,12 +154,8 @@ unsafe fn draw_with_materials(g: &gl::Gl, geometry: &Geometry, m: &VertexMateria
     unsafe {
         g.Begin(mode);
         for (k, &i) in order.iter().enumerate() {
-            for (slot, values) in m.present() {
-                let v = values[i as usize];
-                let before = k.checked_sub(1).map(|p| values[order[p] as usize]);
-                if before != Some(v) {
-                    send_material(g, slot, v);
-                }
+            for (slot, v) in m.changes_at(&order, k) {
+                send_material(g, slot, v);
             }
             g.ArrayElement(i as i32);
         }
@@ -169,23 +163,11 @@ unsafe fn draw_with_materials(g: &gl::Gl, geometry: &Geometry, m: &VertexMateria
     }
 }
 
-/// glMaterialfv of one slot's value.
+/// glMaterialfv of one slot's value (shininess is its first component).
 fn send_material(g: &gl::Gl, slot: MaterialSlot, v: Vec4) {
-    let side = |s: MaterialSide| match s {
-        MaterialSide::Front => gl::FRONT,
-        MaterialSide::Back => gl::BACK,
-    };
-    let (face, pname) = match slot {
-        MaterialSlot::Color(s, c) => (
-            side(s),
-            match c {
-                MaterialColor::Ambient => gl::AMBIENT,
-                MaterialColor::Diffuse => gl::DIFFUSE,
-                MaterialColor::Specular => gl::SPECULAR,
-                MaterialColor::Emission => gl::EMISSION,
-            },
-        ),
-        MaterialSlot::Shininess(s) => (side(s), gl::SHININESS),
+    let (face, pname) = slot.names();
+    let (Some(face), Some(pname)) = (value_of(face), value_of(pname)) else {
+        return;
     };
     let values = v.to_array();
     // SAFETY: a plain GL call with four floats.
@@ -195,23 +177,8 @@ fn send_material(g: &gl::Gl, slot: MaterialSlot, v: Vec4) {
 /// Sends the model's material for every slot a draw's vertices carried: GL's material is
 /// the last vertex's after such a draw, the model's until the commands after the draw.
 pub fn restore_materials(g: &gl::Gl, state: &FixedState, geometry: &Geometry) {
-    let Some(m) = &geometry.materials else {
-        return;
-    };
-    for (slot, _) in m.present() {
-        let (f, s) = match slot {
-            MaterialSlot::Color(MaterialSide::Front, _)
-            | MaterialSlot::Shininess(MaterialSide::Front) => (&state.materials.front, slot),
-            _ => (&state.materials.back, slot),
-        };
-        let v = match s {
-            MaterialSlot::Color(_, MaterialColor::Ambient) => f.ambient,
-            MaterialSlot::Color(_, MaterialColor::Diffuse) => f.diffuse,
-            MaterialSlot::Color(_, MaterialColor::Specular) => f.specular,
-            MaterialSlot::Color(_, MaterialColor::Emission) => f.emission,
-            MaterialSlot::Shininess(_) => Vec4::new(f.shininess, 0.0, 0.0, 1.0),
-        };
-        send_material(g, slot, v);
+    for (slot, _) in geometry.materials.iter().flat_map(|m| m.present()) {
+        send_material(g, slot, state.materials.value(slot));
     }
 }
 
