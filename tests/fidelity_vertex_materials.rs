@@ -138,3 +138,32 @@ fn a_printed_pair_gives_its_vertices_the_same_materials() {
         assert_eq!(x.positions, y.positions);
     }
 }
+
+#[test]
+fn non_finite_materials_set_inside_a_pair_light_as_on_mesa() {
+    // A NaN and an infinite diffuse component, and a NaN emission, each set per vertex: the
+    // vertex colour clamp (NaN to 1, +∞ to 1) must meet Mesa's on every vertex.
+    let script = "\
+glMatrixMode(GL_PROJECTION);
+glLoadIdentity();
+glOrtho(0, 1, 0, 1, -1, 1);
+glMatrixMode(GL_MODELVIEW);
+glLoadIdentity();
+glEnable(GL_LIGHTING);
+glEnable(GL_LIGHT0);
+glNormal3f(0, 0, 1);
+glBegin(GL_TRIANGLES);
+glMaterialfv(GL_FRONT, GL_DIFFUSE, (GLfloat[]){NAN, 0, 0.5, 1});
+glVertex2f(0.05, 0.05);
+glMaterialfv(GL_FRONT, GL_DIFFUSE, (GLfloat[]){0, INFINITY, 0, 1});
+glVertex2f(0.95, 0.05);
+glMaterialfv(GL_FRONT, GL_EMISSION, (GLfloat[]){0, 0, NAN, 1});
+glVertex2f(0.5, 0.95);
+glEnd();
+";
+    let tolerance = Tolerance {
+        per_channel: 2,
+        max_bad_pixels: 32 * 32 / 100,
+    };
+    compare("vertex-materials-nonfinite", script, Frame::new(32, 32), tolerance);
+}
