@@ -165,5 +165,10 @@ glEnd();
         per_channel: 2,
         max_bad_pixels: 32 * 32 / 100,
     };
-    compare("vertex-materials-nonfinite", script, Frame::new(32, 32), tolerance);
+    compare(
+        "vertex-materials-nonfinite",
+        script,
+        Frame::new(32, 32),
+        tolerance,
+    );
 }
