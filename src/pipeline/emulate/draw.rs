@@ -23,14 +23,16 @@ use glam::{Vec3, Vec4};
 use glow::HasContext;
 
 use super::assembly::{self, Diagonal};
-use super::polygon::{split_corners, Corner, Outline};
+use super::polygon::{split_corners, Corner, Outline, PolygonPass};
 use super::shadergen::{
     material_location, ATTRIB_COLOR, ATTRIB_COUNT, ATTRIB_EDGE, ATTRIB_FOG_COORD, ATTRIB_NORMAL,
     ATTRIB_POSITION, ATTRIB_SECONDARY, ATTRIB_SHADE_NORMAL, ATTRIB_SHADE_POSITION,
     ATTRIB_TEXCOORD0,
 };
 use super::shared_vertices::{self, Shared};
-use crate::ff::{FixedState, Geometry, Primitive, ShadeModel, MAX_TEXTURE_UNITS};
+use crate::ff::{
+    Face, FixedState, FrontFace, Geometry, PolygonMode, Primitive, ShadeModel, MAX_TEXTURE_UNITS,
+};
 use crate::pipeline::PipelineError;
 
 /// Triangle corners per quad.
@@ -74,14 +76,15 @@ impl Arrays {
 
 /// How the uploaded vertices are drawn.
 enum Shape {
-    /// A core mode over the element buffer.
     /// A core mode over the element buffer, of `index_type` (UNSIGNED_SHORT when every
     /// index fits: llvmpipe's draw module takes 32-bit indices through a slower path that
-    /// allocates per draw — measured, `bench --only abi`, buffers mode).
+    /// allocates per draw — measured, `bench --only abi`, buffers mode). TRIANGLES also
+    /// hold their `Winding::Reversed` copy, from byte `reversed_at` of the same buffer.
     Elements {
         mode: u32,
         count: i32,
         index_type: u32,
+        reversed_at: Option<i32>,
     },
     /// A core mode over the vertices in order (a geometry without indices).
     Arrays { mode: u32, count: i32 },
@@ -91,6 +94,62 @@ enum Shape {
         blocks: Vec<(Diagonal, i32)>,
         count: i32,
     },
+}
+
+/// The order an indexed TRIANGLES geometry's corners reach llvmpipe in. llvmpipe bins a
+/// triangle that is counter-clockwise in its own pixel rows (top row first) as it is, and
+/// swaps the first two corners of a clockwise one first (`triangle_cw`/`triangle_both`
+/// rotate (v0, v1, v2) to (v1, v0, v2) under the last-vertex convention). A framebuffer
+/// object stores GL's bottom row first, so a triangle counter-clockwise in GL's window
+/// space is clockwise there: every face such a pass keeps is swapped, 13 instructions per
+/// drawn triangle more than Mesa's own OSMesa, whose window-system buffer is stored top
+/// row first (callgrind, `bench --only abi` buffers mode: 36.05 M vs 35.57 M instructions
+/// per frame). `Reversed` gives llvmpipe (v1, v0, v2) and core GL the opposite front
+/// face: the same faces are front, culled and lit as either, the provoking vertex (the
+/// last) is the same, and the triangle llvmpipe bins is the one it would have made
+/// itself — the same pixels. Only clipping at the near or far plane (or a user plane)
+/// starts its polygon at v1 instead of v0, which may move an interior edge of the clipped
+/// polygon's fan by rounding.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Winding {
+    AsGiven,
+    Reversed,
+}
+
+impl Winding {
+    /// `Reversed` for a filled pass that culls one face and keeps faces that are
+    /// counter-clockwise in GL's window space: the front faces under FrontFace(CCW) and
+    /// CullFace(BACK), the back faces under FrontFace(CW) and CullFace(FRONT).
+    pub fn for_pass(pass: &PolygonPass, front_face: FrontFace) -> Winding {
+        let kept_ccw = matches!(
+            (pass.cull, front_face),
+            (Some(Face::Back), FrontFace::Ccw) | (Some(Face::Front), FrontFace::Cw)
+        );
+        if pass.mode == PolygonMode::Fill && kept_ccw {
+            Winding::Reversed
+        } else {
+            Winding::AsGiven
+        }
+    }
+
+    /// The front face core GL is given: the model's, or its opposite for reversed corners.
+    pub fn front_face(self, model: FrontFace) -> FrontFace {
+        match (self, model) {
+            (Winding::AsGiven, f) => f,
+            (Winding::Reversed, FrontFace::Ccw) => FrontFace::Cw,
+            (Winding::Reversed, FrontFace::Cw) => FrontFace::Ccw,
+        }
+    }
+}
+
+/// Each whole triangle's first two corners swapped (`Winding::Reversed`); a partial
+/// triangle at the end, which GL draws nothing of, is kept as it is.
+fn reversed_triangles<T: Copy>(indices: &[T]) -> Vec<T> {
+    let mut out = indices.to_vec();
+    for t in out.chunks_exact_mut(3) {
+        t.swap(0, 1);
+    }
+    out
 }
 
 /// The core mode of the primitives core GL draws itself; `None` for the split ones.
@@ -290,27 +349,39 @@ impl GpuGeometry {
                     let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
                     gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
                     let short = crate::ff::max_index(indices) <= u32::from(u16::MAX);
-                    let index_type = if short {
+                    let triangles = mode == glow::TRIANGLES && indices.len() >= 3;
+                    // The indices, then their reversed copy for TRIANGLES (`Winding`).
+                    fn both<T: Copy + bytemuck::Pod>(v: Vec<T>, reverse: bool) -> Vec<T> {
+                        if !reverse {
+                            return v;
+                        }
+                        let mut out = reversed_triangles(&v);
+                        out.splice(0..0, v);
+                        out
+                    }
+                    let (index_type, size) = if short {
                         let narrow: Vec<u16> = indices.iter().map(|&i| i as u16).collect();
                         gl.buffer_data_u8_slice(
                             glow::ELEMENT_ARRAY_BUFFER,
-                            bytemuck::cast_slice(&narrow),
+                            bytemuck::cast_slice(&both(narrow, triangles)),
                             glow::STATIC_DRAW,
                         );
-                        glow::UNSIGNED_SHORT
+                        (glow::UNSIGNED_SHORT, 2)
                     } else {
                         gl.buffer_data_u8_slice(
                             glow::ELEMENT_ARRAY_BUFFER,
-                            bytemuck::cast_slice(indices),
+                            bytemuck::cast_slice(&both(indices.clone(), triangles)),
                             glow::STATIC_DRAW,
                         );
-                        glow::UNSIGNED_INT
+                        (glow::UNSIGNED_INT, 4)
                     };
                     buffers.push(ebo);
+                    let count = count(indices.len());
                     Shape::Elements {
                         mode,
-                        count: count(indices.len()),
+                        count,
                         index_type,
+                        reversed_at: triangles.then(|| count.saturating_mul(size)),
                     }
                 }
                 (Some(mode), None) => Shape::Arrays {
@@ -336,9 +407,28 @@ impl GpuGeometry {
         }
     }
 
+    /// The winding a pass draws this geometry with: `Winding::for_pass` where the geometry
+    /// has reversed corners (indexed TRIANGLES), as given otherwise.
+    pub fn winding(&self, pass: &PolygonPass, state: &FixedState) -> Winding {
+        match self.shape {
+            Shape::Elements {
+                reversed_at: Some(_),
+                ..
+            } => Winding::for_pass(pass, state.front_face),
+            _ => Winding::AsGiven,
+        }
+    }
+
     /// Draws with the current values standing in for the missing arrays; non-indexed QUADS
-    /// take the diagonal Mesa would take under the current matrices (`assembly`).
-    pub fn draw(&self, gl: &glow::Context, sent: &mut SentAttribs, state: &FixedState) {
+    /// take the diagonal Mesa would take under the current matrices (`assembly`). Indexed
+    /// TRIANGLES take the corner order `winding` (the one core GL's front face was set for).
+    pub fn draw(
+        &self,
+        gl: &glow::Context,
+        sent: &mut SentAttribs,
+        state: &FixedState,
+        winding: Winding,
+    ) {
         // SAFETY: plain GL calls on the current context; every range lies in the uploaded
         // buffers (counts come from the upload).
         unsafe {
@@ -358,8 +448,13 @@ impl GpuGeometry {
                     mode,
                     count,
                     index_type,
+                    reversed_at,
                 } if *count > 0 => {
-                    gl.draw_elements(*mode, *count, *index_type, 0);
+                    let offset = match (winding, reversed_at) {
+                        (Winding::Reversed, Some(at)) => *at,
+                        _ => 0,
+                    };
+                    gl.draw_elements(*mode, *count, *index_type, offset);
                 }
                 Shape::Arrays { mode, count } if *count > 0 => {
                     gl.draw_arrays(*mode, 0, *count);
@@ -580,6 +675,56 @@ impl GeometryCache {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ff::{OffsetEnables, PolygonModes};
+    use crate::pipeline::emulate::polygon;
+
+    #[test]
+    fn reversed_triangles_swap_their_first_two_corners() {
+        assert_eq!(
+            reversed_triangles(&[0u16, 1, 2, 3, 4, 5, 6, 7]),
+            [1, 0, 2, 4, 3, 5, 6, 7]
+        );
+        assert!(reversed_triangles::<u32>(&[]).is_empty());
+    }
+
+    /// Reversed exactly where a filled pass keeps only faces counter-clockwise in GL's
+    /// window space; core GL is then given the opposite front face.
+    #[test]
+    fn a_pass_reverses_the_corners_of_kept_counter_clockwise_faces() {
+        let fill = |cull| {
+            polygon::passes(
+                PolygonModes {
+                    front: PolygonMode::Fill,
+                    back: PolygonMode::Fill,
+                },
+                cull,
+                OffsetEnables::default(),
+                Primitive::Triangles,
+                Outline::Core,
+            )[0]
+        };
+        let cases = [
+            (Some(Face::Back), FrontFace::Ccw, Winding::Reversed),
+            (Some(Face::Front), FrontFace::Cw, Winding::Reversed),
+            (Some(Face::Front), FrontFace::Ccw, Winding::AsGiven),
+            (Some(Face::Back), FrontFace::Cw, Winding::AsGiven),
+            (Some(Face::FrontAndBack), FrontFace::Ccw, Winding::AsGiven),
+            (None, FrontFace::Ccw, Winding::AsGiven),
+        ];
+        for (cull, front, expected) in cases {
+            assert_eq!(
+                Winding::for_pass(&fill(cull), front),
+                expected,
+                "{cull:?} {front:?}"
+            );
+        }
+        let mut line = fill(Some(Face::Back));
+        line.mode = PolygonMode::Line;
+        assert_eq!(Winding::for_pass(&line, FrontFace::Ccw), Winding::AsGiven);
+        assert_eq!(Winding::Reversed.front_face(FrontFace::Ccw), FrontFace::Cw);
+        assert_eq!(Winding::Reversed.front_face(FrontFace::Cw), FrontFace::Ccw);
+        assert_eq!(Winding::AsGiven.front_face(FrontFace::Cw), FrontFace::Cw);
+    }
 
     #[test]
     fn core_types_are_drawn_as_they_are_and_the_legacy_ones_split() {

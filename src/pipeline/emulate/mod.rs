@@ -37,7 +37,7 @@ use std::sync::Arc;
 use glow::HasContext;
 
 use self::cache::ProgramCache;
-use self::draw::GeometryCache;
+use self::draw::{GeometryCache, Winding};
 use self::key::{PointKey, PointShape, PositionSource, ShaderKey};
 use self::program::Program;
 use self::sync::{LogicOpCall, RasterSync};
@@ -263,10 +263,17 @@ impl Emulate {
             .map(|u| (u.unit, u.target))
             .collect();
         self.textures.bind_units(gl, state, &units)?;
-        self.raster.sync(gl, state, Some(pass));
         match drawn {
-            Drawn::Geometry(g) => self.geometry.get(gl, g)?.draw(gl, &mut self.sent, state),
-            Drawn::Dashes(g, d) => dashes::draw(gl, &mut self.sent, state, g, d)?,
+            Drawn::Geometry(g) => {
+                let gpu = self.geometry.get(gl, g)?;
+                let winding = gpu.winding(pass, state);
+                self.raster.sync(gl, state, Some(pass), winding);
+                gpu.draw(gl, &mut self.sent, state, winding);
+            }
+            Drawn::Dashes(g, d) => {
+                self.raster.sync(gl, state, Some(pass), Winding::AsGiven);
+                dashes::draw(gl, &mut self.sent, state, g, d)?;
+            }
         }
         Ok(())
     }
@@ -293,16 +300,16 @@ impl Emulate {
             polygon::Outline::of(geometry),
         );
         for pass in passes {
-            self.raster.sync(gl, state, Some(&pass));
-            self.geometry
-                .get(gl, geometry)?
-                .draw(gl, &mut self.sent, state);
+            let gpu = self.geometry.get(gl, geometry)?;
+            let winding = gpu.winding(&pass, state);
+            self.raster.sync(gl, state, Some(&pass), winding);
+            gpu.draw(gl, &mut self.sent, state, winding);
         }
         Ok(())
     }
 
     fn clear(&mut self, gl: &glow::Context, state: &FixedState, mask: crate::ff::ClearMask) {
-        self.raster.sync(gl, state, None);
+        self.raster.sync(gl, state, None, Winding::AsGiven);
         let c = state.clear;
         let mut bits = 0;
         unsafe {
@@ -363,7 +370,7 @@ impl Issue for Emulate {
             }
             Command::BlitFramebuffer(b) => {
                 // The scissor box clips the blit (and no other raster state applies).
-                self.raster.sync(gl, state, None);
+                self.raster.sync(gl, state, None, Winding::AsGiven);
                 let (s, d) = (b.src, b.dst);
                 unsafe {
                     gl.blit_framebuffer(

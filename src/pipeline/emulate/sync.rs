@@ -9,6 +9,7 @@ use glam::Vec4;
 use glow::HasContext;
 
 use super::conv;
+use super::draw::Winding;
 use super::key::PositionSource;
 use super::polygon::PolygonPass;
 use super::shadergen::WINDOW_SPAN;
@@ -129,7 +130,15 @@ impl RasterSync {
     /// Brings the GL raster state in line with the model before a draw or a clear; a draw
     /// pass brings its own core polygon mode and cull face (`polygon`), a clear uses the
     /// state's front mode and cull face (neither affects it).
-    pub fn sync(&mut self, gl: &glow::Context, s: &FixedState, pass: Option<&PolygonPass>) {
+    /// Core GL's front face is the model's, or its opposite for a draw whose corners are
+    /// reversed (`draw::Winding`).
+    pub fn sync(
+        &mut self,
+        gl: &glow::Context,
+        s: &FixedState,
+        pass: Option<&PolygonPass>,
+        winding: Winding,
+    ) {
         let c = &mut self.counts;
         let window = pass.is_some_and(|p| p.positions == PositionSource::Window);
         let (viewport, depth_range) = if window {
@@ -176,7 +185,7 @@ impl RasterSync {
             Some(p) => (p.mode, p.cull),
             None => (s.polygon_mode.front, s.cull_face.get()),
         };
-        self.sync_faces(gl, s, mode, cull);
+        self.sync_faces(gl, mode, cull, winding.front_face(s.front_face));
     }
 
     fn sync_tests(&mut self, gl: &glow::Context, s: &FixedState, pass: Option<&PolygonPass>) {
@@ -244,12 +253,12 @@ impl RasterSync {
     fn sync_faces(
         &mut self,
         gl: &glow::Context,
-        s: &FixedState,
         mode: PolygonMode,
         cull: Option<Face>,
+        front_face: FrontFace,
     ) {
         let c = &mut self.counts;
-        self.cull.sync((cull, s.front_face), c, |(f, ff)| unsafe {
+        self.cull.sync((cull, front_face), c, |(f, ff)| unsafe {
             toggle(gl, glow::CULL_FACE, f.is_some());
             if let Some(f) = f {
                 gl.cull_face(conv::value(f));
