@@ -90,7 +90,7 @@ fn shaders_of_the_default_scene_frame_light_without_texturing() {
         out.starts_with("the default scene (none): 1 distinct program(s)"),
         "{out}"
     );
-    assert!(out.contains("u_light0_diffuse"), "{out}");
+    assert!(out.contains("u_light0_front_diffuse_product"), "{out}");
     assert!(!out.contains("sampler") && !out.contains("v_tc"), "{out}");
 }
 

@@ -32,7 +32,7 @@ const fn case(name: &'static str, w: u32, h: u32, per_channel: u8, max_bad: usiz
 }
 
 /// The table. Tolerances are per channel (of 255) and a count of pixels allowed beyond it.
-const CASES: [Case; 23] = [
+const CASES: [Case; 24] = [
     case("alpha_test_boundaries", 8, 1, 0, 0),
     // GL's own glBlitFramebuffer on both paths (tests/fidelity_framebuffers.rs).
     Case {
@@ -76,6 +76,8 @@ const CASES: [Case; 23] = [
     case("texgen_eye_plane_3", 16, 16, 0, 0),
     case("texgen_object_linear", 50, 50, 0, 25),
     case("texgen_sphere_map", 50, 50, 0, 25),
+    // Culled indexed triangles, some drawn with reversed corners (tests/fidelity_winding.rs).
+    case("winding", 256, 128, 0, 0),
 ];
 
 fn scripts() -> Vec<PathBuf> {

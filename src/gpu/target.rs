@@ -258,6 +258,29 @@ impl RenderTarget {
         self.read(ctx, glow::RGBA, ty, out)
     }
 
+    /// The colour buffer as bytes of `format` (RGBA or BGRA, 4 per pixel), bottom row
+    /// first, straight into rows of `row_pixels` pixels (PACK_ROW_LENGTH) of `out`: one
+    /// copy, for a caller whose buffer has GL's layout. `out` must hold
+    /// (height − 1)·row_pixels + width pixels.
+    pub fn read_color_bytes_into_rows(
+        &self,
+        ctx: &GpuContext,
+        format: u32,
+        row_pixels: usize,
+        out: &mut [u8],
+    ) -> Result<(), GpuError> {
+        let gl = ctx.gl();
+        let row_length = i32::try_from(row_pixels)
+            .map_err(|_| GpuError::Object("row length beyond GL's range".into()))?;
+        unsafe {
+            gl.pixel_store_i32(glow::PACK_ROW_LENGTH, row_length);
+        }
+        let read = self.read(ctx, format, glow::UNSIGNED_BYTE, out);
+        // The program's own reads set their pack state; this one leaves GL's default.
+        unsafe { gl.pixel_store_i32(glow::PACK_ROW_LENGTH, 0) };
+        read
+    }
+
     /// The colour buffer as RGBA8 bytes in GL's order, bottom row first.
     pub fn read_color_rows(&self, ctx: &GpuContext) -> Result<Vec<u8>, GpuError> {
         let (w, h) = (self.spec.width, self.spec.height);

@@ -73,6 +73,32 @@ pub enum MaterialValue {
     Shininess,
 }
 
+/// The three colours a light and a material each have, whose products light a vertex.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ColorTerm {
+    Ambient,
+    Diffuse,
+    Specular,
+}
+
+impl ColorTerm {
+    pub fn material(self) -> MaterialValue {
+        match self {
+            ColorTerm::Ambient => MaterialValue::Ambient,
+            ColorTerm::Diffuse => MaterialValue::Diffuse,
+            ColorTerm::Specular => MaterialValue::Specular,
+        }
+    }
+
+    pub fn light(self) -> LightValue {
+        match self {
+            ColorTerm::Ambient => LightValue::Ambient,
+            ColorTerm::Diffuse => LightValue::Diffuse,
+            ColorTerm::Specular => LightValue::Specular,
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum UniformSource {
     Modelview,
@@ -90,6 +116,17 @@ pub enum UniformSource {
     /// Face 0 = front, 1 = back.
     Material(u8, MaterialValue),
     LightModelAmbient,
+    /// Light i's colour times face f's material colour of the same term, m·l per channel
+    /// (alpha 1): multiplied on the CPU once per draw, as Mesa's fixed-function program
+    /// takes it (`STATE_LIGHTPROD`), for a material value that is the state's (neither
+    /// COLOR_MATERIAL's nor set per vertex). In the program the product costs a multiply
+    /// per vertex and channel: llvmpipe does not hoist uniform-only arithmetic out of its
+    /// SIMD vertex loop (`bench --only abi` buffers mode: 0.57 M instructions a frame for
+    /// one light).
+    LightProduct(u8, u8, ColorTerm),
+    /// Face f's scene colour e_m + a_m·a_cs (GL 1.5 §2.14.1), summed on the CPU as Mesa's
+    /// `STATE_LIGHTMODEL_SCENECOLOR`, when emission and ambient are the state's.
+    SceneColor(u8),
     EnvColor(u8),
     /// TEXTURE_COMPARE_FAIL_VALUE of the unit's texture.
     CompareFail(u8),
@@ -142,6 +179,14 @@ impl UniformSource {
                 format!("u_{}_{v:?}", ["front", "back"][f as usize & 1]).to_lowercase()
             }
             UniformSource::LightModelAmbient => "u_scene_ambient".into(),
+            UniformSource::LightProduct(i, f, t) => format!(
+                "u_light{i}_{}_{t:?}_product",
+                ["front", "back"][f as usize & 1]
+            )
+            .to_lowercase(),
+            UniformSource::SceneColor(f) => {
+                format!("u_{}_scene_color", ["front", "back"][f as usize & 1])
+            }
             UniformSource::EnvColor(u) => format!("u_env_color{u}"),
             UniformSource::CompareFail(u) => format!("u_compare_fail{u}"),
             UniformSource::AlphaRef => "u_alpha_ref".into(),
@@ -270,6 +315,21 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
             }
         }
         UniformSource::LightModelAmbient => Vec4(state.light_model.ambient),
+        UniformSource::LightProduct(i, face, t) => {
+            let l = &state.lights[i as usize].value;
+            let m = material(state, face);
+            let (lc, mc) = match t {
+                ColorTerm::Ambient => (l.ambient, m.ambient),
+                ColorTerm::Diffuse => (l.diffuse, m.diffuse),
+                ColorTerm::Specular => (l.specular, m.specular),
+            };
+            Vec4((mc.truncate() * lc.truncate()).extend(1.0))
+        }
+        UniformSource::SceneColor(face) => {
+            let m = material(state, face);
+            let scene = state.light_model.ambient.truncate();
+            Vec4((m.emission.truncate() + m.ambient.truncate() * scene).extend(1.0))
+        }
         UniformSource::EnvColor(u) => Vec4(state.units[u as usize].env.color),
         UniformSource::CompareFail(u) => Float(
             state

@@ -14,7 +14,7 @@ use crate::pipeline::emulate::key::{
     ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, PointKey, PointShape,
     PositionSource, VertexKey, VertexUnitKey,
 };
-use crate::pipeline::emulate::uniforms::{LightValue, MaterialValue, UniformSource};
+use crate::pipeline::emulate::uniforms::{ColorTerm, LightValue, MaterialValue, UniformSource};
 
 use super::{
     material_location, ATTRIB_COLOR, ATTRIB_EDGE, ATTRIB_FOG_COORD, ATTRIB_NORMAL, ATTRIB_POSITION,
@@ -295,7 +295,8 @@ fn emit_lighting(w: &mut GlslWriter, lighting: &LightingKey, inputs: &Inputs, fl
     }
 }
 
-/// The material colour of `value` for a face: the current colour under COLOR_MATERIAL.
+/// The material colour of `value` for a face: the current colour under COLOR_MATERIAL,
+/// the attribute where glMaterial set it per vertex, the state's uniform otherwise.
 fn material(
     w: &mut GlslWriter,
     cm: Option<ColorMaterialKey>,
@@ -304,6 +305,45 @@ fn material(
     face: u8,
     value: MaterialValue,
 ) -> String {
+    varying_material(w, cm, per_vertex, color, face, value)
+        .unwrap_or_else(|| w.uniform(UniformSource::Material(face, value)))
+}
+
+/// m·l of light `light`'s and the face's colours of `term` (rgb): the CPU's product
+/// (`UniformSource::LightProduct`) where the material value is the state's, the
+/// program's where it varies per vertex.
+fn light_product(
+    w: &mut GlslWriter,
+    lighting: &LightingKey,
+    color: &str,
+    face: u8,
+    light: u8,
+    term: ColorTerm,
+) -> String {
+    let (cm, per_vertex) = (lighting.color_material, lighting.vertex_materials);
+    match varying_material(w, cm, per_vertex, color, face, term.material()) {
+        Some(m) => {
+            let l = w.uniform(UniformSource::Light(light, term.light()));
+            format!("({m}.rgb * {l}.rgb)")
+        }
+        None => {
+            let p = w.uniform(UniformSource::LightProduct(light, face, term));
+            format!("{p}.rgb")
+        }
+    }
+}
+
+/// The material colour of `value` where it varies per vertex: the current colour under
+/// COLOR_MATERIAL, or the attribute of a glMaterial inside glBegin/glEnd; `None` for the
+/// material state's.
+fn varying_material(
+    w: &mut GlslWriter,
+    cm: Option<ColorMaterialKey>,
+    per_vertex: u16,
+    color: &str,
+    face: u8,
+    value: MaterialValue,
+) -> Option<String> {
     let tracks = cm.is_some_and(|c| {
         (if face == 0 { c.front } else { c.back })
             && matches!(
@@ -317,11 +357,9 @@ fn material(
             )
     });
     if tracks {
-        color.to_string()
-    } else if let Some(a) = vertex_material(w, per_vertex, face, value) {
-        a
+        Some(color.to_string())
     } else {
-        w.uniform(UniformSource::Material(face, value))
+        vertex_material(w, per_vertex, face, value)
     }
 }
 
@@ -367,37 +405,27 @@ fn emit_face(
     n: &str,
     out: [&str; 2],
 ) {
-    let cm = lighting.color_material;
+    let (cm, per_vertex) = (lighting.color_material, lighting.vertex_materials);
     let color = inputs.color;
-    let emission = material(
-        w,
-        cm,
-        lighting.vertex_materials,
-        color,
-        face,
-        MaterialValue::Emission,
-    );
-    let ambient = material(
-        w,
-        cm,
-        lighting.vertex_materials,
-        color,
-        face,
-        MaterialValue::Ambient,
-    );
-    let diffuse = material(
-        w,
-        cm,
-        lighting.vertex_materials,
-        color,
-        face,
-        MaterialValue::Diffuse,
-    );
-    let scene = w.uniform(UniformSource::LightModelAmbient);
+    let varying =
+        |w: &mut GlslWriter, value| varying_material(w, cm, per_vertex, color, face, value);
+    let emission = varying(w, MaterialValue::Emission);
+    let ambient = varying(w, MaterialValue::Ambient);
+    let diffuse = material(w, cm, per_vertex, color, face, MaterialValue::Diffuse);
     let c = format!("c{face}");
-    w.line(format!(
-        "vec3 {c} = {emission}.rgb + {ambient}.rgb * {scene}.rgb;"
-    ));
+    // e_m + a_m·a_cs: the CPU's sum (`UniformSource::SceneColor`) unless a term varies.
+    let scene_color = if emission.is_none() && ambient.is_none() {
+        format!("{}.rgb", w.uniform(UniformSource::SceneColor(face)))
+    } else {
+        let state = |w: &mut GlslWriter, v: Option<String>, value| {
+            v.unwrap_or_else(|| w.uniform(UniformSource::Material(face, value)))
+        };
+        let emission = state(w, emission, MaterialValue::Emission);
+        let ambient = state(w, ambient, MaterialValue::Ambient);
+        let scene = w.uniform(UniformSource::LightModelAmbient);
+        format!("{emission}.rgb + {ambient}.rgb * {scene}.rgb")
+    };
+    w.line(format!("vec3 {c} = {scene_color};"));
     let secondary = format!("s{face}");
     if lighting.separate_specular {
         w.line(format!("vec3 {secondary} = vec3(0.0);"));
@@ -430,34 +458,9 @@ fn emit_light(
     let (e, color) = (inputs.eye, inputs.color);
     let i = l.index;
     let u = |w: &mut GlslWriter, v| w.uniform(UniformSource::Light(i, v));
-    let la = u(w, LightValue::Ambient);
-    let ld = u(w, LightValue::Diffuse);
-    let ls = u(w, LightValue::Specular);
-    let cm = lighting.color_material;
-    let ma = material(
-        w,
-        cm,
-        lighting.vertex_materials,
-        color,
-        face,
-        MaterialValue::Ambient,
-    );
-    let md = material(
-        w,
-        cm,
-        lighting.vertex_materials,
-        color,
-        face,
-        MaterialValue::Diffuse,
-    );
-    let ms = material(
-        w,
-        cm,
-        lighting.vertex_materials,
-        color,
-        face,
-        MaterialValue::Specular,
-    );
+    let ambient = light_product(w, lighting, color, face, i, ColorTerm::Ambient);
+    let diffuse = light_product(w, lighting, color, face, i, ColorTerm::Diffuse);
+    let specular_product = light_product(w, lighting, color, face, i, ColorTerm::Specular);
     let shin = vertex_material(w, lighting.vertex_materials, face, MaterialValue::Shininess)
         .unwrap_or_else(|| w.uniform(UniformSource::Material(face, MaterialValue::Shininess)));
     let v = format!("l{i}_{face}");
@@ -501,7 +504,7 @@ fn emit_light(
     w.line(format!("float {v}_ndl = dot({n}, {v}_dir);"));
     w.line(format!("if (isnan({v}_ndl)) {v}_ndl = 0.0;"));
     w.line(format!(
-        "vec3 {v}_c = {ma}.rgb * {la}.rgb + max({v}_ndl, 0.0) * {md}.rgb * {ld}.rgb;"
+        "vec3 {v}_c = {ambient} + max({v}_ndl, 0.0) * {diffuse};"
     ));
     // The specular term joins the primary sum, or its own for SEPARATE_SPECULAR_COLOR.
     let specular = if lighting.separate_specular {
@@ -524,7 +527,7 @@ fn emit_light(
         "float {v}_sp = ({shin} == 0.0) ? 1.0 : pow({v}_ndh, {shin});"
     ));
     w.line(format!(
-        "{specular} += ({v}_ndl > 0.0) ? {v}_sp * {ms}.rgb * {ls}.rgb : vec3(0.0);"
+        "{specular} += ({v}_ndl > 0.0) ? {v}_sp * {specular_product} : vec3(0.0);"
     ));
     w.line(format!("{c} += {v}_att * {v}_c;"));
     if lighting.separate_specular {
