@@ -176,6 +176,14 @@ fn the_group_reports_a_row_per_mode_and_heap() {
         assert_eq!(r["vertices_per_frame"].as_u64(), Some(expected), "{mode}");
         let ratio = r["ratio"].as_f64().expect("a ratio");
         assert!(ratio.is_finite() && ratio > 0.0, "{mode}: ratio {ratio}");
+        // One repeat: the one pair's ratio is the ratio of the two medians.
+        let paired = &r["paired"];
+        assert_eq!(paired["samples"].as_u64(), Some(1), "{mode}");
+        let p = paired["median"].as_f64().expect("a paired ratio");
+        assert!(
+            (p - ratio).abs() < 1e-9,
+            "{mode}: paired {p}, ratio {ratio}"
+        );
         let verdict = r["verdict"].as_str().expect("a verdict");
         let target = r["target"].as_f64();
         match target {

@@ -189,6 +189,10 @@ pub struct AbiRow {
     pub fixedfunc: LibraryFigures,
     /// The layer's median frame / Mesa's.
     pub ratio: f64,
+    /// Per repeat, the layer's run over Mesa's run just before it (the two drawn under the
+    /// same moment's machine): their median, min and max. On a shared machine whose speed
+    /// drifts between runs, the steadier comparison of the two.
+    pub paired: Summary,
     pub target: Option<f64>,
     pub verdict: Verdict,
 }
@@ -324,9 +328,16 @@ fn row(
         return Err(AbiError::Incomplete { missing: "frame" });
     };
     agree(mode, m, o)?;
+    let mesa_runs = mesa;
     let mesa = figures(Library::Mesa, mesa)?;
     let fixedfunc = figures(Library::Fixedfunc, ours)?;
     let ratio = fixedfunc.frame_ms.median / mesa.frame_ms.median;
+    let pairs: Vec<f64> = mesa_runs
+        .iter()
+        .zip(ours)
+        .filter_map(|(m, o)| Some(steady_median(o)? / steady_median(m)?))
+        .collect();
+    let paired = Summary::of(&pairs).ok_or(AbiError::Incomplete { missing: "frame" })?;
     let target = mode.target();
     let verdict = match target {
         None => Verdict::None,
@@ -341,6 +352,7 @@ fn row(
         mesa,
         fixedfunc,
         ratio,
+        paired,
         target,
         verdict,
     })

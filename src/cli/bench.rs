@@ -567,7 +567,8 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
     outln!(
         "abi: benches/c/abi_bench.c (256×256 RGBA, 24 depth, 8 stencil) on Mesa's \
          libOSMesa.so.8 and on fixedfunc's, runs interleaved; {} runs each of {} frames \
-         after {} warm-up; per run its median frame; medians [min–max] over the runs",
+         after {} warm-up; per run its median frame; medians [min–max] over the runs; \
+         paired = each repeat's fixedfunc run over the Mesa run just before it",
         repeats.max(1),
         abi::STEADY_FRAMES,
         abi::WARMUP_FRAMES
@@ -587,7 +588,7 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
         )?;
     }
     outln!(
-        "{:<10} {:<9} {:>7} {:>5} {:>22} {:>22} {:>10} {:>7} {:>15} {:>15} {:>9} {:>9}",
+        "{:<10} {:<9} {:>7} {:>5} {:>22} {:>22} {:>10} {:>18} {:>7} {:>15} {:>15} {:>9} {:>9}",
         "mode",
         "heap",
         "verts",
@@ -595,6 +596,7 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
         "Mesa frame ms",
         "fixedfunc frame ms",
         "ours/Mesa",
+        "paired",
         "target",
         "Mesa Mvert/s",
         "ours Mvert/s",
@@ -610,7 +612,7 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
             (None, _) => "—".to_string(),
         };
         outln!(
-            "{:<10} {:<9} {:>7} {:>5} {:>22} {:>22} {:>9.2}× {:>7} {:>15.1} {:>15.1} {:>9.0} {:>9.0}",
+            "{:<10} {:<9} {:>7} {:>5} {:>22} {:>22} {:>9.2}× {:>18} {:>7} {:>15.1} {:>15.1} {:>9.0} {:>9.0}",
             r.mode.name(),
             r.heap,
             r.vertices_per_frame,
@@ -618,6 +620,7 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
             range(&r.mesa.frame_ms),
             range(&r.fixedfunc.frame_ms),
             r.ratio,
+            range(&r.paired),
             target,
             r.mesa.mvertices_per_s.median,
             r.fixedfunc.mvertices_per_s.median,

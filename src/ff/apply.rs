@@ -627,8 +627,8 @@ impl FixedState {
     /// (GL 1.5 §2.8 makes them indeterminate; `tests/c/state.c` checks Mesa's). What
     /// glBegin/glEnd leaves current is set by the commands immediate mode emits after its
     /// draw (`ff::immediate`).
-    fn draw(&mut self, g: &Geometry) -> GlResult {
-        g.validate()
+    fn draw(&mut self, g: &std::sync::Arc<Geometry>) -> GlResult {
+        self.validated_draw.validate(g)
     }
 }
 

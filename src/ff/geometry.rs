@@ -1,6 +1,8 @@
 //! Geometry for `Command::Draw`: vertex arrays as glBegin/glEnd or glDrawArrays/Elements
 //! would deliver them. Other layers (meshes) convert into this; it depends on nothing else.
 
+use std::sync::Arc;
+
 use glam::{Vec3, Vec4};
 
 use super::error::{GlError, GlResult};
@@ -47,6 +49,31 @@ pub struct Geometry {
     pub indices: Option<Vec<u32>>,
     /// Materials per vertex: glMaterial called inside glBegin/glEnd (GL 1.5 §2.14.3).
     pub materials: Option<Box<VertexMaterials>>,
+}
+
+/// The last geometry a draw found valid, held so that a draw of the same `Arc` again is
+/// not checked again: a repeated draw (`ff::repeated_draws`) would otherwise scan its
+/// indices for the largest at every call. Holding a clone keeps the geometry shared, and a
+/// shared `Arc<Geometry>` cannot change. A memo, not GL state: it compares equal to any.
+#[derive(Debug, Clone, Default)]
+pub struct ValidatedDraw(Option<Arc<Geometry>>);
+
+impl PartialEq for ValidatedDraw {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl ValidatedDraw {
+    /// [`Geometry::validate`], skipped for the geometry validated last.
+    pub fn validate(&mut self, g: &Arc<Geometry>) -> GlResult {
+        if self.0.as_ref().is_some_and(|v| Arc::ptr_eq(v, g)) {
+            return Ok(());
+        }
+        g.validate()?;
+        self.0 = Some(g.clone());
+        Ok(())
+    }
 }
 
 /// A material value a vertex can carry: a colour of a face, or a face's shininess.
@@ -244,6 +271,24 @@ unsafe fn max_index_avx2(indices: &[u32]) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The memo skips only the `Arc` it holds; an invalid geometry errs at every draw.
+    #[test]
+    fn a_validated_draw_is_checked_once_per_arc() {
+        let mut g = Geometry::new(Primitive::Triangles, vec![Vec4::ZERO; 3]);
+        g.indices = Some(vec![0, 1, 2]);
+        let valid = Arc::new(g.clone());
+        let mut memo = ValidatedDraw::default();
+        assert!(memo.validate(&valid).is_ok());
+        assert!(memo.0.as_ref().is_some_and(|v| Arc::ptr_eq(v, &valid)));
+        assert!(memo.validate(&valid).is_ok());
+        g.indices = Some(vec![0, 1, 3]);
+        let invalid = Arc::new(g);
+        for _ in 0..2 {
+            assert!(memo.validate(&invalid).is_err());
+        }
+        assert!(memo.0.as_ref().is_some_and(|v| Arc::ptr_eq(v, &valid)));
+    }
 
     #[test]
     fn the_largest_index_is_found_at_every_length_and_magnitude() {

@@ -306,6 +306,8 @@ pub struct FixedState {
     pub pixel_maps: super::pixel_map::PixelMaps,
     /// glPixelZoom. GL default: (1, 1).
     pub pixel_zoom: PixelZoom,
+    /// The last geometry a draw found valid (a memo, not GL state).
+    pub(crate) validated_draw: super::geometry::ValidatedDraw,
 }
 
 impl Default for FixedState {
@@ -386,6 +388,7 @@ impl FixedState {
             pixel_transfer: PixelTransfer::DEFAULT,
             pixel_maps: Default::default(),
             pixel_zoom: PixelZoom::DEFAULT,
+            validated_draw: Default::default(),
         }
     }
 
