@@ -295,71 +295,69 @@ fn emit_lighting(w: &mut GlslWriter, lighting: &LightingKey, inputs: &Inputs, fl
     }
 }
 
-/// The material colour of `value` for a face: the current colour under COLOR_MATERIAL,
-/// the attribute where glMaterial set it per vertex, the state's uniform otherwise.
-fn material(
-    w: &mut GlslWriter,
+/// Where one face's material values come from in the program: the current colour for
+/// the values COLOR_MATERIAL tracks, an attribute for those a glMaterial inside
+/// glBegin/glEnd set per vertex, the material state's uniforms for the rest.
+#[derive(Clone, Copy)]
+struct FaceMaterial<'a> {
     cm: Option<ColorMaterialKey>,
     per_vertex: u16,
-    color: &str,
+    color: &'a str,
     face: u8,
-    value: MaterialValue,
-) -> String {
-    varying_material(w, cm, per_vertex, color, face, value)
-        .unwrap_or_else(|| w.uniform(UniformSource::Material(face, value)))
 }
 
-/// m·l of light `light`'s and the face's colours of `term` (rgb): the CPU's product
-/// (`UniformSource::LightProduct`) where the material value is the state's, the
-/// program's where it varies per vertex.
-fn light_product(
-    w: &mut GlslWriter,
-    lighting: &LightingKey,
-    color: &str,
-    face: u8,
-    light: u8,
-    term: ColorTerm,
-) -> String {
-    let (cm, per_vertex) = (lighting.color_material, lighting.vertex_materials);
-    match varying_material(w, cm, per_vertex, color, face, term.material()) {
-        Some(m) => {
-            let l = w.uniform(UniformSource::Light(light, term.light()));
-            format!("({m}.rgb * {l}.rgb)")
-        }
-        None => {
-            let p = w.uniform(UniformSource::LightProduct(light, face, term));
-            format!("{p}.rgb")
+impl<'a> FaceMaterial<'a> {
+    fn of(lighting: &LightingKey, color: &'a str, face: u8) -> Self {
+        FaceMaterial {
+            cm: lighting.color_material,
+            per_vertex: lighting.vertex_materials,
+            color,
+            face,
         }
     }
-}
 
-/// The material colour of `value` where it varies per vertex: the current colour under
-/// COLOR_MATERIAL, or the attribute of a glMaterial inside glBegin/glEnd; `None` for the
-/// material state's.
-fn varying_material(
-    w: &mut GlslWriter,
-    cm: Option<ColorMaterialKey>,
-    per_vertex: u16,
-    color: &str,
-    face: u8,
-    value: MaterialValue,
-) -> Option<String> {
-    let tracks = cm.is_some_and(|c| {
-        (if face == 0 { c.front } else { c.back })
-            && matches!(
-                (c.mode, value),
-                (ColorMaterialMode::Ambient, MaterialValue::Ambient)
-                    | (ColorMaterialMode::Diffuse, MaterialValue::Diffuse)
-                    | (ColorMaterialMode::Specular, MaterialValue::Specular)
-                    | (ColorMaterialMode::Emission, MaterialValue::Emission)
-                    | (ColorMaterialMode::AmbientAndDiffuse, MaterialValue::Ambient)
-                    | (ColorMaterialMode::AmbientAndDiffuse, MaterialValue::Diffuse)
-            )
-    });
-    if tracks {
-        Some(color.to_string())
-    } else {
-        vertex_material(w, per_vertex, face, value)
+    /// The value: varying where it varies, the state's uniform otherwise.
+    fn value(&self, w: &mut GlslWriter, value: MaterialValue) -> String {
+        self.varying(w, value)
+            .unwrap_or_else(|| w.uniform(UniformSource::Material(self.face, value)))
+    }
+
+    /// m·l of light `light`'s and the face's colours of `term` (rgb): the CPU's product
+    /// (`UniformSource::LightProduct`) where the material value is the state's, the
+    /// program's where it varies per vertex.
+    fn light_product(&self, w: &mut GlslWriter, light: u8, term: ColorTerm) -> String {
+        match self.varying(w, term.material()) {
+            Some(m) => {
+                let l = w.uniform(UniformSource::Light(light, term.light()));
+                format!("({m}.rgb * {l}.rgb)")
+            }
+            None => {
+                let p = w.uniform(UniformSource::LightProduct(light, self.face, term));
+                format!("{p}.rgb")
+            }
+        }
+    }
+
+    /// The value where it varies per vertex; `None` for the material state's.
+    fn varying(&self, w: &mut GlslWriter, value: MaterialValue) -> Option<String> {
+        let (cm, face) = (self.cm, self.face);
+        let tracks = cm.is_some_and(|c| {
+            (if face == 0 { c.front } else { c.back })
+                && matches!(
+                    (c.mode, value),
+                    (ColorMaterialMode::Ambient, MaterialValue::Ambient)
+                        | (ColorMaterialMode::Diffuse, MaterialValue::Diffuse)
+                        | (ColorMaterialMode::Specular, MaterialValue::Specular)
+                        | (ColorMaterialMode::Emission, MaterialValue::Emission)
+                        | (ColorMaterialMode::AmbientAndDiffuse, MaterialValue::Ambient)
+                        | (ColorMaterialMode::AmbientAndDiffuse, MaterialValue::Diffuse)
+                )
+        });
+        if tracks {
+            Some(self.color.to_string())
+        } else {
+            vertex_material(w, self.per_vertex, face, value)
+        }
     }
 }
 
@@ -405,25 +403,19 @@ fn emit_face(
     n: &str,
     out: [&str; 2],
 ) {
-    let (cm, per_vertex) = (lighting.color_material, lighting.vertex_materials);
-    let color = inputs.color;
-    let varying =
-        |w: &mut GlslWriter, value| varying_material(w, cm, per_vertex, color, face, value);
-    let emission = varying(w, MaterialValue::Emission);
-    let ambient = varying(w, MaterialValue::Ambient);
-    let diffuse = material(w, cm, per_vertex, color, face, MaterialValue::Diffuse);
+    let m = FaceMaterial::of(lighting, inputs.color, face);
+    let diffuse = m.value(w, MaterialValue::Diffuse);
     let c = format!("c{face}");
     // e_m + a_m·a_cs: the CPU's sum (`UniformSource::SceneColor`) unless a term varies.
-    let scene_color = if emission.is_none() && ambient.is_none() {
-        format!("{}.rgb", w.uniform(UniformSource::SceneColor(face)))
-    } else {
-        let state = |w: &mut GlslWriter, v: Option<String>, value| {
-            v.unwrap_or_else(|| w.uniform(UniformSource::Material(face, value)))
-        };
-        let emission = state(w, emission, MaterialValue::Emission);
-        let ambient = state(w, ambient, MaterialValue::Ambient);
+    let varies = m.varying(w, MaterialValue::Emission).is_some()
+        || m.varying(w, MaterialValue::Ambient).is_some();
+    let scene_color = if varies {
+        let emission = m.value(w, MaterialValue::Emission);
+        let ambient = m.value(w, MaterialValue::Ambient);
         let scene = w.uniform(UniformSource::LightModelAmbient);
         format!("{emission}.rgb + {ambient}.rgb * {scene}.rgb")
+    } else {
+        format!("{}.rgb", w.uniform(UniformSource::SceneColor(face)))
     };
     w.line(format!("vec3 {c} = {scene_color};"));
     let secondary = format!("s{face}");
@@ -458,9 +450,10 @@ fn emit_light(
     let (e, color) = (inputs.eye, inputs.color);
     let i = l.index;
     let u = |w: &mut GlslWriter, v| w.uniform(UniformSource::Light(i, v));
-    let ambient = light_product(w, lighting, color, face, i, ColorTerm::Ambient);
-    let diffuse = light_product(w, lighting, color, face, i, ColorTerm::Diffuse);
-    let specular_product = light_product(w, lighting, color, face, i, ColorTerm::Specular);
+    let m = FaceMaterial::of(lighting, color, face);
+    let ambient = m.light_product(w, i, ColorTerm::Ambient);
+    let diffuse = m.light_product(w, i, ColorTerm::Diffuse);
+    let specular_product = m.light_product(w, i, ColorTerm::Specular);
     let shin = vertex_material(w, lighting.vertex_materials, face, MaterialValue::Shininess)
         .unwrap_or_else(|| w.uniform(UniformSource::Material(face, MaterialValue::Shininess)));
     let v = format!("l{i}_{face}");
