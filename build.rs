@@ -77,6 +77,14 @@ fn main() {
         let _ = writeln!(enums, "    (\"{n}\", {v:#x}),");
     }
     enums.push_str("];\n");
+    // The same by value, then name: the names a token has (`ff::glenum::names_of`).
+    let mut by_value: Vec<&(String, u32)> = names.iter().collect();
+    by_value.sort_by(|a, b| (a.1, &a.0).cmp(&(b.1, &b.0)));
+    enums.push_str("pub const BY_VALUE: &[(u32, &str)] = &[\n");
+    for (n, v) in by_value {
+        let _ = writeln!(enums, "    ({v:#x}, \"{n}\"),");
+    }
+    enums.push_str("];\n");
     fs::write(Path::new(&out).join("gl_enums.rs"), enums).expect("OUT_DIR is writable");
     // The C library answers to the name programs link against.
     println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libOSMesa.so.8");

@@ -15,7 +15,7 @@ use std::sync::Arc;
 use crate::ff::api::{CType, Entry};
 use crate::ff::args::{Args, PixelShape};
 use crate::ff::client::{ArrayData, ClientMemory};
-use crate::ff::glenum::{value_of, Family, GlEnum};
+use crate::ff::glenum::{pname_of, value_of, Family, GlEnum};
 use crate::ff::pixel_layout;
 use crate::ff::pixel_store::Packing;
 use crate::ff::{GlErrorKind, TexData};
@@ -246,11 +246,7 @@ impl Args for CCall<'_> {
     }
     fn pname(&self, i: usize, pnames: &[&'static str]) -> Result<&'static str, GlErrorKind> {
         let v = self.token(i).ok_or(GlErrorKind::InvalidEnum)?;
-        pnames
-            .iter()
-            .find(|p| value_of(p) == Some(v))
-            .copied()
-            .ok_or(GlErrorKind::InvalidEnum)
+        pname_of(v, pnames).ok_or(GlErrorKind::InvalidEnum)
     }
     fn family(&self, i: usize, f: Family) -> Result<u8, GlErrorKind> {
         self.token(i)

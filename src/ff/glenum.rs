@@ -77,6 +77,26 @@ pub fn value_of(name: &str) -> Option<u32> {
         .map(|i| registry::BY_NAME[i].1)
 }
 
+/// The names of token `value` in the registry (aliases: GL_TEXTURE_COMPARE_MODE and
+/// GL_TEXTURE_COMPARE_MODE_ARB are one value), by a binary search of the table by value.
+pub fn names_of(value: u32) -> impl Iterator<Item = &'static str> {
+    let table = registry::BY_VALUE;
+    let start = table.partition_point(|(v, _)| *v < value);
+    table[start..]
+        .iter()
+        .take_while(move |(v, _)| *v == value)
+        .map(|(_, n)| *n)
+}
+
+/// The first name in `pnames` that token `value` has, if any (in `pnames`' order, as a
+/// search of `value_of` over them finds it).
+pub fn pname_of(value: u32, pnames: &[&'static str]) -> Option<&'static str> {
+    pnames
+        .iter()
+        .find(|p| names_of(value).any(|n| n == **p))
+        .copied()
+}
+
 /// GL_LIGHTi.
 pub fn light(i: u8) -> u32 {
     registry::LIGHT0 + u32::from(i)
@@ -798,6 +818,28 @@ gl_enums!(RenderbufferFormat {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every name's value leads back to the name, aliases included, and a pname search
+    /// finds the first listed name the token has.
+    #[test]
+    fn names_of_a_value_are_the_names_with_that_value() {
+        for (name, value) in registry::BY_NAME {
+            assert!(names_of(*value).any(|n| n == *name), "{name}");
+        }
+        let compare: Vec<_> = names_of(registry::TEXTURE_COMPARE_MODE).collect();
+        assert!(compare.contains(&"GL_TEXTURE_COMPARE_MODE"), "{compare:?}");
+        assert!(
+            compare.contains(&"GL_TEXTURE_COMPARE_MODE_ARB"),
+            "{compare:?}"
+        );
+        let listed = ["GL_TEXTURE_COMPARE_MODE_ARB", "GL_TEXTURE_COMPARE_MODE"];
+        assert_eq!(
+            pname_of(registry::TEXTURE_COMPARE_MODE, &listed),
+            Some("GL_TEXTURE_COMPARE_MODE_ARB")
+        );
+        assert_eq!(pname_of(registry::AMBIENT, &listed), None);
+        assert_eq!(names_of(0xFFFF_FFF0).count(), 0);
+    }
 
     /// Each value's canonical name and number are the registry's pair.
     #[test]

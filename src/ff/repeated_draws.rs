@@ -24,12 +24,13 @@ use super::args::Args;
 use super::buffers::Buffers;
 use super::client::{ArrayData, ClientArrays, ClientMemory};
 use super::geometry::{Geometry, Primitive};
+use super::glenum::registry;
 
-/// glDrawElements' index types and their sizes in bytes.
-const INDEX_TYPES: [(&str, usize); 3] = [
-    ("GL_UNSIGNED_BYTE", 1),
-    ("GL_UNSIGNED_SHORT", 2),
-    ("GL_UNSIGNED_INT", 4),
+/// glDrawElements' index types: name, token and size in bytes.
+const INDEX_TYPES: [(&str, u32, usize); 3] = [
+    ("GL_UNSIGNED_BYTE", registry::UNSIGNED_BYTE, 1),
+    ("GL_UNSIGNED_SHORT", registry::UNSIGNED_SHORT, 2),
+    ("GL_UNSIGNED_INT", registry::UNSIGNED_INT, 4),
 ];
 
 /// How many draws are remembered (the most recent ones).
@@ -40,9 +41,10 @@ pub const REMEMBERED: usize = 64;
 /// (a comparison as long as the copy it replaces would gain little).
 pub const MAX_COPIED_BYTES: usize = 64 << 20;
 
-/// What a draw reads besides the buffers' stores and the program's memory.
+/// What a draw reads besides the buffers' stores and the program's memory. A lookup
+/// borrows the client arrays (`Key<&ClientArrays>`); only a draw remembered copies them.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Key {
+pub struct Key<Arrays = ClientArrays> {
     entry: Entry,
     mode: Primitive,
     /// first and count (glDrawArrays); count (glDrawElements); count, start and end
@@ -52,10 +54,34 @@ pub struct Key {
     ty: Option<(&'static str, usize)>,
     /// The indices: program memory, or an offset into the element buffer.
     indices: Option<ArrayData>,
-    arrays: ClientArrays,
+    arrays: Arrays,
+}
+
+impl Key<&ClientArrays> {
+    /// The key a remembered draw keeps.
+    fn owned(self) -> Key {
+        Key {
+            entry: self.entry,
+            mode: self.mode,
+            counts: self.counts,
+            ty: self.ty,
+            indices: self.indices,
+            arrays: self.arrays.clone(),
+        }
+    }
 }
 
 impl Key {
+    /// Whether this remembered key is the looked-up `k`.
+    fn is(&self, k: &Key<&ClientArrays>) -> bool {
+        self.entry == k.entry
+            && self.mode == k.mode
+            && self.counts == k.counts
+            && self.ty == k.ty
+            && self.indices == k.indices
+            && self.arrays == *k.arrays
+    }
+
     /// Whether any array or the indices are in a buffer object.
     fn reads_buffer(&self) -> bool {
         self.arrays
@@ -147,10 +173,10 @@ impl RepeatedDraws {
             .last
             .iter()
             .rev()
-            .find(|r| r.key == key && r.snapshots.iter().all(|snap| snap.holds(mem)))
+            .find(|r| r.key.is(&key) && r.snapshots.iter().all(|snap| snap.holds(mem)))
         {
             Some(r) => Lookup::Repeat(Arc::clone(&r.geometry)),
-            None => Lookup::New(Some(Box::new(key))),
+            None => Lookup::New(Some(Box::new(key.owned()))),
         }
     }
 
@@ -185,12 +211,17 @@ impl RepeatedDraws {
 
 /// The key of draw `c`: `None` for a call other than the three draws, or a draw that
 /// reads a buffer that is mapped (or gone).
-fn key_of<A: Args>(c: &A, arrays: &ClientArrays, buffers: &Buffers) -> Option<Key> {
+fn key_of<'a, A: Args>(
+    c: &A,
+    arrays: &'a ClientArrays,
+    buffers: &Buffers,
+) -> Option<Key<&'a ClientArrays>> {
     let entry = c.entry();
     let mode: Primitive = c.enm(0).ok()?;
     let index_type = |i: usize| {
-        let name = c.pname(i, &INDEX_TYPES.map(|(n, _)| n)).ok()?;
-        INDEX_TYPES.into_iter().find(|(n, _)| *n == name)
+        let token = c.token(i).ok()?;
+        let (name, _, size) = INDEX_TYPES.into_iter().find(|(_, t, _)| *t == token)?;
+        Some((name, size))
     };
     let element = buffers.bound.element;
     let (counts, ty, indices) = match entry {
@@ -230,7 +261,7 @@ fn key_of<A: Args>(c: &A, arrays: &ClientArrays, buffers: &Buffers) -> Option<Ke
         counts,
         ty,
         indices,
-        arrays: arrays.clone(),
+        arrays,
     })
 }
 

@@ -221,11 +221,20 @@ impl Emulate {
             passes.retain(|p| !p.draws_lines);
         }
         // The geometry's own passes read its per-vertex materials; dashes, drawn from window
-        // positions without them, take the material state.
-        let mut own = base.clone();
+        // positions without them, take the material state (the base key kept only for
+        // them; the last pass takes the key itself).
+        let (mut own, base) = match outline {
+            Some(_) => (base.clone(), Some(base)),
+            None => (base, None),
+        };
         own.with_vertex_materials(geometry)?;
-        for pass in passes {
-            let mut key = own.clone();
+        let mut own = Some(own);
+        let mut passes = passes.into_iter().peekable();
+        while let Some(pass) = passes.next() {
+            let next = passes.peek().is_some();
+            let Some(mut key) = (if next { own.clone() } else { own.take() }) else {
+                break;
+            };
             key.fragment.edges = pass.edges;
             key.vertex.point_size = pass.draws_points().then_some(points);
             key.fragment.point_coverage = pass.draws_points() && points.shape == PointShape::Round;
@@ -237,9 +246,10 @@ impl Emulate {
             pass.cull = None;
             pass.edges = None;
             pass.offset = false;
-            let mut key = base;
-            key.vertex.positions = PositionSource::Window;
-            self.draw_pass(gl, state, &key, &pass, Drawn::Dashes(geometry, &dashes))?;
+            if let Some(mut key) = base {
+                key.vertex.positions = PositionSource::Window;
+                self.draw_pass(gl, state, &key, &pass, Drawn::Dashes(geometry, &dashes))?;
+            }
         }
         Ok(())
     }
