@@ -142,14 +142,33 @@ impl Winding {
     }
 }
 
-/// Each whole triangle's first two corners swapped (`Winding::Reversed`); a partial
-/// triangle at the end, which GL draws nothing of, is kept as it is.
-fn reversed_triangles<T: Copy>(indices: &[T]) -> Vec<T> {
-    let mut out = indices.to_vec();
-    for t in out.chunks_exact_mut(3) {
+/// `indices`, then with `reverse` their copy with each whole triangle's first two corners
+/// swapped (`Winding::Reversed`; a partial triangle at the end, which GL draws nothing of,
+/// kept as it is).
+fn indices_and_reversed<T: Copy>(indices: &[T], reverse: bool) -> std::borrow::Cow<'_, [T]> {
+    if !reverse {
+        return std::borrow::Cow::Borrowed(indices);
+    }
+    let mut all = Vec::with_capacity(2 * indices.len());
+    all.extend_from_slice(indices);
+    all.extend_from_slice(indices);
+    for t in all[indices.len()..].chunks_exact_mut(3) {
         t.swap(0, 1);
     }
-    out
+    std::borrow::Cow::Owned(all)
+}
+
+/// Uploads [`indices_and_reversed`] into the bound element buffer.
+fn upload_indices<T: bytemuck::Pod>(gl: &glow::Context, indices: &[T], reverse: bool) {
+    let data = indices_and_reversed(indices, reverse);
+    // SAFETY: a plain GL call on the current context; the data is sized by itself.
+    unsafe {
+        gl.buffer_data_u8_slice(
+            glow::ELEMENT_ARRAY_BUFFER,
+            bytemuck::cast_slice(&data),
+            glow::STATIC_DRAW,
+        )
+    };
 }
 
 /// The core mode of the primitives core GL draws itself; `None` for the split ones.
@@ -349,39 +368,29 @@ impl GpuGeometry {
                     let ebo = gl.create_buffer().map_err(PipelineError::Object)?;
                     gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ebo));
                     let short = crate::ff::max_index(indices) <= u32::from(u16::MAX);
-                    let triangles = mode == glow::TRIANGLES && indices.len() >= 3;
-                    // The indices, then their reversed copy for TRIANGLES (`Winding`).
-                    fn both<T: Copy + bytemuck::Pod>(v: Vec<T>, reverse: bool) -> Vec<T> {
-                        if !reverse {
-                            return v;
-                        }
-                        let mut out = reversed_triangles(&v);
-                        out.splice(0..0, v);
-                        out
-                    }
-                    let (index_type, size) = if short {
-                        let narrow: Vec<u16> = indices.iter().map(|&i| i as u16).collect();
-                        gl.buffer_data_u8_slice(
-                            glow::ELEMENT_ARRAY_BUFFER,
-                            bytemuck::cast_slice(&both(narrow, triangles)),
-                            glow::STATIC_DRAW,
-                        );
-                        (glow::UNSIGNED_SHORT, 2)
-                    } else {
-                        gl.buffer_data_u8_slice(
-                            glow::ELEMENT_ARRAY_BUFFER,
-                            bytemuck::cast_slice(&both(indices.clone(), triangles)),
-                            glow::STATIC_DRAW,
-                        );
-                        (glow::UNSIGNED_INT, 4)
+                    let (index_type, size) = match short {
+                        true => (glow::UNSIGNED_SHORT, 2),
+                        false => (glow::UNSIGNED_INT, 4),
                     };
-                    buffers.push(ebo);
                     let count = count(indices.len());
+                    // TRIANGLES: the indices, then their reversed copy (`Winding`), from
+                    // byte count × size (when GL's offset can name it).
+                    let reversed_at = (mode == glow::TRIANGLES && count >= 3)
+                        .then(|| count.checked_mul(size))
+                        .flatten();
+                    let reverse = reversed_at.is_some();
+                    if short {
+                        let narrow: Vec<u16> = indices.iter().map(|&i| i as u16).collect();
+                        upload_indices(gl, &narrow, reverse);
+                    } else {
+                        upload_indices(gl, indices, reverse);
+                    }
+                    buffers.push(ebo);
                     Shape::Elements {
                         mode,
                         count,
                         index_type,
-                        reversed_at: triangles.then(|| count.saturating_mul(size)),
+                        reversed_at,
                     }
                 }
                 (Some(mode), None) => Shape::Arrays {
@@ -680,11 +689,13 @@ mod tests {
 
     #[test]
     fn reversed_triangles_swap_their_first_two_corners() {
+        let given = [0u16, 1, 2, 3, 4, 5, 6, 7];
         assert_eq!(
-            reversed_triangles(&[0u16, 1, 2, 3, 4, 5, 6, 7]),
-            [1, 0, 2, 4, 3, 5, 6, 7]
+            *indices_and_reversed(&given, true),
+            [0, 1, 2, 3, 4, 5, 6, 7, 1, 0, 2, 4, 3, 5, 6, 7]
         );
-        assert!(reversed_triangles::<u32>(&[]).is_empty());
+        assert_eq!(*indices_and_reversed(&given, false), given);
+        assert!(indices_and_reversed::<u32>(&[], true).is_empty());
     }
 
     /// Reversed exactly where a filled pass keeps only faces counter-clockwise in GL's
