@@ -647,84 +647,63 @@ impl Context {
         if self.tracing {
             super::trace::flush();
         }
-        let Some(buffer) = self.buffer else {
+        let (Some(target), Some(buffer)) = (&self.target, self.buffer) else {
             return;
         };
-        if self.write_back_direct(buffer) {
-            return;
+        let (w, h) = (buffer.width as usize, buffer.height as usize);
+        let row_pixels = if self.row_length > 0 {
+            self.row_length as usize
+        } else {
+            w
+        };
+        let storage = target.spec().color;
+        // A buffer with GL's layout — bytes of RGBA or BGRA order, rows bottom first
+        // (OSMESA_Y_UP, the default), ROW_LENGTH as PACK_ROW_LENGTH — is filled by
+        // glReadPixels itself: one copy instead of a read and a reordering one (256 KiB a
+        // frame for 256×256). Any other is read into `readback` and reordered.
+        let direct = match self.format {
+            ColorFormat::Rgba => Some(glow::RGBA),
+            ColorFormat::Bgra => Some(glow::BGRA),
+            _ => None,
         }
-        let Some(target) = &self.target else {
-            return;
-        };
+        .filter(|_| storage == ColorStorage::Rgba8 && self.y_up && w > 0 && h > 0);
         let mut rows = std::mem::take(&mut self.readback);
-        let read = target.read_color_stored_into(&self.gpu, &mut rows);
-        let size = target.spec().color.component_bytes();
+        let read = match direct {
+            Some(format) => {
+                let len = ((h - 1) * row_pixels + w) * 4;
+                // SAFETY: the caller's buffer holds height rows of ROW_LENGTH pixels of 4
+                // bytes (OSMesaMakeCurrent's contract); the read writes the first `width`
+                // of each.
+                let out = unsafe { std::slice::from_raw_parts_mut(buffer.ptr.cast::<u8>(), len) };
+                target.read_color_bytes_into_rows(&self.gpu, format, row_pixels, out)
+            }
+            None => target.read_color_stored_into(&self.gpu, &mut rows),
+        };
         // The read bound the target: the pipeline binds the program's framebuffers again.
         if let Some(p) = self.pipeline.as_mut() {
             p.forget_sent_state();
         }
-        if let Err(e) = read {
+        if let Err(e) = &read {
             eprintln!("fixedfunc: reading the image back failed: {e}");
-            self.readback = rows;
-            return;
         }
-        let (w, h) = (buffer.width as usize, buffer.height as usize);
-        let bpp = self.format.bytes() * size;
-        let row_pixels = if self.row_length > 0 {
-            self.row_length as usize
-        } else {
-            w
-        };
-        // `rows` is GL's order, row y from the bottom; Y_UP keeps that order.
-        for (y, src) in rows.chunks_exact(w * 4 * size).enumerate().take(h) {
-            let dst_row = if self.y_up { y } else { h - 1 - y };
-            // SAFETY: the caller's buffer holds height rows of ROW_LENGTH pixels in its
-            // format (OSMesaMakeCurrent's contract).
-            let dst = unsafe {
-                std::slice::from_raw_parts_mut(
-                    buffer.ptr.cast::<u8>().add(dst_row * row_pixels * bpp),
-                    w * bpp,
-                )
-            };
-            self.format.write_row(src, dst, size);
+        if read.is_ok() && direct.is_none() {
+            let size = storage.component_bytes();
+            let bpp = self.format.bytes() * size;
+            // `rows` is GL's order, row y from the bottom; Y_UP keeps that order.
+            for (y, src) in rows.chunks_exact(w * 4 * size).enumerate().take(h) {
+                let dst_row = if self.y_up { y } else { h - 1 - y };
+                // SAFETY: the caller's buffer holds height rows of ROW_LENGTH pixels in its
+                // format (OSMesaMakeCurrent's contract).
+                let dst = unsafe {
+                    std::slice::from_raw_parts_mut(
+                        buffer.ptr.cast::<u8>().add(dst_row * row_pixels * bpp),
+                        w * bpp,
+                    )
+                };
+                self.format.write_row(src, dst, size);
+            }
         }
         self.readback = rows;
-    }
-
-    /// The image read by GL straight into the caller's buffer, where the buffer has GL's
-    /// layout: bytes of RGBA or BGRA order, rows bottom first (OSMESA_Y_UP, the default),
-    /// ROW_LENGTH as PACK_ROW_LENGTH. One copy instead of a read and a reordering one
-    /// (256 KiB a frame for 256×256). False when the buffer needs the reordering path.
-    fn write_back_direct(&mut self, buffer: ClientBuffer) -> bool {
-        let format = match self.format {
-            ColorFormat::Rgba => glow::RGBA,
-            ColorFormat::Bgra => glow::BGRA,
-            _ => return false,
-        };
-        let Some(target) = &self.target else {
-            return false;
-        };
-        let (w, h) = (buffer.width as usize, buffer.height as usize);
-        if target.spec().color != ColorStorage::Rgba8 || !self.y_up || w == 0 || h == 0 {
-            return false;
-        }
-        let row_pixels = if self.row_length > 0 {
-            self.row_length as usize
-        } else {
-            w
-        };
-        let len = ((h - 1) * row_pixels + w) * 4;
-        // SAFETY: the caller's buffer holds height rows of ROW_LENGTH pixels of 4 bytes
-        // (OSMesaMakeCurrent's contract); the read writes the first `width` of each.
-        let out = unsafe { std::slice::from_raw_parts_mut(buffer.ptr.cast::<u8>(), len) };
-        let read = target.read_color_bytes_into_rows(&self.gpu, format, row_pixels, out);
-        if let Some(p) = self.pipeline.as_mut() {
-            p.forget_sent_state();
-        }
-        if let Err(e) = read {
-            eprintln!("fixedfunc: reading the image back failed: {e}");
-        }
-        true
     }
 
     /// The depth buffer as OSMesaGetDepthBuffer gives it: (width, height, bytes per value).

@@ -13,7 +13,7 @@ use super::client::{type_token, ArrayData};
 use super::client_attrib::MAX_CLIENT_ATTRIB_STACK_DEPTH;
 use super::front::{Client, Reply};
 use super::glenum::GlEnum;
-use super::glenum::{registry as r, value_of, Family};
+use super::glenum::{pname_of, registry as r, value_of, Family};
 use super::lists::{ListMode, MAX_LIST_NESTING};
 use super::pixel_map::PixelMapName;
 use super::pixel_store::PNAMES;
@@ -271,7 +271,7 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
         return Some(vec![QueryValue::Bool(on)]);
     }
     // Table 6.20: every pixel-store parameter; SWAP_BYTES and LSB_FIRST are booleans.
-    if let Some(name) = PNAMES.iter().find(|n| value_of(n) == Some(pname)) {
+    if let Some(name) = pname_of(pname, PNAMES) {
         let v = c.pixel_store.get(name)?;
         return Some(vec![
             if name.ends_with("SWAP_BYTES") || name.ends_with("LSB_FIRST") {

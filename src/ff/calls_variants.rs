@@ -19,7 +19,7 @@ use super::calls::{
 use super::client::ArrayData;
 use super::command::TexData;
 use super::error::GlErrorKind;
-use super::glenum::{value_of, Family, GlEnum};
+use super::glenum::{pname_of, value_of, Family, GlEnum};
 use super::*;
 
 /// A colour of four signed integers (Table 2.9).
@@ -216,10 +216,8 @@ impl<A: Args> Args for ScalarAt<'_, A> {
         if i != self.at {
             return self.inner.pname(i, pnames);
         }
-        pnames
-            .iter()
-            .find(|p| value_of(p) == self.token_value())
-            .copied()
+        self.token_value()
+            .and_then(|v| pname_of(v, pnames))
             .ok_or_else(|| self.inner.unknown(i, pnames.to_vec()))
     }
     fn family(&self, i: usize, f: Family) -> Result<u8, A::Error> {

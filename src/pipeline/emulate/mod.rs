@@ -274,12 +274,7 @@ impl Emulate {
             .collect();
         self.textures.bind_units(gl, state, &units)?;
         match drawn {
-            Drawn::Geometry(g) => {
-                let gpu = self.geometry.get(gl, g)?;
-                let winding = gpu.winding(pass, state);
-                self.raster.sync(gl, state, Some(pass), winding);
-                gpu.draw(gl, &mut self.sent, state, winding);
-            }
+            Drawn::Geometry(g) => self.draw_geometry(gl, state, pass, g)?,
             Drawn::Dashes(g, d) => {
                 self.raster.sync(gl, state, Some(pass), Winding::AsGiven);
                 dashes::draw(gl, &mut self.sent, state, g, d)?;
@@ -310,11 +305,24 @@ impl Emulate {
             polygon::Outline::of(geometry),
         );
         for pass in passes {
-            let gpu = self.geometry.get(gl, geometry)?;
-            let winding = gpu.winding(&pass, state);
-            self.raster.sync(gl, state, Some(&pass), winding);
-            gpu.draw(gl, &mut self.sent, state, winding);
+            self.draw_geometry(gl, state, &pass, geometry)?;
         }
+        Ok(())
+    }
+
+    /// The raster state of `pass` synced and the geometry drawn, in the corner order the
+    /// pass draws it with (`draw::Winding`, which core GL's front face follows).
+    fn draw_geometry(
+        &mut self,
+        gl: &glow::Context,
+        state: &FixedState,
+        pass: &polygon::PolygonPass,
+        geometry: &Arc<Geometry>,
+    ) -> Result<(), PipelineError> {
+        let gpu = self.geometry.get(gl, geometry)?;
+        let winding = gpu.winding(pass, state);
+        self.raster.sync(gl, state, Some(pass), winding);
+        gpu.draw(gl, &mut self.sent, state, winding);
         Ok(())
     }
 
