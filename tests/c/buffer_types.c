@@ -10,6 +10,7 @@
  * usage: buffer_types */
 #include <GL/osmesa.h>
 #include <stdio.h>
+#include <string.h>
 
 #define W 8
 #define H 8
@@ -127,6 +128,29 @@ int main(void) {
     printf("%-24s 0x%04x 0x%04x 0x%04x\n", "565 flat clear smooth", b565[1 * W + 1],
            b565[3 * W + W - 1], b565[7 * W + 3]);
     OSMesaDestroyContext(ctx);
+  }
+  /* OSMESA_ROW_LENGTH and OSMESA_Y_UP on a byte buffer, RGBA and BGRA: rows of W + 3
+   * pixels, the 3 beyond the image left as they were (0xAB); then row 0 at the top. */
+  {
+    enum { R = W + 3 };
+    static GLubyte padded[R * H * 4];
+    static const GLenum fmts[] = {OSMESA_RGBA, OSMESA_BGRA};
+    for (int f = 0; f < 2; f++)
+      for (int up = 1; up >= 0; up--) {
+        memset(padded, 0xAB, sizeof padded);
+        OSMesaContext ctx = OSMesaCreateContextExt(fmts[f], 24, 8, 0, NULL);
+        if (!ctx || !OSMesaMakeCurrent(ctx, padded, GL_UNSIGNED_BYTE, W, H)) return 1;
+        OSMesaPixelStore(OSMESA_ROW_LENGTH, R);
+        OSMesaPixelStore(OSMESA_Y_UP, up);
+        draw();
+        const GLubyte *flat = padded + ((up ? 1 : H - 2) * R + 1) * 4;
+        const GLubyte *smooth = padded + ((up ? 7 : 0) * R + 3) * 4;
+        const GLubyte *pad = padded + (2 * R + W) * 4;
+        printf("%s y_up %d: flat %u %u %u %u smooth %u %u %u %u pad %u %u\n",
+               f ? "BGRA" : "RGBA", up, flat[0], flat[1], flat[2], flat[3], smooth[0],
+               smooth[1], smooth[2], smooth[3], pad[0], pad[11]);
+        OSMesaDestroyContext(ctx);
+      }
   }
   return 0;
 }
