@@ -35,7 +35,9 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
     } else {
         w.line("vec4 primary = v_color;");
     }
-    w.line("primary = clamp(primary, 0.0, 1.0);");
+    // No clamp here: the vertex stage saturates every colour it writes, and interpolation
+    // (and the clipper's) is a convex combination, so primary is in [0, 1] already, as in
+    // Mesa's fixed-function fragment program, which does not clamp its colour input.
     if let Some(source) = key.pixels {
         super::pixels::emit(&mut w, source);
     }
