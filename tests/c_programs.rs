@@ -1153,3 +1153,44 @@ fn compressed_textures_decode_and_answer_as_on_mesa() {
         "64x32",
     );
 }
+
+/// `tests/c/quad_splits.c`: the diagonal of GL_QUADS as Mesa splits them — (v0,v1,v2),
+/// (v0,v2,v3) for smooth quads drawn directly, (v0,v1,v3),(v1,v2,v3) for quads from a
+/// display list and for flat-shaded ones (`emulate::assembly`, `ff::lists`); the sampled
+/// grey levels printed as Mesa prints them, images within 3/255 on all but 0.2% of pixels.
+#[test]
+fn quads_split_along_mesas_diagonal_in_lists_and_under_flat_shading() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("quad_splits");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "smooth, glBegin/glEnd        below  64  64  64  above   0   0   0  lit  780  err 0x0",
+            "smooth, list of glBegin      below 150 150 150  above  86  86  86  lit 1600  err 0x0",
+            "flat bow-tie, glDrawArrays   below 255 255   0  above 255 255   0  lit 1200  err 0x0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 7, "a quad's split");
+    let strict = Tolerance {
+        per_channel: 3,
+        max_bad_pixels: (mesa.width() * mesa.height()) as usize / 500,
+    };
+    assert_images_match("quad_splits", &ours, &mesa, strict);
+}
+
+/// `tests/c/conversions.c`: glColor of every integer type read back as exact floats and
+/// integers (Mesa's single-precision macros, `CType::normalized`), signed colour arrays
+/// fetched as SNORM (a zero byte stays zero, `CType::normalized_array`), and NaN line
+/// widths and point sizes kept (NaN is not ≤ 0): printed as Mesa prints them, bit for bit.
+#[test]
+fn integer_colours_and_nan_sizes_convert_as_on_mesa() {
+    let (mesa_text, ours_text) = texts("conversions");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "GL_BYTE array            255   0 129   0  err 0x0",
+            "glLineWidth(NaN)         nan  err 0x0",
+            "glPointSize(-1)          nan  err 0x501",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 13, "a converted value");
+}

@@ -974,24 +974,39 @@ impl CType {
         !matches!(self, CType::Float | CType::Double)
     }
 
-    /// A colour or normal component from this type (GL 1.5 Table 2.9, Mesa's
-    /// BYTE_TO_FLOAT…): unsigned c/(2ⁿ − 1); signed (2c + 1)/(2ⁿ − 1); floats as they are.
+    /// A colour or normal component from this type as a call gives it (GL 1.5 Table 2.9),
+    /// computed as Mesa's macros compute it (main/macros.h), in single precision where
+    /// they are: ubyte c/255; byte (2c + 1)·(1/255); ushort c·(1/65535); short
+    /// (2c + 1)·(1/65535); uint c·(1/(2³² − 1)) and int (2c + 1)·(1/(2³² − 2)) in double
+    /// precision from a single-precision 2c + 1; floats as they are.
     pub fn normalized(self, c: f64) -> f32 {
-        let (bits, signed) = match self {
-            CType::Byte => (8, true),
-            CType::UByte => (8, false),
-            CType::Short => (16, true),
-            CType::UShort => (16, false),
-            CType::Int => (32, true),
-            CType::UInt => (32, false),
-            CType::Float | CType::Double => return c as f32,
-        };
-        let max = 2f64.powi(bits) - 1.0;
-        (if signed {
-            (2.0 * c + 1.0) / max
-        } else {
-            c / max
-        }) as f32
+        let f = c as f32;
+        match self {
+            CType::UByte => f / 255.0,
+            CType::Byte => (2.0 * f + 1.0) * (1.0 / 255.0),
+            CType::UShort => f * (1.0 / 65535.0),
+            CType::Short => (2.0 * f + 1.0) * (1.0 / 65535.0),
+            CType::UInt => (c * (1.0 / 4294967295.0)) as f32,
+            CType::Int => (f64::from(2.0 * f + 1.0) * (1.0 / 4294967294.0)) as f32,
+            CType::Float | CType::Double => f,
+        }
+    }
+
+    /// A colour or normal component read from a client array of this type: the array is
+    /// fetched as a normalised vertex format (Mesa's state tracker names GL_BYTE arrays
+    /// R8…_SNORM), so unsigned c/(2ⁿ − 1) and signed max(c/(2ⁿ⁻¹ − 1), −1) — the signed
+    /// rule of GL 4.2, where a zero stays zero, not Table 2.9's (2c + 1)/(2ⁿ − 1).
+    pub fn normalized_array(self, c: f64) -> f32 {
+        let signed = |bits: i32| (c / (2f64.powi(bits - 1) - 1.0)).max(-1.0) as f32;
+        match self {
+            CType::Byte => signed(8),
+            CType::Short => signed(16),
+            CType::Int => signed(32),
+            CType::UByte => (c / 255.0) as f32,
+            CType::UShort => (c / 65535.0) as f32,
+            CType::UInt => (c / 4294967295.0) as f32,
+            CType::Float | CType::Double => c as f32,
+        }
     }
 }
 
@@ -1325,7 +1340,14 @@ mod tests {
         assert_eq!(CType::UByte.normalized(255.0), 1.0);
         assert_eq!(CType::Byte.normalized(127.0), 1.0);
         assert_eq!(CType::Byte.normalized(-128.0), -1.0);
-        assert_eq!(CType::Short.normalized(0.0), (1.0 / 65535.0) as f32);
+        assert_eq!(CType::Short.normalized(0.0), 1.0 / 65535.0);
+        // Mesa's single-precision products, not the nearest float to the quotient.
+        assert_eq!(CType::Byte.normalized(1.0), 3.0 * (1.0f32 / 255.0));
+        assert_eq!(CType::UShort.normalized(257.0), 257.0 * (1.0f32 / 65535.0));
+        assert_eq!(CType::Byte.normalized_array(0.0), 0.0);
+        assert_eq!(CType::Byte.normalized_array(-128.0), -1.0);
+        assert_eq!(CType::Short.normalized_array(32767.0), 1.0);
+        assert_eq!(CType::UByte.normalized_array(255.0), 1.0);
     }
 
     #[test]

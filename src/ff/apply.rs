@@ -664,11 +664,13 @@ fn check_viewport(v: Viewport) -> GlResult<Viewport> {
     Ok(v)
 }
 
+/// A width or size GL refuses when ≤ 0 (GL 1.5 §3.4, §3.3): NaN is not ≤ 0, so it is
+/// kept, as Mesa keeps it (it then draws one pixel wide).
 fn positive(v: f32, rule: &'static str) -> GlResult<f32> {
-    if v > 0.0 {
-        Ok(v)
-    } else {
+    if v <= 0.0 {
         Err(GlError::invalid_value(rule))
+    } else {
+        Ok(v)
     }
 }
 

@@ -863,7 +863,7 @@ impl ClientArrays {
         if self.normal.enabled {
             let ty = self.normal.ty;
             let default = [0.0, 0.0, 1.0, 0.0];
-            let normalized = |x| ty.normalized(x);
+            let normalized = |x| ty.normalized_array(x);
             g.normals = Some(
                 self.normal
                     .components(mem, which, default, normalized, vec3),
@@ -871,7 +871,7 @@ impl ClientArrays {
         }
         if self.color.enabled {
             let ty = self.color.ty;
-            let normalized = |x| ty.normalized(x);
+            let normalized = |x| ty.normalized_array(x);
             let c = self
                 .color
                 .components(mem, which, XYZW, normalized, Vec4::from_array);
@@ -879,7 +879,7 @@ impl ClientArrays {
         }
         if self.secondary_color.enabled {
             let ty = self.secondary_color.ty;
-            let normalized = |x| ty.normalized(x);
+            let normalized = |x| ty.normalized_array(x);
             g.secondary_colors = Some(self.secondary_color.components(
                 mem,
                 which,

@@ -15,6 +15,7 @@ use std::sync::Arc;
 
 use super::api::Entry;
 use super::command::Command;
+use super::geometry::{Geometry, Primitive};
 use super::immediate::Op;
 use super::list_pairs::{assemble, Pair};
 use super::state::CurrentValues;
@@ -51,6 +52,32 @@ pub struct Lists {
     compiling: Option<(u32, ListMode, Vec<Item>)>,
     /// glListBase. GL default: 0.
     pub base: u32,
+}
+
+/// A listed QUADS draw made indexed (vertex i at index i), as Mesa's list compiler stores
+/// every draw of a list as one indexed draw from its vertex buffer: its quads then reach the
+/// rasteriser split (v0,v1,v3),(v1,v2,v3), like any indexed QUADS (`emulate::assembly`),
+/// where the same calls run outside a list split unclipped smooth quads (v0,v1,v2),(v0,v2,v3).
+fn indexed_quads(item: Item) -> Item {
+    let index = |g: &mut Arc<Geometry>| {
+        if g.primitive != Primitive::Quads || g.indices.is_some() {
+            return;
+        }
+        if let Ok(n) = u32::try_from(g.vertex_count()) {
+            Arc::make_mut(g).indices = Some((0..n).collect());
+        }
+    };
+    match item {
+        Item::Command(Command::Draw(mut g)) => {
+            index(&mut g);
+            Item::Command(Command::Draw(g))
+        }
+        Item::Pair(mut pair) => {
+            index(&mut pair.geometry);
+            Item::Pair(pair)
+        }
+        other => other,
+    }
 }
 
 /// Whether GL compiles `entry` into a list being made (the others run at once).
@@ -105,7 +132,8 @@ impl Lists {
     /// assembled.
     pub fn end(&mut self) -> Result<(), &'static str> {
         let (name, _, items) = self.compiling.take().ok_or("glEndList without glNewList")?;
-        self.lists.insert(name, Arc::new(assemble(items)));
+        let items = assemble(items).into_iter().map(indexed_quads).collect();
+        self.lists.insert(name, Arc::new(items));
         Ok(())
     }
 

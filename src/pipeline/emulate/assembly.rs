@@ -23,7 +23,9 @@
 //!   complete quads go in chunks of 1024 (4096 vertices): a chunk in which no vertex lies
 //!   outside the clip volume (|x|, |y|, |z| > w in clip coordinates; no guard band, a tenth
 //!   of a pixel out is enough) is split (v0,v1,v2),(v0,v2,v3) — the v0–v2 diagonal — and a
-//!   chunk with a vertex outside, v1–v3 like indexed quads. Lighting, flat shading, textures,
+//!   chunk with a vertex outside, v1–v3 like indexed quads. Under FLAT shading every quad is
+//!   v1–v3 (a non-convex or non-planar quad shows it; a convex planar one looks the same
+//!   either way). Lighting, textures,
 //!   two-sided lighting, culling and the polygon offset enables change nothing; the vertices
 //!   of a trailing partial quad are not looked at. The chunks were measured with arrays
 //!   (glBegin/glEnd gave the same images for every draw tried, up to 11 vertices). In
@@ -35,7 +37,7 @@ use std::ops::Range;
 
 use glam::{Mat4, Vec4};
 
-use crate::ff::{Geometry, Primitive};
+use crate::ff::{Geometry, Primitive, ShadeModel};
 
 /// The diagonal a quad is split along.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -112,16 +114,20 @@ pub fn clipped(mvp: Mat4, p: Vec4) -> bool {
     c.x.abs() > c.w || c.y.abs() > c.w || c.z.abs() > c.w || c.w.is_nan()
 }
 
-/// Mesa's diagonal for the complete quads of the QUADS draw `g` under `mvp`, as ranges of
-/// quad numbers: an indexed draw is all v1–v3; otherwise each chunk of `QUAD_CHUNK` quads is
-/// v0–v2 unless one of its vertices is clipped. Adjacent chunks with the same diagonal are
-/// merged.
-pub fn quad_diagonals(g: &Geometry, mvp: Mat4) -> Vec<(Range<usize>, Diagonal)> {
+/// Mesa's diagonal for the complete quads of the QUADS draw `g` under `mvp` and `shading`,
+/// as ranges of quad numbers: an indexed or flat-shaded draw is all v1–v3; otherwise each
+/// chunk of `QUAD_CHUNK` quads is v0–v2 unless one of its vertices is clipped. Adjacent
+/// chunks with the same diagonal are merged.
+pub fn quad_diagonals(
+    g: &Geometry,
+    mvp: Mat4,
+    shading: ShadeModel,
+) -> Vec<(Range<usize>, Diagonal)> {
     let quads = g.vertex_count() / 4;
     if quads == 0 {
         return Vec::new();
     }
-    if g.indices.is_some() {
+    if g.indices.is_some() || shading == ShadeModel::Flat {
         return vec![(0..quads, Diagonal::V1V3)];
     }
     let mut out: Vec<(Range<usize>, Diagonal)> = Vec::new();
@@ -190,25 +196,33 @@ mod tests {
         let mvp = Mat4::IDENTITY;
         let mut g = Geometry::new(Primitive::Quads, vec![inside; 4 * (QUAD_CHUNK + 2) + 3]);
         assert_eq!(
-            quad_diagonals(&g, mvp),
+            quad_diagonals(&g, mvp, ShadeModel::Smooth),
             [(0..QUAD_CHUNK + 2, Diagonal::V0V2)]
         );
         // Outside only in the trailing partial quad: not looked at.
         *g.positions.last_mut().unwrap() = outside;
-        assert_eq!(quad_diagonals(&g, mvp).len(), 1);
+        assert_eq!(quad_diagonals(&g, mvp, ShadeModel::Smooth).len(), 1);
         g.positions[4 * QUAD_CHUNK + 5] = outside;
         assert_eq!(
-            quad_diagonals(&g, mvp),
+            quad_diagonals(&g, mvp, ShadeModel::Smooth),
             [
                 (0..QUAD_CHUNK, Diagonal::V0V2),
                 (QUAD_CHUNK..QUAD_CHUNK + 2, Diagonal::V1V3)
             ]
         );
+        // Flat shading: v1–v3 whatever the positions.
+        assert_eq!(
+            quad_diagonals(&g, mvp, ShadeModel::Flat),
+            [(0..QUAD_CHUNK + 2, Diagonal::V1V3)]
+        );
         // Indexed: v1–v3 whatever the positions.
         g.indices = Some(vec![0, 1, 2, 3, 4, 5, 6, 7, 8]);
-        assert_eq!(quad_diagonals(&g, mvp), [(0..2, Diagonal::V1V3)]);
+        assert_eq!(
+            quad_diagonals(&g, mvp, ShadeModel::Smooth),
+            [(0..2, Diagonal::V1V3)]
+        );
         g.indices = Some(vec![0, 1, 2]);
-        assert!(quad_diagonals(&g, mvp).is_empty());
+        assert!(quad_diagonals(&g, mvp, ShadeModel::Smooth).is_empty());
         // Behind the eye (w < 0) is outside; on the boundary is inside.
         assert!(clipped(mvp, Vec4::new(0.0, 0.0, 0.0, -1.0)));
         assert!(!clipped(mvp, Vec4::new(1.0, -1.0, 1.0, 1.0)));

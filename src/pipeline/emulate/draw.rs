@@ -496,7 +496,7 @@ impl GpuGeometry {
                 .collect();
         }
         let mvp = state.projection_matrix() * state.modelview_matrix();
-        assembly::quad_diagonals(&self.source, mvp)
+        assembly::quad_diagonals(&self.source, mvp, state.shade_model)
             .into_iter()
             .filter_map(|(quads, diagonal)| {
                 let &(_, first) = blocks.iter().find(|(d, _)| *d == diagonal)?;
