@@ -259,7 +259,7 @@ impl FixedState {
                 };
             }
             Command::CullFace(f) => self.cull_face.value = *f,
-            Command::PolygonStipple(p) => self.polygon_stipple.value = *p,
+            Command::PolygonStipple(p) => self.polygon_stipple.value = **p,
             Command::LineStipple(l) => self.line_stipple.value = *l,
             Command::FrontFace(f) => self.front_face = *f,
             Command::LineWidth(w) => self.line_width = positive(*w, "LineWidth must be > 0")?,

@@ -467,9 +467,9 @@ impl FixedState {
                 ));
                 out.push(toggle(Capability::PolygonSmooth, self.smooth.polygon));
             }
-            AttribGroup::PolygonStipple => {
-                out.push(Command::PolygonStipple(self.polygon_stipple.value))
-            }
+            AttribGroup::PolygonStipple => out.push(Command::PolygonStipple(Box::new(
+                self.polygon_stipple.value,
+            ))),
             AttribGroup::Line => {
                 out.push(Command::LineWidth(self.line_width));
                 out.push(toggle(Capability::LineStipple, self.line_stipple.enabled));

@@ -143,9 +143,9 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let bytes = c
                 .pixels(0, shape)?
                 .ok_or_else(|| c.bad(0, "a 32×32 mask"))?;
-            Command::PolygonStipple(
+            Command::PolygonStipple(Box::new(
                 PolygonStipple::from_bytes(&bytes).ok_or_else(|| c.bad(0, "a 32×32 mask"))?,
-            )
+            ))
         }
         // GLushort: C converts the pattern modulo 2^16; the factor is clamped (§3.4.2).
         Entry::LineStipple => {

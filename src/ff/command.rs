@@ -525,7 +525,9 @@ pub enum Command {
     },
     // Stipple (ff::stipple).
     /// glPolygonStipple (§3.5.2): the unpacked 32×32 mask.
-    PolygonStipple(PolygonStipple),
+    /// Boxed: the 128-byte mask would make every Command that large, and each call moves
+    /// its Command a few times on the way to the state.
+    PolygonStipple(Box<PolygonStipple>),
     /// glLineStipple (§3.4.2): the factor already clamped to [1, 256].
     LineStipple(LineStipple),
     /// glGenQueries, glDeleteQueries, glBeginQuery, glEndQuery (ff::queries).

@@ -13,7 +13,7 @@ fn stipple() -> PolygonStipple {
 #[test]
 fn polygon_stipple_prints_and_parses_back() {
     let cmds = vec![
-        Command::PolygonStipple(stipple()),
+        Command::PolygonStipple(Box::new(stipple())),
         Command::Enable(Capability::PolygonStipple),
         Command::Disable(Capability::PolygonStipple),
     ];
