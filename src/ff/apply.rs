@@ -570,7 +570,13 @@ impl FixedState {
             ));
         }
         check_format_pair(level.internal_format, t.format)?;
-        if t.data.len() != volume_size(t.format, t.ty, t.width, t.height, t.depth) {
+        // NULL: checked, nothing stored; Mesa still derives the mipmaps of a base level
+        // under GENERATE_MIPMAP (its `check_gen_mipmap` follows the store either way).
+        let Some(bytes) = &t.data else {
+            tex.level_changed_in(target, t.level);
+            return Ok(());
+        };
+        if bytes.len() != volume_size(t.format, t.ty, t.width, t.height, t.depth) {
             return Err(GlError::invalid_value(
                 "pixel data length differs from width·height·depth·components·size",
             ));
@@ -589,7 +595,7 @@ impl FixedState {
                 Some(PixelData {
                     format: t.format,
                     ty: t.ty,
-                    bytes: t.data.clone(),
+                    bytes: bytes.clone(),
                 })
             }
             // Mixed formats or unknown texels: only the GPU copy is authoritative.

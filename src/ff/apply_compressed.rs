@@ -96,16 +96,10 @@ impl FixedState {
             data,
         );
         // Only the region's texels change: decoded once, written into the level's copy.
-        if let Some(texels) = level.data.as_mut() {
+        if let (Some(texels), Some(decoded)) = (level.data.as_mut(), &region.data) {
             let mut bytes = texels.bytes.to_vec();
             let rect = [t.x, t.y, t.width, t.height].map(|v| v.max(0) as usize);
-            blit(
-                &mut bytes,
-                level.width.max(0) as usize,
-                &region.data,
-                rect,
-                4,
-            );
+            blit(&mut bytes, level.width.max(0) as usize, decoded, rect, 4);
             texels.bytes = bytes.into();
         }
         level.compressed = Some(CompressedImage {

@@ -461,7 +461,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 depth: 1,
                 format,
                 ty,
-                data: data.ok_or_else(|| c.bad(8, "a pixel array"))?,
+                data,
             })
         }
         Entry::CopyTexImage2D => {

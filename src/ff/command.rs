@@ -185,7 +185,9 @@ pub struct TexSubImage {
     pub depth: i32,
     pub format: PixelFormat,
     pub ty: PixelType,
-    pub data: Arc<[u8]>,
+    /// The region's pixels; `None` for a NULL pointer, which GL does not refuse: the call
+    /// is checked and changes no texel (Mesa: no error, nothing stored).
+    pub data: Option<Arc<[u8]>>,
 }
 
 impl TexSubImage {

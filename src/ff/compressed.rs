@@ -117,7 +117,7 @@ impl CompressedTexSubImage {
             depth: 1,
             format: super::texture::PixelFormat::Rgba,
             ty: super::texture::PixelType::UnsignedByte,
-            data: decode(self.format, self.width, self.height, blocks).into(),
+            data: Some(decode(self.format, self.width, self.height, blocks).into()),
         })
     }
 }

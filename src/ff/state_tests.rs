@@ -333,7 +333,7 @@ fn texture_table() {
             depth: 1,
             format: PixelFormat::Rgba,
             ty: PixelType::UnsignedByte,
-            data: vec![9u8; 4].into(),
+            data: Some(vec![9u8; 4].into()),
         }),
         Command::Enable(Capability::Texture2D),
     ]);

@@ -90,7 +90,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 depth: 1,
                 format,
                 ty,
-                data: data.ok_or_else(|| c.bad(6, "a pixel array"))?,
+                data,
             })
         }
         Entry::CopyTexImage1D => {

@@ -84,7 +84,7 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 depth: c.i32(7)?,
                 format,
                 ty,
-                data: data.ok_or_else(|| c.bad(10, "a pixel array"))?,
+                data,
             })
         }
         Entry::CopyTexSubImage3D | Entry::CopyTexSubImage3DEXT => {
@@ -154,6 +154,9 @@ pub(crate) fn check_sub_volume(t: &TexSubImage) -> GlResult {
 /// Patches the tight `t.depth` images of `t.data` into `dst`, the tight images of a level
 /// `width × height` texels each, at (x, y, z); the region is checked by the caller.
 pub(crate) fn blit_volume(dst: &mut [u8], (width, height): (i32, i32), t: &TexSubImage) {
+    let Some(data) = &t.data else {
+        return;
+    };
     let pixel = t.format.components() * t.ty.size();
     let level_image = width.max(0) as usize * height.max(0) as usize * pixel;
     let sub_image = t.width.max(0) as usize * t.height.max(0) as usize * pixel;
@@ -162,7 +165,7 @@ pub(crate) fn blit_volume(dst: &mut [u8], (width, height): (i32, i32), t: &TexSu
         let at = (t.z.max(0) as usize + k) * level_image;
         let (Some(to), Some(from)) = (
             dst.get_mut(at..at + level_image),
-            t.data.get(k * sub_image..(k + 1) * sub_image),
+            data.get(k * sub_image..(k + 1) * sub_image),
         ) else {
             return;
         };

@@ -170,7 +170,7 @@ mod calls {
             depth: size.2,
             format: PixelFormat::Luminance,
             ty: PixelType::UnsignedByte,
-            data: Arc::from(data),
+            data: Some(Arc::from(data)),
         })
     }
 

@@ -124,14 +124,7 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
                 t.depth,
                 n(t.format),
                 n(t.ty),
-                pixels(
-                    t.ty,
-                    &padded(
-                        &t.data,
-                        t.width.max(0) as usize * t.format.components() * t.ty.size(),
-                        unpack_alignment
-                    )
-                )
+                sub_image_pixels(t, unpack_alignment)
             ),
         ),
         Command::CompressedTexImage2D(t) => line(
@@ -180,14 +173,7 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
                 t.height,
                 n(t.format),
                 n(t.ty),
-                pixels(
-                    t.ty,
-                    &padded(
-                        &t.data,
-                        t.width.max(0) as usize * t.format.components() * t.ty.size(),
-                        unpack_alignment
-                    )
-                )
+                sub_image_pixels(t, unpack_alignment)
             ),
         ),
         Command::TexSubImage1D(t) => line(
@@ -200,7 +186,9 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
                 t.width,
                 n(t.format),
                 n(t.ty),
-                pixels(t.ty, &t.data)
+                t.data
+                    .as_ref()
+                    .map_or("NULL".to_string(), |d| pixels(t.ty, d))
             ),
         ),
         Command::Raise { error, call } => out.push_str(&format!(
@@ -1024,6 +1012,14 @@ fn blocks(data: &Option<std::sync::Arc<[u8]>>) -> String {
         || "NULL".to_string(),
         |d| pixels(PixelType::UnsignedByte, d),
     )
+}
+
+/// A glTexSubImage2D/3D's pixels, rows padded to the unpack alignment, or NULL.
+fn sub_image_pixels(t: &TexSubImage, unpack_alignment: usize) -> String {
+    let row = t.width.max(0) as usize * t.format.components() * t.ty.size();
+    t.data.as_ref().map_or("NULL".to_string(), |d| {
+        pixels(t.ty, &padded(d, row, unpack_alignment))
+    })
 }
 
 /// glTexImage1D/2D/3D of `target` (its token: a proxy image prints its proxy target).

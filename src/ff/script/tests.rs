@@ -398,7 +398,7 @@ fn sample_commands() -> Vec<Command> {
             depth: 1,
             format: PixelFormat::DepthComponent,
             ty: PixelType::UnsignedShort,
-            data: Arc::from(65535u16.to_le_bytes().to_vec()),
+            data: Some(Arc::from(65535u16.to_le_bytes().to_vec())),
         }),
         // GL 1.2's 3D textures: rows of 9 bytes padded to 4 across two images.
         Command::BindTexture {
@@ -442,7 +442,7 @@ fn sample_commands() -> Vec<Command> {
             depth: 1,
             format: PixelFormat::Rgb,
             ty: PixelType::UnsignedByte,
-            data: Arc::from(vec![7u8; 6]),
+            data: Some(Arc::from(vec![7u8; 6])),
         }),
         Command::CopyTexSubImage(crate::ff::texture_calls::CopyTexSubImage {
             target: TextureTarget::Texture3D,
@@ -504,7 +504,7 @@ fn sample_commands() -> Vec<Command> {
             depth: 1,
             format: PixelFormat::Rgba,
             ty: PixelType::UnsignedByte,
-            data: Arc::from(vec![9u8; 4]),
+            data: Some(Arc::from(vec![9u8; 4])),
         }),
         Command::CopyTexImage2D(CopyTexImage {
             face: Some(crate::ff::CubeFace::NegativeX),

@@ -564,7 +564,7 @@ fn same_code() -> Vec<Case> {
                     depth: 1,
                     format: PixelFormat::Rgb,
                     ty: PixelType::UnsignedByte,
-                    data: Arc::from(vec![1u8, 2, 3]),
+                    data: Some(Arc::from(vec![1u8, 2, 3])),
                 }),
             ],
         ),

@@ -121,7 +121,7 @@ pub(super) fn stored_sub_image(
         .level_in(target, t.level)?
         .internal_format;
     let bytes = texel_store::stored_image(
-        &t.data,
+        t.data.as_ref()?,
         t.format,
         t.ty,
         internal,
@@ -143,12 +143,14 @@ impl Textures {
         let target = TextureTarget::Texture1D;
         let name = state.units[state.active_unit()].bound(target);
         let gl_t = self.edit(ctx.gl(), (target, name))?;
-        match stored_sub_image(state, target, name, t) {
-            Some((format, bytes)) => sub_image_1d(ctx, t.level, t.x, t.width, format, &bytes)?,
-            None => {
+        // NULL: no texel changes (the mipmaps below are derived all the same).
+        match (stored_sub_image(state, target, name, t), &t.data) {
+            (Some((format, bytes)), _) => sub_image_1d(ctx, t.level, t.x, t.width, format, &bytes)?,
+            (None, Some(given)) => {
                 let format = (conv::pixel_format(t.format), conv::value(t.ty));
-                sub_image_1d(ctx, t.level, t.x, t.width, format, &t.data)?
+                sub_image_1d(ctx, t.level, t.x, t.width, format, given)?
             }
+            (None, None) => {}
         }
         if let Some(object) = state.texture(target, name) {
             generate_mipmap(ctx.gl(), gl_t, object, t.level);

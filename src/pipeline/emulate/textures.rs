@@ -149,12 +149,19 @@ impl Textures {
     ) -> Result<(), PipelineError> {
         let name = state.units[state.active_unit()].bound(target);
         let gl_t = self.edit(gl, (target, name))?;
+        // NULL: no texel changes; a base level's mipmaps are derived again all the same.
+        let Some(given) = &t.data else {
+            if let Some(object) = state.texture(target, name) {
+                generate_mipmap(gl, gl_t, object, t.level);
+            }
+            return Ok(());
+        };
         let stored = super::texture_calls::stored_sub_image(state, target, name, t);
         let ((format, ty), bytes) = match &stored {
             Some((format, bytes)) => (*format, &bytes[..]),
             None => (
                 (conv::pixel_format(t.format), conv::value(t.ty)),
-                &t.data[..],
+                &given[..],
             ),
         };
         let data = glow::PixelUnpackData::Slice(Some(bytes));

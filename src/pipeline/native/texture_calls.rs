@@ -15,7 +15,7 @@ use super::conv;
 
 /// glTexSubImage1D into the bound 1D texture.
 pub fn tex_sub_image_1d(g: &gl::Gl, t: &TexSubImage) {
-    // SAFETY: the model checked that `data` holds the row's bytes.
+    // SAFETY: the model checked that `data` holds the row's bytes (NULL: GL reads nothing).
     unsafe {
         g.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
         g.TexSubImage1D(
@@ -25,7 +25,9 @@ pub fn tex_sub_image_1d(g: &gl::Gl, t: &TexSubImage) {
             t.width,
             conv::value(t.format),
             conv::value(t.ty),
-            t.data.as_ptr().cast::<c_void>(),
+            t.data
+                .as_ref()
+                .map_or(std::ptr::null(), |d| d.as_ptr().cast::<c_void>()),
         );
     }
 }

@@ -64,7 +64,9 @@ pub fn tex_sub_image_3d(g: &gl::Gl, t: &TexSubImage) {
             t.depth,
             conv::value(t.format),
             conv::value(t.ty),
-            t.data.as_ptr().cast::<c_void>(),
+            t.data
+                .as_ref()
+                .map_or(std::ptr::null(), |d| d.as_ptr().cast::<c_void>()),
         );
     }
 }

@@ -135,7 +135,9 @@ pub fn tex_sub_image(g: &gl::Gl, t: &TexSubImage) {
             t.height,
             conv::value(t.format),
             conv::value(t.ty),
-            t.data.as_ptr().cast::<c_void>(),
+            t.data
+                .as_ref()
+                .map_or(std::ptr::null(), |d| d.as_ptr().cast::<c_void>()),
         );
     }
 }

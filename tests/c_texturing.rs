@@ -1,0 +1,70 @@
+//! Texturing as C programs written for Mesa's OSMesa exercise it (`tests/c/`), compiled
+//! with `cc` against the real `GL/osmesa.h` and run on Mesa's `libOSMesa.so.8` and on the
+//! layer's: what each prints (texels, errors, queried parameters) must be the same line
+//! for line, and the images Mesa's exactly.
+
+#[path = "c/harness.rs"]
+mod harness;
+mod support;
+
+use std::path::{Path, PathBuf};
+
+use harness::{compile, read_ppm, run, Library};
+use image::RgbaImage;
+use support::{assert_images_match, Tolerance};
+
+fn work_dir(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("c_texturing")
+        .join(name);
+    std::fs::create_dir_all(&dir).expect("the test folder can be made");
+    dir
+}
+
+/// What `tests/c/NAME.c` printed and the image it wrote, on Mesa and on the layer.
+fn texts_and_images(name: &str) -> [(String, RgbaImage); 2] {
+    let dir = work_dir(name);
+    let exe = dir.join(name);
+    compile(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("tests/c/{name}.c")),
+        &exe,
+    );
+    [Library::Mesa, Library::Fixedfunc].map(|library| {
+        let out = dir.join(format!("{library:?}.ppm"));
+        let text = run(&exe, library, &[out.to_str().unwrap()]).stdout;
+        (String::from_utf8_lossy(&text).into_owned(), read_ppm(&out))
+    })
+}
+
+/// Mesa printed each of `lines` (the answers the program is built around), and the
+/// layer printed what Mesa printed, line by line; the images are Mesa's exactly.
+fn assert_as_on_mesa(name: &str, lines: &[&str]) {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images(name);
+    for line in lines {
+        assert!(
+            mesa_text.contains(line),
+            "Mesa did not print {line:?}:\n{mesa_text}"
+        );
+    }
+    for (m, o) in mesa_text.lines().zip(ours_text.lines()) {
+        assert_eq!(o, m, "{name}: a line differs from Mesa's");
+    }
+    assert_eq!(ours_text.lines().count(), mesa_text.lines().count());
+    assert_images_match(name, &ours, &mesa, Tolerance::EXACT);
+}
+
+/// `tests/c/sub_image_null.c`: glTexSubImage of a NULL pointer is checked as any call and
+/// stores nothing, without an error of its own.
+#[test]
+fn sub_images_from_null_are_checked_and_store_nothing() {
+    assert_as_on_mesa(
+        "sub_image_null",
+        &[
+            "2D 2x2 from NULL                         err 0x0",
+            "2D outside the level from NULL           err 0x501",
+            "2D missing level from NULL               err 0x502",
+            "1D 2 from NULL                           err 0x0",
+            "3D 2x2x1 from NULL                       err 0x0",
+        ],
+    );
+}
