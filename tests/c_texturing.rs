@@ -53,6 +53,23 @@ fn assert_as_on_mesa(name: &str, lines: &[&str]) {
     assert_images_match(name, &ours, &mesa, Tolerance::EXACT);
 }
 
+/// `tests/c/upload_bounds.c`: uploads whose sizes GL refuses, from a 64-byte array before
+/// an unreadable page, fail with Mesa's errors without reading past the array (a read
+/// would crash the program); the texture keeps what it held.
+#[test]
+fn uploads_of_refused_sizes_read_nothing() {
+    assert_as_on_mesa(
+        "upload_bounds",
+        &[
+            "2D width 16385                           err 0x501",
+            "2D level 3 width 4096                    err 0x501",
+            "sub-image 1000 wide into 4x4             err 0x501",
+            "sub-image of a missing level             err 0x502",
+            "DXT1 sub-image 256x256 into 8x8          err 0x501",
+        ],
+    );
+}
+
 /// `tests/c/sub_image_null.c`: glTexSubImage of a NULL pointer is checked as any call and
 /// stores nothing, without an error of its own.
 #[test]

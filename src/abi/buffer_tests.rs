@@ -31,6 +31,7 @@ fn run(bufs: &mut Buffers, entry: Entry, args: &[c::CArg]) -> Result<Reply, GlEr
         entry,
         args,
         unpack: crate::ff::pixel_store::Packing::DEFAULT,
+        access: Default::default(),
         unsupported: Default::default(),
     };
     bufs.call(&call, &crate::abi::cargs::ProgramMemory)
@@ -322,6 +323,7 @@ fn offsets_are_captured_when_a_buffer_is_bound() {
             Ptr(12 as *const _, crate::abi::cargs::CElem::Void),
         ],
         unpack: crate::ff::pixel_store::Packing::DEFAULT,
+        access: Default::default(),
         unsupported: Default::default(),
     };
     assert_eq!(

@@ -18,6 +18,7 @@ use crate::ff::client::{ArrayData, ClientMemory};
 use crate::ff::glenum::{pname_of, value_of, Family, GlEnum};
 use crate::ff::pixel_layout;
 use crate::ff::pixel_store::Packing;
+use crate::ff::upload_bounds::PixelAccess;
 use crate::ff::{GlErrorKind, TexData};
 
 /// The element type behind a pointer parameter.
@@ -124,6 +125,9 @@ pub struct CCall<'a> {
     pub args: &'a [CArg],
     /// The unpack parameters of glPixelStore.
     pub unpack: Packing,
+    /// Whether the call's pixel pointer may be read (`ff::upload_bounds`): a call whose
+    /// sizes GL refuses takes it as NULL.
+    pub access: PixelAccess,
     /// Set when no converter knew the call.
     pub unsupported: Cell<bool>,
 }
@@ -182,6 +186,7 @@ impl CCall<'_> {
     /// (GL 1.5 §3.6.4, `pixel_layout`) into the tightly packed rows the model holds.
     fn unpack(&self, i: usize, shape: PixelShape) -> Result<Option<Arc<[u8]>>, GlErrorKind> {
         let p = match self.args.get(i) {
+            Some(CArg::Ptr(..)) if self.access == PixelAccess::Skip => return Ok(None),
             Some(CArg::Ptr(p, _)) if p.is_null() => return Ok(None),
             Some(CArg::Ptr(p, _)) => *p,
             _ => return Err(GlErrorKind::InvalidValue),
@@ -312,6 +317,7 @@ impl Args for CCall<'_> {
             entry: self.entry,
             args: &[CArg::Ptr(p, elem)],
             unpack: self.unpack,
+            access: self.access,
             unsupported: Cell::new(false),
         };
         typed.read(0, n)
@@ -321,6 +327,8 @@ impl Args for CCall<'_> {
     }
     fn array_data(&self, i: usize) -> Result<ArrayData, GlErrorKind> {
         match self.args.get(i) {
+            // A compressed sub-image's blocks, of a region GL refuses.
+            Some(CArg::Ptr(..)) if self.access == PixelAccess::Skip => Ok(ArrayData::Null),
             Some(CArg::Ptr(p, _)) if p.is_null() => Ok(ArrayData::Null),
             Some(CArg::Ptr(p, _)) => Ok(ArrayData::Address(*p as usize)),
             // An integer where a pointer goes: an offset into no buffer object.

@@ -17,6 +17,7 @@ use crate::ff::args::PixelShape;
 use crate::ff::front::{Client, Reply};
 use crate::ff::pixel_layout;
 use crate::ff::queries::{self, ObjectParam, QueryTarget};
+use crate::ff::upload_bounds::{pixel_access, CallTime, PixelAccess};
 use crate::ff::{Command, GlErrorKind};
 use crate::gpu::{
     Backend, ColorStorage, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec,
@@ -444,16 +445,22 @@ impl Context {
             }
             _ => {}
         }
-        let c = CCall {
-            entry,
-            args,
-            unpack: self.client.pixel_store.unpack,
-            unsupported: Default::default(),
-        };
-        let mut made = std::mem::take(&mut self.made);
         let Some(p) = self.pipeline.as_ref() else {
             return Ret::None;
         };
+        let mut c = CCall {
+            entry,
+            args,
+            unpack: self.client.pixel_store.unpack,
+            access: PixelAccess::Read,
+            unsupported: Default::default(),
+        };
+        let when = match self.client.lists.compiling() {
+            Some(_) => CallTime::Compiled,
+            None => CallTime::Now,
+        };
+        c.access = pixel_access(&c, p.state(), when);
+        let mut made = std::mem::take(&mut self.made);
         let outcome = self.client.call(&c, p.state(), &ProgramMemory, &mut made);
         let reply = outcome.as_ref().cloned().unwrap_or(Reply::None);
         if let Err(kind) = outcome {

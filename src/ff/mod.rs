@@ -77,6 +77,7 @@ pub mod pixel_types;
 pub mod texture_calls;
 pub mod texture_storage;
 pub mod texture_volume;
+pub mod upload_bounds;
 
 #[cfg(test)]
 mod state_tests;

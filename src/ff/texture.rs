@@ -855,17 +855,19 @@ pub fn volume_fits(level: i32, size: [i32; 3]) -> bool {
 }
 
 /// The checks TexImage and CopyTexImage share (GL 1.5 §3.8.1, ARB_depth_texture):
-/// level in [0, MAX_TEXTURE_LEVEL], sizes in [0, MAX_TEXTURE_SIZE], border 0 (borders are not
-/// supported by a core context: INVALID_VALUE).
+/// level in [0, MAX_TEXTURE_LEVEL], sizes in [0, MAX_TEXTURE_SIZE >> level] (Mesa's
+/// `_mesa_legal_texture_dimensions`: level 3 holds at most 2048), border 0 (borders are
+/// not supported by a core context: INVALID_VALUE).
 pub fn check_image_size(level: i32, width: i32, height: i32, border: i32) -> GlResult {
     if !(0..=MAX_TEXTURE_LEVEL).contains(&level) {
         return Err(GlError::invalid_value(
             "level must be in [0, log2(MAX_TEXTURE_SIZE)]",
         ));
     }
-    if !(0..=MAX_TEXTURE_SIZE).contains(&width) || !(0..=MAX_TEXTURE_SIZE).contains(&height) {
+    let max = MAX_TEXTURE_SIZE >> level;
+    if !(0..=max).contains(&width) || !(0..=max).contains(&height) {
         return Err(GlError::invalid_value(
-            "width and height must be in [0, MAX_TEXTURE_SIZE]",
+            "width and height must be in [0, MAX_TEXTURE_SIZE >> level]",
         ));
     }
     if border != 0 {

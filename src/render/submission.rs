@@ -118,6 +118,7 @@ impl Front {
             entry,
             args,
             unpack: self.client.pixel_store.unpack,
+            access: Default::default(),
             unsupported: Default::default(),
         };
         match self.client.call(&c, state, &ProgramMemory, &mut self.made) {
