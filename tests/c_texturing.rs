@@ -70,6 +70,21 @@ fn uploads_of_refused_sizes_read_nothing() {
     );
 }
 
+/// `tests/c/border_formats.c`: the border colour taken as each base format takes a colour
+/// (GL 1.5 §3.8.8): an ALPHA texture's border gives the border's alpha only, a
+/// LUMINANCE_ALPHA one its red and alpha.
+#[test]
+fn border_colours_follow_the_base_format() {
+    assert_as_on_mesa(
+        "border_formats",
+        &[
+            "ALPHA border                         204 230 255  71 err 0x0",
+            "LUMINANCE_ALPHA border               184 207 230  71 err 0x0",
+            "ALPHA half border                    204 230 255  88 err 0x0",
+        ],
+    );
+}
+
 /// `tests/c/sub_image_null.c`: glTexSubImage of a NULL pointer is checked as any call and
 /// stores nothing, without an error of its own.
 #[test]

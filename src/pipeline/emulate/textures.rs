@@ -421,6 +421,27 @@ pub(super) fn generate_mipmap(gl: &glow::Context, target: u32, object: &TextureO
     }
 }
 
+/// The border colour the core texture is given so that sampling its border yields GL's:
+/// TEXTURE_BORDER_COLOR taken as the level's base format takes a colour (GL 1.5 §3.8.8,
+/// Table 3.15: ALPHA keeps A, LUMINANCE and INTENSITY R, LUMINANCE_ALPHA R and A), then
+/// expanded as a texel (ALPHA (0, 0, 0, A)…). llvmpipe swizzles the border as it swizzles
+/// texels (`conv::tex_format`), so the border is stored as a texel of the storage is:
+/// channel k holds the kept component k (`texel_store::kept`), ALPHA8's R8 the border's
+/// alpha. A depth texture's border is its first component, as given.
+fn core_border(object: &TextureObject, border: glam::Vec4) -> [f32; 4] {
+    let given = border.to_array();
+    match object.format() {
+        Some(f) if !f.is_depth() => {
+            let mut core = given;
+            for (k, c) in super::texel_store::kept(f.base()).iter().enumerate() {
+                core[k] = given[*c];
+            }
+            core
+        }
+        _ => given,
+    }
+}
+
 /// Every parameter, plus the swizzle of the level-0 format and the mipmap range. MAX_LEVEL
 /// is the highest level the model holds: a texture the model calls complete
 /// (`TextureObject::completeness`) is complete for GL too; one it calls incomplete is
@@ -454,7 +475,7 @@ pub(super) fn apply_params(gl: &glow::Context, target: u32, object: &TextureObje
         gl.tex_parameter_f32_slice(
             target,
             glow::TEXTURE_BORDER_COLOR,
-            &p.border_color.to_array(),
+            &core_border(object, p.border_color),
         );
         gl.tex_parameter_i32(target, glow::TEXTURE_BASE_LEVEL, base_level);
         gl.tex_parameter_i32(target, glow::TEXTURE_MAX_LEVEL, max_level);
