@@ -85,6 +85,19 @@ fn border_colours_follow_the_base_format() {
     );
 }
 
+/// `tests/c/dot3_alpha.c`: DOT3_RGBA's alpha is the dot product scaled by ALPHA_SCALE,
+/// its colour by RGB_SCALE (GL 1.5 §3.8.13).
+#[test]
+fn dot3_rgba_scales_alpha_by_alpha_scale() {
+    assert_as_on_mesa(
+        "dot3_alpha",
+        &[
+            "DOT3_RGBA ALPHA_SCALE 2              142 142 142 255 err 0x0",
+            "DOT3_RGBA RGB_SCALE 4                255 255 255 142 err 0x0",
+        ],
+    );
+}
+
 /// `tests/c/sub_image_null.c`: glTexSubImage of a NULL pointer is checked as any call and
 /// stores nothing, without an error of its own.
 #[test]

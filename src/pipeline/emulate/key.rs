@@ -444,9 +444,14 @@ fn env_key(state: &FixedState, unit: usize) -> EnvKey {
         TexEnvMode::Add => EnvKey::Add,
         TexEnvMode::Combine => {
             let rgb = used_arguments(env.rgb, CombineOperand::SrcColor);
-            // DOT3_RGBA writes the dot product to alpha too: COMBINE_ALPHA is ignored.
+            // DOT3_RGBA writes the dot product to alpha too: COMBINE_ALPHA and its
+            // sources are ignored, ALPHA_SCALE is not (GL 1.5 §3.8.13: the alpha is the
+            // dot product scaled by ALPHA_SCALE; Mesa alike).
             let alpha = if env.rgb.func == CombineFunc::Dot3Rgba {
-                IGNORED_ALPHA
+                Combine {
+                    scale: env.alpha.scale,
+                    ..IGNORED_ALPHA
+                }
             } else {
                 used_arguments(env.alpha, CombineOperand::SrcAlpha)
             };
@@ -455,7 +460,7 @@ fn env_key(state: &FixedState, unit: usize) -> EnvKey {
     }
 }
 
-/// The COMBINE_ALPHA of the key when DOT3_RGBA makes it unused.
+/// The COMBINE_ALPHA of the key when DOT3_RGBA makes it unused (but for its scale).
 const IGNORED_ALPHA: Combine = Combine {
     func: CombineFunc::Replace,
     sources: [CombineSource::Previous; 3],

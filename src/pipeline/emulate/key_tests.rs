@@ -486,7 +486,6 @@ fn same_code() -> Vec<Case> {
                     CombineArg::Arg0,
                     CombineSource::Constant,
                 )),
-                env(TexEnvParam::AlphaScale(2.0)),
             ],
         ),
         same(
@@ -734,6 +733,11 @@ fn changed_code() -> Vec<Case> {
     let none = Vec::new;
     vec![
         changes("enabling a unit with an image", none(), textured()),
+        changes(
+            "ALPHA_SCALE under DOT3_RGBA (it scales the dot product in alpha)",
+            combine_rgb(CombineFunc::Dot3Rgba),
+            vec![env(TexEnvParam::AlphaScale(2.0))],
+        ),
         changes(
             "a 1D texture instead of the 2D one",
             textured(),

@@ -502,8 +502,10 @@ fn emit_combine(w: &mut GlslWriter, key: &FragmentKey, u: u8, rgb: Combine, alph
     let rgb_v = m.clamp(&format!("({rgb_expr}) * {:?}", rgb.scale.factor()));
     w.line(format!("vec3 rgb{u} = {rgb_v};"));
     let alpha_value = if rgb.func == CombineFunc::Dot3Rgba {
-        // DOT3_RGBA writes the dot product to alpha too; COMBINE_ALPHA is ignored.
-        format!("rgb{u}.r")
+        // DOT3_RGBA writes the dot product to alpha too, scaled by ALPHA_SCALE, not
+        // RGB_SCALE (GL 1.5 §3.8.13; Mesa alike); COMBINE_ALPHA is ignored.
+        let d = combine_expr(m, rgb.func, &args_rgb, false);
+        m.clamp(&format!("({d}) * {:?}", alpha.scale.factor()))
     } else {
         let e = combine_expr(m, alpha.func, &args_alpha, false);
         m.clamp(&format!("({e}) * {:?}", alpha.scale.factor()))
