@@ -98,6 +98,21 @@ fn dot3_rgba_scales_alpha_by_alpha_scale() {
     );
 }
 
+/// `tests/c/level_formats.c`: levels whose internal formats are named differently (RGBA
+/// and RGBA8, 4 and RGBA) make a mipmapped texture incomplete, as on Mesa.
+#[test]
+fn levels_named_in_other_formats_are_incomplete() {
+    assert_as_on_mesa(
+        "level_formats",
+        &[
+            "levels 0x1908 0x8058 filter 0x2700   51 102 153 204 err 0x0",
+            "levels 0x0004 0x1908 filter 0x2700   51 102 153 204 err 0x0",
+            "levels 0x1908 0x1908 filter 0x2700   51   0   0 204 err 0x0",
+            "levels 0x1908 0x8058 filter 0x2600   51   0   0 204 err 0x0",
+        ],
+    );
+}
+
 /// `tests/c/sub_image_null.c`: glTexSubImage of a NULL pointer is checked as any call and
 /// stores nothing, without an error of its own.
 #[test]

@@ -60,7 +60,8 @@ use super::state::{FixedState, MAX_TEXTURE_UNITS};
 use super::texenv::{CombineSource, TexEnv};
 use super::texgen::TexCoord;
 use super::texture::{
-    TexFormat, TextureTarget, MAX_3D_TEXTURE_SIZE, MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
+    TexFormat, TexLevel, TextureTarget, MAX_3D_TEXTURE_SIZE, MAX_CUBE_MAP_TEXTURE_SIZE,
+    MAX_TEXTURE_SIZE,
 };
 
 /// GL_TEXTURE_COMPARE_FAIL_VALUE_ARB (ARB_shadow_ambient, outside the registry subset
@@ -797,12 +798,9 @@ impl FixedState {
             r::TEXTURE_HEIGHT => int(l.map_or(0, |l| l.height)),
             r::TEXTURE_DEPTH => int(l.map_or(0, |l| l.depth)),
             r::TEXTURE_BORDER => int(0),
-            r::TEXTURE_INTERNAL_FORMAT => vec![QueryValue::Enum(match compressed {
-                Some(c) => gl(c.format),
-                None => l
-                    .and_then(|l| l.requested)
-                    .unwrap_or_else(|| format.map_or(r::RGBA, gl)),
-            })],
+            r::TEXTURE_INTERNAL_FORMAT => {
+                vec![QueryValue::Enum(l.map_or(r::RGBA, TexLevel::named_format))]
+            }
             r::TEXTURE_RED_SIZE => size(Component::Red),
             r::TEXTURE_GREEN_SIZE => size(Component::Green),
             r::TEXTURE_BLUE_SIZE => size(Component::Blue),

@@ -484,6 +484,21 @@ pub struct TexLevel {
     pub requested: Option<u32>,
 }
 
+impl TexLevel {
+    /// The internal format as GL answers TEXTURE_INTERNAL_FORMAT and Mesa compares levels
+    /// (`gl_texture_image::InternalFormat`): the token or component count the program
+    /// named (GL_RGBA, GL_RGBA8 and 4 are three formats), a compressed level's format, or
+    /// the sized name of a level the layer made.
+    pub fn named_format(&self) -> u32 {
+        match &self.compressed {
+            Some(c) => super::glenum::gl(c.format),
+            None => self
+                .requested
+                .unwrap_or_else(|| super::glenum::gl(self.internal_format)),
+        }
+    }
+}
+
 /// Why a texture is incomplete (GL 1.5 §3.8.10): the first rule it breaks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Incomplete {
@@ -715,7 +730,10 @@ impl TextureObject {
                     found: (l.width, l.height, l.depth),
                 });
             }
-            if l.internal_format != base.internal_format {
+            // Mesa compares the formats as named: RGBA and RGBA8, or RGBA and 4, differ
+            // though they are stored alike (`TexLevel::named_format`).
+            if l.internal_format != base.internal_format || l.named_format() != base.named_format()
+            {
                 return Err(Incomplete::FormatDiffers(level));
             }
         }
