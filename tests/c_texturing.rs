@@ -113,6 +113,22 @@ fn levels_named_in_other_formats_are_incomplete() {
     );
 }
 
+/// `tests/c/tex_params.c`: TEXTURE_LOD_BIAS and TEXTURE_PRIORITY of the texture object
+/// through every glTexParameter form and glPrioritizeTextures, queried as floats and
+/// integers; the object's bias adds to the unit's.
+#[test]
+fn the_object_lod_bias_and_priority_are_kept() {
+    assert_as_on_mesa(
+        "tex_params",
+        &[
+            "glTexParameterf 1.25 0.25          bias 1.25 1 priority 0.25 536870911 err 0x0",
+            "first texture                      bias 3 3 priority 0.75 1610612735 err 0x0",
+            "object bias 1                        0 255   0 255 err 0x0",
+            "object bias 1, unit bias -1        255   0   0 255 err 0x0",
+        ],
+    );
+}
+
 /// `tests/c/sub_image_null.c`: glTexSubImage of a NULL pointer is checked as any call and
 /// stores nothing, without an error of its own.
 #[test]

@@ -1128,6 +1128,7 @@ impl Command {
             Command::ActiveTexture(_) => Entry::ActiveTexture,
             Command::BindTexture { .. } => Entry::BindTexture,
             Command::DeleteTextures(_) => Entry::DeleteTextures,
+            Command::PrioritizeTextures(_) => Entry::PrioritizeTextures,
             Command::TexImage(t) => match t.target {
                 super::texture::TextureTarget::Texture1D => Entry::TexImage1D,
                 super::texture::TextureTarget::Texture2D

@@ -118,6 +118,14 @@ impl FixedState {
             Command::ShadeModel(m) => self.shade_model = *m,
             Command::ActiveTexture(u) => self.active_texture = check_unit(*u)?,
             Command::BindTexture { target, name } => self.bind_texture(*target, *name)?,
+            Command::PrioritizeTextures(given) => {
+                for (name, priority) in given.iter().filter(|(n, _)| *n != 0) {
+                    if let Some(t) = self.textures.get_mut(name) {
+                        t.params
+                            .set(super::texture::TexParam::Priority(*priority))?;
+                    }
+                }
+            }
             Command::DeleteTextures(names) => {
                 self.framebuffers.detach_textures(names);
                 for &name in names.iter().filter(|n| **n != 0) {

@@ -674,6 +674,8 @@ impl FixedState {
                         TexParam::MaxLevel(p.max_level),
                         TexParam::MinLod(p.min_lod),
                         TexParam::MaxLod(p.max_lod),
+                        TexParam::LodBias(p.lod_bias),
+                        TexParam::Priority(p.priority),
                     ] {
                         out.push(Command::TexParameter { target, param });
                     }

@@ -346,6 +346,8 @@ const TEX_PARAMS: &[&str] = &[
     "GL_TEXTURE_MAX_LEVEL",
     "GL_TEXTURE_MIN_LOD",
     "GL_TEXTURE_MAX_LOD",
+    "GL_TEXTURE_LOD_BIAS",
+    "GL_TEXTURE_PRIORITY",
 ];
 
 const ENV_PARAMS: &[&str] = &[
@@ -633,6 +635,8 @@ pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
         "GL_TEXTURE_MAX_LEVEL" => TexParam::MaxLevel(level_from_float(c.f64(2)?)),
         "GL_TEXTURE_MIN_LOD" => TexParam::MinLod(c.f32(2)?),
         "GL_TEXTURE_MAX_LOD" => TexParam::MaxLod(c.f32(2)?),
+        "GL_TEXTURE_LOD_BIAS" => TexParam::LodBias(c.f32(2)?),
+        "GL_TEXTURE_PRIORITY" => TexParam::Priority(c.f32(2)?),
         _ => TexParam::GenerateMipmap(c.boolean(2)?),
     })
 }

@@ -318,6 +318,9 @@ pub enum Command {
     /// glDeleteTextures: the objects of these names go; a unit bound to one reverts to
     /// the default texture 0 (GL 1.5 §3.8.12); 0 and unused names are ignored.
     DeleteTextures(Vec<u32>),
+    /// glPrioritizeTextures: each named texture object's TEXTURE_PRIORITY, clamped to
+    /// [0, 1] (GL 1.5 §3.8.12); 0 and names of no object are ignored (Mesa).
+    PrioritizeTextures(Vec<(u32, f32)>),
     TexSubImage2D(TexSubImage),
     CopyTexImage2D(CopyTexImage),
     TexParameter {

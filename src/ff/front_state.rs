@@ -109,7 +109,9 @@ impl Client {
                     name != 0 && state.textures.contains_key(&name),
                 )))
             }
-            Entry::AreTexturesResident | Entry::PrioritizeTextures => self.residence(c, state)?,
+            Entry::AreTexturesResident | Entry::PrioritizeTextures => {
+                self.residence(c, state, out)?
+            }
             Entry::GetCompressedTexImage | Entry::GetCompressedTexImageARB => {
                 c.count(3)?;
                 compressed_image(state, c.token(0)?, c.i32(1)?)
@@ -148,13 +150,14 @@ impl Client {
 
     /// glAreTexturesResident(n, textures, residences) and glPrioritizeTextures(n,
     /// textures, priorities) (GL 1.5 §3.8.12): every texture is resident, so the first
-    /// returns TRUE and leaves `residences` alone; priorities are a hint the layer does not
-    /// keep. n < 0 is INVALID_VALUE; glAreTexturesResident of 0 or a name that is no
-    /// texture is INVALID_VALUE too.
+    /// returns TRUE and leaves `residences` alone; the priorities are kept as each
+    /// object's TEXTURE_PRIORITY (`Command::PrioritizeTextures`). n < 0 is INVALID_VALUE;
+    /// glAreTexturesResident of 0 or a name that is no texture is INVALID_VALUE too.
     fn residence<A: Args>(
         &self,
         c: &A,
         state: &FixedState,
+        out: &mut Vec<Command>,
     ) -> Result<Result<Reply, GlErrorKind>, A::Error> {
         c.count(3)?;
         let n = c.i32(0)?;
@@ -162,6 +165,15 @@ impl Client {
             return Err(c.bad(0, "a count of 0 or more"));
         }
         if c.entry() == Entry::PrioritizeTextures {
+            let names = c.array_as(1, n as usize, super::api::CType::UInt)?;
+            let priorities = c.array_as(2, n as usize, super::api::CType::Float)?;
+            out.push(Command::PrioritizeTextures(
+                names
+                    .iter()
+                    .zip(priorities)
+                    .map(|(name, p)| (*name as u32, p as f32))
+                    .collect(),
+            ));
             return Ok(Ok(Reply::None));
         }
         let names = c.array_as(1, n as usize, super::api::CType::UInt)?;

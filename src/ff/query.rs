@@ -726,10 +726,10 @@ impl FixedState {
             r::TEXTURE_MAX_LEVEL => int(p.max_level),
             r::TEXTURE_MIN_LOD => floats(&[p.min_lod]),
             r::TEXTURE_MAX_LOD => floats(&[p.max_lod]),
-            // Not kept by the model either: their GL 1.5 defaults (Table 6.16; every
-            // texture is resident).
-            r::TEXTURE_LOD_BIAS => floats(&[0.0]),
-            r::TEXTURE_PRIORITY => floats(&[1.0]),
+            r::TEXTURE_LOD_BIAS => floats(&[p.lod_bias]),
+            // As an integer, the colour-style conversion (Mesa: 1 → INT_MAX).
+            r::TEXTURE_PRIORITY => normalized(&[p.priority]),
+            // Every texture is resident.
             r::TEXTURE_RESIDENT => boolean(true),
             _ => return Err(GlErrorKind::InvalidEnum),
         })

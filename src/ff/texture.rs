@@ -356,6 +356,10 @@ pub enum TexParam {
     MinLod(f32),
     /// TEXTURE_MAX_LOD (GL 1.2).
     MaxLod(f32),
+    /// TEXTURE_LOD_BIAS (GL 1.4, Table 6.16): any value, kept as given.
+    LodBias(f32),
+    /// TEXTURE_PRIORITY (GL 1.1), clamped to [0, 1]; glPrioritizeTextures sets it too.
+    Priority(f32),
 }
 
 /// A level parameter (BASE_LEVEL, MAX_LEVEL) from glTexParameterf's float as Mesa converts
@@ -403,6 +407,11 @@ pub struct TexParams {
     pub min_lod: f32,
     /// GL default: 1000.
     pub max_lod: f32,
+    /// The object's level-of-detail bias, added to the unit's (TEXTURE_FILTER_CONTROL's)
+    /// and the sum clamped to ±MAX_TEXTURE_LOD_BIAS (GL 1.4 §3.8.8). GL default: 0.
+    pub lod_bias: f32,
+    /// A residence hint (GL 1.1 §3.8.12), in [0, 1]. GL default: 1.
+    pub priority: f32,
 }
 
 impl TexParams {
@@ -422,6 +431,8 @@ impl TexParams {
         max_level: 1000,
         min_lod: -1000.0,
         max_lod: 1000.0,
+        lod_bias: 0.0,
+        priority: 1.0,
     };
 
     /// glTexParameter: validates, then sets.
@@ -454,6 +465,9 @@ impl TexParams {
             TexParam::MaxLevel(l) => self.max_level = l,
             TexParam::MinLod(v) => self.min_lod = v,
             TexParam::MaxLod(v) => self.max_lod = v,
+            TexParam::LodBias(v) => self.lod_bias = v,
+            // NaN stays NaN, as Mesa's CLAMP macro leaves it.
+            TexParam::Priority(v) => self.priority = v.clamp(0.0, 1.0),
         }
         Ok(())
     }

@@ -215,6 +215,17 @@ fn call(c: &Command) -> String {
         Command::MultMatrix(m) => format!("{}({})", Entry::MultMatrixf, arr(&m.to_cols_array())),
         Command::PushMatrix => format!("{}()", Entry::PushMatrix),
         Command::DeleteTextures(names) => name_list(Entry::DeleteTextures, names),
+        Command::PrioritizeTextures(given) => {
+            let names: Vec<String> = given.iter().map(|(n, _)| n.to_string()).collect();
+            let priorities: Vec<String> = given.iter().map(|(_, p)| f(*p)).collect();
+            format!(
+                "{}({}, (GLuint[]){{{}}}, (GLfloat[]){{{}}})",
+                Entry::PrioritizeTextures,
+                given.len(),
+                names.join(", "),
+                priorities.join(", ")
+            )
+        }
         Command::PopMatrix => format!("{}()", Entry::PopMatrix),
         Command::Translate(v) => format!("{}({})", Entry::Translatef, fs(&v.to_array())),
         Command::Rotate { angle_deg, axis } => {
@@ -876,10 +887,15 @@ fn tex_param(target: &str, p: &TexParam) -> String {
             };
             return format!("{}({target}, {pname}, {v})", Entry::TexParameteri);
         }
-        TexParam::MinLod(v) | TexParam::MaxLod(v) => {
+        TexParam::MinLod(v)
+        | TexParam::MaxLod(v)
+        | TexParam::LodBias(v)
+        | TexParam::Priority(v) => {
             let pname = match p {
                 TexParam::MinLod(_) => "GL_TEXTURE_MIN_LOD",
-                _ => "GL_TEXTURE_MAX_LOD",
+                TexParam::MaxLod(_) => "GL_TEXTURE_MAX_LOD",
+                TexParam::LodBias(_) => "GL_TEXTURE_LOD_BIAS",
+                _ => "GL_TEXTURE_PRIORITY",
             };
             return format!("{}({target}, {pname}, {})", Entry::TexParameterf, f(*v));
         }

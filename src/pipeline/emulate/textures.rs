@@ -294,15 +294,18 @@ impl Textures {
         for &(unit, target) in units {
             let name = state.units[unit as usize].bound(target);
             let t = self.object(gl, (target, name))?;
-            // The unit's TEXTURE_LOD_BIAS (GL 1.4) as the object's, which core GL adds to
-            // λ as the unit's would be (the texture's own bias is 0 in GL 1.x), clamped to
-            // ±MAX_TEXTURE_LOD_BIAS; Mesa passes it to llvmpipe's sampler the same way, a
-            // NaN as NaN (λ NaN reads as magnification there and here). A texture bound on
-            // two units of different biases takes the later unit's.
-            let bias = state.units[unit as usize]
-                .env
-                .lod_bias
-                .clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS);
+            // The unit's TEXTURE_LOD_BIAS (GL 1.4) plus the object's, given to the core
+            // object as its own bias. Mesa clamps each to ±MAX_TEXTURE_LOD_BIAS before
+            // adding them (`util_quantize_lod_bias`; GL 1.4 §3.8.8 clamps the sum: object
+            // bias 20 and unit bias −17 sample level 0 on Mesa, measured) and passes the sum
+            // to llvmpipe's sampler the same way, a NaN as NaN (λ NaN reads as
+            // magnification there and here). A texture bound on two units of different
+            // biases takes the later unit's.
+            let clamped = |b: f32| b.clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS);
+            let own = state
+                .texture(target, name)
+                .map_or(0.0, |o| o.params.lod_bias);
+            let bias = clamped(state.units[unit as usize].env.lod_bias) + clamped(own);
             let new_bias =
                 self.lod_bias.get(&t).copied().unwrap_or(0.0).to_bits() != bias.to_bits();
             if !new_bias && self.bound.get(&unit) == Some(&(target, t)) {

@@ -117,6 +117,7 @@ impl Native {
             Command::ActiveTexture(u) => unsafe { g.ActiveTexture(conv::texture_unit(*u)) },
             Command::BindTexture { target, name } => self.textures.bind(g, *target, *name),
             Command::DeleteTextures(names) => self.textures.delete(g, names),
+            Command::PrioritizeTextures(given) => self.textures.prioritize(g, given),
             Command::TexImage(t) => {
                 textures::tex_image(g, t);
                 core.counters.texture_uploads += 1;

@@ -60,6 +60,16 @@ impl Textures {
         }
     }
 
+    /// glPrioritizeTextures of the objects made for these model names.
+    pub fn prioritize(&mut self, g: &gl::Gl, given: &[(u32, f32)]) {
+        for (name, priority) in given {
+            if let Some(id) = self.objects.get(name) {
+                // SAFETY: one name and one priority, read as GL reads them.
+                unsafe { g.PrioritizeTextures(1, id, priority) };
+            }
+        }
+    }
+
     /// glDeleteTextures on every object made.
     pub fn delete_all(&mut self, g: &gl::Gl) {
         for (_, id) in self.objects.drain() {
@@ -235,6 +245,8 @@ pub fn tex_parameter(g: &gl::Gl, target: TextureTarget, param: TexParam) -> bool
         TexParam::MaxLevel(l) => unsafe { g.TexParameteri(t, gl::TEXTURE_MAX_LEVEL, l) },
         TexParam::MinLod(v) => unsafe { g.TexParameterf(t, gl::TEXTURE_MIN_LOD, v) },
         TexParam::MaxLod(v) => unsafe { g.TexParameterf(t, gl::TEXTURE_MAX_LOD, v) },
+        TexParam::LodBias(v) => unsafe { g.TexParameterf(t, gl::TEXTURE_LOD_BIAS, v) },
+        TexParam::Priority(v) => unsafe { g.TexParameterf(t, gl::TEXTURE_PRIORITY, v) },
     }
     true
 }
