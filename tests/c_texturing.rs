@@ -129,6 +129,20 @@ fn the_object_lod_bias_and_priority_are_kept() {
     );
 }
 
+/// `tests/c/crossbar_sources.c`: a combine source naming a disabled or incomplete unit
+/// reads (0, 0, 0, 0), as on Mesa (the spec leaves it undefined).
+#[test]
+fn a_crossbar_source_of_a_unit_off_reads_zero() {
+    assert_as_on_mesa(
+        "crossbar_sources",
+        &[
+            "TEXTURE1 enabled                      40 220 170 230 err 0x0",
+            "TEXTURE1 disabled                      0   0   0   0 err 0x0",
+            "TEXTURE1 incomplete                    0   0   0   0 err 0x0",
+        ],
+    );
+}
+
 /// `tests/c/sub_image_null.c`: glTexSubImage of a NULL pointer is checked as any call and
 /// stores nothing, without an error of its own.
 #[test]

@@ -433,12 +433,14 @@ fn source(w: &mut GlslWriter, key: &FragmentKey, u: u8, s: CombineSource) -> Str
     match s {
         CombineSource::Texture => format!("t{u}"),
         // ARB_texture_env_crossbar: another unit's texel; undefined by the spec when that
-        // unit is disabled — here white.
+        // unit is disabled or its texture incomplete (both leave it out of the key) —
+        // here (0, 0, 0, 0), as Mesa's fixed-function shader reads it
+        // (ff_fragment_shader's constant 0 for a unit without a texture).
         CombineSource::TextureUnit(n) => {
             if key.units.iter().any(|k| k.unit == n) {
                 format!("t{n}")
             } else {
-                Arith(key.precision).color("vec4(1.0)")
+                Arith(key.precision).color("vec4(0.0)")
             }
         }
         CombineSource::Constant => {
