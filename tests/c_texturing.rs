@@ -158,3 +158,16 @@ fn sub_images_from_null_are_checked_and_store_nothing() {
         ],
     );
 }
+
+/// `tests/c/mipmaps_generated_late.c`: GENERATE_MIPMAP set after the base level exists
+/// derives the levels at the next change of the base level.
+#[test]
+fn mipmaps_are_generated_when_the_flag_comes_after_the_image() {
+    assert_as_on_mesa(
+        "mipmaps_generated_late",
+        &[
+            "2D after a sub-image         level 4 width 1: 121 121 0 255 err 0x0",
+            "level 2 drawn 88 8 0 255 err 0x0",
+        ],
+    );
+}

@@ -420,6 +420,10 @@ pub(super) fn generate_mipmap(gl: &glow::Context, target: u32, object: &TextureO
         _ => object.base().is_some(),
     };
     if level == object.params.base_level && object.params.generate_mipmap && ready {
+        // MAX_LEVEL first: the model now holds levels 1…p, which GL generates only up to
+        // MAX_LEVEL, the highest level held when the parameters were last applied (level 0
+        // alone when GENERATE_MIPMAP was set after the image).
+        apply_params(gl, target, object);
         unsafe { gl.generate_mipmap(target) };
     }
 }
