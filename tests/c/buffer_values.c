@@ -52,6 +52,17 @@ static void masked_clear(const char *what, int tests) {
   glStencilMask(0xff);
 }
 
+/* Four stencil values drawn at row y over a stencil buffer of 7, then read. */
+static void draw_stencil(const char *what, int y, GLenum type, const void *data) {
+  glClearStencil(7);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glRasterPos2i(0, y);
+  glDrawPixels(4, 1, GL_STENCIL_INDEX, type, data);
+  GLubyte s[4] = {0};
+  glReadPixels(0, y, 4, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+  printf("%-40s %d %d %d %d err 0x%x\n", what, s[0], s[1], s[2], s[3], glGetError());
+}
+
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "buffer_values.ppm";
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
@@ -68,6 +79,21 @@ int main(int argc, char **argv) {
   /* glClear under the write masks. */
   masked_clear("masked clear, tests off", 0);
   masked_clear("masked clear, tests on", 1);
+
+  /* Stencil images replace the stored values. */
+  GLubyte ub[4] = {0, 37, 200, 255};
+  GLfloat fl[4] = {0, 37, 200, 255};
+  GLushort us[4] = {0, 37, 200, 0x1ff};
+  draw_stencil("draw stencil ubyte", 0, GL_UNSIGNED_BYTE, ub);
+  draw_stencil("draw stencil float", 1, GL_FLOAT, fl);
+  draw_stencil("draw stencil ushort", 2, GL_UNSIGNED_SHORT, us);
+  glStencilMask(0xf0);
+  draw_stencil("draw stencil ubyte, mask 0xf0", 3, GL_UNSIGNED_BYTE, ub);
+  glStencilMask(0xff);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_NEVER, 0, 0);
+  draw_stencil("draw stencil ubyte, test NEVER", 4, GL_UNSIGNED_BYTE, ub);
+  glDisable(GL_STENCIL_TEST);
 
   return finish(out, ctx, buf, W, H);
 }

@@ -31,11 +31,13 @@ pub fn emit(w: &mut GlslWriter, source: PixelSource) {
         PixelSource::Depth => w.line("gl_FragDepth = image.r;"),
         // The bitmap texture holds 0 or 1 per pixel.
         PixelSource::Bitmap => w.line("if (image.r == 0.0) discard;"),
-        // The stencil image holds the 8-bit values as unorm8: s = round(255·r).
+        // The stencil image holds the 8-bit values as unorm8: s = round(255·r). A pass
+        // keeps the pixels that have all its bits: those of its bit plane, or every pixel
+        // for the pass of no bits that first sets the value to 0 (`pixels::stencil_pass`).
         PixelSource::StencilBit => {
             let bit = w.uniform(UniformSource::PixelStencilBit);
             w.line(format!(
-                "if ((int(image.r * 255.0 + 0.5) & {bit}) == 0) discard;"
+                "if ((int(image.r * 255.0 + 0.5) & {bit}) != {bit}) discard;"
             ));
         }
     }
@@ -62,7 +64,7 @@ mod tests {
             (PixelSource::Bitmap, "if (image.r == 0.0) discard;"),
             (
                 PixelSource::StencilBit,
-                "u_pixel_stencil_bit) == 0) discard;",
+                "u_pixel_stencil_bit) != u_pixel_stencil_bit) discard;",
             ),
         ] {
             let mut key = base.clone();
