@@ -397,7 +397,8 @@ pub fn from_model(read: &[u8], format: PixelFormat, ty: PixelType, from: ReadFro
             {
                 let v = u32::from_ne_bytes([g[0], g[1], g[2], g[3]]);
                 match ty {
-                    PixelType::Byte => out.push(v as u8),
+                    // Mesa's `_mesa_pack_stencil_span`: the value's low 7 bits.
+                    PixelType::Byte => out.push((v & 0x7f) as u8),
                     PixelType::Short => out.extend((v as u16).to_ne_bytes()),
                     _ => out.extend(v.to_ne_bytes()),
                 }

@@ -132,6 +132,25 @@ impl PixelTransfer {
         };
         (shifted.wrapping_add(i64::from(self.index_offset)) & ((1 << STENCIL_BITS) - 1)) as u8
     }
+
+    /// Whether a stencil value read goes through unchanged: no shift, no offset, no
+    /// MAP_STENCIL.
+    pub fn stencil_identity(&self) -> bool {
+        self.index_shift == 0 && self.index_offset == 0 && !self.map_stencil
+    }
+
+    /// A stencil value as glReadPixels gives it (GL 1.5 §4.3.2): the index arithmetic
+    /// ([`PixelTransfer::stencil`]), then S_TO_S under MAP_STENCIL, each result kept to
+    /// 8 bits as Mesa's `_mesa_apply_stencil_transfer_ops` keeps it in a byte (a map
+    /// entry beyond 255 keeps its low byte).
+    pub fn stencil_read(&self, s: u8, maps: &PixelMaps) -> u8 {
+        let v = self.stencil(i64::from(s));
+        if self.map_stencil {
+            maps.stencil(i64::from(v)) as i64 as u8
+        } else {
+            v
+        }
+    }
 }
 
 impl Default for PixelTransfer {

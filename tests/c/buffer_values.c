@@ -63,6 +63,20 @@ static void draw_stencil(const char *what, int y, GLenum type, const void *data)
   printf("%-40s %d %d %d %d err 0x%x\n", what, s[0], s[1], s[2], s[3], glGetError());
 }
 
+/* The stencil value at (0, 0) read as unsigned and signed bytes, unsigned shorts and
+ * floats. */
+static void read_stencil(const char *what) {
+  GLubyte ub = 0;
+  GLbyte b = 0;
+  GLushort us = 0;
+  GLfloat f = -1;
+  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &ub);
+  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_BYTE, &b);
+  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_SHORT, &us);
+  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_FLOAT, &f);
+  printf("%-40s %d %d %d %g err 0x%x\n", what, ub, b, us, f, glGetError());
+}
+
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "buffer_values.ppm";
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
@@ -94,6 +108,29 @@ int main(int argc, char **argv) {
   glStencilFunc(GL_NEVER, 0, 0);
   draw_stencil("draw stencil ubyte, test NEVER", 4, GL_UNSIGNED_BYTE, ub);
   glDisable(GL_STENCIL_TEST);
+
+  /* Stencil indices read through the index arithmetic and MAP_STENCIL. */
+  glClearStencil(100);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  read_stencil("read stencil");
+  glPixelTransferi(GL_INDEX_SHIFT, -1);
+  read_stencil("read stencil, shift -1");
+  glPixelTransferi(GL_INDEX_SHIFT, 2);
+  read_stencil("read stencil, shift 2");
+  glPixelTransferi(GL_INDEX_SHIFT, 0);
+  glPixelTransferi(GL_INDEX_OFFSET, 7);
+  read_stencil("read stencil, offset 7");
+  glPixelTransferi(GL_INDEX_OFFSET, -101);
+  read_stencil("read stencil, offset -101");
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+  GLuint map[2] = {9, 200};
+  glPixelMapuiv(GL_PIXEL_MAP_S_TO_S, 2, map);
+  glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+  read_stencil("read stencil, mapped");
+  glPixelTransferi(GL_INDEX_OFFSET, 1);
+  read_stencil("read stencil, offset 1 then mapped");
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+  glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
 
   return finish(out, ctx, buf, W, H);
 }

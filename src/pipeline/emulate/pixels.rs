@@ -158,7 +158,8 @@ fn stencil_pass(s: &FixedState, bit: u32) -> FixedState {
 
 /// glReadPixels under a pixel transfer that is not the identity (GL 1.5 §4.3.2: the
 /// scales and biases apply to colours read, then MAP_COLOR's maps by the nearest entry
-/// (`ff::pixel_map`), DEPTH_SCALE and DEPTH_BIAS to depths): the colour read as RGBA
+/// (`ff::pixel_map`), DEPTH_SCALE and DEPTH_BIAS to depths, INDEX_SHIFT, INDEX_OFFSET and
+/// MAP_STENCIL to stencil indices): the colour read as RGBA
 /// floats, transferred on the CPU, clamped for fixed-point types, L = R + G + B clamped to
 /// [0, 1] for every type (Mesa's `_mesa_pack_rgba_span_float`; measured, a FLOAT read of
 /// RED_SCALE 2 over (0.625, 0.5, 0.25) gives L = 1) and stored in the requested type
@@ -183,6 +184,12 @@ pub fn transferred_read(
             f32s(read_as(PixelFormat::DepthComponent, PixelType::Float))
                 .into_iter()
                 .flat_map(|d| t.depth(d).to_ne_bytes())
+                .collect(),
+        ),
+        PixelFormat::StencilIndex if !t.stencil_identity() => Some(
+            read_as(PixelFormat::StencilIndex, PixelType::UnsignedByte)
+                .into_iter()
+                .flat_map(|s| stencil_bytes(t.stencil_read(s, maps), r.ty))
                 .collect(),
         ),
         PixelFormat::DepthComponent | PixelFormat::StencilIndex => None,
@@ -235,6 +242,17 @@ fn encode_even(v: f32, ty: PixelType) -> Vec<u8> {
         PixelType::Byte | PixelType::Short | PixelType::Int | PixelType::Packed(_) => {
             pixel_types::component_bytes(v, ty)
         }
+    }
+}
+
+/// A stencil value in the type the model reads stencil indices in (`pixel_types::
+/// model_form`: the signed types come as UNSIGNED_INT).
+fn stencil_bytes(s: u8, ty: PixelType) -> Vec<u8> {
+    match ty {
+        PixelType::UnsignedByte => vec![s],
+        PixelType::UnsignedShort => u16::from(s).to_ne_bytes().to_vec(),
+        PixelType::Float => f32::from(s).to_ne_bytes().to_vec(),
+        _ => u32::from(s).to_ne_bytes().to_vec(),
     }
 }
 
