@@ -105,7 +105,10 @@ impl FixedState {
                 self.lights[i].value = l;
             }
             Command::LightModel(p) => self.light_model.set(*p),
-            Command::Material { face, param } => self.materials.set(*face, *param)?,
+            Command::Material { face, param } => match self.color_material.get() {
+                Some(tracking) => self.materials.set_untracked(*face, *param, tracking)?,
+                None => self.materials.set(*face, *param)?,
+            },
             Command::ColorMaterial { face, mode } => {
                 self.color_material.value = super::light::ColorMaterial {
                     face: *face,

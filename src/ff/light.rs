@@ -243,6 +243,44 @@ impl Materials {
         }
         Ok(())
     }
+
+    /// glMaterial while COLOR_MATERIAL is enabled with `tracking`: the colours it tracks
+    /// keep the current colour (GL 1.5 §2.14.3: they "always have the value of the current
+    /// color"), so only the others are set — Mesa's `_mesa_Materialfv` masks them out the
+    /// same way, per face, and glGetMaterial answers the tracked colour.
+    pub fn set_untracked(
+        &mut self,
+        face: Face,
+        param: MaterialParam,
+        tracking: ColorMaterial,
+    ) -> GlResult {
+        let before = *self;
+        self.set(face, param)?;
+        for slot in MaterialSlot::ALL
+            .into_iter()
+            .filter(|s| tracking.tracks(*s))
+        {
+            self.copy_slot(slot, &before);
+        }
+        Ok(())
+    }
+
+    /// Puts `slot` back to its value in `from`.
+    fn copy_slot(&mut self, slot: MaterialSlot, from: &Materials) {
+        let (to, from) = match slot {
+            MaterialSlot::Color(MaterialSide::Front, _)
+            | MaterialSlot::Shininess(MaterialSide::Front) => (&mut self.front, &from.front),
+            MaterialSlot::Color(MaterialSide::Back, _)
+            | MaterialSlot::Shininess(MaterialSide::Back) => (&mut self.back, &from.back),
+        };
+        match slot {
+            MaterialSlot::Color(_, MaterialColor::Ambient) => to.ambient = from.ambient,
+            MaterialSlot::Color(_, MaterialColor::Diffuse) => to.diffuse = from.diffuse,
+            MaterialSlot::Color(_, MaterialColor::Specular) => to.specular = from.specular,
+            MaterialSlot::Color(_, MaterialColor::Emission) => to.emission = from.emission,
+            MaterialSlot::Shininess(_) => to.shininess = from.shininess,
+        }
+    }
 }
 
 impl Materials {
@@ -349,6 +387,11 @@ impl ColorMaterial {
         face: Face::FrontAndBack,
         mode: ColorMaterialMode::AmbientAndDiffuse,
     };
+
+    /// Whether `slot` follows the current colour (when COLOR_MATERIAL is enabled).
+    pub fn tracks(self, slot: MaterialSlot) -> bool {
+        slot.set_by(self.face, self.mode.param(Vec4::ZERO))
+    }
 }
 
 #[cfg(test)]
@@ -363,6 +406,28 @@ mod tests {
             Light::default_for(3).position,
             Vec4::new(0.0, 0.0, 1.0, 0.0)
         );
+    }
+
+    #[test]
+    fn material_calls_leave_the_tracked_colours_alone() {
+        let mut m = Materials::DEFAULT;
+        let tracking = ColorMaterial {
+            face: Face::Front,
+            mode: ColorMaterialMode::Diffuse,
+        };
+        let blue = Vec4::new(0.0, 0.0, 1.0, 1.0);
+        m.set_untracked(
+            Face::FrontAndBack,
+            MaterialParam::AmbientAndDiffuse(blue),
+            tracking,
+        )
+        .unwrap();
+        assert_eq!(m.front.diffuse, Material::DEFAULT.diffuse, "tracked");
+        assert_eq!(m.front.ambient, blue);
+        assert_eq!(m.back.diffuse, blue, "the other face is not tracked");
+        assert!(m
+            .set_untracked(Face::Front, MaterialParam::Shininess(200.0), tracking)
+            .is_err());
     }
 
     #[test]

@@ -1,0 +1,145 @@
+/* Where the colours of lit and fogged fragments come from, printed one per line and drawn
+ * a panel each: glMaterial on colours that COLOR_MATERIAL tracks (they keep the current
+ * colour, GL 1.5 §2.14.3; the untracked ones and the other face are set), answered by
+ * glGetMaterial and drawn after the tracking ends; the colour sum fogged (Mesa fogs the
+ * sum unclamped, where GL 1.5 §3.9 clamps it first); a spot light whose direction is
+ * zero (outside its cone on Mesa, but for the raster position). Run on Mesa's OSMesa and on
+ * fixedfunc's library, the printed lines must be the same and the images match.
+ *
+ * usage: lit_colours [out.ppm] */
+#define GL_GLEXT_PROTOTYPES
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "report.h"
+#define W 64
+#define H 32
+static GLubyte *buf;
+static int panels;
+
+/* The next 8×8 panel, a unit square facing the viewer, and its centre pixel. */
+static void panel(const char *what) {
+  int x = (panels % 8) * 8, y = (panels / 8) * 8;
+  panels++;
+  glBegin(GL_QUADS);
+  glNormal3f(0, 0, 1);
+  glVertex2i(x, y);
+  glVertex2i(x + 8, y);
+  glVertex2i(x + 8, y + 8);
+  glVertex2i(x, y + 8);
+  glEnd();
+  GLubyte p[4] = {0};
+  glReadPixels(x + 4, y + 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+  printf("%-40s %d %d %d %d err 0x%x\n", what, p[0], p[1], p[2], p[3], glGetError());
+}
+
+/* A material colour of one face as glGetMaterialfv answers it. */
+static void material(const char *what, GLenum face, GLenum pname) {
+  GLfloat v[4] = {-1, -1, -1, -1};
+  glGetMaterialfv(face, pname, v);
+  printf("%-40s %g %g %g %g err 0x%x\n", what, v[0], v[1], v[2], v[3], glGetError());
+}
+
+static void materials(const char *what) {
+  char line[64];
+  snprintf(line, sizeof line, "%s: front ambient", what);
+  material(line, GL_FRONT, GL_AMBIENT);
+  snprintf(line, sizeof line, "%s: front diffuse", what);
+  material(line, GL_FRONT, GL_DIFFUSE);
+  snprintf(line, sizeof line, "%s: back ambient", what);
+  material(line, GL_BACK, GL_AMBIENT);
+  snprintf(line, sizeof line, "%s: back diffuse", what);
+  material(line, GL_BACK, GL_DIFFUSE);
+  snprintf(line, sizeof line, "%s: front specular", what);
+  material(line, GL_FRONT, GL_SPECULAR);
+}
+
+static const GLfloat green[4] = {0, 1, 0, 1};
+static const GLfloat blue[4] = {0, 0, 1, 1};
+static const GLfloat grey[4] = {0.5f, 0.5f, 0.5f, 1};
+static const GLfloat default_ambient[4] = {0.2f, 0.2f, 0.2f, 1};
+static const GLfloat default_diffuse[4] = {0.8f, 0.8f, 0.8f, 1};
+static const GLfloat black[4] = {0, 0, 0, 1};
+
+/* The GL defaults of both faces' ambient, diffuse and specular colours. */
+static void reset_materials(void) {
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, default_ambient);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, default_diffuse);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, black);
+}
+
+/* glMaterial while COLOR_MATERIAL tracks some colours. */
+static void colour_material(void) {
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, black);
+
+  /* FRONT_AND_BACK, AMBIENT_AND_DIFFUSE (the default) tracks red; a green diffuse is
+   * refused, and stays refused once the tracking ends. */
+  glEnable(GL_COLOR_MATERIAL);
+  glColor3f(1, 0, 0);
+  panel("tracked red");
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, green);
+  materials("diffuse set while tracked");
+  glDisable(GL_COLOR_MATERIAL);
+  materials("tracking ended");
+  panel("after the tracking");
+
+  /* FRONT, DIFFUSE tracks: AMBIENT_AND_DIFFUSE on both faces sets all but the front
+   * diffuse; the specular is not tracked. */
+  reset_materials();
+  glColorMaterial(GL_FRONT, GL_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColor3f(1, 0.5f, 0);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, blue);
+  glMaterialfv(GL_FRONT, GL_SPECULAR, grey);
+  materials("front diffuse tracked");
+  panel("front diffuse tracked");
+  glDisable(GL_COLOR_MATERIAL);
+  panel("front diffuse no longer tracked");
+
+  /* BACK, AMBIENT tracks: a front ambient is set. */
+  reset_materials();
+  glColorMaterial(GL_BACK, GL_AMBIENT);
+  glEnable(GL_COLOR_MATERIAL);
+  glColor3f(0, 1, 1);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, green);
+  materials("back ambient tracked");
+  glDisable(GL_COLOR_MATERIAL);
+
+  /* glMaterial inside glBegin/glEnd on a tracked colour. */
+  reset_materials();
+  glColorMaterial(GL_FRONT_AND_BACK, GL_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColor3f(1, 1, 0);
+  glBegin(GL_POINTS);
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, blue);
+  glMaterialfv(GL_FRONT, GL_AMBIENT, green);
+  glVertex2i(-5, -5);
+  glEnd();
+  materials("set inside glBegin while tracked");
+  glDisable(GL_COLOR_MATERIAL);
+  panel("after the pair");
+
+  reset_materials();
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  glDisable(GL_LIGHTING);
+}
+
+int main(int argc, char **argv) {
+  const char *out = argc > 1 ? argv[1] : "lit_colours.ppm";
+  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+  buf = calloc(W * H, 4);
+  if (!ctx || !buf || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) return 1;
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(0, W, 0, H, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glClearColor(0.1f, 0.1f, 0.1f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+
+  colour_material();
+
+  return finish(out, ctx, buf, W, H);
+}
