@@ -128,6 +128,32 @@ static void colour_material(void) {
   glDisable(GL_LIGHTING);
 }
 
+/* The colour sum under fog: primary plus secondary above 1, fogged towards black by the
+ * fog coordinate (LINEAR from 0 to 1). */
+static void colour_sum_fogged(void) {
+  static const GLfloat fog_black[4] = {0, 0, 0, 1};
+  glEnable(GL_FOG);
+  glFogfv(GL_FOG_COLOR, fog_black);
+  glFogi(GL_FOG_MODE, GL_LINEAR);
+  glFogi(GL_FOG_COORDINATE_SOURCE, GL_FOG_COORDINATE);
+  glFogf(GL_FOG_START, 0);
+  glFogf(GL_FOG_END, 1);
+  glEnable(GL_COLOR_SUM);
+  glFogCoordf(0.5f);
+  glColor3f(0.75f, 0.25f, 0);
+  glSecondaryColor3f(0.75f, 0.25f, 0);
+  panel("sum 1.5 fogged by half");
+  glColor3f(0.25f, 0.5f, 1);
+  glSecondaryColor3f(0.5f, 0.75f, 1);
+  glFogCoordf(0.25f);
+  panel("sum above 1 fogged by a quarter");
+  glDisable(GL_FOG);
+  panel("sum above 1 unfogged");
+  glDisable(GL_COLOR_SUM);
+  glSecondaryColor3f(0, 0, 0);
+  glFogi(GL_FOG_COORDINATE_SOURCE, GL_FRAGMENT_DEPTH);
+}
+
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "lit_colours.ppm";
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
@@ -140,6 +166,7 @@ int main(int argc, char **argv) {
   glClear(GL_COLOR_BUFFER_BIT);
 
   colour_material();
+  colour_sum_fogged();
 
   return finish(out, ctx, buf, W, H);
 }

@@ -70,11 +70,16 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
             }
             if key.color_sum {
                 // Colour sum (GL 1.2 §3.9): C = clamp(C_tex + C_sec) on RGB; alpha as is.
+                // Mesa deviates under fog: its program fogs the sum unclamped (the target
+                // clamps the result), measured: 0.75 + 0.75 under LINEAR fog f = ½ towards
+                // black gives 191, where the clamped sum gives 128. Float follows Mesa.
                 let m = Arith(key.precision);
-                w.line(format!(
-                    "previous.rgb = {};",
-                    m.clamp("previous.rgb + secondary.rgb")
-                ));
+                let sum = "previous.rgb + secondary.rgb";
+                let sum = match (key.precision, key.fog) {
+                    (Precision::Float, Some(_)) => sum.to_string(),
+                    _ => m.clamp(sum),
+                };
+                w.line(format!("previous.rgb = {sum};"));
             }
             if key.fog.is_some() {
                 emit_fog_blend(&mut w, key.precision);
