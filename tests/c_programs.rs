@@ -250,7 +250,8 @@ fn materials_set_inside_a_pair_light_per_vertex_as_on_mesa() {
 
 /// `tests/c/lit_colours.c`: glMaterial on colours COLOR_MATERIAL tracks leaves them the
 /// current colour (and sets the others), as glGetMaterial answers and the panels drawn
-/// after the tracking show; the colour sum is fogged unclamped; Mesa's image exactly.
+/// after the tracking show; the colour sum is fogged unclamped; a zero spot direction
+/// leaves every vertex outside the cone (but lights the raster position); Mesa's image exactly.
 #[test]
 fn lit_and_fogged_colours_come_from_where_mesa_takes_them() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("lit_colours");
@@ -261,6 +262,7 @@ fn lit_and_fogged_colours_come_from_where_mesa_takes_them() {
             "after the tracking                       255 0 0 255 err 0x0",
             "front diffuse tracked: front ambient     0 0 1 1 err 0x0",
             "sum 1.5 fogged by half                   191 64 0 255 err 0x0",
+            "zero spot direction, cutoff 45           0 0 0 255 err 0x0",
         ],
     );
     assert_same_text(&mesa_text, &ours_text, 20, "a lit or fogged colour");

@@ -75,6 +75,15 @@ impl Light {
         }
     }
 
+    /// cos(cutoff) as Mesa keeps it (`_CosCutoff`): `cosf` of the angle converted to
+    /// radians in double precision, raised to 0 (a cutoff of 90° gives 0, where the
+    /// single-precision cosine gives −4.4·10⁻⁸).
+    pub fn cos_cutoff(&self) -> f32 {
+        ((f64::from(self.spot_cutoff) * std::f64::consts::PI / 180.0) as f32)
+            .cos()
+            .max(0.0)
+    }
+
     /// Sets one parameter; positions and directions go to eye space through `modelview`.
     pub fn set(&mut self, param: LightParam, modelview: Mat4) -> GlResult {
         match param {

@@ -47,9 +47,12 @@ pub fn lit_color(s: &FixedState, eye: Vec4, n: Vec3) -> Vec4 {
             (d / dist.max(1e-30), att)
         };
         if light.spot_cutoff != 180.0 {
-            // spot = (−L·ŝ)^e when −L·ŝ ≥ cos(cutoff), else 0; x^0 = 1.
+            // spot = (−L·ŝ)^e when −L·ŝ ≥ cos(cutoff), else 0; x^0 = 1. Mesa's raster
+            // position tests ≥ with its cosine (`Light::cos_cutoff`), where its vertex
+            // program tests > (`shadergen::vertex`): a zero spot direction lights a raster
+            // position by (0)^e.
             let sd = (-dir).dot(light.spot_direction.normalize_or_zero());
-            let cos = light.spot_cutoff.to_radians().cos();
+            let cos = light.cos_cutoff();
             att *= if sd < cos {
                 0.0
             } else if light.spot_exponent == 0.0 {

@@ -154,6 +154,37 @@ static void colour_sum_fogged(void) {
   glFogi(GL_FOG_COORDINATE_SOURCE, GL_FRAGMENT_DEPTH);
 }
 
+/* A spot light at the eye with a zero spot direction: outside the cone of every cutoff
+ * (Mesa's program), where a raster position is lit by (0)^exponent. */
+static void zero_spot_direction(void) {
+  static const GLfloat at_eye[4] = {0, 0, 1, 1};
+  static const GLfloat zero[3] = {0, 0, 0};
+  static const GLfloat dim[4] = {0.25f, 0.25f, 0.25f, 1};
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glLightfv(GL_LIGHT0, GL_AMBIENT, dim);
+  glLightfv(GL_LIGHT0, GL_POSITION, at_eye);
+  glLightfv(GL_LIGHT0, GL_SPOT_DIRECTION, zero);
+  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 45);
+  panel("zero spot direction, cutoff 45");
+  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 90);
+  panel("zero spot direction, cutoff 90");
+  glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 2);
+  panel("zero spot direction, exponent 2");
+  glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 0);
+  glRasterPos2i(4, 4);
+  GLfloat c[4] = {-1, -1, -1, -1};
+  glGetFloatv(GL_CURRENT_RASTER_COLOR, c);
+  printf("%-40s %g %g %g %g err 0x%x\n", "raster colour, zero spot direction", c[0], c[1], c[2],
+         c[3], glGetError());
+  static const GLfloat down[3] = {0, 0, -1};
+  glLightfv(GL_LIGHT0, GL_SPOT_DIRECTION, down);
+  panel("spot towards the square, cutoff 90");
+  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 180);
+  glLightfv(GL_LIGHT0, GL_AMBIENT, black);
+  glDisable(GL_LIGHTING);
+}
+
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "lit_colours.ppm";
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
@@ -167,6 +198,7 @@ int main(int argc, char **argv) {
 
   colour_material();
   colour_sum_fogged();
+  zero_spot_direction();
 
   return finish(out, ctx, buf, W, H);
 }

@@ -39,8 +39,10 @@ pub enum LightValue {
     Diffuse,
     Specular,
     Position,
+    /// The eye-space spot direction normalised as Mesa normalises it
+    /// ([`normalized_as_mesa`]).
     SpotDirection,
-    /// (spot exponent, cos(cutoff), 0, 0).
+    /// (spot exponent, cos(cutoff) as Mesa keeps it (`Light::cos_cutoff`), 0, 0).
     Spot,
     /// (constant, linear, quadratic, 0).
     Attenuation,
@@ -282,13 +284,10 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
                 LightValue::Diffuse => Vec4(l.diffuse),
                 LightValue::Specular => Vec4(l.specular),
                 LightValue::Position => Vec4(l.position),
-                LightValue::SpotDirection => Vec4(l.spot_direction.extend(0.0)),
-                LightValue::Spot => Vec4(glam::Vec4::new(
-                    l.spot_exponent,
-                    l.spot_cutoff.to_radians().cos(),
-                    0.0,
-                    0.0,
-                )),
+                LightValue::SpotDirection => Vec4(normalized_as_mesa(l.spot_direction).extend(0.0)),
+                LightValue::Spot => {
+                    Vec4(glam::Vec4::new(l.spot_exponent, l.cos_cutoff(), 0.0, 0.0))
+                }
                 LightValue::Direction => {
                     Vec4(normalized_as_mesa(l.position.truncate()).extend(0.0))
                 }

@@ -481,14 +481,16 @@ fn emit_light(
         ));
     }
     if l.spot {
-        // spot = (−L·ŝ)^e when −L·ŝ ≥ cos(cutoff), else 0; x^0 = 1 (GLSL's pow(0,0) is undefined).
+        // spot = (−L·ŝ)^e when −L·ŝ > cos(cutoff), else 0; x^0 = 1 (GLSL's pow(0,0) is
+        // undefined). GL 1.5 §2.14.1 lights −L·ŝ ≥ cos(cutoff); Mesa's program tests
+        // cos(cutoff) < −L·ŝ (SLT) with the cosine raised to 0 and ŝ normalised on the CPU
+        // (`LightValue::Spot`, `LightValue::SpotDirection`), so a zero spot direction, which
+        // stays zero, lights nothing but the ambient term (measured on Mesa); followed.
         let dir = u(w, LightValue::SpotDirection);
         let spot = u(w, LightValue::Spot);
+        w.line(format!("float {v}_sd = dot(-{v}_dir, {dir}.xyz);"));
         w.line(format!(
-            "float {v}_sd = dot(-{v}_dir, normalize({dir}.xyz));"
-        ));
-        w.line(format!(
-            "{v}_att *= ({v}_sd < {spot}.y) ? 0.0 : (({spot}.x == 0.0) ? 1.0 : pow(max({v}_sd, 0.0), {spot}.x));"
+            "{v}_att *= ({v}_sd > {spot}.y) ? (({spot}.x == 0.0) ? 1.0 : pow({v}_sd, {spot}.x)) : 0.0;"
         ));
     }
     // n·L of NaN (a NaN light position or direction) counts as facing away: no diffuse or
