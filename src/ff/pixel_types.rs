@@ -393,6 +393,11 @@ pub fn from_model(read: &[u8], format: PixelFormat, ty: PixelType, from: ReadFro
                 }
             }
             PixelType::Byte | PixelType::Short | PixelType::Int
+                if format == PixelFormat::DepthComponent =>
+            {
+                out.extend(depth_signed(read_f32(raw(0)), ty));
+            }
+            PixelType::Byte | PixelType::Short | PixelType::Int
                 if format == PixelFormat::StencilIndex =>
             {
                 let v = u32::from_ne_bytes([g[0], g[1], g[2], g[3]]);
@@ -522,6 +527,23 @@ pub fn packed_components(data: &[u8], p: PackedType) -> Vec<f64> {
         out.extend(values.iter().map(|u| u / 255.0));
     }
     out
+}
+
+/// A depth d ∈ [0, 1] in a signed type as Mesa's `_mesa_pack_depth_span` stores it, with
+/// its FLOAT_TO_BYTE, FLOAT_TO_SHORT and FLOAT_TO_INT: BYTE (⌊255·d⌋ − 1)/2 and SHORT
+/// (⌊65535·d⌋ − 1)/2 in single precision, the division truncated towards zero (GL 1.5
+/// Table 4.7's ((2ᵇ − 1)·d − 1)/2 truncated, but for the product truncated first), INT
+/// ⌊(2³¹ − 1)·d⌋ in double precision. Measured: 0.5 stored in 24 bits reads 63, 16383
+/// and 1073741951.
+fn depth_signed(d: f32, ty: PixelType) -> Vec<u8> {
+    let half = |max: f32| ((max * d) as i32 - 1) / 2;
+    match ty {
+        PixelType::Byte => vec![half(255.0) as i8 as u8],
+        PixelType::Short => (half(65535.0) as i16).to_ne_bytes().to_vec(),
+        _ => ((2147483647.0 * f64::from(d)) as i32)
+            .to_ne_bytes()
+            .to_vec(),
+    }
 }
 
 fn read_f32(b: &[u8]) -> f32 {

@@ -77,6 +77,23 @@ static void read_stencil(const char *what) {
   printf("%-40s %d %d %d %g err 0x%x\n", what, ub, b, us, f, glGetError());
 }
 
+/* The depth at (0, 0) read in every integer type. */
+static void read_depth(const char *what) {
+  GLbyte b = 0;
+  GLshort s = 0;
+  GLint i = 0;
+  GLubyte ub = 0;
+  GLushort us = 0;
+  GLuint ui = 0;
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_BYTE, &b);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_SHORT, &s);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_INT, &i);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, &ub);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, &us);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &ui);
+  printf("%-40s %d %d %d %u %u %u err 0x%x\n", what, b, s, i, ub, us, ui, glGetError());
+}
+
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "buffer_values.ppm";
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
@@ -131,6 +148,16 @@ int main(int argc, char **argv) {
   read_stencil("read stencil, offset 1 then mapped");
   glPixelTransferi(GL_INDEX_OFFSET, 0);
   glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+
+  /* Depths read in the signed and unsigned types. */
+  static const double depths[] = {0, 0.25, 0.5, 0.75, 1, 0.123456};
+  for (unsigned k = 0; k < sizeof depths / sizeof depths[0]; k++) {
+    char line[48];
+    snprintf(line, sizeof line, "read depth %g", depths[k]);
+    glClearDepth(depths[k]);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    read_depth(line);
+  }
 
   return finish(out, ctx, buf, W, H);
 }
