@@ -94,6 +94,19 @@ static void read_depth(const char *what) {
   printf("%-40s %d %d %d %u %u %u err 0x%x\n", what, b, s, i, ub, us, ui, glGetError());
 }
 
+/* The alpha at (0, 0) read alone in the unsigned types and as a float. */
+static void read_alpha(const char *what) {
+  GLubyte ub = 0;
+  GLushort us = 0;
+  GLuint ui = 0;
+  GLfloat f = -1;
+  glReadPixels(0, 0, 1, 1, GL_ALPHA, GL_UNSIGNED_BYTE, &ub);
+  glReadPixels(0, 0, 1, 1, GL_ALPHA, GL_UNSIGNED_SHORT, &us);
+  glReadPixels(0, 0, 1, 1, GL_ALPHA, GL_UNSIGNED_INT, &ui);
+  glReadPixels(0, 0, 1, 1, GL_ALPHA, GL_FLOAT, &f);
+  printf("%-40s %u 0x%04x 0x%08x %.9g err 0x%x\n", what, ub, us, ui, f, glGetError());
+}
+
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "buffer_values.ppm";
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
@@ -158,6 +171,18 @@ int main(int argc, char **argv) {
     glClear(GL_DEPTH_BUFFER_BIT);
     read_depth(line);
   }
+
+  /* Alpha read alone. */
+  static const int alphas[] = {0, 1, 128, 231, 255};
+  for (unsigned k = 0; k < sizeof alphas / sizeof alphas[0]; k++) {
+    char line[48];
+    snprintf(line, sizeof line, "read alpha %d/255", alphas[k]);
+    glClearColor(0.5f, 0.25f, 1, alphas[k] / 255.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    read_alpha(line);
+  }
+  glClearColor(0.1f, 0.1f, 0.1f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
 
   return finish(out, ctx, buf, W, H);
 }

@@ -574,6 +574,20 @@ fn read(gl: &glow::Context, r: &ReadPixels) -> Vec<u8> {
             }
             out
         }
+        // Alpha in a wider unsigned type or as floats: the driver's RGBA read in that type,
+        // its A, as Mesa converts the stored value straight to the type (measured: 231/255
+        // as UNSIGNED_INT is 0xe7e7e7e7; through a float it would be 0xe7e7e8ff).
+        PixelFormat::Alpha
+            if matches!(
+                r.ty,
+                PixelType::UnsignedShort | PixelType::UnsignedInt | PixelType::Float
+            ) =>
+        {
+            let rgba = read_raw(glow::RGBA, 4, r.ty);
+            rgba.chunks_exact(4 * size)
+                .flat_map(|p| p[3 * size..].to_vec())
+                .collect()
+        }
         PixelFormat::Luminance | PixelFormat::LuminanceAlpha | PixelFormat::Alpha => {
             let rgba = read_raw(glow::RGBA, 4, PixelType::Float);
             let mut out = Vec::with_capacity(w * h * r.format.components() * size);
