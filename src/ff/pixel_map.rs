@@ -11,9 +11,11 @@
 //!
 //! Lookup of a colour component c in [0, 1] (after scale, bias and the clamp): GL 1.5
 //! §3.6.5 says the nearest entry. Mesa 22.3 on llvmpipe takes two rules, and the layer
-//! follows both: glDrawPixels and glCopyPixels take the entry `floor(c · (size − 1))`
-//! (their maps are sampled as a texture; measured, tests/c/pixelstore.c: red 51/255
-//! through a 5-entry map takes entry 0), glReadPixels and the texture images
+//! follows both: glDrawPixels and glCopyPixels sample the maps as a 256-texel texture whose
+//! texel j holds entry `⌊j · size / 256⌋` (Mesa's `load_color_map_texture`), at the
+//! texel j = min(⌊256·c⌋, 255) (measured, tests/c/pixelstore.c: red 51/255 through a
+//! 5-entry map takes entry 0; tests/c/buffer_values.c: 72/255 through a 4-entry map takes
+//! entry 1, where ⌊c · (size − 1)⌋ gives 0), glReadPixels and the texture images
 //! (glTexImage, glCopyTexImage) the nearest, `roundEven(c · (size − 1))` (Mesa's
 //! `_mesa_map_rgba`; measured, tests/c/transfer.c: the same red takes entry 1).
 
@@ -151,11 +153,13 @@ impl PixelMaps {
         Ok(())
     }
 
-    /// One component c ∈ [0, 1] through `map`: entry floor(c · (size − 1)) (Mesa's rule,
-    /// see the module note).
+    /// One component c ∈ [0, 1] through `map` as glDrawPixels takes it: entry
+    /// ⌊j · size / 256⌋ of the texel j = min(⌊256·c⌋, 255) (Mesa's rule, see the module
+    /// note).
     pub fn lookup(&self, map: PixelMapName, c: f32) -> f32 {
         let t = self.get(map);
-        let i = (c.clamp(0.0, 1.0) * (t.len() - 1) as f32).floor() as usize;
+        let j = ((c.clamp(0.0, 1.0) * 256.0).floor() as usize).min(255);
+        let i = j * t.len() / 256;
         t.get(i.min(t.len() - 1)).copied().unwrap_or(0.0)
     }
 

@@ -41,16 +41,27 @@ fn lookups_take_the_entry_below() {
     let ramp: Vec<f64> = (0..5).map(|i| f64::from(i) / 4.0).rev().collect();
     maps.set(&PixelMap::new(PixelMapName::RToR, &ramp, MapValues::Float).unwrap())
         .unwrap();
-    // c · 4: 0 → entry 0 (1.0), 1 → entry 4 (0.0), 0.2 · 4 = 0.8 → entry 0 (Mesa),
-    // 0.625 · 4 = 2.5 → entry 2.
+    // Texel j = ⌊256·c⌋ (at most 255), entry ⌊5j/256⌋: 0 → entry 0 (1.0), 1 → texel 255,
+    // entry 4 (0.0), 0.2 → texel 51, entry 0 (Mesa), 0.625 → texel 160, entry 3,
+    // 0.999 → texel 255, entry 4.
     assert_eq!(maps.lookup(PixelMapName::RToR, 0.0), 1.0);
     assert_eq!(maps.lookup(PixelMapName::RToR, 1.0), 0.0);
     assert_eq!(maps.lookup(PixelMapName::RToR, 0.2), 1.0);
-    assert_eq!(maps.lookup(PixelMapName::RToR, 0.625), 0.5);
+    assert_eq!(maps.lookup(PixelMapName::RToR, 0.625), 0.25);
     assert_eq!(
         maps.lookup(PixelMapName::RToR, 0.999),
-        0.25,
-        "3.996 → entry 3"
+        0.0,
+        "255.7 → texel 255 → entry 4"
+    );
+    assert_eq!(
+        maps.lookup(PixelMapName::RToR, 52.0 / 256.0),
+        0.75,
+        "texel 52 → entry 1 (5·52 = 260)"
+    );
+    assert_eq!(
+        maps.lookup(PixelMapName::RToR, 51.99 / 256.0),
+        1.0,
+        "texel 51 → entry 0 (5·51 = 255)"
     );
     let s = PixelMap::new(PixelMapName::SToS, &[5.0, 6.0, 7.0, 8.0], MapValues::Float).unwrap();
     maps.set(&s).unwrap();

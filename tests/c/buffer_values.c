@@ -184,5 +184,34 @@ int main(int argc, char **argv) {
   glClearColor(0.1f, 0.1f, 0.1f, 1);
   glClear(GL_COLOR_BUFFER_BIT);
 
+  /* MAP_COLOR on glDrawPixels: red through a 4-entry map, green through a 3-entry one
+   * (blue and alpha masked off). */
+  GLubyte ramp[32 * 4];
+  for (int i = 0; i < 32; i++) {
+    ramp[4 * i] = (GLubyte)(i * 255 / 31);
+    ramp[4 * i + 1] = (GLubyte)(255 - i * 8);
+    ramp[4 * i + 2] = 100;
+    ramp[4 * i + 3] = 50;
+  }
+  GLfloat rmap[4] = {0, 0.2f, 0.9f, 1};
+  GLfloat gmap[3] = {1, 0.5f, 0};
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 4, rmap);
+  glPixelMapfv(GL_PIXEL_MAP_G_TO_G, 3, gmap);
+  glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE);
+  glRasterPos2i(0, 8);
+  glDrawPixels(32, 1, GL_RGBA, GL_UNSIGNED_BYTE, ramp);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+  GLubyte mapped[32 * 4];
+  glReadPixels(0, 8, 32, 1, GL_RGBA, GL_UNSIGNED_BYTE, mapped);
+  for (int i = 0; i < 32; i += 4) {
+    char line[48];
+    snprintf(line, sizeof line, "draw mapped, red %d green %d", ramp[4 * i], ramp[4 * i + 1]);
+    printf("%-40s %d %d | %d %d | %d %d | %d %d\n", line, mapped[4 * i], mapped[4 * i + 1],
+           mapped[4 * i + 4], mapped[4 * i + 5], mapped[4 * i + 8], mapped[4 * i + 9],
+           mapped[4 * i + 12], mapped[4 * i + 13]);
+  }
+
   return finish(out, ctx, buf, W, H);
 }
