@@ -4,9 +4,9 @@
  * apply either way), stencil images drawn over a cleared stencil buffer (each value
  * replaces the stored one under the write mask), stencil indices read through
  * INDEX_SHIFT, INDEX_OFFSET and MAP_STENCIL (§4.3.2), depths read in the signed and
- * unsigned types, alpha read alone in the wider types, and colours drawn through MAP_COLOR's
- * maps. Run on Mesa's OSMesa and on fixedfunc's library, the printed lines must be the
- * same and the images match.
+ * unsigned types, alpha read alone in the wider types, colours drawn through MAP_COLOR's
+ * maps and depths drawn from unsigned bytes. Run on Mesa's OSMesa and on fixedfunc's
+ * library, the printed lines must be the same and the images match.
  *
  * usage: buffer_values [out.ppm] */
 #define GL_GLEXT_PROTOTYPES
@@ -211,6 +211,22 @@ int main(int argc, char **argv) {
     printf("%-40s %d %d | %d %d | %d %d | %d %d\n", line, mapped[4 * i], mapped[4 * i + 1],
            mapped[4 * i + 4], mapped[4 * i + 5], mapped[4 * i + 8], mapped[4 * i + 9],
            mapped[4 * i + 12], mapped[4 * i + 13]);
+  }
+
+  /* Depths drawn from unsigned bytes (depth test ALWAYS, so they are written). */
+  GLubyte zb[8] = {0, 1, 96, 97, 127, 128, 201, 255};
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glRasterPos2i(0, 12);
+  glDrawPixels(8, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, zb);
+  glDisable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  GLuint zr[8] = {0};
+  glReadPixels(0, 12, 8, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, zr);
+  for (int i = 0; i < 8; i++) {
+    char line[48];
+    snprintf(line, sizeof line, "draw depth ubyte %d", zb[i]);
+    printf("%-40s 0x%08x\n", line, zr[i]);
   }
 
   return finish(out, ctx, buf, W, H);
