@@ -95,6 +95,21 @@ pub struct PointKey {
     pub attenuated: bool,
 }
 
+impl PointKey {
+    /// The points of `state`: round under POINT_SMOOTH, attenuated when
+    /// POINT_DISTANCE_ATTENUATION is not (1, 0, 0).
+    pub fn of(state: &FixedState) -> PointKey {
+        PointKey {
+            shape: if state.smooth.point {
+                PointShape::Round
+            } else {
+                PointShape::Square
+            },
+            attenuated: state.point_params.attenuated(),
+        }
+    }
+}
+
 /// How a pass's points are rasterised.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PointShape {

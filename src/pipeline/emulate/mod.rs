@@ -40,7 +40,7 @@ use self::cache::ProgramCache;
 use self::draw::{GeometryCache, Winding};
 use self::key::{PointKey, PointShape, PositionSource, ShaderKey};
 use self::program::Program;
-use self::sync::{LogicOpCall, RasterSync};
+use self::sync::{CoreCalls, RasterSync};
 use self::textures::Textures;
 use super::core::{Core, Issue, PathPipeline};
 use super::framebuffers::FramebufferMirror;
@@ -107,7 +107,7 @@ impl EmulatedPipeline {
             programs: ProgramCache::default(),
             geometry: GeometryCache::default(),
             textures: Textures::default(),
-            raster: RasterSync::new(LogicOpCall::load(ctx)),
+            raster: RasterSync::new(CoreCalls::load(ctx)),
             precision: Precision::Float,
             framebuffers: FramebufferMirror::new(true),
         };
@@ -188,14 +188,7 @@ impl Emulate {
         // lines the core context's own LINE_SMOOTH (`sync`), the same aaline stage.
         // POLYGON_SMOOTH changes nothing on llvmpipe (measured: a blended triangle is the
         // same pixels with it), so it is state only.
-        let points = PointKey {
-            shape: if state.smooth.point {
-                PointShape::Round
-            } else {
-                PointShape::Square
-            },
-            attenuated: state.point_params.attenuated(),
-        };
+        let points = PointKey::of(state);
         let stipple = state.line_stipple.get();
         if let (Some(stipple), true) = (stipple, stipple_dashes::is_line(geometry.primitive)) {
             let dashes = stipple_dashes::of_draw(state, stipple, geometry);

@@ -10,36 +10,66 @@ use glow::HasContext;
 
 use super::conv;
 use super::draw::Winding;
-use super::key::PositionSource;
+use super::key::{PointKey, PositionSource};
 use super::polygon::PolygonPass;
-use super::shadergen::WINDOW_SPAN;
+use super::shadergen::{uniform_point_size, WINDOW_SPAN};
 use crate::ff::{
     Blend, ColorMask, DepthRange, DepthTest, Face, FixedState, FrontFace, LogicOp, OffsetEnables,
     PolygonMode, ScissorBox, StencilTest, Toggle, Viewport, MAX_CLIP_PLANES,
 };
 
-/// glLogicOp of the core context: glow 0.16 has no wrapper for it, so the entry point is
-/// looked up once when the pipeline is made (`None`: the driver has none; COLOR_LOGIC_OP
-/// is still toggled, with the driver's opcode).
-#[derive(Clone, Copy, Default)]
-pub struct LogicOpCall(Option<unsafe extern "system" fn(u32)>);
+/// A core GL call of one argument that glow 0.16 does not wrap (glLogicOp, glPointSize),
+/// looked up once when the pipeline is made (`None`: the driver has none, and the call
+/// does nothing).
+pub struct CoreCall<A>(Option<unsafe extern "system" fn(A)>);
 
-impl LogicOpCall {
-    pub fn load(ctx: &crate::gpu::GpuContext) -> LogicOpCall {
-        let p = ctx.proc_address("glLogicOp");
-        // SAFETY: a non-null address from the context's loader is glLogicOp, whose C type
-        // is void (GLenum); `Option<fn>` has the same layout as a nullable pointer.
-        LogicOpCall(unsafe {
-            std::mem::transmute::<*const std::ffi::c_void, Option<unsafe extern "system" fn(u32)>>(
-                p,
-            )
+impl<A> Clone for CoreCall<A> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<A> Copy for CoreCall<A> {}
+
+impl<A> Default for CoreCall<A> {
+    fn default() -> Self {
+        CoreCall(None)
+    }
+}
+
+impl<A> CoreCall<A> {
+    /// `name`, whose C type must be void (A).
+    fn load(ctx: &crate::gpu::GpuContext, name: &str) -> CoreCall<A> {
+        let p = ctx.proc_address(name);
+        // SAFETY: a non-null address from the context's loader is `name`, of C type
+        // void (A) for each use below; `Option<fn>` has the same layout as a nullable
+        // pointer.
+        CoreCall(unsafe {
+            std::mem::transmute::<*const std::ffi::c_void, Option<unsafe extern "system" fn(A)>>(p)
         })
     }
 
-    fn call(self, op: u32) {
+    fn call(self, a: A) {
         if let Some(f) = self.0 {
-            // SAFETY: glLogicOp on the current context.
-            unsafe { f(op) }
+            // SAFETY: the call on the current context.
+            unsafe { f(a) }
+        }
+    }
+}
+
+/// The core calls the sync makes that glow lacks: glLogicOp (COLOR_LOGIC_OP is still
+/// toggled without it, with the driver's opcode) and glPointSize.
+#[derive(Clone, Copy, Default)]
+pub struct CoreCalls {
+    logic_op: CoreCall<u32>,
+    point_size: CoreCall<f32>,
+}
+
+impl CoreCalls {
+    pub fn load(ctx: &crate::gpu::GpuContext) -> CoreCalls {
+        CoreCalls {
+            logic_op: CoreCall::load(ctx, "glLogicOp"),
+            point_size: CoreCall::load(ctx, "glPointSize"),
         }
     }
 }
@@ -86,8 +116,13 @@ pub struct RasterSync {
     offset: Sent<(OffsetEnables, PolygonOffset)>,
     cull: Sent<(Option<Face>, FrontFace)>,
     polygon_mode: Sent<PolygonMode>,
-    /// glLineWidth; the point size is a uniform written to gl_PointSize.
+    /// glLineWidth.
     line_width: Sent<f32>,
+    /// PROGRAM_POINT_SIZE: on only for a points pass whose sizes are attenuated by
+    /// distance (the program's gl_PointSize); otherwise glPointSize carries the size
+    /// (`point_size`), as in Mesa's rasteriser state (`uniform_point_size`).
+    program_point_size: Sent<bool>,
+    point_size: Sent<f32>,
     /// LINE_SMOOTH: core GL keeps it, and llvmpipe draws it with the same aaline stage as
     /// Mesa's compatibility context (round points are the program's, `PointShape::Round`).
     line_smooth: Sent<bool>,
@@ -95,7 +130,7 @@ pub struct RasterSync {
     /// COLOR_LOGIC_OP with its opcode (core GL has glLogicOp and, like GL 1.x, blends
     /// nothing while it is on).
     logic_op: Sent<Option<LogicOp>>,
-    logic_op_call: LogicOpCall,
+    calls: CoreCalls,
     /// The enabled user clip planes as bits: CLIP_DISTANCEi for plane i, which the
     /// program writes (the key lists the same planes).
     clip_planes: Sent<u8>,
@@ -117,10 +152,10 @@ fn toggle(gl: &glow::Context, cap: u32, on: bool) {
 }
 
 impl RasterSync {
-    /// A sync that sends glLogicOp through `logic_op`.
-    pub fn new(logic_op: LogicOpCall) -> RasterSync {
+    /// A sync that makes the calls glow lacks through `calls`.
+    pub fn new(calls: CoreCalls) -> RasterSync {
         RasterSync {
-            logic_op_call: logic_op,
+            calls,
             ..RasterSync::default()
         }
     }
@@ -176,11 +211,20 @@ impl RasterSync {
         self.color_mask.sync(s.color_mask, c, |m| unsafe {
             gl.color_mask(m.r, m.g, m.b, m.a)
         });
-        self.line_width.sync(s.line_width, c, |w| unsafe {
-            // The program writes gl_PointSize (glPointSize's value, a uniform).
-            gl.enable(glow::PROGRAM_POINT_SIZE);
-            gl.line_width(w);
-        });
+        self.line_width
+            .sync(s.line_width, c, |w| unsafe { gl.line_width(w) });
+        let draws_points = pass.is_some_and(|p| p.draws_points());
+        let points = PointKey::of(s);
+        self.program_point_size
+            .sync(draws_points && points.attenuated, c, |on| {
+                toggle(gl, glow::PROGRAM_POINT_SIZE, on)
+            });
+        if draws_points && !points.attenuated {
+            let limits = (s.point_params.size_min, s.point_params.size_max);
+            let size = uniform_point_size(s.point_size, limits, points.shape);
+            self.point_size
+                .sync(size, c, |v| self.calls.point_size.call(v));
+        }
         self.line_smooth
             .sync(s.smooth.line, c, |on| toggle(gl, glow::LINE_SMOOTH, on));
         self.sync_tests(gl, s, pass);
@@ -225,7 +269,7 @@ impl RasterSync {
                     gl.blend_color(k.x, k.y, k.z, k.w);
                 }
             });
-        let call = self.logic_op_call;
+        let call = self.calls.logic_op;
         self.logic_op.sync(s.logic_op.get(), c, |op| {
             toggle(gl, glow::COLOR_LOGIC_OP, op.is_some());
             if let Some(op) = op {
@@ -275,7 +319,7 @@ impl RasterSync {
     /// Forget what was sent (after something else touched GL state).
     pub fn invalidate(&mut self) {
         let counts = self.counts;
-        *self = RasterSync::new(self.logic_op_call);
+        *self = RasterSync::new(self.calls);
         self.counts = counts;
     }
 }

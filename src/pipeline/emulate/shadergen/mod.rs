@@ -18,6 +18,8 @@ mod fragment;
 mod pixels;
 mod vertex;
 
+pub use vertex::uniform_point_size;
+
 use super::key::ShaderKey;
 use super::uniforms::UniformSource;
 

@@ -220,7 +220,13 @@ fn emit_point_size(w: &mut GlslWriter, eye: &mut EyeTerms, points: PointKey) {
             w.line(
                 "gl_PointSize = max(1.0, floor((roundEven(point_size * 256.0) + 127.0) / 256.0));",
             );
-            w.line(format!("gl_Position.xy += {step}.xy * gl_Position.w;"));
+            // The shift stops at the right and top planes: a centre on them (x = w) is
+            // inside the view volume (GL 1.5 §2.12) and Mesa draws its point; shifted past
+            // them it would be clipped.
+            w.line(format!(
+                "gl_Position.xy = min(gl_Position.xy + {step}.xy * gl_Position.w, \
+                 max(gl_Position.xy, vec2(gl_Position.w)));"
+            ));
         }
         PointShape::Round => {
             w.declare("flat out float v_point_r;");
@@ -231,6 +237,23 @@ fn emit_point_size(w: &mut GlslWriter, eye: &mut EyeTerms, points: PointKey) {
             }
             w.line("gl_PointSize = 2.0 * v_point_r;");
         }
+    }
+}
+
+/// The size core GL rasterises a points pass at when it is the same for every vertex (no
+/// distance attenuation): the `gl_PointSize` [`emit_point_size`] computes, from glPointSize's
+/// `size` and POINT_SIZE_MIN/MAX `limits`, in the same steps. The sync gives it to
+/// glPointSize with PROGRAM_POINT_SIZE off, as Mesa's rasteriser state carries a size that
+/// is not per vertex: llvmpipe then clips a point by its centre only and draws it whole
+/// beyond a viewport smaller than the buffer, where a per-vertex size makes its draw module
+/// cut the point at the viewport's edge.
+pub fn uniform_point_size(size: f32, limits: (f32, f32), shape: PointShape) -> f32 {
+    let size = size.max(limits.0).min(limits.1);
+    match shape {
+        PointShape::Square => (((size * 256.0).round_ties_even() + 127.0) / 256.0)
+            .floor()
+            .max(1.0),
+        PointShape::Round => 2.0 * if size <= 2.0 { 1.0 } else { 0.5 * size },
     }
 }
 
