@@ -974,8 +974,8 @@ fn pixel_transfers_reach_texture_images_as_on_mesa() {
 /// `tests/c/buffer_values.c`: what glClear leaves under glDepthMask and glStencilMask with
 /// the tests off, what stencil images and colours drawn through MAP_COLOR leave, and what
 /// glReadPixels gives of stencil indices through the index arithmetic and MAP_STENCIL, of
-/// depths in every integer type and of alpha alone, and the depths unsigned bytes draw,
-/// line by line as Mesa prints it; Mesa's image exactly.
+/// depths in every integer type and of alpha alone (and refuses colour indices), and the
+/// depths unsigned bytes draw, line by line as Mesa prints it; Mesa's image exactly.
 #[test]
 fn buffer_values_are_written_and_read_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("buffer_values");
@@ -989,6 +989,7 @@ fn buffer_values_are_written_and_read_as_on_mesa() {
             "read alpha 231/255                       231 0xe7e7 0xe7e7e7e7 0.905882418 err 0x0",
             "draw mapped, red 131 green 127           230 128 | 230 128 | 230 128 | 230 128",
             "draw depth ubyte 97                      0x61616261",
+            "read COLOR_INDEX                         err 0x502",
         ],
     );
     assert_same_text(&mesa_text, &ours_text, 25, "a buffer value");

@@ -198,6 +198,21 @@ pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Erro
         })?,
         Entry::ReadPixels => {
             n(7)?;
+            // COLOR_INDEX is a format of GL 1.5, but an RGBA framebuffer holds no indices
+            // to read: INVALID_OPERATION (Mesa measured alike), after a negative size's
+            // INVALID_VALUE and a bad type's INVALID_ENUM.
+            if c.token(4)? == super::glenum::registry::COLOR_INDEX {
+                let error = if c.i32(2)? < 0 || c.i32(3)? < 0 {
+                    GlErrorKind::InvalidValue
+                } else {
+                    let _: PixelType = c.enm(5)?;
+                    GlErrorKind::InvalidOperation
+                };
+                return Ok(Some(Command::Raise {
+                    error,
+                    call: c.entry(),
+                }));
+            }
             let (format, ty) = (c.enm(4)?, c.enm(5)?);
             if let Some(refused) = pixel_types::refusal(c, format, ty) {
                 return Ok(Some(refused));

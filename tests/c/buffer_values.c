@@ -5,8 +5,9 @@
  * replaces the stored one under the write mask), stencil indices read through
  * INDEX_SHIFT, INDEX_OFFSET and MAP_STENCIL (§4.3.2), depths read in the signed and
  * unsigned types, alpha read alone in the wider types, colours drawn through MAP_COLOR's
- * maps and depths drawn from unsigned bytes. Run on Mesa's OSMesa and on fixedfunc's
- * library, the printed lines must be the same and the images match.
+ * maps and depths drawn from unsigned bytes, and the errors of reading colour indices.
+ * Run on Mesa's OSMesa and on fixedfunc's library, the printed lines must be the same and
+ * the images match.
  *
  * usage: buffer_values [out.ppm] */
 #define GL_GLEXT_PROTOTYPES
@@ -228,6 +229,17 @@ int main(int argc, char **argv) {
     snprintf(line, sizeof line, "draw depth ubyte %d", zb[i]);
     printf("%-40s 0x%08x\n", line, zr[i]);
   }
+
+  /* Colour indices read from an RGBA framebuffer. */
+  GLubyte ci[4] = {0};
+  glReadPixels(0, 0, 1, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, ci);
+  err("read COLOR_INDEX");
+  glReadPixels(0, 0, 1, 1, GL_COLOR_INDEX, GL_FLOAT, ci);
+  err("read COLOR_INDEX as FLOAT");
+  glReadPixels(0, 0, -1, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, ci);
+  err("read COLOR_INDEX, negative width");
+  glReadPixels(0, 0, 1, 1, GL_COLOR_INDEX, GL_RGBA, ci);
+  err("read COLOR_INDEX, type RGBA");
 
   return finish(out, ctx, buf, W, H);
 }
