@@ -288,6 +288,18 @@ fn state_queries_answer_as_on_mesa() {
     assert_same_text(&mesa, &ours, 70, "the layer's answer");
 }
 
+/// glPushAttrib / glPushClientAttrib save, and the pops restore, only the groups the mask
+/// names: one group, several, every group, or bits of no group.
+#[test]
+fn attribute_pops_restore_only_the_groups_pushed_as_on_mesa() {
+    let (mesa, ours) = texts("attrib_masks");
+    assert_mesa_printed(
+        &mesa,
+        &["CURRENT                            color 1 1 1 viewport 3 4 20 10 fog 1"],
+    );
+    assert_same_text(&mesa, &ours, 18, "the state after a pop");
+}
+
 /// A program traced with FIXEDFUNC_TRACE replays to the image it rendered, and `fixedfunc
 /// shaders` reads the trace.
 #[test]

@@ -268,8 +268,10 @@ impl Args for CCall<'_> {
         let mut rest = v;
         let mut out = Vec::new();
         for n in names {
+            // A name matches when every bit of its value is set: a composite such as
+            // GL_ALL_ATTRIB_BITS names all the groups, not any one of them (GL 1.5 §6.1.14).
             let bit = value_of(n).unwrap_or(0);
-            if v & bit != 0 {
+            if bit != 0 && v & bit == bit {
                 out.push(*n);
                 rest &= !bit;
             }

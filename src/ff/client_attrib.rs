@@ -24,6 +24,17 @@ pub struct ClientAttribMask {
     pub vertex_array: bool,
 }
 
+impl ClientAttribMask {
+    /// The groups whose bits `mask` sets; other bits name nothing.
+    pub fn from_bits(mask: u32) -> Self {
+        use super::glenum::registry as r;
+        Self {
+            pixel_store: mask & r::CLIENT_PIXEL_STORE_BIT != 0,
+            vertex_array: mask & r::CLIENT_VERTEX_ARRAY_BIT != 0,
+        }
+    }
+}
+
 /// The client state the stack saves and restores, as the front end holds it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ClientGroups {

@@ -67,12 +67,19 @@ impl Client {
                     "GL_CLIENT_VERTEX_ARRAY_BIT",
                     "GL_CLIENT_ALL_ATTRIB_BITS",
                 ];
-                let mut mask = ClientAttribMask::default();
-                for bit in c.bits(0, &BITS)? {
-                    let all = bit == "GL_CLIENT_ALL_ATTRIB_BITS";
-                    mask.pixel_store |= all || bit == "GL_CLIENT_PIXEL_STORE_BIT";
-                    mask.vertex_array |= all || bit == "GL_CLIENT_VERTEX_ARRAY_BIT";
-                }
+                let mask = match c.bits(0, &BITS) {
+                    Ok(found) => {
+                        let mut mask = ClientAttribMask::default();
+                        for bit in found {
+                            let all = bit == "GL_CLIENT_ALL_ATTRIB_BITS";
+                            mask.pixel_store |= all || bit == "GL_CLIENT_PIXEL_STORE_BIT";
+                            mask.vertex_array |= all || bit == "GL_CLIENT_VERTEX_ARRAY_BIT";
+                        }
+                        mask
+                    }
+                    // Bits of no group, as an integer: ignored, as Mesa ignores them.
+                    Err(e) => c.u32(0).map(ClientAttribMask::from_bits).map_err(|_| e)?,
+                };
                 let now = self.client_groups();
                 self.client_attrib.push(mask, &now).map(|_| Reply::None)
             }
