@@ -300,6 +300,23 @@ fn attribute_pops_restore_only_the_groups_pushed_as_on_mesa() {
     assert_same_text(&mesa, &ours, 18, "the state after a pop");
 }
 
+/// Client-state calls and glListBase inside glBegin/glEnd: INVALID_OPERATION, nothing
+/// changed.
+#[test]
+fn client_state_calls_inside_a_pair_fail_as_on_mesa() {
+    let (mesa, ours) = texts("begin_client");
+    assert_mesa_printed(
+        &mesa,
+        &["glVertexPointer(3, GL_FLOAT, 0, va)          err 0x502  pointer set 0"],
+    );
+    assert_same_text(
+        &mesa,
+        &ours,
+        16,
+        "the error and state after a call inside a pair",
+    );
+}
+
 /// A program traced with FIXEDFUNC_TRACE replays to the image it rendered, and `fixedfunc
 /// shaders` reads the trace.
 #[test]

@@ -146,6 +146,10 @@ impl Client {
                 return Ok(Reply::None);
             }
             Entry::ListBase => {
+                // Not among the calls GL allows inside glBegin/glEnd (GL 1.5 §2.6.3).
+                if self.immediate.is_open() {
+                    return Err(c.immediate("glListBase inside glBegin/glEnd"));
+                }
                 self.lists.base = c.u32(0)?;
                 return Ok(Reply::None);
             }
@@ -156,9 +160,11 @@ impl Client {
                 .call(c, &state.current, &state.materials, out)?;
             return Ok(Reply::None);
         }
-        // Inside glBegin/glEnd: INVALID_OPERATION (GL 1.5 §2.6.3; EXT_compiled_vertex_array
-        // for the lock, Mesa measured alike).
+        // Inside glBegin/glEnd only glArrayElement of the array calls is allowed; the others
+        // are INVALID_OPERATION and change nothing, checked before their arguments (GL 1.5
+        // §2.6.3; EXT_compiled_vertex_array for the lock; Mesa measured alike).
         let refused_in_pair = match entry {
+            Entry::ArrayElement => None,
             Entry::DrawArrays
             | Entry::DrawElements
             | Entry::DrawRangeElements
@@ -168,7 +174,7 @@ impl Client {
             Entry::LockArraysEXT | Entry::UnlockArraysEXT => {
                 Some("locking the arrays inside glBegin/glEnd")
             }
-            _ => None,
+            _ => Some("a client-state call inside glBegin/glEnd"),
         };
         if let (Some(rule), true) = (refused_in_pair, self.immediate.is_open()) {
             return Err(c.immediate(rule));
