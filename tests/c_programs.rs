@@ -317,6 +317,21 @@ fn client_state_calls_inside_a_pair_fail_as_on_mesa() {
     );
 }
 
+/// The depth and stencil buffers each OSMesaCreateContextExt size pair makes, and a
+/// missing buffer's test always passing.
+#[test]
+fn window_depth_and_stencil_buffers_are_the_ones_mesa_makes() {
+    let (mesa, ours) = texts("window_buffers");
+    assert_mesa_printed(
+        &mesa,
+        &[
+            "ext(0, 8)      DEPTH_BITS 0 STENCIL_BITS 8 overlap 0 255 0",
+            "ext(24, 0)     DEPTH_BITS 24 STENCIL_BITS 0 overlap 255 0 0 stencil NEVER 0 0 255",
+        ],
+    );
+    assert_same_text(&mesa, &ours, 18, "the window's buffers");
+}
+
 /// A program traced with FIXEDFUNC_TRACE replays to the image it rendered, and `fixedfunc
 /// shaders` reads the trace.
 #[test]

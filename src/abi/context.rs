@@ -20,7 +20,8 @@ use crate::ff::queries::{self, ObjectParam, QueryTarget};
 use crate::ff::upload_bounds::{pixel_access, CallTime, PixelAccess};
 use crate::ff::{Command, GlErrorKind};
 use crate::gpu::{
-    Backend, ColorStorage, ContextRequest, GpuContext, Profile, RenderTarget, TargetSpec,
+    Backend, ColorStorage, ContextRequest, DepthStencilBuffers, GpuContext, Profile, RenderTarget,
+    TargetSpec,
 };
 use crate::pipeline::emulate::EmulatedPipeline;
 use crate::pipeline::queries::QueryFetch;
@@ -213,6 +214,8 @@ pub struct Context {
     pub format: ColorFormat,
     depth: DepthBits,
     stencil: bool,
+    /// Which of the depth and stencil buffers exist (Mesa's choice, [`Context::new`]).
+    buffers: DepthStencilBuffers,
     /// Accumulation bits were asked for: the window has an accumulation buffer of 16 bits
     /// per channel whatever was asked beyond 0 (Mesa's OSMesa measured alike).
     accum: bool,
@@ -249,9 +252,12 @@ pub struct Context {
 pub const MAX_SIZE: i32 = 16384;
 
 impl Context {
-    /// A context whose buffers have `depth_bits` and `stencil_bits` as asked: depth 16 or
-    /// less without stencil is a 16-bit buffer, up to 24 (or any with stencil) a 24-bit
-    /// one with 8 stencil bits, more a 32-bit float one.
+    /// A context whose depth and stencil buffers are the ones Mesa's OSMesa makes for
+    /// `depth_bits` and `stencil_bits` (its OSMesaCreateContextAttribs, measured alike):
+    /// both asked, 24-bit depth with 8 stencil bits; stencil alone, an 8-bit stencil
+    /// buffer and no depth buffer; depth 24 or more alone, 24-bit depth; 16 to 23, 16-bit
+    /// depth; less, no depth buffer. A missing buffer answers 0 bits and its test always
+    /// passes (GL 1.5 §4.1.5, §4.1.6).
     pub fn new(
         format: ColorFormat,
         depth_bits: i32,
@@ -260,11 +266,12 @@ impl Context {
     ) -> Result<Self, AbiError> {
         let gpu = GpuContext::new(&ContextRequest::new(Backend::Egl, Profile::Core33))?;
         let stencil = stencil_bits > 0;
-        let depth = match depth_bits {
-            _ if stencil => DepthBits::D24,
-            d if d <= 16 => DepthBits::D16,
-            d if d <= 24 => DepthBits::D24,
-            _ => DepthBits::D32F,
+        let (depth, buffers) = match depth_bits {
+            d if d > 0 && stencil => (DepthBits::D24, DepthStencilBuffers::AsNamed),
+            _ if stencil => (DepthBits::D24, DepthStencilBuffers::NoDepth),
+            d if d >= 24 => (DepthBits::D24, DepthStencilBuffers::DepthOnly),
+            d if d >= 16 => (DepthBits::D16, DepthStencilBuffers::AsNamed),
+            _ => (DepthBits::D16, DepthStencilBuffers::NoDepth),
         };
         Ok(Context {
             pipeline: None,
@@ -273,6 +280,7 @@ impl Context {
             format,
             depth,
             stencil,
+            buffers,
             accum: accum_bits > 0,
             buffer: None,
             row_length: 0,
@@ -318,7 +326,9 @@ impl Context {
             if let Some(old) = self.target.take() {
                 old.delete(&self.gpu);
             }
-            let mut spec = TargetSpec::new(w, h, self.depth).with_color(storage);
+            let mut spec = TargetSpec::new(w, h, self.depth)
+                .with_color(storage)
+                .with_buffers(self.buffers);
             if self.stencil {
                 spec = spec.with_stencil();
             }
@@ -716,6 +726,9 @@ impl Context {
     /// The depth buffer as OSMesaGetDepthBuffer gives it: (width, height, bytes per value).
     pub fn read_depth(&mut self) -> Option<(i32, i32, i32)> {
         let target = self.target.as_ref()?;
+        if self.buffers == DepthStencilBuffers::NoDepth {
+            return None;
+        }
         let (w, h) = (target.width() as i32, target.height() as i32);
         let rule = crate::vocab::ReadbackRule::Driver;
         let (bytes, per) = match self.depth {

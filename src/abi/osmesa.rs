@@ -88,7 +88,8 @@ pub unsafe extern "C" fn OSMesaCreateContextAttribs(
     attrib_list: *const i32,
     _sharelist: OSMesaContext,
 ) -> OSMesaContext {
-    let (mut format, mut depth, mut stencil, mut accum) = (ColorFormat::RGBA, 24, 8, 0);
+    // Mesa's defaults: no depth, stencil or accumulation buffer unless asked.
+    let (mut format, mut depth, mut stencil, mut accum) = (ColorFormat::RGBA, 0, 0, 0);
     let (mut major, mut minor) = (1, 0);
     let mut k = 0;
     while !attrib_list.is_null() {

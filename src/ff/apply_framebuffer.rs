@@ -226,6 +226,20 @@ impl FixedState {
                 "a colour read with the read buffer NONE",
             ));
         }
+        // A depth or stencil read of a window without that buffer (GL 1.5 §4.3.2).
+        if self.framebuffers.read == 0 {
+            let window = self.framebuffers.window_bits;
+            let missing = match format {
+                Some(PixelFormat::DepthComponent) => window.depth == 0,
+                Some(PixelFormat::StencilIndex) => window.stencil == 0,
+                _ => false,
+            };
+            if missing {
+                return Err(GlError::invalid_operation(
+                    "a depth or stencil read of a window without that buffer",
+                ));
+            }
+        }
         Ok(())
     }
 }

@@ -12,6 +12,16 @@ pub fn depth_storage(depth: DepthBits, stencil: bool) -> (u32, u32) {
     }
 }
 
+/// The internal format of a depth buffer without stencil bits, on DEPTH_ATTACHMENT.
+pub fn depth_only_storage(depth: DepthBits) -> (u32, u32) {
+    let format = match depth {
+        DepthBits::D16 => glow::DEPTH_COMPONENT16,
+        DepthBits::D24 => glow::DEPTH_COMPONENT24,
+        DepthBits::D32F => glow::DEPTH_COMPONENT32F,
+    };
+    (format, glow::DEPTH_ATTACHMENT)
+}
+
 /// The name of a glGetError code.
 pub fn error_name(code: u32) -> &'static str {
     match code {

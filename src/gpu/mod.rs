@@ -41,7 +41,7 @@ pub use error::GpuError;
 pub use info::{ContextInfo, DepthReport, ExtensionReport, Limits, SHADOW_EXTENSIONS};
 pub use osmesa::WindowBuffer;
 pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8};
-pub use target::{ColorStorage, RenderTarget, TargetSpec};
+pub use target::{ColorStorage, DepthStencilBuffers, RenderTarget, TargetSpec};
 pub use trivial::FlatProgram;
 pub use window_input::{Input, KeyName, Waker};
 pub use xvfb::{mark_ending, stop_private_displays, VirtualDisplay};

@@ -1,6 +1,7 @@
 //! Render targets: a framebuffer object with a colour renderbuffer (RGBA8 unless asked
-//! for RGBA16 or RGBA32F, `ColorStorage`) and a depth attachment chosen by `DepthBits`,
-//! plus pixel readback.
+//! for RGBA16 or RGBA32F, `ColorStorage`) and a depth attachment chosen by `DepthBits`
+//! (or exactly the depth and stencil buffers asked, `DepthStencilBuffers`), plus pixel
+//! readback.
 //!
 //! Row order: `read_color` returns an image with the top row first (image convention);
 //! depth and stencil readbacks keep GL's order, bottom row first, because they feed
@@ -55,6 +56,20 @@ impl ColorStorage {
     }
 }
 
+/// Which depth and stencil renderbuffers a target has.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum DepthStencilBuffers {
+    /// The buffer `depth` names, with 8 stencil bits when `stencil` asks; a D24 buffer
+    /// always carries them (one DEPTH24_STENCIL8). The default.
+    #[default]
+    AsNamed,
+    /// `depth`'s buffer alone, without stencil bits even for D24 (DEPTH_COMPONENT24).
+    DepthOnly,
+    /// No depth buffer (the depth test always passes, GL 1.5 §4.1.5); an 8-bit stencil
+    /// buffer (STENCIL_INDEX8) when `stencil` asks.
+    NoDepth,
+}
+
 /// Size and buffers of a target.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct TargetSpec {
@@ -65,6 +80,8 @@ pub struct TargetSpec {
     pub stencil: bool,
     /// GL default here: RGBA8.
     pub color: ColorStorage,
+    /// How `depth` and `stencil` become renderbuffers. Default: [`DepthStencilBuffers::AsNamed`].
+    pub buffers: DepthStencilBuffers,
 }
 
 impl TargetSpec {
@@ -75,7 +92,13 @@ impl TargetSpec {
             depth,
             stencil: false,
             color: ColorStorage::Rgba8,
+            buffers: DepthStencilBuffers::AsNamed,
         }
+    }
+
+    pub fn with_buffers(mut self, buffers: DepthStencilBuffers) -> Self {
+        self.buffers = buffers;
+        self
     }
 
     pub fn with_stencil(mut self) -> Self {
@@ -96,7 +119,8 @@ pub struct RenderTarget {
     spec: TargetSpec,
     framebuffer: glow::Framebuffer,
     color: glow::Renderbuffer,
-    depth: glow::Renderbuffer,
+    /// None: the target has neither depth nor stencil buffer.
+    depth: Option<glow::Renderbuffer>,
     depth_bits: u32,
     stencil_bits: u32,
 }
@@ -115,7 +139,10 @@ impl RenderTarget {
                 limit,
             });
         }
-        if spec.stencil && spec.depth == DepthBits::D16 {
+        if spec.stencil
+            && spec.depth == DepthBits::D16
+            && spec.buffers != DepthStencilBuffers::NoDepth
+        {
             return Err(GpuError::IncompleteFramebuffer {
                 depth: spec.depth,
                 stencil: true,
@@ -123,7 +150,13 @@ impl RenderTarget {
             });
         }
         let (w, h) = (spec.width as i32, spec.height as i32);
-        let (format, attachment) = conv::depth_storage(spec.depth, spec.stencil);
+        let storage = match spec.buffers {
+            DepthStencilBuffers::AsNamed => Some(conv::depth_storage(spec.depth, spec.stencil)),
+            DepthStencilBuffers::DepthOnly => Some(conv::depth_only_storage(spec.depth)),
+            DepthStencilBuffers::NoDepth => spec
+                .stencil
+                .then_some((glow::STENCIL_INDEX8, glow::STENCIL_ATTACHMENT)),
+        };
         let target = unsafe {
             let framebuffer = gl.create_framebuffer().map_err(GpuError::Object)?;
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(framebuffer));
@@ -136,15 +169,21 @@ impl RenderTarget {
                 glow::RENDERBUFFER,
                 Some(color),
             );
-            let depth = gl.create_renderbuffer().map_err(GpuError::Object)?;
-            gl.bind_renderbuffer(glow::RENDERBUFFER, Some(depth));
-            gl.renderbuffer_storage(glow::RENDERBUFFER, format, w, h);
-            gl.framebuffer_renderbuffer(
-                glow::FRAMEBUFFER,
-                attachment,
-                glow::RENDERBUFFER,
-                Some(depth),
-            );
+            let depth = match storage {
+                Some((format, attachment)) => {
+                    let depth = gl.create_renderbuffer().map_err(GpuError::Object)?;
+                    gl.bind_renderbuffer(glow::RENDERBUFFER, Some(depth));
+                    gl.renderbuffer_storage(glow::RENDERBUFFER, format, w, h);
+                    gl.framebuffer_renderbuffer(
+                        glow::FRAMEBUFFER,
+                        attachment,
+                        glow::RENDERBUFFER,
+                        Some(depth),
+                    );
+                    Some(depth)
+                }
+                None => None,
+            };
             let mut target = RenderTarget {
                 spec,
                 framebuffer,
@@ -166,18 +205,22 @@ impl RenderTarget {
                 gl.get_framebuffer_attachment_parameter_i32(glow::FRAMEBUFFER, attachment, pname)
                     .max(0) as u32
             };
-            target.depth_bits = query(
-                glow::DEPTH_ATTACHMENT,
-                glow::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE,
-            );
-            target.stencil_bits = if attachment == glow::DEPTH_STENCIL_ATTACHMENT {
-                query(
+            let attachment = storage.map(|(_, a)| a);
+            if attachment.is_some_and(|a| a != glow::STENCIL_ATTACHMENT) {
+                target.depth_bits = query(
+                    glow::DEPTH_ATTACHMENT,
+                    glow::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE,
+                );
+            }
+            if matches!(
+                attachment,
+                Some(glow::DEPTH_STENCIL_ATTACHMENT | glow::STENCIL_ATTACHMENT)
+            ) {
+                target.stencil_bits = query(
                     glow::STENCIL_ATTACHMENT,
                     glow::FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
-                )
-            } else {
-                0
-            };
+                );
+            }
             gl.viewport(0, 0, w, h);
             // The scissor box starts as the window (GL 1.5 §4.1.2); the target is the
             // window here. A surfaceless context has no window, and Mesa starts the box at
@@ -232,7 +275,9 @@ impl RenderTarget {
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
             gl.delete_framebuffer(self.framebuffer);
             gl.delete_renderbuffer(self.color);
-            gl.delete_renderbuffer(self.depth);
+            if let Some(depth) = self.depth {
+                gl.delete_renderbuffer(depth);
+            }
         }
     }
 
