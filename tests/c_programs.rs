@@ -332,6 +332,21 @@ fn window_depth_and_stencil_buffers_are_the_ones_mesa_makes() {
     assert_same_text(&mesa, &ours, 18, "the window's buffers");
 }
 
+/// glFinish and glFlush write the caller's buffer only after something was drawn; the
+/// colour bits follow the buffer's type.
+#[test]
+fn the_buffer_is_written_only_after_drawing_as_on_mesa() {
+    let (mesa, ours) = texts("buffer_writes");
+    assert_mesa_printed(
+        &mesa,
+        &[
+            "glFinish, nothing drawn: ab ab",
+            "GL_FLOAT: bits 32 32 32 32",
+        ],
+    );
+    assert_same_text(&mesa, &ours, 15, "the buffer's bytes");
+}
+
 /// A program traced with FIXEDFUNC_TRACE replays to the image it rendered, and `fixedfunc
 /// shaders` reads the trace.
 #[test]

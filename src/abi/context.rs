@@ -206,6 +206,32 @@ pub enum Ret {
     Ptr(*const u8),
 }
 
+/// Whether the window holds an image the caller's buffer has not received.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum WindowImage {
+    /// Written back (or nothing drawn yet): glFinish leaves the buffer untouched.
+    WrittenBack,
+    /// Drawn into, cleared or copied to since the last write-back.
+    Drawn,
+}
+
+impl WindowImage {
+    /// After `cmd`: whether it may have changed the image (Mesa marks its front buffer
+    /// the same way and writes it to the caller's buffer only then).
+    fn after(self, cmd: &Command) -> Self {
+        match cmd {
+            Command::Draw(_)
+            | Command::Clear(_)
+            | Command::Bitmap(_)
+            | Command::DrawPixels(_)
+            | Command::CopyPixels(_)
+            | Command::Accum { .. }
+            | Command::BlitFramebuffer(_) => WindowImage::Drawn,
+            _ => self,
+        }
+    }
+}
+
 pub struct Context {
     // Field order: the pipeline and target hold GL objects of `gpu`, which drops last.
     pipeline: Option<EmulatedPipeline>,
@@ -228,6 +254,8 @@ pub struct Context {
     made: Vec<Command>,
     /// The image as read back at the last glFinish, kept for the next.
     readback: Vec<u8>,
+    /// Whether glFinish, glFlush or a make-current has an image to write back.
+    image: WindowImage,
     /// The first error of a call the model never saw (a bad token, a call inside
     /// glBegin/glEnd), kept until glGetError as GL keeps its flag.
     error: Option<GlErrorKind>,
@@ -288,6 +316,7 @@ impl Context {
             client: Client::default(),
             made: Vec::new(),
             readback: Vec::new(),
+            image: WindowImage::WrittenBack,
             error: None,
             warned: HashSet::new(),
             depth_copy: Vec::new(),
@@ -340,7 +369,7 @@ impl Context {
                 None => self.pipeline = Some(EmulatedPipeline::new(&self.gpu)?),
                 Some(p) => {
                     p.forget_sent_state();
-                    p.set_window_framebuffer(Some(framebuffer));
+                    p.set_window_framebuffer(&self.gpu, Some(framebuffer));
                 }
             }
             if let Some(p) = &mut self.pipeline {
@@ -544,6 +573,7 @@ impl Context {
         if let Command::BindTexture { name, .. } = cmd {
             self.texture_max = self.texture_max.max(*name);
         }
+        self.image = self.image.after(cmd);
         if let Err(e) = p.execute(&self.gpu, std::slice::from_ref(cmd)) {
             eprintln!("fixedfunc: {}: {e}", cmd.entry());
             self.record_error(GlErrorKind::InvalidOperation);
@@ -659,14 +689,20 @@ impl Context {
         pixel_layout::pack(bytes, out, shape, &p);
     }
 
-    /// The image so far into the caller's buffer (and the trace to its file).
+    /// The image so far into the caller's buffer (and the trace to its file), when
+    /// something was drawn since the last write-back: as on Mesa, a glFinish with nothing
+    /// drawn leaves whatever the caller put in the buffer.
     pub fn write_back(&mut self) {
         if self.tracing {
             super::trace::flush();
         }
+        if self.image == WindowImage::WrittenBack {
+            return;
+        }
         let (Some(target), Some(buffer)) = (&self.target, self.buffer) else {
             return;
         };
+        self.image = WindowImage::WrittenBack;
         let (w, h) = (buffer.width as usize, buffer.height as usize);
         let row_pixels = if self.row_length > 0 {
             self.row_length as usize

@@ -128,9 +128,12 @@ impl EmulatedPipeline {
     }
 
     /// The framebuffer that stands for the window (framebuffer 0) from now on: for a
-    /// caller that replaced its render target.
-    pub fn set_window_framebuffer(&mut self, window: Option<glow::Framebuffer>) {
+    /// caller that replaced its render target, bound now. RED_BITS … STENCIL_BITS follow
+    /// its buffers.
+    pub fn set_window_framebuffer(&mut self, ctx: &GpuContext, window: Option<glow::Framebuffer>) {
         self.path.framebuffers.set_window(window);
+        self.core.state.framebuffers.window_bits =
+            crate::pipeline::framebuffers::bound_bits(ctx.gl());
     }
 
     /// Gives the window an accumulation buffer of `size` (zeroed; kept when the size is
