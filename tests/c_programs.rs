@@ -347,6 +347,14 @@ fn the_buffer_is_written_only_after_drawing_as_on_mesa() {
     assert_same_text(&mesa, &ours, 15, "the buffer's bytes");
 }
 
+/// OSMesaMakeCurrent(NULL, NULL, …) releases the current context.
+#[test]
+fn making_no_context_current_releases_it_as_on_mesa() {
+    let (mesa, ours) = texts("release");
+    assert_mesa_printed(&mesa, &["release: 1 current 0 buffer 0 ff"]);
+    assert_same_text(&mesa, &ours, 6, "the release");
+}
+
 /// A program traced with FIXEDFUNC_TRACE replays to the image it rendered, and `fixedfunc
 /// shaders` reads the trace.
 #[test]

@@ -163,6 +163,17 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
     width: GLsizei,
     height: GLsizei,
 ) -> GLboolean {
+    // OSMesaMakeCurrent(NULL, NULL, …): no context is current any more (Mesa's release,
+    // which flushes the old context first); GL calls then do nothing.
+    if ctx.is_null() && buffer.is_null() {
+        let previous = super::current();
+        if !previous.is_null() && super::ensure_gl_current(previous) {
+            // SAFETY: a live context.
+            unsafe { (*previous).write_back() };
+        }
+        super::set_current(std::ptr::null_mut());
+        return 1;
+    }
     if ctx.is_null() || buffer.is_null() {
         return 0;
     }
