@@ -260,7 +260,8 @@ pub struct Context {
     /// glBegin/glEnd), kept until glGetError as GL keeps its flag.
     error: Option<GlErrorKind>,
     warned: HashSet<Entry>,
-    /// The depth values of OSMesaGetDepthBuffer, kept until the next call to it.
+    /// The depth values of OSMesaGetDepthBuffer (empty until the first call), refreshed at
+    /// each write-back; its pointer is what the caller holds.
     pub depth_copy: Vec<u8>,
     /// The largest texture name generated or bound: glGenTextures continues after it, as
     /// Mesa's name table does (names grow; deleted ones are not reused).
@@ -757,38 +758,69 @@ impl Context {
             }
         }
         self.readback = rows;
+        if !self.depth_copy.is_empty() {
+            self.refresh_depth_copy();
+        }
     }
 
-    /// The depth buffer as OSMesaGetDepthBuffer gives it: (width, height, bytes per value).
+    /// OSMesaGetDepthBuffer: (width, height, bytes per value) of the depth buffer, whose
+    /// values `depth_copy` holds as Mesa's OSMesa lays them out: 2 bytes for 16-bit depth,
+    /// 4 for 24-bit with the depth in the low 24 bits and the stencil in the top byte
+    /// (Z24_UNORM_S8_UINT, or Z24X8 without stencil). As Mesa's, the copy is made at the
+    /// first call and refreshed at each write-back of the image, so the pointer stays the
+    /// same; `None` without a depth buffer.
     pub fn read_depth(&mut self) -> Option<(i32, i32, i32)> {
-        let target = self.target.as_ref()?;
         if self.buffers == DepthStencilBuffers::NoDepth {
             return None;
         }
+        let target = self.target.as_ref()?;
         let (w, h) = (target.width() as i32, target.height() as i32);
-        let rule = crate::vocab::ReadbackRule::Driver;
-        let (bytes, per) = match self.depth {
-            DepthBits::D16 => (
-                target
-                    .read_depth_u16(&self.gpu, rule)
-                    .ok()?
-                    .iter()
-                    .flat_map(|v| v.to_ne_bytes())
-                    .collect(),
-                2,
-            ),
-            _ => (
-                target
-                    .read_depth_u32(&self.gpu, rule)
-                    .ok()?
-                    .iter()
-                    .flat_map(|v| v.to_ne_bytes())
-                    .collect(),
-                4,
-            ),
-        };
-        self.depth_copy = bytes;
+        let per = if self.depth == DepthBits::D16 { 2 } else { 4 };
+        if self.depth_copy.is_empty() {
+            self.refresh_depth_copy();
+        }
         Some((w, h, per))
+    }
+
+    /// Reads the depth buffer into `depth_copy` in place (a new allocation only when its
+    /// size changed).
+    fn refresh_depth_copy(&mut self) {
+        let Some(target) = self.target.as_ref() else {
+            return;
+        };
+        let rule = crate::vocab::ReadbackRule::Driver;
+        let bytes: Option<Vec<u8>> = match (self.depth, self.buffers) {
+            (_, DepthStencilBuffers::NoDepth) => None,
+            (DepthBits::D16, _) => target
+                .read_depth_u16(&self.gpu, rule)
+                .ok()
+                .map(|v| v.iter().flat_map(|x| x.to_ne_bytes()).collect()),
+            // GL packs 24_8 as depth << 8 | stencil; Mesa's buffer holds stencil << 24 | depth:
+            // a rotation right by 8 bits.
+            (_, DepthStencilBuffers::AsNamed) => {
+                target.read_depth_stencil_u32(&self.gpu).ok().map(|v| {
+                    v.iter()
+                        .flat_map(|x| x.rotate_right(8).to_ne_bytes())
+                        .collect()
+                })
+            }
+            // A 32-bit read holds the 24 bits in its top bits.
+            (_, DepthStencilBuffers::DepthOnly) => target
+                .read_depth_u32(&self.gpu, rule)
+                .ok()
+                .map(|v| v.iter().flat_map(|x| (x >> 8).to_ne_bytes()).collect()),
+        };
+        if let Some(bytes) = bytes {
+            if self.depth_copy.len() == bytes.len() {
+                self.depth_copy.copy_from_slice(&bytes);
+            } else {
+                self.depth_copy = bytes;
+            }
+        }
+        // The read bound the target: the pipeline binds the program's framebuffers again.
+        if let Some(p) = self.pipeline.as_mut() {
+            p.forget_sent_state();
+        }
     }
 }
 

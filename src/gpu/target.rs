@@ -418,6 +418,25 @@ impl RenderTarget {
         }
     }
 
+    /// Depth and stencil packed as GL_UNSIGNED_INT_24_8 (depth in the top 24 bits,
+    /// stencil in the low 8), bottom row first.
+    pub fn read_depth_stencil_u32(&self, ctx: &GpuContext) -> Result<Vec<u32>, GpuError> {
+        if self.stencil_bits == 0 {
+            return Err(GpuError::NoStencil);
+        }
+        let mut bytes = vec![0u8; self.pixel_count() * 4];
+        self.read(
+            ctx,
+            glow::DEPTH_STENCIL,
+            glow::UNSIGNED_INT_24_8,
+            &mut bytes,
+        )?;
+        Ok(bytes
+            .chunks_exact(4)
+            .map(|b| u32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+            .collect())
+    }
+
     /// Stencil indices, bottom row first.
     pub fn read_stencil(&self, ctx: &GpuContext) -> Result<Vec<u8>, GpuError> {
         if self.stencil_bits == 0 {
