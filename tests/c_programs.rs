@@ -360,7 +360,7 @@ fn making_no_context_current_releases_it_as_on_mesa() {
 fn the_depth_buffer_pointer_follows_drawing_as_on_mesa() {
     let (mesa, ours) = texts("depth_buffer");
     assert_mesa_printed(&mesa, &["  cleared to 0.75 and 0x5A: 0x5abfffff"]);
-    assert_same_text(&mesa, &ours, 20, "the depth buffer's values");
+    assert_same_text(&mesa, &ours, 18, "the depth buffer's values");
 }
 
 /// A program traced with FIXEDFUNC_TRACE replays to the image it rendered, and `fixedfunc

@@ -226,8 +226,11 @@ impl FixedState {
                 "a colour read with the read buffer NONE",
             ));
         }
-        // A depth or stencil read of a window without that buffer (GL 1.5 §4.3.2).
-        if self.framebuffers.read == 0 {
+        // A depth or stencil read of a window without that buffer (GL 1.5 §4.3.2). The
+        // model knows the window only as measured on GL: a state that never measured it
+        // (no colour bits either) refuses nothing.
+        let measured = self.framebuffers.window_bits.red > 0;
+        if self.framebuffers.read == 0 && measured {
             let window = self.framebuffers.window_bits;
             let missing = match format {
                 Some(PixelFormat::DepthComponent) => window.depth == 0,
