@@ -363,6 +363,13 @@ fn the_depth_buffer_pointer_follows_drawing_as_on_mesa() {
     assert_same_text(&mesa, &ours, 18, "the depth buffer's values");
 }
 
+/// glRotatef about one axis: Mesa's exact 2 × 2 block.
+#[test]
+fn rotations_about_one_axis_are_exact_as_on_mesa() {
+    let (mesa, ours) = texts("rotations");
+    assert_same_text(&mesa, &ours, 40, "the rotation matrix");
+}
+
 /// A program traced with FIXEDFUNC_TRACE replays to the image it rendered, and `fixedfunc
 /// shaders` reads the trace.
 #[test]

@@ -170,12 +170,35 @@ pub fn ortho(v: ViewVolume) -> GlResult<Mat4> {
 /// glRotate (GL 1.5 §2.11.2): with u = axis/|axis| and θ in degrees,
 /// R = u·uᵀ + cos θ·(I − u·uᵀ) + sin θ·S(u), counter-clockwise looking down −u.
 /// A zero axis leaves the matrix unchanged (identity), as Mesa does.
+///
+/// A rotation about one coordinate axis fills only its 2 × 2 block, with s and c the
+/// float sine and cosine of angle·π/180, so the axis keeps an exact 1 on the diagonal
+/// (Mesa's `_math_matrix_rotate` special case, which GL's general formula, evaluated in
+/// floats, misses by an ulp).
 pub fn rotate(angle_deg: f32, axis: Vec3) -> Mat4 {
     let len = axis.length();
     if len == 0.0 || !len.is_finite() {
         return Mat4::IDENTITY;
     }
-    Mat4::from_axis_angle(axis / len, angle_deg.to_radians())
+    let a = (f64::from(angle_deg) * std::f64::consts::PI / 180.0) as f32;
+    let (s, c) = (a.sin(), a.cos());
+    // Columns of the block for the two axes the rotation turns (i → j).
+    let block = |i: usize, j: usize, s: f32| {
+        let mut m = Mat4::IDENTITY;
+        m.col_mut(i)[i] = c;
+        m.col_mut(j)[j] = c;
+        m.col_mut(i)[j] = s;
+        m.col_mut(j)[i] = -s;
+        m
+    };
+    // About the negative axis: the opposite turn.
+    let toward = |v: f32| if v < 0.0 { -s } else { s };
+    match (axis.x == 0.0, axis.y == 0.0, axis.z == 0.0) {
+        (true, true, false) => block(0, 1, toward(axis.z)),
+        (true, false, true) => block(2, 0, toward(axis.y)),
+        (false, true, true) => block(1, 2, toward(axis.x)),
+        _ => Mat4::from_axis_angle(axis / len, angle_deg.to_radians()),
+    }
 }
 
 /// glTranslate: the identity with (x, y, z) in the last column.
