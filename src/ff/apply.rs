@@ -672,13 +672,22 @@ fn check_unit(unit: u8) -> GlResult<usize> {
     Ok(u)
 }
 
+/// MAX_VIEWPORT_DIMS, Mesa's on llvmpipe (`query`).
+pub const MAX_VIEWPORT_SIDE: i32 = 16384;
+
+/// glViewport: a negative side is INVALID_VALUE; a side beyond MAX_VIEWPORT_DIMS is
+/// clamped to it (GL 1.5 §2.11.1), as the answers then show.
 fn check_viewport(v: Viewport) -> GlResult<Viewport> {
     if v.width < 0 || v.height < 0 {
         return Err(GlError::invalid_value(
             "Viewport width and height must be ≥ 0",
         ));
     }
-    Ok(v)
+    Ok(Viewport {
+        width: v.width.min(MAX_VIEWPORT_SIDE),
+        height: v.height.min(MAX_VIEWPORT_SIDE),
+        ..v
+    })
 }
 
 /// A width or size GL refuses when ≤ 0 (GL 1.5 §3.4, §3.3): NaN is not ≤ 0, so it is

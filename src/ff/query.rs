@@ -463,7 +463,10 @@ pnames! {
     SMOOTH_LINE_WIDTH_GRANULARITY => |_| floats(&[0.1]),
     // Other limits and the visual (Tables 6.32, 6.34), as Mesa's llvmpipe answers them: a
     // single-buffered RGBA visual without multisampling, auxiliary or stereo buffers.
-    MAX_VIEWPORT_DIMS => |_| vec![QueryValue::Int(16384), QueryValue::Int(16384)],
+    MAX_VIEWPORT_DIMS => |_| {
+        let side = super::apply::MAX_VIEWPORT_SIDE;
+        vec![QueryValue::Int(side), QueryValue::Int(side)]
+    },
     SUBPIXEL_BITS => |_| int(8),
     MAX_ELEMENTS_VERTICES => |_| int(3000),
     MAX_ELEMENTS_INDICES => |_| int(3000),

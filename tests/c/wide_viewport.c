@@ -3,7 +3,8 @@
  * drawn up to the buffer's edge, as Mesa's OSMesa draws it. Square and smooth points on
  * the viewport's edge and corner, a wide line leaving the viewport, a point whose centre
  * is outside (not drawn); the centres sit a little inside the right and top planes
- * (one exactly on them is drawn a pixel left or down of Mesa's here); each prints its lit pixel count and bounding box. (A point
+ * (one exactly on them is drawn a pixel left or down of Mesa's here); then a viewport
+ * beyond MAX_VIEWPORT_DIMS, clamped. Each prints its lit pixel count and bounding box. (A point
  * under distance attenuation is cut at the viewport here: core GL takes a per-vertex size
  * only with PROGRAM_POINT_SIZE, under which llvmpipe clips it as a square.)
  *
@@ -74,5 +75,11 @@ int main(int argc, char **argv) {
   glEnd();
   lit("width 7 leaving the viewport");
 
+  /* A side beyond MAX_VIEWPORT_DIMS is clamped to it (GL 1.5 §2.11.1). */
+  GLint v[4];
+  glViewport(-5, -6, 100000, 70000);
+  glGetIntegerv(GL_VIEWPORT, v);
+  printf("%-28s %d %d %d %d  err 0x%x\n", "viewport 100000 x 70000", v[0], v[1], v[2], v[3],
+         glGetError());
   return finish(argc > 1 ? argv[1] : "wide_viewport.ppm", ctx, buf, W, H);
 }
