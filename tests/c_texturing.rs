@@ -171,3 +171,22 @@ fn mipmaps_are_generated_when_the_flag_comes_after_the_image() {
         ],
     );
 }
+
+/// `tests/c/proxy_tex.c`: glTexImage1D and glTexImage2D of PROXY_TEXTURE_1D, _2D and
+/// _CUBE_MAP specify the proxy's level when the image fits (a border of 1 included) and
+/// clear it without an error when not; no real texture changes, and a display list runs
+/// the call at once.
+#[test]
+fn proxy_images_answer_whether_they_fit() {
+    assert_as_on_mesa(
+        "proxy_tex",
+        &[
+            "2D 64x32 RGB5                    64x32x1 b0 0x8050 r5 g5 a0 (64) err 0x0",
+            "2D 100000x4                      0x0x0 b0 0x1908 r0 g0 a0 (0) err 0x0",
+            "cube 64x32                       0x0x0 b0 0x1908 r0 g0 a0 (0) err 0x0",
+            "2D 66x34 border 1                66x34x1 b1 0x1908 r8 g8 a8 (66) err 0x0",
+            "2D proxy compiled                32x8x1 b0 0x8058 r8 g8 a8 (32) err 0x0",
+            "real 2D after proxies            4x4x1 b0 0x1908 r8 g8 a8 (4) err 0x0",
+        ],
+    );
+}

@@ -1129,14 +1129,13 @@ impl Command {
             Command::BindTexture { .. } => Entry::BindTexture,
             Command::DeleteTextures(_) => Entry::DeleteTextures,
             Command::PrioritizeTextures(_) => Entry::PrioritizeTextures,
-            Command::TexImage(t) => match t.target {
+            Command::TexImage(t) | Command::ProxyTexImage(t) => match t.target {
                 super::texture::TextureTarget::Texture1D => Entry::TexImage1D,
                 super::texture::TextureTarget::Texture2D
                 | super::texture::TextureTarget::CubeMap
                 | super::texture::TextureTarget::CubeFace(_) => Entry::TexImage2D,
                 super::texture::TextureTarget::Texture3D => Entry::TexImage3D,
             },
-            Command::ProxyTexImage(_) => Entry::TexImage3D,
             Command::TexSubImage3D(_) => Entry::TexSubImage3D,
             Command::TexSubImage2D(_) => Entry::TexSubImage2D,
             Command::CompressedTexImage2D(_) => Entry::CompressedTexImage2D,

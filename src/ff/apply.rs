@@ -539,6 +539,7 @@ impl FixedState {
             width: t.width,
             height: t.height,
             depth: t.depth,
+            border: 0,
             data: t.data.bytes().map(|bytes| PixelData {
                 format: t.format,
                 ty: t.ty,
@@ -628,6 +629,7 @@ impl FixedState {
             width: c.width,
             height: c.height,
             depth: 1,
+            border: 0,
             data: None,
             compressed: None,
             requested: c.requested,

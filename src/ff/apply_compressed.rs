@@ -34,6 +34,7 @@ impl FixedState {
             width: t.width,
             height: t.height,
             depth: 1,
+            border: 0,
             data: Some(PixelData {
                 format: PixelFormat::Rgba,
                 ty: PixelType::UnsignedByte,

@@ -417,47 +417,65 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::TexImage1D => {
             c.count(8)?;
-            target_is(c, TextureTarget::Texture1D)?;
+            let proxy = c.pname(0, &["GL_PROXY_TEXTURE_1D"]).is_ok();
+            if !proxy {
+                target_is(c, TextureTarget::Texture1D)?;
+            }
             let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(5)?, c.enm(6)?);
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_tex_data(c, 7, shape)?;
-            Command::TexImage(TexImage {
-                requested: requested_format(c, 2),
-                target: TextureTarget::Texture1D,
-                level: c.i32(1)?,
-                internal_format: internal_format(c, 2)?,
-                width: shape.width,
-                height: 1,
-                depth: 1,
-                border: c.i32(4)?,
-                format,
-                ty,
-                data,
-            })
+            tex_image_or_proxy(
+                proxy,
+                TexImage {
+                    requested: requested_format(c, 2),
+                    target: TextureTarget::Texture1D,
+                    level: c.i32(1)?,
+                    internal_format: internal_format(c, 2)?,
+                    width: shape.width,
+                    height: 1,
+                    depth: 1,
+                    border: c.i32(4)?,
+                    format,
+                    ty,
+                    data,
+                },
+            )
         }
         Entry::TexImage2D => {
             c.count(9)?;
-            let target = image_2d_target(c)?;
+            // A proxy names the target it stands for (GL 1.5 §3.8.11).
+            let proxied = match c.pname(0, &["GL_PROXY_TEXTURE_2D", "GL_PROXY_TEXTURE_CUBE_MAP"]) {
+                Ok("GL_PROXY_TEXTURE_2D") => Some(TextureTarget::Texture2D),
+                Ok(_) => Some(TextureTarget::CubeMap),
+                Err(_) => None,
+            };
+            let target = match proxied {
+                Some(t) => t,
+                None => image_2d_target(c)?,
+            };
             let shape = PixelShape::groups(c.i32(3)?, c.i32(4)?, c.enm(6)?, c.enm(7)?);
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
             let (format, ty, data) = pixel_types::model_tex_data(c, 8, shape)?;
-            Command::TexImage(TexImage {
-                requested: requested_format(c, 2),
-                target,
-                level: c.i32(1)?,
-                internal_format: internal_format(c, 2)?,
-                width: shape.width,
-                height: shape.height,
-                depth: 1,
-                border: c.i32(5)?,
-                format,
-                ty,
-                data,
-            })
+            tex_image_or_proxy(
+                proxied.is_some(),
+                TexImage {
+                    requested: requested_format(c, 2),
+                    target,
+                    level: c.i32(1)?,
+                    internal_format: internal_format(c, 2)?,
+                    width: shape.width,
+                    height: shape.height,
+                    depth: 1,
+                    border: c.i32(5)?,
+                    format,
+                    ty,
+                    data,
+                },
+            )
         }
         Entry::TexSubImage2D => {
             c.count(9)?;
@@ -558,6 +576,15 @@ pub(crate) fn image_2d_target<A: Args>(c: &A) -> Result<TextureTarget, A::Error>
                 .filter_map(GlEnum::gl_name)
                 .collect(),
         )),
+    }
+}
+
+/// A glTexImage of its target, or (`proxy`) of the proxy standing for it.
+fn tex_image_or_proxy(proxy: bool, image: TexImage) -> Command {
+    if proxy {
+        Command::ProxyTexImage(image)
+    } else {
+        Command::TexImage(image)
     }
 }
 

@@ -499,7 +499,8 @@ pub enum Command {
     // GL 1.2's 3D textures (ff::texture_volume).
     /// glTexSubImage3D (target TEXTURE_3D).
     TexSubImage3D(TexSubImage),
-    /// glTexImage3D(PROXY_TEXTURE_3D, …): `target` is the target proxied (TEXTURE_3D).
+    /// glTexImage1D/2D/3D of PROXY_TEXTURE_1D, _2D, _CUBE_MAP or _3D: `target` is the
+    /// target proxied (TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_3D).
     ProxyTexImage(TexImage),
     // GL 1.3's compressed textures (ff::compressed).
     /// glCompressedTexImage2D: S3TC blocks, decoded into the level's 8-bit storage.

@@ -120,7 +120,8 @@ impl Client {
                         None => return Err(e),
                     },
                 };
-                // A proxy image is not compiled: GL runs it at once (Mesa's save_TexImage3D).
+                // A proxy image is not compiled: GL runs it at once (Mesa's save_TexImage1D,
+                // 2D and 3D).
                 if let [Item::Command(proxy @ Command::ProxyTexImage(_))] = items.as_slice() {
                     out.push(proxy.clone());
                     return Ok(Reply::None);

@@ -739,7 +739,7 @@ impl FixedState {
     }
 
     /// glGetTexLevelParameter{f,i}v(target, level, pname) of the texture bound to `target`
-    /// on the active unit, or of PROXY_TEXTURE_3D's levels (`texture_volume`). A level
+    /// on the active unit, or of a proxy target's levels (`texture_volume`). A level
     /// outside [0, log2 MAX_TEXTURE_SIZE] (3D: MAX_3D_TEXTURE_SIZE) is INVALID_VALUE; an
     /// unspecified level answers 0 for everything but the internal format, which is RGBA
     /// (Mesa, after GL 4.0; GL 1.5 says 1). The internal format is the one the program named,
@@ -754,8 +754,15 @@ impl FixedState {
         pname: u32,
     ) -> Result<Queried, GlErrorKind> {
         // A cube map's levels are its faces' (TEXTURE_CUBE_MAP itself: INVALID_ENUM, Mesa).
-        let (object, image) = if target == r::PROXY_TEXTURE_3D {
-            (&self.proxy_3d, TextureTarget::Texture3D)
+        let proxy = match target {
+            r::PROXY_TEXTURE_1D => Some(&self.proxy_1d),
+            r::PROXY_TEXTURE_2D => Some(&self.proxy_2d),
+            r::PROXY_TEXTURE_CUBE_MAP => Some(&self.proxy_cube_map),
+            r::PROXY_TEXTURE_3D => Some(&self.proxy_3d),
+            _ => None,
+        };
+        let (object, image) = if let Some(p) = proxy {
+            (p, p.target)
         } else {
             let t = TextureTarget::from_gl_value(target)
                 .filter(|t| *t != TextureTarget::CubeMap)
@@ -800,7 +807,7 @@ impl FixedState {
             r::TEXTURE_WIDTH => int(l.map_or(0, |l| l.width)),
             r::TEXTURE_HEIGHT => int(l.map_or(0, |l| l.height)),
             r::TEXTURE_DEPTH => int(l.map_or(0, |l| l.depth)),
-            r::TEXTURE_BORDER => int(0),
+            r::TEXTURE_BORDER => int(l.map_or(0, |l| l.border)),
             r::TEXTURE_INTERNAL_FORMAT => {
                 vec![QueryValue::Enum(l.map_or(r::RGBA, TexLevel::named_format))]
             }

@@ -217,9 +217,12 @@ pub struct FixedState {
     pub default_3d: TextureObject,
     /// The default TEXTURE_CUBE_MAP (GL 1.3).
     pub default_cube_map: TextureObject,
-    /// PROXY_TEXTURE_3D's levels (GL 1.5 §3.8.11): what glTexImage3D on the proxy target
-    /// found acceptable, every field 0 where it did not; no unit samples it. GL default:
-    /// no level specified.
+    /// PROXY_TEXTURE_1D's, _2D's, _CUBE_MAP's and _3D's levels (GL 1.5 §3.8.11): what
+    /// glTexImage on the proxy target found acceptable, every field 0 where it did not; no
+    /// unit samples them. GL default: no level specified.
+    pub proxy_1d: TextureObject,
+    pub proxy_2d: TextureObject,
+    pub proxy_cube_map: TextureObject,
     pub proxy_3d: TextureObject,
 
     /// REGISTER_COMBINERS_NV. GL default: disabled, [`RegisterCombiners::DEFAULT`].
@@ -345,6 +348,9 @@ impl FixedState {
             default_2d: TextureObject::new(TextureTarget::Texture2D),
             default_3d: TextureObject::new(TextureTarget::Texture3D),
             default_cube_map: TextureObject::new(TextureTarget::CubeMap),
+            proxy_1d: TextureObject::new(TextureTarget::Texture1D),
+            proxy_2d: TextureObject::new(TextureTarget::Texture2D),
+            proxy_cube_map: TextureObject::new(TextureTarget::CubeMap),
             proxy_3d: TextureObject::new(TextureTarget::Texture3D),
             register_combiners: Toggle::off(RegisterCombiners::DEFAULT),
             alpha_test: Toggle::off(AlphaTest::DEFAULT),

@@ -490,6 +490,9 @@ pub struct TexLevel {
     pub height: i32,
     /// 1 for 1D and 2D textures.
     pub depth: i32,
+    /// TEXTURE_BORDER: 0, but in a proxy's level (a real image with a border is refused
+    /// here); `width`, `height` (not 1D's) and `depth` (3D's) include it, as GL's do.
+    pub border: i32,
     /// The CPU copy of the texels, when known (see the module note).
     pub data: Option<PixelData>,
     /// A compressed level's blocks as given (`compressed`); `data` holds them decoded.
@@ -812,6 +815,7 @@ impl TextureObject {
                     width: size.0,
                     height: size.1,
                     depth: size.2,
+                    border: 0,
                     data: None,
                     compressed: None,
                     requested,
@@ -858,8 +862,8 @@ pub fn check_volume_size(level: i32, size: [i32; 3], border: i32) -> GlResult {
     Ok(())
 }
 
-/// The checks a proxy image (PROXY_TEXTURE_3D) raises errors for too: level in
-/// [0, log2(MAX_3D_TEXTURE_SIZE)], no size below 0, border 0 (see [`check_image_size`]).
+/// glTexImage3D's argument checks: level in [0, log2(MAX_3D_TEXTURE_SIZE)], no size below
+/// 0, border 0 (see [`check_image_size`]; a proxy's are [`check_proxy_arguments`]).
 pub fn check_volume_arguments(level: i32, size: [i32; 3], border: i32) -> GlResult {
     if !(0..=MAX_3D_TEXTURE_LEVEL).contains(&level) {
         return Err(GlError::invalid_value(
@@ -884,6 +888,35 @@ pub fn check_volume_arguments(level: i32, size: [i32; 3], border: i32) -> GlResu
 pub fn volume_fits(level: i32, size: [i32; 3]) -> bool {
     let max = MAX_3D_TEXTURE_SIZE >> level.clamp(0, MAX_3D_TEXTURE_LEVEL);
     size.iter().all(|v| (0..=max).contains(v))
+}
+
+/// The checks a proxy image (PROXY_TEXTURE_1D, _2D, _CUBE_MAP, _3D) raises errors for
+/// too (Mesa, measured: `tests/c/proxy_tex.c`), all INVALID_VALUE: level in
+/// [0, `max_level`], no size below 0, border 0 or 1 (GL 1.5 §3.8.1: a proxy may have the
+/// border a real image here may not, see [`check_image_size`]).
+pub fn check_proxy_arguments(level: i32, max_level: i32, size: [i32; 3], border: i32) -> GlResult {
+    if !(0..=max_level).contains(&level) {
+        return Err(GlError::invalid_value(
+            "level must be in [0, log2(MAX_TEXTURE_SIZE)]",
+        ));
+    }
+    if size.iter().any(|v| *v < 0) {
+        return Err(GlError::invalid_value("sizes must be 0 or more"));
+    }
+    if !(0..=1).contains(&border) {
+        return Err(GlError::invalid_value("border must be 0 or 1"));
+    }
+    Ok(())
+}
+
+/// Whether each side of a level-`level` proxy image (its border included) is in
+/// [2·border, 2·border + (`max` >> level)] (Mesa's `_mesa_legal_texture_dimensions`; the
+/// level already checked to be in range).
+pub fn proxy_fits(level: i32, max: i32, sides: &[i32], border: i32) -> bool {
+    let max = max >> level.clamp(0, 30);
+    sides
+        .iter()
+        .all(|v| (2 * border..=2 * border + max).contains(v))
 }
 
 /// The checks TexImage and CopyTexImage share (GL 1.5 §3.8.1, ARB_depth_texture):
@@ -1002,6 +1035,7 @@ mod tests {
             width,
             height,
             depth: 1,
+            border: 0,
             data: None,
             compressed: None,
             requested: None,

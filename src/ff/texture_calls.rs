@@ -189,6 +189,7 @@ impl FixedState {
                 width: c.width,
                 height: 1,
                 depth: 1,
+                border: 0,
                 data: None,
                 compressed: None,
                 requested: c.requested,

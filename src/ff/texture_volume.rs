@@ -16,9 +16,11 @@
 //!   level's edge is no error, one past it is.
 //!
 //! A proxy image (PROXY_TEXTURE_3D, GL 1.5 §3.8.11) raises the same errors but the size
-//! one: a volume too large for its level leaves the proxy level unspecified (every query 0,
+//! one, and may have a border of 1 (included in its sizes, as GL's; Mesa, measured): a volume too large for its level leaves the proxy level unspecified (every query 0,
 //! the internal format RGBA), one that fits specifies it as a real image would. A display
-//! list never keeps a proxy call, which runs at once (Mesa's `save_TexImage3D`).
+//! list never keeps a proxy call, which runs at once (Mesa's `save_TexImage3D`). The
+//! proxies of glTexImage1D and glTexImage2D (PROXY_TEXTURE_1D, _2D, _CUBE_MAP) follow the
+//! same rules and are modelled here with it.
 //!
 //! A volume's data is `depth` images of `height` rows, the first (r = 0) first; a
 //! sub-image patches it image by image.
@@ -29,8 +31,9 @@ use super::error::{GlError, GlResult};
 use super::pixel_types;
 use super::state::FixedState;
 use super::texture::{
-    blit, check_format_pair, check_volume_arguments, volume_fits, TexFormat, TexLevel,
-    TextureTarget,
+    blit, check_format_pair, check_proxy_arguments, check_volume_arguments, proxy_fits,
+    volume_fits, TexFormat, TexLevel, TextureTarget, MAX_3D_TEXTURE_SIZE,
+    MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
 };
 use super::texture_calls::CopyTexSubImage;
 use super::{Command, TexImage, TexSubImage};
@@ -174,22 +177,43 @@ pub(crate) fn blit_volume(dst: &mut [u8], (width, height): (i32, i32), t: &TexSu
 }
 
 impl FixedState {
-    /// glTexImage3D(PROXY_TEXTURE_3D, …): the argument and format errors of a real image;
-    /// then the proxy level is the image's (data aside) if it fits its level, else
-    /// unspecified.
+    /// glTexImage1D/2D/3D of a proxy target (GL 1.5 §3.8.11): the argument and format
+    /// errors of a real image; then the proxy level is the image's (data aside) if it fits
+    /// its level, else unspecified, without an error. A cube map's image fits only when
+    /// square (Mesa, measured: `tests/c/proxy_tex.c`; a real face is INVALID_VALUE).
     pub(crate) fn proxy_tex_image(&mut self, t: &TexImage) -> GlResult {
-        check_volume_image(t)?;
+        let max_level = t.target.max_level();
+        check_proxy_arguments(t.level, max_level, [t.width, t.height, t.depth], t.border)?;
         check_format_pair(t.internal_format, t.format)?;
-        check_volume_format(t.internal_format)?;
-        let size = [t.width, t.height, t.depth];
-        if volume_fits(t.level, size) {
-            self.proxy_3d.set_level(
+        let (w, h, d, b) = (t.width, t.height, t.depth, t.border);
+        let (proxy, fits) = match t.target {
+            TextureTarget::Texture3D => {
+                check_volume_format(t.internal_format)?;
+                let fits = proxy_fits(t.level, MAX_3D_TEXTURE_SIZE, &[w, h, d], b);
+                (&mut self.proxy_3d, fits)
+            }
+            TextureTarget::Texture1D => {
+                let fits = proxy_fits(t.level, MAX_TEXTURE_SIZE, &[w], b);
+                (&mut self.proxy_1d, fits)
+            }
+            TextureTarget::Texture2D => {
+                let fits = proxy_fits(t.level, MAX_TEXTURE_SIZE, &[w, h], b);
+                (&mut self.proxy_2d, fits)
+            }
+            TextureTarget::CubeMap | TextureTarget::CubeFace(_) => {
+                let fits = proxy_fits(t.level, MAX_CUBE_MAP_TEXTURE_SIZE, &[w, h], b);
+                (&mut self.proxy_cube_map, fits && w == h)
+            }
+        };
+        if fits {
+            proxy.set_level(
                 t.level,
                 TexLevel {
                     internal_format: t.internal_format,
                     width: t.width,
                     height: t.height,
                     depth: t.depth,
+                    border: t.border,
                     data: None,
                     compressed: None,
                     requested: t.requested,
@@ -197,7 +221,7 @@ impl FixedState {
             );
         } else if let Some(l) = usize::try_from(t.level)
             .ok()
-            .and_then(|l| self.proxy_3d.levels.get_mut(l))
+            .and_then(|l| proxy.levels.get_mut(l))
         {
             *l = None;
         }

@@ -12,6 +12,7 @@ fn volume(format: TexFormat, (width, height, depth): (i32, i32, i32)) -> Option<
         width,
         height,
         depth,
+        border: 0,
         data: None,
         compressed: None,
         requested: None,

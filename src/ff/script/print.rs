@@ -109,7 +109,15 @@ fn command(out: &mut String, c: &Command, unpack_alignment: usize) {
     match c {
         Command::Draw(g) => draw(out, g),
         Command::TexImage(t) => tex_image(out, t, n(t.target), unpack_alignment),
-        Command::ProxyTexImage(t) => tex_image(out, t, "GL_PROXY_TEXTURE_3D", unpack_alignment),
+        Command::ProxyTexImage(t) => {
+            let target = match t.target {
+                TextureTarget::Texture1D => "GL_PROXY_TEXTURE_1D",
+                TextureTarget::Texture3D => "GL_PROXY_TEXTURE_3D",
+                TextureTarget::CubeMap | TextureTarget::CubeFace(_) => "GL_PROXY_TEXTURE_CUBE_MAP",
+                TextureTarget::Texture2D => "GL_PROXY_TEXTURE_2D",
+            };
+            tex_image(out, t, target, unpack_alignment)
+        }
         Command::TexSubImage3D(t) => line(
             out,
             format_args!(

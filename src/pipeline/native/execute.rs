@@ -251,9 +251,12 @@ impl Native {
                 texture_volume::tex_sub_image_3d(g, t);
                 core.counters.texture_uploads += 1;
             }
-            Command::ProxyTexImage(t) => {
+            // The model answers every proxy query; only the 3D one is passed on (Mesa checks
+            // it again, nothing draws it).
+            Command::ProxyTexImage(t) if t.target == crate::ff::TextureTarget::Texture3D => {
                 texture_volume::tex_image_3d(g, t, texture_volume::Target::Proxy)
             }
+            Command::ProxyTexImage(_) => {}
             Command::Draw(geometry) => {
                 if core.state.register_combiners.enabled {
                     return Err(PipelineError::Unsupported {
