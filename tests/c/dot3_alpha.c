@@ -20,12 +20,7 @@ static void panel(const char *what) {
   int x = panels * 8;
   panels++;
   glViewport(x, 0, 8, 8);
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2f(-1, -1);
-  glTexCoord2f(1, 0); glVertex2f(1, -1);
-  glTexCoord2f(1, 1); glVertex2f(1, 1);
-  glTexCoord2f(0, 1); glVertex2f(-1, 1);
-  glEnd();
+  textured_square();
   glFinish();
   const GLubyte *p = buf + 4 * (4 * W + x + 4);
   printf("%-36s %3d %3d %3d %3d err 0x%x\n", what, p[0], p[1], p[2], p[3], glGetError());

@@ -31,12 +31,7 @@ static void panel(GLint level0, GLint level1, GLenum filter) {
   glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &named[0]);
   glGetTexLevelParameteriv(GL_TEXTURE_2D, 1, GL_TEXTURE_INTERNAL_FORMAT, &named[1]);
   glViewport(x, 0, 8, 8);
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2f(-1, -1);
-  glTexCoord2f(1, 0); glVertex2f(1, -1);
-  glTexCoord2f(1, 1); glVertex2f(1, 1);
-  glTexCoord2f(0, 1); glVertex2f(-1, 1);
-  glEnd();
+  textured_square();
   glFinish();
   const GLubyte *p = buf + 4 * (4 * W + x + 4);
   printf("levels 0x%04x 0x%04x filter 0x%x  %3d %3d %3d %3d err 0x%x\n", named[0], named[1],

@@ -84,12 +84,7 @@ int main(int argc, char **argv) {
   glClearColor(0.1f, 0.1f, 0.1f, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   glViewport(0, 0, 4, 4);
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2f(-1, -1);
-  glTexCoord2f(1, 0); glVertex2f(1, -1);
-  glTexCoord2f(1, 1); glVertex2f(1, 1);
-  glTexCoord2f(0, 1); glVertex2f(-1, 1);
-  glEnd();
+  textured_square();
   glFinish();
   printf("level 2 drawn %d %d %d %d err 0x%x\n", buf[4 * (W + 1)], buf[4 * (W + 1) + 1],
          buf[4 * (W + 1) + 2], buf[4 * (W + 1) + 3], glGetError());

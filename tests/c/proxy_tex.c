@@ -150,12 +150,7 @@ int main(int argc, char **argv) {
   glBindTexture(GL_PROXY_TEXTURE_2D, 1);
   err("glBindTexture of a proxy");
   glEnable(GL_TEXTURE_2D);
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2f(-1, -1);
-  glTexCoord2f(1, 0); glVertex2f(1, -1);
-  glTexCoord2f(1, 1); glVertex2f(1, 1);
-  glTexCoord2f(0, 1); glVertex2f(-1, 1);
-  glEnd();
+  textured_square();
   err("drawn");
   return finish(out, ctx, buf, W, H);
 }

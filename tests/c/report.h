@@ -40,6 +40,21 @@ static inline GLuint replace_texture_panels(void) {
   return tex;
 }
 
+/* The square of the viewport, (-1, -1) to (1, 1) under identity matrices, with texture
+ * coordinates (0, 0) to (1, 1): a texture drawn over a panel. */
+static inline void textured_square(void) {
+  glBegin(GL_QUADS);
+  glTexCoord2f(0, 0);
+  glVertex2f(-1, -1);
+  glTexCoord2f(1, 0);
+  glVertex2f(1, -1);
+  glTexCoord2f(1, 1);
+  glVertex2f(1, 1);
+  glTexCoord2f(0, 1);
+  glVertex2f(-1, 1);
+  glEnd();
+}
+
 /* The end of a program: the image finished and written to `out`, the context and its
  * buffer freed. The exit status: 0, or 1 when the image could not be written. */
 static inline int finish(const char *out, OSMesaContext ctx, GLubyte *buf, int w, int h) {

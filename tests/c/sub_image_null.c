@@ -68,12 +68,7 @@ int main(int argc, char **argv) {
   err("2D from NULL in a display list");
   texels("2D texels after the list", GL_TEXTURE_2D);
   glEnable(GL_TEXTURE_2D);
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2f(-1, -1);
-  glTexCoord2f(1, 0); glVertex2f(1, -1);
-  glTexCoord2f(1, 1); glVertex2f(1, 1);
-  glTexCoord2f(0, 1); glVertex2f(-1, 1);
-  glEnd();
+  textured_square();
   err("drawn");
   return finish(out, ctx, buf, W, H);
 }

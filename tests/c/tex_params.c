@@ -33,12 +33,7 @@ static void panel(const char *what) {
   int x = panels * 16;
   panels++;
   glViewport(x, 0, 16, 16);
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2f(-1, -1);
-  glTexCoord2f(1, 0); glVertex2f(1, -1);
-  glTexCoord2f(1, 1); glVertex2f(1, 1);
-  glTexCoord2f(0, 1); glVertex2f(-1, 1);
-  glEnd();
+  textured_square();
   glFinish();
   const GLubyte *p = buf + 4 * (8 * W + x + 8);
   printf("%-34s %3d %3d %3d %3d err 0x%x\n", what, p[0], p[1], p[2], p[3], glGetError());
