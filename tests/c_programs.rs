@@ -1345,3 +1345,19 @@ fn wide_points_and_lines_reach_beyond_a_small_viewport_as_on_mesa() {
     );
     assert_images_match("wide_viewport", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+/// `tests/c/eval_enables.c`: glEnable(AUTO_NORMAL) and the MAPn_* enables of an era's init
+/// code are kept without an error, answered by glIsEnabled and glGetBooleanv and restored by
+/// ENABLE_BIT and EVAL_BIT, as Mesa answers (evaluating is left out).
+#[test]
+fn evaluator_enables_are_kept_and_answered_as_on_mesa() {
+    let (mesa_text, ours_text) = texts("eval_enables");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "glEnable(AUTO_NORMAL)                    err 0x0",
+            "AUTO_NORMAL after EVAL_BIT           1 1  err 0x0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 13, "an evaluator enable");
+}

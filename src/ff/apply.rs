@@ -440,6 +440,9 @@ impl FixedState {
             Capability::SampleCoverage => self.sample_coverage.coverage = on,
             Capability::SampleAlphaToCoverage => self.sample_coverage.alpha_to_coverage = on,
             Capability::SampleAlphaToOne => self.sample_coverage.alpha_to_one = on,
+            Capability::AutoNormal => self.eval.auto_normal = on,
+            Capability::Map(m) if on => self.eval.maps |= m.bit(),
+            Capability::Map(m) => self.eval.maps &= !m.bit(),
             Capability::PolygonStipple => self.polygon_stipple.enabled = on,
             Capability::LineStipple => self.line_stipple.enabled = on,
             Capability::ClipPlane(i) => {

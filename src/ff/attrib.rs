@@ -19,7 +19,7 @@
 //! There is no client attribute stack: the model holds no client state (vertex arrays
 //! travel inside each draw), so glPushClientAttrib has nothing to save.
 
-use super::command::{Capability, Command};
+use super::command::{Capability, Command, EvalMap};
 use super::error::{GlError, GlResult};
 use super::fog::FogParam;
 use super::fragment::Face;
@@ -260,8 +260,10 @@ impl FixedState {
                 self.multisample = s.multisample;
                 self.sample_coverage = s.sample_coverage;
             }
+            // The evaluator enables (Table 6.28); the maps and grids are not modelled.
+            AttribGroup::Eval => self.eval = s.eval,
             // Not modelled yet: nothing saved, nothing restored.
-            AttribGroup::Eval | AttribGroup::List => {}
+            AttribGroup::List => {}
         }
     }
 
@@ -298,6 +300,7 @@ impl FixedState {
         self.logic_op.enabled = s.logic_op.enabled;
         self.index_logic_op = s.index_logic_op;
         self.dither = s.dither;
+        self.eval = s.eval;
         self.polygon_stipple.enabled = s.polygon_stipple.enabled;
         self.line_stipple.enabled = s.line_stipple.enabled;
         self.smooth = s.smooth;
@@ -518,7 +521,16 @@ impl FixedState {
                     invert: c.invert,
                 });
             }
-            AttribGroup::Eval | AttribGroup::List => {}
+            AttribGroup::Eval => self.eval_commands(out),
+            AttribGroup::List => {}
+        }
+    }
+
+    /// AUTO_NORMAL and the MAPn_* enables.
+    fn eval_commands(&self, out: &mut Vec<Command>) {
+        out.push(toggle(Capability::AutoNormal, self.eval.auto_normal));
+        for m in EvalMap::ALL {
+            out.push(toggle(Capability::Map(m), self.eval.maps & m.bit() != 0));
         }
     }
 
@@ -563,6 +575,7 @@ impl FixedState {
         out.push(toggle(Capability::LineSmooth, self.smooth.line));
         out.push(toggle(Capability::PolygonSmooth, self.smooth.polygon));
         self.sample_enable_commands(out);
+        self.eval_commands(out);
     }
 
     /// MULTISAMPLE and the three sample enables.

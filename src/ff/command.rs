@@ -103,6 +103,85 @@ pub enum Capability {
     SampleCoverage,
     SampleAlphaToCoverage,
     SampleAlphaToOne,
+    /// AUTO_NORMAL (§5.1): state only, evaluators being left out.
+    AutoNormal,
+    /// MAP1_* and MAP2_* (§5.1): state only, likewise.
+    Map(EvalMap),
+}
+
+/// One evaluator map an enable names: MAPn_<attribute>.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct EvalMap {
+    pub dims: MapDims,
+    pub attribute: MapAttribute,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MapDims {
+    One,
+    Two,
+}
+
+/// What a map evaluates, in the order of GL 1.5 Table 5.1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MapAttribute {
+    Vertex3,
+    Vertex4,
+    Index,
+    Color4,
+    Normal,
+    TextureCoord1,
+    TextureCoord2,
+    TextureCoord3,
+    TextureCoord4,
+}
+
+impl EvalMap {
+    /// Every map, MAP1_* then MAP2_*.
+    pub const ALL: [EvalMap; 18] = {
+        use MapAttribute::*;
+        const A: [MapAttribute; 9] = [
+            Vertex3,
+            Vertex4,
+            Index,
+            Color4,
+            Normal,
+            TextureCoord1,
+            TextureCoord2,
+            TextureCoord3,
+            TextureCoord4,
+        ];
+        let mut all = [EvalMap {
+            dims: MapDims::One,
+            attribute: Vertex3,
+        }; 18];
+        let mut i = 0;
+        while i < 18 {
+            all[i] = EvalMap {
+                dims: if i < 9 { MapDims::One } else { MapDims::Two },
+                attribute: A[i % 9],
+            };
+            i += 1;
+        }
+        all
+    };
+
+    /// Its bit in [`EvalEnables::maps`].
+    pub fn bit(self) -> u32 {
+        let dims = match self.dims {
+            MapDims::One => 0,
+            MapDims::Two => 9,
+        };
+        1 << (dims + self.attribute as u32)
+    }
+}
+
+/// The evaluator enables (Table 6.28): AUTO_NORMAL and one bit per map. GL default: all
+/// off. Kept and answered; nothing is evaluated (`glMap*`, `glEvalCoord*` are left out).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct EvalEnables {
+    pub auto_normal: bool,
+    pub maps: u32,
 }
 
 /// glTexImage1D / glTexImage2D / glTexImage3D.

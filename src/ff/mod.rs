@@ -88,7 +88,10 @@ pub use combiners::{
     FinalVariable, GeneralStage, Mapping, Portion, Product, Register, RegisterCombiners,
     StagePortion, SumOrMux, Variable, MAX_GENERAL_COMBINERS,
 };
-pub use command::{Capability, Command, CopyTexImage, ReadPixels, TexData, TexImage, TexSubImage};
+pub use command::{
+    Capability, Command, CopyTexImage, EvalEnables, EvalMap, MapAttribute, MapDims, ReadPixels,
+    TexData, TexImage, TexSubImage,
+};
 pub use error::{GlError, GlErrorKind, GlResult};
 pub use fog::{Fog, FogCoordSource, FogMode, FogParam};
 pub use fragment::{

@@ -611,6 +611,8 @@ impl FixedState {
             Capability::SampleCoverage => self.sample_coverage.coverage,
             Capability::SampleAlphaToCoverage => self.sample_coverage.alpha_to_coverage,
             Capability::SampleAlphaToOne => self.sample_coverage.alpha_to_one,
+            Capability::AutoNormal => self.eval.auto_normal,
+            Capability::Map(m) => self.eval.maps & m.bit() != 0,
             Capability::PolygonStipple => self.polygon_stipple.enabled,
             Capability::LineStipple => self.line_stipple.enabled,
         })

@@ -10,6 +10,7 @@ use glam::{Mat4, Vec3, Vec4};
 
 use super::attrib::AttribFrame;
 use super::combiners::RegisterCombiners;
+use super::command::EvalEnables;
 use super::error::GlError;
 use super::fog::Fog;
 use super::fragment::{
@@ -299,6 +300,8 @@ pub struct FixedState {
     /// DITHER (§4.1.9). GL default: TRUE. State only: an 8-bit target has nothing to
     /// dither on llvmpipe, and the emulated path leaves core GL's own DITHER as it is.
     pub dither: bool,
+    /// AUTO_NORMAL and the MAPn_* enables; state only.
+    pub eval: EvalEnables,
     /// glHint. GL default: DONT_CARE for every target; state only.
     pub hints: Hints,
     /// CURRENT_RASTER_* (`raster`). GL default: [`RasterPos::DEFAULT`].
@@ -383,6 +386,7 @@ impl FixedState {
             logic_op: Toggle::off(LogicOp::Copy),
             index_logic_op: false,
             dither: true,
+            eval: EvalEnables::default(),
             smooth: Smoothing::default(),
             color_sum: false,
             multisample: true,
