@@ -529,7 +529,7 @@ impl FixedState {
     /// AUTO_NORMAL and the MAPn_* enables.
     fn eval_commands(&self, out: &mut Vec<Command>) {
         out.push(toggle(Capability::AutoNormal, self.eval.auto_normal));
-        for m in EvalMap::ALL {
+        for m in EvalMap::all() {
             out.push(toggle(Capability::Map(m), self.eval.maps & m.bit() != 0));
         }
     }

@@ -136,35 +136,30 @@ pub enum MapAttribute {
     TextureCoord4,
 }
 
+impl MapAttribute {
+    /// Every attribute, in declaration order (its bit position).
+    pub const ALL: [MapAttribute; 9] = [
+        MapAttribute::Vertex3,
+        MapAttribute::Vertex4,
+        MapAttribute::Index,
+        MapAttribute::Color4,
+        MapAttribute::Normal,
+        MapAttribute::TextureCoord1,
+        MapAttribute::TextureCoord2,
+        MapAttribute::TextureCoord3,
+        MapAttribute::TextureCoord4,
+    ];
+}
+
 impl EvalMap {
     /// Every map, MAP1_* then MAP2_*.
-    pub const ALL: [EvalMap; 18] = {
-        use MapAttribute::*;
-        const A: [MapAttribute; 9] = [
-            Vertex3,
-            Vertex4,
-            Index,
-            Color4,
-            Normal,
-            TextureCoord1,
-            TextureCoord2,
-            TextureCoord3,
-            TextureCoord4,
-        ];
-        let mut all = [EvalMap {
-            dims: MapDims::One,
-            attribute: Vertex3,
-        }; 18];
-        let mut i = 0;
-        while i < 18 {
-            all[i] = EvalMap {
-                dims: if i < 9 { MapDims::One } else { MapDims::Two },
-                attribute: A[i % 9],
-            };
-            i += 1;
-        }
-        all
-    };
+    pub fn all() -> impl Iterator<Item = EvalMap> {
+        [MapDims::One, MapDims::Two].into_iter().flat_map(|dims| {
+            MapAttribute::ALL
+                .into_iter()
+                .map(move |attribute| EvalMap { dims, attribute })
+        })
+    }
 
     /// Its bit in [`EvalEnables::maps`].
     pub fn bit(self) -> u32 {
