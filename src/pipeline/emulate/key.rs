@@ -77,8 +77,8 @@ pub struct VertexKey {
     pub normalize: bool,
     pub rescale_normal: bool,
     pub units: Vec<VertexUnitKey>,
-    /// The program writes gl_PointSize: a pass that rasterises points, square or round
-    /// (POINT_SMOOTH). Set per pass; `None` from the state alone and for a pass that draws
+    /// The program places points (and writes gl_PointSize when attenuated): a pass that
+    /// rasterises points, square or round (POINT_SMOOTH). Set per pass; `None` from the state alone and for a pass that draws
     /// no points, since a vertex output less is work saved for every vertex.
     pub point_size: Option<PointKey>,
     /// The fog distance of each vertex: |z_eye|, or |fog coordinate| (GL 1.4's

@@ -137,7 +137,7 @@ pub enum UniformSource {
     CombinerConstant(u8),
     /// The texture image unit the sampler reads (the fixed-function unit index).
     Sampler(u8),
-    /// glPointSize, written to gl_PointSize (core GL reads the size from the program).
+    /// glPointSize: the attenuated size's start, and a round point's radius.
     PointSize,
     /// One 1/256-pixel step of the viewport in clip x and y per unit w,
     /// (2/(256·width), 2/(256·height)): the shift that gives an aliased point llvmpipe's

@@ -183,7 +183,10 @@ fn emit_normal(w: &mut GlslWriter, key: &VertexKey, out: &str, attribute: &str) 
     }
 }
 
-/// gl_PointSize of a points pass; core GL reads it from here with PROGRAM_POINT_SIZE on.
+/// The size of a points pass: written to gl_PointSize only when attenuated (per vertex; core
+/// GL reads it with PROGRAM_POINT_SIZE on); a pass of one size has it from glPointSize,
+/// computed once on the CPU ([`uniform_point_size`]), and keeps only what the fragment
+/// stage and the position need here.
 /// The derived size is `ff::point`'s: glPointSize's value, attenuated by
 /// 1/√(a + d·(b + d·c)) with d = |z_eye| (Mesa's order of operations) when the parameters
 /// attenuate, then clamped to [POINT_SIZE_MIN, POINT_SIZE_MAX] (max, then min).
@@ -217,9 +220,11 @@ fn emit_point_size(w: &mut GlslWriter, eye: &mut EyeTerms, points: PointKey) {
     match points.shape {
         PointShape::Square => {
             let step = w.uniform(UniformSource::PointSubpixel);
-            w.line(
-                "gl_PointSize = max(1.0, floor((roundEven(point_size * 256.0) + 127.0) / 256.0));",
-            );
+            if points.attenuated {
+                w.line(
+                    "gl_PointSize = max(1.0, floor((roundEven(point_size * 256.0) + 127.0) / 256.0));",
+                );
+            }
             // The shift stops at the right and top planes: a centre on them (x = w) is
             // inside the view volume (GL 1.5 §2.12) and Mesa draws its point; shifted past
             // them it would be clipped.
@@ -235,7 +240,9 @@ fn emit_point_size(w: &mut GlslWriter, eye: &mut EyeTerms, points: PointKey) {
             } else {
                 w.line("v_point_r = point_size <= 2.0 ? 1.0 : 0.5 * point_size;");
             }
-            w.line("gl_PointSize = 2.0 * v_point_r;");
+            if points.attenuated {
+                w.line("gl_PointSize = 2.0 * v_point_r;");
+            }
         }
     }
 }
