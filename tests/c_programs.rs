@@ -1361,3 +1361,26 @@ fn evaluator_enables_are_kept_and_answered_as_on_mesa() {
     );
     assert_same_text(&mesa_text, &ours_text, 13, "an evaluator enable");
 }
+
+/// `tests/c/line_ends.c`: lines whose ends lie exactly on pixel centres or corners, in
+/// every direction and width, light the pixels Mesa's OSMesa lights — its buffer is a
+/// window-system one, rasterised upside down in memory, and the layer draws into a pbuffer
+/// of the same kind (`abi::context`) — with smooth points' ties alike. Each case's lit
+/// pixels (count and hash) printed as Mesa prints them, bit for bit.
+#[test]
+fn lines_with_ends_on_pixel_centres_light_mesas_pixels() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("line_ends");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "down at 10.5                     lit   10  hash 5dfb1074eeb11773  err 0x0",
+            "left at 10                       lit    9  hash 3c529a40747e5726  err 0x0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 29, "a line's pixels");
+    let exact = Tolerance {
+        per_channel: 3,
+        max_bad_pixels: 0,
+    };
+    assert_images_match("line_ends", &ours, &mesa, exact);
+}

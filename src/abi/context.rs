@@ -20,8 +20,8 @@ use crate::ff::queries::{self, ObjectParam, QueryTarget};
 use crate::ff::upload_bounds::{pixel_access, CallTime, PixelAccess};
 use crate::ff::{Command, GlErrorKind};
 use crate::gpu::{
-    Backend, ColorStorage, ContextRequest, DepthStencilBuffers, GpuContext, Profile, RenderTarget,
-    TargetSpec,
+    Backend, ColorStorage, ContextRequest, DepthStencilBuffers, GpuContext, PbufferSpec, Profile,
+    RenderTarget, TargetSpec,
 };
 use crate::pipeline::emulate::EmulatedPipeline;
 use crate::pipeline::queries::QueryFetch;
@@ -276,6 +276,57 @@ pub struct Context {
     generated: super::framebuffers::Generated,
 }
 
+/// Swaps the first and third byte of each 4-byte pixel: RGBA ↔ BGRA. On 4-aligned
+/// pixels, as native words w: (w & 0xff00ff00) | (w >> 16 & 0xff) | (w & 0xff) << 16 on
+/// little-endian, the same with the shifts the other way on big-endian — a loop the
+/// compiler makes vector shifts of (a 256×256 frame is 65 536 pixels).
+fn swap_red_blue(pixels: &mut [u8]) {
+    if pixels.as_ptr().align_offset(4) != 0 {
+        for p in pixels.chunks_exact_mut(4) {
+            p.swap(0, 2);
+        }
+        return;
+    }
+    // SAFETY: every bit pattern is a valid u32; the slice starts 4-aligned, so `head` is
+    // empty and each word is one pixel.
+    let (_, words, tail) = unsafe { pixels.align_to_mut::<u32>() };
+    for w in words.iter_mut() {
+        let v = *w;
+        *w = match cfg!(target_endian = "little") {
+            true => (v & 0xff00_ff00) | ((v >> 16) & 0xff) | ((v & 0xff) << 16),
+            false => (v & 0x00ff_00ff) | ((v >> 16) & 0xff00) | ((v & 0xff00) << 16),
+        };
+    }
+    debug_assert!(tail.is_empty() || tail.len() < 4);
+}
+
+/// The pbuffer with `spec`'s buffers: 8-bit RGB with 8 alpha bits or none, and depth and
+/// stencil buffers an EGL config has (24/8, 24, 16, none). None for the others (16-bit
+/// and float colour, RGB565, a stencil buffer without depth, 32-bit float depth).
+fn surface_spec(spec: TargetSpec) -> Option<PbufferSpec> {
+    let alpha_bits = match spec.color {
+        ColorStorage::Rgba8 => 8,
+        ColorStorage::Rgb8 => 0,
+        _ => return None,
+    };
+    let (depth_bits, stencil_bits) = match (spec.buffers, spec.depth, spec.stencil) {
+        (DepthStencilBuffers::AsNamed, DepthBits::D24, _) => (24, 8),
+        (DepthStencilBuffers::AsNamed | DepthStencilBuffers::DepthOnly, DepthBits::D16, false) => {
+            (16, 0)
+        }
+        (DepthStencilBuffers::DepthOnly, DepthBits::D24, _) => (24, 0),
+        (DepthStencilBuffers::NoDepth, _, false) => (0, 0),
+        _ => return None,
+    };
+    Some(PbufferSpec {
+        width: spec.width,
+        height: spec.height,
+        alpha_bits,
+        depth_bits,
+        stencil_bits,
+    })
+}
+
 /// The largest buffer side (llvmpipe's MAX_TEXTURE_SIZE, which Mesa's OSMesa reports as
 /// OSMESA_MAX_WIDTH and OSMESA_MAX_HEIGHT).
 pub const MAX_SIZE: i32 = 16384;
@@ -362,15 +413,15 @@ impl Context {
             if self.stencil {
                 spec = spec.with_stencil();
             }
-            let target = RenderTarget::new(&self.gpu, spec)?;
+            let target = self.make_target(spec)?;
             target.bind(&self.gpu);
-            let framebuffer = target.framebuffer();
+            let (framebuffer, color_buffer) = (target.framebuffer(), target.color_buffer());
             self.target = Some(target);
             match &mut self.pipeline {
                 None => self.pipeline = Some(EmulatedPipeline::new(&self.gpu)?),
                 Some(p) => {
                     p.forget_sent_state();
-                    p.set_window_framebuffer(&self.gpu, Some(framebuffer));
+                    p.set_window_framebuffer(&self.gpu, framebuffer, color_buffer);
                 }
             }
             if let Some(p) = &mut self.pipeline {
@@ -382,6 +433,21 @@ impl Context {
             super::trace::buffer(buffer.width, buffer.height, self.accum);
         }
         Ok(())
+    }
+
+    /// The target of a buffer: a pbuffer surface where one has exactly the buffers of
+    /// `spec`, else a framebuffer object. A pbuffer's framebuffer is a window-system one,
+    /// as Mesa's OSMesa buffer is: Mesa rasterises both upside down in memory, and where a
+    /// line's end lies on a pixel centre or corner, which pixel it lights depends on that
+    /// orientation (`tests/c/line_ends.c`).
+    fn make_target(&self, spec: TargetSpec) -> Result<RenderTarget, AbiError> {
+        if let Some(surface) = surface_spec(spec) {
+            if self.gpu.bind_window_surface(surface)? {
+                return Ok(RenderTarget::surface(&self.gpu, spec)?);
+            }
+        }
+        self.gpu.release_window_surface()?;
+        Ok(RenderTarget::new(&self.gpu, spec)?)
     }
 
     /// Releases the GL objects (the context must be current).
@@ -713,25 +779,36 @@ impl Context {
         let storage = target.spec().color;
         // A buffer with GL's layout — bytes of RGBA or BGRA order, rows bottom first
         // (OSMESA_Y_UP, the default), ROW_LENGTH as PACK_ROW_LENGTH — is filled by
-        // glReadPixels itself: one copy instead of a read and a reordering one (256 KiB a
-        // frame for 256×256). Any other is read into `readback` and reordered.
-        let direct = match self.format {
-            ColorFormat::Rgba => Some(glow::RGBA),
-            ColorFormat::Bgra => Some(glow::BGRA),
-            _ => None,
-        }
-        .filter(|_| storage == ColorStorage::Rgba8 && self.y_up && w > 0 && h > 0);
+        // glReadPixels itself, in the colour buffer's own byte order (one copy, 256 KiB a
+        // frame for 256×256), red and blue then swapped in place where the buffer's order
+        // is the other. Any other is read into `readback` and reordered.
+        let direct = matches!(self.format, ColorFormat::Rgba | ColorFormat::Bgra)
+            && storage == ColorStorage::Rgba8
+            && self.y_up
+            && w > 0
+            && h > 0;
         let mut rows = std::mem::take(&mut self.readback);
         let read = match direct {
-            Some(format) => {
+            true => {
                 let len = ((h - 1) * row_pixels + w) * 4;
                 // SAFETY: the caller's buffer holds height rows of ROW_LENGTH pixels of 4
                 // bytes (OSMesaMakeCurrent's contract); the read writes the first `width`
                 // of each.
                 let out = unsafe { std::slice::from_raw_parts_mut(buffer.ptr.cast::<u8>(), len) };
-                target.read_color_bytes_into_rows(&self.gpu, format, row_pixels, out)
+                let order = target.byte_order();
+                let read = target.read_color_bytes_into_rows(&self.gpu, order, row_pixels, out);
+                let wanted = match self.format {
+                    ColorFormat::Bgra => glow::BGRA,
+                    _ => glow::RGBA,
+                };
+                if order != wanted {
+                    for row in out.chunks_mut(row_pixels * 4) {
+                        swap_red_blue(&mut row[..w * 4]);
+                    }
+                }
+                read
             }
-            None => target.read_color_stored_into(&self.gpu, &mut rows),
+            false => target.read_color_stored_into(&self.gpu, &mut rows),
         };
         // The read bound the target: the pipeline binds the program's framebuffers again.
         if let Some(p) = self.pipeline.as_mut() {
@@ -740,7 +817,7 @@ impl Context {
         if let Err(e) = &read {
             eprintln!("fixedfunc: reading the image back failed: {e}");
         }
-        if read.is_ok() && direct.is_none() {
+        if read.is_ok() && !direct {
             let size = storage.component_bytes();
             let bpp = self.format.bytes() * size;
             // `rows` is GL's order, row y from the bottom; Y_UP keeps that order.

@@ -1,9 +1,14 @@
 //! EGL without a window system. The surfaceless platform (`EGL_MESA_platform_surfaceless`,
 //! 0x31DD) is tried first; if the client extensions lack it, the device platform
 //! (`EGL_EXT_platform_device`, 0x313F) on the first device `eglQueryDevicesEXT` lists. The
-//! context is made current with no surface (`EGL_KHR_surfaceless_context`), so all rendering
-//! goes to framebuffer objects.
+//! context is made current with no surface (`EGL_KHR_surfaceless_context`), so rendering
+//! goes to framebuffer objects — or, once [`EglContext::bind_pbuffer`] gave it one, with a
+//! pbuffer surface, whose framebuffer 0 is a window-system framebuffer as OSMesa's buffer
+//! is: Mesa rasterises it upside down in memory (`Y_0_TOP`), and the tie rules of lines
+//! follow that orientation. The context has no config (`EGL_KHR_no_config_context`) when
+//! the display allows, so a pbuffer of any config can be bound to it.
 
+use std::cell::Cell;
 use std::ffi::c_void;
 
 use khronos_egl as egl;
@@ -39,7 +44,24 @@ pub struct EglContext {
     display: egl::Display,
     context: egl::Context,
     platform: EglPlatform,
+    /// Made without a config: any pbuffer can be bound.
+    configless: bool,
+    /// The pbuffer made current with the context, if any (`bind_pbuffer`).
+    pbuffer: Cell<Option<egl::Surface>>,
 }
+
+/// The buffers of a pbuffer surface: 8-bit red, green and blue, and these.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PbufferSpec {
+    pub width: u32,
+    pub height: u32,
+    pub alpha_bits: i32,
+    pub depth_bits: i32,
+    pub stencil_bits: i32,
+}
+
+/// EGL_NO_CONFIG_KHR (EGL_KHR_no_config_context).
+const NO_CONFIG: *mut c_void = std::ptr::null_mut();
 
 fn egl_err(call: &'static str, platform: EglPlatform) -> impl Fn(egl::Error) -> GpuError {
     move |e| GpuError::Egl {
@@ -107,14 +129,32 @@ impl EglContext {
                 egl::NONE,
             ],
         };
+        let configless = egl
+            .query_string(Some(display), egl::EXTENSIONS)
+            .map(|s| {
+                s.to_string_lossy()
+                    .split_whitespace()
+                    .any(|e| e == "EGL_KHR_no_config_context")
+            })
+            .unwrap_or(false);
+        // SAFETY: EGL_NO_CONFIG_KHR is a valid config argument where the display lists
+        // EGL_KHR_no_config_context.
+        let no_config = unsafe { egl::Config::from_ptr(NO_CONFIG) };
         let context = egl
-            .create_context(display, config, None, attribs)
+            .create_context(
+                display,
+                if configless { no_config } else { config },
+                None,
+                attribs,
+            )
             .map_err(err("eglCreateContext"))?;
         let ctx = EglContext {
             egl,
             display,
             context,
             platform,
+            configless,
+            pbuffer: Cell::new(None),
         };
         ctx.make_current()?;
         // SAFETY: the context is current; eglGetProcAddress returns entry points for it.
@@ -133,9 +173,98 @@ impl EglContext {
     }
 
     pub fn make_current(&self) -> Result<(), GpuError> {
+        let surface = self.pbuffer.get();
         self.egl
-            .make_current(self.display, None, None, Some(self.context))
+            .make_current(self.display, surface, surface, Some(self.context))
             .map_err(egl_err("eglMakeCurrent", self.platform))
+    }
+
+    /// Makes the context current with a new pbuffer of `spec` (the previous one destroyed):
+    /// framebuffer 0 is then that surface. Ok(false), and the context as it was, when no
+    /// config has exactly these buffers (single-sampled) or the context has a config.
+    pub fn bind_pbuffer(&self, spec: PbufferSpec) -> Result<bool, GpuError> {
+        let Some(config) = self.exact_config(spec) else {
+            return Ok(false);
+        };
+        let (Ok(w), Ok(h)) = (
+            egl::Int::try_from(spec.width),
+            egl::Int::try_from(spec.height),
+        ) else {
+            return Ok(false);
+        };
+        let attribs = [egl::WIDTH, w, egl::HEIGHT, h, egl::NONE];
+        let Ok(surface) = self
+            .egl
+            .create_pbuffer_surface(self.display, config, &attribs)
+        else {
+            return Ok(false);
+        };
+        let old = self.pbuffer.replace(Some(surface));
+        if let Err(e) = self.make_current() {
+            self.pbuffer.set(old);
+            let _ = self.egl.destroy_surface(self.display, surface);
+            return Err(e);
+        }
+        if let Some(old) = old {
+            let _ = self.egl.destroy_surface(self.display, old);
+        }
+        Ok(true)
+    }
+
+    /// Makes the context current without a surface again, destroying its pbuffer.
+    pub fn release_pbuffer(&self) -> Result<(), GpuError> {
+        let Some(old) = self.pbuffer.take() else {
+            return Ok(());
+        };
+        self.make_current()?;
+        let _ = self.egl.destroy_surface(self.display, old);
+        Ok(())
+    }
+
+    /// The single-sampled pbuffer config whose sizes are exactly `spec`'s.
+    fn exact_config(&self, spec: PbufferSpec) -> Option<egl::Config> {
+        if !self.configless {
+            return None;
+        }
+        let wanted = [
+            egl::SURFACE_TYPE,
+            egl::PBUFFER_BIT,
+            egl::RENDERABLE_TYPE,
+            egl::OPENGL_BIT,
+            egl::RED_SIZE,
+            8,
+            egl::GREEN_SIZE,
+            8,
+            egl::BLUE_SIZE,
+            8,
+            egl::ALPHA_SIZE,
+            spec.alpha_bits,
+            egl::DEPTH_SIZE,
+            spec.depth_bits,
+            egl::STENCIL_SIZE,
+            spec.stencil_bits,
+            egl::SAMPLES,
+            0,
+            egl::NONE,
+        ];
+        let mut configs = Vec::with_capacity(64);
+        self.egl
+            .choose_config(self.display, &wanted, &mut configs)
+            .ok()?;
+        let get = |c: egl::Config, a| self.egl.get_config_attrib(self.display, c, a).ok();
+        configs.into_iter().find(|&c| {
+            [
+                (egl::RED_SIZE, 8),
+                (egl::GREEN_SIZE, 8),
+                (egl::BLUE_SIZE, 8),
+                (egl::ALPHA_SIZE, spec.alpha_bits),
+                (egl::DEPTH_SIZE, spec.depth_bits),
+                (egl::STENCIL_SIZE, spec.stencil_bits),
+                (egl::SAMPLES, 0),
+            ]
+            .iter()
+            .all(|&(a, v)| get(c, a) == Some(v))
+        })
     }
 }
 
@@ -144,6 +273,9 @@ impl Drop for EglContext {
         // Errors here cannot be acted on; the display stays initialised for other contexts
         // of this process (eglTerminate would destroy them too).
         let _ = self.egl.make_current(self.display, None, None, None);
+        if let Some(surface) = self.pbuffer.take() {
+            let _ = self.egl.destroy_surface(self.display, surface);
+        }
         let _ = self.egl.destroy_context(self.display, self.context);
     }
 }

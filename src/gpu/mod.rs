@@ -36,7 +36,7 @@ use glow::HasContext;
 
 use crate::vocab::Named;
 
-pub use egl::EglPlatform;
+pub use egl::{EglPlatform, PbufferSpec};
 pub use error::GpuError;
 pub use info::{ContextInfo, DepthReport, ExtensionReport, Limits, SHADOW_EXTENSIONS};
 pub use osmesa::WindowBuffer;
@@ -274,6 +274,25 @@ impl GpuContext {
             Handle::OsMesa(c) => c.make_current(),
             #[cfg(feature = "window")]
             Handle::Window(c) => c.make_current(),
+        }
+    }
+
+    /// Makes this context current with a new pbuffer surface of `spec` (EGL only), so that
+    /// framebuffer 0 is a window-system framebuffer. Ok(false) when the backend or the
+    /// display has no such surface; the context is then as it was.
+    pub fn bind_window_surface(&self, spec: PbufferSpec) -> Result<bool, GpuError> {
+        match &self.handle {
+            Handle::Egl(c) => c.bind_pbuffer(spec),
+            _ => Ok(false),
+        }
+    }
+
+    /// Drops the surface [`bind_window_surface`](Self::bind_window_surface) made; the
+    /// context stays current without one.
+    pub fn release_window_surface(&self) -> Result<(), GpuError> {
+        match &self.handle {
+            Handle::Egl(c) => c.release_pbuffer(),
+            _ => Ok(()),
         }
     }
 

@@ -112,13 +112,21 @@ impl TargetSpec {
     }
 }
 
-/// A framebuffer object and its renderbuffers. Owned by the context that made it; call
+/// A framebuffer object and its renderbuffers, or a window-system surface's framebuffer 0
+/// ([`RenderTarget::surface`]). Owned by the context that made it; call
 /// [`RenderTarget::delete`] before dropping that context to free the GL objects early.
 #[derive(Debug)]
 pub struct RenderTarget {
     spec: TargetSpec,
-    framebuffer: glow::Framebuffer,
-    color: glow::Renderbuffer,
+    /// None: framebuffer 0, the surface the context is current with.
+    framebuffer: Option<glow::Framebuffer>,
+    /// The colour renderbuffer of a framebuffer object.
+    color: Option<glow::Renderbuffer>,
+    /// The colour buffer drawn and read: COLOR_ATTACHMENT0, or the surface's FRONT or BACK.
+    color_buffer: u32,
+    /// The byte order (RGBA or BGRA) the colour buffer stores 8-bit colour in: read in it,
+    /// glReadPixels is one copy.
+    byte_order: u32,
     /// None: the target has neither depth nor stencil buffer.
     depth: Option<glow::Renderbuffer>,
     depth_bits: u32,
@@ -186,8 +194,10 @@ impl RenderTarget {
             };
             let mut target = RenderTarget {
                 spec,
-                framebuffer,
-                color,
+                framebuffer: Some(framebuffer),
+                color: Some(color),
+                color_buffer: glow::COLOR_ATTACHMENT0,
+                byte_order: glow::RGBA,
                 depth,
                 depth_bits: 0,
                 stencil_bits: 0,
@@ -233,6 +243,56 @@ impl RenderTarget {
         Ok(target)
     }
 
+    /// Framebuffer 0 of the surface the context is current with (`GpuContext::
+    /// bind_window_surface`), `spec` its size and colour storage, as a target: bound, with
+    /// the viewport and the scissor box covering it. Its bits are the surface's.
+    pub fn surface(ctx: &GpuContext, spec: TargetSpec) -> Result<RenderTarget, GpuError> {
+        let gl = ctx.gl();
+        let target = unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+            // The buffer GL draws into by default is the surface's (a pbuffer has one, EGL
+            // 1.5 §3.5.2); reads come from it too (Mesa starts READ_BUFFER at FRONT).
+            let color_buffer = gl.get_parameter_i32(glow::DRAW_BUFFER) as u32;
+            gl.read_buffer(color_buffer);
+            let query = |attachment, pname| {
+                let kind = gl.get_framebuffer_attachment_parameter_i32(
+                    glow::FRAMEBUFFER,
+                    attachment,
+                    glow::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
+                );
+                match kind == glow::NONE as i32 {
+                    true => 0,
+                    false => gl
+                        .get_framebuffer_attachment_parameter_i32(
+                            glow::FRAMEBUFFER,
+                            attachment,
+                            pname,
+                        )
+                        .max(0) as u32,
+                }
+            };
+            // Mesa's 8-bit window-system buffers are ARGB8888, B8G8R8A8 in memory (its dri
+            // configs; GL_IMPLEMENTATION_COLOR_READ_FORMAT answers RGBA regardless): read
+            // as BGRA, a 256×256 buffer is one copy, 8× faster than as RGBA on llvmpipe.
+            let byte_order = glow::BGRA;
+            let target = RenderTarget {
+                spec,
+                framebuffer: None,
+                color: None,
+                color_buffer,
+                byte_order,
+                depth: None,
+                depth_bits: query(glow::DEPTH, glow::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE),
+                stencil_bits: query(glow::STENCIL, glow::FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE),
+            };
+            gl.viewport(0, 0, spec.width as i32, spec.height as i32);
+            gl.scissor(0, 0, spec.width as i32, spec.height as i32);
+            target
+        };
+        ctx.check_error("RenderTarget::surface")?;
+        Ok(target)
+    }
+
     pub fn spec(&self) -> TargetSpec {
         self.spec
     }
@@ -255,15 +315,27 @@ impl RenderTarget {
         self.stencil_bits
     }
 
-    pub fn framebuffer(&self) -> glow::Framebuffer {
+    /// The framebuffer object; None for a surface's framebuffer 0.
+    pub fn framebuffer(&self) -> Option<glow::Framebuffer> {
         self.framebuffer
+    }
+
+    /// The colour buffer drawn and read (COLOR_ATTACHMENT0, or a surface's FRONT or BACK).
+    pub fn color_buffer(&self) -> u32 {
+        self.color_buffer
+    }
+
+    /// GL_RGBA or GL_BGRA: the byte order of 8-bit colour in the buffer, in which a read of
+    /// it is one copy.
+    pub fn byte_order(&self) -> u32 {
+        self.byte_order
     }
 
     /// Binds the target for drawing and reading and sets the viewport to cover it.
     pub fn bind(&self, ctx: &GpuContext) {
         let gl = ctx.gl();
         unsafe {
-            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(self.framebuffer));
+            gl.bind_framebuffer(glow::FRAMEBUFFER, self.framebuffer);
             gl.viewport(0, 0, self.spec.width as i32, self.spec.height as i32);
         }
     }
@@ -273,8 +345,12 @@ impl RenderTarget {
         let gl = ctx.gl();
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-            gl.delete_framebuffer(self.framebuffer);
-            gl.delete_renderbuffer(self.color);
+            if let Some(framebuffer) = self.framebuffer {
+                gl.delete_framebuffer(framebuffer);
+            }
+            if let Some(color) = self.color {
+                gl.delete_renderbuffer(color);
+            }
             if let Some(depth) = self.depth {
                 gl.delete_renderbuffer(depth);
             }
@@ -454,9 +530,9 @@ impl RenderTarget {
     fn read(&self, ctx: &GpuContext, format: u32, ty: u32, out: &mut [u8]) -> Result<(), GpuError> {
         let gl = ctx.gl();
         unsafe {
-            gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.framebuffer));
+            gl.bind_framebuffer(glow::READ_FRAMEBUFFER, self.framebuffer);
             // The target reads its one colour buffer, whatever a program selected before.
-            gl.read_buffer(glow::COLOR_ATTACHMENT0);
+            gl.read_buffer(self.color_buffer);
             gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
             gl.read_pixels(
                 0,

@@ -311,7 +311,7 @@ impl WindowContext {
     ) -> Result<image::RgbaImage, GpuError> {
         self.make_current()?;
         let shown = self.blit_and_swap(gl, target.framebuffer(), target.width(), target.height());
-        unsafe { gl.bind_framebuffer(glow::FRAMEBUFFER, Some(target.framebuffer())) };
+        unsafe { gl.bind_framebuffer(glow::FRAMEBUFFER, target.framebuffer()) };
         shown
     }
 
@@ -320,14 +320,14 @@ impl WindowContext {
     fn blit_and_swap(
         &mut self,
         gl: &glow::Context,
-        source: glow::Framebuffer,
+        source: Option<glow::Framebuffer>,
         w: u32,
         h: u32,
     ) -> Result<image::RgbaImage, GpuError> {
         self.resize(w, h)?;
         self.make_current()?;
         unsafe {
-            gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(source));
+            gl.bind_framebuffer(glow::READ_FRAMEBUFFER, source);
             gl.bind_framebuffer(glow::DRAW_FRAMEBUFFER, None);
             gl.draw_buffer(glow::BACK);
             let (w, h) = (w as i32, h as i32);
@@ -443,7 +443,7 @@ impl WindowContext {
             );
             (texture, framebuffer)
         };
-        let shown = self.blit_and_swap(gl, framebuffer, w, h);
+        let shown = self.blit_and_swap(gl, Some(framebuffer), w, h);
         // SAFETY: as above.
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);

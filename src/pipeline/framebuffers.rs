@@ -95,6 +95,9 @@ pub fn uses_framebuffer(cmd: &Command) -> bool {
 pub struct FramebufferMirror {
     /// Set by the first framebuffer command: the GL framebuffer standing for name 0.
     window: Option<Option<glow::Framebuffer>>,
+    /// The window's one colour buffer: COLOR_ATTACHMENT0 of a framebuffer object, or the
+    /// buffer a surface's framebuffer 0 draws into (FRONT or BACK).
+    window_buffer: u32,
     objects: HashMap<u32, glow::Framebuffer>,
     renderbuffers: HashMap<u32, glow::Renderbuffer>,
     /// (draw framebuffer, read framebuffer, draw buffer, read buffer) as GL has them.
@@ -111,15 +114,18 @@ impl FramebufferMirror {
     pub fn new(core_formats: bool) -> Self {
         FramebufferMirror {
             core_formats,
+            window_buffer: glow::COLOR_ATTACHMENT0,
             ..Default::default()
         }
     }
 
-    /// The framebuffer that stands for the window from now on.
-    pub fn set_window(&mut self, window: Option<glow::Framebuffer>) {
+    /// The framebuffer that stands for the window from now on, and its colour buffer
+    /// (`RenderTarget::color_buffer`).
+    pub fn set_window(&mut self, window: Option<glow::Framebuffer>, color_buffer: u32) {
         if self.window.is_some() {
             self.window = Some(window);
         }
+        self.window_buffer = color_buffer;
         self.sent = None;
     }
 
@@ -190,9 +196,10 @@ impl FramebufferMirror {
             return Ok(());
         };
         let f = &state.framebuffers;
+        let window_buffer = self.window_buffer;
         let buffer = |name: u32, b: ColorBuffer| match (name, b) {
             (_, ColorBuffer::None) => glow::NONE,
-            (0, _) => glow::COLOR_ATTACHMENT0,
+            (0, _) => window_buffer,
             (_, ColorBuffer::Attachment(i)) => glow::COLOR_ATTACHMENT0 + u32::from(i),
             // The model allows nothing else on an FBO.
             _ => glow::NONE,
@@ -232,6 +239,10 @@ impl FramebufferMirror {
     fn activate(&mut self, gl: &glow::Context) {
         if self.window.is_none() {
             let bound = unsafe { gl.get_parameter_framebuffer(glow::DRAW_FRAMEBUFFER_BINDING) };
+            if bound.is_none() {
+                // A surface's framebuffer 0: the buffer it draws into now.
+                self.window_buffer = unsafe { gl.get_parameter_i32(glow::DRAW_BUFFER) } as u32;
+            }
             self.window = Some(bound);
         }
     }

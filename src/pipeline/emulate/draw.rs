@@ -107,7 +107,9 @@ enum Shape {
 /// per frame). `Reversed` gives llvmpipe (v1, v0, v2) and core GL the opposite front
 /// face: the same faces are front, culled and lit as either, the provoking vertex (the
 /// last) is the same, and the triangle llvmpipe bins is the one it would have made
-/// itself — the same pixels. Only clipping at the near or far plane (or a user plane)
+/// itself — the same pixels. A window-system buffer (GL's framebuffer 0, the C library's
+/// pbuffer) is stored top row first, as Mesa's OSMesa buffer: its triangles keep their
+/// corners (`Emulate::draw_geometry`). Only clipping at the near or far plane (or a user plane)
 /// starts its polygon at v1 instead of v0, which may move an interior edge of the clipped
 /// polygon's fan by rounding.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

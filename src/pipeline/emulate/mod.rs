@@ -78,6 +78,10 @@ pub struct Emulate {
     accum: Option<crate::ff::accum::AccumBuffer>,
     /// The generic attribute values last sent (`draw::SentAttribs`).
     sent: draw::SentAttribs,
+    /// The window is GL's framebuffer 0, a window-system buffer Mesa stores top row first
+    /// (a framebuffer object stores GL's bottom row first): triangles drawn into it keep
+    /// their corners (`draw::Winding`).
+    window_top_row_first: bool,
     /// A plan's own programs and the one in use (`user_program`).
     user: user_program::UserPrograms,
 }
@@ -98,7 +102,10 @@ impl EmulatedPipeline {
         }
         let core = Core::for_bound_target(ctx);
         let target = core.state.viewport;
+        let window_top_row_first =
+            unsafe { ctx.gl().get_parameter_i32(glow::DRAW_FRAMEBUFFER_BINDING) } == 0;
         let path = Emulate {
+            window_top_row_first,
             target,
             pixel_image: None,
             accum: None,
@@ -127,11 +134,17 @@ impl EmulatedPipeline {
         self.path.framebuffers.invalidate();
     }
 
-    /// The framebuffer that stands for the window (framebuffer 0) from now on: for a
-    /// caller that replaced its render target, bound now. RED_BITS … STENCIL_BITS follow
-    /// its buffers.
-    pub fn set_window_framebuffer(&mut self, ctx: &GpuContext, window: Option<glow::Framebuffer>) {
-        self.path.framebuffers.set_window(window);
+    /// The framebuffer that stands for the window (framebuffer 0) from now on, and its
+    /// colour buffer: for a caller that replaced its render target, bound now. RED_BITS …
+    /// STENCIL_BITS follow its buffers.
+    pub fn set_window_framebuffer(
+        &mut self,
+        ctx: &GpuContext,
+        window: Option<glow::Framebuffer>,
+        color_buffer: u32,
+    ) {
+        self.path.framebuffers.set_window(window, color_buffer);
+        self.path.window_top_row_first = window.is_none();
         self.core.state.framebuffers.window_bits =
             crate::pipeline::framebuffers::bound_bits(ctx.gl());
     }
@@ -316,7 +329,11 @@ impl Emulate {
         geometry: &Arc<Geometry>,
     ) -> Result<(), PipelineError> {
         let gpu = self.geometry.get(gl, geometry)?;
-        let winding = gpu.winding(pass, state);
+        let top_row_first = state.framebuffers.draw == 0 && self.window_top_row_first;
+        let winding = match top_row_first {
+            true => Winding::AsGiven,
+            false => gpu.winding(pass, state),
+        };
         self.raster.sync(gl, state, Some(pass), winding);
         gpu.draw(gl, &mut self.sent, state, winding);
         Ok(())
