@@ -1384,3 +1384,24 @@ fn lines_with_ends_on_pixel_centres_light_mesas_pixels() {
     };
     assert_images_match("line_ends", &ours, &mesa, exact);
 }
+
+/// `tests/c/array_enables.c`: glEnable/glDisable of VERTEX_ARRAY … SECONDARY_COLOR_ARRAY
+/// act as glEnableClientState/glDisableClientState without an error, as Mesa's
+/// compatibility context takes them (GL 1.5 names only the ClientState calls), in and out
+/// of display lists, restored by the client attribute stack and not by ENABLE_BIT; the
+/// triangle drawn from an array enabled so matches Mesa's image.
+#[test]
+fn client_array_tokens_in_gl_enable_act_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("array_enables");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "glEnable(0x8074)                         err 0x0",
+            "glDrawArrays from the enabled array      err 0x0",
+            "COLOR_ARRAY after glCallList             1  err 0x0",
+            "glEnable(NORMAL_ARRAY) in glBegin        err 0x502",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 30, "a client array's enable");
+    assert_images_match("array_enables", &ours, &mesa, within_3_on_99_percent(&mesa));
+}

@@ -459,6 +459,23 @@ pub enum ClientEffect {
 }
 
 impl ClientArrays {
+    /// The enable of the array `cap` names (VERTEX_ARRAY … FOG_COORD_ARRAY; the texture
+    /// coordinates of the client active unit), None for another token.
+    pub fn enable_of(&mut self, cap: u32) -> Option<&mut bool> {
+        use super::glenum::registry as r;
+        Some(match cap {
+            r::VERTEX_ARRAY => &mut self.vertex.enabled,
+            r::NORMAL_ARRAY => &mut self.normal.enabled,
+            r::COLOR_ARRAY => &mut self.color.enabled,
+            r::TEXTURE_COORD_ARRAY => &mut self.texcoord[usize::from(self.client_active)].enabled,
+            r::EDGE_FLAG_ARRAY => &mut self.edge_flag.enabled,
+            r::SECONDARY_COLOR_ARRAY => &mut self.secondary_color.enabled,
+            r::FOG_COORD_ARRAY => &mut self.fog_coord.enabled,
+            r::INDEX_ARRAY => &mut self.index.enabled,
+            _ => return None,
+        })
+    }
+
     /// Whether `entry` is one of the client-array calls.
     pub fn handles(entry: Entry) -> bool {
         matches!(
@@ -627,17 +644,9 @@ impl ClientArrays {
                         "GL_FOG_COORD_ARRAY",
                     ],
                 )?;
-                match array {
-                    "GL_VERTEX_ARRAY" => self.vertex.enabled = on,
-                    "GL_NORMAL_ARRAY" => self.normal.enabled = on,
-                    "GL_COLOR_ARRAY" => self.color.enabled = on,
-                    "GL_TEXTURE_COORD_ARRAY" => {
-                        self.texcoord[usize::from(self.client_active)].enabled = on
-                    }
-                    "GL_EDGE_FLAG_ARRAY" => self.edge_flag.enabled = on,
-                    "GL_SECONDARY_COLOR_ARRAY" => self.secondary_color.enabled = on,
-                    "GL_FOG_COORD_ARRAY" => self.fog_coord.enabled = on,
-                    _ => self.index.enabled = on,
+                let cap = super::glenum::value_of(array);
+                if let Some(enabled) = cap.and_then(|cap| self.enable_of(cap)) {
+                    *enabled = on;
                 }
             }
             Entry::DrawArrays => {

@@ -101,6 +101,9 @@ impl Client {
         out: &mut Vec<Command>,
     ) -> Result<Reply, A::Error> {
         let entry = c.entry();
+        if let Some(reply) = self.array_enable(c)? {
+            return Ok(reply);
+        }
         if super::front_state::handles(entry) {
             return self.front_state_call(c, state, out);
         }
@@ -137,7 +140,17 @@ impl Client {
         }
         match entry {
             Entry::CallList => {
-                let item = Item::Call(c.u32(0)?);
+                let list = c.u32(0)?;
+                // GL 1.5 §5.4 ignores a name without a list; Mesa's glCallList refuses name
+                // 0 with INVALID_VALUE (a list that calls list 0 runs on, as there).
+                if list == 0 {
+                    out.push(Command::Raise {
+                        error: GlErrorKind::InvalidValue,
+                        call: Entry::CallList,
+                    });
+                    return Ok(Reply::None);
+                }
+                let item = Item::Call(list);
                 self.run(&[item], 0, Start::of(state), out);
                 return Ok(Reply::None);
             }
@@ -220,6 +233,37 @@ impl Client {
                 .map_err(|rule| c.immediate(rule))?,
         }
         Ok(Reply::None)
+    }
+
+    /// glEnable/glDisable of a client array (VERTEX_ARRAY … FOG_COORD_ARRAY): Mesa's
+    /// compatibility context takes them as glEnableClientState/glDisableClientState — no
+    /// error, though GL 1.5 §2.8 names only those calls —, compiled into a list as any
+    /// glEnable (run as the list runs), INVALID_OPERATION inside glBegin/glEnd. None for
+    /// any other call or token.
+    fn array_enable<A: Args>(&mut self, c: &A) -> Result<Option<Reply>, A::Error> {
+        let on = match c.entry() {
+            Entry::Enable => true,
+            Entry::Disable => false,
+            _ => return Ok(None),
+        };
+        let Ok(cap) = c.token(0) else {
+            return Ok(None);
+        };
+        if self.arrays.enable_of(cap).is_none() {
+            return Ok(None);
+        }
+        if let Some(mode) = self.lists.compiling() {
+            self.lists.record(Item::ArrayEnable { cap, on });
+            if mode == ListMode::Compile {
+                return Ok(Some(Reply::None));
+            }
+        } else if self.immediate.is_open() {
+            return Err(c.immediate("glEnable or glDisable inside glBegin/glEnd"));
+        }
+        if let Some(enabled) = self.arrays.enable_of(cap) {
+            *enabled = on;
+        }
+        Ok(Some(Reply::None))
     }
 
     /// A buffer-object call: run at once, never compiled (GL 1.5 §5.4), and not allowed
@@ -379,6 +423,11 @@ impl Client {
                     }
                 }
                 Item::Base(b) => self.lists.base = *b,
+                Item::ArrayEnable { cap, on } => {
+                    if let Some(enabled) = self.arrays.enable_of(*cap) {
+                        *enabled = *on;
+                    }
+                }
                 Item::Pair(pair) => {
                     if self.immediate.is_open() {
                         self.run(&pair.items, depth, start, out);

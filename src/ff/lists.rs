@@ -36,6 +36,11 @@ pub enum Item {
     Base(u32),
     /// A glBegin … glEnd assembled at glEndList (`list_pairs`).
     Pair(Box<Pair>),
+    /// glEnable/glDisable of a client array's token (`Client::array_enable`).
+    ArrayEnable {
+        cap: u32,
+        on: bool,
+    },
 }
 
 /// GL_COMPILE or GL_COMPILE_AND_EXECUTE.

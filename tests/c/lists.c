@@ -1,7 +1,7 @@
 /* Display lists: compiled and compiled-and-executed lists, nesting, glCallLists with a
  * list base, vertex arrays read at compile time, a list that raises an error when it
- * runs, glGenLists/glIsList/glDeleteLists. Prints what glGetError and glIsList give
- * after each step and writes the image.
+ * runs, glGenLists/glIsList/glDeleteLists, glCallList(0) (INVALID_VALUE on Mesa). Prints
+ * what glGetError and glIsList give after each step and writes the image.
  *
  * usage: lists OUT.ppm */
 #include <GL/osmesa.h>
@@ -92,6 +92,8 @@ int main(int argc, char **argv) {
   printf("after delete: glIsList %d %d %d\n", glIsList(base), glIsList(base + 1), glIsList(base + 3));
   glCallList(base + 1);
   report("calling a deleted list");
+  glCallList(0);
+  report("glCallList(0)");
 
   glNewList(0, GL_COMPILE);
   report("glNewList(0)");
