@@ -1405,3 +1405,16 @@ fn client_array_tokens_in_gl_enable_act_as_on_mesa() {
     assert_same_text(&mesa_text, &ours_text, 30, "a client array's enable");
     assert_images_match("array_enables", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+/// `tests/c/clear_depth.c`: glClearDepth keeps its double, as Mesa does: the cleared depth
+/// (0.3 clears a 24-bit buffer to 0x4CCCCC, not the 0x4CCCCD of 0.3 as a float) and
+/// DEPTH_CLEAR_VALUE through every getter, printed as Mesa prints them, bit for bit.
+#[test]
+fn clear_depth_is_kept_as_a_double_as_on_mesa() {
+    let (mesa, ours) = texts("clear_depth");
+    assert_mesa_printed(
+        &mesa,
+        &["glClearDepth(0.29999999999999999)  cleared 0x4ccccc4c  double 0.29999999999999999  float 0.300000012  int 644245094  err 0x0"],
+    );
+    assert_same_text(&mesa, &ours, 8, "a cleared depth or its query");
+}

@@ -309,7 +309,9 @@ impl FixedState {
             // clamped (the drivers clamp), a float one (an OSMesa GL_FLOAT buffer) to the
             // colour itself; glGet answers it clamped (measured, tests/c/buffer_types.c).
             Command::ClearColor(c) => self.clear.color = *c,
-            Command::ClearDepth(d) => self.clear.depth = unit_clamp(*d),
+            Command::ClearDepth(d) => {
+                self.clear.depth = if d.is_nan() { 0.0 } else { d.clamp(0.0, 1.0) }
+            }
             Command::ClearStencil(s) => self.clear.stencil = *s,
             // Clamped to [−1, 1] (§4.2.3); NaN → −1 as Mesa's CLAMP gives (measured: 2, −3
             // read back as 1, −1).

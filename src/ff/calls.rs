@@ -179,7 +179,7 @@ pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Erro
         Entry::PointSize => n(1).and(c.f32(0)).map(Command::PointSize)?,
         Entry::Clear => n(1).and(clear_mask(c)).map(Command::Clear)?,
         Entry::ClearColor => n(4).and(c.vec4_args(0)).map(Command::ClearColor)?,
-        Entry::ClearDepth => n(1).and(c.f32(0)).map(Command::ClearDepth)?,
+        Entry::ClearDepth => n(1).and(c.f64(0)).map(Command::ClearDepth)?,
         Entry::ClearStencil => n(1).and(c.i32(0)).map(Command::ClearStencil)?,
         Entry::ClearIndex => n(1).and(c.f32(0)).map(Command::ClearIndex)?,
         Entry::IndexMask => n(1).and(c.u32(0)).map(Command::IndexMask)?,

@@ -496,7 +496,7 @@ pub enum Command {
     // Framebuffer.
     Clear(ClearMask),
     ClearColor(Vec4),
-    ClearDepth(f32),
+    ClearDepth(f64),
     ClearStencil(i32),
     ReadPixels(ReadPixels),
     /// glClearAccum: clamped to [−1, 1] (GL 1.5 §4.2.3).

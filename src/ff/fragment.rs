@@ -445,7 +445,9 @@ impl ClearMask {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ClearValues {
     pub color: Vec4,
-    pub depth: f32,
+    /// A double, as glClearDepth takes it and Mesa keeps it: 0.3 clears a 24-bit buffer
+    /// to ⌊0.3·(2²⁴−1) + ½⌋ = 0x4CCCCC, where 0.3 rounded to a float first gives 0x4CCCCD.
+    pub depth: f64,
     pub stencil: i32,
     pub accum: Vec4,
 }

@@ -25,9 +25,10 @@
 //! Other Mesa behaviour the answers follow (each pinned in `tests/query_native.rs`):
 //! TRANSPOSE_TEXTURE_MATRIX is unit 0's whatever the active unit; the stencil masks are
 //! unsigned and start as 0xFF; an unspecified texture level reports internal format RGBA.
-//! Where the model stores less than Mesa the answers differ, by design: DEPTH_RANGE and
-//! DEPTH_CLEAR_VALUE are f32 here and doubles in Mesa (glGetIntegerv scales the double, so
-//! values not exact in f32 can differ in the last bits); TEXTURE_INTERNAL_FORMAT is the
+//! Where the model stores less than Mesa the answers differ, by design: DEPTH_RANGE is f32
+//! here and doubles in Mesa (glGetIntegerv scales the double, so values not exact in f32
+//! can differ in the last bits; DEPTH_CLEAR_VALUE is a double here too, as it decides the
+//! cleared depth's last bit); TEXTURE_INTERNAL_FORMAT is the
 //! sized format the model keeps (Mesa returns an unsized name as given).
 //!
 //! Not answered yet (INVALID_ENUM), because the model does not hold the state: fog,
@@ -85,6 +86,9 @@ pub enum QueryValue {
     Normalized(f32),
     /// A float that Mesa's `…iv` getter casts to GLint, truncating.
     Truncated(f32),
+    /// A value GL keeps as a double (DEPTH_CLEAR_VALUE, Mesa's TYPE_DOUBLEN): as an
+    /// integer by `FLOAT_TO_INT` of the double, as a float rounded once.
+    NormalizedDouble(f64),
 }
 
 /// A query's values in the order GL writes them.
@@ -99,6 +103,7 @@ impl QueryValue {
             QueryValue::UInt(u) | QueryValue::Enum(u) => u != 0,
             // C truth: NaN is TRUE.
             QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => f != 0.0,
+            QueryValue::NormalizedDouble(d) => d != 0.0,
         }
     }
 
@@ -111,6 +116,7 @@ impl QueryValue {
             QueryValue::Enum(e) => e as i32,
             QueryValue::Float(f) => round_to_int(f),
             QueryValue::Normalized(f) => normalized_to_int(f64::from(f)),
+            QueryValue::NormalizedDouble(d) => normalized_to_int(d),
             QueryValue::Truncated(f) => c_int(f64::from(f)),
         }
     }
@@ -122,6 +128,7 @@ impl QueryValue {
             QueryValue::Int(i) => i as f32,
             QueryValue::UInt(u) | QueryValue::Enum(u) => u as f32,
             QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => f,
+            QueryValue::NormalizedDouble(d) => d as f32,
         }
     }
 
@@ -134,6 +141,7 @@ impl QueryValue {
             QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => {
                 f64::from(f)
             }
+            QueryValue::NormalizedDouble(d) => d,
         }
     }
 }
@@ -345,7 +353,7 @@ pnames! {
         [m.r, m.g, m.b, m.a].into_iter().map(QueryValue::Bool).collect()
     },
     COLOR_CLEAR_VALUE => |s| normalized(&s.clear.color.clamp(Vec4::ZERO, Vec4::ONE).to_array()),
-    DEPTH_CLEAR_VALUE => |s| normalized(&[s.clear.depth]),
+    DEPTH_CLEAR_VALUE => |s| vec![QueryValue::NormalizedDouble(s.clear.depth)],
     STENCIL_CLEAR_VALUE => |s| int(s.clear.stencil),
 
     // Rasterisation (Tables 6.11–6.14).

@@ -1065,6 +1065,7 @@ fn value(v: QueryValue, pname: u32) -> String {
         QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => {
             number(f64::from(f))
         }
+        QueryValue::NormalizedDouble(d) => number(d),
     }
 }
 

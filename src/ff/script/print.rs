@@ -57,6 +57,17 @@ pub(super) fn f(v: f32) -> String {
     }
 }
 
+/// A GLdouble argument, every digit kept (Rust's shortest round-trip form).
+fn double(v: f64) -> String {
+    if v.is_nan() {
+        "NAN".into()
+    } else if v.is_infinite() {
+        if v > 0.0 { "INFINITY" } else { "-INFINITY" }.into()
+    } else {
+        format!("{v:?}")
+    }
+}
+
 pub(super) fn fs(vs: &[f32]) -> String {
     vs.iter().map(|v| f(*v)).collect::<Vec<_>>().join(", ")
 }
@@ -519,7 +530,7 @@ fn call(c: &Command) -> String {
         ),
         Command::Clear(m) => format!("{}({})", Entry::Clear, clear_mask(*m)),
         Command::ClearColor(c) => format!("{}({})", Entry::ClearColor, fs(&c.to_array())),
-        Command::ClearDepth(d) => format!("{}({})", Entry::ClearDepth, f(*d)),
+        Command::ClearDepth(d) => format!("{}({})", Entry::ClearDepth, double(*d)),
         Command::ClearStencil(s) => format!("{}({s})", Entry::ClearStencil),
         Command::ClearAccum(c) => format!("{}({})", Entry::ClearAccum, fs(&c.to_array())),
         Command::Accum { op, value } => format!("{}({}, {})", Entry::Accum, n(*op), f(*value)),

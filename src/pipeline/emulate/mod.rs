@@ -349,7 +349,7 @@ impl Emulate {
                 bits |= glow::COLOR_BUFFER_BIT;
             }
             if mask.depth {
-                gl.clear_depth_f64(f64::from(c.depth));
+                gl.clear_depth_f64(c.depth);
                 bits |= glow::DEPTH_BUFFER_BIT;
             }
             if mask.stencil {

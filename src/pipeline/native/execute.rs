@@ -220,7 +220,7 @@ impl Native {
             Command::Scissor(b) => unsafe { g.Scissor(b.x, b.y, b.width, b.height) },
             Command::Clear(mask) => unsafe { g.Clear(clear_bits(*mask)) },
             Command::ClearColor(c) => unsafe { g.ClearColor(c.x, c.y, c.z, c.w) },
-            Command::ClearDepth(d) => unsafe { g.ClearDepth((*d).into()) },
+            Command::ClearDepth(d) => unsafe { g.ClearDepth(*d) },
             Command::ClearStencil(s) => unsafe { g.ClearStencil(*s) },
             Command::ClearAccum(c) => unsafe { g.ClearAccum(c.x, c.y, c.z, c.w) },
             Command::Accum { op, value } => unsafe { g.Accum(conv::value(*op), *value) },
