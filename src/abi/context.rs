@@ -1,6 +1,8 @@
 //! One OSMesa context: an EGL surfaceless core 3.3 context running the emulated pipeline,
-//! a render target the size of the caller's buffer, and the client state of the C front
-//! end (immediate mode, pixel storage, the error flag of calls the model never sees).
+//! a render target the size of the caller's buffer (an EGL pbuffer, a window-system buffer
+//! as Mesa's OSMesa buffer is, where a config has its buffers; a framebuffer object
+//! otherwise), and the client state of the C front end (immediate mode, pixel storage, the
+//! error flag of calls the model never sees).
 //!
 //! The image reaches the caller's buffer as Mesa's OSMesa puts it there: on glFinish and
 //! glFlush, and when another buffer is made current. The buffer is written in its own

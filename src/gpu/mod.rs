@@ -3,7 +3,8 @@
 //! Three backends, one `GpuContext`:
 //! - `Backend::Egl` (the default): Mesa's `EGL_MESA_platform_surfaceless`, loaded at run time
 //!   through khronos-egl; when that platform is missing, the `EGL_EXT_platform_device`
-//!   platform. No window system, no surface: rendering goes to framebuffer objects.
+//!   platform. No window system: rendering goes to framebuffer objects, or into a pbuffer
+//!   surface the C library binds (`GpuContext::bind_window_surface`).
 //! - `Backend::OsMesa`: `libOSMesa.so.8` through libloading (`OSMesaCreateContextAttribs`).
 //!   The context gets a 1×1 client buffer it never draws to; rendering goes to FBOs, so the
 //!   same frame reads back identically on both headless backends. The exception: a
