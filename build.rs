@@ -33,7 +33,33 @@ const MODEL_EXTENSIONS: &[&str] = &[
     "GL_EXT_fog_coord",
     "GL_EXT_texture_compression_s3tc",
     "GL_EXT_compiled_vertex_array",
+    "GL_ARB_shadow_ambient",
 ];
+
+/// GL 1.0 tokens whose names start with a digit. gl_generator names them `_2_BYTES` and
+/// then looks for `GL__2_BYTES` among the features' names, so it drops them; their values
+/// are read from the same registry file here.
+const DIGIT_NAMED: &[&str] = &[
+    "GL_2_BYTES",
+    "GL_3_BYTES",
+    "GL_4_BYTES",
+    "GL_2D",
+    "GL_3D",
+    "GL_3D_COLOR",
+    "GL_3D_COLOR_TEXTURE",
+    "GL_4D_COLOR_TEXTURE",
+];
+
+/// The value the registry gives the enum `name`: its `<enum value="0x…" name="…"/>`
+/// definition (the group lists and feature lists name it without a value).
+fn registry_value(xml: &str, name: &str) -> Option<u32> {
+    let key = format!("name=\"{name}\"");
+    xml.match_indices(&key).find_map(|(at, _)| {
+        let tag = &xml[xml[..at].rfind('<')?..at];
+        let value = tag.strip_prefix("<enum")?.split("value=\"").nth(1)?;
+        u32::from_str_radix(value.split('"').next()?.strip_prefix("0x")?, 16).ok()
+    })
+}
 
 fn main() {
     let out = env::var("OUT_DIR").expect("cargo sets OUT_DIR for build scripts");
@@ -68,6 +94,11 @@ fn main() {
             let _ = writeln!(enums, "pub const {}: u32 = {v:#x};", e.ident);
             names.push((format!("GL_{}", e.ident), v));
         }
+    }
+    let xml = String::from_utf8_lossy(khronos_api::GL_XML);
+    for name in DIGIT_NAMED {
+        let v = registry_value(&xml, name).expect("the registry names every GL 1.0 token");
+        names.push((name.to_string(), v));
     }
     // Every token by name, sorted for a binary search (`ff::glenum::value_of`).
     names.sort();

@@ -838,6 +838,18 @@ gl_enums!(RenderbufferFormat {
 mod tests {
     use super::*;
 
+    /// The GL 1.0 tokens named with a leading digit (glCallLists' GL_2_BYTES …) and the
+    /// ARB_shadow_ambient token are in the table, with the registry's values.
+    #[test]
+    fn digit_named_and_shadow_ambient_tokens_are_known() {
+        assert_eq!(value_of("GL_2_BYTES"), Some(0x1407));
+        assert_eq!(value_of("GL_3_BYTES"), Some(0x1408));
+        assert_eq!(value_of("GL_4_BYTES"), Some(0x1409));
+        assert_eq!(value_of("GL_3D_COLOR_TEXTURE"), Some(0x0603));
+        assert_eq!(value_of("GL_TEXTURE_COMPARE_FAIL_VALUE_ARB"), Some(0x80BF));
+        assert!(names_of(0x1407).any(|n| n == "GL_2_BYTES"));
+    }
+
     /// Every name's value leads back to the name, aliases included, and a pname search
     /// finds the first listed name the token has.
     #[test]

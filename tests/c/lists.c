@@ -88,6 +88,16 @@ int main(int argc, char **argv) {
   glCallList(base);
   report("a square after the error");
 
+  /* Names as 2, 3 and 4 big-endian bytes (GL 1.5 §5.4), from the base set above. */
+  const GLubyte names2[] = {0, 1}, names3[] = {0, 0, 3}, names4[] = {0, 0, 0, 1};
+  glCallLists(1, GL_2_BYTES, names2);
+  report("glCallLists GL_2_BYTES");
+  glCallLists(1, GL_3_BYTES, names3);
+  report("glCallLists GL_3_BYTES");
+  glCallLists(1, GL_4_BYTES, names4);
+  report("glCallLists GL_4_BYTES");
+  glListBase(0);
+
   glDeleteLists(base + 1, 2);
   printf("after delete: glIsList %d %d %d\n", glIsList(base), glIsList(base + 1), glIsList(base + 3));
   glCallList(base + 1);
