@@ -190,3 +190,19 @@ fn proxy_images_answer_whether_they_fit() {
         ],
     );
 }
+
+/// `tests/c/target_fallback.c`: with several texture targets enabled on a unit, the one
+/// sampled is the highest-priority enabled target whose texture is complete, as Mesa draws
+/// it (`FixedState::sampled_texture`; GL 1.5 §3.8.15 would turn the unit off when the
+/// highest enabled target is incomplete), and the unit is off when none is.
+#[test]
+fn an_incomplete_higher_target_falls_back_to_a_complete_lower_one() {
+    assert_as_on_mesa(
+        "target_fallback",
+        &[
+            "2D, an empty cube map enabled              0 255   0  err 0x0",
+            "2D incomplete over a complete 1D         255   0   0  err 0x0",
+            "2D and 1D incomplete: the unit off         0   0 255  err 0x0",
+        ],
+    );
+}

@@ -145,6 +145,18 @@ impl TextureUnit {
         }
     }
 
+    /// The enabled targets, highest priority first (cube map, 3D, 2D, 1D).
+    pub fn enabled_targets(&self) -> impl Iterator<Item = TextureTarget> + '_ {
+        [
+            (self.texture_cube_map, TextureTarget::CubeMap),
+            (self.texture_3d, TextureTarget::Texture3D),
+            (self.texture_2d, TextureTarget::Texture2D),
+            (self.texture_1d, TextureTarget::Texture1D),
+        ]
+        .into_iter()
+        .filter_map(|(on, target)| on.then_some(target))
+    }
+
     /// The name bound to `target` (a cube face's: the cube map's).
     pub fn bound(&self, target: TextureTarget) -> u32 {
         match target {
@@ -482,9 +494,21 @@ impl FixedState {
 
     /// The texture a unit samples when drawing: its enabled target's bound object.
     pub fn enabled_texture(&self, unit: usize) -> Option<&TextureObject> {
+        self.sampled_texture(unit).map(|(_, t)| t)
+    }
+
+    /// The target a unit samples and its texture: of the enabled targets, in the order
+    /// cube map, 3D, 2D, 1D, the first whose bound texture is complete — Mesa's rule
+    /// (`_mesa_update_texture_unit_state`, measured: a stray glEnable(TEXTURE_CUBE_MAP)
+    /// over a complete 2D texture leaves the 2D texture drawn). GL 1.5 §3.8.15 takes the
+    /// highest enabled target alone and turns the unit off when it is incomplete. None: no
+    /// enabled target has a complete texture, the unit is off.
+    pub fn sampled_texture(&self, unit: usize) -> Option<(TextureTarget, &TextureObject)> {
         let u = self.units.get(unit)?;
-        let target = u.enabled_target()?;
-        self.texture(target, u.bound(target))
+        u.enabled_targets().find_map(|target| {
+            let texture = self.texture(target, u.bound(target))?;
+            texture.is_complete().then_some((target, texture))
+        })
     }
 
     /// The stack matrix commands act on (the texture stack of the active unit for TEXTURE).

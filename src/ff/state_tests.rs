@@ -337,7 +337,11 @@ fn texture_table() {
         }),
         Command::Enable(Capability::Texture2D),
     ]);
-    let t = s.enabled_texture(0).unwrap();
+    // The default MIN_FILTER wants mipmaps: incomplete, so the unit samples nothing.
+    assert!(s.enabled_texture(0).is_none());
+    let t = s
+        .texture(TextureTarget::Texture2D, s.units[0].bound(TextureTarget::Texture2D))
+        .unwrap();
     assert_eq!(t.params.compare_mode, CompareMode::CompareRToTexture);
     let data = t.level(0).unwrap().data.as_ref().unwrap();
     assert_eq!(&data.bytes[12..16], &[9, 9, 9, 9]);

@@ -418,16 +418,16 @@ impl ShaderKey {
     }
 }
 
-/// Units that texture: enabled, with a complete texture (GL 1.5 §3.8.10, the rules in
-/// `TextureObject::completeness`). An incomplete texture disables its unit (§3.8.15): the
-/// unit leaves the key, so the program is the one with the unit off — what Mesa's native
-/// path does (measured: level 0 alone under the default NEAREST_MIPMAP_LINEAR draws the
-/// untextured colour, `tests/fidelity_completeness.rs`).
+/// Units that texture: an enabled target with a complete texture (GL 1.5 §3.8.10, the
+/// rules in `TextureObject::completeness`), the highest such (`FixedState::
+/// sampled_texture`, Mesa's fallback past an incomplete higher target). Without one the
+/// unit is off (§3.8.15): it leaves the key, so the program is the one with the unit off —
+/// what Mesa's native path does (measured: level 0 alone under the default
+/// NEAREST_MIPMAP_LINEAR draws the untextured colour, `tests/fidelity_completeness.rs`).
 fn enabled_units(state: &FixedState) -> Vec<(usize, TextureTarget, TexelKey, Option<ClampKey>)> {
     (0..MAX_TEXTURE_UNITS)
         .filter_map(|unit| {
-            let target = state.units[unit].enabled_target()?;
-            let texture = state.enabled_texture(unit)?;
+            let (target, texture) = state.sampled_texture(unit)?;
             let format = texture.completeness().ok()?;
             // ARB_shadow compares r with a 1D or 2D depth texel; a depth cube map is read
             // for its depth (a compare there is outside GL 1.x and not modelled).
