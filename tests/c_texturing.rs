@@ -206,3 +206,15 @@ fn an_incomplete_higher_target_falls_back_to_a_complete_lower_one() {
         ],
     );
 }
+
+/// `tests/c/nan_texcoords.c`: a NaN or infinite texture coordinate at one vertex loses
+/// only itself, as on Mesa: an identity texture matrix is left out of the vertex program
+/// (`VertexUnitKey::matrix`), so 0·NaN does not spread to the other coordinates; a
+/// translated texture matrix still applies.
+#[test]
+fn a_non_finite_texture_coordinate_spoils_only_itself() {
+    assert_as_on_mesa(
+        "nan_texcoords",
+        &["s = NaN                         0 255   0    0 255   0  128 127   0  err 0x0"],
+    );
+}

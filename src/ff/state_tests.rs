@@ -340,7 +340,10 @@ fn texture_table() {
     // The default MIN_FILTER wants mipmaps: incomplete, so the unit samples nothing.
     assert!(s.enabled_texture(0).is_none());
     let t = s
-        .texture(TextureTarget::Texture2D, s.units[0].bound(TextureTarget::Texture2D))
+        .texture(
+            TextureTarget::Texture2D,
+            s.units[0].bound(TextureTarget::Texture2D),
+        )
         .unwrap();
     assert_eq!(t.params.compare_mode, CompareMode::CompareRToTexture);
     let data = t.level(0).unwrap().data.as_ref().unwrap();

@@ -63,6 +63,10 @@ pub enum CoordSource {
 pub struct VertexUnitKey {
     pub unit: u8,
     pub coords: [CoordSource; 4],
+    /// The unit's texture matrix is not the identity: the coordinates go through it. An
+    /// identity matrix is left out, as Mesa's program leaves it out — also so that a NaN
+    /// in one coordinate does not spread to the others through 0·NaN.
+    pub matrix: bool,
 }
 
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -338,6 +342,7 @@ impl ShaderKey {
                     }
                     _ => CoordSource::Attribute,
                 }),
+                matrix: state.texture_matrices[unit].top() != glam::Mat4::IDENTITY,
             })
             .collect();
         // The eye-space normal exists only for lighting, SPHERE_MAP, REFLECTION_MAP and

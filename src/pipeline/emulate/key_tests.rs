@@ -302,10 +302,19 @@ fn same_code() -> Vec<Case> {
                     near: 1.0,
                     far: 10.0,
                 }),
-                Command::MatrixMode(MatrixMode::Texture),
-                Command::Scale(Vec3::splat(0.5)),
                 Command::MatrixMode(MatrixMode::Modelview),
             ],
+        ),
+        same(
+            "one texture matrix for another, neither the identity",
+            plus(
+                eye_linear(),
+                vec![
+                    Command::MatrixMode(MatrixMode::Texture),
+                    Command::Scale(Vec3::splat(0.5)),
+                ],
+            ),
+            vec![Command::Translate(Vec3::new(0.25, 0.0, 0.0))],
         ),
         same(
             "a positional light's position, colours and attenuation",
@@ -733,6 +742,14 @@ fn changed_code() -> Vec<Case> {
     let none = Vec::new;
     vec![
         changes("enabling a unit with an image", none(), textured()),
+        changes(
+            "a texture matrix other than the identity (the identity is left out)",
+            textured(),
+            vec![
+                Command::MatrixMode(MatrixMode::Texture),
+                Command::Scale(Vec3::splat(0.5)),
+            ],
+        ),
         changes(
             "ALPHA_SCALE under DOT3_RGBA (it scales the dot product in alpha)",
             combine_rgb(CombineFunc::Dot3Rgba),

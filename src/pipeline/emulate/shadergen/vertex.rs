@@ -560,7 +560,8 @@ fn emit_light(
     }
 }
 
-/// Each coordinate from its source, then the texture matrix: tc = T·(s, t, r, q).
+/// Each coordinate from its source, then the texture matrix: tc = T·(s, t, r, q) (no
+/// product when T is the identity, `VertexUnitKey::matrix`).
 fn emit_texcoords(w: &mut GlslWriter, eye: &mut EyeTerms, key: &VertexKey, unit: &VertexUnitKey) {
     let u = unit.unit;
     let attribute = format!("a_texcoord{u}");
@@ -619,8 +620,14 @@ fn emit_texcoords(w: &mut GlslWriter, eye: &mut EyeTerms, key: &VertexKey, unit:
             }
         });
     }
-    let m = w.uniform(UniformSource::TextureMatrix(u));
-    w.line(format!("v_tc{u} = {m} * vec4({});", parts.join(", ")));
+    let coords = format!("vec4({})", parts.join(", "));
+    match unit.matrix {
+        true => {
+            let m = w.uniform(UniformSource::TextureMatrix(u));
+            w.line(format!("v_tc{u} = {m} * {coords};"));
+        }
+        false => w.line(format!("v_tc{u} = {coords};")),
+    }
 }
 
 #[cfg(test)]
