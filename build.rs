@@ -50,6 +50,25 @@ const DIGIT_NAMED: &[&str] = &[
     "GL_4D_COLOR_TEXTURE",
 ];
 
+/// The commands the registry marks as aliases of another (`<alias name="…"/>` in a
+/// `<command>`: the same call under an extension's name, glBlendEquationEXT for
+/// glBlendEquation), as (alias, command) pairs sorted by alias.
+fn command_aliases(xml: &str) -> Vec<(String, String)> {
+    let mut pairs: Vec<(String, String)> = xml
+        .split("<command>")
+        .skip(1)
+        .filter_map(|block| {
+            let block = block.split("</command>").next()?;
+            let name = block.split("<name>").nth(1)?.split("</name>").next()?;
+            let alias = block.split("<alias name=\"").nth(1)?.split('"').next()?;
+            Some((name.to_string(), alias.to_string()))
+        })
+        .collect();
+    pairs.sort();
+    pairs.dedup();
+    pairs
+}
+
 /// The value the registry gives the enum `name`: its `<enum value="0x…" name="…"/>`
 /// definition (the group lists and feature lists name it without a value).
 fn registry_value(xml: &str, name: &str) -> Option<u32> {
@@ -114,6 +133,12 @@ fn main() {
     enums.push_str("pub const BY_VALUE: &[(u32, &str)] = &[\n");
     for (n, v) in by_value {
         let _ = writeln!(enums, "    ({v:#x}, \"{n}\"),");
+    }
+    enums.push_str("];\n");
+    // Commands under other names (`ff::glenum::registry_alias`).
+    enums.push_str("pub const COMMAND_ALIASES: &[(&str, &str)] = &[\n");
+    for (alias, command) in command_aliases(&xml) {
+        let _ = writeln!(enums, "    (\"{alias}\", \"{command}\"),");
     }
     enums.push_str("];\n");
     fs::write(Path::new(&out).join("gl_enums.rs"), enums).expect("OUT_DIR is writable");

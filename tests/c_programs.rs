@@ -1418,3 +1418,19 @@ fn clear_depth_is_kept_as_a_double_as_on_mesa() {
     );
     assert_same_text(&mesa, &ours, 8, "a cleared depth or its query");
 }
+
+/// `tests/c/proc_aliases.c`: OSMesaGetProcAddress finds the extension names the registry
+/// makes aliases of GL 1.x calls (glBlendEquationEXT, glActiveTextureARB …), as Mesa's
+/// does, and calling through them is calling the core function.
+#[test]
+fn extension_names_of_core_calls_resolve_as_on_mesa() {
+    let (mesa, ours) = texts("proc_aliases");
+    assert_mesa_printed(
+        &mesa,
+        &[
+            "glBlendEquationEXT           found",
+            "BLEND_EQUATION 0x8008  TEXTURE_BINDING_2D 5  err 0x0",
+        ],
+    );
+    assert_same_text(&mesa, &ours, 21, "an extension name's address or effect");
+}

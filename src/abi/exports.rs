@@ -98,7 +98,9 @@ macro_rules! define_exports {
 
 gl_entry_table!(define_exports);
 
-/// The address of an exported function (GL or OSMesa) by C name; null when there is none.
+/// The address of an exported function (GL or OSMesa) by C name, or of the command the
+/// registry names it an alias of (glBlendEquationEXT: glBlendEquation's), as Mesa's
+/// OSMesaGetProcAddress answers it; null when there is none.
 pub fn proc_address(name: &str) -> *const c_void {
     static TABLE: OnceLock<HashMap<&'static str, usize>> = OnceLock::new();
     let table = TABLE.get_or_init(|| {
@@ -108,5 +110,6 @@ pub fn proc_address(name: &str) -> *const c_void {
     });
     table
         .get(name)
+        .or_else(|| table.get(crate::ff::glenum::registry_alias(name)?))
         .map_or(std::ptr::null(), |a| *a as *const c_void)
 }

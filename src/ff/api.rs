@@ -807,12 +807,14 @@ macro_rules! define_entries {
 gl_entry_table!(define_entries);
 
 impl Entry {
-    /// The entry point a C name means.
+    /// The entry point a C name means: its own, or that of the command the registry names
+    /// it an alias of (glBlendEquationEXT is glBlendEquation).
     pub fn from_name(name: &str) -> Option<Entry> {
         static BY_NAME: OnceLock<std::collections::HashMap<&'static str, Entry>> = OnceLock::new();
-        BY_NAME
-            .get_or_init(|| Entry::ALL.iter().map(|e| (e.name(), *e)).collect())
+        let by_name = BY_NAME.get_or_init(|| Entry::ALL.iter().map(|e| (e.name(), *e)).collect());
+        by_name
             .get(name)
+            .or_else(|| by_name.get(super::glenum::registry_alias(name)?))
             .copied()
     }
 

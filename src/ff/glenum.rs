@@ -70,6 +70,15 @@ pub fn gl<T: GlEnum>(v: T) -> u32 {
 }
 
 /// The value of a token name (`"GL_AMBIENT"`), from the registry.
+/// The command the registry names `name` an alias of (glBlendEquationEXT →
+/// glBlendEquation: the same call under an extension's name).
+pub fn registry_alias(name: &str) -> Option<&'static str> {
+    let at = registry::COMMAND_ALIASES
+        .binary_search_by(|(alias, _)| (*alias).cmp(name))
+        .ok()?;
+    Some(registry::COMMAND_ALIASES[at].1)
+}
+
 pub fn value_of(name: &str) -> Option<u32> {
     registry::BY_NAME
         .binary_search_by(|(n, _)| (*n).cmp(name))
@@ -837,6 +846,24 @@ gl_enums!(RenderbufferFormat {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The registry's command aliases resolve to their commands; calls of other
+    /// semantics under an extension's name (glPolygonOffsetEXT's bias) are no aliases.
+    #[test]
+    fn extension_names_of_core_calls_are_aliases() {
+        assert_eq!(
+            registry_alias("glBlendEquationEXT"),
+            Some("glBlendEquation")
+        );
+        assert_eq!(
+            registry_alias("glActiveTextureARB"),
+            Some("glActiveTexture")
+        );
+        assert_eq!(registry_alias("glBindTextureEXT"), Some("glBindTexture"));
+        assert_eq!(registry_alias("glPolygonOffsetEXT"), None);
+        assert_eq!(registry_alias("glVertexPointerEXT"), None);
+        assert_eq!(registry_alias("glBlendEquation"), None);
+    }
 
     /// The GL 1.0 tokens named with a leading digit (glCallLists' GL_2_BYTES …) and the
     /// ARB_shadow_ambient token are in the table, with the registry's values.
