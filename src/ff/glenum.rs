@@ -73,11 +73,24 @@ pub fn gl<T: GlEnum>(v: T) -> u32 {
 /// The command the registry names `name` an alias of (glBlendEquationEXT →
 /// glBlendEquation: the same call under an extension's name).
 pub fn registry_alias(name: &str) -> Option<&'static str> {
-    let at = registry::COMMAND_ALIASES
-        .binary_search_by(|(alias, _)| (*alias).cmp(name))
-        .ok()?;
-    Some(registry::COMMAND_ALIASES[at].1)
+    if let Ok(at) = registry::COMMAND_ALIASES.binary_search_by(|(alias, _)| (*alias).cmp(name)) {
+        return Some(registry::COMMAND_ALIASES[at].1);
+    }
+    TEXTURE_OBJECT_EXT
+        .iter()
+        .find(|(alias, _)| *alias == name)
+        .map(|(_, command)| *command)
 }
+
+/// EXT_texture_object's names the registry does not make aliases (their GLX protocol
+/// differs from GL 1.1's), though they are the same calls in GL: Mesa's
+/// OSMesaGetProcAddress answers them with GL 1.1's functions.
+const TEXTURE_OBJECT_EXT: [(&str, &str); 4] = [
+    ("glAreTexturesResidentEXT", "glAreTexturesResident"),
+    ("glDeleteTexturesEXT", "glDeleteTextures"),
+    ("glGenTexturesEXT", "glGenTextures"),
+    ("glIsTextureEXT", "glIsTexture"),
+];
 
 pub fn value_of(name: &str) -> Option<u32> {
     registry::BY_NAME
@@ -860,6 +873,7 @@ mod tests {
             Some("glActiveTexture")
         );
         assert_eq!(registry_alias("glBindTextureEXT"), Some("glBindTexture"));
+        assert_eq!(registry_alias("glGenTexturesEXT"), Some("glGenTextures"));
         assert_eq!(registry_alias("glPolygonOffsetEXT"), None);
         assert_eq!(registry_alias("glVertexPointerEXT"), None);
         assert_eq!(registry_alias("glBlendEquation"), None);

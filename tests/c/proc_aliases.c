@@ -1,7 +1,8 @@
 /* OSMesaGetProcAddress of the extension names the registry makes aliases of GL 1.x calls
- * (glBlendEquationEXT is glBlendEquation, glActiveTextureARB glActiveTexture …), as a
- * program of the era fetches them: each found, then the blend equation set through the
- * EXT name and read back, and a texture bound through glBindTextureEXT.
+ * (glBlendEquationEXT is glBlendEquation, glActiveTextureARB glActiveTexture …) and of
+ * EXT_texture_object's names, as a program of the era fetches them: each found, then the
+ * blend equation set through the EXT name and read back, and a texture bound through
+ * glBindTextureEXT.
  *
  * usage: proc_aliases */
 #include <GL/osmesa.h>
@@ -20,7 +21,9 @@ int main(void) {
       "glMultiTexCoord2fARB",     "glLoadTransposeMatrixfARB", "glPointParameterfARB",
       "glFogCoordfEXT",           "glSecondaryColor3fEXT",     "glGenBuffersARB",
       "glBindBufferARB",          "glBufferDataARB",           "glBlendFuncSeparateEXT",
-      "glCompressedTexImage2DARB", "glSampleCoverageARB",      "glWindowPos2fARB"};
+      "glCompressedTexImage2DARB", "glSampleCoverageARB",      "glWindowPos2fARB",
+      "glGenTexturesEXT",         "glIsTextureEXT",            "glDeleteTexturesEXT",
+      "glAreTexturesResidentEXT", "glPrioritizeTexturesEXT"};
   for (unsigned i = 0; i < sizeof names / sizeof names[0]; i++)
     printf("%-28s %s\n", names[i], OSMesaGetProcAddress(names[i]) ? "found" : "NULL");
 
