@@ -1434,3 +1434,16 @@ fn extension_names_of_core_calls_resolve_as_on_mesa() {
     );
     assert_same_text(&mesa, &ours, 26, "an extension name's address or effect");
 }
+
+/// `tests/c/read_outside.c`: glReadPixels of rectangles reaching beyond the window write
+/// only the pixels inside, under every pack layout, as Mesa's OSMesa clips the read; the
+/// memory of the pixels outside keeps what the program put there (GL leaves it undefined).
+#[test]
+fn reads_beyond_the_window_leave_the_memory_outside_as_on_mesa() {
+    let (mesa, ours) = texts("read_outside");
+    assert_mesa_printed(
+        &mesa,
+        &["top right corner                   hash 7aeaf9aedf7312bb  err 0x0  rows: ff0000ff ff0000ff eeeeeeee eeeeeeee"],
+    );
+    assert_same_text(&mesa, &ours, 8, "a read beyond the window");
+}

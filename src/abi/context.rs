@@ -585,8 +585,11 @@ impl Context {
         }
         self.made = made;
         match entry {
-            Entry::ReadPixels => self.copy_pixels_out(args.get(6)),
-            Entry::GetTexImage => self.copy_pixels_out(args.get(4)),
+            Entry::ReadPixels => {
+                let inside = self.read_inside(args);
+                self.copy_pixels_out(args.get(6), inside)
+            }
+            Entry::GetTexImage => self.copy_pixels_out(args.get(4), None),
             _ => {}
         }
         match reply {
@@ -683,7 +686,34 @@ impl Context {
     /// glReadPixels and glGetTexImage into the caller's memory: the bytes the pipeline
     /// read, rows padded to GL_PACK_ALIGNMENT. A call that failed, or a glGetTexImage of a
     /// level never specified, stored nothing and leaves the memory alone.
-    fn copy_pixels_out(&mut self, dst: Option<&CArg>) {
+    /// The part of a glReadPixels rectangle (x, y, width, height) inside the window, when
+    /// the window is the read framebuffer and the rectangle reaches beyond it, as (first
+    /// column, first row, columns, rows) of the rectangle: Mesa clips the read to the
+    /// buffer (`_mesa_clip_readpixels`) and writes nothing of the pixels outside, which
+    /// keep what the program's memory held (GL leaves them undefined). None: the whole
+    /// rectangle is written.
+    fn read_inside(&self, args: &[CArg]) -> Option<[usize; 4]> {
+        let read_fb = self.pipeline.as_ref()?.state().framebuffers.read;
+        let target = self.target.as_ref()?;
+        let int = |i: usize| match args.get(i) {
+            Some(CArg::Int(v)) => Some(*v),
+            _ => None,
+        };
+        let (x, y, w, h) = (int(0)?, int(1)?, int(2)?, int(3)?);
+        let (fw, fh) = (i64::from(target.width()), i64::from(target.height()));
+        if read_fb != 0 || w <= 0 || h <= 0 {
+            return None;
+        }
+        let (x0, y0) = ((-x).max(0).min(w), (-y).max(0).min(h));
+        let (x1, y1) = ((fw - x).clamp(x0, w), (fh - y).clamp(y0, h));
+        if (x0, y0, x1, y1) == (0, 0, w, h) {
+            return None;
+        }
+        let u = |v: i64| usize::try_from(v).unwrap_or(0);
+        Some([u(x0), u(y0), u(x1 - x0), u(y1 - y0)])
+    }
+
+    fn copy_pixels_out(&mut self, dst: Option<&CArg>, inside: Option<[usize; 4]>) {
         let Some(CArg::Ptr(dst, _)) = dst.copied() else {
             return;
         };
@@ -713,7 +743,44 @@ impl Context {
                 ..shape
             },
         };
-        self.pack_out(dst, &r.bytes, shape);
+        match inside {
+            Some(part) if r.depth.is_none() => self.pack_part_out(dst, &r.bytes, shape, part),
+            _ => self.pack_out(dst, &r.bytes, shape),
+        }
+    }
+
+    /// The columns and rows `part` (first column, first row, columns, rows) of a read
+    /// rectangle of `shape`, tightly packed in `bytes`, into the program's memory where
+    /// the whole rectangle's pack layout puts them; nothing else is written.
+    fn pack_part_out(&self, dst: *const c_void, bytes: &[u8], shape: PixelShape, part: [usize; 4]) {
+        let [x0, y0, w, h] = part;
+        if w == 0 || h == 0 {
+            return;
+        }
+        let group = shape.group_bytes();
+        let row = group * usize::try_from(shape.width).unwrap_or(0);
+        let tight: Vec<u8> = bytes
+            .chunks_exact(row.max(1))
+            .skip(y0)
+            .take(h)
+            .flat_map(|r| r[x0 * group..(x0 + w) * group].iter().copied())
+            .collect();
+        let mut p = self.client.pixel_store.pack;
+        if p.row_length == 0 {
+            p.row_length = usize::try_from(shape.width).unwrap_or(0);
+        }
+        p.skip_pixels += x0;
+        p.skip_rows += y0;
+        let part_shape = PixelShape {
+            width: i32::try_from(w).unwrap_or(i32::MAX),
+            height: i32::try_from(h).unwrap_or(i32::MAX),
+            ..shape
+        };
+        let extent = pixel_layout::layout(part_shape, &p).extent;
+        // SAFETY: the part's rows lie inside the whole rectangle's, which the program's
+        // buffer holds under its pack parameters (GL's contract for glReadPixels).
+        let out = unsafe { std::slice::from_raw_parts_mut(dst.cast::<u8>().cast_mut(), extent) };
+        pixel_layout::pack(&tight, out, part_shape, &p);
     }
 
     /// glGetQueryObject{i,ui}v: what the pipeline counted for query `id`, stored through
