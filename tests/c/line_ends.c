@@ -52,12 +52,9 @@ static float rnd(void) {
 
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "line_ends.ppm";
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-  buf = calloc(W * H, 4);
-  if (!ctx || !buf || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) return 2;
-  glMatrixMode(GL_PROJECTION);
-  glOrtho(0, W, 0, H, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
+  OSMesaContext ctx;
+  buf = open_window(&ctx, W, H);
+  if (!buf) return 2;
   glColor3f(1, 1, 1);
 
   const GLfloat at[] = {10.5f, 10.0f, 10.25f, 10.75f};

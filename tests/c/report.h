@@ -55,6 +55,19 @@ static inline void textured_square(void) {
   glEnd();
 }
 
+/* The start of a drawing program: a context with 24 depth and 8 stencil bits made current
+ * on a new w×h RGBA buffer (returned; NULL when that fails), with glOrtho(0, w, 0, h) so
+ * that a unit is a pixel. */
+static inline GLubyte *open_window(OSMesaContext *ctx, int w, int h) {
+  *ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+  GLubyte *buf = calloc((size_t)w * h, 4);
+  if (!*ctx || !buf || !OSMesaMakeCurrent(*ctx, buf, GL_UNSIGNED_BYTE, w, h)) return NULL;
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(0, w, 0, h, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  return buf;
+}
+
 /* The end of a program: the image finished and written to `out`, the context and its
  * buffer freed. The exit status: 0, or 1 when the image could not be written. */
 static inline int finish(const char *out, OSMesaContext ctx, GLubyte *buf, int w, int h) {

@@ -30,12 +30,9 @@ static void square(const char *what, float x) {
 
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "target_fallback.ppm";
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-  buf = calloc(W * H, 4);
-  if (!ctx || !buf || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) return 2;
-  glMatrixMode(GL_PROJECTION);
-  glOrtho(0, W, 0, H, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
+  OSMesaContext ctx;
+  buf = open_window(&ctx, W, H);
+  if (!buf) return 2;
   glClear(GL_COLOR_BUFFER_BIT);
 
   static const GLubyte green[4] = {0, 255, 0, 255}, red[8] = {255, 0, 0, 255, 255, 0, 0, 255};

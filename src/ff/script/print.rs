@@ -47,25 +47,23 @@ pub(super) fn padded(data: &[u8], row: usize, alignment: usize) -> std::borrow::
     std::borrow::Cow::Owned(out)
 }
 
-pub(super) fn f(v: f32) -> String {
-    if v.is_nan() {
-        "NAN".into()
-    } else if v.is_infinite() {
-        if v > 0.0 { "INFINITY" } else { "-INFINITY" }.into()
-    } else {
-        format!("{v:?}")
+/// C's spelling of a non-finite value (math.h's NAN and INFINITY); None for a number.
+fn non_finite(v: f64) -> Option<&'static str> {
+    match v {
+        v if v.is_nan() => Some("NAN"),
+        v if v.is_infinite() && v > 0.0 => Some("INFINITY"),
+        v if v.is_infinite() => Some("-INFINITY"),
+        _ => None,
     }
+}
+
+pub(super) fn f(v: f32) -> String {
+    non_finite(f64::from(v)).map_or_else(|| format!("{v:?}"), String::from)
 }
 
 /// A GLdouble argument, every digit kept (Rust's shortest round-trip form).
 fn double(v: f64) -> String {
-    if v.is_nan() {
-        "NAN".into()
-    } else if v.is_infinite() {
-        if v > 0.0 { "INFINITY" } else { "-INFINITY" }.into()
-    } else {
-        format!("{v:?}")
-    }
+    non_finite(v).map_or_else(|| format!("{v:?}"), String::from)
 }
 
 pub(super) fn fs(vs: &[f32]) -> String {
