@@ -249,9 +249,9 @@ impl Client {
         let Ok(cap) = c.token(0) else {
             return Ok(None);
         };
-        if self.arrays.enable_of(cap).is_none() {
+        let Some(enabled) = self.arrays.enable_of(cap) else {
             return Ok(None);
-        }
+        };
         if let Some(mode) = self.lists.compiling() {
             self.lists.record(Item::ArrayEnable { cap, on });
             if mode == ListMode::Compile {
@@ -260,9 +260,7 @@ impl Client {
         } else if self.immediate.is_open() {
             return Err(c.immediate("glEnable or glDisable inside glBegin/glEnd"));
         }
-        if let Some(enabled) = self.arrays.enable_of(cap) {
-            *enabled = on;
-        }
+        *enabled = on;
         Ok(Some(Reply::None))
     }
 

@@ -161,8 +161,7 @@ impl FixedState {
     /// (EYE_LINEAR or SPHERE_MAP).
     fn texturing_needs_eye_space(&self) -> bool {
         (0..MAX_TEXTURE_UNITS).any(|u| {
-            self.enabled_texture(u)
-                .is_some_and(|t| t.completeness().is_ok())
+            self.enabled_texture(u).is_some()
                 && TexCoord::ALL.iter().any(|c| {
                     self.units[u]
                         .texgen(*c)

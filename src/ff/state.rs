@@ -29,7 +29,7 @@ use super::sample_coverage::SampleCoverage;
 use super::stipple::{LineStipple, PolygonStipple};
 use super::texenv::TexEnv;
 use super::texgen::{TexCoord, TexGen};
-use super::texture::{TextureObject, TextureTarget};
+use super::texture::{TexFormat, TextureObject, TextureTarget};
 use crate::vocab::PolygonOffset;
 
 /// GL_MAX_TEXTURE_UNITS modelled: texgen, env, matrices and coordinates for 8 units (the
@@ -494,7 +494,7 @@ impl FixedState {
 
     /// The texture a unit samples when drawing: its enabled target's bound object.
     pub fn enabled_texture(&self, unit: usize) -> Option<&TextureObject> {
-        self.sampled_texture(unit).map(|(_, t)| t)
+        self.sampled_texture(unit).map(|(_, t, _)| t)
     }
 
     /// The target a unit samples and its texture: of the enabled targets, in the order
@@ -502,12 +502,17 @@ impl FixedState {
     /// (`_mesa_update_texture_unit_state`, measured: a stray glEnable(TEXTURE_CUBE_MAP)
     /// over a complete 2D texture leaves the 2D texture drawn). GL 1.5 §3.8.15 takes the
     /// highest enabled target alone and turns the unit off when it is incomplete. None: no
-    /// enabled target has a complete texture, the unit is off.
-    pub fn sampled_texture(&self, unit: usize) -> Option<(TextureTarget, &TextureObject)> {
+    /// enabled target has a complete texture, the unit is off. With the target and the
+    /// texture, the format its completeness gave.
+    pub fn sampled_texture(
+        &self,
+        unit: usize,
+    ) -> Option<(TextureTarget, &TextureObject, TexFormat)> {
         let u = self.units.get(unit)?;
         u.enabled_targets().find_map(|target| {
             let texture = self.texture(target, u.bound(target))?;
-            texture.is_complete().then_some((target, texture))
+            let format = texture.completeness().ok()?;
+            Some((target, texture, format))
         })
     }
 

@@ -35,6 +35,12 @@ static void level(const char *what, GLenum proxy, GLint lvl) {
          a, fw, glGetError());
 }
 
+/* The error flag after the call, then the level: one call's two records. */
+static void checked(const char *what, GLenum proxy, GLint lvl) {
+  err(what);
+  level(what, proxy, lvl);
+}
+
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "proxy_tex.ppm";
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
@@ -43,31 +49,25 @@ int main(int argc, char **argv) {
   level("2D before any proxy", GL_PROXY_TEXTURE_2D, 0);
 
   glTexImage1D(GL_PROXY_TEXTURE_1D, 0, GL_RGBA, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("1D 64 RGBA");
-  level("1D 64 RGBA", GL_PROXY_TEXTURE_1D, 0);
+  checked("1D 64 RGBA", GL_PROXY_TEXTURE_1D, 0);
   glTexImage1D(GL_PROXY_TEXTURE_1D, 2, GL_LUMINANCE8, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   err("1D level 2 LUMINANCE8");
   level("1D level 2", GL_PROXY_TEXTURE_1D, 2);
   level("1D level 0 kept", GL_PROXY_TEXTURE_1D, 0);
   glTexImage1D(GL_PROXY_TEXTURE_1D, 0, GL_RGBA, 100000, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("1D 100000");
-  level("1D 100000", GL_PROXY_TEXTURE_1D, 0);
+  checked("1D 100000", GL_PROXY_TEXTURE_1D, 0);
   level("1D level 2 after", GL_PROXY_TEXTURE_1D, 2);
 
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGB5, 64, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("2D 64x32 RGB5");
-  level("2D 64x32 RGB5", GL_PROXY_TEXTURE_2D, 0);
+  checked("2D 64x32 RGB5", GL_PROXY_TEXTURE_2D, 0);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, 3, 16, 16, 0, GL_RGB, GL_UNSIGNED_BYTE, NULL);
   level("2D 16x16 3", GL_PROXY_TEXTURE_2D, 0);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 1, GL_RGBA4, 8192, 8192, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("2D level 1 8192x8192");
-  level("2D level 1 8192x8192", GL_PROXY_TEXTURE_2D, 1);
+  checked("2D level 1 8192x8192", GL_PROXY_TEXTURE_2D, 1);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 1, GL_RGBA, 8193, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("2D level 1 8193x4");
-  level("2D level 1 8193x4", GL_PROXY_TEXTURE_2D, 1);
+  checked("2D level 1 8193x4", GL_PROXY_TEXTURE_2D, 1);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 100000, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("2D 100000x4");
-  level("2D 100000x4", GL_PROXY_TEXTURE_2D, 0);
+  checked("2D 100000x4", GL_PROXY_TEXTURE_2D, 0);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_ALPHA8, 30, 6, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   level("2D 30x6 ALPHA8", GL_PROXY_TEXTURE_2D, 0);
 
@@ -88,26 +88,21 @@ int main(int argc, char **argv) {
   level("2D after the errors", GL_PROXY_TEXTURE_2D, 0);
 
   glTexImage2D(GL_PROXY_TEXTURE_CUBE_MAP, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("cube 64x64");
-  level("cube 64x64", GL_PROXY_TEXTURE_CUBE_MAP, 0);
+  checked("cube 64x64", GL_PROXY_TEXTURE_CUBE_MAP, 0);
   glTexImage2D(GL_PROXY_TEXTURE_CUBE_MAP, 0, GL_RGBA, 64, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("cube 64x32");
-  level("cube 64x32", GL_PROXY_TEXTURE_CUBE_MAP, 0);
+  checked("cube 64x32", GL_PROXY_TEXTURE_CUBE_MAP, 0);
   glTexImage2D(GL_PROXY_TEXTURE_CUBE_MAP, 0, GL_RGBA, 20000, 20000, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                NULL);
-  err("cube 20000x20000");
-  level("cube 20000x20000", GL_PROXY_TEXTURE_CUBE_MAP, 0);
+  checked("cube 20000x20000", GL_PROXY_TEXTURE_CUBE_MAP, 0);
   level("cube face", GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0);
 
   /* A border of 1: the sizes include it, each at least 2 and at most 2 + the largest. */
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 66, 34, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("2D 66x34 border 1");
-  level("2D 66x34 border 1", GL_PROXY_TEXTURE_2D, 0);
+  checked("2D 66x34 border 1", GL_PROXY_TEXTURE_2D, 0);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 2, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   level("2D 2x2 border 1", GL_PROXY_TEXTURE_2D, 0);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 1, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("2D 1x4 border 1");
-  level("2D 1x4 border 1", GL_PROXY_TEXTURE_2D, 0);
+  checked("2D 1x4 border 1", GL_PROXY_TEXTURE_2D, 0);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 1, GL_RGBA, 8194, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   level("2D level 1 8194x4 border 1", GL_PROXY_TEXTURE_2D, 1);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 1, GL_RGBA, 8195, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
@@ -117,8 +112,7 @@ int main(int argc, char **argv) {
   glTexImage2D(GL_PROXY_TEXTURE_CUBE_MAP, 0, GL_RGBA, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   level("cube 6x6 border 1", GL_PROXY_TEXTURE_CUBE_MAP, 0);
   glTexImage3D(GL_PROXY_TEXTURE_3D, 0, GL_RGBA, 6, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-  err("3D 6x6x6 border 1");
-  level("3D 6x6x6 border 1", GL_PROXY_TEXTURE_3D, 0);
+  checked("3D 6x6x6 border 1", GL_PROXY_TEXTURE_3D, 0);
   glTexImage3D(GL_PROXY_TEXTURE_3D, 0, GL_RGBA, 6, 6, 6, 2, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   err("3D border 2");
 
@@ -126,8 +120,7 @@ int main(int argc, char **argv) {
   glNewList(1, GL_COMPILE);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA8, 32, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   glEndList();
-  err("2D proxy compiled");
-  level("2D proxy compiled", GL_PROXY_TEXTURE_2D, 0);
+  checked("2D proxy compiled", GL_PROXY_TEXTURE_2D, 0);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   glCallList(1);
   level("2D after the list is called", GL_PROXY_TEXTURE_2D, 0);

@@ -432,8 +432,7 @@ impl ShaderKey {
 fn enabled_units(state: &FixedState) -> Vec<(usize, TextureTarget, TexelKey, Option<ClampKey>)> {
     (0..MAX_TEXTURE_UNITS)
         .filter_map(|unit| {
-            let (target, texture) = state.sampled_texture(unit)?;
-            let format = texture.completeness().ok()?;
+            let (target, texture, format) = state.sampled_texture(unit)?;
             // ARB_shadow compares r with a 1D or 2D depth texel; a depth cube map is read
             // for its depth (a compare there is outside GL 1.x and not modelled).
             let compare = match target {
