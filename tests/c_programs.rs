@@ -1447,3 +1447,81 @@ fn reads_beyond_the_window_leave_the_memory_outside_as_on_mesa() {
     );
     assert_same_text(&mesa, &ours, 8, "a read beyond the window");
 }
+
+/// A `Cpus_allowed_list` ("0-3,6") as the CPUs it names.
+fn cpu_list(list: &str) -> Vec<usize> {
+    let mut cpus = Vec::new();
+    for part in list.split(',').filter(|p| !p.is_empty()) {
+        let (a, b) = part.split_once('-').unwrap_or((part, part));
+        let (a, b): (usize, usize) = (a.trim().parse().unwrap(), b.trim().parse().unwrap());
+        cpus.extend(a..=b);
+    }
+    cpus
+}
+
+/// `tests/c/raster_threads.c` run with `placement` as FIXEDFUNC_RASTER_THREADS (unset for
+/// None): the process's CPUs and, for each llvmpipe rasterizer thread k, (k, its CPUs).
+fn rasterizer_cpus(
+    library: Library,
+    placement: Option<&str>,
+) -> (Vec<usize>, Vec<(usize, Vec<usize>)>) {
+    let exe = compile("raster_threads", Linking::Direct);
+    let mut cmd = Command::new(&exe);
+    match library {
+        Library::Fixedfunc => cmd.env("LD_LIBRARY_PATH", fixedfunc_dir()),
+        Library::Mesa => cmd.env_remove("LD_LIBRARY_PATH"),
+    };
+    match placement {
+        Some(p) => cmd.env("FIXEDFUNC_RASTER_THREADS", p),
+        None => cmd.env_remove("FIXEDFUNC_RASTER_THREADS"),
+    };
+    let out = cmd.output().expect("the program runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    let mut process = None;
+    let mut threads = Vec::new();
+    for line in text.lines() {
+        let (name, list) = line.split_once(' ').unwrap_or((line, ""));
+        match name.strip_prefix("llvmpipe-") {
+            Some(k) => threads.push((k.parse().unwrap(), cpu_list(list))),
+            None if name == "process" => process = Some(cpu_list(list)),
+            None => panic!("unexpected line {line:?}"),
+        }
+    }
+    (process.expect("the process's CPUs are printed"), threads)
+}
+
+/// The layer binds llvmpipe's rasterizer thread k to the k-th CPU the process may use
+/// (`gpu::raster_threads`), so a frame's bins are drawn on every CPU at once, where the
+/// kernel may queue two rasterizers on one CPU; Mesa's OSMesa, and the layer under
+/// FIXEDFUNC_RASTER_THREADS=kernel, leave every thread free to run anywhere.
+#[test]
+fn rasterizer_threads_are_bound_one_per_cpu_unless_left_to_the_kernel() {
+    let (cpus, spread) = rasterizer_cpus(Library::Fixedfunc, None);
+    if cpus.len() >= 2 {
+        assert!(
+            !spread.is_empty(),
+            "llvmpipe makes rasterizer threads on {cpus:?}"
+        );
+        for (k, on) in &spread {
+            assert_eq!(
+                on,
+                &vec![cpus[k % cpus.len()]],
+                "llvmpipe-{k} on its own CPU"
+            );
+        }
+    }
+    for (library, placement) in [(Library::Fixedfunc, Some("kernel")), (Library::Mesa, None)] {
+        let (cpus, threads) = rasterizer_cpus(library, placement);
+        for (k, on) in &threads {
+            assert_eq!(
+                on, &cpus,
+                "llvmpipe-{k} free on {library:?} ({placement:?})"
+            );
+        }
+    }
+}

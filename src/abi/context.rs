@@ -23,7 +23,7 @@ use crate::ff::upload_bounds::{pixel_access, CallTime, PixelAccess};
 use crate::ff::{Command, GlErrorKind};
 use crate::gpu::{
     Backend, ColorStorage, ContextRequest, DepthStencilBuffers, GpuContext, PbufferSpec, Profile,
-    RenderTarget, TargetSpec,
+    RasterPlacement, RenderTarget, TargetSpec, ThreadsBefore,
 };
 use crate::pipeline::emulate::EmulatedPipeline;
 use crate::pipeline::queries::QueryFetch;
@@ -276,6 +276,18 @@ pub struct Context {
     tracing: bool,
     /// The framebuffer and renderbuffer names glGen* handed out.
     generated: super::framebuffers::Generated,
+    /// llvmpipe's rasterizer threads for this context, bound one per CPU at the first
+    /// write-back (`gpu::raster_threads`).
+    rasterizers: Rasterizers,
+}
+
+/// Whether a context's rasterizer threads are still to be bound to their CPUs.
+#[derive(Debug)]
+enum Rasterizers {
+    /// Not yet: the threads made after this snapshot are the context's.
+    ToBind(ThreadsBefore),
+    /// Bound, or left to the kernel (`FIXEDFUNC_RASTER_THREADS=kernel`).
+    Placed,
 }
 
 /// Swaps the first and third byte of each 4-byte pixel: RGBA ↔ BGRA. On 4-aligned
@@ -346,7 +358,12 @@ impl Context {
         stencil_bits: i32,
         accum_bits: i32,
     ) -> Result<Self, AbiError> {
+        let threads_before = ThreadsBefore::now();
         let gpu = GpuContext::new(&ContextRequest::new(Backend::Egl, Profile::Core33))?;
+        let rasterizers = match RasterPlacement::from_env() {
+            RasterPlacement::OnePerCpu => Rasterizers::ToBind(threads_before),
+            RasterPlacement::Kernel => Rasterizers::Placed,
+        };
         let stencil = stencil_bits > 0;
         let (depth, buffers) = match depth_bits {
             d if d > 0 && stencil => (DepthBits::D24, DepthStencilBuffers::AsNamed),
@@ -378,6 +395,7 @@ impl Context {
             textures_generated: HashSet::new(),
             tracing: super::trace::enabled(),
             generated: Default::default(),
+            rasterizers,
         })
     }
 
@@ -839,6 +857,11 @@ impl Context {
             return;
         };
         self.image = WindowImage::WrittenBack;
+        // Every rasterizer thread has run (and named itself) by the first frame's end.
+        if let Rasterizers::ToBind(before) = &self.rasterizers {
+            before.bind_new_rasterizers();
+            self.rasterizers = Rasterizers::Placed;
+        }
         let (w, h) = (buffer.width as usize, buffer.height as usize);
         let row_pixels = if self.row_length > 0 {
             self.row_length as usize
