@@ -479,7 +479,6 @@ impl GpuGeometry {
                     }
                 }
             }
-            gl.bind_vertex_array(None);
         }
     }
 

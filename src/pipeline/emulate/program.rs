@@ -1,5 +1,14 @@
 //! Compiling a generated program and uploading its uniforms. The location list is built
 //! from the same `UniformSource` list the generator declared.
+//!
+//! A uniform keeps its value in the program object (GL 4.6 §7.6), and only this module
+//! sets a generated program's uniforms, so a bind uploads only the values that differ,
+//! bit for bit, from the ones the program last received: a frame of many objects that
+//! differ only in their modelview matrix sends the matrices, not the lights and
+//! materials again. (Each glUniform costs the driver a call and a check even when the
+//! value is the same.)
+
+use std::cell::RefCell;
 
 use glow::HasContext;
 
@@ -12,6 +21,8 @@ use crate::pipeline::{ShaderError, ShaderStage};
 pub struct Program {
     pub program: glow::Program,
     uniforms: Vec<(UniformSource, Option<glow::UniformLocation>)>,
+    /// The value each of `uniforms` last received (None: never uploaded).
+    sent: RefCell<Vec<Option<UniformValue>>>,
 }
 
 /// Compiles one stage; a failure carries `label` (the program's key or name), the GLSL and
@@ -94,23 +105,35 @@ impl Program {
         let program = compile_and_link(gl, &vertex, &fragment, &format!("{key:?}"))?;
         // SAFETY: uniform queries on the program just linked, on the current context.
         unsafe {
-            let uniforms = uniforms
+            let uniforms: Vec<_> = uniforms
                 .into_iter()
                 .map(|u| (u, gl.get_uniform_location(program, &u.name())))
                 .collect();
-            Ok(Program { program, uniforms })
+            let sent = RefCell::new(vec![None; uniforms.len()]);
+            Ok(Program {
+                program,
+                uniforms,
+                sent,
+            })
         }
     }
 
-    /// Uses the program and uploads every uniform it declared, from `state`.
+    /// Uses the program and uploads the uniforms it declared whose values in `state`
+    /// differ from the ones it holds.
     pub fn bind(&self, gl: &glow::Context, state: &FixedState) {
+        let mut sent = self.sent.borrow_mut();
         unsafe {
             gl.use_program(Some(self.program));
-            for (source, location) in &self.uniforms {
+            for ((source, location), held) in self.uniforms.iter().zip(sent.iter_mut()) {
                 let Some(loc) = location.as_ref() else {
                     continue; // declared but optimised away by the compiler
                 };
-                match uniforms::value(*source, state) {
+                let value = uniforms::value(*source, state);
+                if held.is_some_and(|h| h.same_bits(&value)) {
+                    continue;
+                }
+                *held = Some(value);
+                match value {
                     UniformValue::Float(v) => gl.uniform_1_f32(Some(loc), v),
                     UniformValue::Int(v) => gl.uniform_1_i32(Some(loc), v),
                     UniformValue::Rows(r) => gl.uniform_1_u32_slice(Some(loc), &r),

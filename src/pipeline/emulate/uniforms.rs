@@ -241,6 +241,31 @@ pub enum UniformValue {
     Rows([u32; 32]),
 }
 
+impl UniformValue {
+    /// Whether `other` is the same upload, bit for bit: −0 and +0 differ (a program may
+    /// divide by the value), and a NaN is the same as an identical NaN.
+    pub fn same_bits(&self, other: &UniformValue) -> bool {
+        let bits = |a: &[f32], b: &[f32]| {
+            a.iter()
+                .map(|x| x.to_bits())
+                .eq(b.iter().map(|x| x.to_bits()))
+        };
+        match (self, other) {
+            (UniformValue::Float(a), UniformValue::Float(b)) => a.to_bits() == b.to_bits(),
+            (UniformValue::Vec4(a), UniformValue::Vec4(b)) => bits(&a.to_array(), &b.to_array()),
+            (UniformValue::Mat3(a), UniformValue::Mat3(b)) => {
+                bits(&a.to_cols_array(), &b.to_cols_array())
+            }
+            (UniformValue::Mat4(a), UniformValue::Mat4(b)) => {
+                bits(&a.to_cols_array(), &b.to_cols_array())
+            }
+            (UniformValue::Int(a), UniformValue::Int(b)) => a == b,
+            (UniformValue::Rows(a), UniformValue::Rows(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
 fn material(state: &FixedState, face: u8) -> &Material {
     if face == 0 {
         &state.materials.front
@@ -391,5 +416,25 @@ fn alpha_reference(reference: f32) -> f32 {
         1.0
     } else {
         reference
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_upload_is_the_same_only_bit_for_bit() {
+        let v = |x: f32| UniformValue::Vec4(Vec4::new(x, 1.0, 2.0, 3.0));
+        assert!(v(0.5).same_bits(&v(0.5)));
+        assert!(!v(0.5).same_bits(&v(0.25)));
+        // −0 and +0 compare equal as floats but are different uploads.
+        assert!(!v(0.0).same_bits(&v(-0.0)));
+        // A NaN is the same upload as the same NaN (`==` would send it at every draw).
+        assert!(v(f32::NAN).same_bits(&v(f32::NAN)));
+        assert!(!UniformValue::Float(1.0).same_bits(&UniformValue::Int(1)));
+        let m = Mat4::from_translation(glam::Vec3::new(1.0, 2.0, 3.0));
+        assert!(UniformValue::Mat4(m).same_bits(&UniformValue::Mat4(m)));
+        assert!(!UniformValue::Mat4(m).same_bits(&UniformValue::Mat4(Mat4::IDENTITY)));
     }
 }
