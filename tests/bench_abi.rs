@@ -148,7 +148,7 @@ fn bench_abi(cc: Option<&str>, json: bool) -> std::process::Output {
 }
 
 #[test]
-fn the_group_reports_a_row_per_mode_and_heap() {
+fn the_group_reports_a_row_per_mode_heap_and_span() {
     let out = bench_abi(None, true);
     assert!(
         out.status.success(),
@@ -157,13 +157,26 @@ fn the_group_reports_a_row_per_mode_and_heap() {
     );
     let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
     let rows = rows.as_array().expect("an array of rows");
-    let cases: Vec<(&str, &str)> = rows
+    let cases: Vec<(&str, &str, &str)> = rows
         .iter()
-        .filter_map(|r| Some((r["mode"].as_str()?, r["heap"].as_str()?)))
+        .filter_map(|r| {
+            Some((
+                r["mode"].as_str()?,
+                r["heap"].as_str()?,
+                r["span"].as_str()?,
+            ))
+        })
         .collect();
-    let expected: Vec<(&str, &str)> = AbiMode::names()
+    // Early runs under both heaps; settled runs under the untrimmed heap.
+    let expected: Vec<(&str, &str, &str)> = AbiMode::names()
         .iter()
-        .flat_map(|&m| [(m, "glibc"), (m, "untrimmed")])
+        .flat_map(|&m| {
+            [
+                (m, "glibc", "early"),
+                (m, "untrimmed", "early"),
+                (m, "untrimmed", "settled"),
+            ]
+        })
         .collect();
     assert_eq!(cases, expected);
     for r in rows {

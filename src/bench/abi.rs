@@ -6,7 +6,8 @@
 //!
 //! Runs are interleaved, Mesa then the layer, mode by mode, repeat by repeat, so that the
 //! machine's noise (other builds, frequency steps) hits both alike. A run's figure is the
-//! median of its frames after [`WARMUP_FRAMES`] (the first compiles programs and uploads);
+//! median of its frames after the first few (the first compiles programs and uploads), over
+//! a short run and a long one ([`Span`]);
 //! a row reports, per library, the median and range of those figures over the repeats, the
 //! vertices and draw calls per second they mean, and the layer's median over Mesa's against
 //! the target (≤ 1.0× for arrays, lists and buffers, ≤ 2.0× for immediate mode).
@@ -38,10 +39,100 @@ use crate::vocab::Named;
 pub use output::RunOutput;
 pub use program::{Libraries, Program};
 
-/// Frames of each run left out of its median.
+/// Frames of each early run left out of its median.
 pub const WARMUP_FRAMES: u32 = 3;
-/// Frames of each run that count.
+/// Frames of each early run that count.
 pub const STEADY_FRAMES: u32 = 20;
+/// Frames of each settled run left out of its median.
+pub const SETTLING_FRAMES: u32 = 200;
+/// Frames of each settled run that count.
+pub const SETTLED_FRAMES: u32 = 200;
+
+/// Which frames of a run its figure comes from.
+///
+/// llvmpipe draws a frame's bins on its rasterizer threads, and how many CPUs they get at
+/// once depends on where the kernel has placed them. Mesa's OSMesa leaves that to the
+/// kernel, which on a machine of two CPUs often queues both rasterizers on one CPU for the
+/// first hundred or so frames (until its periodic balancing separates them); the layer
+/// binds them one per CPU (`gpu::raster_threads`). A short render and a long one therefore
+/// compare differently, and both are measured.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Span {
+    /// Frames 4–23 of a 23-frame run: a short render, such as a test suite's.
+    Early,
+    /// Frames 201–400 of a 400-frame run: a long render, after the kernel has settled
+    /// where the threads run. Measured under [`Heap::Untrimmed`] only, with a quarter of
+    /// the repeats (rounded up): its runs are 17 times as long.
+    Settled,
+}
+
+impl Span {
+    pub const ALL: [Span; 2] = [Span::Early, Span::Settled];
+
+    /// Frames a run of this span draws.
+    pub fn frames(self) -> u32 {
+        self.skipped() + self.counted()
+    }
+
+    /// Frames at the run's start left out of its median.
+    pub fn skipped(self) -> u32 {
+        match self {
+            Span::Early => WARMUP_FRAMES,
+            Span::Settled => SETTLING_FRAMES,
+        }
+    }
+
+    /// Frames that count.
+    pub fn counted(self) -> u32 {
+        match self {
+            Span::Early => STEADY_FRAMES,
+            Span::Settled => SETTLED_FRAMES,
+        }
+    }
+
+    /// The repeats a span gets when the bench asks for `repeats`.
+    pub fn repeats(self, repeats: usize) -> usize {
+        match self {
+            Span::Early => repeats.max(1),
+            Span::Settled => repeats.max(1).div_ceil(4),
+        }
+    }
+
+    /// Whether this span is measured under `heap`.
+    pub fn measured_under(self, heap: Heap) -> bool {
+        self == Span::Early || heap == Heap::Untrimmed
+    }
+
+    /// The median of a run's counted frames.
+    pub fn median(self, run: &RunOutput) -> Option<f64> {
+        let counted = run.frame_ms.get(self.skipped() as usize..).unwrap_or(&[]);
+        Summary::of(counted).map(|s| s.median)
+    }
+}
+
+impl std::fmt::Display for Span {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(match self {
+            Span::Early => "early",
+            Span::Settled => "settled",
+        })
+    }
+}
+
+/// The (mode, heap, span) cases the bench measures for `modes`, `heaps` and `spans`:
+/// mode by mode, heap by heap, span by span, where the span is measured under the heap.
+pub fn cases(modes: &[AbiMode], heaps: &[Heap], spans: &[Span]) -> Vec<(AbiMode, Heap, Span)> {
+    let mut all = Vec::new();
+    for &m in modes {
+        for &h in heaps {
+            for &s in spans.iter().filter(|s| s.measured_under(h)) {
+                all.push((m, h, s));
+            }
+        }
+    }
+    all
+}
 /// The program's buffer, in pixels (256×256).
 pub const PIXELS: u64 = 256 * 256;
 /// How far the two libraries' pixel counts (drawn, dark) may differ, as a fraction of the
@@ -183,6 +274,7 @@ pub struct LibraryFigures {
 pub struct AbiRow {
     pub mode: AbiMode,
     pub heap: Heap,
+    pub span: Span,
     pub vertices_per_frame: u64,
     pub draws_per_frame: u64,
     pub mesa: LibraryFigures,
@@ -279,48 +371,46 @@ pub enum AbiError {
     Io { what: String, reason: String },
 }
 
-/// Runs every mode under every heap setting `repeats` times on each library, interleaved;
-/// `done` is told of each finished run. Rows come mode by mode, heap by heap.
+/// Runs each of `cases` (see [`cases`]) on each library, interleaved, as many times as its
+/// span's share of `repeats`; `done` is told of each finished run. Rows come in the cases'
+/// order.
 pub fn measure(
     program: &Program,
     libraries: &Libraries,
-    modes: &[AbiMode],
-    heaps: &[Heap],
+    cases: &[(AbiMode, Heap, Span)],
     repeats: usize,
-    mut done: impl FnMut(AbiMode, Heap, Library),
+    mut done: impl FnMut(AbiMode, Heap, Span, Library),
 ) -> Result<Vec<AbiRow>, AbiError> {
-    let frames = WARMUP_FRAMES + STEADY_FRAMES;
-    let cases: Vec<(AbiMode, Heap)> = modes
-        .iter()
-        .flat_map(|&m| heaps.iter().map(move |&h| (m, h)))
-        .collect();
     // runs[case][library]: each repeat's output.
     let mut runs: Vec<[Vec<RunOutput>; 2]> = cases.iter().map(|_| [vec![], vec![]]).collect();
-    for _ in 0..repeats.max(1) {
-        for (c, &(mode, heap)) in cases.iter().enumerate() {
+    for repeat in 0..repeats.max(1) {
+        for (c, &(mode, heap, span)) in cases.iter().enumerate() {
+            if repeat >= span.repeats(repeats) {
+                continue;
+            }
             for (l, library) in [Library::Mesa, Library::Fixedfunc].into_iter().enumerate() {
-                let out = program.run(libraries, library, mode, heap, frames, None)?;
+                let out = program.run(libraries, library, mode, heap, span.frames(), None)?;
                 runs[c][l].push(out);
-                done(mode, heap, library);
+                done(mode, heap, span, library);
             }
         }
     }
     cases
         .iter()
         .zip(runs)
-        .map(|(&(mode, heap), [mesa, ours])| row(mode, heap, &mesa, &ours))
+        .map(|(&(mode, heap, span), [mesa, ours])| row(mode, heap, span, &mesa, &ours))
         .collect()
 }
 
-/// The median of a run's frames after the warm-up.
-pub fn steady_median(run: &RunOutput) -> Option<f64> {
-    let steady = run.frame_ms.get(WARMUP_FRAMES as usize..).unwrap_or(&[]);
-    Summary::of(steady).map(|s| s.median)
+/// How many runs [`measure`] makes of `cases` for `repeats`.
+pub fn run_count(cases: &[(AbiMode, Heap, Span)], repeats: usize) -> usize {
+    cases.iter().map(|&(_, _, s)| 2 * s.repeats(repeats)).sum()
 }
 
 fn row(
     mode: AbiMode,
     heap: Heap,
+    span: Span,
     mesa: &[RunOutput],
     ours: &[RunOutput],
 ) -> Result<AbiRow, AbiError> {
@@ -329,13 +419,13 @@ fn row(
     };
     agree(mode, m, o)?;
     let mesa_runs = mesa;
-    let mesa = figures(Library::Mesa, mesa)?;
-    let fixedfunc = figures(Library::Fixedfunc, ours)?;
+    let mesa = figures(Library::Mesa, span, mesa)?;
+    let fixedfunc = figures(Library::Fixedfunc, span, ours)?;
     let ratio = fixedfunc.frame_ms.median / mesa.frame_ms.median;
     let pairs: Vec<f64> = mesa_runs
         .iter()
         .zip(ours)
-        .filter_map(|(m, o)| Some(steady_median(o)? / steady_median(m)?))
+        .filter_map(|(m, o)| Some(span.median(o)? / span.median(m)?))
         .collect();
     let paired = Summary::of(&pairs).ok_or(AbiError::Incomplete { missing: "frame" })?;
     let target = mode.target();
@@ -347,6 +437,7 @@ fn row(
     Ok(AbiRow {
         mode,
         heap,
+        span,
         vertices_per_frame: m.vertices,
         draws_per_frame: m.draws,
         mesa,
@@ -382,11 +473,11 @@ fn agree(mode: AbiMode, mesa: &RunOutput, ours: &RunOutput) -> Result<(), AbiErr
     Ok(())
 }
 
-fn figures(library: Library, runs: &[RunOutput]) -> Result<LibraryFigures, AbiError> {
+fn figures(library: Library, span: Span, runs: &[RunOutput]) -> Result<LibraryFigures, AbiError> {
     let first = runs
         .first()
         .ok_or(AbiError::Incomplete { missing: "frame" })?;
-    let frame_ms: Vec<f64> = runs.iter().filter_map(steady_median).collect();
+    let frame_ms: Vec<f64> = runs.iter().filter_map(|r| span.median(r)).collect();
     // Per run: count / (median frame in seconds).
     let rate = |count: u64, scale: f64| -> Vec<f64> {
         frame_ms
@@ -408,6 +499,53 @@ fn figures(library: Library, runs: &[RunOutput]) -> Result<LibraryFigures, AbiEr
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn settled_runs_are_measured_under_the_untrimmed_heap_with_a_quarter_of_the_repeats() {
+        let cases = cases(&[AbiMode::Arrays, AbiMode::Lists], &Heap::ALL, &Span::ALL);
+        assert_eq!(
+            cases,
+            vec![
+                (AbiMode::Arrays, Heap::Glibc, Span::Early),
+                (AbiMode::Arrays, Heap::Untrimmed, Span::Early),
+                (AbiMode::Arrays, Heap::Untrimmed, Span::Settled),
+                (AbiMode::Lists, Heap::Glibc, Span::Early),
+                (AbiMode::Lists, Heap::Untrimmed, Span::Early),
+                (AbiMode::Lists, Heap::Untrimmed, Span::Settled),
+            ]
+        );
+        assert_eq!(
+            (Span::Settled.repeats(1), Span::Settled.repeats(10)),
+            (1, 3)
+        );
+        assert_eq!((Span::Early.repeats(0), Span::Early.repeats(10)), (1, 10));
+        // Per repeat of 10: 4 early cases and 2 settled, each on two libraries.
+        assert_eq!(run_count(&cases, 10), 2 * (4 * 10 + 2 * 3));
+    }
+
+    #[test]
+    fn a_span_takes_the_median_of_the_frames_after_its_skipped_ones() {
+        let run = |frames: Vec<f64>| RunOutput {
+            vendor: String::new(),
+            renderer: String::new(),
+            mode: AbiMode::Arrays,
+            vertices: 0,
+            draws: 0,
+            frame_ms: frames,
+            drawn: 0,
+            dark: 0,
+            lit: 0,
+            mean: [0.0; 3],
+        };
+        // Three warm-up frames left out: the median of 1, 2, 9.
+        let early = run(vec![50.0, 40.0, 30.0, 1.0, 9.0, 2.0]);
+        assert_eq!(Span::Early.median(&early), Some(2.0));
+        assert_eq!(Span::Settled.median(&early), None, "too short a run");
+        let mut frames = vec![100.0; SETTLING_FRAMES as usize];
+        frames.extend([3.0, 1.0, 2.0]);
+        assert_eq!(Span::Settled.median(&run(frames)), Some(2.0));
+        assert_eq!(Span::Settled.frames(), 400);
+    }
 
     #[test]
     fn an_untrimmed_run_raises_the_trim_threshold_after_the_inherited_tunables() {

@@ -1,6 +1,6 @@
 //! `fixedfunc bench`: repeated timings with medians, a progress bar while they run.
 
-use fixedfunc::bench::abi::{self, AbiError, AbiMode, AbiRow, Heap, Verdict};
+use fixedfunc::bench::abi::{self, AbiError, AbiMode, AbiRow, Heap, Span, Verdict};
 use fixedfunc::bench::coleman::{ColemanRow, Entrant, INSTANCES};
 use fixedfunc::bench::pipeline::BenchError;
 use fixedfunc::bench::{context, pipeline, BenchGroup};
@@ -530,19 +530,18 @@ fn measure_abi(repeats: usize) -> Result<Vec<AbiRow>, AbiError> {
     let libraries = abi::Libraries {
         fixedfunc_dir: folder,
     };
-    let modes = AbiMode::all();
-    let total = (repeats.max(1) * modes.len() * Heap::ALL.len() * 2) as u64;
+    let cases = abi::cases(&AbiMode::all(), &Heap::ALL, &Span::ALL);
+    let total = abi::run_count(&cases, repeats) as u64;
     let mut bar = CountBar::new("bench abi", total, "runs");
     bar.set_what("compiling abi_bench.c".into());
     let program = abi::Program::compile()?;
     let rows = abi::measure(
         &program,
         &libraries,
-        &modes,
-        &Heap::ALL,
+        &cases,
         repeats,
-        |mode, heap, library| {
-            bar.set_what(format!("{mode} ({heap} heap) on {library}"));
+        |mode, heap, span, library| {
+            bar.set_what(format!("{mode} ({heap} heap, {span}) on {library}"));
             bar.inc();
         },
     );
@@ -566,12 +565,20 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
     }
     outln!(
         "abi: benches/c/abi_bench.c (256×256 RGBA, 24 depth, 8 stencil) on Mesa's \
-         libOSMesa.so.8 and on fixedfunc's, runs interleaved; {} runs each of {} frames \
-         after {} warm-up; per run its median frame; medians [min–max] over the runs; \
-         paired = each repeat's fixedfunc run over the Mesa run just before it",
-        repeats.max(1),
+         libOSMesa.so.8 and on fixedfunc's, runs interleaved; per run its median frame; \
+         medians [min–max] over the runs; paired = each repeat's fixedfunc run over the Mesa \
+         run just before it"
+    )?;
+    outln!(
+        "span: early = {} runs each of {} frames after {} (a short render); settled = {} \
+         runs each of {} frames after {}, untrimmed heap only (a long render, once the \
+         kernel has settled where llvmpipe's threads run)",
+        Span::Early.repeats(repeats),
         abi::STEADY_FRAMES,
-        abi::WARMUP_FRAMES
+        abi::WARMUP_FRAMES,
+        Span::Settled.repeats(repeats),
+        abi::SETTLED_FRAMES,
+        abi::SETTLING_FRAMES
     )?;
     outln!(
         "heap: glibc = the process's own settings (what a program gets); untrimmed = \
@@ -588,9 +595,10 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
         )?;
     }
     outln!(
-        "{:<10} {:<9} {:>7} {:>5} {:>22} {:>22} {:>10} {:>18} {:>7} {:>15} {:>15} {:>9} {:>9}",
+        "{:<10} {:<9} {:<7} {:>7} {:>5} {:>22} {:>22} {:>10} {:>18} {:>7} {:>15} {:>15} {:>9} {:>9}",
         "mode",
         "heap",
+        "span",
         "verts",
         "draws",
         "Mesa frame ms",
@@ -612,9 +620,10 @@ fn print_abi(rows: &[AbiRow], repeats: usize, json: bool) -> Result<(), CliError
             (None, _) => "—".to_string(),
         };
         outln!(
-            "{:<10} {:<9} {:>7} {:>5} {:>22} {:>22} {:>9.2}× {:>18} {:>7} {:>15.1} {:>15.1} {:>9.0} {:>9.0}",
+            "{:<10} {:<9} {:<7} {:>7} {:>5} {:>22} {:>22} {:>9.2}× {:>18} {:>7} {:>15.1} {:>15.1} {:>9.0} {:>9.0}",
             r.mode.name(),
             r.heap,
+            r.span,
             r.vertices_per_frame,
             r.draws_per_frame,
             range(&r.mesa.frame_ms),
