@@ -34,16 +34,14 @@ static void allowed_list(const char *status_path, char *out, size_t size) {
 }
 
 int main(void) {
-  static GLubyte pixels[W * H * 4];
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
-  if (!ctx || !OSMesaMakeCurrent(ctx, pixels, GL_UNSIGNED_BYTE, W, H)) return 3;
-  glClearColor(0.2f, 0.2f, 0.2f, 1);
+  OSMesaContext ctx;
+  GLubyte *pixels = open_window(&ctx, W, H);
+  if (!pixels) return 3;
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glBegin(GL_TRIANGLES);
-  glColor3f(1, 0, 0);
-  glVertex2f(-0.9f, -0.9f);
-  glVertex2f(0.9f, -0.9f);
-  glVertex2f(0, 0.9f);
+  glVertex2i(4, 4);
+  glVertex2i(W - 4, 4);
+  glVertex2i(W / 2, H - 4);
   glEnd();
   glFinish();
 
@@ -75,5 +73,6 @@ int main(void) {
     for (int i = 0; i < n; i++)
       if (k_of[i] == k) printf("%s\n", lines[i]);
   OSMesaDestroyContext(ctx);
+  free(pixels);
   return 0;
 }
