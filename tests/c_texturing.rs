@@ -218,3 +218,21 @@ fn a_non_finite_texture_coordinate_spoils_only_itself() {
         &["s = NaN                         0 255   0    0 255   0  128 127   0  err 0x0"],
     );
 }
+
+/// `tests/c/texture_border.c`: an image given a border of 1 is stripped to its interior
+/// at the call, as Mesa's state tracker strips it (a height of 2 kept whole), in
+/// glTexImage1D/2D/3D and glCopyTexImage1D/2D; a proxy keeps its border; borders other
+/// than 0 and 1, or wider than half a side, are INVALID_VALUE.
+#[test]
+fn texture_borders_are_stripped_as_on_mesa() {
+    assert_as_on_mesa(
+        "texture_border",
+        &[
+            "  level                                  w 4 h 4 border 0  err 0x0",
+            "  texels                                 31ce28 38c750 3fc078 46b9a0 5ba428",
+            "  level (height 2 kept)                  w 2 h 2 border 0  err 0x0",
+            "  proxy level                            w 6 h 6 border 1  err 0x0",
+            "TexImage2D 6x1 border 1                  err 0x501",
+        ],
+    );
+}

@@ -428,6 +428,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let (format, ty, data) = pixel_types::model_tex_data(c, 7, shape)?;
             tex_image_or_proxy(
                 proxy,
+                1,
                 TexImage {
                     requested: requested_format(c, 2),
                     target: TextureTarget::Texture1D,
@@ -462,6 +463,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let (format, ty, data) = pixel_types::model_tex_data(c, 8, shape)?;
             tex_image_or_proxy(
                 proxied.is_some(),
+                2,
                 TexImage {
                     requested: requested_format(c, 2),
                     target,
@@ -502,7 +504,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::CopyTexImage2D => {
             c.count(8)?;
             let face = image_2d_target(c)?.face();
-            Command::CopyTexImage2D(CopyTexImage {
+            let copy = CopyTexImage {
                 face,
                 requested: requested_format(c, 2),
                 level: c.i32(1)?,
@@ -513,7 +515,8 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 width: c.i32(5)?,
                 height: c.i32(6)?,
                 border: c.i32(7)?,
-            })
+            };
+            Command::CopyTexImage2D(super::texture_border::strip_copy(copy, 2))
         }
         Entry::TexParameteri | Entry::TexParameterf => {
             c.count(3)?;
@@ -580,11 +583,13 @@ pub(crate) fn image_2d_target<A: Args>(c: &A) -> Result<TextureTarget, A::Error>
 }
 
 /// A glTexImage of its target, or (`proxy`) of the proxy standing for it.
-fn tex_image_or_proxy(proxy: bool, image: TexImage) -> Command {
+/// The command of a glTexImage of `dims` dimensions: a proxy keeps its border, an image
+/// has it stripped (`texture_border`).
+fn tex_image_or_proxy(proxy: bool, dims: usize, image: TexImage) -> Command {
     if proxy {
         Command::ProxyTexImage(image)
     } else {
-        Command::TexImage(image)
+        Command::TexImage(super::texture_border::strip_image(image, dims))
     }
 }
 

@@ -74,6 +74,7 @@ pub mod pixel_layout;
 pub mod pixel_map;
 pub mod pixel_store;
 pub mod pixel_types;
+mod texture_border;
 pub mod texture_calls;
 pub mod texture_storage;
 pub mod texture_volume;

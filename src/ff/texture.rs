@@ -877,7 +877,7 @@ pub fn check_volume_arguments(level: i32, size: [i32; 3], border: i32) -> GlResu
     }
     if border != 0 {
         return Err(GlError::invalid_value(
-            "texture borders are not supported (border must be 0)",
+            "border must be 0, or 1 on sides of at least 2 texels (stripped at the call, as Mesa strips it)",
         ));
     }
     Ok(())
@@ -937,7 +937,7 @@ pub fn check_image_size(level: i32, width: i32, height: i32, border: i32) -> GlR
     }
     if border != 0 {
         return Err(GlError::invalid_value(
-            "texture borders are not supported (border must be 0)",
+            "border must be 0, or 1 on sides of at least 2 texels (stripped at the call, as Mesa strips it)",
         ));
     }
     Ok(())

@@ -96,7 +96,7 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::CopyTexImage1D => {
             c.count(7)?;
             target(c, TextureTarget::Texture1D)?;
-            Command::CopyTexImage1D(CopyTexImage {
+            let copy = CopyTexImage {
                 face: None,
                 requested: super::calls::requested_format(c, 2),
                 level: c.i32(1)?,
@@ -106,7 +106,8 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 width: c.i32(5)?,
                 height: 1,
                 border: c.i32(6)?,
-            })
+            };
+            Command::CopyTexImage1D(super::texture_border::strip_copy(copy, 1))
         }
         Entry::CopyTexSubImage1D => {
             c.count(6)?;

@@ -65,7 +65,7 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             if proxy {
                 Command::ProxyTexImage(image)
             } else {
-                Command::TexImage(image)
+                Command::TexImage(super::texture_border::strip_image(image, 3))
             }
         }
         Entry::TexSubImage3D | Entry::TexSubImage3DEXT => {
