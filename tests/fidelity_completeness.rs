@@ -317,9 +317,12 @@ fn base_level_1_is_the_base() {
     );
 }
 
-/// BASE_LEVEL above MAX_LEVEL under a mipmap filter: incomplete, red. (Under NEAREST Mesa
-/// 22.3.6 samples a mixture no rule gives — measured (0x70, 0, 0x8f) over a green, blue,
-/// white, grey chain — and the model calls that incomplete too; not compared.)
+/// BASE_LEVEL above MAX_LEVEL under a mipmap filter: incomplete, red. (Under NEAREST the
+/// texture is complete and its base level sampled, as Mesa samples it when the base level
+/// is drawn magnified or lightly minified (`tests/c/base_above_max.c`); over this chain,
+/// minified into 4×4, Mesa 22.3.6 samples a mixture no level rule gives — measured (0x70,
+/// 0, 0x8f) over a green, blue, white, grey chain — where the layer samples the base
+/// level: not compared.)
 #[test]
 fn base_level_above_max_level_is_incomplete() {
     case_2d(

@@ -523,7 +523,8 @@ pub enum Incomplete {
     NoBaseLevel,
     /// The base level has a zero width, height or depth.
     EmptyBaseLevel,
-    /// TEXTURE_BASE_LEVEL is above TEXTURE_MAX_LEVEL.
+    /// A mipmap filter, and TEXTURE_BASE_LEVEL is above TEXTURE_MAX_LEVEL (without
+    /// mipmaps the base level is sampled, as on Mesa).
     BaseAboveMax,
     /// A mipmap filter, and this level of the chain is not specified.
     MissingLevel(i32),
@@ -724,11 +725,14 @@ impl TextureObject {
         if base.width <= 0 || base.height <= 0 || base.depth <= 0 {
             return Err(Incomplete::EmptyBaseLevel);
         }
-        if self.params.base_level > self.params.max_level {
-            return Err(Incomplete::BaseAboveMax);
-        }
+        // BASE_LEVEL above MAX_LEVEL leaves no mipmap levels; Mesa calls that only
+        // mipmap-incomplete (`_mesa_test_texobj_completeness`), so a minifying filter
+        // without mipmaps still samples the base level (tests/c/base_above_max.c).
         if !self.params.min_filter.uses_mipmaps() {
             return Ok(base.internal_format);
+        }
+        if self.params.base_level > self.params.max_level {
+            return Err(Incomplete::BaseAboveMax);
         }
         let mut size = (base.width, base.height, base.depth);
         let last = self.last_level_in(target);
@@ -1094,6 +1098,9 @@ mod tests {
         assert!(t.is_complete());
         t.params.max_level = 0;
         assert_eq!(t.completeness(), Err(Incomplete::BaseAboveMax));
+        // Without mipmaps the base level (1) is sampled whatever MAX_LEVEL says.
+        t.params.min_filter = Nearest;
+        assert!(t.is_complete());
     }
 
     #[test]
