@@ -23,12 +23,7 @@ static void panel(const char *what, GLint base, GLint max, GLenum min_filter) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min_filter);
   int x = panels++ * 8;
   glViewport(x, 0, 8, 8);
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2f(-1, -1);
-  glTexCoord2f(1, 0); glVertex2f(1, -1);
-  glTexCoord2f(1, 1); glVertex2f(1, 1);
-  glTexCoord2f(0, 1); glVertex2f(-1, 1);
-  glEnd();
+  textured_square();
   glFinish();
   const GLubyte *p = buf + 4 * (4 * W + x + 4);
   printf("%-40s %3d %3d %3d  err 0x%x\n", what, p[0], p[1], p[2], glGetError());

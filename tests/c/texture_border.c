@@ -34,6 +34,18 @@ static void texels(const char *what, int n) {
   printf(" | %02x  err 0x%x\n", back[4 * n], glGetError());
 }
 
+/* glTexImage2D of `img` as w x h with `border`, and its error; for n >= 0 the level, and
+ * for n > 0 its first n texels. */
+static void image_2d(const GLubyte *img, int w, int h, int border, int n) {
+  char what[64];
+  snprintf(what, sizeof what, "TexImage2D %dx%d border %d", w, h, border);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, border, GL_RGBA, GL_UNSIGNED_BYTE, img);
+  err(what);
+  if (n < 0) return;
+  level(GL_TEXTURE_2D, "  level");
+  if (n > 0) texels("  texels", n);
+}
+
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "texture_border.ppm";
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
@@ -52,29 +64,14 @@ int main(int argc, char **argv) {
   glGenTextures(1, &tex);
   glBindTexture(GL_TEXTURE_2D, tex);
 
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, img);
-  err("TexImage2D 6x6 border 1");
-  level(GL_TEXTURE_2D, "  level");
-  texels("  texels", 16);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 5, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, img);
-  err("TexImage2D 5x6 border 1");
-  level(GL_TEXTURE_2D, "  level");
-  texels("  texels", 12);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, img);
-  err("TexImage2D 4x2 border 1");
-  level(GL_TEXTURE_2D, "  level (height 2 kept)");
-  texels("  texels", 4);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, img);
-  err("TexImage2D 2x2 border 1");
-  level(GL_TEXTURE_2D, "  level");
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, img);
-  err("TexImage2D 1x1 border 1");
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 6, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, img);
-  err("TexImage2D 6x1 border 1");
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 6, 6, 2, GL_RGBA, GL_UNSIGNED_BYTE, img);
-  err("TexImage2D border 2");
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 6, 6, -1, GL_RGBA, GL_UNSIGNED_BYTE, img);
-  err("TexImage2D border -1");
+  image_2d(img, 6, 6, 1, 16);
+  image_2d(img, 5, 6, 1, 12);
+  image_2d(img, 4, 2, 1, 4); /* a height of 2 is kept whole */
+  image_2d(img, 2, 2, 1, 0);
+  image_2d(img, 1, 1, 1, -1);
+  image_2d(img, 6, 1, 1, -1);
+  image_2d(img, 6, 6, 2, -1);
+  image_2d(img, 6, 6, -1, -1);
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
   err("proxy 6x6 border 1");
   level(GL_PROXY_TEXTURE_2D, "  proxy level");
@@ -107,12 +104,7 @@ int main(int argc, char **argv) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glEnable(GL_TEXTURE_2D);
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0); glVertex2f(-1, -1);
-  glTexCoord2f(1, 0); glVertex2f(1, -1);
-  glTexCoord2f(1, 1); glVertex2f(1, 1);
-  glTexCoord2f(0, 1); glVertex2f(-1, 1);
-  glEnd();
+  textured_square();
   err("draw");
   return finish(out, ctx, buf, W, H);
 }
