@@ -140,6 +140,14 @@ fn assert_mesa_printed(mesa_text: &str, lines: &[&str]) {
     }
 }
 
+/// `tests/c/NAME.c` printed on Mesa each of `lines`, and on the layer what Mesa printed,
+/// line by line (at least `min_lines` of it).
+fn assert_prints_as_on_mesa(name: &str, lines: &[&str], min_lines: usize, what: &str) {
+    let (mesa, ours) = texts(name);
+    assert_mesa_printed(&mesa, lines);
+    assert_same_text(&mesa, &ours, min_lines, what);
+}
+
 /// Each of the six 64×64 panels (three across, two up) shows something on Mesa.
 fn assert_six_panels_drawn(mesa: &RgbaImage) {
     let background = Rgba([26, 26, 26, 255]);
@@ -292,12 +300,12 @@ fn state_queries_answer_as_on_mesa() {
 /// names: one group, several, every group, or bits of no group.
 #[test]
 fn attribute_pops_restore_only_the_groups_pushed_as_on_mesa() {
-    let (mesa, ours) = texts("attrib_masks");
-    assert_mesa_printed(
-        &mesa,
+    assert_prints_as_on_mesa(
+        "attrib_masks",
         &["CURRENT                            color 1 1 1 viewport 3 4 20 10 fog 1"],
+        18,
+        "the state after a pop",
     );
-    assert_same_text(&mesa, &ours, 18, "the state after a pop");
 }
 
 /// Client-state calls and glListBase inside glBegin/glEnd: INVALID_OPERATION, nothing
@@ -321,46 +329,52 @@ fn client_state_calls_inside_a_pair_fail_as_on_mesa() {
 /// missing buffer's test always passing.
 #[test]
 fn window_depth_and_stencil_buffers_are_the_ones_mesa_makes() {
-    let (mesa, ours) = texts("window_buffers");
-    assert_mesa_printed(
-        &mesa,
+    assert_prints_as_on_mesa(
+        "window_buffers",
         &[
             "ext(0, 8)      DEPTH_BITS 0 STENCIL_BITS 8 overlap 0 255 0",
             "ext(24, 0)     DEPTH_BITS 24 STENCIL_BITS 0 overlap 255 0 0 stencil NEVER 0 0 255",
         ],
+        18,
+        "the window's buffers",
     );
-    assert_same_text(&mesa, &ours, 18, "the window's buffers");
 }
 
 /// glFinish and glFlush write the caller's buffer only after something was drawn; the
 /// colour bits follow the buffer's type.
 #[test]
 fn the_buffer_is_written_only_after_drawing_as_on_mesa() {
-    let (mesa, ours) = texts("buffer_writes");
-    assert_mesa_printed(
-        &mesa,
+    assert_prints_as_on_mesa(
+        "buffer_writes",
         &[
             "glFinish, nothing drawn: ab ab",
             "GL_FLOAT: bits 32 32 32 32",
         ],
+        15,
+        "the buffer's bytes",
     );
-    assert_same_text(&mesa, &ours, 15, "the buffer's bytes");
 }
 
 /// OSMesaMakeCurrent(NULL, NULL, …) releases the current context.
 #[test]
 fn making_no_context_current_releases_it_as_on_mesa() {
-    let (mesa, ours) = texts("release");
-    assert_mesa_printed(&mesa, &["release: 1 current 0 buffer 0 ff"]);
-    assert_same_text(&mesa, &ours, 6, "the release");
+    assert_prints_as_on_mesa(
+        "release",
+        &["release: 1 current 0 buffer 0 ff"],
+        6,
+        "the release",
+    );
 }
 
 /// OSMesaGetDepthBuffer: Mesa's layout, one pointer whose values follow glFinish.
 #[test]
 fn the_depth_buffer_pointer_follows_drawing_as_on_mesa() {
-    let (mesa, ours) = texts("depth_buffer");
-    assert_mesa_printed(&mesa, &["  cleared to 0.75 and 0x5A: 0x5abfffff"]);
-    assert_same_text(&mesa, &ours, 18, "the depth buffer's values");
+    assert_prints_as_on_mesa(
+        "depth_buffer",
+        &["  cleared to 0.75 and 0x5A: 0x5abfffff"],
+        18,
+        "the depth buffer's values",
+    );
 }
 
 /// glRotatef about one axis: Mesa's exact 2 × 2 block.
@@ -1411,12 +1425,12 @@ fn client_array_tokens_in_gl_enable_act_as_on_mesa() {
 /// DEPTH_CLEAR_VALUE through every getter, printed as Mesa prints them, bit for bit.
 #[test]
 fn clear_depth_is_kept_as_a_double_as_on_mesa() {
-    let (mesa, ours) = texts("clear_depth");
-    assert_mesa_printed(
-        &mesa,
+    assert_prints_as_on_mesa(
+        "clear_depth",
         &["glClearDepth(0.29999999999999999)  cleared 0x4ccccc4c  double 0.29999999999999999  float 0.300000012  int 644245094  err 0x0"],
+        8,
+        "a cleared depth or its query",
     );
-    assert_same_text(&mesa, &ours, 8, "a cleared depth or its query");
 }
 
 /// `tests/c/proc_aliases.c`: OSMesaGetProcAddress finds the extension names the registry
@@ -1424,15 +1438,15 @@ fn clear_depth_is_kept_as_a_double_as_on_mesa() {
 /// does, and calling through them is calling the core function.
 #[test]
 fn extension_names_of_core_calls_resolve_as_on_mesa() {
-    let (mesa, ours) = texts("proc_aliases");
-    assert_mesa_printed(
-        &mesa,
+    assert_prints_as_on_mesa(
+        "proc_aliases",
         &[
             "glBlendEquationEXT           found",
             "BLEND_EQUATION 0x8008  TEXTURE_BINDING_2D 5  err 0x0",
         ],
+        26,
+        "an extension name's address or effect",
     );
-    assert_same_text(&mesa, &ours, 26, "an extension name's address or effect");
 }
 
 /// `tests/c/read_outside.c`: glReadPixels of rectangles reaching beyond the window write
@@ -1440,12 +1454,12 @@ fn extension_names_of_core_calls_resolve_as_on_mesa() {
 /// memory of the pixels outside keeps what the program put there (GL leaves it undefined).
 #[test]
 fn reads_beyond_the_window_leave_the_memory_outside_as_on_mesa() {
-    let (mesa, ours) = texts("read_outside");
-    assert_mesa_printed(
-        &mesa,
+    assert_prints_as_on_mesa(
+        "read_outside",
         &["top right corner                   hash 7aeaf9aedf7312bb  err 0x0  rows: ff0000ff ff0000ff eeeeeeee eeeeeeee"],
+        8,
+        "a read beyond the window",
     );
-    assert_same_text(&mesa, &ours, 8, "a read beyond the window");
 }
 
 /// A `Cpus_allowed_list` ("0-3,6") as the CPUs it names.

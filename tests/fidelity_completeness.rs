@@ -335,6 +335,28 @@ fn base_level_above_max_level_is_incomplete() {
     );
 }
 
+/// A 6×6 image with a border of 1 (blue border texels, green interior) is its 4×4
+/// interior with border 0 (`ff::texture_border`, as Mesa strips it): complete under
+/// NEAREST, green on both paths, no border texel drawn.
+#[test]
+fn a_bordered_image_is_its_interior() {
+    let texels: Vec<String> = (0..36)
+        .flat_map(|i: u32| {
+            let (x, y) = (i % 6, i / 6);
+            let edge = x == 0 || y == 0 || x == 5 || y == 5;
+            if edge { texel(1) } else { GREEN }.map(|b| b.to_string())
+        })
+        .collect();
+    case_2d(
+        "complete-bordered-image",
+        &format!(
+            "glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 6, 6, 1, GL_RGBA, GL_UNSIGNED_BYTE, (GLubyte[]){{{}}});\nglTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);\n",
+            texels.join(", ")
+        ),
+        GREEN,
+    );
+}
+
 /// Minified to one pixel, MAX_LEVEL and the LOD clamps choose the level: the paths agree
 /// exactly, and the level is the one the parameters name — MAX_LEVEL 1 and MAX_LOD 1 stop
 /// at level 1 (blue); MIN_LOD 2 reads level 2 (white) even magnified; a unit LOD bias of 1

@@ -893,7 +893,7 @@ impl Context {
                     ColorFormat::Bgra => glow::BGRA,
                     _ => glow::RGBA,
                 };
-                if order != wanted {
+                if read.is_ok() && order != wanted {
                     for row in out.chunks_mut(row_pixels * 4) {
                         swap_red_blue(&mut row[..w * 4]);
                     }
@@ -904,7 +904,7 @@ impl Context {
         };
         // The read bound the target: the pipeline binds the program's framebuffers again.
         if let Some(p) = self.pipeline.as_mut() {
-            p.forget_sent_state();
+            p.forget_bound_framebuffers();
         }
         if let Err(e) = &read {
             eprintln!("fixedfunc: reading the image back failed: {e}");
@@ -988,7 +988,7 @@ impl Context {
         }
         // The read bound the target: the pipeline binds the program's framebuffers again.
         if let Some(p) = self.pipeline.as_mut() {
-            p.forget_sent_state();
+            p.forget_bound_framebuffers();
         }
     }
 }

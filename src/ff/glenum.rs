@@ -69,7 +69,6 @@ pub fn gl<T: GlEnum>(v: T) -> u32 {
     v.gl_value().unwrap_or(0)
 }
 
-/// The value of a token name (`"GL_AMBIENT"`), from the registry.
 /// The command the registry names `name` an alias of (glBlendEquationEXT →
 /// glBlendEquation: the same call under an extension's name).
 pub fn registry_alias(name: &str) -> Option<&'static str> {
@@ -92,6 +91,7 @@ const TEXTURE_OBJECT_EXT: [(&str, &str); 4] = [
     ("glIsTextureEXT", "glIsTexture"),
 ];
 
+/// The value of a token name (`"GL_AMBIENT"`), from the registry.
 pub fn value_of(name: &str) -> Option<u32> {
     registry::BY_NAME
         .binary_search_by(|(n, _)| (*n).cmp(name))

@@ -132,17 +132,7 @@ impl TextureUnit {
     /// The target that texturing uses: the cube map wins over 3D, 3D over 2D, 2D over 1D
     /// (GL 1.5 §3.8.15); `None` = unit off.
     pub fn enabled_target(&self) -> Option<TextureTarget> {
-        if self.texture_cube_map {
-            Some(TextureTarget::CubeMap)
-        } else if self.texture_3d {
-            Some(TextureTarget::Texture3D)
-        } else if self.texture_2d {
-            Some(TextureTarget::Texture2D)
-        } else if self.texture_1d {
-            Some(TextureTarget::Texture1D)
-        } else {
-            None
-        }
+        self.enabled_targets().next()
     }
 
     /// The enabled targets, highest priority first (cube map, 3D, 2D, 1D).

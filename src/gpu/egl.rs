@@ -226,45 +226,32 @@ impl EglContext {
         if !self.configless {
             return None;
         }
-        let wanted = [
+        // eglChooseConfig takes these as minimums; a config must match each exactly.
+        let sizes = [
+            (egl::RED_SIZE, 8),
+            (egl::GREEN_SIZE, 8),
+            (egl::BLUE_SIZE, 8),
+            (egl::ALPHA_SIZE, spec.alpha_bits),
+            (egl::DEPTH_SIZE, spec.depth_bits),
+            (egl::STENCIL_SIZE, spec.stencil_bits),
+            (egl::SAMPLES, 0),
+        ];
+        let mut wanted = vec![
             egl::SURFACE_TYPE,
             egl::PBUFFER_BIT,
             egl::RENDERABLE_TYPE,
             egl::OPENGL_BIT,
-            egl::RED_SIZE,
-            8,
-            egl::GREEN_SIZE,
-            8,
-            egl::BLUE_SIZE,
-            8,
-            egl::ALPHA_SIZE,
-            spec.alpha_bits,
-            egl::DEPTH_SIZE,
-            spec.depth_bits,
-            egl::STENCIL_SIZE,
-            spec.stencil_bits,
-            egl::SAMPLES,
-            0,
-            egl::NONE,
         ];
+        wanted.extend(sizes.iter().flat_map(|&(a, v)| [a, v]));
+        wanted.push(egl::NONE);
         let mut configs = Vec::with_capacity(64);
         self.egl
             .choose_config(self.display, &wanted, &mut configs)
             .ok()?;
         let get = |c: egl::Config, a| self.egl.get_config_attrib(self.display, c, a).ok();
-        configs.into_iter().find(|&c| {
-            [
-                (egl::RED_SIZE, 8),
-                (egl::GREEN_SIZE, 8),
-                (egl::BLUE_SIZE, 8),
-                (egl::ALPHA_SIZE, spec.alpha_bits),
-                (egl::DEPTH_SIZE, spec.depth_bits),
-                (egl::STENCIL_SIZE, spec.stencil_bits),
-                (egl::SAMPLES, 0),
-            ]
-            .iter()
-            .all(|&(a, v)| get(c, a) == Some(v))
-        })
+        configs
+            .into_iter()
+            .find(|&c| sizes.iter().all(|&(a, v)| get(c, a) == Some(v)))
     }
 }
 

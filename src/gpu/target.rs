@@ -124,9 +124,6 @@ pub struct RenderTarget {
     color: Option<glow::Renderbuffer>,
     /// The colour buffer drawn and read: COLOR_ATTACHMENT0, or the surface's FRONT or BACK.
     color_buffer: u32,
-    /// The byte order (RGBA or BGRA) the colour buffer stores 8-bit colour in: read in it,
-    /// glReadPixels is one copy.
-    byte_order: u32,
     /// None: the target has neither depth nor stencil buffer.
     depth: Option<glow::Renderbuffer>,
     depth_bits: u32,
@@ -197,7 +194,6 @@ impl RenderTarget {
                 framebuffer: Some(framebuffer),
                 color: Some(color),
                 color_buffer: glow::COLOR_ATTACHMENT0,
-                byte_order: glow::RGBA,
                 depth,
                 depth_bits: 0,
                 stencil_bits: 0,
@@ -271,16 +267,11 @@ impl RenderTarget {
                         .max(0) as u32,
                 }
             };
-            // Mesa's 8-bit window-system buffers are ARGB8888, B8G8R8A8 in memory (its dri
-            // configs; GL_IMPLEMENTATION_COLOR_READ_FORMAT answers RGBA regardless): read
-            // as BGRA, a 256×256 buffer is one copy, 8× faster than as RGBA on llvmpipe.
-            let byte_order = glow::BGRA;
             let target = RenderTarget {
                 spec,
                 framebuffer: None,
                 color: None,
                 color_buffer,
-                byte_order,
                 depth: None,
                 depth_bits: query(glow::DEPTH, glow::FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE),
                 stencil_bits: query(glow::STENCIL, glow::FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE),
@@ -328,7 +319,13 @@ impl RenderTarget {
     /// GL_RGBA or GL_BGRA: the byte order of 8-bit colour in the buffer, in which a read of
     /// it is one copy.
     pub fn byte_order(&self) -> u32 {
-        self.byte_order
+        match self.framebuffer {
+            // Mesa's 8-bit window-system buffers are ARGB8888, B8G8R8A8 in memory (its dri
+            // configs; GL_IMPLEMENTATION_COLOR_READ_FORMAT answers RGBA regardless): read
+            // as BGRA, a 256×256 buffer is one copy, 8× faster than as RGBA on llvmpipe.
+            None => glow::BGRA,
+            Some(_) => glow::RGBA,
+        }
     }
 
     /// Binds the target for drawing and reading and sets the viewport to cover it.

@@ -131,6 +131,14 @@ impl EmulatedPipeline {
     /// that changed GL state behind the pipeline (bound another target).
     pub fn forget_sent_state(&mut self) {
         self.path.raster.invalidate();
+        self.forget_bound_framebuffers();
+    }
+
+    /// Forgets only the framebuffers last bound: for a caller that bound another to read
+    /// from it (glReadPixels changes the read binding, the read buffer and the pack
+    /// alignment, none of them raster state, and every read of the pipeline sets its own
+    /// pack alignment).
+    pub fn forget_bound_framebuffers(&mut self) {
         self.path.framebuffers.invalidate();
     }
 

@@ -133,18 +133,7 @@ impl Program {
                     continue;
                 }
                 *held = Some(value);
-                match value {
-                    UniformValue::Float(v) => gl.uniform_1_f32(Some(loc), v),
-                    UniformValue::Int(v) => gl.uniform_1_i32(Some(loc), v),
-                    UniformValue::Rows(r) => gl.uniform_1_u32_slice(Some(loc), &r),
-                    UniformValue::Vec4(v) => gl.uniform_4_f32(Some(loc), v.x, v.y, v.z, v.w),
-                    UniformValue::Mat3(m) => {
-                        gl.uniform_matrix_3_f32_slice(Some(loc), false, &m.to_cols_array())
-                    }
-                    UniformValue::Mat4(m) => {
-                        gl.uniform_matrix_4_f32_slice(Some(loc), false, &m.to_cols_array())
-                    }
-                }
+                value.upload(gl, loc);
             }
         }
     }

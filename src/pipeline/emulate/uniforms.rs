@@ -242,6 +242,27 @@ pub enum UniformValue {
 }
 
 impl UniformValue {
+    /// glUniform* of this value at `loc` of the program in use.
+    pub fn upload(&self, gl: &glow::Context, loc: &glow::UniformLocation) {
+        use glow::HasContext;
+        let loc = Some(loc);
+        // SAFETY: plain GL calls on the current context; the slices are the values.
+        unsafe {
+            match *self {
+                UniformValue::Float(v) => gl.uniform_1_f32(loc, v),
+                UniformValue::Int(v) => gl.uniform_1_i32(loc, v),
+                UniformValue::Rows(r) => gl.uniform_1_u32_slice(loc, &r),
+                UniformValue::Vec4(v) => gl.uniform_4_f32(loc, v.x, v.y, v.z, v.w),
+                UniformValue::Mat3(m) => {
+                    gl.uniform_matrix_3_f32_slice(loc, false, &m.to_cols_array())
+                }
+                UniformValue::Mat4(m) => {
+                    gl.uniform_matrix_4_f32_slice(loc, false, &m.to_cols_array())
+                }
+            }
+        }
+    }
+
     /// Whether `other` is the same upload, bit for bit: −0 and +0 differ (a program may
     /// divide by the value), and a NaN is the same as an identical NaN.
     pub fn same_bits(&self, other: &UniformValue) -> bool {

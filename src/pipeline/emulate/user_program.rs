@@ -132,6 +132,7 @@ impl UserProgram {
         unsafe {
             gl.use_program(Some(self.program));
             for (b, loc) in &self.built_ins {
+                // The same values the generated programs receive (`uniforms::value`).
                 let source = match b {
                     BuiltIn::Modelview => UniformSource::Modelview,
                     BuiltIn::ModelviewProjection => UniformSource::ModelviewProjection,
@@ -142,26 +143,11 @@ impl UserProgram {
                     BuiltIn::FrontDiffuse => UniformSource::Material(0, MaterialValue::Diffuse),
                     BuiltIn::ClipPlane(i) => UniformSource::ClipPlane(*i),
                     BuiltIn::Projection => {
-                        let m = state.projection_matrix().to_cols_array();
-                        gl.uniform_matrix_4_f32_slice(Some(loc), false, &m);
+                        uniforms::UniformValue::Mat4(state.projection_matrix()).upload(gl, loc);
                         continue;
                     }
                 };
-                // The same values the generated programs receive (`uniforms::value`).
-                match uniforms::value(source, state) {
-                    uniforms::UniformValue::Mat4(m) => {
-                        gl.uniform_matrix_4_f32_slice(Some(loc), false, &m.to_cols_array())
-                    }
-                    uniforms::UniformValue::Mat3(m) => {
-                        gl.uniform_matrix_3_f32_slice(Some(loc), false, &m.to_cols_array())
-                    }
-                    uniforms::UniformValue::Vec4(v) => {
-                        gl.uniform_4_f32(Some(loc), v.x, v.y, v.z, v.w)
-                    }
-                    uniforms::UniformValue::Float(v) => gl.uniform_1_f32(Some(loc), v),
-                    uniforms::UniformValue::Int(v) => gl.uniform_1_i32(Some(loc), v),
-                    uniforms::UniformValue::Rows(r) => gl.uniform_1_u32_slice(Some(loc), &r),
-                }
+                uniforms::value(source, state).upload(gl, loc);
             }
         }
     }
