@@ -237,19 +237,3 @@ fn texture_borders_are_stripped_as_on_mesa() {
         ],
     );
 }
-
-/// `tests/c/base_above_max.c`: TEXTURE_BASE_LEVEL above TEXTURE_MAX_LEVEL is only
-/// mipmap-incomplete on Mesa: NEAREST and LINEAR sample the base level, the mipmap
-/// filters find the unit off. (A base level never specified is left out: Mesa 22.3
-/// samples it anyway and crashes.)
-#[test]
-fn a_base_level_above_the_max_level_is_sampled_without_mipmaps_as_on_mesa() {
-    assert_as_on_mesa(
-        "base_above_max",
-        &[
-            "base 1 max 0 NEAREST                       0 255   0  err 0x0",
-            "base 2 max 1 NEAREST                       0   0 255  err 0x0",
-            "base 1 max 0 NEAREST_MIPMAP_NEAREST      255 255 255  err 0x0",
-        ],
-    );
-}

@@ -317,12 +317,12 @@ fn base_level_1_is_the_base() {
     );
 }
 
-/// BASE_LEVEL above MAX_LEVEL under a mipmap filter: incomplete, red. (Under NEAREST the
-/// texture is complete and its base level sampled, as Mesa samples it when the base level
-/// is drawn magnified or lightly minified (`tests/c/base_above_max.c`); over this chain,
-/// minified into 4×4, Mesa 22.3.6 samples a mixture no level rule gives — measured (0x70,
-/// 0, 0x8f) over a green, blue, white, grey chain — where the layer samples the base
-/// level: not compared.)
+/// BASE_LEVEL above MAX_LEVEL under a mipmap filter: incomplete, red. (Under NEAREST Mesa
+/// 22.3.6 samples what its state tracker's history leaves: zero texels on a texture never
+/// drawn complete — (0, 0, 0, 0) here, BASE_LEVEL 1 and MAX_LEVEL 0 over this chain — the
+/// base level on one drawn complete before, and a mixture no rule gives over other chains
+/// ((0x70, 0, 0x8f) measured over a green, blue, white, grey chain); the model calls it
+/// incomplete; not compared.)
 #[test]
 fn base_level_above_max_level_is_incomplete() {
     case_2d(
