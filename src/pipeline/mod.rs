@@ -172,6 +172,9 @@ pub struct Counters {
     pub texture_uploads: u64,
     /// Draw geometries uploaded into GL buffers (emulate only; 0 on native).
     pub geometry_uploads: u64,
+    /// Draws that repeated the draw before them under new matrices, its program and pass
+    /// kept (emulate only; `emulate::repeat`).
+    pub repeated_draws: u64,
 }
 
 /// One way of executing Commands. The context must be current and stay the same for the

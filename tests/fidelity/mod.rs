@@ -45,6 +45,8 @@ pub struct Output {
     pub image: RgbaImage,
     pub readbacks: BTreeMap<u32, Readback>,
     pub depth: Vec<f32>,
+    /// What the pipeline counted.
+    pub counters: fixedfunc::pipeline::Counters,
 }
 
 /// Both paths on one backend.
@@ -108,12 +110,14 @@ pub fn run_one(
     let image = t.read_color(&ctx).expect("colour readback");
     let depth = t.read_depth_f32(&ctx).expect("depth readback");
     support::assert_no_gl_error(&ctx);
+    let counters = p.counters();
     p.release(&ctx);
     t.delete(&ctx);
     Output {
         image,
         readbacks,
         depth,
+        counters,
     }
 }
 

@@ -2,7 +2,9 @@
 //! on a core 3.3 context. Each Command is folded into the model state first (GL's error
 //! semantics live there); a Draw then derives the key, looks the program up (compiling only
 //! keys never seen), uploads the uniforms from the state, binds the enabled units'
-//! textures, syncs the raster state through its shadow copy and draws.
+//! textures, syncs the raster state through its shadow copy and draws. A draw of the
+//! geometry just drawn, after nothing but matrix commands, repeats that draw's program and
+//! pass with its transform uniforms sent anew (`repeat`).
 //!
 //! Two precisions (`ff::precision`): `Float` (the default) follows Mesa's native path —
 //! fp32 stages clamped per stage, the alpha test on unorm8 values rounded half to even;
@@ -22,6 +24,7 @@ pub mod outline_dashes;
 pub mod pixels;
 pub mod polygon;
 pub mod program;
+pub mod repeat;
 pub mod shadergen;
 pub mod shared_vertices;
 pub mod stipple_dashes;
@@ -32,6 +35,7 @@ pub mod textures;
 pub mod uniforms;
 pub mod user_program;
 
+use std::rc::Rc;
 use std::sync::Arc;
 
 use glow::HasContext;
@@ -60,6 +64,15 @@ enum Drawn<'a> {
     Dashes(&'a Geometry, &'a [line_stipple::Dash]),
 }
 
+/// Whether a draw syncs the raster state first.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Raster {
+    Sync,
+    /// GL holds this draw's raster state already: a repeated draw (`repeat`), after which
+    /// no command that changes raster state has run.
+    AsSent,
+}
+
 /// The emulated path's half of execution: programs, uploaded geometry and textures, and
 /// the shadow copy of the raster state GL has.
 pub struct Emulate {
@@ -84,6 +97,11 @@ pub struct Emulate {
     window_top_row_first: bool,
     /// A plan's own programs and the one in use (`user_program`).
     user: user_program::UserPrograms,
+    /// The last plain draw, which the next draw of its geometry repeats while only the
+    /// modelview and projection matrices change (`repeat`).
+    memo: Option<repeat::DrawMemo>,
+    /// How many draws repeated the memo's.
+    repeated: u64,
 }
 
 /// Commands executed by generated programs on a core 3.3 context.
@@ -117,6 +135,8 @@ impl EmulatedPipeline {
             raster: RasterSync::new(CoreCalls::load(ctx)),
             precision: Precision::Float,
             framebuffers: FramebufferMirror::new(true),
+            memo: None,
+            repeated: 0,
         };
         Ok(PathPipeline::from_parts(core, path))
     }
@@ -124,6 +144,7 @@ impl EmulatedPipeline {
     /// The same pipeline computing its stages in `precision` (`ff::precision`).
     pub fn with_precision(mut self, precision: Precision) -> Self {
         self.path.precision = precision;
+        self.path.memo = None;
         self
     }
 
@@ -140,6 +161,7 @@ impl EmulatedPipeline {
     /// pack alignment).
     pub fn forget_bound_framebuffers(&mut self) {
         self.path.framebuffers.invalidate();
+        self.path.memo = None;
     }
 
     /// The framebuffer that stands for the window (framebuffer 0) from now on, and its
@@ -153,6 +175,7 @@ impl EmulatedPipeline {
     ) {
         self.path.framebuffers.set_window(window, color_buffer);
         self.path.window_top_row_first = window.is_none();
+        self.path.memo = None;
         self.core.state.framebuffers.window_bits =
             crate::pipeline::framebuffers::bound_bits(ctx.gl());
     }
@@ -161,6 +184,7 @@ impl EmulatedPipeline {
     /// unchanged), or none: ACCUM_RED_BITS … follow (`ff::accum::ACCUM_BITS` or 0).
     pub fn set_accum_buffer(&mut self, size: Option<(usize, usize)>) {
         use crate::ff::accum::{AccumBuffer, ACCUM_BITS};
+        self.path.memo = None;
         self.path.accum = match (self.path.accum.take(), size) {
             (Some(b), Some(s)) if b.size() == s => Some(b),
             (_, Some((w, h))) => Some(AccumBuffer::new(w, h)),
@@ -196,6 +220,13 @@ impl Emulate {
         if self.user.current().is_some() {
             return self.draw_with_program(gl, state, geometry);
         }
+        if let Some(memo) = self.memo.as_ref().filter(|m| m.repeats(geometry)) {
+            let (program, pass) = (Rc::clone(&memo.program), memo.pass);
+            program.bind_transform(gl, state);
+            self.repeated += 1;
+            return self.draw_geometry(gl, state, &pass, geometry, Raster::AsSent);
+        }
+        self.memo = None;
         let base = ShaderKey::from_state(state, self.precision);
         let mut passes = polygon::passes(
             state.polygon_mode,
@@ -220,7 +251,9 @@ impl Emulate {
             pass.positions = PositionSource::Window;
             let mut key = base;
             key.vertex.positions = PositionSource::Window;
-            return self.draw_pass(gl, state, &key, &pass, Drawn::Dashes(geometry, &dashes));
+            return self
+                .draw_pass(gl, state, &key, &pass, Drawn::Dashes(geometry, &dashes))
+                .map(|_| ());
         }
         // Polygons in LINE mode under LINE_STIPPLE: their outlines cut into dashes as Mesa
         // cuts them (`outline_dashes`), drawn after the draw's other passes.
@@ -237,6 +270,8 @@ impl Emulate {
         if outline.is_some() {
             passes.retain(|p| !p.draws_lines);
         }
+        // One pass of the geometry itself is what a repeated draw can repeat (`repeat`).
+        let repeatable = outline.is_none() && passes.len() == 1;
         // The geometry's own passes read its per-vertex materials; dashes, drawn from window
         // positions without them, take the material state (the base key kept only for
         // them; the last pass takes the key itself).
@@ -256,7 +291,14 @@ impl Emulate {
             key.vertex.point_size = pass.draws_points().then_some(points);
             key.fragment.point_coverage = pass.draws_points() && points.shape == PointShape::Round;
             key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
-            self.draw_pass(gl, state, &key, &pass, Drawn::Geometry(geometry))?;
+            let program = self.draw_pass(gl, state, &key, &pass, Drawn::Geometry(geometry))?;
+            if repeatable {
+                self.memo = Some(repeat::DrawMemo {
+                    geometry: Arc::clone(geometry),
+                    pass,
+                    program,
+                });
+            }
         }
         if let Some((mut pass, dashes)) = outline {
             pass.positions = PositionSource::Window;
@@ -273,6 +315,7 @@ impl Emulate {
 
     /// One pass of a draw: the key's program bound with its uniforms, the units' textures,
     /// the raster state synced, the geometry drawn (primitives and pixel rectangles alike).
+    /// Returns the program.
     fn draw_pass(
         &mut self,
         gl: &glow::Context,
@@ -280,7 +323,7 @@ impl Emulate {
         key: &ShaderKey,
         pass: &polygon::PolygonPass,
         drawn: Drawn,
-    ) -> Result<(), PipelineError> {
+    ) -> Result<Rc<Program>, PipelineError> {
         let program = self.programs.get_or_build(key, |k| Program::build(gl, k))?;
         program.bind(gl, state);
         let units: Vec<_> = key
@@ -291,13 +334,13 @@ impl Emulate {
             .collect();
         self.textures.bind_units(gl, state, &units)?;
         match drawn {
-            Drawn::Geometry(g) => self.draw_geometry(gl, state, pass, g)?,
+            Drawn::Geometry(g) => self.draw_geometry(gl, state, pass, g, Raster::Sync)?,
             Drawn::Dashes(g, d) => {
                 self.raster.sync(gl, state, Some(pass), Winding::AsGiven);
                 dashes::draw(gl, &mut self.sent, state, g, d)?;
             }
         }
-        Ok(())
+        Ok(program)
     }
 
     /// A draw with the plan's program in use (`user_program`): its built-ins from the
@@ -322,19 +365,21 @@ impl Emulate {
             polygon::Outline::of(geometry),
         );
         for pass in passes {
-            self.draw_geometry(gl, state, &pass, geometry)?;
+            self.draw_geometry(gl, state, &pass, geometry, Raster::Sync)?;
         }
         Ok(())
     }
 
-    /// The raster state of `pass` synced and the geometry drawn, in the corner order the
-    /// pass draws it with (`draw::Winding`, which core GL's front face follows).
+    /// The raster state of `pass` synced (unless `raster` says GL has it already) and the
+    /// geometry drawn, in the corner order the pass draws it with (`draw::Winding`, which
+    /// core GL's front face follows).
     fn draw_geometry(
         &mut self,
         gl: &glow::Context,
         state: &FixedState,
         pass: &polygon::PolygonPass,
         geometry: &Arc<Geometry>,
+        raster: Raster,
     ) -> Result<(), PipelineError> {
         let gpu = self.geometry.get(gl, geometry)?;
         let top_row_first = state.framebuffers.draw == 0 && self.window_top_row_first;
@@ -342,7 +387,9 @@ impl Emulate {
             true => Winding::AsGiven,
             false => gpu.winding(pass, state),
         };
-        self.raster.sync(gl, state, Some(pass), winding);
+        if raster == Raster::Sync {
+            self.raster.sync(gl, state, Some(pass), winding);
+        }
         gpu.draw(gl, &mut self.sent, state, winding);
         Ok(())
     }
@@ -383,6 +430,9 @@ impl Issue for Emulate {
     ) -> Result<(), PipelineError> {
         let gl = ctx.gl();
         let state = &core.state;
+        if !repeat::keeps(cmd, state) {
+            self.memo = None;
+        }
         let textures = &mut self.textures;
         if self
             .framebuffers
@@ -510,12 +560,14 @@ impl Issue for Emulate {
             state_calls_skipped: skipped + self.textures.binds_skipped,
             texture_uploads: self.textures.uploads,
             geometry_uploads: self.geometry.uploads(),
+            repeated_draws: self.repeated,
             ..*core
         }
     }
 
     fn release(&mut self, ctx: &GpuContext) {
         let gl = ctx.gl();
+        self.memo = None;
         for p in self.programs.drain() {
             p.delete(gl);
         }

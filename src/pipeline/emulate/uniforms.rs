@@ -208,6 +208,18 @@ impl UniformSource {
         }
     }
 
+    /// Whether the value reads the modelview or projection matrix (and nothing else that
+    /// a matrix command changes): the uniforms a repeated draw sends again (`repeat`).
+    pub fn reads_transform(self) -> bool {
+        matches!(
+            self,
+            UniformSource::Modelview
+                | UniformSource::ModelviewProjection
+                | UniformSource::NormalMatrix
+                | UniformSource::RescaleFactor
+        )
+    }
+
     /// The GLSL type; samplers are typed by the fragment generator (`sampler2D`,
     /// `sampler2DShadow`, …, through `GlslWriter::uniform_typed`).
     pub fn ty(self) -> UniformType {
