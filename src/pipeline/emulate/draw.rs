@@ -317,19 +317,11 @@ impl GpuGeometry {
                 }
                 Ok::<(), PipelineError>(())
             };
-            // Positions whose w is 1 everywhere (every glVertex2/3, every array of 2 or 3
-            // components) go as (x, y, z): GL supplies w = 1 for a three-component
-            // attribute (GL 3.3 §2.8), the same value, and each draw fetches a quarter less.
-            let xyz: Option<Vec<Vec3>> = g
-                .positions
-                .iter()
-                .all(|p| p.w.to_bits() == 1f32.to_bits())
-                .then(|| g.positions.iter().map(|p| p.truncate()).collect());
-            let positions = match &xyz {
-                Some(xyz) => Floats::of3(xyz),
-                None => Floats::of4(&g.positions),
-            };
-            upload(positions, ATTRIB_POSITION, Some(ATTRIB_SHADE_POSITION))?;
+            upload(
+                Floats::of4(&g.positions),
+                ATTRIB_POSITION,
+                Some(ATTRIB_SHADE_POSITION),
+            )?;
             if let Some(n) = &g.normals {
                 upload(Floats::of3(n), ATTRIB_NORMAL, Some(ATTRIB_SHADE_NORMAL))?;
             }
