@@ -89,23 +89,6 @@ impl ClientMemory for WithBuffers<'_> {
     }
 }
 
-/// glPushMatrix, glPopMatrix, glLoadIdentity, glTranslate, glRotate and glScale: what a
-/// frame calls around each object it draws.
-fn is_placement(entry: Entry) -> bool {
-    matches!(
-        entry,
-        Entry::PushMatrix
-            | Entry::PopMatrix
-            | Entry::LoadIdentity
-            | Entry::Translatef
-            | Entry::Translated
-            | Entry::Rotatef
-            | Entry::Rotated
-            | Entry::Scalef
-            | Entry::Scaled
-    )
-}
-
 impl Client {
     /// One call; the Commands it yields are appended to `out`. `state` is the model as
     /// the commands so far left it (current values, textures, what queries read); `mem`
@@ -118,15 +101,6 @@ impl Client {
         out: &mut Vec<Command>,
     ) -> Result<Reply, A::Error> {
         let entry = c.entry();
-        // The calls that place each object of a frame, outside glBegin/glEnd and list
-        // compilation: no stage below takes them but `calls::command`, whose
-        // `transform_and_fragment` makes their Command, so they go to it directly.
-        if is_placement(entry) && !self.immediate.is_open() && self.lists.compiling().is_none() {
-            if let Some(cmd) = super::calls::transform_and_fragment(c)? {
-                out.push(cmd);
-                return Ok(Reply::None);
-            }
-        }
         if let Some(reply) = self.array_enable(c)? {
             return Ok(reply);
         }

@@ -152,6 +152,8 @@ impl EmulatedPipeline {
     /// that changed GL state behind the pipeline (bound another target).
     pub fn forget_sent_state(&mut self) {
         self.path.raster.invalidate();
+        // A repeated draw does not sync the raster state (`repeat`).
+        self.path.memo = None;
         self.forget_bound_framebuffers();
     }
 
@@ -161,7 +163,6 @@ impl EmulatedPipeline {
     /// pack alignment).
     pub fn forget_bound_framebuffers(&mut self) {
         self.path.framebuffers.invalidate();
-        self.path.memo = None;
     }
 
     /// The framebuffer that stands for the window (framebuffer 0) from now on, and its

@@ -23,8 +23,6 @@ pub struct Program {
     uniforms: Vec<(UniformSource, Option<glow::UniformLocation>)>,
     /// The value each of `uniforms` last received (None: never uploaded).
     sent: RefCell<Vec<Option<UniformValue>>>,
-    /// The indices in `uniforms` of those that read the modelview or projection matrix.
-    transform: Vec<usize>,
 }
 
 /// Compiles one stage; a failure carries `label` (the program's key or name), the GLSL and
@@ -112,14 +110,10 @@ impl Program {
                 .map(|u| (u, gl.get_uniform_location(program, &u.name())))
                 .collect();
             let sent = RefCell::new(vec![None; uniforms.len()]);
-            let transform = (0..uniforms.len())
-                .filter(|&i| uniforms[i].0.reads_transform())
-                .collect();
             Ok(Program {
                 program,
                 uniforms,
                 sent,
-                transform,
             })
         }
     }
@@ -127,48 +121,41 @@ impl Program {
     /// Uses the program and uploads the uniforms it declared whose values in `state`
     /// differ from the ones it holds.
     pub fn bind(&self, gl: &glow::Context, state: &FixedState) {
-        let mut sent = self.sent.borrow_mut();
-        // SAFETY: plain GL calls on the current context.
-        unsafe { gl.use_program(Some(self.program)) };
-        for (uniform, held) in self.uniforms.iter().zip(sent.iter_mut()) {
-            upload_changed(gl, uniform, held, state);
-        }
+        self.use_and_upload(gl, state, |_| true);
     }
 
     /// Uses the program and uploads only its uniforms that read the modelview or
     /// projection matrix, where they changed: for a draw after which nothing else the
     /// program reads has changed (`repeat`).
     pub fn bind_transform(&self, gl: &glow::Context, state: &FixedState) {
+        self.use_and_upload(gl, state, UniformSource::reads_transform);
+    }
+
+    /// Uses the program and uploads each uniform `which` selects whose value in `state`
+    /// differs, bit for bit, from the one the program holds.
+    fn use_and_upload(
+        &self,
+        gl: &glow::Context,
+        state: &FixedState,
+        which: impl Fn(UniformSource) -> bool,
+    ) {
         let mut sent = self.sent.borrow_mut();
         // SAFETY: plain GL calls on the current context.
         unsafe { gl.use_program(Some(self.program)) };
-        for &i in &self.transform {
-            if let (Some(uniform), Some(held)) = (self.uniforms.get(i), sent.get_mut(i)) {
-                upload_changed(gl, uniform, held, state);
+        for ((source, location), held) in self.uniforms.iter().zip(sent.iter_mut()) {
+            let Some(loc) = location.as_ref().filter(|_| which(*source)) else {
+                continue; // not selected, or declared but optimised away by the compiler
+            };
+            let value = uniforms::value(*source, state);
+            if held.is_some_and(|h| h.same_bits(&value)) {
+                continue;
             }
+            *held = Some(value);
+            value.upload(gl, loc);
         }
     }
 
     pub fn delete(&self, gl: &glow::Context) {
         unsafe { gl.delete_program(self.program) };
     }
-}
-
-/// Uploads one uniform's value in `state` if it differs, bit for bit, from `held` (what
-/// the program holds), and records it.
-fn upload_changed(
-    gl: &glow::Context,
-    (source, location): &(UniformSource, Option<glow::UniformLocation>),
-    held: &mut Option<UniformValue>,
-    state: &FixedState,
-) {
-    let Some(loc) = location.as_ref() else {
-        return; // declared but optimised away by the compiler
-    };
-    let value = uniforms::value(*source, state);
-    if held.is_some_and(|h| h.same_bits(&value)) {
-        return;
-    }
-    *held = Some(value);
-    value.upload(gl, loc);
 }
