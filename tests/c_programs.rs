@@ -1539,3 +1539,29 @@ fn rasterizer_threads_are_bound_one_per_cpu_unless_left_to_the_kernel() {
         }
     }
 }
+
+/// `tests/c/float_params.c`: float and non-finite parameters as Mesa 22.3 takes them — a
+/// NaN passes the range checks of the spot and attenuation values and SHININESS and reads
+/// back NaN, a NaN alpha reference and priority read back 0, glPixelStoref converts as
+/// `(GLint) lroundf`, a token with a fraction is rounded by glTexParameterf, truncated by the
+/// vector forms and refused by glLightModelf, and the vector forms of scalar parameters
+/// (glTexGeniv(TEXTURE_GEN_MODE), glLightModelfv(TWO_SIDE)) are taken; every line as Mesa
+/// prints it, and the quads lit under NaN attenuations and cutoff as Mesa draws them.
+#[test]
+fn float_and_nonfinite_parameters_are_taken_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("float_params");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "glLightf(SPOT_CUTOFF, nan)             err 0x0  reads nan",
+            "glMaterialf(SHININESS, NaN)              err 0x0",
+            "ALPHA_TEST_REF after NaN (int)           0  err 0x0",
+            "glPixelStoref(UNPACK_ROW_LENGTH, 5e+09)  err 0x0  reads 705032704",
+            "glTexParameterf WRAP_S +0.50  err 0x500 0x2901  fv err 0x0 0x812f",
+            "TEXTURE_GEN_MODE S 0x2402 T 0x2401 R 0x2400",
+            "LIGHT_MODEL_TWO_SIDE                     1  err 0x0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 60, "a float parameter's effect");
+    assert_images_match("float_params", &ours, &mesa, within_3_on_99_percent(&mesa));
+}

@@ -15,6 +15,7 @@ use std::sync::Arc;
 use crate::ff::api::{CType, Entry};
 use crate::ff::args::{Args, PixelShape};
 use crate::ff::client::{ArrayData, ClientMemory};
+use crate::ff::float_token::FloatToken;
 use crate::ff::glenum::{pname_of, value_of, Family, GlEnum};
 use crate::ff::pixel_layout;
 use crate::ff::pixel_store::Packing;
@@ -147,14 +148,12 @@ impl CCall<'_> {
     }
 
     /// A token: an integer argument, or a float holding one (`glTexParameterf(…,
-    /// GL_LINEAR)`), converted as C converts a float to GLenum (truncation).
+    /// GL_LINEAR)`), converted as the call converts it ([`FloatToken`]).
     fn token(&self, i: usize) -> Option<u32> {
         match self.args.get(i)? {
             CArg::Int(v) => u32::try_from(*v).ok(),
-            CArg::Float(v) if v.is_finite() && *v >= 0.0 && *v < 4294967296.0 => {
-                Some(v.trunc() as u32)
-            }
-            _ => None,
+            CArg::Float(v) => FloatToken::of(self.entry).token(*v),
+            CArg::Ptr(..) => None,
         }
     }
 

@@ -668,6 +668,12 @@ pub(super) fn env_scalar<A: Args>(c: &A) -> Result<TexEnvParam, A::Error> {
 }
 
 pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
+    // A level given as a float converts as the call converts a token (glTexParameterf
+    // rounds, glTexParameterfv truncates).
+    let level = |v: f64| -> i32 {
+        let rule = super::float_token::FloatToken::of(c.entry());
+        level_from_float(rule.integer(v).unwrap_or(f64::NAN))
+    };
     Ok(match c.pname(1, TEX_PARAMS)? {
         "GL_TEXTURE_MIN_FILTER" => TexParam::MinFilter(c.enm(2)?),
         "GL_TEXTURE_MAG_FILTER" => TexParam::MagFilter(c.enm(2)?),
@@ -678,13 +684,18 @@ pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
         "GL_TEXTURE_COMPARE_FUNC" => TexParam::CompareFunc(c.enm(2)?),
         "GL_DEPTH_TEXTURE_MODE" => TexParam::DepthTextureMode(c.enm(2)?),
         "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB" => TexParam::CompareFailValue(c.f32(2)?),
-        "GL_TEXTURE_BASE_LEVEL" => TexParam::BaseLevel(level_from_float(c.f64(2)?)),
-        "GL_TEXTURE_MAX_LEVEL" => TexParam::MaxLevel(level_from_float(c.f64(2)?)),
+        "GL_TEXTURE_BASE_LEVEL" => TexParam::BaseLevel(level(c.f64(2)?)),
+        "GL_TEXTURE_MAX_LEVEL" => TexParam::MaxLevel(level(c.f64(2)?)),
         "GL_TEXTURE_MIN_LOD" => TexParam::MinLod(c.f32(2)?),
         "GL_TEXTURE_MAX_LOD" => TexParam::MaxLod(c.f32(2)?),
         "GL_TEXTURE_LOD_BIAS" => TexParam::LodBias(c.f32(2)?),
         "GL_TEXTURE_PRIORITY" => TexParam::Priority(c.f32(2)?),
-        _ => TexParam::GenerateMipmap(c.boolean(2)?),
+        // A float is TRUE when its converted integer is not 0 (glTexParameterf(…, 0.25) is
+        // FALSE on Mesa 22.3).
+        _ => TexParam::GenerateMipmap(match c.entry() {
+            Entry::TexParameterf | Entry::TexParameterfv => level(c.f64(2)?) != 0,
+            _ => c.boolean(2)?,
+        }),
     })
 }
 

@@ -27,8 +27,9 @@ const FOG_VECTORS: &[&str] = &[
 /// The token a vector form's one value names (INVALID_ENUM for a value of no token of `T`).
 fn token_value<A: Args, T: GlEnum>(c: &A) -> Result<T, A::Error> {
     let v = c.floats::<1>(1)?[0];
-    T::from_gl_value(v as u32)
-        .filter(|_| v >= 0.0 && v.fract() == 0.0)
+    super::float_token::FloatToken::of(c.entry())
+        .token(f64::from(v))
+        .and_then(T::from_gl_value)
         .ok_or_else(|| c.unknown(1, T::names()))
 }
 

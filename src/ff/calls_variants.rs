@@ -1,6 +1,7 @@
 //! The integer and transposed variants of GL 1.0–1.5 calls whose float forms `calls`
 //! converts: glLightiv, glLightModeliv, glMateriali/iv, glTexEnviv, glTexParameteriv, the
-//! vector forms glTexEnvfv and glTexParameterfv of scalar parameters, and
+//! vector forms glTexEnvfv, glTexParameterfv, glLightModelfv and glTexGen{i,f,d}v of scalar
+//! parameters, and
 //! glLoadTransposeMatrix / glMultTransposeMatrix (GL 1.3, and their ARB names).
 //!
 //! Integer colours are mapped as GL 1.5 Table 2.9 maps a signed integer, (2c + 1)/(2³² − 1)
@@ -19,6 +20,7 @@ use super::calls::{
 use super::client::ArrayData;
 use super::command::TexData;
 use super::error::GlErrorKind;
+use super::float_token::FloatToken;
 use super::glenum::{pname_of, value_of, Family, GlEnum};
 use super::*;
 
@@ -60,6 +62,27 @@ pub fn variants<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 p => light_scalar(p, c.array_f64(2, 1)?[0] as f32),
             };
             Command::Light { light, param }
+        }
+        // The vector forms of the scalar light-model parameters read params[0] as
+        // glLightModelf reads its value (Mesa 22.3 takes them; GL 1.5 §2.14.2 allows them).
+        Entry::LightModelfv if !pname_is(0, "GL_LIGHT_MODEL_AMBIENT") => {
+            c.count(2)?;
+            let scalar = ScalarAt {
+                entry: Entry::LightModelf,
+                ..ScalarAt::new(c, 1)?
+            };
+            super::calls::lighting(&scalar)?.ok_or_else(|| c.unsupported())?
+        }
+        // glTexGen{i,f,d}v(coord, TEXTURE_GEN_MODE, params): the mode is params[0] (GL 1.5
+        // §2.11.4), truncated from a float as Mesa converts it.
+        Entry::TexGenfv | Entry::TexGendv | Entry::TexGeniv
+            if pname_is(1, "GL_TEXTURE_GEN_MODE") =>
+        {
+            c.count(3)?;
+            Command::TexGen {
+                coord: c.enm(0)?,
+                param: TexGenParam::Mode(ScalarAt::new(c, 2)?.enm(2)?),
+            }
         }
         Entry::LightModeliv => {
             c.count(2)?;
@@ -150,7 +173,7 @@ impl<'a, A: Args> ScalarAt<'a, A> {
     }
 
     fn token_value(&self) -> Option<u32> {
-        (self.value >= 0.0 && self.value < 4294967296.0).then_some(self.value as u32)
+        FloatToken::of(self.entry).token(self.value)
     }
 }
 

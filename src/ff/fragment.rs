@@ -73,6 +73,18 @@ impl AlphaTest {
         func: CompareFunc::Always,
         reference: 0.0,
     };
+
+    /// ALPHA_TEST_REF as glGet answers it: the reference, with a NaN (which the clamp at
+    /// glAlphaFunc keeps) read back as 0, as Mesa 22.3 answers it through every getter
+    /// (measured, `tests/c/float_params.c`). The test itself compares a NaN reference as
+    /// Mesa's llvmpipe does (`pipeline::emulate::uniforms`).
+    pub fn answered_reference(&self) -> f32 {
+        if self.reference.is_nan() {
+            0.0
+        } else {
+            self.reference
+        }
+    }
 }
 
 /// glDepthFunc + glDepthMask. GL default: LESS, mask TRUE. With the depth test disabled the

@@ -374,11 +374,14 @@ impl Client {
             match item {
                 Item::Command(Command::Material { face, param }) if self.immediate.is_open() => {
                     match param {
-                        crate::ff::MaterialParam::Shininess(v) if !(0.0..=128.0).contains(v) => out
-                            .push(Command::Raise {
+                        crate::ff::MaterialParam::Shininess(v)
+                            if super::light::outside(*v, 0.0, 128.0) =>
+                        {
+                            out.push(Command::Raise {
                                 error: GlErrorKind::InvalidValue,
                                 call: Entry::Materialf,
-                            }),
+                            })
+                        }
                         _ => {
                             let op = Op::Material(*face, *param);
                             let _ =

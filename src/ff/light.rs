@@ -97,13 +97,13 @@ impl Light {
                 self.spot_direction = (modelview * d.extend(0.0)).truncate()
             }
             LightParam::SpotExponent(e) => {
-                if !(0.0..=128.0).contains(&e) {
+                if outside(e, 0.0, 128.0) {
                     return Err(GlError::invalid_value("SPOT_EXPONENT must be in [0, 128]"));
                 }
                 self.spot_exponent = e;
             }
             LightParam::SpotCutoff(c) => {
-                if !((0.0..=90.0).contains(&c) || c == 180.0) {
+                if outside(c, 0.0, 90.0) && c != 180.0 {
                     return Err(GlError::invalid_value(
                         "SPOT_CUTOFF must be in [0, 90] or 180",
                     ));
@@ -119,11 +119,19 @@ impl Light {
 }
 
 fn non_negative(k: f32) -> GlResult<f32> {
-    if k >= 0.0 {
-        Ok(k)
-    } else {
+    if k < 0.0 {
         Err(GlError::invalid_value("attenuation factors must be ≥ 0"))
+    } else {
+        Ok(k)
     }
+}
+
+/// Whether `v` lies outside [lo, hi] as Mesa 22.3 tests a light or material parameter
+/// (`v < lo || v > hi`): a NaN is not outside, so it is kept without an error, and reads
+/// back NaN (measured: SPOT_EXPONENT, SPOT_CUTOFF, the attenuations and SHININESS;
+/// `tests/c/float_params.c`). ±∞ beyond the range are refused.
+pub fn outside(v: f32, lo: f32, hi: f32) -> bool {
+    v < lo || v > hi
 }
 
 /// LIGHT_MODEL_COLOR_CONTROL (GL 1.2).
@@ -240,7 +248,7 @@ impl Materials {
     /// glMaterial: validates, then sets the face(s).
     pub fn set(&mut self, face: Face, param: MaterialParam) -> GlResult {
         if let MaterialParam::Shininess(s) = param {
-            if !(0.0..=128.0).contains(&s) {
+            if outside(s, 0.0, 128.0) {
                 return Err(GlError::invalid_value("SHININESS must be in [0, 128]"));
             }
         }

@@ -38,6 +38,7 @@ pub mod combiners;
 pub mod command;
 pub mod compressed;
 pub mod error;
+pub mod float_token;
 pub mod fog;
 pub mod fragment;
 pub mod framebuffer;

@@ -334,7 +334,7 @@ pnames! {
 
     // Per-fragment operations (Table 6.21) and framebuffer control (Table 6.22).
     ALPHA_TEST_FUNC => |s| enm(s.alpha_test.value.func),
-    ALPHA_TEST_REF => |s| normalized(&[s.alpha_test.value.reference]),
+    ALPHA_TEST_REF => |s| normalized(&[s.alpha_test.value.answered_reference()]),
     DEPTH_FUNC => |s| enm(s.depth_test.value.func),
     DEPTH_WRITEMASK => |s| boolean(s.depth_test.value.write),
     STENCIL_FUNC => |s| enm(s.stencil_test.value.func),

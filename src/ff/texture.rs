@@ -467,6 +467,9 @@ impl TexParams {
             TexParam::MaxLod(v) => self.max_lod = v,
             TexParam::LodBias(v) => self.lod_bias = v,
             // NaN stays NaN, as Mesa's CLAMP macro leaves it.
+            // Clamped to [0, 1]; a NaN priority becomes 0, as Mesa 22.3 reads it back
+            // (measured, `tests/c/float_params.c`).
+            TexParam::Priority(v) if v.is_nan() => self.priority = 0.0,
             TexParam::Priority(v) => self.priority = v.clamp(0.0, 1.0),
         }
         Ok(())
