@@ -68,9 +68,9 @@ static void quad(float x, float y) {
 
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "float_params.ppm";
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-  GLubyte *buf = calloc(W * H, 4);
-  if (!ctx || !buf || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) return 2;
+  OSMesaContext ctx;
+  GLubyte *buf = open_window(&ctx, W, H);
+  if (!buf) return 2;
   const float nan = NAN, inf = INFINITY;
   GLfloat v[4];
 
@@ -170,12 +170,6 @@ int main(int argc, char **argv) {
 
   /* Four lit quads, each under one NaN parameter: quadratic attenuation, spot cutoff, linear
    * and constant attenuation. */
-  glViewport(0, 0, W, H);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, W, 0, H, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
   glClearColor(0.1f, 0.1f, 0.1f, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   glEnable(GL_LIGHTING);
@@ -202,10 +196,6 @@ int main(int argc, char **argv) {
   glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, 0);
   glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, nan);
   quad(W / 2 + 2, H / 2 + 2);
-  glFinish();
   err("the lit quads");
-  if (!write_ppm(out, buf, W, H)) return 3;
-  OSMesaDestroyContext(ctx);
-  free(buf);
-  return 0;
+  return finish(out, ctx, buf, W, H);
 }
