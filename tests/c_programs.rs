@@ -1546,7 +1546,8 @@ fn rasterizer_threads_are_bound_one_per_cpu_unless_left_to_the_kernel() {
 /// `(GLint) lroundf`, a token with a fraction is rounded by glTexParameterf, truncated by the
 /// vector forms and refused by glLightModelf, and the vector forms of scalar parameters
 /// (glTexGeniv(TEXTURE_GEN_MODE), glLightModelfv(TWO_SIDE)) are taken; every line as Mesa
-/// prints it, and the quads lit under NaN attenuations and cutoff as Mesa draws them.
+/// prints it, and the quads lit under a NaN spot cutoff, spot exponent, shininess and
+/// attenuation as Mesa draws them.
 #[test]
 fn float_and_nonfinite_parameters_are_taken_as_on_mesa() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("float_params");

@@ -76,12 +76,16 @@ impl Light {
     }
 
     /// cos(cutoff) as Mesa keeps it (`_CosCutoff`): `cosf` of the angle converted to
-    /// radians in double precision, raised to 0 (a cutoff of 90° gives 0, where the
-    /// single-precision cosine gives −4.4·10⁻⁸).
+    /// radians in double precision, raised to 0 when below it (a cutoff of 90° gives 0,
+    /// where the single-precision cosine gives −4.4·10⁻⁸); a NaN cutoff keeps a NaN cosine,
+    /// which no spot factor passes on the vertex path (measured, `tests/c/float_params.c`).
     pub fn cos_cutoff(&self) -> f32 {
-        ((f64::from(self.spot_cutoff) * std::f64::consts::PI / 180.0) as f32)
-            .cos()
-            .max(0.0)
+        let cos = ((f64::from(self.spot_cutoff) * std::f64::consts::PI / 180.0) as f32).cos();
+        if cos < 0.0 {
+            0.0
+        } else {
+            cos
+        }
     }
 
     /// Sets one parameter; positions and directions go to eye space through `modelview`.
@@ -216,6 +220,18 @@ impl Material {
         emission: Vec4::W,
         shininess: 0.0,
     };
+
+    /// The specular exponent a vertex is lit with: the shininess, a NaN one as 128. Mesa's
+    /// vertex program takes the exponent through LIT, which clamps it to [−128, 128] with a
+    /// min and max that drop a NaN (measured: a NaN shininess lights as 128 would,
+    /// `tests/c/float_params.c`). The raster position, lit on the CPU, keeps the NaN.
+    pub fn lit_exponent(&self) -> f32 {
+        if self.shininess.is_nan() {
+            128.0
+        } else {
+            self.shininess
+        }
+    }
 
     fn set(&mut self, param: MaterialParam) {
         match param {

@@ -9,9 +9,8 @@
  *   the others truncate, glLightModelf{,v} want it exact;
  * - the vector forms of the scalar parameters (glTexGeniv(TEXTURE_GEN_MODE),
  *   glLightModelfv(TWO_SIDE) …) are taken.
- * Then draws four lit quads under a NaN spot cutoff and NaN constant, linear and quadratic
- * attenuations (a NaN shininess or spot exponent is left out: drawn, they differ; see the
- * README).
+ * Then draws six lit quads, each under one NaN: spot cutoff, spot exponent, shininess and
+ * the three attenuations.
  *
  * usage: float_params [out.ppm] */
 #define GL_GLEXT_PROTOTYPES
@@ -23,7 +22,7 @@
 
 #include "report.h"
 
-#define W 128
+#define W 192
 #define H 128
 
 static void floats(const char *what, GLenum pname, int n) {
@@ -61,9 +60,10 @@ static void tex_parameter(const char *what, GLenum pname, GLenum token, GLint re
   }
 }
 
-static void quad(float x, float y) {
+/* The quad of panel (column, row), 64×64 with a 2-pixel margin. */
+static void quad(int column, int row) {
   glNormal3f(0, 0, 1);
-  glRectf(x, y, x + W / 2 - 4, y + H / 2 - 4);
+  glRectf(64 * column + 2, 64 * row + 2, 64 * column + 62, 64 * row + 62);
 }
 
 int main(int argc, char **argv) {
@@ -168,13 +168,16 @@ int main(int argc, char **argv) {
   glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 0);
   glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
 
-  /* Four lit quads, each under one NaN parameter: quadratic attenuation, spot cutoff, linear
-   * and constant attenuation. */
+  /* Six lit quads (lit at their corners), each under one NaN parameter: quadratic
+   * attenuation, spot cutoff, linear attenuation; constant attenuation, spot exponent (in a
+   * 60° cone that leaves the outer corners out), shininess (under a directional light, so
+   * that the exponent shows: Mesa lights it as 128). */
   glClearColor(0.1f, 0.1f, 0.1f, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
-  static const GLfloat position[] = {64, 64, 40, 1}, direction[] = {0, 0, -1};
+  static const GLfloat position[] = {W / 2, H / 2, 40, 1}, direction[] = {0, 0, -1};
+  static const GLfloat sun[] = {0.3f, 0.2f, 1, 0};
   static const GLfloat white[] = {1, 1, 1, 1}, grey[] = {0.6f, 0.5f, 0.4f, 1};
   glLightfv(GL_LIGHT0, GL_POSITION, position);
   glLightfv(GL_LIGHT0, GL_SPOT_DIRECTION, direction);
@@ -184,18 +187,28 @@ int main(int argc, char **argv) {
   glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 180);
   glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 0);
   glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, 1);
+  glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, 0);
   glMaterialf(GL_FRONT, GL_SHININESS, 16);
   glLightf(GL_LIGHT0, GL_QUADRATIC_ATTENUATION, nan);
-  quad(2, 2);
+  quad(0, 0);
   glLightf(GL_LIGHT0, GL_QUADRATIC_ATTENUATION, 0);
   glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, nan);
-  quad(W / 2 + 2, 2);
+  quad(1, 0);
   glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 180);
   glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, nan);
-  quad(2, H / 2 + 2);
+  quad(2, 0);
   glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, 0);
   glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, nan);
-  quad(W / 2 + 2, H / 2 + 2);
+  quad(0, 1);
+  glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, 1);
+  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 60);
+  glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, nan);
+  quad(1, 1);
+  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 180);
+  glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 0);
+  glLightfv(GL_LIGHT0, GL_POSITION, sun);
+  glMaterialf(GL_FRONT, GL_SHININESS, nan);
+  quad(2, 1);
   err("the lit quads");
   return finish(out, ctx, buf, W, H);
 }

@@ -368,7 +368,7 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
                 MaterialValue::Diffuse => Vec4(m.diffuse),
                 MaterialValue::Specular => Vec4(m.specular),
                 MaterialValue::Emission => Vec4(m.emission),
-                MaterialValue::Shininess => Float(m.shininess),
+                MaterialValue::Shininess => Float(m.lit_exponent()),
             }
         }
         UniformSource::LightModelAmbient => Vec4(state.light_model.ambient),

@@ -515,12 +515,17 @@ fn emit_light(
         // undefined). GL 1.5 §2.14.1 lights −L·ŝ ≥ cos(cutoff); Mesa's program tests
         // cos(cutoff) < −L·ŝ (SLT) with the cosine raised to 0 and ŝ normalised on the CPU
         // (`LightValue::Spot`, `LightValue::SpotDirection`), so a zero spot direction, which
-        // stays zero, lights nothing but the ambient term (measured on Mesa); followed.
+        // stays zero, lights nothing but the ambient term (measured on Mesa); followed. Mesa
+        // multiplies the test's 0 or 1 by |−L·ŝ|^e, so a NaN exponent makes the factor NaN
+        // outside the cone too (measured: the light then saturates every vertex); followed.
         let dir = u(w, LightValue::SpotDirection);
         let spot = u(w, LightValue::Spot);
         w.line(format!("float {v}_sd = dot(-{v}_dir, {dir}.xyz);"));
         w.line(format!(
-            "{v}_att *= ({v}_sd > {spot}.y) ? (({spot}.x == 0.0) ? 1.0 : pow({v}_sd, {spot}.x)) : 0.0;"
+            "float {v}_spot = ({spot}.x == 0.0) ? 1.0 : pow(abs({v}_sd), {spot}.x);"
+        ));
+        w.line(format!(
+            "{v}_att *= (({v}_sd > {spot}.y) ? 1.0 : 0.0) * {v}_spot;"
         ));
     }
     // n·L of NaN (a NaN light position or direction) counts as facing away: no diffuse or
