@@ -92,6 +92,21 @@ impl<P: Issue> PathPipeline<P> {
     pub fn take_readback(&mut self, slot: u32) -> Option<Readback> {
         self.core.readbacks.remove(&slot)
     }
+
+    /// glBitmap: drawn at the raster position the call finds, then the position advances
+    /// (GL 1.5 §3.7). The model applies the call (errors, the advance); the path then draws
+    /// it against the state from before, so the bitmap lands where the call found the
+    /// position whatever the advance (a fractional or NaN one included).
+    fn bitmap(&mut self, ctx: &GpuContext, cmd: &Command) -> Result<(), PipelineError> {
+        let before = self.core.state.clone();
+        if self.core.state.apply(cmd).is_err() {
+            return Ok(());
+        }
+        let after = std::mem::replace(&mut self.core.state, before);
+        let drawn = self.path.issue(ctx, &mut self.core, cmd);
+        self.core.state = after;
+        drawn
+    }
 }
 
 impl<P: Issue> Pipeline for PathPipeline<P> {
@@ -104,6 +119,10 @@ impl<P: Issue> Pipeline for PathPipeline<P> {
         for cmd in commands {
             self.core.counters.commands += 1;
             let cmd = super::resolve_readback(cmd, &self.core.readbacks)?;
+            if let Command::Bitmap(_) = cmd.as_ref() {
+                self.bitmap(ctx, &cmd)?;
+                continue;
+            }
             if self.core.state.apply(&cmd).is_err() {
                 continue;
             }

@@ -10,7 +10,7 @@
  * - the vector forms of the scalar parameters (glTexGeniv(TEXTURE_GEN_MODE),
  *   glLightModelfv(TWO_SIDE) …) are taken.
  * Then draws six lit quads, each under one NaN: spot cutoff, spot exponent, shininess and
- * the three attenuations.
+ * the three attenuations; and bitmaps advanced by a fraction and by NaN.
  *
  * usage: float_params [out.ppm] */
 #define GL_GLEXT_PROTOTYPES
@@ -210,5 +210,17 @@ int main(int argc, char **argv) {
   glMaterialf(GL_FRONT, GL_SHININESS, nan);
   quad(2, 1);
   err("the lit quads");
+
+  /* Bitmaps along a row with a fractional advance, then two after a NaN advance: the
+   * first is drawn where the position was, the second at x = 0 as Mesa floors a NaN. */
+  glDisable(GL_LIGHTING);
+  glColor3f(1, 1, 0);
+  static const GLubyte box[8] = {0xff, 0x81, 0x81, 0x81, 0x81, 0x81, 0x81, 0xff};
+  glRasterPos2f(3.6f, 118);
+  for (int i = 0; i < 24; i++) glBitmap(8, 8, 0, 0, 7.3f, 0.1f, box);
+  glRasterPos2f(20, 100);
+  glBitmap(8, 8, 0, 0, nan, 0, box);
+  glBitmap(8, 8, 0, 0, 0, 0, box);
+  err("the bitmaps");
   return finish(out, ctx, buf, W, H);
 }

@@ -64,13 +64,21 @@ pub fn draw_corner(state: &FixedState) -> Vec2 {
     Vec2::new(state.raster.window.x.round(), state.raster.window.y.round())
 }
 
-/// The corner of glBitmap: ⌊x_r − x_o + ε⌋ (Mesa; GL 1.5 §3.7 without the ε).
+/// The corner of glBitmap: ⌊x_r − x_o + ε⌋ (Mesa; GL 1.5 §3.7 without the ε). A NaN
+/// coordinate (a NaN advance moved the position) floors to 0, as Mesa's `IFLOOR` takes it
+/// (its bit trick subtracts two equal NaN patterns; measured, a bitmap after a NaN
+/// advance is drawn at x = 0, `tests/c/float_params.c`).
 pub fn bitmap_corner(state: &FixedState, origin: (f32, f32)) -> Vec2 {
     let r = state.raster.window;
-    Vec2::new(
-        (r.x - origin.0 + BITMAP_EPSILON).floor(),
-        (r.y - origin.1 + BITMAP_EPSILON).floor(),
-    )
+    let corner = |v: f32, o: f32| {
+        let c = (v - o + BITMAP_EPSILON).floor();
+        if c.is_nan() {
+            0.0
+        } else {
+            c
+        }
+    };
+    Vec2::new(corner(r.x, origin.0), corner(r.y, origin.1))
 }
 
 /// The state a rectangle at `corner` is drawn under (see the module note); `target` is the
@@ -280,10 +288,9 @@ fn image_bytes(image: &Converted) -> (u32, u32, u32, Vec<u8>) {
 
 impl Emulate {
     /// glBitmap, glDrawPixels or glCopyPixels, which the model accepted; nothing with an
-    /// invalid raster position (§3.6.4, §3.7). The model has already moved the position by
-    /// a bitmap's advance: the bitmap is drawn at the position less the advance (exact for
-    /// the integer advances of text; a fractional one may differ from the native position
-    /// by the rounding of one addition).
+    /// invalid raster position (§3.6.4, §3.7). A bitmap comes with the state from before
+    /// its advance (`PathPipeline::bitmap`): it is drawn at the raster position `state`
+    /// holds.
     pub(super) fn pixel_command(
         &mut self,
         gl: &glow::Context,
@@ -295,9 +302,6 @@ impl Emulate {
         }
         match cmd {
             Command::Bitmap(b) if b.bits.is_some() => {
-                let mut before = state.clone();
-                before.raster.window.x -= b.advance.0;
-                before.raster.window.y -= b.advance.1;
                 let (w, h) = (b.width.max(0) as usize, b.height.max(0) as usize);
                 let bits = (0..h)
                     .flat_map(|y| (0..w).map(move |x| (x, y)))
@@ -307,11 +311,11 @@ impl Emulate {
                 let rect = Rect {
                     width: b.width,
                     height: b.height,
-                    corner: bitmap_corner(&before, b.origin),
+                    corner: bitmap_corner(state, b.origin),
                     zoom: PixelZoom::DEFAULT,
                     image: &image,
                 };
-                self.pixel_rect(gl, &before, rect, PixelSource::Bitmap)
+                self.pixel_rect(gl, state, rect, PixelSource::Bitmap)
             }
             Command::DrawPixels(d) => {
                 let image = d.convert(&state.pixel_transfer, &state.pixel_maps);
