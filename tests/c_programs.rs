@@ -1566,3 +1566,23 @@ fn float_and_nonfinite_parameters_are_taken_as_on_mesa() {
     assert_same_text(&mesa_text, &ours_text, 60, "a float parameter's effect");
     assert_images_match("float_params", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
+
+/// `tests/c/matrices.c`: the matrix commands' arithmetic is Mesa's to the bit — glRotatef
+/// about axis-aligned and general axes at angles of every size (a rotation by −77.7° about
+/// a general axis differed in the last bits when built by GL's formula rather than Mesa's),
+/// glScalef's −0 in the bottom row, chains through the double variants, glFrustum,
+/// glOrtho and glMultMatrix — and non-finite values keep or spread NaN as Mesa's affine
+/// and full products do, Mesa's gathered type flags included.
+#[test]
+fn matrix_commands_compute_as_mesa_does() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("matrices");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "rot NaN                      nan nan nan 0x0p+0 nan nan nan 0x0p+0 0x0p+0 0x0p+0 0x1p+0 0x0p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0",
+            "load, identity, rot NaN      nan nan nan nan nan nan nan nan 0x0p+0 0x0p+0 0x1p+0 0x0p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 115, "a matrix");
+    assert_images_match("matrices", &ours, &mesa, within_3_on_99_percent(&mesa));
+}

@@ -13,7 +13,7 @@
 
 mod support;
 
-use fixedfunc::ff::{matrix, ViewVolume};
+use fixedfunc::ff::{matrix, matrix_ops, ViewVolume};
 use fixedfunc::gpu::{Backend, GpuContext, Profile};
 use fixedfunc::shaders::{self, Stage, F35_PLANES};
 use fixedfunc::vocab::DepthBits;
@@ -50,9 +50,11 @@ const BASE_TEXEL: [u8; 4] = [128, 255, 204, 255];
 /// −y, rolled 15° and shifted, so that neither the rotation nor the translation of the
 /// modelview is trivial.
 fn modelview() -> Mat4 {
-    matrix::rotate(15.0, Vec3::Z)
-        * matrix::rotate(-90.0, Vec3::X)
-        * matrix::translate(Vec3::new(-0.3, 10.0, -0.2))
+    let turn = |deg, axis| matrix_ops::rotation(deg, axis).expect("a rotation");
+    matrix_ops::translate(
+        turn(15.0, Vec3::Z) * turn(-90.0, Vec3::X),
+        Vec3::new(-0.3, 10.0, -0.2),
+    )
 }
 
 /// glOrtho(−6, 6, −3, 3, 1, 20).

@@ -14,7 +14,8 @@ use super::error::{GlError, GlResult};
 use super::fragment::{DepthRange, Face, Viewport};
 use super::geometry::Geometry;
 use super::light::MAX_LIGHTS;
-use super::matrix::{frustum, ortho, plane_to_eye, rotate, scale, translate};
+use super::matrix::{frustum, ortho, plane_to_eye};
+use super::matrix_ops::{rotation, scale, translate, Product};
 use super::state::{FixedState, PolygonModes, MAX_TEXTURE_UNITS};
 use super::texture::{
     check_format_pair, check_image_size, volume_size, PixelData, TexLevel, TextureObject,
@@ -63,16 +64,26 @@ impl FixedState {
                 })
             }
             Command::MatrixMode(m) => self.matrix_mode = *m,
-            Command::LoadIdentity => self.current_stack_mut().set_top(glam::Mat4::IDENTITY),
+            Command::LoadIdentity => self.current_stack_mut().load_identity(),
             Command::LoadMatrix(m) => self.current_stack_mut().set_top(*m),
-            Command::MultMatrix(m) => self.mult(*m),
+            Command::MultMatrix(m) => self.current_stack_mut().multiply(*m, Product::General),
             Command::PushMatrix => self.current_stack_mut().push()?,
             Command::PopMatrix => self.current_stack_mut().pop()?,
-            Command::Translate(v) => self.mult(translate(*v)),
-            Command::Rotate { angle_deg, axis } => self.mult(rotate(*angle_deg, *axis)),
-            Command::Scale(v) => self.mult(scale(*v)),
-            Command::Frustum(v) => self.mult(frustum(*v)?),
-            Command::Ortho(v) => self.mult(ortho(*v)?),
+            Command::Translate(v) => self.current_stack_mut().update(|m| translate(m, *v)),
+            Command::Rotate { angle_deg, axis } => {
+                if let Some(r) = rotation(*angle_deg, *axis) {
+                    self.current_stack_mut().multiply(r, Product::AffineKept)
+                }
+            }
+            Command::Scale(v) => self.current_stack_mut().update(|m| scale(m, *v)),
+            Command::Frustum(v) => {
+                let n = frustum(*v)?;
+                self.current_stack_mut().multiply(n, Product::General)
+            }
+            Command::Ortho(v) => {
+                let n = ortho(*v)?;
+                self.current_stack_mut().multiply(n, Product::AffineKept)
+            }
             Command::Viewport(v) => self.viewport = check_viewport(*v)?,
             Command::DepthRange { near, far } => {
                 self.depth_range = DepthRange {
@@ -387,13 +398,6 @@ impl FixedState {
             }
         }
         Ok(())
-    }
-
-    /// M ← M·N on the current stack.
-    fn mult(&mut self, n: glam::Mat4) {
-        let stack = self.current_stack_mut();
-        let m = stack.top();
-        stack.set_top(m * n);
     }
 
     fn set_capability(&mut self, cap: Capability, on: bool) -> GlResult {

@@ -8,9 +8,10 @@
 //! Table 6.43 are 32, 2 and 2): a program that runs on Mesa's native path runs here, and
 //! overflows where Mesa overflows (a test reads the native GL_MAX_*_STACK_DEPTH).
 
-use glam::{Mat4, Vec3, Vec4};
+use glam::{Mat4, Vec4};
 
 use super::error::{GlError, GlResult};
+use super::matrix_ops::{MatrixKind, Product};
 
 /// GL_MAX_MODELVIEW_STACK_DEPTH (Mesa's MAX_MODELVIEW_STACK_DEPTH).
 pub const MODELVIEW_STACK_DEPTH: usize = 32;
@@ -40,10 +41,11 @@ pub struct ViewVolume {
     pub far: f32,
 }
 
-/// A matrix stack: never empty, the last element is the current matrix.
+/// A matrix stack: never empty, the last element is the current matrix, with the kind
+/// that decides how Mesa multiplies onto it (`matrix_ops`); glPushMatrix copies both.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MatrixStack {
-    stack: Vec<Mat4>,
+    stack: Vec<(Mat4, MatrixKind)>,
     max_depth: usize,
 }
 
@@ -51,22 +53,56 @@ impl MatrixStack {
     /// A stack holding one identity matrix (GL default).
     pub fn new(max_depth: usize) -> Self {
         Self {
-            stack: vec![Mat4::IDENTITY],
+            stack: vec![(Mat4::IDENTITY, MatrixKind::Affine)],
             max_depth: max_depth.max(1),
         }
     }
 
     /// The current matrix.
     pub fn top(&self) -> Mat4 {
-        self.stack.last().copied().unwrap_or(Mat4::IDENTITY)
+        self.current().0
     }
 
-    /// Replaces the current matrix.
-    pub fn set_top(&mut self, m: Mat4) {
+    fn current(&self) -> (Mat4, MatrixKind) {
+        self.stack
+            .last()
+            .copied()
+            .unwrap_or((Mat4::IDENTITY, MatrixKind::Affine))
+    }
+
+    fn set(&mut self, m: Mat4, kind: MatrixKind) {
         match self.stack.last_mut() {
-            Some(top) => *top = m,
-            None => self.stack.push(m),
+            Some(top) => *top = (m, kind),
+            None => self.stack.push((m, kind)),
         }
+    }
+
+    /// glLoadMatrix (and any matrix set whole): the current matrix, of general kind.
+    pub fn set_top(&mut self, m: Mat4) {
+        self.set(m, MatrixKind::General);
+    }
+
+    /// glLoadIdentity. The kind stays: Mesa's `_math_matrix_set_identity` clears only the
+    /// dirty bits of the type flags, so a matrix that was general (a glFrustum, glLoadMatrix
+    /// or glMultMatrix before) is still multiplied in full (measured: glRotatef(NaN) after
+    /// glLoadMatrixf and glLoadIdentity leaves NaN in the bottom row).
+    pub fn load_identity(&mut self) {
+        let (_, kind) = self.current();
+        self.set(Mat4::IDENTITY, kind);
+    }
+
+    /// M ← M·N for a command whose matrix is N (`matrix_ops::multiply`).
+    pub fn multiply(&mut self, n: Mat4, product: Product) {
+        let (m, kind) = self.current();
+        let (p, kind) = super::matrix_ops::multiply(m, kind, n, product);
+        self.set(p, kind);
+    }
+
+    /// A command that changes the current matrix in place (glTranslate, glScale): its kind
+    /// stays.
+    pub fn update(&mut self, f: impl FnOnce(Mat4) -> Mat4) {
+        let (m, kind) = self.current();
+        self.set(f(m), kind);
     }
 
     /// Number of matrices on the stack (GL_*_STACK_DEPTH; 1 initially).
@@ -83,7 +119,7 @@ impl MatrixStack {
         if self.stack.len() >= self.max_depth {
             return Err(GlError::stack_overflow("PushMatrix on a full matrix stack"));
         }
-        self.stack.push(self.top());
+        self.stack.push(self.current());
         Ok(())
     }
 
@@ -167,50 +203,6 @@ pub fn ortho(v: ViewVolume) -> GlResult<Mat4> {
     ))
 }
 
-/// glRotate (GL 1.5 §2.11.2): with u = axis/|axis| and θ in degrees,
-/// R = u·uᵀ + cos θ·(I − u·uᵀ) + sin θ·S(u), counter-clockwise looking down −u.
-/// A zero axis leaves the matrix unchanged (identity), as Mesa does.
-///
-/// A rotation about one coordinate axis fills only its 2 × 2 block, with s and c the
-/// float sine and cosine of angle·π/180, so the axis keeps an exact 1 on the diagonal
-/// (Mesa's `_math_matrix_rotate` special case, which GL's general formula, evaluated in
-/// floats, misses by an ulp).
-pub fn rotate(angle_deg: f32, axis: Vec3) -> Mat4 {
-    let len = axis.length();
-    if len == 0.0 || !len.is_finite() {
-        return Mat4::IDENTITY;
-    }
-    let a = (f64::from(angle_deg) * std::f64::consts::PI / 180.0) as f32;
-    let (s, c) = (a.sin(), a.cos());
-    // Columns of the block for the two axes the rotation turns (i → j).
-    let block = |i: usize, j: usize, s: f32| {
-        let mut m = Mat4::IDENTITY;
-        m.col_mut(i)[i] = c;
-        m.col_mut(j)[j] = c;
-        m.col_mut(i)[j] = s;
-        m.col_mut(j)[i] = -s;
-        m
-    };
-    // About the negative axis: the opposite turn.
-    let toward = |v: f32| if v < 0.0 { -s } else { s };
-    match (axis.x == 0.0, axis.y == 0.0, axis.z == 0.0) {
-        (true, true, false) => block(0, 1, toward(axis.z)),
-        (true, false, true) => block(2, 0, toward(axis.y)),
-        (false, true, true) => block(1, 2, toward(axis.x)),
-        _ => Mat4::from_axis_angle(axis / len, angle_deg.to_radians()),
-    }
-}
-
-/// glTranslate: the identity with (x, y, z) in the last column.
-pub fn translate(v: Vec3) -> Mat4 {
-    Mat4::from_translation(v)
-}
-
-/// glScale: diag(x, y, z, 1).
-pub fn scale(v: Vec3) -> Mat4 {
-    Mat4::from_scale(v)
-}
-
 /// M⁻¹, or the identity when M is singular or not finite (Mesa's `_math_matrix_analyse`
 /// falls back to the identity when inversion fails; GL leaves the result undefined).
 pub fn inverse_or_identity(m: Mat4) -> Mat4 {
@@ -291,14 +283,6 @@ mod tests {
         let ours = ortho(v).unwrap();
         let glam = glam::camera::rh::proj::opengl::orthographic(-2.0, 3.0, -1.0, 4.0, 0.5, 9.0);
         assert!(ours.abs_diff_eq(glam, 1e-6));
-    }
-
-    #[test]
-    fn rotate_is_counter_clockwise_about_the_axis() {
-        let r = rotate(90.0, Vec3::new(0.0, 0.0, 2.0));
-        let x = r * Vec4::X;
-        assert!(x.abs_diff_eq(Vec4::Y, 1e-6));
-        assert_eq!(rotate(30.0, Vec3::ZERO), Mat4::IDENTITY);
     }
 
     #[test]

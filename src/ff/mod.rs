@@ -50,6 +50,7 @@ pub mod light;
 pub mod list_pairs;
 pub mod lists;
 pub mod matrix;
+pub mod matrix_ops;
 pub mod pixels;
 pub mod point;
 pub mod precision;
