@@ -104,22 +104,6 @@ pub const PNAMES: &[&str] = &[
     "GL_UNPACK_SKIP_IMAGES",
 ];
 
-/// glPixelStoref's value as Mesa 22.3 hands it to glPixelStorei, `(GLint) lroundf(v)` on
-/// x86-64: rounded to the nearest integer, halves away from zero, into 64 bits, of which
-/// the low 32 are kept; a NaN, ±∞ or a value beyond the 64-bit range gives LONG_MIN, whose
-/// low 32 bits are 0 (measured, `tests/c/float_params.c`: 5e9 sets a ROW_LENGTH of
-/// 705032704, 1e20 and NaN set 0, none with an error; 3e9 wraps negative and is refused).
-pub fn as_c_lround(v: f64) -> i32 {
-    const LONG_RANGE: f64 = 9_223_372_036_854_775_808.0; // 2^63
-    let r = v.round();
-    let wide = if r.is_nan() || !(-LONG_RANGE..LONG_RANGE).contains(&r) {
-        i64::MIN
-    } else {
-        r as i64
-    };
-    wide as i32
-}
-
 impl PixelStore {
     /// The bytes from one row's start to the next: `row` rounded up to `alignment`.
     pub fn stride(row: usize, alignment: usize) -> usize {
@@ -127,14 +111,16 @@ impl PixelStore {
     }
 
     /// glPixelStore{i,f}(pname, param), as Mesa's `_mesa_PixelStorei` (glPixelStoref
-    /// passes its value converted by [`as_c_lround`]): a name
+    /// passes its value converted by `query::round_to_int`, `(GLint) lroundf`; measured,
+    /// `tests/c/float_params.c`: 5e9 sets a ROW_LENGTH of 705032704, 1e20 and NaN set 0,
+    /// none with an error; 3e9 wraps negative and is refused): a name
     /// outside Table 3.1 is INVALID_ENUM; a negative ROW_LENGTH, SKIP_* or IMAGE_HEIGHT,
     /// or an alignment other than 1, 2, 4 or 8, INVALID_VALUE (GL 1.5 §4.3.1); SWAP_BYTES
     /// and LSB_FIRST are TRUE for any value ≠ 0. A bad call changes nothing.
     pub fn call<A: Args>(&mut self, c: &A) -> Result<(), A::Error> {
         c.count(2)?;
         let pname = c.pname(0, PNAMES)?;
-        let v = f64::from(as_c_lround(c.f64(1)?));
+        let v = f64::from(super::query::round_to_int(c.f64(1)?));
         let (side, name) = match pname.strip_prefix("GL_PACK_") {
             Some(n) => (&mut self.pack, n),
             None => (&mut self.unpack, &pname["GL_UNPACK_".len()..]),
@@ -215,18 +201,5 @@ mod tests {
             assert_eq!(s.get(p), Some(want), "{p}");
         }
         assert_eq!(s.get("GL_RED_SCALE"), None);
-    }
-
-    #[test]
-    fn pixel_store_floats_convert_as_c_lround_then_int() {
-        assert_eq!(as_c_lround(2.5), 3);
-        assert_eq!(as_c_lround(-2.5), -3);
-        assert_eq!(as_c_lround(3.4), 3);
-        assert_eq!(as_c_lround(-0.4), 0);
-        assert_eq!(as_c_lround(5e9), 705_032_704);
-        assert_eq!(as_c_lround(3e9), -1_294_967_296);
-        for v in [1e20, -1e20, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
-            assert_eq!(as_c_lround(v), 0, "{v}");
-        }
     }
 }

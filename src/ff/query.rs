@@ -86,6 +86,9 @@ pub enum QueryValue {
     Normalized(f32),
     /// A float that Mesa's `…iv` getter casts to GLint, truncating.
     Truncated(f32),
+    /// A float that Mesa's `…iv` getter rounds and clamps to GLint (a texture's MIN_LOD,
+    /// MAX_LOD and LOD_BIAS): [`saturated_round`].
+    Saturated(f32),
     /// A value GL keeps as a double (DEPTH_CLEAR_VALUE, Mesa's TYPE_DOUBLEN): as an
     /// integer by `FLOAT_TO_INT` of the double, as a float rounded once.
     NormalizedDouble(f64),
@@ -102,7 +105,10 @@ impl QueryValue {
             QueryValue::Int(i) => i != 0,
             QueryValue::UInt(u) | QueryValue::Enum(u) => u != 0,
             // C truth: NaN is TRUE.
-            QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => f != 0.0,
+            QueryValue::Float(f)
+            | QueryValue::Normalized(f)
+            | QueryValue::Truncated(f)
+            | QueryValue::Saturated(f) => f != 0.0,
             QueryValue::NormalizedDouble(d) => d != 0.0,
         }
     }
@@ -114,10 +120,11 @@ impl QueryValue {
             QueryValue::Int(i) => i,
             QueryValue::UInt(u) => u.min(i32::MAX as u32) as i32,
             QueryValue::Enum(e) => e as i32,
-            QueryValue::Float(f) => round_to_int(f),
+            QueryValue::Float(f) => round_to_int(f64::from(f)),
             QueryValue::Normalized(f) => normalized_to_int(f64::from(f)),
             QueryValue::NormalizedDouble(d) => normalized_to_int(d),
             QueryValue::Truncated(f) => c_int(f64::from(f)),
+            QueryValue::Saturated(f) => saturated_round(f),
         }
     }
 
@@ -127,7 +134,10 @@ impl QueryValue {
             QueryValue::Bool(b) => f32::from(u8::from(b)),
             QueryValue::Int(i) => i as f32,
             QueryValue::UInt(u) | QueryValue::Enum(u) => u as f32,
-            QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => f,
+            QueryValue::Float(f)
+            | QueryValue::Normalized(f)
+            | QueryValue::Truncated(f)
+            | QueryValue::Saturated(f) => f,
             QueryValue::NormalizedDouble(d) => d as f32,
         }
     }
@@ -138,25 +148,42 @@ impl QueryValue {
             QueryValue::Bool(b) => f64::from(u8::from(b)),
             QueryValue::Int(i) => f64::from(i),
             QueryValue::UInt(u) | QueryValue::Enum(u) => f64::from(u),
-            QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => {
-                f64::from(f)
-            }
+            QueryValue::Float(f)
+            | QueryValue::Normalized(f)
+            | QueryValue::Truncated(f)
+            | QueryValue::Saturated(f) => f64::from(f),
             QueryValue::NormalizedDouble(d) => d,
         }
     }
 }
 
-/// Mesa's float → GLint for ordinary values: `lroundf` (nearest, halves away from zero) into
-/// a `long`, stored into a GLint (the low 32 bits). `lroundf` of NaN or of a value beyond
-/// `long` is `LONG_MIN` on x86-64 glibc, whose low 32 bits are 0.
-pub fn round_to_int(f: f32) -> i32 {
-    let r = f64::from(f).round();
+/// Mesa's float → GLint for ordinary values, and glPixelStoref's value: `lroundf`
+/// (nearest, halves away from zero) into a `long`, stored into a GLint (the low 32 bits:
+/// 5e9 gives 705032704). `lroundf` of NaN or of a value beyond `long` is `LONG_MIN` on
+/// x86-64 glibc, whose low 32 bits are 0.
+pub fn round_to_int(f: f64) -> i32 {
+    let r = f.round();
     // 2⁶³: the first value outside `long`.
     const LONG_RANGE: f64 = 9_223_372_036_854_775_808.0;
     if r.is_nan() || !(-LONG_RANGE..LONG_RANGE).contains(&r) {
         return 0;
     }
     (r as i64) as i32
+}
+
+/// A texture's LOD parameter as Mesa's glGetTexParameteriv answers it: rounded to nearest
+/// (halves away from zero) and clamped to GLint, the value "so large in magnitude that it
+/// cannot be represented" giving the nearest representable one; a NaN reads −2³¹
+/// (measured: 2.5 → 3, 1e10 → 2147483647, −1e10 and NaN → −2147483648).
+pub fn saturated_round(f: f32) -> i32 {
+    let r = f64::from(f).round();
+    if r.is_nan() || r <= f64::from(i32::MIN) {
+        i32::MIN
+    } else if r >= f64::from(i32::MAX) {
+        i32::MAX
+    } else {
+        r as i32
+    }
 }
 
 /// Mesa's `FLOAT_TO_INT(x) = (GLint)(2147483647.0 · x)`: linear, [−1, 1] → [−(2³¹ − 1),
@@ -671,7 +698,10 @@ impl FixedState {
     pub fn get_tex_env(&self, target: u32, pname: u32) -> Result<Queried, GlErrorKind> {
         let e: &TexEnv = &self.units[self.active_unit()].env;
         match (target, pname) {
-            (r::TEXTURE_FILTER_CONTROL, r::TEXTURE_LOD_BIAS) => return Ok(floats(&[e.lod_bias])),
+            // Mesa's glGetTexEnviv casts the bias to GLint (measured: 2.5 reads 2).
+            (r::TEXTURE_FILTER_CONTROL, r::TEXTURE_LOD_BIAS) => {
+                return Ok(vec![QueryValue::Truncated(e.lod_bias)])
+            }
             (r::TEXTURE_ENV, _) => {}
             _ => return Err(GlErrorKind::InvalidEnum),
         }
@@ -737,9 +767,9 @@ impl FixedState {
             TEXTURE_COMPARE_FAIL_VALUE_ARB => floats(&[p.compare_fail_value]),
             r::TEXTURE_BASE_LEVEL => int(p.base_level),
             r::TEXTURE_MAX_LEVEL => int(p.max_level),
-            r::TEXTURE_MIN_LOD => floats(&[p.min_lod]),
-            r::TEXTURE_MAX_LOD => floats(&[p.max_lod]),
-            r::TEXTURE_LOD_BIAS => floats(&[p.lod_bias]),
+            r::TEXTURE_MIN_LOD => vec![QueryValue::Saturated(p.min_lod)],
+            r::TEXTURE_MAX_LOD => vec![QueryValue::Saturated(p.max_lod)],
+            r::TEXTURE_LOD_BIAS => vec![QueryValue::Saturated(p.lod_bias)],
             // As an integer, the colour-style conversion (Mesa: 1 → INT_MAX).
             r::TEXTURE_PRIORITY => normalized(&[p.priority]),
             // Every texture is resident.
@@ -877,6 +907,27 @@ mod tests {
     use glam::Vec4;
 
     /// GL 1.5 §6.1.2 as Mesa converts, at the boundaries.
+    #[test]
+    fn floats_become_ints_by_mesa_s_three_rules() {
+        // lroundf into a long, its low 32 bits kept (queries and glPixelStoref).
+        assert_eq!(round_to_int(2.5), 3);
+        assert_eq!(round_to_int(-2.5), -3);
+        assert_eq!(round_to_int(-0.4), 0);
+        assert_eq!(round_to_int(5e9), 705_032_704);
+        assert_eq!(round_to_int(3e9), -1_294_967_296);
+        for v in [1e20, -1e20, f64::NAN, f64::INFINITY] {
+            assert_eq!(round_to_int(v), 0, "{v}");
+        }
+        // Rounded and clamped (a texture's LOD parameters).
+        assert_eq!(saturated_round(2.5), 3);
+        assert_eq!(saturated_round(1e10), i32::MAX);
+        assert_eq!(saturated_round(-1e10), i32::MIN);
+        assert_eq!(saturated_round(f32::NAN), i32::MIN);
+        // C's cast (the environment's LOD bias).
+        assert_eq!(c_int(2.5), 2);
+        assert_eq!(c_int(1e10), i32::MIN);
+    }
+
     #[test]
     fn conversions_at_their_boundaries() {
         let n = QueryValue::Normalized;

@@ -1062,9 +1062,10 @@ fn value(v: QueryValue, pname: u32) -> String {
         QueryValue::UInt(u) if u > 0xFFFF => format!("{u:#X}"),
         QueryValue::UInt(u) => u.to_string(),
         QueryValue::Enum(e) => enum_name(e, pname),
-        QueryValue::Float(f) | QueryValue::Normalized(f) | QueryValue::Truncated(f) => {
-            number(f64::from(f))
-        }
+        QueryValue::Float(f)
+        | QueryValue::Normalized(f)
+        | QueryValue::Truncated(f)
+        | QueryValue::Saturated(f) => number(f64::from(f)),
         QueryValue::NormalizedDouble(d) => number(d),
     }
 }

@@ -3,7 +3,8 @@
  * - NaN passes Mesa's range checks (`v < lo || v > hi`) of SPOT_EXPONENT, SPOT_CUTOFF, the
  *   attenuations and SHININESS, scalar and vector forms, and reads back NaN; ±∞ beyond the
  *   range are INVALID_VALUE;
- * - a NaN alpha reference and texture priority read back 0;
+ * - a NaN alpha reference and texture priority read back 0; a texture's LOD parameters
+ *   read as integers are rounded and clamped, the environment's LOD bias truncated;
  * - glPixelStoref converts as (GLint) lroundf: 5e9 wraps, 1e20, ±∞ and NaN give 0;
  * - a token passed as a float with a fraction: glTexParameterf rounds, glTexParameterfv and
  *   the others truncate, glLightModelf{,v} want it exact;
@@ -122,6 +123,27 @@ int main(int argc, char **argv) {
   glPixelStoref(GL_UNPACK_ALIGNMENT, 1.5f);
   ints("UNPACK_ALIGNMENT after 1.5", GL_UNPACK_ALIGNMENT);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+
+  /* A texture's LOD parameters read as integers are rounded and clamped (NaN reads
+   * −2³¹); the environment's LOD bias is cast, truncating. */
+  static const float lods[] = {2.5f, -2.5f, 0.7f, 1e10f, -1e10f, NAN};
+  for (unsigned i = 0; i < sizeof lods / sizeof lods[0]; i++) {
+    GLint min = -7, max = -7, bias = -7, env = -7;
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, lods[i]);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, lods[i]);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, lods[i]);
+    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, lods[i]);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, &min);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, &max);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, &bias);
+    glGetTexEnviv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, &env);
+    printf("LOD %g  MIN_LOD %d MAX_LOD %d LOD_BIAS %d  env LOD_BIAS %d  err 0x%x\n", lods[i], min,
+           max, bias, env, glGetError());
+  }
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, -1000);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 1000);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, 0);
+  glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 0);
 
   tex_parameter("MIN_FILTER", GL_TEXTURE_MIN_FILTER, GL_LINEAR, GL_NEAREST_MIPMAP_LINEAR);
   tex_parameter("WRAP_S", GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE, GL_REPEAT);
