@@ -182,17 +182,22 @@ pub fn answer<A: Args>(
 }
 
 /// glGetPixelMap{f,ui,us}v's values, as Mesa's `_mesa_GetnPixelMap*` converts them: an
-/// index map's (I_TO_I, S_TO_S) integers as they are (clamped to [0, 65535] for GLushort);
-/// a colour map's c as floor(c · (2³² − 1)) for GLuint and round_even(c · 65535) for
-/// GLushort.
+/// index map's (I_TO_I, S_TO_S) integers as they are for GLushort (clamped to [0, 65535]);
+/// a colour map's c as round_even(c · 65535) for GLushort. For GLuint every map but S_TO_S
+/// goes through Mesa's `FLOAT_TO_UINT`, (GLuint)(c · (2³² − 1)) — an index too, a Mesa
+/// fault followed (measured: I_TO_I 7 reads 4294967289, the low 32 bits of 7 · (2³² − 1));
+/// S_TO_S is copied as bytes, so its float's bits are read (3 reads 1077936128).
 fn pixel_map_bytes(entry: Entry, map: PixelMapName, values: &[f32]) -> Vec<u8> {
     let index = map.holds_integers();
     values
         .iter()
         .flat_map(|v| match entry {
             Entry::GetPixelMapfv => v.to_ne_bytes().to_vec(),
-            Entry::GetPixelMapuiv if index => (*v as u32).to_ne_bytes().to_vec(),
-            Entry::GetPixelMapuiv => ((f64::from(*v) * 4294967295.0) as u32)
+            Entry::GetPixelMapuiv if map == PixelMapName::SToS => {
+                v.to_bits().to_ne_bytes().to_vec()
+            }
+            Entry::GetPixelMapuiv => (super::query::c_long((f64::from(*v) * 4294967295.0).trunc())
+                as u32)
                 .to_ne_bytes()
                 .to_vec(),
             _ if index => (v.clamp(0.0, 65535.0) as u16).to_ne_bytes().to_vec(),

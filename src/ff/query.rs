@@ -162,13 +162,19 @@ impl QueryValue {
 /// 5e9 gives 705032704). `lroundf` of NaN or of a value beyond `long` is `LONG_MIN` on
 /// x86-64 glibc, whose low 32 bits are 0.
 pub fn round_to_int(f: f64) -> i32 {
-    let r = f.round();
+    c_long(f.round()) as i32
+}
+
+/// C's conversion of an integral double to `long` on x86-64 (`cvttsd2si`): `LONG_MIN` for
+/// NaN and values beyond ±2⁶³ (whose low 32 bits are 0).
+pub fn c_long(t: f64) -> i64 {
     // 2⁶³: the first value outside `long`.
     const LONG_RANGE: f64 = 9_223_372_036_854_775_808.0;
-    if r.is_nan() || !(-LONG_RANGE..LONG_RANGE).contains(&r) {
-        return 0;
+    if t.is_nan() || !(-LONG_RANGE..LONG_RANGE).contains(&t) {
+        i64::MIN
+    } else {
+        t as i64
     }
-    (r as i64) as i32
 }
 
 /// A texture's LOD parameter as Mesa's glGetTexParameteriv answers it: rounded to nearest

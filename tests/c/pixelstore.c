@@ -371,11 +371,11 @@ int main(int argc, char **argv) {
       glGetPixelMapfv(m[i].map, f);
       glGetPixelMapuiv(m[i].map, u);
       glGetPixelMapusv(m[i].map, us);
-      /* GLuint of an index map is left out: Mesa 22.3 gives I_TO_I as FLOAT_TO_UINT of
-       * the integer (7 → 2^32 − 7, a wrapped overflow) and S_TO_S as the float's bits. */
-      int index = m[i].map == GL_PIXEL_MAP_I_TO_I || m[i].map == GL_PIXEL_MAP_S_TO_S;
+      /* GLuint of an index map as Mesa 22.3 gives it (and the layer follows): I_TO_I as
+       * FLOAT_TO_UINT of the integer (7 → 2^32 − 7, a wrapped overflow), S_TO_S as the
+       * float's bits. */
       printf("%s size %d:", m[i].name, n);
-      for (int k = 0; k < n && k < 8; k++) printf(" %.4f/%u/%u", f[k], index ? 0u : u[k], us[k]);
+      for (int k = 0; k < n && k < 8; k++) printf(" %.4f/%u/%u", f[k], u[k], us[k]);
       printf("\n");
     }
     GLint max = 0;
