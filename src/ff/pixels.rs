@@ -107,7 +107,14 @@ impl PixelTransfer {
 
     /// d·DEPTH_SCALE + DEPTH_BIAS clamped to [0, 1].
     pub fn depth(&self, d: f32) -> f32 {
-        (d * self.depth_scale + self.depth_bias).clamp(0.0, 1.0)
+        let v = d * self.depth_scale + self.depth_bias;
+        // A NaN depth is drawn as 0 (measured on Mesa 22.3: glDrawPixels of a NaN
+        // GL_FLOAT depth writes 0).
+        if v.is_nan() {
+            0.0
+        } else {
+            v.clamp(0.0, 1.0)
+        }
     }
 
     /// The index arithmetic of §3.6.4 on a stencil value, masked to the stencil bits:

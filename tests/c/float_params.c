@@ -10,6 +10,7 @@
  *   the others truncate, glLightModelf{,v} want it exact;
  * - the vector forms of the scalar parameters (glTexGeniv(TEXTURE_GEN_MODE),
  *   glLightModelfv(TWO_SIDE) …) are taken.
+ * A NaN depth drawn by glDrawPixels is written as 0.
  * Then draws six lit quads, each under one NaN: spot cutoff, spot exponent, shininess and
  * the three attenuations; and bitmaps advanced by a fraction and by NaN.
  *
@@ -189,6 +190,19 @@ int main(int argc, char **argv) {
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 0);
   glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 0);
   glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
+
+  /* Depths drawn by glDrawPixels: a NaN is written as 0, ±∞ clamped. */
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  static const GLfloat depths[4] = {NAN, INFINITY, -INFINITY, 0.25f};
+  glRasterPos2i(0, 0);
+  glDrawPixels(4, 1, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+  GLuint drawn[4] = {7, 7, 7, 7};
+  glReadPixels(0, 0, 4, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, drawn);
+  printf("glDrawPixels depths NaN, inf, -inf, 0.25: %x %x %x %x  err 0x%x\n", drawn[0], drawn[1],
+         drawn[2], drawn[3], glGetError());
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
 
   /* Six lit quads (lit at their corners), each under one NaN parameter: quadratic
    * attenuation, spot cutoff, linear attenuation; constant attenuation, spot exponent (in a
