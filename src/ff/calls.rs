@@ -668,9 +668,9 @@ pub(super) fn env_scalar<A: Args>(c: &A) -> Result<TexEnvParam, A::Error> {
 }
 
 pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
-    // A level given as a float converts as the call converts a token (glTexParameterf
-    // rounds, glTexParameterfv truncates).
-    let level = |v: f64| -> i32 {
+    // A level or a boolean given as a float converts as the call converts a token
+    // (glTexParameterf rounds, glTexParameterfv truncates).
+    let integral = |v: f64| -> i32 {
         let rule = super::float_token::FloatToken::of(c.entry());
         level_from_float(rule.integer(v).unwrap_or(f64::NAN))
     };
@@ -684,8 +684,8 @@ pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
         "GL_TEXTURE_COMPARE_FUNC" => TexParam::CompareFunc(c.enm(2)?),
         "GL_DEPTH_TEXTURE_MODE" => TexParam::DepthTextureMode(c.enm(2)?),
         "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB" => TexParam::CompareFailValue(c.f32(2)?),
-        "GL_TEXTURE_BASE_LEVEL" => TexParam::BaseLevel(level(c.f64(2)?)),
-        "GL_TEXTURE_MAX_LEVEL" => TexParam::MaxLevel(level(c.f64(2)?)),
+        "GL_TEXTURE_BASE_LEVEL" => TexParam::BaseLevel(integral(c.f64(2)?)),
+        "GL_TEXTURE_MAX_LEVEL" => TexParam::MaxLevel(integral(c.f64(2)?)),
         "GL_TEXTURE_MIN_LOD" => TexParam::MinLod(c.f32(2)?),
         "GL_TEXTURE_MAX_LOD" => TexParam::MaxLod(c.f32(2)?),
         "GL_TEXTURE_LOD_BIAS" => TexParam::LodBias(c.f32(2)?),
@@ -693,7 +693,7 @@ pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
         // A float is TRUE when its converted integer is not 0 (glTexParameterf(…, 0.25) is
         // FALSE on Mesa 22.3).
         _ => TexParam::GenerateMipmap(match c.entry() {
-            Entry::TexParameterf | Entry::TexParameterfv => level(c.f64(2)?) != 0,
+            Entry::TexParameterf | Entry::TexParameterfv => integral(c.f64(2)?) != 0,
             _ => c.boolean(2)?,
         }),
     })

@@ -375,7 +375,7 @@ impl Client {
                 Item::Command(Command::Material { face, param }) if self.immediate.is_open() => {
                     match param {
                         crate::ff::MaterialParam::Shininess(v)
-                            if super::light::outside(*v, 0.0, 128.0) =>
+                            if super::light::shininess_refused(*v) =>
                         {
                             out.push(Command::Raise {
                                 error: GlErrorKind::InvalidValue,

@@ -324,7 +324,7 @@ impl Immediate {
                     // [0, 128] is INVALID_VALUE, Mesa measured alike), then per vertex.
                     if let Command::Material { face, param } = super::calls::command(c)? {
                         if let MaterialParam::Shininess(v) = param {
-                            if super::light::outside(v, 0.0, 128.0) {
+                            if super::light::shininess_refused(v) {
                                 return Err(c.bad(2, "a shininess in [0, 128]"));
                             }
                         }

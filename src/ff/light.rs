@@ -138,6 +138,12 @@ pub fn outside(v: f32, lo: f32, hi: f32) -> bool {
     v < lo || v > hi
 }
 
+/// Whether glMaterial refuses a shininess (INVALID_VALUE): outside [0, 128] as
+/// [`outside`] tests it, wherever the call is made (alone, inside glBegin/glEnd, in a list).
+pub fn shininess_refused(s: f32) -> bool {
+    outside(s, 0.0, 128.0)
+}
+
 /// LIGHT_MODEL_COLOR_CONTROL (GL 1.2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum ColorControl {
@@ -264,7 +270,7 @@ impl Materials {
     /// glMaterial: validates, then sets the face(s).
     pub fn set(&mut self, face: Face, param: MaterialParam) -> GlResult {
         if let MaterialParam::Shininess(s) = param {
-            if outside(s, 0.0, 128.0) {
+            if shininess_refused(s) {
                 return Err(GlError::invalid_value("SHININESS must be in [0, 128]"));
             }
         }

@@ -120,37 +120,32 @@ impl PixelStore {
     pub fn call<A: Args>(&mut self, c: &A) -> Result<(), A::Error> {
         c.count(2)?;
         let pname = c.pname(0, PNAMES)?;
-        let v = f64::from(super::query::round_to_int(c.f64(1)?));
+        let v = super::query::round_to_int(c.f64(1)?);
         let (side, name) = match pname.strip_prefix("GL_PACK_") {
             Some(n) => (&mut self.pack, n),
             None => (&mut self.unpack, &pname["GL_UNPACK_".len()..]),
         };
-        let count = || -> Result<usize, A::Error> {
-            if v < 0.0 || !v.is_finite() || v > f64::from(i32::MAX) {
-                return Err(c.bad(1, "a count ≥ 0"));
-            }
-            Ok(v as usize)
-        };
+        let count = || usize::try_from(v).map_err(|_| c.bad(1, "a count ≥ 0"));
         match name {
             "SWAP_BYTES" => {
-                side.swap_bytes = if v != 0.0 {
+                side.swap_bytes = if v != 0 {
                     ByteOrder::Swapped
                 } else {
                     ByteOrder::Native
                 }
             }
             "LSB_FIRST" => {
-                side.lsb_first = if v != 0.0 {
+                side.lsb_first = if v != 0 {
                     BitOrder::LsbFirst
                 } else {
                     BitOrder::MsbFirst
                 }
             }
             "ALIGNMENT" => {
-                if ![1.0, 2.0, 4.0, 8.0].contains(&v) {
-                    return Err(c.bad(1, "an alignment of 1, 2, 4 or 8"));
-                }
-                side.alignment = v as usize;
+                side.alignment = match v {
+                    1 | 2 | 4 | 8 => v as usize,
+                    _ => return Err(c.bad(1, "an alignment of 1, 2, 4 or 8")),
+                };
             }
             "ROW_LENGTH" => side.row_length = count()?,
             "SKIP_ROWS" => side.skip_rows = count()?,

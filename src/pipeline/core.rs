@@ -94,17 +94,17 @@ impl<P: Issue> PathPipeline<P> {
     }
 
     /// glBitmap: drawn at the raster position the call finds, then the position advances
-    /// (GL 1.5 §3.7). The model applies the call (errors, the advance); the path then draws
-    /// it against the state from before, so the bitmap lands where the call found the
-    /// position whatever the advance (a fractional or NaN one included).
+    /// (GL 1.5 §3.7). The model applies the call (errors, the advance, which is all it
+    /// changes); the path then draws it with the position from before, so the bitmap lands
+    /// where the call found it whatever the advance (a fractional or NaN one included).
     fn bitmap(&mut self, ctx: &GpuContext, cmd: &Command) -> Result<(), PipelineError> {
-        let before = self.core.state.clone();
+        let found = self.core.state.raster.window;
         if self.core.state.apply(cmd).is_err() {
             return Ok(());
         }
-        let after = std::mem::replace(&mut self.core.state, before);
+        let advanced = std::mem::replace(&mut self.core.state.raster.window, found);
         let drawn = self.path.issue(ctx, &mut self.core, cmd);
-        self.core.state = after;
+        self.core.state.raster.window = advanced;
         drawn
     }
 }

@@ -68,6 +68,14 @@ static void quad(int column, int row) {
   glRectf(64 * column + 2, 64 * row + 2, 64 * column + 62, 64 * row + 62);
 }
 
+/* The quad of panel (column, row) lit with LIGHT0's `pname` NaN, then `pname` back to
+ * `kept`. */
+static void quad_under_nan(GLenum pname, GLfloat kept, int column, int row) {
+  glLightf(GL_LIGHT0, pname, NAN);
+  quad(column, row);
+  glLightf(GL_LIGHT0, pname, kept);
+}
+
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "float_params.ppm";
   OSMesaContext ctx;
@@ -225,23 +233,13 @@ int main(int argc, char **argv) {
   glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, 1);
   glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, 0);
   glMaterialf(GL_FRONT, GL_SHININESS, 16);
-  glLightf(GL_LIGHT0, GL_QUADRATIC_ATTENUATION, nan);
-  quad(0, 0);
-  glLightf(GL_LIGHT0, GL_QUADRATIC_ATTENUATION, 0);
-  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, nan);
-  quad(1, 0);
-  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 180);
-  glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, nan);
-  quad(2, 0);
-  glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, 0);
-  glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, nan);
-  quad(0, 1);
-  glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, 1);
+  quad_under_nan(GL_QUADRATIC_ATTENUATION, 0, 0, 0);
+  quad_under_nan(GL_SPOT_CUTOFF, 180, 1, 0);
+  quad_under_nan(GL_LINEAR_ATTENUATION, 0, 2, 0);
+  quad_under_nan(GL_CONSTANT_ATTENUATION, 1, 0, 1);
   glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 60);
-  glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, nan);
-  quad(1, 1);
+  quad_under_nan(GL_SPOT_EXPONENT, 0, 1, 1);
   glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 180);
-  glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 0);
   glLightfv(GL_LIGHT0, GL_POSITION, sun);
   glMaterialf(GL_FRONT, GL_SHININESS, nan);
   quad(2, 1);
