@@ -22,15 +22,20 @@ fn volume<A: Args>(c: &A) -> Result<ViewVolume, A::Error> {
 
 /// The Command of every call that is not immediate mode (those are
 /// [`Immediate`](super::immediate::Immediate)'s).
+///
+/// The areas are asked in turn, the one most of a frame's calls reach first (matrices,
+/// enables, clears), then lighting and texturing; the variants (vector and integer forms
+/// read as their scalar or float calls) come before the two areas whose calls they
+/// answer in part, which get the rest.
 pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
     for area in [
+        transform_and_fragment,
         super::calls_variants::variants,
+        lighting,
+        texturing,
         super::texture_calls::texture_calls,
         super::texture_volume::volume_calls,
         super::calls_compressed::compressed_calls,
-        transform_and_fragment,
-        lighting,
-        texturing,
         combiners,
         super::calls_attrib::attrib,
         super::calls_raster::raster,
@@ -231,26 +236,28 @@ pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Erro
     }))
 }
 
-pub(super) const LIGHT_VECTORS: &[&str] = &[
+/// glLight's parameter names: the vectors, then the scalars.
+pub(super) const LIGHT_PNAMES: &[&str] = &[
     "GL_AMBIENT",
     "GL_DIFFUSE",
     "GL_SPECULAR",
     "GL_POSITION",
     "GL_SPOT_DIRECTION",
-];
-pub(super) const LIGHT_SCALARS: &[&str] = &[
     "GL_SPOT_EXPONENT",
     "GL_SPOT_CUTOFF",
     "GL_CONSTANT_ATTENUATION",
     "GL_LINEAR_ATTENUATION",
     "GL_QUADRATIC_ATTENUATION",
 ];
-pub(super) const MATERIAL_VECTORS: &[&str] = &[
+const LIGHT_SCALARS: &[&str] = LIGHT_PNAMES.split_at(5).1;
+/// glMaterial's parameter names: the colours, then the one scalar.
+pub(super) const MATERIAL_PNAMES: &[&str] = &[
     "GL_AMBIENT",
     "GL_DIFFUSE",
     "GL_AMBIENT_AND_DIFFUSE",
     "GL_SPECULAR",
     "GL_EMISSION",
+    "GL_SHININESS",
 ];
 
 /// Lighting and materials.
@@ -259,7 +266,7 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::Lightfv => {
             c.count(3)?;
             let light = c.family(0, Family::Light)?;
-            let param = match c.pname(1, &[LIGHT_VECTORS, LIGHT_SCALARS].concat())? {
+            let param = match c.pname(1, LIGHT_PNAMES)? {
                 "GL_AMBIENT" => LightParam::Ambient(c.vec4_array(2)?),
                 "GL_DIFFUSE" => LightParam::Diffuse(c.vec4_array(2)?),
                 "GL_SPECULAR" => LightParam::Specular(c.vec4_array(2)?),
@@ -298,8 +305,7 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::Materialfv => {
             c.count(3)?;
             let face = c.enm(0)?;
-            let all = [MATERIAL_VECTORS, &["GL_SHININESS"]].concat();
-            let param = match c.pname(1, &all)? {
+            let param = match c.pname(1, MATERIAL_PNAMES)? {
                 "GL_SHININESS" => MaterialParam::Shininess(c.floats::<1>(2)?[0]),
                 p => material_vector(p, c.vec4_array(2)?),
             };

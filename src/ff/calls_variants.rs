@@ -14,8 +14,7 @@
 use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
 use super::calls::{
-    env_scalar, light_scalar, material_vector, tex_param, LIGHT_SCALARS, LIGHT_VECTORS,
-    MATERIAL_VECTORS,
+    env_scalar, light_scalar, material_vector, tex_param, LIGHT_PNAMES, MATERIAL_PNAMES,
 };
 use super::client::ArrayData;
 use super::command::TexData;
@@ -53,7 +52,7 @@ pub fn variants<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::Lightiv => {
             c.count(3)?;
             let light = c.family(0, Family::Light)?;
-            let param = match c.pname(1, &[LIGHT_VECTORS, LIGHT_SCALARS].concat())? {
+            let param = match c.pname(1, LIGHT_PNAMES)? {
                 "GL_AMBIENT" => LightParam::Ambient(int_color(c, 2)?),
                 "GL_DIFFUSE" => LightParam::Diffuse(int_color(c, 2)?),
                 "GL_SPECULAR" => LightParam::Specular(int_color(c, 2)?),
@@ -103,9 +102,8 @@ pub fn variants<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::Materiali | Entry::Materialf => {
             c.count(3)?;
             let face = c.enm(0)?;
-            let all = [MATERIAL_VECTORS, &["GL_SHININESS"]].concat();
             let v = c.f32(2)?;
-            let param = match c.pname(1, &all)? {
+            let param = match c.pname(1, MATERIAL_PNAMES)? {
                 "GL_SHININESS" => MaterialParam::Shininess(v),
                 p => material_vector(p, glam::Vec4::new(v, 0.0, 0.0, 0.0)),
             };
@@ -114,8 +112,7 @@ pub fn variants<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::Materialiv => {
             c.count(3)?;
             let face = c.enm(0)?;
-            let all = [MATERIAL_VECTORS, &["GL_SHININESS"]].concat();
-            let param = match c.pname(1, &all)? {
+            let param = match c.pname(1, MATERIAL_PNAMES)? {
                 "GL_SHININESS" => MaterialParam::Shininess(c.array_f64(2, 1)?[0] as f32),
                 p => material_vector(p, int_color(c, 2)?),
             };

@@ -102,20 +102,26 @@ pub fn value_of(name: &str) -> Option<u32> {
 /// The names of token `value` in the registry (aliases: GL_TEXTURE_COMPARE_MODE and
 /// GL_TEXTURE_COMPARE_MODE_ARB are one value), by a binary search of the table by value.
 pub fn names_of(value: u32) -> impl Iterator<Item = &'static str> {
+    entries_of(value).iter().map(|(_, n)| *n)
+}
+
+/// The registry's rows of token `value`: the run of equal values in the table sorted by
+/// value.
+fn entries_of(value: u32) -> &'static [(u32, &'static str)] {
     let table = registry::BY_VALUE;
     let start = table.partition_point(|(v, _)| *v < value);
-    table[start..]
-        .iter()
-        .take_while(move |(v, _)| *v == value)
-        .map(|(_, n)| *n)
+    let len = table[start..].partition_point(|(v, _)| *v == value);
+    &table[start..start + len]
 }
 
 /// The first name in `pnames` that token `value` has, if any (in `pnames`' order, as a
-/// search of `value_of` over them finds it).
+/// search of `value_of` over them finds it). The value's names are looked up once, then
+/// compared with each candidate.
 pub fn pname_of(value: u32, pnames: &[&'static str]) -> Option<&'static str> {
+    let names = entries_of(value);
     pnames
         .iter()
-        .find(|p| names_of(value).any(|n| n == **p))
+        .find(|p| names.iter().any(|(_, n)| n == *p))
         .copied()
 }
 
