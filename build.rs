@@ -34,6 +34,7 @@ const MODEL_EXTENSIONS: &[&str] = &[
     "GL_EXT_texture_compression_s3tc",
     "GL_EXT_compiled_vertex_array",
     "GL_ARB_shadow_ambient",
+    "GL_EXT_texture_filter_anisotropic",
 ];
 
 /// GL 1.0 tokens whose names start with a digit. gl_generator names them `_2_BYTES` and

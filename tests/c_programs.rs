@@ -1380,7 +1380,8 @@ fn evaluator_enables_are_kept_and_answered_as_on_mesa() {
 /// every direction and width, light the pixels Mesa's OSMesa lights — its buffer is a
 /// window-system one, rasterised upside down in memory, and the layer draws into a pbuffer
 /// of the same kind (`abi::context`) — with smooth points' ties alike. Each case's lit
-/// pixels (count and hash) printed as Mesa prints them, bit for bit.
+/// pixels (count and hash) printed as Mesa prints them, bit for bit; the trace replays
+/// (`fixedfunc replay` draws into a window-system buffer too).
 #[test]
 fn lines_with_ends_on_pixel_centres_light_mesas_pixels() {
     let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("line_ends");
@@ -1397,6 +1398,12 @@ fn lines_with_ends_on_pixel_centres_light_mesas_pixels() {
         max_bad_pixels: 0,
     };
     assert_images_match("line_ends", &ours, &mesa, exact);
+    assert_trace_replays(
+        "line_ends",
+        &compile("line_ends", Linking::Direct),
+        &[],
+        "64x64",
+    );
 }
 
 /// `tests/c/array_enables.c`: glEnable/glDisable of VERTEX_ARRAY … SECONDARY_COLOR_ARRAY
@@ -1585,4 +1592,42 @@ fn matrix_commands_compute_as_mesa_does() {
     );
     assert_same_text(&mesa_text, &ours_text, 115, "a matrix");
     assert_images_match("matrices", &ours, &mesa, within_3_on_99_percent(&mesa));
+}
+
+/// `tests/c/anisotropy.c`: EXT_texture_filter_anisotropic as Mesa 22.3 has it — named in
+/// the extension string, a maximum of 16, a value below 1 INVALID_VALUE, one above the
+/// maximum and a NaN clamped to it, the integer query rounded, every target, restored by
+/// glPopAttrib(TEXTURE_BIT) — and a checkerboard floor at a grazing angle sampled with
+/// anisotropy 1, 4 and 16 as Mesa samples it, within 1/255; the trace replays.
+#[test]
+fn anisotropic_filtering_is_taken_and_drawn_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("anisotropy");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "extension named 1",
+            "maximum 16 16 err 0x0",
+            "0.5                      err 0x501 float 1 int 1",
+            "2.7                      err 0x0 float 2.7 int 3",
+            "NaN                      err 0x0 float 16 int 16",
+            "after glPopAttrib 5 err 0x0",
+            "inside glBegin/glEnd err 0x502",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 20, "an anisotropy answer");
+    assert_images_match(
+        "anisotropy",
+        &ours,
+        &mesa,
+        Tolerance {
+            per_channel: 1,
+            max_bad_pixels: 0,
+        },
+    );
+    assert_trace_replays(
+        "anisotropy",
+        &compile("anisotropy", Linking::Direct),
+        &[],
+        "96x64",
+    );
 }

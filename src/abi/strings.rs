@@ -49,6 +49,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_packed_pixels",
     "GL_SGIS_texture_lod",
     "GL_EXT_texture_lod_bias",
+    "GL_EXT_texture_filter_anisotropic",
     "GL_EXT_compiled_vertex_array",
 ];
 

@@ -13,7 +13,8 @@ use std::path::{Path, PathBuf};
 
 use fixedfunc::ff::Command;
 use fixedfunc::gpu::{
-    Backend, ContextRequest, GpuContext, RenderTarget, TargetSpec, VirtualDisplay, WindowBuffer,
+    Backend, ContextRequest, GpuContext, PbufferSpec, RenderTarget, TargetSpec, VirtualDisplay,
+    WindowBuffer,
 };
 use fixedfunc::metrics::image_diff::{self, Verdict};
 use fixedfunc::pipeline;
@@ -164,10 +165,7 @@ fn replay_on(
     let ctx = GpuContext::new(&request)?;
     let target = match window {
         true => None,
-        false => Some(RenderTarget::new(
-            &ctx,
-            TargetSpec::new(size.width, size.height, DepthBits::D24).with_stencil(),
-        )?),
+        false => Some(script_target(&ctx, size)?),
     };
     let mut p: Box<dyn pipeline::Pipeline> = match (args.accum, kind) {
         (false, _) => pipeline::create(kind, &ctx)?,
@@ -193,6 +191,27 @@ fn replay_on(
     });
     p.release(&ctx);
     result
+}
+
+/// The buffer a script draws into: as a traced C program's (`abi`), a window-system
+/// buffer of 24 depth and 8 stencil bits where the backend gives one (an EGL pbuffer), else
+/// a framebuffer object of the same buffers. Mesa stores a window-system buffer top row
+/// first and an object bottom row first, and what depends on that direction — the pixel a
+/// line's end on a pixel centre lights, the footprint of an anisotropic sample — is then
+/// as the traced program drew it.
+fn script_target(ctx: &GpuContext, size: ImageSize) -> Result<RenderTarget, CliError> {
+    let spec = TargetSpec::new(size.width, size.height, DepthBits::D24).with_stencil();
+    let surface = PbufferSpec {
+        width: size.width,
+        height: size.height,
+        alpha_bits: 8,
+        depth_bits: 24,
+        stencil_bits: 8,
+    };
+    Ok(match ctx.bind_window_surface(surface)? {
+        true => RenderTarget::surface(ctx, spec)?,
+        false => RenderTarget::new(ctx, spec)?,
+    })
 }
 
 /// Runs the commands one at a time, so that a GL error names its line; the count of GL

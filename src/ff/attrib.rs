@@ -689,6 +689,7 @@ impl FixedState {
                         TexParam::MaxLod(p.max_lod),
                         TexParam::LodBias(p.lod_bias),
                         TexParam::Priority(p.priority),
+                        TexParam::MaxAnisotropy(p.max_anisotropy),
                     ] {
                         out.push(Command::TexParameter { target, param });
                     }

@@ -369,6 +369,7 @@ const TEX_PARAMS: &[&str] = &[
     "GL_TEXTURE_MAX_LOD",
     "GL_TEXTURE_LOD_BIAS",
     "GL_TEXTURE_PRIORITY",
+    "GL_TEXTURE_MAX_ANISOTROPY_EXT",
 ];
 
 const ENV_PARAMS: &[&str] = &[
@@ -696,6 +697,7 @@ pub(super) fn tex_param<A: Args>(c: &A) -> Result<TexParam, A::Error> {
         "GL_TEXTURE_MAX_LOD" => TexParam::MaxLod(c.f32(2)?),
         "GL_TEXTURE_LOD_BIAS" => TexParam::LodBias(c.f32(2)?),
         "GL_TEXTURE_PRIORITY" => TexParam::Priority(c.f32(2)?),
+        "GL_TEXTURE_MAX_ANISOTROPY_EXT" => TexParam::MaxAnisotropy(c.f32(2)?),
         // A float is TRUE when its converted integer is not 0 (glTexParameterf(…, 0.25) is
         // FALSE on Mesa 22.3).
         _ => TexParam::GenerateMipmap(match c.entry() {

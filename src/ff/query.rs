@@ -440,6 +440,7 @@ pnames! {
     MAX_TEXTURE_UNITS => |_| count(MAX_TEXTURE_UNITS),
     MAX_TEXTURE_SIZE => |_| int(MAX_TEXTURE_SIZE),
     MAX_TEXTURE_LOD_BIAS => |_| floats(&[super::texenv::MAX_TEXTURE_LOD_BIAS]),
+    MAX_TEXTURE_MAX_ANISOTROPY_EXT => |_| floats(&[super::texture::MAX_TEXTURE_MAX_ANISOTROPY]),
     MAX_3D_TEXTURE_SIZE => |_| int(MAX_3D_TEXTURE_SIZE),
     MAX_CUBE_MAP_TEXTURE_SIZE => |_| int(MAX_CUBE_MAP_TEXTURE_SIZE),
 
@@ -776,6 +777,7 @@ impl FixedState {
             r::TEXTURE_MIN_LOD => vec![QueryValue::Saturated(p.min_lod)],
             r::TEXTURE_MAX_LOD => vec![QueryValue::Saturated(p.max_lod)],
             r::TEXTURE_LOD_BIAS => vec![QueryValue::Saturated(p.lod_bias)],
+            r::TEXTURE_MAX_ANISOTROPY_EXT => vec![QueryValue::Saturated(p.max_anisotropy)],
             // As an integer, the colour-style conversion (Mesa: 1 → INT_MAX).
             r::TEXTURE_PRIORITY => normalized(&[p.priority]),
             // Every texture is resident.

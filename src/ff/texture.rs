@@ -360,7 +360,13 @@ pub enum TexParam {
     LodBias(f32),
     /// TEXTURE_PRIORITY (GL 1.1), clamped to [0, 1]; glPrioritizeTextures sets it too.
     Priority(f32),
+    /// TEXTURE_MAX_ANISOTROPY_EXT (EXT_texture_filter_anisotropic): below 1 is
+    /// INVALID_VALUE; above MAX_TEXTURE_MAX_ANISOTROPY_EXT it is that maximum.
+    MaxAnisotropy(f32),
 }
+
+/// MAX_TEXTURE_MAX_ANISOTROPY_EXT: Mesa 22.3.6 llvmpipe's (measured, `tests/c/anisotropy.c`).
+pub const MAX_TEXTURE_MAX_ANISOTROPY: f32 = 16.0;
 
 /// A level parameter (BASE_LEVEL, MAX_LEVEL) from glTexParameterf's float as Mesa converts
 /// it (measured): rounded to nearest, halves away from zero (1.7 → 2, −0.4 → 0), saturated
@@ -412,6 +418,9 @@ pub struct TexParams {
     pub lod_bias: f32,
     /// A residence hint (GL 1.1 §3.8.12), in [0, 1]. GL default: 1.
     pub priority: f32,
+    /// The most samples an anisotropic footprint takes (EXT_texture_filter_anisotropic),
+    /// in [1, MAX_TEXTURE_MAX_ANISOTROPY]. GL default: 1 (isotropic).
+    pub max_anisotropy: f32,
 }
 
 impl TexParams {
@@ -433,6 +442,7 @@ impl TexParams {
         max_lod: 1000.0,
         lod_bias: 0.0,
         priority: 1.0,
+        max_anisotropy: 1.0,
     };
 
     /// glTexParameter: validates, then sets.
@@ -471,6 +481,20 @@ impl TexParams {
             // (measured, `tests/c/float_params.c`).
             TexParam::Priority(v) if v.is_nan() => self.priority = 0.0,
             TexParam::Priority(v) => self.priority = v.clamp(0.0, 1.0),
+            // Mesa's rule: `v < 1.0` is INVALID_VALUE (a NaN passes it), then
+            // MIN2(v, maximum), which is the maximum for a NaN (measured).
+            TexParam::MaxAnisotropy(v) if v < 1.0 => {
+                return Err(GlError::invalid_value(
+                    "TEXTURE_MAX_ANISOTROPY_EXT must be at least 1",
+                ));
+            }
+            TexParam::MaxAnisotropy(v) => {
+                self.max_anisotropy = if v < MAX_TEXTURE_MAX_ANISOTROPY {
+                    v
+                } else {
+                    MAX_TEXTURE_MAX_ANISOTROPY
+                }
+            }
         }
         Ok(())
     }

@@ -907,11 +907,13 @@ fn tex_param(target: &str, p: &TexParam) -> String {
         TexParam::MinLod(v)
         | TexParam::MaxLod(v)
         | TexParam::LodBias(v)
-        | TexParam::Priority(v) => {
+        | TexParam::Priority(v)
+        | TexParam::MaxAnisotropy(v) => {
             let pname = match p {
                 TexParam::MinLod(_) => "GL_TEXTURE_MIN_LOD",
                 TexParam::MaxLod(_) => "GL_TEXTURE_MAX_LOD",
                 TexParam::LodBias(_) => "GL_TEXTURE_LOD_BIAS",
+                TexParam::MaxAnisotropy(_) => "GL_TEXTURE_MAX_ANISOTROPY_EXT",
                 _ => "GL_TEXTURE_PRIORITY",
             };
             return format!("{}({target}, {pname}, {})", Entry::TexParameterf, f(*v));

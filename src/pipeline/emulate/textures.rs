@@ -488,6 +488,8 @@ pub(super) fn apply_params(gl: &glow::Context, target: u32, object: &TextureObje
         gl.tex_parameter_i32(target, glow::TEXTURE_MAX_LEVEL, max_level);
         gl.tex_parameter_f32(target, glow::TEXTURE_MIN_LOD, p.min_lod);
         gl.tex_parameter_f32(target, glow::TEXTURE_MAX_LOD, p.max_lod);
+        // llvmpipe filters anisotropically as Mesa's own fixed function does with it.
+        gl.tex_parameter_f32(target, glow::TEXTURE_MAX_ANISOTROPY_EXT, p.max_anisotropy);
         let swizzle = swizzle.map(|s| s as i32);
         gl.tex_parameter_i32_slice(target, glow::TEXTURE_SWIZZLE_RGBA, &swizzle);
         if is_depth {

@@ -247,6 +247,9 @@ pub fn tex_parameter(g: &gl::Gl, target: TextureTarget, param: TexParam) -> bool
         TexParam::MaxLod(v) => unsafe { g.TexParameterf(t, gl::TEXTURE_MAX_LOD, v) },
         TexParam::LodBias(v) => unsafe { g.TexParameterf(t, gl::TEXTURE_LOD_BIAS, v) },
         TexParam::Priority(v) => unsafe { g.TexParameterf(t, gl::TEXTURE_PRIORITY, v) },
+        TexParam::MaxAnisotropy(v) => unsafe {
+            g.TexParameterf(t, glow::TEXTURE_MAX_ANISOTROPY_EXT, v)
+        },
     }
     true
 }
