@@ -250,6 +250,10 @@ pub fn run() -> ExitCode {
     };
     match result.and_then(|()| output::flush()) {
         Ok(()) => ExitCode::SUCCESS,
+        // A signal is ending the process and stopped the X server under the work: the
+        // failure is that, and the re-raised signal ends the process with its own status
+        // (`signals`), not this error's.
+        Err(_) if fixedfunc::gpu::ending() => fixedfunc::gpu::await_ending_signal(),
         Err(error) => {
             // Nowhere is left to report a failure to write this.
             let _ = writeln!(std::io::stderr(), "fixedfunc: {error}");

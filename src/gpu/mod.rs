@@ -47,7 +47,7 @@ pub use readback::{depth_to_u16, depth_to_u32, depth_to_u8};
 pub use target::{ColorStorage, DepthStencilBuffers, RenderTarget, TargetSpec};
 pub use trivial::FlatProgram;
 pub use window_input::{Input, KeyName, Waker};
-pub use xvfb::{mark_ending, stop_private_displays, VirtualDisplay};
+pub use xvfb::{await_ending_signal, ending, mark_ending, stop_private_displays, VirtualDisplay};
 
 /// Which library provides the context.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]

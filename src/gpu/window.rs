@@ -55,10 +55,7 @@ type IoErrorHandler = unsafe extern "C" fn(*mut std::ffi::c_void) -> std::ffi::c
 /// signal handler), wait for the re-raised signal; otherwise do what Xlib did.
 unsafe extern "C" fn on_io_error(display: *mut std::ffi::c_void) -> std::ffi::c_int {
     if super::xvfb::ending() {
-        loop {
-            // SAFETY: pause has no preconditions; the pending signal ends the process.
-            unsafe { libc::pause() };
-        }
+        super::xvfb::await_ending_signal();
     }
     match PREVIOUS_IO_HANDLER.get().copied().flatten() {
         // SAFETY: the handler Xlib had, called as Xlib would have.

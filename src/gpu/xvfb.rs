@@ -137,9 +137,18 @@ pub fn mark_ending() {
 }
 
 /// Whether [`mark_ending`] was called.
-#[cfg_attr(not(feature = "window"), allow(dead_code))]
 pub fn ending() -> bool {
     ENDING.load(Ordering::SeqCst)
+}
+
+/// Waits for the signal [`mark_ending`] announced to end the process (its handler
+/// re-raises it once the servers are stopped): for a thread whose work failed because its
+/// server was stopped under it, which must not exit with a status of its own first.
+pub fn await_ending_signal() -> ! {
+    loop {
+        // SAFETY: pause has no preconditions; the pending signal ends the process.
+        unsafe { libc::pause() };
+    }
 }
 
 /// Stops every X server this process started: SIGTERM, a wait of up to [`STOP_WAIT`] for it
