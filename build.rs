@@ -35,6 +35,7 @@ const MODEL_EXTENSIONS: &[&str] = &[
     "GL_EXT_compiled_vertex_array",
     "GL_ARB_shadow_ambient",
     "GL_EXT_texture_filter_anisotropic",
+    "GL_ARB_point_sprite",
 ];
 
 /// GL 1.0 tokens whose names start with a digit. gl_generator names them `_2_BYTES` and

@@ -117,6 +117,13 @@ fn texts_and_images(name: &str) -> [(String, RgbaImage); 2] {
     })
 }
 
+/// Every pixel within 1/255 of Mesa's in every channel: the programs whose images the
+/// layer draws as Mesa's own rasteriser does.
+const WITHIN_ONE_EVERYWHERE: Tolerance = Tolerance {
+    per_channel: 1,
+    max_bad_pixels: 0,
+};
+
 /// The layer printed what Mesa printed, line by line (at least `min_lines` of it).
 fn assert_same_text(mesa: &str, ours: &str, min_lines: usize, what: &str) {
     assert!(
@@ -941,15 +948,7 @@ fn point_parameters_size_points_as_on_mesa() {
         ],
     );
     assert_same_text(&mesa_text, &ours_text, 25, "a point-parameter answer");
-    assert_images_match(
-        "point_params",
-        &ours,
-        &mesa,
-        Tolerance {
-            per_channel: 1,
-            max_bad_pixels: 0,
-        },
-    );
+    assert_images_match("point_params", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
     assert_trace_replays(
         "point_params",
         &compile("point_params", Linking::Direct),
@@ -984,15 +983,7 @@ fn secondary_colours_and_fog_coordinates_draw_as_on_mesa() {
         ],
     );
     assert_same_text(&mesa_text, &ours_text, 80, "a secondary-colour answer");
-    assert_images_match(
-        "secondary",
-        &ours,
-        &mesa,
-        Tolerance {
-            per_channel: 1,
-            max_bad_pixels: 0,
-        },
-    );
+    assert_images_match("secondary", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
     assert_trace_replays(
         "secondary",
         &compile("secondary", Linking::Direct),
@@ -1615,19 +1606,48 @@ fn anisotropic_filtering_is_taken_and_drawn_as_on_mesa() {
         ],
     );
     assert_same_text(&mesa_text, &ours_text, 20, "an anisotropy answer");
-    assert_images_match(
-        "anisotropy",
-        &ours,
-        &mesa,
-        Tolerance {
-            per_channel: 1,
-            max_bad_pixels: 0,
-        },
-    );
+    assert_images_match("anisotropy", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
     assert_trace_replays(
         "anisotropy",
         &compile("anisotropy", Linking::Direct),
         &[],
         "96x64",
+    );
+}
+
+/// `tests/c/point_sprites.c`: ARB_point_sprite as Mesa 22.3 has it — COORD_REPLACE TRUE or
+/// FALSE only (a float truncated, 0.5 is FALSE), per unit, restored by POINT_BIT and not
+/// TEXTURE_BIT, the enable by ENABLE_BIT and POINT_BIT, compiled into lists — and sprites
+/// drawn as Mesa draws them, pixel for pixel: both origins, centres off the pixel grid,
+/// square under POINT_SMOOTH, the texture matrix bypassed, a unit that keeps its
+/// coordinates beside one that replaces them, attenuated sizes, glPolygonMode(POINT)'s
+/// corners, and a triangle under POINT_SPRITE reading the texel at (0, 0) as Mesa's
+/// program reads it (a Mesa deviation: GL replaces the coordinates of points only); the
+/// trace replays.
+#[test]
+fn point_sprites_are_drawn_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("point_sprites");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "extension named 1",
+            "glTexEnvf 0.5 (FALSE)                err 0x0 reads 0",
+            "glTexEnvf 2                          err 0x501 reads 1",
+            "unit 1 after POINT_BIT               COORD_REPLACE 1 1 err 0x0",
+            "unit 1 after TEXTURE_BIT             COORD_REPLACE 0 0 err 0x0",
+            "after ENABLE_BIT                     POINT_SPRITE 1 1 err 0x0",
+            "list called                          COORD_REPLACE 1 1 err 0x0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 25, "a point-sprite answer");
+    assert_images_match("point_sprites", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
+    // The triangle under POINT_SPRITE is the texel at (0, 0), blue, on Mesa itself.
+    let corner = mesa.get_pixel(104, 60).0;
+    assert!(corner[2] > 200 && corner[0] < 60, "{corner:?}");
+    assert_trace_replays(
+        "point_sprites",
+        &compile("point_sprites", Linking::Direct),
+        &[],
+        "128x96",
     );
 }

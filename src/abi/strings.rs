@@ -50,6 +50,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_SGIS_texture_lod",
     "GL_EXT_texture_lod_bias",
     "GL_EXT_texture_filter_anisotropic",
+    "GL_ARB_point_sprite",
     "GL_EXT_compiled_vertex_array",
 ];
 

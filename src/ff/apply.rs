@@ -17,6 +17,7 @@ use super::light::MAX_LIGHTS;
 use super::matrix::{frustum, ortho, plane_to_eye};
 use super::matrix_ops::{rotation, scale, translate, Product};
 use super::state::{FixedState, PolygonModes, MAX_TEXTURE_UNITS};
+use super::texenv::TexEnvParam;
 use super::texture::{
     check_format_pair, check_image_size, volume_size, PixelData, TexLevel, TextureObject,
     TextureTarget,
@@ -183,6 +184,9 @@ impl FixedState {
                 let mut g = *slot;
                 g.set(*coord, *param, mv)?;
                 *slot = g;
+            }
+            Command::TexEnv(TexEnvParam::CoordReplace(on)) => {
+                self.point_sprite.set_replace(unit, *on)
             }
             Command::TexEnv(p) => {
                 let mut env = self.units[unit].env;
@@ -439,6 +443,7 @@ impl FixedState {
             Capability::IndexLogicOp => self.index_logic_op = on,
             Capability::Dither => self.dither = on,
             Capability::PointSmooth => self.smooth.point = on,
+            Capability::PointSprite => self.point_sprite.enabled = on,
             Capability::LineSmooth => self.smooth.line = on,
             Capability::PolygonSmooth => self.smooth.polygon = on,
             Capability::ColorSum => self.color_sum = on,

@@ -237,6 +237,7 @@ impl FixedState {
                 self.point_size = s.point_size;
                 self.point_params = s.point_params;
                 self.smooth.point = s.smooth.point;
+                self.point_sprite = s.point_sprite;
             }
             // The fog. GL 2.1's Table 6.11 puts COLOR_SUM in "fog/enable" and
             // FOG_COORD_SRC in "fog"; Mesa 22.3 restores neither (measured,
@@ -304,6 +305,7 @@ impl FixedState {
         self.polygon_stipple.enabled = s.polygon_stipple.enabled;
         self.line_stipple.enabled = s.line_stipple.enabled;
         self.smooth = s.smooth;
+        self.point_sprite.enabled = s.point_sprite.enabled;
         self.multisample = s.multisample;
         let (now, then) = (&mut self.sample_coverage, s.sample_coverage);
         now.coverage = then.coverage;
@@ -485,6 +487,13 @@ impl FixedState {
                     out.push(Command::PointParameter(p));
                 }
                 out.push(toggle(Capability::PointSmooth, self.smooth.point));
+                out.push(toggle(Capability::PointSprite, self.point_sprite.enabled));
+                for u in 0..self.units.len() {
+                    out.push(Command::ActiveTexture(u as u8));
+                    out.push(Command::TexEnv(TexEnvParam::CoordReplace(
+                        self.point_sprite.replaces(u),
+                    )));
+                }
             }
             AttribGroup::Fog => {
                 let f = self.fog;
@@ -572,6 +581,7 @@ impl FixedState {
         ));
         out.push(toggle(Capability::LineStipple, self.line_stipple.enabled));
         out.push(toggle(Capability::PointSmooth, self.smooth.point));
+        out.push(toggle(Capability::PointSprite, self.point_sprite.enabled));
         out.push(toggle(Capability::LineSmooth, self.smooth.line));
         out.push(toggle(Capability::PolygonSmooth, self.smooth.polygon));
         self.sample_enable_commands(out);
@@ -885,6 +895,9 @@ mod tests {
                     param: TexParam::WrapS(Wrap::ClampToEdge),
                 },
                 Command::TexEnv(TexEnvParam::Mode(TexEnvMode::Replace)),
+                Command::Enable(Capability::PointSprite),
+                Command::ActiveTexture(3),
+                Command::TexEnv(TexEnvParam::CoordReplace(true)),
                 Command::ActiveTexture(2),
                 Command::MatrixMode(MatrixMode::Texture),
                 Command::Color(Vec4::new(0.5, 0.25, 0.125, 1.0)),
@@ -918,6 +931,8 @@ mod tests {
                 Command::Enable(Capability::Lighting),
                 Command::LineWidth(3.0),
                 Command::PointSize(4.0),
+                Command::Enable(Capability::PointSprite),
+                Command::TexEnv(TexEnvParam::CoordReplace(true)),
                 Command::StencilMask(7),
                 Command::ClearStencil(3),
                 Command::PopAttrib,

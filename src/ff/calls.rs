@@ -663,13 +663,36 @@ fn component_count<A: Args>(c: &A, i: usize) -> Option<TexFormat> {
 }
 
 /// A scalar glTexEnv: of target TEXTURE_ENV any of its parameters, of TEXTURE_FILTER_CONTROL
-/// (GL 1.4) only TEXTURE_LOD_BIAS; anything else INVALID_ENUM.
+/// (GL 1.4) only TEXTURE_LOD_BIAS, of POINT_SPRITE (ARB_point_sprite) only COORD_REPLACE;
+/// anything else INVALID_ENUM.
 pub(super) fn env_scalar<A: Args>(c: &A) -> Result<TexEnvParam, A::Error> {
-    match c.pname(0, &["GL_TEXTURE_ENV", "GL_TEXTURE_FILTER_CONTROL"])? {
+    match c.pname(
+        0,
+        &[
+            "GL_TEXTURE_ENV",
+            "GL_TEXTURE_FILTER_CONTROL",
+            "GL_POINT_SPRITE",
+        ],
+    )? {
         "GL_TEXTURE_ENV" => tex_env(c),
-        _ => {
+        "GL_TEXTURE_FILTER_CONTROL" => {
             c.pname(1, &["GL_TEXTURE_LOD_BIAS"])?;
             Ok(TexEnvParam::LodBias(c.f32(2)?))
+        }
+        _ => {
+            c.pname(1, &["GL_COORD_REPLACE"])?;
+            // Mesa converts the value to an integer as C does (truncating: 0.5 is FALSE)
+            // and takes TRUE or FALSE only; anything else is INVALID_VALUE (measured). A
+            // script may write it as a token (GL_TRUE) or a number.
+            let value = match c.token(2) {
+                Ok(token) => f64::from(token),
+                Err(_) => c.f64(2)?.trunc(),
+            };
+            if value == 0.0 || value == 1.0 {
+                Ok(TexEnvParam::CoordReplace(value == 1.0))
+            } else {
+                Err(c.bad(2, "GL_TRUE or GL_FALSE"))
+            }
         }
     }
 }

@@ -88,6 +88,8 @@ pub enum Capability {
     LineStipple,
     /// POINT_SMOOTH (§3.3): antialiased points.
     PointSmooth,
+    /// POINT_SPRITE (ARB_point_sprite): points drawn as textured squares (`point`).
+    PointSprite,
     /// LINE_SMOOTH (§3.4.2): antialiased lines.
     LineSmooth,
     /// POLYGON_SMOOTH (§3.5.4): antialiased polygons.

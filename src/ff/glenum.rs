@@ -263,6 +263,7 @@ gl_enums!(Capability {
     POLYGON_STIPPLE => Capability::PolygonStipple,
     LINE_STIPPLE => Capability::LineStipple,
     POINT_SMOOTH => Capability::PointSmooth,
+    POINT_SPRITE => Capability::PointSprite,
     LINE_SMOOTH => Capability::LineSmooth,
     POLYGON_SMOOTH => Capability::PolygonSmooth,
     COLOR_SUM => Capability::ColorSum,

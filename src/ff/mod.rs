@@ -114,7 +114,7 @@ pub use pixels::{
     Bitmap, Converted, CopyKind, CopyPixels, DrawPixels, PixelTransfer, PixelTransferParam,
     PixelZoom,
 };
-pub use point::{PointParam, PointParams};
+pub use point::{PointParam, PointParams, PointSprite};
 pub use program::{BuiltIn, SamplerBinding, ShaderProgram, UniformValue};
 pub use query::QueryValue;
 pub use raster::RasterPos;

@@ -23,7 +23,7 @@ pub enum PointParam {
     /// POINT_DISTANCE_ATTENUATION: the coefficients (a, b, c).
     DistanceAttenuation([f32; 3]),
     /// POINT_SPRITE_COORD_ORIGIN (GL 2.0, which Mesa's compatibility context takes):
-    /// LOWER_LEFT or UPPER_LEFT; state only, since the layer draws no point sprites.
+    /// LOWER_LEFT or UPPER_LEFT, where a sprite's t is 0 ([`PointSprite`]).
     SpriteCoordOrigin(u32),
 }
 
@@ -40,6 +40,38 @@ pub struct PointParams {
     pub attenuation: [f32; 3],
     /// GL default: UPPER_LEFT.
     pub sprite_coord_origin: u32,
+}
+
+/// ARB_point_sprite (GL 2.0 §3.3.1): with POINT_SPRITE on, a point is drawn as a square
+/// (POINT_SMOOTH has no effect: Mesa's rasterizer state turns smoothing off for sprites)
+/// and each unit whose COORD_REPLACE is TRUE takes the texture coordinates
+/// (s, t, 0, 1) of the fragment's place in the square in place of the vertex's — s from
+/// 0 at the left edge to 1 at the right, t from 0 at the edge POINT_SPRITE_COORD_ORIGIN
+/// names to 1 at the other — after the texture matrix, which they bypass. Both are in the
+/// point attribute group; the enable also in the enable group (Mesa's glPopAttrib of
+/// TEXTURE_BIT leaves COORD_REPLACE, measured).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct PointSprite {
+    /// POINT_SPRITE. GL default: FALSE.
+    pub enabled: bool,
+    /// Bit u: unit u's COORD_REPLACE. GL default: FALSE on every unit.
+    pub coord_replace: u8,
+}
+
+impl PointSprite {
+    /// Whether unit `u` replaces its coordinates on a sprite.
+    pub fn replaces(&self, u: usize) -> bool {
+        self.coord_replace & (1 << u) != 0
+    }
+
+    /// Sets unit `u`'s COORD_REPLACE.
+    pub fn set_replace(&mut self, u: usize, on: bool) {
+        let bit = 1u8 << u;
+        self.coord_replace = match on {
+            true => self.coord_replace | bit,
+            false => self.coord_replace & !bit,
+        };
+    }
 }
 
 /// GL_LOWER_LEFT and GL_UPPER_LEFT.

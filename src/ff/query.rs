@@ -646,6 +646,7 @@ impl FixedState {
             Capability::IndexLogicOp => self.index_logic_op,
             Capability::Dither => self.dither,
             Capability::PointSmooth => self.smooth.point,
+            Capability::PointSprite => self.point_sprite.enabled,
             Capability::LineSmooth => self.smooth.line,
             Capability::PolygonSmooth => self.smooth.polygon,
             Capability::ColorSum => self.color_sum,
@@ -700,14 +701,18 @@ impl FixedState {
         })
     }
 
-    /// glGetTexEnv{f,i}v(TEXTURE_ENV, pname) of the active unit. Other targets and pnames:
-    /// INVALID_ENUM.
+    /// glGetTexEnv{f,i}v(TEXTURE_ENV, pname) of the active unit, and of its
+    /// TEXTURE_FILTER_CONTROL's LOD bias and POINT_SPRITE's COORD_REPLACE. Other targets and
+    /// pnames: INVALID_ENUM.
     pub fn get_tex_env(&self, target: u32, pname: u32) -> Result<Queried, GlErrorKind> {
         let e: &TexEnv = &self.units[self.active_unit()].env;
         match (target, pname) {
             // Mesa's glGetTexEnviv casts the bias to GLint (measured: 2.5 reads 2).
             (r::TEXTURE_FILTER_CONTROL, r::TEXTURE_LOD_BIAS) => {
                 return Ok(vec![QueryValue::Truncated(e.lod_bias)])
+            }
+            (r::POINT_SPRITE, r::COORD_REPLACE) => {
+                return Ok(boolean(self.point_sprite.replaces(self.active_unit())))
             }
             (r::TEXTURE_ENV, _) => {}
             _ => return Err(GlErrorKind::InvalidEnum),

@@ -23,7 +23,7 @@ use super::matrix::{
     MatrixMode, MatrixStack, MODELVIEW_STACK_DEPTH, PROJECTION_STACK_DEPTH, TEXTURE_STACK_DEPTH,
 };
 use super::pixels::{PixelTransfer, PixelZoom};
-use super::point::PointParams;
+use super::point::{PointParams, PointSprite};
 use super::raster::RasterPos;
 use super::sample_coverage::SampleCoverage;
 use super::stipple::{LineStipple, PolygonStipple};
@@ -265,6 +265,8 @@ pub struct FixedState {
     pub point_size: f32,
     /// glPointParameter's sizes, threshold and attenuation (`point`).
     pub point_params: PointParams,
+    /// POINT_SPRITE and the units' COORD_REPLACE (`point`).
+    pub point_sprite: PointSprite,
     /// POINT_SMOOTH, LINE_SMOOTH, POLYGON_SMOOTH. GL default: all FALSE.
     pub smooth: Smoothing,
     /// COLOR_SUM. GL default: FALSE (no effect without a secondary colour: Capability).
@@ -380,6 +382,7 @@ impl FixedState {
             line_stipple: Toggle::off(LineStipple::DEFAULT),
             point_size: 1.0,
             point_params: PointParams::DEFAULT,
+            point_sprite: PointSprite::default(),
             clear: ClearValues::DEFAULT,
             attrib_stack: Vec::new(),
             fog: Toggle::off(Fog::DEFAULT),

@@ -170,6 +170,9 @@ pub enum TexEnvParam {
     /// detail of every texture the unit samples (§3.8.8), the sum with the texture's own
     /// bias clamped to ±MAX_TEXTURE_LOD_BIAS. Kept as given.
     LodBias(f32),
+    /// COORD_REPLACE of target POINT_SPRITE (ARB_point_sprite): the active unit's, kept
+    /// with the point state (`point::PointSprite`), not the environment.
+    CoordReplace(bool),
 }
 
 /// MAX_TEXTURE_LOD_BIAS: Mesa 22.3.6 llvmpipe's (measured).
@@ -264,6 +267,8 @@ impl TexEnv {
             TexEnvParam::RgbScale(s) => self.rgb.scale = CombineScale::from_f32(s)?,
             TexEnvParam::AlphaScale(s) => self.alpha.scale = CombineScale::from_f32(s)?,
             TexEnvParam::LodBias(b) => self.lod_bias = b,
+            // The point state's, which `FixedState::apply` sets instead.
+            TexEnvParam::CoordReplace(_) => {}
         }
         Ok(())
     }

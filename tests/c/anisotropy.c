@@ -15,7 +15,6 @@
 #include <GL/glext.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 #include "report.h"
 #define W 96
 #define H 64
@@ -50,11 +49,10 @@ static void floor_panel(int panel, GLfloat anisotropy) {
 
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "anisotropy.ppm";
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-  GLubyte *buf = calloc(W * H, 4);
-  if (!ctx || !buf || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, W, H)) return 1;
-  const char *ext = (const char *)glGetString(GL_EXTENSIONS);
-  printf("extension named %d\n", ext && strstr(ext, "GL_EXT_texture_filter_anisotropic") != NULL);
+  OSMesaContext ctx;
+  GLubyte *buf = open_window(&ctx, W, H);
+  if (!buf) return 1;
+  printf("extension named %d\n", extension_named("GL_EXT_texture_filter_anisotropic"));
   GLfloat max = -7;
   GLint max_i = -7;
   glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &max);
@@ -126,6 +124,7 @@ int main(int argc, char **argv) {
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
   glEnable(GL_TEXTURE_2D);
   glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
   glFrustum(-0.5, 0.5, -0.5, 0.5, 1, 50);
   glMatrixMode(GL_MODELVIEW);
   glClearColor(0, 0, 0, 1);
@@ -134,8 +133,5 @@ int main(int argc, char **argv) {
   for (int k = 0; k < 3; k++) floor_panel(k, levels[k]);
   glFinish();
   printf("draw err 0x%x\n", glGetError());
-  if (!write_ppm(out, buf, W, H)) return 1;
-  OSMesaDestroyContext(ctx);
-  free(buf);
-  return 0;
+  return finish(out, ctx, buf, W, H);
 }

@@ -7,6 +7,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <GL/osmesa.h>
 
 static inline int write_ppm(const char *path, const GLubyte *rgba, int w, int h) {
@@ -19,6 +20,15 @@ static inline int write_ppm(const char *path, const GLubyte *rgba, int w, int h)
 }
 
 static inline void err(const char *what) { printf("%-40s err 0x%x\n", what, glGetError()); }
+
+/* Whether the extension string names `name` (a whole name, not a prefix of another). */
+static inline int extension_named(const char *name) {
+  const char *all = (const char *)glGetString(GL_EXTENSIONS);
+  size_t n = strlen(name);
+  for (const char *p = all; p && (p = strstr(p, name)) != NULL; p += n)
+    if ((p == all || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return 1;
+  return 0;
+}
 
 static inline void ints(const char *what, GLenum pname) {
   GLint v = -7;

@@ -964,6 +964,11 @@ fn tex_env(p: &TexEnvParam) -> String {
             Entry::TexEnvf,
             f(*b)
         ),
+        TexEnvParam::CoordReplace(on) => format!(
+            "{}(GL_POINT_SPRITE, GL_COORD_REPLACE, {})",
+            Entry::TexEnvi,
+            if *on { "GL_TRUE" } else { "GL_FALSE" }
+        ),
     }
 }
 

@@ -100,17 +100,58 @@ pub struct PointKey {
 }
 
 impl PointKey {
-    /// The points of `state`: round under POINT_SMOOTH, attenuated when
+    /// The points of `state`: sprites under POINT_SPRITE (which POINT_SMOOTH does not
+    /// round, as Mesa's rasterizer state has it), else round under POINT_SMOOTH; attenuated when
     /// POINT_DISTANCE_ATTENUATION is not (1, 0, 0).
     pub fn of(state: &FixedState) -> PointKey {
         PointKey {
-            shape: if state.smooth.point {
-                PointShape::Round
-            } else {
-                PointShape::Square
+            shape: match (state.point_sprite.enabled, state.smooth.point) {
+                (true, _) => PointShape::Sprite,
+                (false, true) => PointShape::Round,
+                (false, false) => PointShape::Square,
             },
             attenuated: state.point_params.attenuated(),
         }
+    }
+}
+
+/// A sprite pass's coordinate replacement: the units that take (s, t, 0, 1) from the
+/// fragment's place in the point's square, and the edge where t is 0.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct SpriteKey {
+    /// Bit u: unit u replaces its coordinates.
+    pub units: u8,
+    pub origin: SpriteOrigin,
+}
+
+/// POINT_SPRITE_COORD_ORIGIN. The core context keeps its own at UPPER_LEFT, where
+/// gl_PointCoord's t is 0 at the top (Mesa's state tracker turns both alike for the
+/// buffer's orientation): LOWER_LEFT reads 1 − t.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SpriteOrigin {
+    UpperLeft,
+    LowerLeft,
+}
+
+impl SpriteKey {
+    /// The sprites of a draw under `state`, if any unit replaces.
+    pub fn of(state: &FixedState) -> Option<SpriteKey> {
+        let sprite = state.point_sprite;
+        if !sprite.enabled || sprite.coord_replace == 0 {
+            return None;
+        }
+        Some(SpriteKey {
+            units: sprite.coord_replace,
+            origin: match state.point_params.sprite_coord_origin {
+                crate::ff::point::LOWER_LEFT => SpriteOrigin::LowerLeft,
+                _ => SpriteOrigin::UpperLeft,
+            },
+        })
+    }
+
+    /// Whether unit `u` replaces its coordinates.
+    pub fn replaces(&self, u: u8) -> bool {
+        self.units & (1 << u) != 0
     }
 }
 
@@ -124,6 +165,10 @@ pub enum PointShape {
     /// circle of radius r are discarded and whose alpha takes the stage's factor
     /// (`shadergen::fragment`, "point coverage").
     Round,
+    /// POINT_SPRITE: a square of the size itself, unrounded, rasterised as a quad by the
+    /// rules of polygons (llvmpipe's `point_quad_rasterization`, which Mesa sets for
+    /// sprites), where aliased points are drawn by its rule for legacy points.
+    Sprite,
 }
 
 /// The source of a vertex's clip coordinates.
@@ -293,6 +338,11 @@ pub struct FragmentKey {
     /// outside the point's circle are discarded and its alpha scaled as Mesa's aapoint
     /// stage scales it; set per pass, `false` from the state alone.
     pub point_coverage: bool,
+    /// POINT_SPRITE with a unit whose COORD_REPLACE is TRUE (`ff::point::PointSprite`):
+    /// those units read the fragment's place in the point's square (gl_PointCoord), on
+    /// every pass of the geometry as Mesa's program reads it; set per pass, `None` from the
+    /// state alone.
+    pub sprite: Option<SpriteKey>,
     /// A pixel rectangle's draw (glBitmap, glDrawPixels, glCopyPixels: `pixels`): what the
     /// image gives the fragment; set per draw, `None` from the state alone.
     pub pixels: Option<PixelSource>,
@@ -417,6 +467,7 @@ impl ShaderKey {
             edges: None,
             polygon_stipple: false,
             point_coverage: false,
+            sprite: None,
             pixels: None,
         };
         ShaderKey { vertex, fragment }

@@ -42,7 +42,7 @@ use glow::HasContext;
 
 use self::cache::ProgramCache;
 use self::draw::{GeometryCache, Winding};
-use self::key::{PointKey, PointShape, PositionSource, ShaderKey};
+use self::key::{PointKey, PointShape, PositionSource, ShaderKey, SpriteKey};
 use self::program::Program;
 use self::sync::{CoreCalls, RasterSync};
 use self::textures::Textures;
@@ -291,6 +291,11 @@ impl Emulate {
             key.fragment.edges = pass.edges;
             key.vertex.point_size = pass.draws_points().then_some(points);
             key.fragment.point_coverage = pass.draws_points() && points.shape == PointShape::Round;
+            // Mesa 22.3 replaces the coordinates in the fragment program itself
+            // (`nir_lower_texcoord_replace`), whatever the primitive: a triangle drawn under
+            // POINT_SPRITE reads gl_PointCoord too, the texel at (0, 0) on llvmpipe
+            // (measured, `tests/c/point_sprites.c`), which the same read gives here.
+            key.fragment.sprite = SpriteKey::of(state);
             key.fragment.polygon_stipple = pass.fills_polygons && state.polygon_stipple.enabled;
             let program = self.draw_pass(gl, state, &key, &pass, Drawn::Geometry(geometry))?;
             if repeatable {

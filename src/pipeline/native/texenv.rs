@@ -57,5 +57,9 @@ pub fn texenv(g: &gl::Gl, param: TexEnvParam) {
         TexEnvParam::LodBias(b) => unsafe {
             g.TexEnvf(gl::TEXTURE_FILTER_CONTROL, gl::TEXTURE_LOD_BIAS, b)
         },
+        // SAFETY: a plain GL call on the current context.
+        TexEnvParam::CoordReplace(on) => unsafe {
+            g.TexEnvi(gl::POINT_SPRITE, gl::COORD_REPLACE, i32::from(on))
+        },
     }
 }

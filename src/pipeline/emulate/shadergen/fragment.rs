@@ -9,7 +9,7 @@ use crate::ff::{
 };
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{
-    ClampKey, EnvKey, FragmentKey, FragmentUnitKey, InLevel, TexelKey,
+    ClampKey, EnvKey, FragmentKey, FragmentUnitKey, InLevel, SpriteKey, SpriteOrigin, TexelKey,
 };
 use crate::pipeline::emulate::polygon::EdgeRule;
 use crate::pipeline::emulate::uniforms::UniformSource;
@@ -53,7 +53,7 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
         }
     }
     for unit in &key.units {
-        emit_texel(&mut w, unit, key.combiners.is_some());
+        emit_texel(&mut w, unit, key.combiners.is_some(), key.sprite);
         if key.precision == Precision::Fixed8 {
             w.line(format!("t{0} = q8(t{0});", unit.unit));
         }
@@ -192,11 +192,26 @@ fn projected(w: &mut GlslWriter) {
 
 /// t{u}: the unit's texel as GL's texture environment sees it — or, for register
 /// combiners, as their texture register holds it (depth: (0,0,0,D); compare: (L,L,L,L)).
-fn emit_texel(w: &mut GlslWriter, unit: &FragmentUnitKey, combiners: bool) {
+fn emit_texel(
+    w: &mut GlslWriter,
+    unit: &FragmentUnitKey,
+    combiners: bool,
+    sprite: Option<SpriteKey>,
+) {
     let u = unit.unit;
     w.declare(&format!("in vec4 v_tc{u};"));
     projected(w);
-    w.line(format!("vec4 p{u} = project(v_tc{u});"));
+    match sprite.filter(|s| s.replaces(u)) {
+        // A point sprite's coordinates (s, t, 0, 1): its place in the square (`ff::point`).
+        Some(s) => {
+            let t = match s.origin {
+                SpriteOrigin::UpperLeft => "gl_PointCoord.y",
+                SpriteOrigin::LowerLeft => "1.0 - gl_PointCoord.y",
+            };
+            w.line(format!("vec4 p{u} = vec4(gl_PointCoord.x, {t}, 0.0, 1.0);"));
+        }
+        None => w.line(format!("vec4 p{u} = project(v_tc{u});")),
+    }
     // The coordinates the filter reads (s; s, t; s, t, r) and, for a compare, the r it
     // compares. CLAMP axes are clamped first (`clamp_coordinates`).
     let (vector, axes) = match unit.target {

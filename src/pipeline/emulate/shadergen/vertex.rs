@@ -244,6 +244,12 @@ fn emit_point_size(w: &mut GlslWriter, eye: &mut EyeTerms, points: PointKey) {
                 w.line("gl_PointSize = 2.0 * v_point_r;");
             }
         }
+        // Centred where the vertex is, of the size as computed.
+        PointShape::Sprite => {
+            if points.attenuated {
+                w.line("gl_PointSize = point_size;");
+            }
+        }
     }
 }
 
@@ -261,6 +267,7 @@ pub fn uniform_point_size(size: f32, limits: (f32, f32), shape: PointShape) -> f
             .floor()
             .max(1.0),
         PointShape::Round => 2.0 * if size <= 2.0 { 1.0 } else { 0.5 * size },
+        PointShape::Sprite => size,
     }
 }
 
