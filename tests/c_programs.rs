@@ -1651,3 +1651,24 @@ fn point_sprites_are_drawn_as_on_mesa() {
         "128x96",
     );
 }
+
+/// `tests/c/npot.c`: the extension string names ARB_texture_non_power_of_two, as Mesa's
+/// does, so that a program that checks it uploads its textures as they are — and they draw
+/// as on Mesa within 1/255 on every pixel: a 7×5 chain given level by level and the same
+/// chain generated (3×2, 1×1), REPEAT across seven texels, CLAMP and CLAMP_TO_EDGE, a 13×11
+/// glCopyTexImage2D, a proxy, 1D and 3D images, a square cube face and the error of an
+/// oblong one.
+#[test]
+fn non_power_of_two_textures_are_announced_and_drawn_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("npot");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "extension named 1",
+            "generated level 1            3 x 2 err 0x0",
+            "cube face 3x5                            err 0x501",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 10, "a texture of any size");
+    assert_images_match("npot", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
+}

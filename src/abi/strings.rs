@@ -51,6 +51,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_texture_lod_bias",
     "GL_EXT_texture_filter_anisotropic",
     "GL_ARB_point_sprite",
+    "GL_ARB_texture_non_power_of_two",
     "GL_EXT_compiled_vertex_array",
 ];
 
