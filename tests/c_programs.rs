@@ -1672,3 +1672,26 @@ fn non_power_of_two_textures_are_announced_and_drawn_as_on_mesa() {
     assert_same_text(&mesa_text, &ours_text, 10, "a texture of any size");
     assert_images_match("npot", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
 }
+
+/// `tests/c/extensions.c`: the earlier names of what GL 1.2–1.4 made core — EXT blend
+/// colour, equations, subtract and separate factors (and INGR's), NV blend square, EXT
+/// range and multi draws, the GL 1.1 texture calls under EXT names, EXT rescale normal, NV
+/// reflection texgen, EXT shadow functions, EXT ADD, SGIS border clamp, IBM mirrored
+/// repeat, APPLE packed pixels, ARB multisample — named in the extension string as in
+/// Mesa's, their entry points found and their tokens taken as Mesa takes them, and panels
+/// blended and drawn through those entry points as Mesa draws them, within 1/255.
+#[test]
+fn earlier_extension_names_are_announced_and_act_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("extensions");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "GL_EXT_blend_minmax              named 1",
+            "glBlendFuncSeparateINGR          found 1",
+            "glBlendEquationEXT ZERO                  err 0x500",
+            "BLEND_EQUATION_EXT                       32779  err 0x0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 60, "an extension's answer");
+    assert_images_match("extensions", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
+}

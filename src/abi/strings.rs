@@ -52,6 +52,27 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_EXT_texture_filter_anisotropic",
     "GL_ARB_point_sprite",
     "GL_ARB_texture_non_power_of_two",
+    // Earlier names of what GL 1.2–1.4 made core, which the model holds under those
+    // (`tests/c/extensions.c`).
+    "GL_APPLE_packed_pixels",
+    "GL_ARB_multisample",
+    "GL_EXT_blend_color",
+    "GL_EXT_blend_func_separate",
+    "GL_EXT_blend_minmax",
+    "GL_EXT_blend_subtract",
+    "GL_EXT_copy_texture",
+    "GL_EXT_draw_range_elements",
+    "GL_EXT_multi_draw_arrays",
+    "GL_EXT_rescale_normal",
+    "GL_EXT_shadow_funcs",
+    "GL_EXT_subtexture",
+    "GL_EXT_texture_env_add",
+    "GL_EXT_texture_object",
+    "GL_IBM_texture_mirrored_repeat",
+    "GL_INGR_blend_func_separate",
+    "GL_NV_blend_square",
+    "GL_NV_texgen_reflection",
+    "GL_SGIS_texture_border_clamp",
     "GL_EXT_compiled_vertex_array",
 ];
 
