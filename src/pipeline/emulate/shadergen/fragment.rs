@@ -199,10 +199,9 @@ fn emit_texel(
     sprite: Option<SpriteKey>,
 ) {
     let u = unit.unit;
-    w.declare(&format!("in vec4 v_tc{u};"));
-    projected(w);
     match sprite.filter(|s| s.replaces(u)) {
-        // A point sprite's coordinates (s, t, 0, 1): its place in the square (`ff::point`).
+        // A point sprite's coordinates (s, t, 0, 1): its place in the square (`ff::point`);
+        // the vertex's coordinates are not read (the linker drops their output).
         Some(s) => {
             let t = match s.origin {
                 SpriteOrigin::UpperLeft => "gl_PointCoord.y",
@@ -210,7 +209,11 @@ fn emit_texel(
             };
             w.line(format!("vec4 p{u} = vec4(gl_PointCoord.x, {t}, 0.0, 1.0);"));
         }
-        None => w.line(format!("vec4 p{u} = project(v_tc{u});")),
+        None => {
+            w.declare(&format!("in vec4 v_tc{u};"));
+            projected(w);
+            w.line(format!("vec4 p{u} = project(v_tc{u});"));
+        }
     }
     // The coordinates the filter reads (s; s, t; s, t, r) and, for a compare, the r it
     // compares. CLAMP axes are clamped first (`clamp_coordinates`).
