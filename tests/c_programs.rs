@@ -957,6 +957,33 @@ fn point_parameters_size_points_as_on_mesa() {
     );
 }
 
+/// `tests/c/point_edges.c`: aliased points cover the pixels of llvmpipe's rule for legacy
+/// points — centres at every 1/512 pixel across two pixels for sides 1 to 6, points whose
+/// centre lies on the right or top plane of a viewport smaller than the buffer (drawn
+/// beyond it, where a square clipped by its centre would lose them or move them in), the
+/// corners of triangles in POINT mode and those clipping makes, the same under distance
+/// attenuation: Mesa's image pixel for pixel, and the trace replays.
+#[test]
+fn points_at_pixel_ties_and_view_volume_planes_cover_mesas_pixels() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("point_edges");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "side 5 from 0.0 at 1/512 steps lit 800",
+            "planes at (  8,  64) attenuated 0 lit 129",
+            "polygon points side 3          lit 75",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 18, "a count of lit pixels");
+    assert_images_match("point_edges", &ours, &mesa, Tolerance::EXACT);
+    assert_trace_replays(
+        "point_edges",
+        &compile("point_edges", Linking::Direct),
+        &[],
+        "256x256",
+    );
+}
+
 /// `tests/c/secondary.c`: GL 1.4's secondary colour and fog coordinate through every
 /// front door (immediate mode, client arrays, a buffer object, glArrayElement, a display
 /// list) with Mesa's errors, conversions and answers — FOG_COORD_SRC left as it is by

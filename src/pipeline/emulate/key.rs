@@ -155,6 +155,31 @@ impl SpriteKey {
     }
 }
 
+/// The fragments a points pass keeps of the square the core context rasterises.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PointCut {
+    /// An aliased point (`PointShape::Square`): the pixels of llvmpipe's rule for legacy
+    /// points, whose centres c lie at X − side/2 < c ≤ X + side/2 in x and in y, X the
+    /// point's window position in 1/256-pixel steps; the others of the sprite (two pixels
+    /// wider than the side) are discarded.
+    Legacy,
+    /// POINT_SMOOTH (`PointShape::Round`): fragments outside the point's circle are
+    /// discarded and its alpha scaled as Mesa's aapoint stage scales it.
+    Round,
+}
+
+impl PointCut {
+    /// The cut of points of `shape`: none for sprites, which the core context draws as
+    /// Mesa does.
+    pub fn of(shape: PointShape) -> Option<PointCut> {
+        match shape {
+            PointShape::Square => Some(PointCut::Legacy),
+            PointShape::Round => Some(PointCut::Round),
+            PointShape::Sprite => None,
+        }
+    }
+}
+
 /// How a pass's points are rasterised.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PointShape {
@@ -334,10 +359,9 @@ pub struct FragmentKey {
     /// the pattern (a uniform) are discarded; set per draw pass, `false` from the state
     /// alone.
     pub polygon_stipple: bool,
-    /// POINT_SMOOTH on a pass that rasterises points (`PointShape::Round`): fragments
-    /// outside the point's circle are discarded and its alpha scaled as Mesa's aapoint
-    /// stage scales it; set per pass, `false` from the state alone.
-    pub point_coverage: bool,
+    /// What a pass that rasterises points does to their fragments (`PointCut`); set per
+    /// pass, `None` from the state alone and for sprites.
+    pub point_cut: Option<PointCut>,
     /// POINT_SPRITE with a unit whose COORD_REPLACE is TRUE (`ff::point::PointSprite`):
     /// those units read the fragment's place in the point's square (gl_PointCoord), on
     /// every pass of the geometry as Mesa's program reads it; set per pass, `None` from the
@@ -466,7 +490,7 @@ impl ShaderKey {
                 .filter(|f| *f != CompareFunc::Always),
             edges: None,
             polygon_stipple: false,
-            point_coverage: false,
+            point_cut: None,
             sprite: None,
             pixels: None,
         };

@@ -42,7 +42,7 @@ use glow::HasContext;
 
 use self::cache::ProgramCache;
 use self::draw::{GeometryCache, Winding};
-use self::key::{PointKey, PointShape, PositionSource, ShaderKey, SpriteKey};
+use self::key::{PointCut, PointKey, PositionSource, ShaderKey, SpriteKey};
 use self::program::Program;
 use self::sync::{CoreCalls, RasterSync};
 use self::textures::Textures;
@@ -290,7 +290,10 @@ impl Emulate {
             };
             key.fragment.edges = pass.edges;
             key.vertex.point_size = pass.draws_points().then_some(points);
-            key.fragment.point_coverage = pass.draws_points() && points.shape == PointShape::Round;
+            key.fragment.point_cut = pass
+                .draws_points()
+                .then(|| PointCut::of(points.shape))
+                .flatten();
             // Mesa 22.3 replaces the coordinates in the fragment program itself
             // (`nir_lower_texcoord_replace`), whatever the primitive: a triangle drawn under
             // POINT_SPRITE reads gl_PointCoord too, the texel at (0, 0) on llvmpipe

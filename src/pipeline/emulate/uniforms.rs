@@ -139,10 +139,10 @@ pub enum UniformSource {
     Sampler(u8),
     /// glPointSize: the attenuated size's start, and a round point's radius.
     PointSize,
-    /// One 1/256-pixel step of the viewport in clip x and y per unit w,
-    /// (2/(256·width), 2/(256·height)): the shift that gives an aliased point llvmpipe's
-    /// legacy tie rule (`shadergen::vertex`).
-    PointSubpixel,
+    /// The viewport transform from normalised device x and y to window coordinates
+    /// (GL 1.5 §2.11.1): (width/2, height/2, x + width/2, y + height/2), where an aliased
+    /// point is placed (`shadergen::vertex`).
+    PointWindow,
     /// (POINT_SIZE_MIN, POINT_SIZE_MAX, 0, 0).
     PointLimits,
     /// POINT_DISTANCE_ATTENUATION's (a, b, c, 0).
@@ -195,7 +195,7 @@ impl UniformSource {
             UniformSource::CombinerConstant(i) => format!("u_combiner_constant{i}"),
             UniformSource::Sampler(u) => format!("u_tex{u}"),
             UniformSource::PointSize => "u_point_size".into(),
-            UniformSource::PointSubpixel => "u_point_subpixel".into(),
+            UniformSource::PointWindow => "u_point_window".into(),
             UniformSource::PointLimits => "u_point_limits".into(),
             UniformSource::PointAttenuation => "u_point_attenuation".into(),
             UniformSource::ClipPlane(i) => format!("u_clip_plane{i}"),
@@ -405,18 +405,19 @@ pub fn value(source: UniformSource, state: &FixedState) -> UniformValue {
             0.0,
             0.0,
         )),
+        UniformSource::PointWindow => {
+            let v = state.viewport;
+            let (half_w, half_h) = (v.width as f32 / 2.0, v.height as f32 / 2.0);
+            Vec4(glam::Vec4::new(
+                half_w,
+                half_h,
+                v.x as f32 + half_w,
+                v.y as f32 + half_h,
+            ))
+        }
         UniformSource::PointAttenuation => {
             let [a, b, c] = state.point_params.attenuation;
             Vec4(glam::Vec4::new(a, b, c, 0.0))
-        }
-        UniformSource::PointSubpixel => {
-            let step = |side: i32| 2.0 / (256.0 * side.max(1) as f32);
-            Vec4(glam::Vec4::new(
-                step(state.viewport.width),
-                step(state.viewport.height),
-                0.0,
-                0.0,
-            ))
         }
         UniformSource::ClipPlane(i) => Vec4(
             state

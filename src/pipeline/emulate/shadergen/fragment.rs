@@ -9,7 +9,8 @@ use crate::ff::{
 };
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::{
-    ClampKey, EnvKey, FragmentKey, FragmentUnitKey, InLevel, SpriteKey, SpriteOrigin, TexelKey,
+    ClampKey, EnvKey, FragmentKey, FragmentUnitKey, InLevel, PointCut, SpriteKey, SpriteOrigin,
+    TexelKey,
 };
 use crate::pipeline::emulate::polygon::EdgeRule;
 use crate::pipeline::emulate::uniforms::UniformSource;
@@ -26,8 +27,10 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
     if key.polygon_stipple {
         emit_polygon_stipple(&mut w);
     }
-    if key.point_coverage {
-        emit_point_coverage(&mut w);
+    match key.point_cut {
+        Some(PointCut::Legacy) => emit_legacy_point(&mut w),
+        Some(PointCut::Round) => emit_point_coverage(&mut w),
+        None => {}
     }
     if key.two_side {
         w.declare(&format!("{flat}in vec4 v_back_color;"));
@@ -86,7 +89,7 @@ pub fn generate(key: &FragmentKey) -> GlslWriter {
             }
         }
     }
-    if key.point_coverage {
+    if key.point_cut == Some(PointCut::Round) {
         // Before the alpha test, which sees the scaled alpha as Mesa's does.
         match key.precision {
             Precision::Float => w.line("previous.a *= point_coverage;"),
@@ -536,6 +539,23 @@ fn emit_combine(w: &mut GlslWriter, key: &FragmentKey, u: u8, rgb: Combine, alph
         m.clamp(&format!("({e}) * {:?}", alpha.scale.factor()))
     };
     w.line(format!("previous = vec4(rgb{u}, {alpha_value});"));
+}
+
+/// An aliased point as llvmpipe's rule for legacy points covers it: the pixels whose
+/// centres c lie at X − side/2 < c ≤ X + side/2 in x and in y, where X is the window
+/// position x snapped to 1/256 pixel, X₂₅₆ = ⌊256·(x − ½) + ½⌋ + 128, and compared in
+/// those steps. The core context rasterises a square two pixels wider about x, which holds
+/// them all. The position and side come from the vertex stage without perspective
+/// (`v_point`): a point's own vertex gives them whole, and where clipping makes a corner
+/// of a polygon drawn in POINT mode they are interpolated in window space, as the corner.
+fn emit_legacy_point(w: &mut GlslWriter) {
+    w.declare("noperspective in vec3 v_point;");
+    w.line("vec2 point_at = floor((v_point.xy - 0.5) * 256.0 + 0.5) + 128.0;");
+    w.line("vec2 point_from = gl_FragCoord.xy * 256.0 - point_at;");
+    w.line("float point_half = 128.0 * v_point.z;");
+    w.line(
+        "if (any(lessThanEqual(point_from, vec2(-point_half))) || any(greaterThan(point_from, vec2(point_half)))) discard;",
+    );
 }
 
 /// A round point (POINT_SMOOTH) as Mesa's aapoint stage draws it: with (s, t) running from

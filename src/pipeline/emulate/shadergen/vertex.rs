@@ -193,11 +193,13 @@ fn emit_normal(w: &mut GlslWriter, key: &VertexKey, out: &str, attribute: &str) 
 ///
 /// An aliased point's side is that size rounded as llvmpipe's point setup rounds it
 /// (GL 1.5 §3.3: aliased sizes are rounded): in 1/256 pixel steps, s₈ = roundEven(256·size),
-/// side = max(1, ⌊(s₈ + 127)/256⌋), so halves round down (1.5 → 1, 2.5 → 2). The core
-/// context rasterises a point sprite, covering a pixel whose centre c is at lo ≤ c < hi in
-/// 1/256 steps; llvmpipe's legacy points take lo < c ≤ hi, the same as the sprite's rule
-/// one step up and right, so the aliased point moves by one step (measured: points at x.5
-/// of even sides cover Mesa's pixels only so).
+/// side = max(1, ⌊(s₈ + 127)/256⌋), so halves round down (1.5 → 1, 2.5 → 2). llvmpipe's
+/// legacy points cover the pixels whose centres c lie at X − side/2 < c ≤ X + side/2, X the
+/// window position in 1/256 steps; the core context rasterises a point sprite, whose rule
+/// is the other way round (lo ≤ c < hi). So the sprite is drawn two pixels wider than the
+/// side and the fragment stage keeps the legacy rule's pixels (`PointCut::Legacy`). A
+/// point whose centre lies on the right or top plane (x = w) is inside the view volume
+/// (GL 1.5 §2.12) and keeps its pixels beyond it.
 ///
 /// A round point is the square of Mesa's aapoint stage, side 2r: r = 1 up to size 2 and
 /// size/2 above for glPointSize's size, size/2 for an attenuated (per-vertex) one; r goes
@@ -219,18 +221,17 @@ fn emit_point_size(w: &mut GlslWriter, eye: &mut EyeTerms, points: PointKey) {
     ));
     match points.shape {
         PointShape::Square => {
-            let step = w.uniform(UniformSource::PointSubpixel);
+            let window = w.uniform(UniformSource::PointWindow);
+            w.declare("noperspective out vec3 v_point;");
+            w.line(
+                "float point_side = max(1.0, floor((roundEven(point_size * 256.0) + 127.0) / 256.0));",
+            );
             if points.attenuated {
-                w.line(
-                    "gl_PointSize = max(1.0, floor((roundEven(point_size * 256.0) + 127.0) / 256.0));",
-                );
+                w.line("gl_PointSize = point_side + 2.0;");
             }
-            // The shift stops at the right and top planes: a centre on them (x = w) is
-            // inside the view volume (GL 1.5 §2.12) and Mesa draws its point; shifted past
-            // them it would be clipped.
+            // The window position as the draw module computes it: x/w, then the viewport.
             w.line(format!(
-                "gl_Position.xy = min(gl_Position.xy + {step}.xy * gl_Position.w, \
-                 max(gl_Position.xy, vec2(gl_Position.w)));"
+                "v_point = vec3(gl_Position.xy * (1.0 / gl_Position.w) * {window}.xy + {window}.zw, point_side);"
             ));
         }
         PointShape::Round => {
@@ -263,9 +264,12 @@ fn emit_point_size(w: &mut GlslWriter, eye: &mut EyeTerms, points: PointKey) {
 pub fn uniform_point_size(size: f32, limits: (f32, f32), shape: PointShape) -> f32 {
     let size = size.max(limits.0).min(limits.1);
     match shape {
-        PointShape::Square => (((size * 256.0).round_ties_even() + 127.0) / 256.0)
-            .floor()
-            .max(1.0),
+        PointShape::Square => {
+            (((size * 256.0).round_ties_even() + 127.0) / 256.0)
+                .floor()
+                .max(1.0)
+                + 2.0
+        }
         PointShape::Round => 2.0 * if size <= 2.0 { 1.0 } else { 0.5 * size },
         PointShape::Sprite => size,
     }
