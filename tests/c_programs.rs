@@ -984,6 +984,36 @@ fn points_at_pixel_ties_and_view_volume_planes_cover_mesas_pixels() {
     );
 }
 
+/// `tests/c/edge_strips.c`: edge flags hide edges of triangle strips, triangle fans and
+/// quad strips as on Mesa, whose draw module flags the triangles it cuts strips and fans
+/// into (GL 1.5 §2.6.2 would draw every edge of strips and fans: a deviation of Mesa's
+/// the layer follows) — each flag cleared in turn through glBegin/glEnd, edge-flag arrays
+/// drawn and indexed, blended POINT mode drawing a vertex once per triangle, the current
+/// flag FALSE, separate front and back modes, a stippled outline, flat colours. Every
+/// printed count is Mesa's; the image is within 3/255 on 99% of pixels (a quad strip's
+/// corner where two flagged edges meet takes the colour of the other edge: the layer
+/// draws a quad strip's two triangles in the other order, the one its filled quads need).
+#[test]
+fn edge_flags_hide_edges_of_strips_and_fans_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("edge_strips");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "strip      flag 1 cleared      lit 154",
+            "fan        current flag FALSE  lit 0",
+            "quad strip flag 1 cleared      lit 109",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 39, "a count of lit pixels");
+    assert_images_match("edge_strips", &ours, &mesa, within_3_on_99_percent(&mesa));
+    assert_trace_replays(
+        "edge_strips",
+        &compile("edge_strips", Linking::Direct),
+        &[],
+        "256x256",
+    );
+}
+
 /// `tests/c/secondary.c`: GL 1.4's secondary colour and fog coordinate through every
 /// front door (immediate mode, client arrays, a buffer object, glArrayElement, a display
 /// list) with Mesa's errors, conversions and answers — FOG_COORD_SRC left as it is by

@@ -220,12 +220,20 @@ impl Geometry {
         Ok(())
     }
 
-    /// Whether GL reads edge flags for this primitive: independent triangles, independent
-    /// quads and polygons (GL 1.5 §2.6.2; strips and fans take every edge as a boundary).
+    /// Whether edge flags hide edges of this primitive: every polygon type, as on Mesa.
+    /// GL 1.5 §2.6.2 names independent triangles, quads and polygons only (strips and fans
+    /// taking every edge as a boundary); Mesa's draw module flags each edge of the
+    /// triangles it cuts strips and fans into by the edge's first vertex, and each edge of
+    /// a quad strip's quad as a quad's (measured, `tests/c/edge_strips.c`).
     pub fn reads_edge_flags(&self) -> bool {
         matches!(
             self.primitive,
-            Primitive::Triangles | Primitive::Quads | Primitive::Polygon
+            Primitive::Triangles
+                | Primitive::TriangleStrip
+                | Primitive::TriangleFan
+                | Primitive::Quads
+                | Primitive::QuadStrip
+                | Primitive::Polygon
         )
     }
 

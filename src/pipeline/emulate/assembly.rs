@@ -60,10 +60,27 @@ pub struct Polygon {
 }
 
 /// The polygons of `primitive` over `indices` (the vertices in submission order); empty for
-/// the types core GL draws itself, TRIANGLES apart (their corners carry edge flags,
-/// `polygon`). Incomplete trailing polygons are dropped (GL 1.5 §2.6.1).
+/// points and lines. The triangle types give one polygon per triangle (their corners carry
+/// edge flags, `polygon`): a strip's triangle i as Mesa's draw module orders it for the
+/// last vertex provoking, (i, i+1, i+2) for even i and (i+1, i, i+2) for odd, a fan's as
+/// (0, i+1, i+2). Incomplete trailing polygons are dropped (GL 1.5 §2.6.1).
 pub fn polygons(primitive: Primitive, indices: &[u32]) -> Vec<Polygon> {
     match primitive {
+        Primitive::TriangleStrip => (0..indices.len().saturating_sub(2))
+            .map(|i| {
+                let odd = i % 2;
+                Polygon {
+                    vertices: vec![indices[i + odd], indices[i + 1 - odd], indices[i + 2]],
+                    provoking: 2,
+                }
+            })
+            .collect(),
+        Primitive::TriangleFan => (0..indices.len().saturating_sub(2))
+            .map(|i| Polygon {
+                vertices: vec![indices[0], indices[i + 1], indices[i + 2]],
+                provoking: 2,
+            })
+            .collect(),
         // Triangle i: 3i, 3i+1, 3i+2; provoking 3i+2 (the last).
         Primitive::Triangles => indices
             .chunks_exact(3)
@@ -168,7 +185,14 @@ mod tests {
             "polygon: its first vertex"
         );
         assert!(polygons(Primitive::Polygon, &[0, 1]).is_empty());
-        assert!(polygons(Primitive::TriangleFan, &[0, 1, 2]).is_empty());
+        assert!(polygons(Primitive::LineLoop, &[0, 1, 2]).is_empty());
+        let strip = polygons(Primitive::TriangleStrip, &[5, 6, 7, 8, 9]);
+        let order: Vec<Vec<u32>> = strip.iter().map(|p| p.vertices.clone()).collect();
+        assert_eq!(order, [vec![5, 6, 7], vec![7, 6, 8], vec![7, 8, 9]]);
+        let fan = polygons(Primitive::TriangleFan, &[5, 6, 7, 8]);
+        let order: Vec<Vec<u32>> = fan.iter().map(|p| p.vertices.clone()).collect();
+        assert_eq!(order, [vec![5, 6, 7], vec![5, 7, 8]]);
+        assert!(strip.iter().chain(&fan).all(|p| p.provoking == 2));
     }
 
     #[test]

@@ -105,10 +105,7 @@ pub fn outline_segments(g: &Geometry, state: &FixedState) -> Vec<Segment> {
         .iter()
         .map(|&p| clip_coordinates(mvp, p))
         .collect();
-    let flagged = matches!(
-        g.primitive,
-        Primitive::Triangles | Primitive::Quads | Primitive::Polygon
-    );
+    let flagged = g.reads_edge_flags();
     let current = state.current.edge_flag;
     let mut out = Vec::new();
     let mut carry = false;

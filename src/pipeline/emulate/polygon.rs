@@ -20,15 +20,18 @@
 //!   extrapolate below 0).
 //!   e.w is 1 on the one corner that owns each polygon vertex, so POINT mode keeps a point
 //!   iff e.w ≠ 0 and a vertex shared by the two triangles of a quad is drawn once.
-//! - **Edge flags ride on the same attribute** (§2.6.2: TRIANGLES, QUADS and POLYGON read
-//!   them; strips and fans do not). The polygon edge from vertex k to k+1 is a boundary edge
-//!   only if k's flag is TRUE, so a FALSE flag makes it a split edge (1 at every corner).
+//! - **Edge flags ride on the same attribute**, for every polygon type as on Mesa (§2.6.2
+//!   names TRIANGLES, QUADS and POLYGON only; Mesa's draw module flags the strips' and
+//!   fans' triangles and the quad strip's quads too, `Geometry::reads_edge_flags`). The
+//!   polygon edge from vertex k to k+1 is a boundary edge only if k's flag is TRUE, so a
+//!   FALSE flag makes it a split edge (1 at every corner); a strip's or fan's triangle is a
+//!   polygon of its own, its vertices in the draw module's order (`assembly::polygons`).
 //!   POINT mode draws a vertex only if its flag is TRUE, as Mesa's draw module does
 //!   (`draw_pipe_unfilled.c` tests the vertex's flag for points as for lines; measured in
-//!   tests/fidelity_edge_flags.rs). TRIANGLES with an edge-flag array holding a FALSE are
-//!   uploaded as corners too ([`Outline::Corners`]); without an array every vertex has the
-//!   current flag, and a FALSE one leaves nothing to draw in LINE or POINT mode
-//!   ([`hides_outline`]).
+//!   tests/fidelity_edge_flags.rs), once per polygon that has it, as there. The triangle
+//!   types with an edge-flag array holding a FALSE are uploaded as corners too
+//!   ([`Outline::Corners`]); without an array every vertex has the current flag, and a
+//!   FALSE one leaves nothing to draw in LINE or POINT mode ([`hides_outline`]).
 //!
 //! - **One offset enable per pass.** Each pass rasterises in one mode, so only that mode's
 //!   enable is sent (all three on or all off). This also keeps llvmpipe from offsetting
@@ -54,10 +57,14 @@ pub enum Outline {
 }
 
 impl Outline {
-    /// QUADS, QUAD_STRIP and POLYGON, and TRIANGLES whose edge-flag array has a FALSE.
+    /// QUADS, QUAD_STRIP and POLYGON, and the triangle types whose edge-flag array has a
+    /// FALSE.
     pub fn of(g: &Geometry) -> Outline {
-        let flagged = g.primitive == Primitive::Triangles
-            && g.edge_flags.as_ref().is_some_and(|f| f.contains(&false));
+        let triangles = matches!(
+            g.primitive,
+            Primitive::Triangles | Primitive::TriangleStrip | Primitive::TriangleFan
+        );
+        let flagged = triangles && g.edge_flags.as_ref().is_some_and(|f| f.contains(&false));
         if is_split(g.primitive) || flagged {
             Outline::Corners
         } else {
@@ -196,20 +203,19 @@ pub fn split_corners(
     diagonal: Diagonal,
     flag: impl Fn(u32) -> bool,
 ) -> Option<Vec<Corner>> {
-    if !is_split(primitive) && primitive != Primitive::Triangles {
+    let triangles = matches!(
+        primitive,
+        Primitive::Triangles | Primitive::TriangleStrip | Primitive::TriangleFan
+    );
+    if !is_split(primitive) && !triangles {
         return None;
     }
-    let reads_flags = primitive != Primitive::QuadStrip;
     let mut out = Vec::new();
     for poly in assembly::polygons(primitive, indices) {
         let n = poly.vertices.len();
         let mut owned = vec![false; n];
         let provoking = poly.vertices[poly.provoking];
-        let flags: Vec<bool> = poly
-            .vertices
-            .iter()
-            .map(|&v| !reads_flags || flag(v))
-            .collect();
+        let flags: Vec<bool> = poly.vertices.iter().map(|&v| flag(v)).collect();
         for tri in assembly::triangles(primitive, n, diagonal) {
             for (c, &k) in tri.iter().enumerate() {
                 let mut e = [0.0; 4];
