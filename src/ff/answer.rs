@@ -312,7 +312,6 @@ fn client_get(pname: u32, c: &Client) -> Option<Queried> {
         r::INDEX_ARRAY_TYPE => enm(ty(a.index.ty)),
         r::INDEX_ARRAY_STRIDE => int(i64::from(a.index.stride)),
         r::INDEX_ARRAY_BUFFER_BINDING => int(i64::from(buffer_of(&a.index.data))),
-        r::LIST_BASE => int(i64::from(c.lists.base)),
         r::LIST_INDEX => int(i64::from(c.lists.compiling_name().unwrap_or(0))),
         r::LIST_MODE => match c.lists.compiling() {
             Some(ListMode::CompileAndExecute) => enm(r::COMPILE_AND_EXECUTE),

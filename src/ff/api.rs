@@ -1231,6 +1231,7 @@ impl Command {
             Command::FramebufferRenderbuffer { .. } => Entry::FramebufferRenderbuffer,
             Command::DrawBuffer(_) => Entry::DrawBuffer,
             Command::ReadBuffer(_) => Entry::ReadBuffer,
+            Command::ListBase(_) => Entry::ListBase,
             Command::GenerateMipmap(_) => Entry::GenerateMipmap,
             Command::UseProgram(_) => Entry::UseProgram,
             Command::Uniform { .. } => Entry::Uniform1f,

@@ -365,6 +365,7 @@ impl FixedState {
                 self.check_get_tex_image(g)?;
             }
             Command::PopAttrib => self.pop_attrib()?,
+            Command::ListBase(base) => self.list_base = *base,
             Command::BindFramebuffer { .. }
             | Command::DeleteFramebuffers(_)
             | Command::BindRenderbuffer(_)

@@ -3,11 +3,25 @@
 //!
 //! A push records the whole model state with the mask; a pop copies back the fields of the
 //! groups the mask names, and only those. Each group's fields are listed once, in
-//! `FixedState::restore_group`. Groups whose state the model does not hold yet (FOG,
-//! SCISSOR, EVAL, HINT, LIST, MULTISAMPLE, POLYGON_STIPPLE) are
-//! accepted and restore nothing; a field added to the model for one of them is added to
-//! its arm there. What GL puts in two groups (LIGHTING's enables are also ENABLE's) is
-//! restored by either, from the same snapshot.
+//! `FixedState::restore_group`; a field added to the model is added to its group's arm
+//! there. What GL puts in two groups (LIGHTING's enables are also ENABLE's) is restored by
+//! either, from the same snapshot.
+//!
+//! Where Mesa 22.3 restores a field by calling the setter again, the pop follows it, errors
+//! included (measured on OSMesa, `tests/c/mesa_answers.c`):
+//! - COLOR_BUFFER_BIT saves the draw buffer of the last glDrawBuffer that succeeded, on
+//!   whichever framebuffer (Mesa's context copy `Color.DrawBuffer[0]`); the pop sets it on
+//!   the framebuffer bound then only when that copy differs from the saved value, and
+//!   only if that framebuffer can draw into it: a FRONT saved on the window and popped
+//!   over an FBO changes nothing and raises no error;
+//! - PIXEL_MODE_BIT saves the last glReadBuffer's buffer likewise (`Pixel.ReadBuffer`); when
+//!   the copy differs, the pop takes the saved value into it and calls glReadBuffer(saved)
+//!   on the framebuffer bound, errors included: a FRONT popped over an FBO is
+//!   INVALID_OPERATION;
+//! - HINT_BIT restores every hint but GENERATE_MIPMAP_HINT, which Mesa's pop leaves as it
+//!   is (GL 1.4 puts it in the hint group; followed: Mesa).
+//!
+//! A pop restores every group of its mask and records the first error raised.
 //!
 //! Matrices and their stacks belong to no group (only MATRIX_MODE is TRANSFORM state), and
 //! texture images belong to no group: TEXTURE_BIT saves the bindings of every unit, the
@@ -153,14 +167,19 @@ impl FixedState {
         let frame = self.attrib_stack.pop().ok_or(GlError::stack_underflow(
             "PopAttrib on an empty attribute stack",
         ))?;
+        let mut first_error = Ok(());
         for group in frame.mask.groups() {
-            self.restore_group(group, &frame.saved);
+            let restored = self.restore_group(group, &frame.saved);
+            if first_error.is_ok() {
+                first_error = restored;
+            }
         }
-        Ok(())
+        first_error
     }
 
-    /// Copies one group's fields back from `s` (GL 1.5 Tables 6.5–6.28, "attribute").
-    fn restore_group(&mut self, group: AttribGroup, s: &FixedState) {
+    /// Copies one group's fields back from `s` (GL 1.5 Tables 6.5–6.28, "attribute"); the
+    /// error of a setter called again as Mesa calls it (the draw and read buffers).
+    fn restore_group(&mut self, group: AttribGroup, s: &FixedState) -> GlResult {
         match group {
             // Current colour, normal, texture coordinates and the raster position (the edge
             // flag is not modelled).
@@ -190,7 +209,7 @@ impl FixedState {
                 self.depth_range = s.depth_range;
             }
             // Alpha test, blending and its colour, logic op, dither, colour write mask,
-            // clear colour (the draw buffer is not modelled).
+            // clear colour, and the draw buffer as Mesa restores it (module note).
             AttribGroup::ColorBuffer => {
                 self.alpha_test = s.alpha_test;
                 self.blend = s.blend;
@@ -204,6 +223,13 @@ impl FixedState {
                 // Mesa sets the clear index again only when it differs.
                 if self.clear_index != s.clear_index {
                     self.clear_index = super::color_index::restored_clear_index(s.clear_index);
+                }
+                let saved = s.framebuffers.last_set.draw;
+                if self.framebuffers.last_set.draw != saved {
+                    // A buffer the bound framebuffer cannot draw into is left out silently.
+                    if self.framebuffers.set_color_buffer(false, saved).is_err() {
+                        return Ok(());
+                    }
                 }
             }
             AttribGroup::DepthBuffer => {
@@ -248,12 +274,23 @@ impl FixedState {
                 self.fog.value.coord_source = source;
             }
             AttribGroup::Scissor => self.scissor = s.scissor,
-            AttribGroup::Hint => self.hints = s.hints,
-            // glPixelTransfer and glPixelZoom (Table 6.16). The pixel maps belong to no
-            // group (Table 6.17's "—"; Mesa 22.3 measured: tests/c/pixelstore.c).
+            // Every hint but GENERATE_MIPMAP_HINT (module note).
+            AttribGroup::Hint => {
+                let mipmap = self.hints.generate_mipmap;
+                self.hints = s.hints;
+                self.hints.generate_mipmap = mipmap;
+            }
+            // glPixelTransfer, glPixelZoom (Table 6.16) and the read buffer as Mesa
+            // restores it (module note). The pixel maps belong to no group (Table 6.17's
+            // "—"; Mesa 22.3 measured: tests/c/pixelstore.c).
             AttribGroup::PixelMode => {
                 self.pixel_transfer = s.pixel_transfer;
                 self.pixel_zoom = s.pixel_zoom;
+                let saved = s.framebuffers.last_set.read;
+                if self.framebuffers.last_set.read != saved {
+                    self.framebuffers.last_set.read = saved;
+                    return self.framebuffers.set_color_buffer(true, saved);
+                }
             }
             // ACCUM_CLEAR_VALUE (Table 6.20).
             AttribGroup::AccumBuffer => self.clear.accum = s.clear.accum,
@@ -263,9 +300,9 @@ impl FixedState {
             }
             // The evaluator enables (Table 6.28); the maps and grids are not modelled.
             AttribGroup::Eval => self.eval = s.eval,
-            // Not modelled yet: nothing saved, nothing restored.
-            AttribGroup::List => {}
+            AttribGroup::List => self.list_base = s.list_base,
         }
+        Ok(())
     }
 
     /// ENABLE_BIT: every glEnable flag the model has.
@@ -755,6 +792,35 @@ mod tests {
         TexEnvMode, TexEnvParam, TexParam, Wrap,
     };
     use glam::Vec4;
+
+    /// LIST_BIT restores the list base; HINT_BIT every hint but GENERATE_MIPMAP_HINT,
+    /// which Mesa 22.3's pop leaves as it is.
+    #[test]
+    fn list_base_is_restored_and_the_mipmap_hint_kept() {
+        use crate::ff::fragment::{HintMode, HintTarget};
+        let mut s = FixedState::default();
+        let mask = AttribMask::of(&[AttribGroup::List, AttribGroup::Hint]);
+        apply(
+            &mut s,
+            &[
+                Command::ListBase(3),
+                Command::PushAttrib(mask),
+                Command::ListBase(9),
+                Command::Hint {
+                    target: HintTarget::GenerateMipmap,
+                    mode: HintMode::Fastest,
+                },
+                Command::Hint {
+                    target: HintTarget::Fog,
+                    mode: HintMode::Nicest,
+                },
+                Command::PopAttrib,
+            ],
+        );
+        assert_eq!(s.list_base, 3);
+        assert_eq!(s.hints.generate_mipmap, HintMode::Fastest);
+        assert_eq!(s.hints.fog, HintMode::DontCare);
+    }
 
     fn apply(s: &mut FixedState, cmds: &[Command]) {
         for c in cmds {

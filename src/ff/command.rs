@@ -563,6 +563,8 @@ pub enum Command {
     DrawBuffer(ColorBuffer),
     /// glReadBuffer of the bound read framebuffer.
     ReadBuffer(ColorBuffer),
+    /// glListBase(base): the offset glCallLists adds to each name.
+    ListBase(u32),
     /// glGenerateMipmap of the active unit's texture: levels 1… from level 0.
     GenerateMipmap(TextureTarget),
     // Texture calls of GL 1.1 beyond the 2D image (ff::texture_calls).

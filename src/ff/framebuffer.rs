@@ -371,6 +371,12 @@ pub struct Framebuffers {
     /// The window's draw and read buffers. GL default: FRONT (a single-buffered
     /// window, as Mesa's OSMesa buffer).
     pub window_draw: WindowBuffers,
+    /// The buffers of the last glDrawBuffer and glReadBuffer that succeeded, on whichever
+    /// framebuffer was bound (Mesa's context copies `Color.DrawBuffer[0]` and
+    /// `Pixel.ReadBuffer`): what glPushAttrib saves under COLOR_BUFFER_BIT and
+    /// PIXEL_MODE_BIT, and what glPopAttrib compares with (`ff::attrib`). GL default:
+    /// FRONT, FRONT.
+    pub last_set: WindowBuffers,
     /// The window's bits (GL_RED_BITS … GL_STENCIL_BITS with framebuffer 0 bound): the
     /// pipelines read them from the target bound when they start.
     pub window_bits: Bits,
@@ -533,6 +539,11 @@ impl Framebuffers {
             _ => &mut self.window_draw.draw,
         };
         *slot = buffer;
+        if read {
+            self.last_set.read = buffer;
+        } else {
+            self.last_set.draw = buffer;
+        }
         Ok(())
     }
 

@@ -164,7 +164,7 @@ impl Client {
                 if self.immediate.is_open() {
                     return Err(c.immediate("glListBase inside glBegin/glEnd"));
                 }
-                self.lists.base = c.u32(0)?;
+                out.push(Command::ListBase(c.u32(0)?));
                 return Ok(Reply::None);
             }
             _ => {}
@@ -341,7 +341,7 @@ impl Client {
         Ok(vec![match c.entry() {
             Entry::CallList => Item::Call(c.u32(0)?),
             Entry::CallLists => Item::CallMany(list_names(c)?),
-            Entry::ListBase => Item::Base(c.u32(0)?),
+            Entry::ListBase => Item::Command(Command::ListBase(c.u32(0)?)),
             e if ClientArrays::handles(e) => match self.arrays.call(
                 c,
                 &WithBuffers {
@@ -415,15 +415,14 @@ impl Client {
                 Item::Call(name) => self.call_list(*name, depth, start, out),
                 Item::CallMany(names) => {
                     for n in names {
-                        let name = self.lists.base.wrapping_add(*n);
                         let mut now = start;
                         for cmd in &out[before..] {
                             now.follow(cmd);
                         }
+                        let name = now.list_base.wrapping_add(*n);
                         self.call_list(name, depth, now, out);
                     }
                 }
-                Item::Base(b) => self.lists.base = *b,
                 Item::ArrayEnable { cap, on } => {
                     if let Some(enabled) = self.arrays.enable_of(*cap) {
                         *enabled = *on;

@@ -43,6 +43,9 @@ pub struct Immediate {
 pub struct Start {
     pub current: CurrentValues,
     pub materials: Materials,
+    /// LIST_BASE, which glCallLists adds to its names. A glPopAttrib(LIST_BIT) met in the
+    /// same replay is not followed: the model restores the base when it applies the pop.
+    pub list_base: u32,
 }
 
 impl Start {
@@ -50,6 +53,7 @@ impl Start {
     pub const DEFAULT: Start = Start {
         current: CurrentValues::DEFAULT,
         materials: Materials::DEFAULT,
+        list_base: 0,
     };
 
     /// The model's values.
@@ -57,6 +61,7 @@ impl Start {
         Start {
             current: state.current,
             materials: state.materials,
+            list_base: state.list_base,
         }
     }
 
@@ -64,9 +69,13 @@ impl Start {
     /// the model applies them).
     pub fn follow(&mut self, cmd: &Command) {
         super::lists::follow(&mut self.current, cmd);
-        if let Command::Material { face, param } = cmd {
+        match cmd {
             // An invalid value is refused by the model and changes nothing.
-            let _ = self.materials.set(*face, *param);
+            Command::Material { face, param } => {
+                let _ = self.materials.set(*face, *param);
+            }
+            Command::ListBase(base) => self.list_base = *base,
+            _ => {}
         }
     }
 }

@@ -32,8 +32,6 @@ pub enum Item {
     Call(u32),
     /// glCallLists: the names before the list base is added.
     CallMany(Vec<u32>),
-    /// glListBase(b).
-    Base(u32),
     /// A glBegin … glEnd assembled at glEndList (`list_pairs`).
     Pair(Box<Pair>),
     /// glEnable/glDisable of a client array's token (`Client::array_enable`).
@@ -55,8 +53,6 @@ pub enum ListMode {
 pub struct Lists {
     lists: HashMap<u32, Arc<Vec<Item>>>,
     compiling: Option<(u32, ListMode, Vec<Item>)>,
-    /// glListBase. GL default: 0.
-    pub base: u32,
 }
 
 /// A listed QUADS draw made indexed (vertex i at index i), as Mesa's list compiler stores

@@ -431,6 +431,9 @@ pnames! {
     DRAW_BUFFER => |s| enm(s.framebuffers.color_buffer(framebuffer::FramebufferTarget::Draw)),
     READ_BUFFER => |s| enm(s.framebuffers.color_buffer(framebuffer::FramebufferTarget::Read)),
 
+    // Display lists (Table 6.36); LIST_BASE is a GLuint read as it is.
+    LIST_BASE => |s| int(s.list_base as i32),
+
     // Attribute stack (Table 6.39).
     ATTRIB_STACK_DEPTH => |s| count(s.attrib_depth()),
     MAX_ATTRIB_STACK_DEPTH => |_| count(MAX_ATTRIB_STACK_DEPTH),

@@ -308,6 +308,9 @@ pub struct FixedState {
     pub eval: EvalEnables,
     /// glHint. GL default: DONT_CARE for every target; state only.
     pub hints: Hints,
+    /// LIST_BASE (glListBase), LIST_BIT state: the front end adds it to glCallLists'
+    /// names. GL default: 0.
+    pub list_base: u32,
     /// CURRENT_RASTER_* (`raster`). GL default: [`RasterPos::DEFAULT`].
     pub raster: RasterPos,
     /// glPixelTransfer (`pixels`). GL default: [`PixelTransfer::DEFAULT`].
@@ -399,6 +402,7 @@ impl FixedState {
             clear_index: 0,
             index_mask: u32::MAX,
             hints: Hints::DEFAULT,
+            list_base: 0,
             raster: RasterPos::DEFAULT,
             pixel_transfer: PixelTransfer::DEFAULT,
             pixel_maps: Default::default(),

@@ -596,6 +596,7 @@ fn call(c: &Command) -> String {
         ),
         Command::DrawBuffer(b) => format!("{}({})", Entry::DrawBuffer, n(*b)),
         Command::ReadBuffer(b) => format!("{}({})", Entry::ReadBuffer, n(*b)),
+        Command::ListBase(base) => format!("{}({base})", Entry::ListBase),
         Command::GenerateMipmap(t) => format!("{}({})", Entry::GenerateMipmap, n(*t)),
         Command::BlitFramebuffer(b) => blit(b),
         Command::CopyTexImage1D(c) => format!(

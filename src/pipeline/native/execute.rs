@@ -279,6 +279,8 @@ impl Native {
             | Command::FramebufferRenderbuffer { .. }
             | Command::DrawBuffer(_)
             | Command::ReadBuffer(_) => {}
+            // The front end adds the base to glCallLists' names before the draws arrive.
+            Command::ListBase(_) => {}
             // Issued by the path's query mirror (`pipeline::queries`).
             Command::Query(_) => {}
             // Mesa's fixed function has no programs (`ff::program`).
