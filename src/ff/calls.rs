@@ -488,7 +488,11 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::TexSubImage2D => {
             c.count(9)?;
-            let face = image_2d_target(c)?.face();
+            let target = image_2d_target(c)?;
+            if let Some(refused) = super::texture_calls::sub_image_refusal(c, target, &[4, 5])? {
+                return Ok(Some(refused));
+            }
+            let face = target.face();
             let shape = PixelShape::groups(c.i32(4)?, c.i32(5)?, c.enm(6)?, c.enm(7)?);
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));

@@ -11,6 +11,11 @@
 //! glGetTexImage: STENCIL_INDEX INVALID_ENUM, DEPTH_COMPONENT of a colour texture or a
 //! colour format of a depth texture INVALID_OPERATION; a level never specified stores
 //! nothing, without an error (Mesa).
+//!
+//! glTexSubImage1D/2D/3D check, in Mesa 22.3's `texsubimage_error_check` order: the target
+//! (INVALID_ENUM), the level range and negative sizes (INVALID_VALUE,
+//! [`sub_image_refusal`], before the format and type are looked at), then, as the model
+//! applies the call, a level never specified (INVALID_OPERATION) and the region.
 
 use super::api::Entry;
 use super::args::{Args, PixelShape};
@@ -68,12 +73,34 @@ fn target<A: Args>(c: &A, want: TextureTarget) -> Result<TextureTarget, A::Error
     }
 }
 
+/// glTexSubImage's INVALID_VALUE for a level outside [0, the target's highest] or a
+/// negative size (`sizes`: the arguments of width, height and depth the call has), which
+/// Mesa raises before it looks at the format and type; `None` when both are in range.
+pub(crate) fn sub_image_refusal<A: Args>(
+    c: &A,
+    target: TextureTarget,
+    sizes: &[usize],
+) -> Result<Option<Command>, A::Error> {
+    let level_refused = level_in_range(target, c.i32(1)?).is_err();
+    let mut negative = false;
+    for i in sizes {
+        negative |= c.i32(*i)? < 0;
+    }
+    Ok((level_refused || negative).then(|| Command::Raise {
+        error: super::error::GlErrorKind::InvalidValue,
+        call: c.entry(),
+    }))
+}
+
 /// The calls' Commands (`Ok(None)` for other calls).
 pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
     Ok(Some(match c.entry() {
         Entry::TexSubImage1D => {
             c.count(7)?;
             target(c, TextureTarget::Texture1D)?;
+            if let Some(refused) = sub_image_refusal(c, TextureTarget::Texture1D, &[3])? {
+                return Ok(Some(refused));
+            }
             let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(4)?, c.enm(5)?);
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));

@@ -71,6 +71,10 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::TexSubImage3D | Entry::TexSubImage3DEXT => {
             c.count(11)?;
             texture_3d(c)?;
+            let refusal = super::texture_calls::sub_image_refusal;
+            if let Some(refused) = refusal(c, TextureTarget::Texture3D, &[5, 6, 7])? {
+                return Ok(Some(refused));
+            }
             let shape = PixelShape::volume(c.i32(5)?, c.i32(6)?, c.i32(7)?, c.enm(8)?, c.enm(9)?);
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
