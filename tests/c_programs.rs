@@ -1752,3 +1752,29 @@ fn earlier_extension_names_are_announced_and_act_as_on_mesa() {
     assert_same_text(&mesa_text, &ours_text, 60, "an extension's answer");
     assert_images_match("extensions", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
 }
+
+/// `tests/c/mesa_answers.c`: state and error answers as Mesa 22.3 gives them — glPopAttrib
+/// restoring the draw and read buffers and the list base (and leaving
+/// GENERATE_MIPMAP_HINT, as Mesa does), glTexSubImage at a level out of range
+/// INVALID_VALUE before the format and a missing image, and n = 0 with NULL arrays no
+/// error.
+#[test]
+fn state_and_errors_answer_as_on_mesa() {
+    let (mesa, ours) = texts("mesa_answers");
+    assert_mesa_printed(
+        &mesa,
+        &[
+            "draw buffer after pop                    1028  err 0x0",
+            "read buffer after pop                    1028  err 0x0",
+            "pop window FRONT over an FBO             err 0x0",
+            "pop window read FRONT over an FBO        err 0x502",
+            "list base after pop                      3  err 0x0",
+            "mipmap hint after pop (kept)             4353  err 0x0",
+            "TexSubImage2D level -1, bad format       err 0x501",
+            "TexSubImage3D level 11 (no image)        err 0x502",
+            "glDeleteTextures(0, NULL)                err 0x0",
+            "glAreTexturesResident(0, NULL, NULL)     0",
+        ],
+    );
+    assert_same_text(&mesa, &ours, 40, "the answer");
+}

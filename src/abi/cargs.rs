@@ -172,7 +172,12 @@ impl CCall<'_> {
     }
 
     /// `out.len()` values from pointer argument `i` into `out`.
+    /// No value read is no pointer used: n = 0 with a NULL array is no error (glDeleteTextures(0,
+    /// NULL) and the like, as on Mesa).
     fn read_into(&self, i: usize, out: &mut [f64]) -> Result<(), GlErrorKind> {
+        if out.is_empty() {
+            return Ok(());
+        }
         let (p, elem) = self.pointer(i)?;
         // SAFETY: the caller passed a pointer to at least `out.len()` elements of this type,
         // as the GL prototype and the parameter name require (GL's contract with the
@@ -313,6 +318,9 @@ impl Args for CCall<'_> {
             CType::Float => CElem::Float,
             CType::Double => CElem::Double,
         };
+        if n == 0 {
+            return Ok(Vec::new());
+        }
         let (p, _) = self.pointer(i)?;
         let typed = CCall {
             entry: self.entry,

@@ -553,6 +553,14 @@ impl Context {
                 }
             }
             Entry::AreTexturesResident if !inside => {
+                // Mesa answers FALSE, with no error, when either array is NULL (after the
+                // n < 0 check), before it looks at any name.
+                let count_ok = matches!(args.first(), Some(CArg::Int(n)) if *n >= 0);
+                let null_at =
+                    |i: usize| matches!(args.get(i), Some(CArg::Ptr(p, _)) if p.is_null());
+                if count_ok && (null_at(1) || null_at(2)) {
+                    return Ret::Enum(0);
+                }
                 // Every name a texture object, generated or bound: all resident (TRUE, the
                 // residences untouched). Otherwise the model's check gives the error.
                 let state = self.pipeline.as_ref().map(|p| p.state());

@@ -1,0 +1,171 @@
+/* State and error answers where Mesa 22.3's OSMesa differs from a first reading of the
+ * specification, one printed line per check: the call or the state read, its values and
+ * glGetError after it. Run on Mesa's OSMesa and on fixedfunc's library, the two outputs
+ * must be the same.
+ *
+ * usage: mesa_answers OUT.ppm */
+#define GL_GLEXT_PROTOTYPES
+#include <GL/osmesa.h>
+#include <GL/glext.h>
+#include <stdio.h>
+#include "report.h"
+
+/* glPopAttrib restores the draw buffer (COLOR_BUFFER_BIT), the read buffer
+ * (PIXEL_MODE_BIT) and the list base (LIST_BIT). Mesa sets the buffer again only when its
+ * context copy (the last value set, on any framebuffer) differs from the saved one: a draw
+ * buffer the framebuffer bound then cannot take is left out silently, a read buffer is
+ * INVALID_OPERATION. GENERATE_MIPMAP_HINT is not restored by Mesa's pop, though
+ * GL 1.4 puts it in HINT_BIT: the check pins Mesa's answer. */
+static void attribute_groups(void) {
+  GLuint fb;
+  glGenFramebuffers(1, &fb);
+  glDrawBuffer(GL_FRONT);
+  glReadBuffer(GL_FRONT);
+  glPushAttrib(GL_COLOR_BUFFER_BIT | GL_PIXEL_MODE_BIT);
+  glDrawBuffer(GL_BACK);
+  glReadBuffer(GL_BACK);
+  glPopAttrib();
+  err("pop COLOR_BUFFER|PIXEL_MODE");
+  ints("draw buffer after pop", GL_DRAW_BUFFER);
+  ints("read buffer after pop", GL_READ_BUFFER);
+  glPushAttrib(GL_COLOR_BUFFER_BIT);
+  glDrawBuffer(GL_BACK);
+  glReadBuffer(GL_BACK);
+  glPopAttrib();
+  ints("draw buffer after COLOR_BUFFER pop", GL_DRAW_BUFFER);
+  ints("read buffer after COLOR_BUFFER pop", GL_READ_BUFFER);
+  glReadBuffer(GL_FRONT);
+  glPushAttrib(GL_COLOR_BUFFER_BIT | GL_PIXEL_MODE_BIT);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glDrawBuffer(GL_NONE);
+  glPopAttrib();
+  err("pop window FRONT over an FBO");
+  ints("fbo draw buffer", GL_DRAW_BUFFER);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glPushAttrib(GL_PIXEL_MODE_BIT);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glPushAttrib(GL_PIXEL_MODE_BIT);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glReadBuffer(GL_NONE);
+  glPopAttrib();
+  err("pop window read FRONT over an FBO");
+  glPopAttrib();
+  ints("fbo draw buffer", GL_DRAW_BUFFER);
+  ints("fbo read buffer", GL_READ_BUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &fb);
+  ints("window draw buffer", GL_DRAW_BUFFER);
+  glListBase(3);
+  glPushAttrib(GL_LIST_BIT);
+  glListBase(9);
+  glPopAttrib();
+  ints("list base after pop", GL_LIST_BASE);
+  GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glPushAttrib(GL_LIST_BIT);
+  glListBase(7);
+  glPopAttrib();
+  glEndList();
+  glCallList(list);
+  ints("list base after a listed pop", GL_LIST_BASE);
+  glListBase(0);
+  glPushAttrib(GL_HINT_BIT);
+  glHint(GL_GENERATE_MIPMAP_HINT, GL_FASTEST);
+  glHint(GL_TEXTURE_COMPRESSION_HINT, GL_FASTEST);
+  glHint(GL_FOG_HINT, GL_NICEST);
+  glPopAttrib();
+  ints("mipmap hint after pop (kept)", GL_GENERATE_MIPMAP_HINT);
+  ints("compression hint after pop", GL_TEXTURE_COMPRESSION_HINT);
+  ints("fog hint after pop", GL_FOG_HINT);
+  glHint(GL_GENERATE_MIPMAP_HINT, GL_DONT_CARE);
+}
+
+/* glTexSubImage at a level outside [0, the target's highest] is INVALID_VALUE, checked
+ * after the target and before the format, a missing image or the region. */
+static void sub_image_levels(void) {
+  static GLubyte texels[4 * 4 * 4 * 4];
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 4, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  glTexSubImage1D(GL_TEXTURE_1D, -1, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage1D level -1");
+  glTexSubImage1D(GL_TEXTURE_1D, 15, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage1D level 15");
+  glTexSubImage1D(GL_TEXTURE_1D, 14, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage1D level 14 (no image)");
+  glTexSubImage1D(GL_TEXTURE_2D, -1, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage1D bad target, level -1");
+  glTexSubImage2D(GL_TEXTURE_2D, -1, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage2D level -1");
+  glTexSubImage2D(GL_TEXTURE_2D, 20, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage2D level 20");
+  glTexSubImage2D(GL_TEXTURE_2D, -1, 0, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage2D level -1, bad format");
+  glTexSubImage2D(GL_TEXTURE_2D, -1, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, texels);
+  err("TexSubImage2D level -1, bad pair");
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, -1, 1, 0x1234, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage2D width -1, bad format");
+  glTexSubImage2D(GL_TEXTURE_2D, 1, 9, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage2D no image, bad offset");
+  glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 15, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                  texels);
+  err("TexSubImage2D cube face level 15");
+  glTexSubImage3D(GL_TEXTURE_3D, 12, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage3D level 12");
+  glTexSubImage3D(GL_TEXTURE_3D, -1, 0, 0, 0, 1, 1, 1, 0x1234, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage3D level -1, bad format");
+  glTexSubImage3D(GL_TEXTURE_3D, 11, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  err("TexSubImage3D level 11 (no image)");
+}
+
+/* n = 0 reads no name: a NULL array is no error. glAreTexturesResident answers FALSE
+ * when either array is NULL. */
+static void empty_name_arrays(void) {
+  glDeleteTextures(0, NULL);
+  err("glDeleteTextures(0, NULL)");
+  glPrioritizeTextures(0, NULL, NULL);
+  err("glPrioritizeTextures(0, NULL, NULL)");
+  glGenTextures(0, NULL);
+  err("glGenTextures(0, NULL)");
+  glDeleteBuffers(0, NULL);
+  err("glDeleteBuffers(0, NULL)");
+  glGenBuffers(0, NULL);
+  err("glGenBuffers(0, NULL)");
+  glDeleteLists(1, 0);
+  err("glDeleteLists(1, 0)");
+  glCallLists(0, GL_UNSIGNED_BYTE, NULL);
+  err("glCallLists(0, UNSIGNED_BYTE, NULL)");
+  glDeleteFramebuffers(0, NULL);
+  err("glDeleteFramebuffers(0, NULL)");
+  glGenFramebuffers(0, NULL);
+  err("glGenFramebuffers(0, NULL)");
+  glDeleteRenderbuffers(0, NULL);
+  err("glDeleteRenderbuffers(0, NULL)");
+  glGenRenderbuffers(0, NULL);
+  err("glGenRenderbuffers(0, NULL)");
+  glGenQueries(0, NULL);
+  err("glGenQueries(0, NULL)");
+  glDeleteQueries(0, NULL);
+  err("glDeleteQueries(0, NULL)");
+  printf("%-40s %d\n", "glAreTexturesResident(0, NULL, NULL)",
+         glAreTexturesResident(0, NULL, NULL));
+  err("glAreTexturesResident(0, NULL, NULL)");
+  GLuint tex;
+  glGenTextures(1, &tex);
+  printf("%-40s %d\n", "glAreTexturesResident(1, name, NULL)",
+         glAreTexturesResident(1, &tex, NULL));
+  err("glAreTexturesResident(1, name, NULL)");
+  glDeleteTextures(-1, NULL);
+  err("glDeleteTextures(-1, NULL)");
+  glDeleteTextures(1, &tex);
+}
+
+int main(int argc, char **argv) {
+  OSMesaContext ctx;
+  GLubyte *buf = open_window(&ctx, 8, 8);
+  if (!buf) return 1;
+  attribute_groups();
+  sub_image_levels();
+  empty_name_arrays();
+  return finish(argc > 1 ? argv[1] : "/dev/null", ctx, buf, 8, 8);
+}
