@@ -1730,6 +1730,31 @@ fn non_power_of_two_textures_are_announced_and_drawn_as_on_mesa() {
     assert_images_match("npot", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
 }
 
+/// `tests/c/index_pixels.c`: COLOR_INDEX images in an RGBA context — glDrawPixels of
+/// every index type and GL_BITMAP through the I_TO maps with no transfer, read as one run
+/// an image; glTexImage2D and glTexSubImage2D shifted and offset but neither scaled nor
+/// mapped — and the material's COLOR_INDEXES, FOG_INDEX and CURRENT_RASTER_INDEX with
+/// their attribute groups, printed and drawn as on Mesa; the trace replays.
+#[test]
+fn colour_index_images_and_state_are_taken_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("index_pixels");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "DrawPixels UNSIGNED_BYTE                 err 0x0",
+            "BYTE                   255,231,10,179 129,64,8,153 50,129,4,129 0,255,2,255 255,231,10,179 0,255,26,255",
+            "shifted                51,128,230,128 255,230,178,178 51,128,5,128 0,255,26,255",
+            "front                  1.5 2.70000005 -3.20000005 | 2 3 -3 err 0x0",
+            "FOG_INDEX 2.6          2.5999999 3 err 0x0",
+            "CURRENT_RASTER_INDEX                     1  err 0x0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 40, "a colour-index image or state");
+    assert_images_match("index_pixels", &ours, &mesa, WITHIN_ONE_EVERYWHERE);
+    let exe = compile("index_pixels", Linking::Direct);
+    assert_trace_replays("index_pixels", &exe, &[], "64x32");
+}
+
 /// `tests/c/extensions.c`: the earlier names of what GL 1.2–1.4 made core — EXT blend
 /// colour, equations, subtract and separate factors (and INGR's), NV blend square, EXT
 /// range and multi draws, the GL 1.1 texture calls under EXT names, EXT rescale normal, NV

@@ -37,11 +37,28 @@ pub struct PixelShape {
     pub kind: ShapeKind,
 }
 
-/// Whether a shape is groups of components or a bitmap (one bit a pixel, GL's BITMAP type).
+/// Whether a shape is groups of components or a bitmap (one bit a pixel, GL's BITMAP type),
+/// and for a COLOR_INDEX image, the run Mesa 22.3 reads instead of rows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ShapeKind {
     Groups,
     Bitmap,
+    /// COLOR_INDEX groups as Mesa 22.3 reads them: each image's width·height groups one
+    /// run from its first group, the rows neither padded nor ROW_LENGTH apart (its
+    /// `_mesa_unpack_color_index_to_rgba_float` extracts them in one span; measured,
+    /// `tests/c/index_pixels.c`: 3 indices a row at alignment 4 read the padding byte).
+    IndexRun,
+    /// COLOR_INDEX in GL_BITMAP: each image's width·height bits one run, as
+    /// [`ShapeKind::IndexRun`], bit 0 or 1 the index; LSB_FIRST as the call takes it.
+    IndexBits(LsbFirst),
+}
+
+/// Whether a call reads UNPACK_LSB_FIRST for COLOR_INDEX bits: glTexImage does; Mesa
+/// 22.3's glDrawPixels reads the most significant bit first whatever it says (measured).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LsbFirst {
+    Honoured,
+    Ignored,
 }
 
 impl PixelShape {

@@ -541,6 +541,7 @@ impl FixedState {
                     FogParam::Start(f.value.start),
                     FogParam::End(f.value.end),
                     FogParam::Color(f.value.color),
+                    FogParam::Index(f.value.index),
                     FogParam::CoordSource(f.value.coord_source),
                 ] {
                     out.push(Command::Fog(p));
@@ -695,6 +696,7 @@ impl FixedState {
                 MaterialParam::Specular(mat.specular),
                 MaterialParam::Emission(mat.emission),
                 MaterialParam::Shininess(mat.shininess),
+                MaterialParam::ColorIndexes(mat.color_indexes),
             ] {
                 out.push(Command::Material { face, param });
             }

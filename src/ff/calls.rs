@@ -2,7 +2,7 @@
 //! converter per area, each returning `Ok(None)` for calls of other areas.
 
 use super::api::{CType, Entry};
-use super::args::{Args, PixelShape};
+use super::args::{Args, LsbFirst};
 use super::glenum::{Family, GlEnum};
 use super::pixel_types;
 use super::texture::level_from_float;
@@ -205,12 +205,14 @@ pub fn transform_and_fragment<A: Args>(c: &A) -> Result<Option<Command>, A::Erro
             n(7)?;
             // COLOR_INDEX is a format of GL 1.5, but an RGBA framebuffer holds no indices
             // to read: INVALID_OPERATION (Mesa measured alike), after a negative size's
-            // INVALID_VALUE and a bad type's INVALID_ENUM.
+            // INVALID_VALUE and a bad type's INVALID_ENUM (GL_BITMAP is a type of indices).
             if c.token(4)? == super::glenum::registry::COLOR_INDEX {
                 let error = if c.i32(2)? < 0 || c.i32(3)? < 0 {
                     GlErrorKind::InvalidValue
                 } else {
-                    let _: PixelType = c.enm(5)?;
+                    if c.token(5)? != super::glenum::registry::BITMAP {
+                        let _: PixelType = c.enm(5)?;
+                    }
                     GlErrorKind::InvalidOperation
                 };
                 return Ok(Some(Command::Raise {
@@ -250,7 +252,8 @@ pub(super) const LIGHT_PNAMES: &[&str] = &[
     "GL_QUADRATIC_ATTENUATION",
 ];
 const LIGHT_SCALARS: &[&str] = LIGHT_PNAMES.split_at(5).1;
-/// glMaterial's parameter names: the colours, then the one scalar.
+/// glMaterial's parameter names: the colours, the one scalar, and the colour-index
+/// lighting's three indices.
 pub(super) const MATERIAL_PNAMES: &[&str] = &[
     "GL_AMBIENT",
     "GL_DIFFUSE",
@@ -258,6 +261,7 @@ pub(super) const MATERIAL_PNAMES: &[&str] = &[
     "GL_SPECULAR",
     "GL_EMISSION",
     "GL_SHININESS",
+    "GL_COLOR_INDEXES",
 ];
 
 /// Lighting and materials.
@@ -307,6 +311,7 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let face = c.enm(0)?;
             let param = match c.pname(1, MATERIAL_PNAMES)? {
                 "GL_SHININESS" => MaterialParam::Shininess(c.floats::<1>(2)?[0]),
+                "GL_COLOR_INDEXES" => MaterialParam::ColorIndexes(c.vec3_array(2)?),
                 p => material_vector(p, c.vec4_array(2)?),
             };
             Command::Material { face, param }
@@ -428,7 +433,8 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             if !proxy {
                 target_is(c, TextureTarget::Texture1D)?;
             }
-            let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(5)?, c.enm(6)?);
+            let shape =
+                super::index_pixels::image_shape(c, (c.i32(3)?, 1, None), 5, LsbFirst::Honoured)?;
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
@@ -463,7 +469,12 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 Some(t) => t,
                 None => image_2d_target(c)?,
             };
-            let shape = PixelShape::groups(c.i32(3)?, c.i32(4)?, c.enm(6)?, c.enm(7)?);
+            let shape = super::index_pixels::image_shape(
+                c,
+                (c.i32(3)?, c.i32(4)?, None),
+                6,
+                LsbFirst::Honoured,
+            )?;
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
@@ -493,7 +504,12 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 return Ok(Some(refused));
             }
             let face = target.face();
-            let shape = PixelShape::groups(c.i32(4)?, c.i32(5)?, c.enm(6)?, c.enm(7)?);
+            let shape = super::index_pixels::image_shape(
+                c,
+                (c.i32(4)?, c.i32(5)?, None),
+                6,
+                LsbFirst::Honoured,
+            )?;
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }

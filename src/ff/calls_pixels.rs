@@ -8,7 +8,7 @@
 use glam::Vec4;
 
 use super::api::{CType, Entry};
-use super::args::{Args, PixelShape};
+use super::args::{Args, LsbFirst, PixelShape};
 use super::pixel_map::{MapValues, PixelMap, MAX_PIXEL_MAP_TABLE};
 use super::pixel_types;
 use super::pixels::{
@@ -168,10 +168,13 @@ pub fn pixels<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::DrawPixels => {
             c.count(5)?;
             let (width, height) = (c.i32(0)?, c.i32(1)?);
-            let format = c.enm(2)?;
-            let ty = c.enm(3)?;
+            let shape = super::index_pixels::image_shape(
+                c,
+                (width.max(0), height.max(0), None),
+                2,
+                LsbFirst::Ignored,
+            )?;
             budget(c, 0, width, height)?;
-            let shape = PixelShape::groups(width.max(0), height.max(0), format, ty);
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }

@@ -105,6 +105,7 @@ pub fn variants<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let v = c.f32(2)?;
             let param = match c.pname(1, MATERIAL_PNAMES)? {
                 "GL_SHININESS" => MaterialParam::Shininess(v),
+                "GL_COLOR_INDEXES" => MaterialParam::ColorIndexes(glam::Vec3::new(v, 0.0, 0.0)),
                 p => material_vector(p, glam::Vec4::new(v, 0.0, 0.0, 0.0)),
             };
             Command::Material { face, param }
@@ -114,6 +115,15 @@ pub fn variants<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let face = c.enm(0)?;
             let param = match c.pname(1, MATERIAL_PNAMES)? {
                 "GL_SHININESS" => MaterialParam::Shininess(c.array_f64(2, 1)?[0] as f32),
+                // Indices, not colours: the integers themselves (Mesa measured).
+                "GL_COLOR_INDEXES" => {
+                    let v = c.array_f64(2, 3)?;
+                    MaterialParam::ColorIndexes(glam::Vec3::new(
+                        v[0] as f32,
+                        v[1] as f32,
+                        v[2] as f32,
+                    ))
+                }
                 p => material_vector(p, int_color(c, 2)?),
             };
             Command::Material { face, param }

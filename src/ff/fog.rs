@@ -45,7 +45,8 @@ pub enum FogParam {
     End(f32),
     /// Clamped to [0, 1] when set.
     Color(Vec4),
-    /// FOG_INDEX: colour-index mode only; accepted and ignored in RGBA.
+    /// FOG_INDEX: the colour-index mode's fog index; kept and answered in RGBA, where
+    /// nothing draws with it.
     Index(f32),
     CoordSource(FogCoordSource),
 }
@@ -65,6 +66,8 @@ pub struct Fog {
     pub color: Vec4,
     /// GL default: FRAGMENT_DEPTH.
     pub coord_source: FogCoordSource,
+    /// FOG_INDEX, as set (glGetIntegerv rounds it). GL default: 0.
+    pub index: f32,
 }
 
 impl Fog {
@@ -75,6 +78,7 @@ impl Fog {
         end: 1.0,
         color: Vec4::ZERO,
         coord_source: FogCoordSource::FragmentDepth,
+        index: 0.0,
     };
 
     /// glFog: a negative density is INVALID_VALUE (GL 1.5 §3.10) and changes nothing.
@@ -91,7 +95,7 @@ impl Fog {
             FogParam::Start(s) => self.start = s,
             FogParam::End(e) => self.end = e,
             FogParam::Color(c) => self.color = c.clamp(Vec4::ZERO, Vec4::ONE),
-            FogParam::Index(_) => {}
+            FogParam::Index(i) => self.index = i,
             FogParam::CoordSource(s) => self.coord_source = s,
         }
         Ok(())
@@ -154,11 +158,13 @@ mod tests {
         f.set(FogParam::Color(Vec4::new(2.0, -1.0, 0.5, 1.0)))
             .unwrap();
         assert_eq!(f.color, Vec4::new(1.0, 0.0, 0.5, 1.0));
+        // FOG_INDEX is kept, and changes nothing else.
         f.set(FogParam::Index(3.0)).unwrap();
         assert_eq!(
             f,
             Fog {
                 color: f.color,
+                index: 3.0,
                 ..Fog::DEFAULT
             }
         );

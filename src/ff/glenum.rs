@@ -512,6 +512,7 @@ gl_enums!(PixelFormat {
     BLUE => PixelFormat::Blue,
     BGR => PixelFormat::Bgr,
     BGRA => PixelFormat::Bgra,
+    COLOR_INDEX => PixelFormat::ColorIndex,
 });
 
 gl_enums!(CompressedFormat {

@@ -201,6 +201,10 @@ pub enum MaterialParam {
     Emission(Vec4),
     /// [0, 128], else INVALID_VALUE.
     Shininess(f32),
+    /// COLOR_INDEXES (a, d, s): the ambient, diffuse and specular indices of colour-index
+    /// lighting (GL 1.5 §2.14.5). Kept and answered as Mesa keeps them in an RGBA
+    /// context; no RGBA lighting reads them.
+    ColorIndexes(Vec3),
 }
 
 /// One face's material. Defaults per GL 1.5 Table 6.9.
@@ -216,6 +220,8 @@ pub struct Material {
     pub emission: Vec4,
     /// GL default: 0.
     pub shininess: f32,
+    /// COLOR_INDEXES. GL default: (0, 1, 1).
+    pub color_indexes: Vec3,
 }
 
 impl Material {
@@ -225,6 +231,7 @@ impl Material {
         specular: Vec4::W,
         emission: Vec4::W,
         shininess: 0.0,
+        color_indexes: Vec3::new(0.0, 1.0, 1.0),
     };
 
     /// The specular exponent a vertex is lit with: the shininess, a NaN one as 128. Mesa's
@@ -250,6 +257,7 @@ impl Material {
             MaterialParam::Specular(c) => self.specular = c,
             MaterialParam::Emission(c) => self.emission = c,
             MaterialParam::Shininess(s) => self.shininess = s,
+            MaterialParam::ColorIndexes(i) => self.color_indexes = i,
         }
     }
 }

@@ -46,6 +46,7 @@ pub mod front;
 pub mod geometry;
 pub mod glenum;
 pub mod immediate;
+pub mod index_pixels;
 pub mod light;
 pub mod list_pairs;
 pub mod lists;

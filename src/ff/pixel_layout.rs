@@ -14,12 +14,17 @@
 //! `a·⌈l / 8a⌉` bytes, SKIP_PIXELS counts bits, and LSB_FIRST says that bit 0 of a byte is
 //! its leftmost pixel. The tight form is most significant bit first, rows of ⌈width/8⌉.
 //!
+//! A COLOR_INDEX image (`ShapeKind::IndexRun`, `IndexBits`) is read as Mesa 22.3 reads
+//! it: from its first group (or bit, SKIP_PIXELS counting bits), each image's
+//! `width·height` groups (bits) one run, whatever ALIGNMENT and ROW_LENGTH say of rows;
+//! the tight form is that run (for bits, most significant bit first, ⌈w·h/8⌉ bytes).
+//!
 //! The `depth` images of a 3D call (GL 1.2 §3.8.1) follow one another `k·h_i` bytes apart,
 //! `h_i` = IMAGE_HEIGHT if > 0 else `height`, the first SKIP_IMAGES images skipped (Mesa's
 //! `_mesa_image_address`); a 2D call leaves both parameters out. The tight form is the
 //! images one after the other, the first (r = 0) first.
 
-use super::args::{PixelShape, ShapeKind};
+use super::args::{LsbFirst, PixelShape, ShapeKind};
 use super::pixel_store::{BitOrder, ByteOrder, Packing};
 
 /// Where the rows are, in bytes from the pointer.
@@ -61,6 +66,27 @@ pub fn layout(shape: PixelShape, p: &Packing) -> Layout {
     let l = if p.row_length > 0 { p.row_length } else { w };
     let a = p.alignment.max(1);
     let (first, stride, tight_row, span) = match shape.kind {
+        ShapeKind::IndexRun => {
+            let group = shape.group_bytes();
+            let stride = (l * group).div_ceil(a) * a;
+            let run = w * h * group;
+            (
+                p.skip_rows * stride + p.skip_pixels * group,
+                stride,
+                run,
+                run,
+            )
+        }
+        ShapeKind::IndexBits(_) => {
+            let stride = l.div_ceil(8 * a) * a;
+            let span = (p.skip_pixels % 8 + w * h).div_ceil(8);
+            (
+                p.skip_rows * stride + p.skip_pixels / 8,
+                stride,
+                (w * h).div_ceil(8),
+                span,
+            )
+        }
         ShapeKind::Groups => {
             let group = shape.group_bytes();
             let stride = (l * group).div_ceil(a) * a;
@@ -103,12 +129,17 @@ pub fn layout(shape: PixelShape, p: &Packing) -> Layout {
             )
         }
     };
+    // A run is one row of each image.
+    let rows = match shape.kind {
+        ShapeKind::IndexRun | ShapeKind::IndexBits(_) => 1,
+        ShapeKind::Groups | ShapeKind::Bitmap => h,
+    };
     let extent = if w == 0 || h == 0 || images == 0 {
         0
     } else {
         first
             .saturating_add((images - 1).saturating_mul(image_stride))
-            .saturating_add((h - 1).saturating_mul(stride))
+            .saturating_add((rows - 1).saturating_mul(stride))
             .saturating_add(span)
     };
     Layout {
@@ -116,7 +147,7 @@ pub fn layout(shape: PixelShape, p: &Packing) -> Layout {
         stride,
         tight_row,
         span,
-        rows: if w == 0 { 0 } else { h },
+        rows: if w == 0 || h == 0 { 0 } else { rows },
         images,
         image_stride,
         extent,
@@ -154,18 +185,27 @@ pub fn unpack(src: &[u8], shape: PixelShape, p: &Packing) -> Option<Vec<u8>> {
         let start = lay.row_start(z, y);
         let row = src.get(start..start + lay.span)?;
         match shape.kind {
-            ShapeKind::Groups => {
+            ShapeKind::Groups | ShapeKind::IndexRun => {
                 let at = out.len();
                 out.extend_from_slice(row);
                 if p.swap_bytes == ByteOrder::Swapped {
                     swap_elements(&mut out[at..], shape.element_bytes());
                 }
             }
-            ShapeKind::Bitmap => {
-                let w = shape.width.max(0) as usize;
+            ShapeKind::Bitmap | ShapeKind::IndexBits(_) => {
+                let (w, order) = match shape.kind {
+                    ShapeKind::IndexBits(rule) => (
+                        shape.width.max(0) as usize * shape.height.max(0) as usize,
+                        match rule {
+                            LsbFirst::Honoured => p.lsb_first,
+                            LsbFirst::Ignored => BitOrder::MsbFirst,
+                        },
+                    ),
+                    _ => (shape.width.max(0) as usize, p.lsb_first),
+                };
                 let mut bytes = vec![0u8; lay.tight_row];
                 for x in 0..w {
-                    if bit_at(row, p.skip_pixels % 8, x, p.lsb_first) {
+                    if bit_at(row, p.skip_pixels % 8, x, order) {
                         bytes[x / 8] |= 0x80 >> (x % 8);
                     }
                 }
@@ -190,13 +230,13 @@ pub fn pack(tight: &[u8], dst: &mut [u8], shape: PixelShape, p: &Packing) -> boo
         let start = lay.row_start(z, y);
         let row = &mut dst[start..start + lay.span];
         match shape.kind {
-            ShapeKind::Groups => {
+            ShapeKind::Groups | ShapeKind::IndexRun => {
                 row.copy_from_slice(src);
                 if p.swap_bytes == ByteOrder::Swapped {
                     swap_elements(row, shape.element_bytes());
                 }
             }
-            ShapeKind::Bitmap => {
+            ShapeKind::Bitmap | ShapeKind::IndexBits(_) => {
                 let skip = p.skip_pixels % 8;
                 for x in 0..shape.width.max(0) as usize {
                     let on = src[x / 8] & (0x80 >> (x % 8)) != 0;

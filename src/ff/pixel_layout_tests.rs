@@ -112,8 +112,8 @@ fn pack_is_unpack_inverted_and_leaves_the_gaps() {
             // Only the bits of real pixels survive a round trip.
             let keep = |v: &[u8]| -> Vec<u8> {
                 match shape.kind {
-                    ShapeKind::Groups => v.to_vec(),
-                    ShapeKind::Bitmap => v
+                    ShapeKind::Groups | ShapeKind::IndexRun => v.to_vec(),
+                    ShapeKind::Bitmap | ShapeKind::IndexBits(_) => v
                         .chunks(lay.tight_row)
                         .flat_map(|r| {
                             let mut r = r.to_vec();
@@ -168,4 +168,26 @@ fn images_of_a_volume_lie_image_height_rows_apart() {
     // An empty volume reads nothing.
     let empty = PixelShape::volume(2, 2, 0, PixelFormat::Luminance, PixelType::UnsignedByte);
     assert_eq!(layout(empty, &p).extent, 0);
+}
+
+#[test]
+fn a_colour_index_image_is_one_run_whatever_the_alignment() {
+    use crate::ff::args::LsbFirst;
+    let p = Packing::aligned(4);
+    let run = PixelShape {
+        kind: ShapeKind::IndexRun,
+        ..PixelShape::groups(3, 2, PixelFormat::ColorIndex, PixelType::UnsignedByte)
+    };
+    let src = [1, 2, 3, 99, 0, 1, 2, 99];
+    assert_eq!(unpack(&src, run, &p), Some(vec![1, 2, 3, 99, 0, 1]));
+    // Bits: 5 × 2 of them in one run; DrawPixels reads the most significant bit first.
+    let bits = PixelShape {
+        kind: ShapeKind::IndexBits(LsbFirst::Ignored),
+        ..PixelShape::groups(5, 2, PixelFormat::ColorIndex, PixelType::UnsignedByte)
+    };
+    let lsb = Packing {
+        lsb_first: BitOrder::LsbFirst,
+        ..Packing::aligned(1)
+    };
+    assert_eq!(unpack(&[0xc4, 0x5b], bits, &lsb), Some(vec![0xc4, 0x40]));
 }

@@ -2,7 +2,7 @@
 //! switch on, and where they apply (§3.6.5, after scale and bias).
 //!
 //! Ten maps are kept, as GL's RGBA-mode pipeline uses them: I_TO_I, S_TO_S, I_TO_R/G/B/A
-//! (read by colour-index data, which the layer has no format for: kept and answered) and
+//! (read by COLOR_INDEX images, `index_pixels`) and
 //! R_TO_R, G_TO_G, B_TO_B, A_TO_A. Each holds 1 to [`MAX_PIXEL_MAP_TABLE`] entries; GL's
 //! initial map is one entry of 0. Stored as Mesa's `store_pixelmap` stores them: the
 //! colour maps' values clamped to [0, 1], S_TO_S's rounded to integers, I_TO_I's as given.

@@ -9,7 +9,9 @@
 //! - a signed type becomes FLOAT, a packed type UNSIGNED_BYTE (RGB for 3_3_2, 5_6_5 and
 //!   their REV, RGBA for the others), each component converted by the rules below;
 //! - STENCIL_INDEX in a signed type becomes UNSIGNED_INT: the index's two's-complement bits,
-//!   of which the stencil path keeps the low ones.
+//!   of which the stencil path keeps the low ones;
+//! - COLOR_INDEX stays in its type (Mesa draws a BYTE image otherwise than an INT one,
+//!   `index_pixels`); GL_BITMAP becomes UNSIGNED_BYTE indices 0 and 1.
 //!
 //! **Out** (glReadPixels, glGetTexImage): the command keeps the format and type asked for;
 //! the native path asks GL, the emulated path reads the read form ([`read_form`]) and
@@ -28,9 +30,10 @@
 
 use std::sync::Arc;
 
-use super::args::{Args, PixelShape};
+use super::args::{Args, PixelShape, ShapeKind};
 use super::command::{Command, TexData};
 use super::error::GlErrorKind;
+use super::index_pixels;
 use super::texture::{PixelFormat, PixelType};
 
 /// The call's Command when `format` and `ty` do not go together: the GL error it raises
@@ -48,10 +51,19 @@ pub type ModelPixels = (PixelFormat, PixelType, Option<Arc<[u8]>>);
 /// The pixels of argument `i` (of `shape`) in the model's form.
 pub fn model_pixels<A: Args>(c: &A, i: usize, shape: PixelShape) -> Result<ModelPixels, A::Error> {
     let (format, ty) = model_form(shape.format, shape.ty);
-    let data = c
-        .pixels(i, shape)?
-        .map(|d| to_model(shape.format, shape.ty, d));
+    let data = c.pixels(i, shape)?.map(|d| shape_to_model(shape, d));
     Ok((format, ty, data))
+}
+
+/// Tight data of `shape` in the model's form: COLOR_INDEX bits as one index a byte,
+/// anything else by [`to_model`].
+fn shape_to_model(shape: PixelShape, data: Arc<[u8]>) -> Arc<[u8]> {
+    match shape.kind {
+        ShapeKind::IndexBits(_) => index_pixels::bits_as_indices(&data, shape).into(),
+        ShapeKind::Groups | ShapeKind::Bitmap | ShapeKind::IndexRun => {
+            to_model(shape.format, shape.ty, data)
+        }
+    }
 }
 
 /// glTexImage's data of argument `i` (of `shape`) in the model's form. A script's
@@ -63,9 +75,13 @@ pub fn model_tex_data<A: Args>(
 ) -> Result<(PixelFormat, PixelType, TexData), A::Error> {
     let (format, ty) = model_form(shape.format, shape.ty);
     let data = match c.tex_data(i, shape)? {
-        TexData::Bytes(d) => TexData::Bytes(to_model(shape.format, shape.ty, d)),
+        TexData::Bytes(d) => TexData::Bytes(shape_to_model(shape, d)),
         TexData::Null => TexData::Null,
-        slot if is_model_form(shape.format, shape.ty) => slot,
+        slot if is_model_form(shape.format, shape.ty)
+            && matches!(shape.kind, ShapeKind::Groups | ShapeKind::Bitmap) =>
+        {
+            slot
+        }
         _ => {
             return Err(c.bad(
                 i,
@@ -185,6 +201,7 @@ pub fn model_form(format: PixelFormat, ty: PixelType) -> (PixelFormat, PixelType
         f => f,
     };
     let ty = match (format, ty) {
+        (PixelFormat::ColorIndex, t) => t,
         (PixelFormat::StencilIndex, PixelType::Byte | PixelType::Short | PixelType::Int) => {
             PixelType::UnsignedInt
         }

@@ -15,6 +15,9 @@
 //! 4. final conversion: colours and depth clamped to [0, 1] (§3.6.5); stencil masked to
 //!    the stencil bits, 2⁸ − 1.
 //!
+//! COLOR_INDEX images take their colours from the I_TO maps with no transfer at all
+//! (`index_pixels`).
+//!
 //! 5. with MAP_COLOR, each colour component through its map (R_TO_R … A_TO_A,
 //!    `pixel_map`). MAP_STENCIL is state: Mesa 22.3 draws stencil images without the index
 //!    arithmetic, and the layer follows it there (see `convert`).
@@ -356,7 +359,11 @@ impl DrawPixels {
     /// component then goes through its map, §3.6.5).
     pub fn convert(&self, t: &PixelTransfer, maps: &PixelMaps) -> Converted {
         let stencil = self.format == PixelFormat::StencilIndex;
-        let v = components(&self.data, self.ty, !stencil);
+        let v = match self.format {
+            // Indices are read by `index_pixels`.
+            PixelFormat::ColorIndex => Vec::new(),
+            _ => components(&self.data, self.ty, !stencil),
+        };
         match self.format {
             // Mesa 22.3 draws stencil images without INDEX_SHIFT and INDEX_OFFSET (measured:
             // `tests/fidelity_pixels.rs`, mesa_ignores_index_shift_and_offset_for_stencil);
@@ -379,6 +386,10 @@ impl DrawPixels {
             PixelFormat::DepthComponent => {
                 Converted::Depth(v.iter().map(|d| t.depth(*d as f32)).collect())
             }
+            // Indices through the I_TO maps, and no transfer at all (`index_pixels`).
+            PixelFormat::ColorIndex => Converted::Color(super::index_pixels::drawn_colours(
+                &self.data, self.ty, maps,
+            )),
             f => {
                 let k = f.components();
                 Converted::Color(
@@ -445,8 +456,10 @@ fn to_rgba(format: PixelFormat, c: &[f32]) -> Vec4 {
         PixelFormat::Red => Vec4::new(c[0], 0.0, 0.0, 1.0),
         PixelFormat::Green => Vec4::new(0.0, c[0], 0.0, 1.0),
         PixelFormat::Blue => Vec4::new(0.0, 0.0, c[0], 1.0),
-        // Not colour formats: the caller handles them.
-        PixelFormat::DepthComponent | PixelFormat::StencilIndex => Vec4::ZERO,
+        // Not colour formats, or indices: the caller handles them.
+        PixelFormat::DepthComponent | PixelFormat::StencilIndex | PixelFormat::ColorIndex => {
+            Vec4::ZERO
+        }
     }
 }
 

@@ -34,7 +34,7 @@
 //! Not answered yet (INVALID_ENUM), because the model does not hold the state: fog,
 //! scissor, clip planes, logic op, blend equation and colour, hints, pixel store and
 //! transfer, the raster position, client state (CLIENT_ACTIVE_TEXTURE, arrays), framebuffer
-//! bits, implementation limits other than those listed, COLOR_INDEXES, TEXTURE_PRIORITY,
+//! bits, implementation limits other than those listed, TEXTURE_PRIORITY,
 //! TEXTURE_RESIDENT.
 //!
 //! Adding a pname: one line in the [`PNAMES`] table (or in the marked block at its end) —
@@ -318,6 +318,9 @@ pnames! {
     CURRENT_RASTER_COLOR => |s| normalized(&s.raster.color.to_array()),
     CURRENT_RASTER_TEXTURE_COORDS => |s| floats(&s.raster.texcoords[s.active_unit()].to_array()),
     CURRENT_RASTER_DISTANCE => |s| floats(&[s.raster.distance]),
+    // The raster position's colour index: 1 in an RGBA context, which never sets it (Mesa's
+    // initial RasterIndex, measured).
+    CURRENT_RASTER_INDEX => |_| floats(&[1.0]),
 
     // Pixel transfer and zoom (Table 6.16, `pixels`).
     ZOOM_X => |s| floats(&[s.pixel_zoom.x]),
@@ -470,7 +473,7 @@ pnames! {
     FOG_START => |s| floats(&[s.fog.value.start]),
     FOG_END => |s| floats(&[s.fog.value.end]),
     FOG_COLOR => |s| normalized(&s.fog.value.color.to_array()),
-    FOG_INDEX => |_| floats(&[0.0]),
+    FOG_INDEX => |s| floats(&[s.fog.value.index]),
     FOG_COORD_SRC => |s| enm(s.fog.value.coord_source),
 
     // Scissor (Table 6.16): the box as set; before any glScissor, the whole target, which
@@ -686,8 +689,7 @@ impl FixedState {
     }
 
     /// glGetMaterial{f,i}v(face, pname): face FRONT or BACK (FRONT_AND_BACK is
-    /// INVALID_ENUM, §6.1.3); colours normalised, SHININESS rounded. COLOR_INDEXES is not
-    /// modelled (INVALID_ENUM).
+    /// INVALID_ENUM, §6.1.3); colours normalised, SHININESS and COLOR_INDEXES rounded.
     pub fn get_material(&self, face: u32, pname: u32) -> Result<Queried, GlErrorKind> {
         let m = match face {
             r::FRONT => self.materials.front,
@@ -700,6 +702,7 @@ impl FixedState {
             r::SPECULAR => normalized(&m.specular.to_array()),
             r::EMISSION => normalized(&m.emission.to_array()),
             r::SHININESS => floats(&[m.shininess]),
+            r::COLOR_INDEXES => floats(&m.color_indexes.to_array()),
             _ => return Err(GlErrorKind::InvalidEnum),
         })
     }

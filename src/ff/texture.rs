@@ -195,6 +195,11 @@ pub enum PixelFormat {
     /// the layer (`pixel_types`); glReadPixels and glGetTexImage give them.
     Bgr,
     Bgra,
+    /// COLOR_INDEX (GL 1.5 §3.6.4): one index a group, which an RGBA context turns into
+    /// a colour through the I_TO_R/G/B/A maps (`index_pixels`). glDrawPixels and the
+    /// texture images take it; the layer keeps it in the client's type (GL_BITMAP as
+    /// UNSIGNED_BYTE indices 0 and 1).
+    ColorIndex,
 }
 
 impl PixelFormat {
@@ -208,6 +213,7 @@ impl PixelFormat {
             | PixelFormat::Alpha
             | PixelFormat::DepthComponent
             | PixelFormat::StencilIndex
+            | PixelFormat::ColorIndex
             | PixelFormat::Red
             | PixelFormat::Green
             | PixelFormat::Blue => 1,

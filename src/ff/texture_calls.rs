@@ -18,7 +18,7 @@
 //! applies the call, a level never specified (INVALID_OPERATION) and the region.
 
 use super::api::Entry;
-use super::args::{Args, PixelShape};
+use super::args::{Args, LsbFirst};
 use super::error::{GlError, GlResult};
 use super::glenum::GlEnum;
 use super::pixel_types;
@@ -101,7 +101,8 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             if let Some(refused) = sub_image_refusal(c, TextureTarget::Texture1D, &[3])? {
                 return Ok(Some(refused));
             }
-            let shape = PixelShape::groups(c.i32(3)?, 1, c.enm(4)?, c.enm(5)?);
+            let shape =
+                super::index_pixels::image_shape(c, (c.i32(3)?, 1, None), 4, LsbFirst::Honoured)?;
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
@@ -167,6 +168,9 @@ pub fn texture_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::GetTexImage => {
             c.count(5)?;
             let (format, ty) = (c.enm(2)?, c.enm(3)?);
+            if format == PixelFormat::ColorIndex {
+                return Err(c.unknown(2, vec!["GL_RGBA"]));
+            }
             if let Some(refused) = pixel_types::refusal(c, format, ty) {
                 return Ok(Some(refused));
             }

@@ -26,7 +26,7 @@
 //! sub-image patches it image by image.
 
 use super::api::Entry;
-use super::args::{Args, PixelShape};
+use super::args::{Args, LsbFirst};
 use super::error::{GlError, GlResult};
 use super::pixel_types;
 use super::state::FixedState;
@@ -44,7 +44,12 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::TexImage3D | Entry::TexImage3DEXT => {
             c.count(10)?;
             let proxy = c.pname(0, &["GL_TEXTURE_3D", "GL_PROXY_TEXTURE_3D"])? != "GL_TEXTURE_3D";
-            let shape = PixelShape::volume(c.i32(3)?, c.i32(4)?, c.i32(5)?, c.enm(7)?, c.enm(8)?);
+            let shape = super::index_pixels::image_shape(
+                c,
+                (c.i32(3)?, c.i32(4)?, Some(c.i32(5)?)),
+                7,
+                LsbFirst::Honoured,
+            )?;
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
@@ -75,7 +80,12 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             if let Some(refused) = refusal(c, TextureTarget::Texture3D, &[5, 6, 7])? {
                 return Ok(Some(refused));
             }
-            let shape = PixelShape::volume(c.i32(5)?, c.i32(6)?, c.i32(7)?, c.enm(8)?, c.enm(9)?);
+            let shape = super::index_pixels::image_shape(
+                c,
+                (c.i32(5)?, c.i32(6)?, Some(c.i32(7)?)),
+                8,
+                LsbFirst::Honoured,
+            )?;
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }

@@ -47,6 +47,37 @@ pub(super) fn padded(data: &[u8], row: usize, alignment: usize) -> std::borrow::
     std::borrow::Cow::Owned(out)
 }
 
+/// The bytes of an image of `width × height` groups (images one after the other) as a
+/// script writes them at `alignment`: rows padded ([`padded`]); a COLOR_INDEX image, read
+/// as one run an image (`pixel_layout`), as its runs, each but the last padded to the
+/// image's padded rows.
+pub(super) fn image_bytes(
+    data: &[u8],
+    format: PixelFormat,
+    ty: PixelType,
+    (width, height): (i32, i32),
+    alignment: usize,
+) -> std::borrow::Cow<'_, [u8]> {
+    let row = width.max(0) as usize * ty.group_bytes(format);
+    if format != PixelFormat::ColorIndex {
+        return padded(data, row, alignment);
+    }
+    let run = row * height.max(0) as usize;
+    let image = crate::ff::pixel_store::PixelStore::stride(row, alignment) * height.max(0) as usize;
+    if run == 0 || data.len() <= run {
+        return std::borrow::Cow::Borrowed(data);
+    }
+    let runs: Vec<&[u8]> = data.chunks(run).collect();
+    let mut out = Vec::with_capacity(runs.len() * image);
+    for (k, r) in runs.iter().enumerate() {
+        out.extend_from_slice(r);
+        if k + 1 < runs.len() {
+            out.resize(out.len() + image - run, 0);
+        }
+    }
+    std::borrow::Cow::Owned(out)
+}
+
 /// C's spelling of a non-finite value (math.h's NAN and INFINITY); None for a number.
 fn non_finite(v: f64) -> Option<&'static str> {
     match v {
@@ -864,6 +895,13 @@ fn material(face: &str, p: &MaterialParam) -> String {
         MaterialParam::Shininess(s) => {
             return format!("{}({face}, GL_SHININESS, {})", Entry::Materialf, f(*s))
         }
+        MaterialParam::ColorIndexes(i) => {
+            return format!(
+                "{}({face}, GL_COLOR_INDEXES, {})",
+                Entry::Materialfv,
+                arr(&i.to_array())
+            )
+        }
         MaterialParam::Ambient(v) => ("GL_AMBIENT", v),
         MaterialParam::Diffuse(v) => ("GL_DIFFUSE", v),
         MaterialParam::AmbientAndDiffuse(v) => ("GL_AMBIENT_AND_DIFFUSE", v),
@@ -1057,18 +1095,26 @@ fn blocks(data: &Option<std::sync::Arc<[u8]>>) -> String {
 
 /// A glTexSubImage2D/3D's pixels, rows padded to the unpack alignment, or NULL.
 fn sub_image_pixels(t: &TexSubImage, unpack_alignment: usize) -> String {
-    let row = t.width.max(0) as usize * t.format.components() * t.ty.size();
     t.data.as_ref().map_or("NULL".to_string(), |d| {
-        pixels(t.ty, &padded(d, row, unpack_alignment))
+        let shape = (t.width, t.height);
+        pixels(
+            t.ty,
+            &image_bytes(d, t.format, t.ty, shape, unpack_alignment),
+        )
     })
 }
 
 /// glTexImage1D/2D/3D of `target` (its token: a proxy image prints its proxy target).
 fn tex_image(out: &mut String, t: &TexImage, target: &str, unpack_alignment: usize) {
-    let row = t.width.max(0) as usize * t.ty.group_bytes(t.format);
     let data = match &t.data {
         TexData::Null => "NULL".to_string(),
-        TexData::Bytes(d) => pixels(t.ty, &padded(d, row, unpack_alignment)),
+        TexData::Bytes(d) => {
+            let shape = (t.width, t.height);
+            pixels(
+                t.ty,
+                &image_bytes(d, t.format, t.ty, shape, unpack_alignment),
+            )
+        }
         TexData::Readback(slot) => format!("readback_{slot}"),
         TexData::ConvertedDepth { slot, ty, rule } => {
             let name = super::parse::DEPTH_HELPERS

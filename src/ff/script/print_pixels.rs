@@ -3,7 +3,7 @@
 //! rows as a GLubyte array, glDrawPixels with its data as `print` writes any pixel array
 //! (tightly packed, bottom row first), glCopyPixels, glPixelTransfer{f,i}, glPixelZoom.
 
-use super::print::{f, fs, n, padded, pixels};
+use super::print::{f, fs, image_bytes, n, padded, pixels};
 use crate::ff::api::Entry;
 use crate::ff::{Command, CopyKind, PixelTransferParam, PixelType};
 
@@ -34,11 +34,7 @@ pub(super) fn call(c: &Command, alignment: usize) -> String {
             n(d.ty),
             pixels(
                 d.ty,
-                &padded(
-                    &d.data,
-                    d.width.max(0) as usize * d.format.components() * d.ty.size(),
-                    alignment
-                )
+                &image_bytes(&d.data, d.format, d.ty, (d.width, d.height), alignment)
             )
         ),
         Command::CopyPixels(c) => format!(

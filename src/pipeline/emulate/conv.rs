@@ -62,5 +62,7 @@ pub fn pixel_format(f: PixelFormat) -> u32 {
         PixelFormat::Red => glow::RED,
         PixelFormat::Green => glow::GREEN,
         PixelFormat::Blue => glow::BLUE,
+        // Never uploaded as it is: a COLOR_INDEX image is stored through `texel_store`.
+        PixelFormat::ColorIndex => glow::RED,
     }
 }

@@ -12,9 +12,12 @@
 //! that is not the identity, are converted here: each component kept is stored as
 //! roundEven(255·c) (Mesa's `_mesa_float_to_unorm`). Depth images go as they are: Mesa
 //! 22.3 applies neither DEPTH_SCALE nor DEPTH_BIAS to them (measured, tests/c/transfer.c).
+//! COLOR_INDEX images always go through here: their colours are the I_TO maps' entries
+//! (`ff::index_pixels`), kept as the base format keeps RGBA.
 
 use glam::Vec4;
 
+use crate::ff::index_pixels;
 use crate::ff::pixel_map::PixelMaps;
 use crate::ff::pixels::rgba_groups;
 use crate::ff::texture::{BaseFormat, PixelFormat, PixelType, TexFormat};
@@ -79,6 +82,11 @@ pub fn stored_image(
         || (transfer.colour_identity() && core_upload_keeps(format, internal))
     {
         return None;
+    }
+    if format == PixelFormat::ColorIndex {
+        // Indices shifted, offset and looked up; no colour transfer after (`index_pixels`).
+        let colours = index_pixels::stored_colours(data, ty, transfer, maps);
+        return Some(store(&colours, internal, &PixelTransfer::DEFAULT, maps));
     }
     let groups = rgba_groups(data, format, ty);
     Some(store(&groups, internal, transfer, maps))

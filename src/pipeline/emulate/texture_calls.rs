@@ -324,7 +324,10 @@ fn convert(stored: &[u8], f: TexFormat, format: PixelFormat, ty: PixelType) -> V
             PixelFormat::Red => &[0],
             PixelFormat::Green => &[1],
             PixelFormat::Blue => &[2],
-            PixelFormat::DepthComponent | PixelFormat::StencilIndex => &[],
+            // Not read here (glGetTexImage refuses them at the call).
+            PixelFormat::DepthComponent | PixelFormat::StencilIndex | PixelFormat::ColorIndex => {
+                &[]
+            }
         };
         for &k in picked {
             push_unorm8(&mut out, rgba[k], ty);

@@ -74,6 +74,12 @@ pub fn material(g: &gl::Gl, face: Face, param: MaterialParam) {
             unsafe { g.Materialf(face, gl::SHININESS, s) };
             return;
         }
+        MaterialParam::ColorIndexes(i) => {
+            let a = i.to_array();
+            // SAFETY: three floats, as COLOR_INDEXES reads.
+            unsafe { g.Materialfv(face, gl::COLOR_INDEXES, a.as_ptr()) };
+            return;
+        }
     };
     let a = v.to_array();
     // SAFETY: four floats.
