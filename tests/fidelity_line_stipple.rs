@@ -138,6 +138,31 @@ fn wide_flat_and_smooth_stippled_lines_match_mesa() {
     }
 }
 
+/// LINE_SMOOTH: Mesa's stipple stage measures an antialiased segment along the line,
+/// √(Δx² + Δy²), not along its major axis (`line_stipple::LineLength`), so a diagonal's
+/// pattern repeats every 16/√2 columns; lines of every direction, factors 1 and 3, widths
+/// 1 and 2, blended as programs draw them, and a triangle's outline in LINE mode.
+#[test]
+fn antialiased_stippled_lines_count_along_the_line_as_mesa_does() {
+    for (factor, width) in [(1, 1), (3, 1), (1, 2)] {
+        let mut body = format!(
+            "glEnable(GL_LINE_SMOOTH);\nglEnable(GL_BLEND);\nglBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);\n\
+             glLineWidth({width});\nglLineStipple({factor}, 0x0FFF);\n"
+        );
+        let star = star(48.0, 32.0, 30.0);
+        for pair in star.chunks(2) {
+            body += &lines("GL_LINES", pair, true);
+        }
+        body += "glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);\n";
+        body += &lines(
+            "GL_TRIANGLES",
+            &[(6.0, 4.0), (40.0, 12.5), (14.5, 58.0)],
+            false,
+        );
+        check(&format!("line-stipple-smooth-{factor}-{width}"), &body);
+    }
+}
+
 #[test]
 fn offset_viewports_clipping_and_perspective_match_mesa() {
     // A viewport offset from the window and smaller than it: lines leaving it are clipped

@@ -23,7 +23,8 @@
 //! 3. **Window coordinates**: x_w = (x_c · (1/w_c)) · (width/2) + (x + width/2) (a fused
 //!    multiply-add for a vertex, llvmpipe's generated code; unfused for a clipped end), the same
 //!    for y, and z_w = (z_c · (1/w_c)) · (f − n)/2 + (n + f)/2.
-//! 4. **Runs.** length L = max(|Δx_w|, |Δy_w|); for i in 0..⌈L⌉ pixel i is on iff bit
+//! 4. **Runs.** length L = max(|Δx_w|, |Δy_w|) (√(Δx_w² + Δy_w²) for LINE_SMOOTH,
+//!    [`LineLength`]); for i in 0..⌈L⌉ pixel i is on iff bit
 //!    ((counter + i) / factor) mod 16 is set; each maximal on-run [a, b) becomes a dash from
 //!    t = a/L to t = b/L (1 for a run reaching the end), its ends at W₀ + t·(W₁ − W₀) (the
 //!    clipped ends themselves at t = 0 and 1). Then counter += ⌈L⌉ — an integer count,
@@ -158,6 +159,27 @@ pub struct StippleInputs<'a> {
     /// The enabled user clip planes, in eye coordinates.
     pub clip_planes: &'a [Vec4],
     pub stipple: LineStipple,
+    pub length: LineLength,
+}
+
+/// How a segment's length in window pixels is measured for the counter (step 4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LineLength {
+    /// Aliased lines: max(|Δx|, |Δy|), the pixels along the major axis (GL 1.5 §3.4.2).
+    MajorAxis,
+    /// LINE_SMOOTH: √(Δx² + Δy²), the distance along the line, as Mesa's stipple stage
+    /// measures an antialiased line (GL 1.5 §3.4.4 counts its fragments in unit lengths).
+    Euclidean,
+}
+
+impl LineLength {
+    /// The length of a segment whose window ends differ by `dx` and `dy`.
+    pub fn of(self, dx: f32, dy: f32) -> f32 {
+        match self {
+            LineLength::MajorAxis => dx.abs().max(dy.abs()),
+            LineLength::Euclidean => (dx * dx + dy * dy).sqrt(),
+        }
+    }
 }
 
 /// One segment of a line primitive: its vertex indices, whether it resets the counter, and
@@ -337,9 +359,7 @@ pub fn dashes_of_segments(
             false => inputs.transform.window(cut.clip[k]),
         };
         let w = [window(0), window(1)];
-        let dx = (w[0].x - w[1].x).abs();
-        let dy = (w[0].y - w[1].y).abs();
-        let length = dx.max(dy);
+        let length = inputs.length.of(w[0].x - w[1].x, w[0].y - w[1].y);
         let at = |t: f32, end: usize| -> DashEnd {
             let (window, s) = if (end == 0 && t > 0.0) || (end == 1 && t < 1.0) {
                 (lerp(t, w[0], w[1]), cut.s[0] + t * (cut.s[1] - cut.s[0]))

@@ -28,6 +28,7 @@ fn inputs(stipple: LineStipple) -> StippleInputs<'static> {
         ),
         clip_planes: &[],
         stipple,
+        length: LineLength::MajorAxis,
     }
 }
 

@@ -2,7 +2,7 @@
 //! depth range, the enabled user clip planes and the stipple, gathered for one draw.
 
 use super::line_stipple::{
-    dashes_of_segments, segments, Dash, Segment, StippleInputs, WindowTransform,
+    dashes_of_segments, segments, Dash, LineLength, Segment, StippleInputs, WindowTransform,
 };
 use crate::ff::{FixedState, Geometry, LineStipple, Primitive};
 
@@ -37,6 +37,11 @@ pub fn of_segments(
         transform: WindowTransform::new(state.viewport, state.depth_range),
         clip_planes: &planes,
         stipple,
+        length: if state.smooth.line {
+            LineLength::Euclidean
+        } else {
+            LineLength::MajorAxis
+        },
     };
     dashes_of_segments(segments, &g.positions, &inputs)
 }
