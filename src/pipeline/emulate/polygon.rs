@@ -377,8 +377,17 @@ mod tests {
                 (4, 5)
             ]
         );
+        // A fan's triangles (0, i+1, i+2), each its own polygon; vertex 2's FALSE flag
+        // hides the edges that start at it, 2→0 and 2→3.
+        let fan = split_corners(Primitive::TriangleFan, &[0, 1, 2, 3], Diagonal::V0V2, |v| {
+            v != 2
+        })
+        .unwrap();
+        let order: Vec<u32> = fan.iter().map(|c| c.vertex).collect();
+        assert_eq!(order, [0, 1, 2, 0, 2, 3]);
+        assert_eq!(boundary_edges(&fan), [(0, 1), (0, 2), (0, 3), (1, 2)]);
         assert_eq!(
-            split_corners(Primitive::TriangleFan, &[0, 1, 2], Diagonal::V0V2, |_| true),
+            split_corners(Primitive::LineStrip, &[0, 1, 2], Diagonal::V0V2, |_| true),
             None
         );
     }
