@@ -1014,6 +1014,34 @@ fn edge_flags_hide_edges_of_strips_and_fans_as_on_mesa() {
     );
 }
 
+/// `tests/c/cube_fbo.c`: each face of a cube map attached to a framebuffer object by its
+/// own textarget (EXT_framebuffer_object takes a face in the 2D call), complete, its face
+/// answered by FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, cleared and drawn into; a 2D
+/// texture named as a face, a cube map named as a 2D texture and a face through the 1D call
+/// refused as on Mesa; the faces read back and sampled by direction in the window: every
+/// printed line as Mesa's, the image pixel for pixel, and the trace replays.
+#[test]
+fn cube_map_faces_are_rendered_to_through_framebuffer_objects_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("cube_fbo");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "face 2 attached err 0x0 status 0x8cd5 face 0x8517 name 1",
+            "face 5 drawn          pixel 255   0 255 255 err 0x0",
+            "a face through the 1D call               err 0x502",
+            "face 3 read back       corner 128 128   0 inside 255 255   0",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 22, "a face's answer");
+    assert_images_match("cube_fbo", &ours, &mesa, Tolerance::EXACT);
+    assert_trace_replays(
+        "cube_fbo",
+        &compile("cube_fbo", Linking::Direct),
+        &[],
+        "96x64",
+    );
+}
+
 /// `tests/c/secondary.c`: GL 1.4's secondary colour and fog coordinate through every
 /// front door (immediate mode, client arrays, a buffer object, glArrayElement, a display
 /// list) with Mesa's errors, conversions and answers — FOG_COORD_SRC left as it is by

@@ -200,7 +200,13 @@ fn attachment_parameter(args: &[CArg], state: &FixedState) -> Result<i32, GlErro
         (r::FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, Some(Attached::Texture { level, .. })) => {
             Ok(level)
         }
-        (r::FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, Some(Attached::Texture { .. })) => Ok(0),
+        // The face's own name (TEXTURE_CUBE_MAP_POSITIVE_X + i), 0 for other textures.
+        (
+            r::FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE,
+            Some(Attached::Texture { target, .. }),
+        ) => Ok(target.face().map_or(0, |f| {
+            (r::TEXTURE_CUBE_MAP_POSITIVE_X + f.index() as u32) as i32
+        })),
         // FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT is the same token.
         (r::FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, Some(Attached::Texture { layer, .. })) => {
             Ok(layer)

@@ -59,7 +59,11 @@ impl FixedState {
                 let attached = match texture {
                     None => None,
                     Some((tt, name)) => {
-                        let known = self.textures.get(name).is_some_and(|t| t.target == *tt);
+                        // A cube face names a face of a cube map object.
+                        let known = self
+                            .textures
+                            .get(name)
+                            .is_some_and(|t| t.target == tt.binding());
                         if !known {
                             return Err(GlError::invalid_operation(
                                 "the texture name has no texture of that target",
@@ -162,8 +166,8 @@ impl FixedState {
             let l = self
                 .textures
                 .get(&name)
-                .filter(|t| t.target == tt)?
-                .level(level)?;
+                .filter(|t| t.target == tt.binding())?
+                .level_in(tt, level)?;
             // A 3D layer at or past the depth is no image (INCOMPLETE_ATTACHMENT).
             if layer >= l.depth {
                 return None;
@@ -177,8 +181,8 @@ impl FixedState {
         let l = self
             .textures
             .get(&name)
-            .filter(|t| t.target == tt)?
-            .level(level)?;
+            .filter(|t| t.target == tt.binding())?
+            .level_in(tt, level)?;
         Some(l.internal_format)
     }
 

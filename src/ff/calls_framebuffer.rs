@@ -54,8 +54,11 @@ pub fn framebuffer<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 _ => TextureTarget::Texture2D,
             };
             // A 2D call with a 1D textarget (or the other way round) names no image of
-            // that call: INVALID_OPERATION, as Mesa (tests/c/fbo.c).
-            if name != 0 && textarget != dimension {
+            // that call: INVALID_OPERATION, as Mesa (tests/c/fbo.c). A cube map's face is
+            // an image of the 2D call (EXT_framebuffer_object), of the 1D call none.
+            let named = textarget == dimension
+                || (dimension == TextureTarget::Texture2D && textarget.face().is_some());
+            if name != 0 && !named {
                 return Ok(Some(Command::Raise {
                     error: GlErrorKind::InvalidOperation,
                     call: e,

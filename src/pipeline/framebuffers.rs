@@ -361,8 +361,18 @@ impl FramebufferMirror {
                     let t = texture(tt, name)
                         .and_then(NonZeroU32::new)
                         .map(glow::NativeTexture);
-                    // One image of a 3D level; glFramebufferTexture would attach them all.
+                    // One image of a 3D level or one face of a cube map; glFramebufferTexture
+                    // would attach them all.
                     match tt {
+                        TextureTarget::CubeFace(f) => unsafe {
+                            gl.framebuffer_texture_2d(
+                                glow::DRAW_FRAMEBUFFER,
+                                gl_point,
+                                glow::TEXTURE_CUBE_MAP_POSITIVE_X + f.index() as u32,
+                                t,
+                                level,
+                            )
+                        },
                         TextureTarget::Texture3D => unsafe {
                             gl.framebuffer_texture_layer(
                                 glow::DRAW_FRAMEBUFFER,
