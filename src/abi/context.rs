@@ -731,22 +731,30 @@ impl Context {
     /// glReadPixels and glGetTexImage into the caller's memory: the bytes the pipeline
     /// read, rows padded to GL_PACK_ALIGNMENT. A call that failed, or a glGetTexImage of a
     /// level never specified, stored nothing and leaves the memory alone.
-    /// The part of a glReadPixels rectangle (x, y, width, height) inside the window, when
-    /// the window is the read framebuffer and the rectangle reaches beyond it, as (first
-    /// column, first row, columns, rows) of the rectangle: Mesa clips the read to the
-    /// buffer (`_mesa_clip_readpixels`) and writes nothing of the pixels outside, which
-    /// keep what the program's memory held (GL leaves them undefined). None: the whole
-    /// rectangle is written.
+    /// The part of a glReadPixels rectangle (x, y, width, height) inside the read
+    /// framebuffer (the window, or the object bound for reading), when the rectangle
+    /// reaches beyond it, as (first column, first row, columns, rows) of the rectangle:
+    /// Mesa clips the read to the buffer (`_mesa_clip_readpixels`) and writes nothing of
+    /// the pixels outside, which keep what the program's memory held (GL leaves them
+    /// undefined). None: the whole rectangle is written.
     fn read_inside(&self, args: &[CArg]) -> Option<[usize; 4]> {
-        let read_fb = self.pipeline.as_ref()?.state().framebuffers.read;
-        let target = self.target.as_ref()?;
+        let state = self.pipeline.as_ref()?.state();
+        let (fw, fh) = match state.framebuffers.read {
+            0 => {
+                let target = self.target.as_ref()?;
+                (i64::from(target.width()), i64::from(target.height()))
+            }
+            _ => {
+                let (w, h) = state.read_framebuffer_size()?;
+                (i64::from(w), i64::from(h))
+            }
+        };
         let int = |i: usize| match args.get(i) {
             Some(CArg::Int(v)) => Some(*v),
             _ => None,
         };
         let (x, y, w, h) = (int(0)?, int(1)?, int(2)?, int(3)?);
-        let (fw, fh) = (i64::from(target.width()), i64::from(target.height()));
-        if read_fb != 0 || w <= 0 || h <= 0 {
+        if w <= 0 || h <= 0 {
             return None;
         }
         let (x0, y0) = ((-x).max(0).min(w), (-y).max(0).min(h));

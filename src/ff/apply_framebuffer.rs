@@ -186,6 +186,33 @@ impl FixedState {
         Some(l.internal_format)
     }
 
+    /// The width and height of the framebuffer object bound for reading: the smallest of
+    /// its attached images' (where every image is, `_mesa_update_framebuffer_visual`);
+    /// `None` for the window or an object without a sized image.
+    pub fn read_framebuffer_size(&self) -> Option<(i32, i32)> {
+        let f = &self.framebuffers;
+        let name = f.bound(FramebufferTarget::Read);
+        let fb = f.objects.get(&name).filter(|_| name != 0)?;
+        fb.attached()
+            .filter_map(|(_, a)| match a {
+                Attached::Texture {
+                    target,
+                    name,
+                    level,
+                    ..
+                } => self
+                    .textures
+                    .get(&name)
+                    .filter(|t| t.target == target.binding())?
+                    .level_in(target, level)
+                    .map(|l| (l.width, l.height)),
+                Attached::Renderbuffer(r) => {
+                    f.renderbuffers.get(&r).map(|rb| (rb.width, rb.height))
+                }
+            })
+            .reduce(|(w0, h0), (w1, h1)| (w0.min(w1), h0.min(h1)))
+    }
+
     /// RED_BITS … STENCIL_BITS of the framebuffer bound for drawing; `window` is what the
     /// window has.
     pub fn draw_bits(&self, window: Bits) -> Bits {

@@ -2,11 +2,15 @@
  * Mesa clips the read to the buffer and writes nothing of the pixels outside, which keep
  * what the program's memory held (GL leaves them undefined). Colour over each corner and
  * edge, with and without PACK_ROW_LENGTH/SKIP_PIXELS/SKIP_ROWS/ALIGNMENT, depth and
- * stencil over an edge, and a rectangle wholly outside. Memory is prefilled with 0xEE;
- * each read prints its bytes as a hash and the first bytes of each row.
+ * stencil over an edge, and a rectangle wholly outside; then the same for a framebuffer
+ * object bound for reading, clipped to its smallest attachment (a 12×10 texture beside a
+ * 16×16 depth renderbuffer). Memory is prefilled with 0xEE; each read prints its bytes as
+ * a hash and the first bytes of each row.
  *
  * usage: read_outside */
+#define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
+#include <GL/glext.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -78,6 +82,28 @@ int main(void) {
     memset(stencil, 0xEE, sizeof stencil);
     glReadPixels(31, 31, 2, 2, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil);
     report("stencil over the top right", stencil, sizeof stencil, 4);
+  }
+  {
+    GLuint fb, tex, rb;
+    glGenFramebuffersEXT(1, &fb);
+    glGenTextures(1, &tex);
+    glGenRenderbuffersEXT(1, &rb);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 12, 10, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb);
+    glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, 16, 16);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fb);
+    glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, tex, 0);
+    glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
+                                 rb);
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    colour("object: right edge", 10, 2, 4, 2);
+    colour("object: top right corner", 11, 9, 3, 3);
+    colour("object: bottom left corner", -1, -2, 3, 3);
+    colour("object: wider than it", -2, 4, 16, 1);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+    colour("window again: right edge", 30, 2, 4, 2);
   }
   OSMesaDestroyContext(ctx);
   free(buf);
