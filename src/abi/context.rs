@@ -9,7 +9,7 @@
 //! format (RGBA, BGRA, ARGB, RGB or BGR bytes), row by row with OSMESA_ROW_LENGTH, the
 //! bottom row first unless OSMESA_Y_UP is 0.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::ffi::c_void;
 
 use super::cargs::{CArg, CCall, ProgramMemory, CALLER_SLOT};
@@ -17,6 +17,7 @@ use super::AbiError;
 use crate::ff::api::Entry;
 use crate::ff::args::PixelShape;
 use crate::ff::front::{Client, Reply};
+use crate::ff::lists::ListMode;
 use crate::ff::pixel_layout;
 use crate::ff::queries::{self, ObjectParam, QueryTarget};
 use crate::ff::upload_bounds::{pixel_access, CallTime, PixelAccess};
@@ -272,6 +273,10 @@ pub struct Context {
     /// a texture object at glGenTextures, which glAreTexturesResident finds before any
     /// bind (glIsTexture, which asks for a target, does not).
     textures_generated: HashSet<u32>,
+    /// glPrioritizeTextures of generated names not yet bound, clamped to [0, 1]: Mesa's
+    /// object exists from glGenTextures and keeps the priority, which the first bind
+    /// (making the model's object) carries over.
+    unbound_priorities: HashMap<u32, f32>,
     /// FIXEDFUNC_TRACE is set: each executed command is written to the trace.
     tracing: bool,
     /// The framebuffer and renderbuffer names glGen* handed out.
@@ -412,6 +417,7 @@ impl Context {
             depth_copy: Vec::new(),
             texture_max: 0,
             textures_generated: HashSet::new(),
+            unbound_priorities: HashMap::new(),
             tracing: super::trace::enabled(),
             generated: Default::default(),
             rasterizers,
@@ -550,7 +556,14 @@ impl Context {
             Entry::DeleteTextures if !inside => {
                 for name in names_at(args) {
                     self.textures_generated.remove(&name);
+                    self.unbound_priorities.remove(&name);
                 }
+            }
+            // A list being compiled only (not executed) keeps the call for later.
+            Entry::PrioritizeTextures
+                if !inside && self.client.lists.compiling() != Some(ListMode::Compile) =>
+            {
+                self.prioritize_unbound(args)
             }
             Entry::AreTexturesResident if !inside => {
                 // Mesa answers FALSE, with no error, when either array is NULL (after the
@@ -680,7 +693,18 @@ impl Context {
         super::vertex_calls::in_pair(&mut self.client, entry, args)
     }
 
+    /// A command, and after a glBindTexture that makes a generated name's object the
+    /// priority glPrioritizeTextures gave it before (`prioritize_unbound`).
     fn execute(&mut self, cmd: &Command) {
+        self.execute_one(cmd);
+        if let Command::BindTexture { name, .. } = cmd {
+            if let Some(priority) = self.unbound_priorities.remove(name) {
+                self.execute_one(&Command::PrioritizeTextures(vec![(*name, priority)]));
+            }
+        }
+    }
+
+    fn execute_one(&mut self, cmd: &Command) {
         let Some(p) = self.pipeline.as_mut() else {
             return;
         };
@@ -700,6 +724,28 @@ impl Context {
         if self.error.is_some() {
             if let Some(p) = self.pipeline.as_mut() {
                 let _ = p.take_gl_error();
+            }
+        }
+    }
+
+    /// glPrioritizeTextures(n, names, priorities) of names glGenTextures gave and no bind
+    /// has made objects yet: kept, clamped to [0, 1] (GL 1.5 §3.8.12), for the first bind.
+    /// Names never generated are left out, as Mesa finds no object for them; those that
+    /// are objects take the model's command.
+    fn prioritize_unbound(&mut self, args: &[CArg]) {
+        let Some(CArg::Ptr(priorities, _)) = args.get(2).copied() else {
+            return;
+        };
+        if priorities.is_null() {
+            return;
+        }
+        let state = self.pipeline.as_ref().map(|p| p.state());
+        for (k, name) in names_at(args).into_iter().enumerate() {
+            let object = state.is_some_and(|s| s.textures.contains_key(&name));
+            if self.textures_generated.contains(&name) && !object {
+                // SAFETY: the program's array holds n priorities (the call's contract).
+                let p = unsafe { priorities.cast::<f32>().add(k).read_unaligned() };
+                self.unbound_priorities.insert(name, p.clamp(0.0, 1.0));
             }
         }
     }

@@ -160,6 +160,38 @@ static void empty_name_arrays(void) {
   glDeleteTextures(1, &tex);
 }
 
+static void priority(const char *what, GLenum target) {
+  GLfloat q = -7;
+  glGetTexParameterfv(target, GL_TEXTURE_PRIORITY, &q);
+  printf("%-40s %g  err 0x%x\n", what, q, glGetError());
+}
+
+/* glPrioritizeTextures of names glGenTextures gave but no bind has made textures: Mesa's
+ * objects exist from glGenTextures, so the priority (clamped to [0, 1]) is read after the
+ * first bind; a name never generated is left out. */
+static void priorities_before_bind(void) {
+  GLuint t[3], never = 77;
+  GLclampf p[3] = {0.25f, 1.5f, -1.0f}, half = 0.5f;
+  glGenTextures(3, t);
+  glPrioritizeTextures(3, t, p);
+  err("glPrioritizeTextures(generated names)");
+  glPrioritizeTextures(1, &never, &half);
+  err("glPrioritizeTextures(never generated)");
+  glBindTexture(GL_TEXTURE_2D, t[0]);
+  priority("priority 0.25 after bind", GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_1D, t[1]);
+  priority("priority 1.5 after bind", GL_TEXTURE_1D);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, t[2]);
+  priority("priority -1 after bind", GL_TEXTURE_CUBE_MAP);
+  glBindTexture(GL_TEXTURE_2D, never);
+  priority("never generated, after bind", GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_1D, 0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+  glDeleteTextures(3, t);
+  glDeleteTextures(1, &never);
+}
+
 int main(int argc, char **argv) {
   OSMesaContext ctx;
   GLubyte *buf = open_window(&ctx, 8, 8);
@@ -167,5 +199,6 @@ int main(int argc, char **argv) {
   attribute_groups();
   sub_image_levels();
   empty_name_arrays();
+  priorities_before_bind();
   return finish(argc > 1 ? argv[1] : "/dev/null", ctx, buf, 8, 8);
 }
