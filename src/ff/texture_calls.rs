@@ -9,7 +9,7 @@
 //! [0, log2(MAX_TEXTURE_SIZE)] INVALID_VALUE; a negative size INVALID_VALUE; a sub-image
 //! of a level never specified INVALID_OPERATION; a region outside the level INVALID_VALUE.
 //! glGetTexImage: STENCIL_INDEX INVALID_ENUM, DEPTH_COMPONENT of a colour texture or a
-//! colour format of a depth texture INVALID_OPERATION; a level never specified stores
+//! colour format (RED, GREEN and BLUE included) of a depth texture INVALID_OPERATION; a level never specified stores
 //! nothing, without an error (Mesa).
 //!
 //! glTexSubImage1D/2D/3D check, in Mesa 22.3's `texsubimage_error_check` order: the target
@@ -276,8 +276,21 @@ impl FixedState {
         else {
             return Ok(false);
         };
-        check_format_pair(level.internal_format, g.format)
-            .map_err(|e| GlError::invalid_operation(e.rule))?;
+        // RED, GREEN and BLUE read one component of Table 6.1's R, G, B, A (§6.1.4), as
+        // any colour format does: only a depth texture refuses them.
+        let single = matches!(
+            g.format,
+            PixelFormat::Red | PixelFormat::Green | PixelFormat::Blue
+        );
+        if single && level.internal_format.is_depth() {
+            return Err(GlError::invalid_operation(
+                "a depth texture is read as DEPTH_COMPONENT only",
+            ));
+        }
+        if !single {
+            check_format_pair(level.internal_format, g.format)
+                .map_err(|e| GlError::invalid_operation(e.rule))?;
+        }
         Ok(true)
     }
 

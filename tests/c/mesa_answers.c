@@ -192,6 +192,39 @@ static void priorities_before_bind(void) {
   glDeleteTextures(1, &never);
 }
 
+/* glGetTexImage in RED, GREEN or BLUE: the texture's components become R, G, B, A by
+ * GL 1.5 Table 6.1 (L and I to R, A to A; missing colours 0), then the one asked for is
+ * packed (§6.1.4). Mesa answers; only a depth texture refuses them (INVALID_OPERATION). */
+static void one_colour_tex_images(void) {
+  static const GLubyte texels[2 * 4] = {10, 20, 30, 40, 250, 128, 0, 255};
+  static const GLenum bases[] = {GL_RGBA,  GL_RGB,       GL_LUMINANCE,
+                                 GL_ALPHA, GL_INTENSITY, GL_LUMINANCE_ALPHA};
+  static const GLenum formats[] = {GL_RED, GL_GREEN, GL_BLUE};
+  GLuint tex;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  for (int b = 0; b < 6; b++) {
+    glTexImage2D(GL_TEXTURE_2D, 0, bases[b], 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    for (int f = 0; f < 3; f++) {
+      GLubyte u[2] = {7, 7};
+      GLfloat v[2] = {-7, -7};
+      glGetTexImage(GL_TEXTURE_2D, 0, formats[f], GL_UNSIGNED_BYTE, u);
+      GLenum ub = glGetError();
+      glGetTexImage(GL_TEXTURE_2D, 0, formats[f], GL_FLOAT, v);
+      char what[48];
+      snprintf(what, sizeof what, "GetTexImage base 0x%x in 0x%x", bases[b], formats[f]);
+      printf("%-40s %d %d %.9g %.9g  err 0x%x 0x%x\n", what, u[0], u[1], v[0], v[1], ub,
+             glGetError());
+    }
+  }
+  GLubyte u[2] = {7, 7};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 2, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_UNSIGNED_BYTE, u);
+  err("GetTexImage of a depth texture in RED");
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glDeleteTextures(1, &tex);
+}
+
 int main(int argc, char **argv) {
   OSMesaContext ctx;
   GLubyte *buf = open_window(&ctx, 8, 8);
@@ -200,5 +233,6 @@ int main(int argc, char **argv) {
   sub_image_levels();
   empty_name_arrays();
   priorities_before_bind();
+  one_colour_tex_images();
   return finish(argc > 1 ? argv[1] : "/dev/null", ctx, buf, 8, 8);
 }
