@@ -397,7 +397,7 @@ impl ClientMemory for ProgramMemory {
                 Some(Cow::Borrowed(bytes))
             }
             ArrayData::Bytes(b) => b.get(offset..offset.checked_add(len)?).map(Cow::Borrowed),
-            ArrayData::Null | ArrayData::Buffer { .. } => None,
+            ArrayData::Null | ArrayData::Buffer { .. } | ArrayData::Orphaned(_) => None,
         }
     }
 }

@@ -259,7 +259,7 @@ fn pointer(pname: u32, c: &Client) -> Result<usize, GlErrorKind> {
     };
     Ok(match data {
         ArrayData::Address(p) => *p,
-        ArrayData::Buffer { offset, .. } => *offset,
+        ArrayData::Buffer { offset, .. } | ArrayData::Orphaned(offset) => *offset,
         ArrayData::Null | ArrayData::Bytes(_) => 0,
     })
 }

@@ -41,6 +41,12 @@ pub enum ArrayData {
     /// A byte offset into a buffer object (ff::buffers), captured when the pointer was
     /// given with the buffer bound (GL 1.5 §2.9.4).
     Buffer { name: u32, offset: usize },
+    /// The offset of a pointer into a buffer object since deleted. GL reverts the array's
+    /// buffer binding to 0 (GL 1.5 §2.9.1); Mesa keeps the offset, which glGetPointerv
+    /// answers and a draw reads as an address in the program's memory (address 0x8 for
+    /// offset 8: Mesa 22.3 crashes). The layer reads nothing there (a documented
+    /// deviation: the program's undefined read is not repeated).
+    Orphaned(usize),
 }
 
 /// Reads the memory an [`ArrayData`] names: a front end that holds addresses says how.
@@ -56,7 +62,10 @@ impl ClientMemory for BytesOnly {
     fn read<'d>(&self, data: &'d ArrayData, offset: usize, len: usize) -> Option<Cow<'d, [u8]>> {
         match data {
             ArrayData::Bytes(b) => b.get(offset..offset.checked_add(len)?).map(Cow::Borrowed),
-            ArrayData::Null | ArrayData::Address(_) | ArrayData::Buffer { .. } => None,
+            ArrayData::Null
+            | ArrayData::Address(_)
+            | ArrayData::Buffer { .. }
+            | ArrayData::Orphaned(_) => None,
         }
     }
 }
@@ -784,13 +793,15 @@ impl ClientArrays {
         })
     }
 
-    /// Pointers into buffer `name`, deleted, point nowhere: GL reverts the arrays'
-    /// buffer bindings to 0 (GL 1.5 §2.9.1). Mesa then reads the kept offset as a client
-    /// address; here such an array reads nothing.
+    /// Pointers into buffer `name`, deleted, keep their offset and point nowhere
+    /// ([`ArrayData::Orphaned`]): GL reverts the arrays' buffer bindings to 0 (GL 1.5
+    /// §2.9.1), glGetPointerv still answers the offset, as on Mesa.
     pub fn forget_buffer(&mut self, name: u32) {
         for a in self.pointers_mut() {
-            if matches!(a.data, ArrayData::Buffer { name: n, .. } if n == name) {
-                a.data = ArrayData::Null;
+            if let ArrayData::Buffer { name: n, offset } = a.data {
+                if n == name {
+                    a.data = ArrayData::Orphaned(offset);
+                }
             }
         }
     }
@@ -1001,6 +1012,7 @@ impl ClientArrays {
                 name: *name,
                 offset: o + offset as usize,
             },
+            ArrayData::Orphaned(o) => ArrayData::Orphaned(o + offset as usize),
             ArrayData::Null => ArrayData::Null,
         };
         let make = |size: i32, ty: CType, offset: i32, on: bool| ArrayPointer {

@@ -225,6 +225,30 @@ static void one_colour_tex_images(void) {
   glDeleteTextures(1, &tex);
 }
 
+/* An array pointer into a buffer object since deleted: the array's buffer binding reverts
+ * to 0 (GL 1.5 §2.9.1) and Mesa keeps the offset, which glGetPointerv answers (also after
+ * a client attribute pop). Drawing from it is left out: Mesa reads the offset as an
+ * address in the program's memory (0x8: a crash); the layer reads nothing there. */
+static void pointer_into_deleted_buffer(void) {
+  GLuint b;
+  void *p = (void *)7;
+  glGenBuffers(1, &b);
+  glBindBuffer(GL_ARRAY_BUFFER, b);
+  glBufferData(GL_ARRAY_BUFFER, 64, NULL, GL_STATIC_DRAW);
+  glVertexPointer(2, GL_FLOAT, 0, (void *)8);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glDeleteBuffers(1, &b);
+  ints("vertex array buffer after delete", GL_VERTEX_ARRAY_BUFFER_BINDING);
+  glGetPointerv(GL_VERTEX_ARRAY_POINTER, &p);
+  printf("%-40s %p  err 0x%x\n", "vertex pointer after delete", p, glGetError());
+  glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+  glVertexPointer(2, GL_FLOAT, 0, NULL);
+  glPopClientAttrib();
+  glGetPointerv(GL_VERTEX_ARRAY_POINTER, &p);
+  printf("%-40s %p  err 0x%x\n", "vertex pointer after pop", p, glGetError());
+  glVertexPointer(4, GL_FLOAT, 0, NULL);
+}
+
 int main(int argc, char **argv) {
   OSMesaContext ctx;
   GLubyte *buf = open_window(&ctx, 8, 8);
@@ -234,5 +258,6 @@ int main(int argc, char **argv) {
   empty_name_arrays();
   priorities_before_bind();
   one_colour_tex_images();
+  pointer_into_deleted_buffer();
   return finish(argc > 1 ? argv[1] : "/dev/null", ctx, buf, 8, 8);
 }
