@@ -1835,6 +1835,8 @@ fn state_and_errors_answer_as_on_mesa() {
             "GetTexImage base 0x1908 in 0x1904        20 128 0.0784313753 0.501960814  err 0x0 0x0",
             "GetTexImage base 0x1909 in 0x1903        10 250 0.0392156877 0.980392218  err 0x0 0x0",
             "vertex pointer after delete              0x8  err 0x0",
+            "GetBufferPointerv(bad pname), unbound    err 0x500",
+            "GetBufferParameteriv(bad pname), unbound err 0x502",
         ],
     );
     assert_same_text(&mesa, &ours, 70, "the answer");

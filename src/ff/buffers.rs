@@ -349,8 +349,12 @@ impl Buffers {
             }
             // GL 1.5 §2.9.3: BUFFER_MAP_POINTER, the mapping's address, NULL unmapped.
             GetBufferPointerv | GetBufferPointervARB => {
-                let name = self.bound_name(c)?;
+                // Mesa's order here: the target, the parameter name (INVALID_ENUM), then
+                // buffer 0 bound (INVALID_OPERATION); glGetBufferParameteriv checks the
+                // binding before the parameter name.
+                let _: Target = c.enm(0)?;
                 c.pname(1, &["GL_BUFFER_MAP_POINTER"])?;
+                let name = self.bound_name(c)?;
                 let b = self.object(name);
                 let address = match b.mapped {
                     Some(_) => b.data.as_ptr() as usize,

@@ -249,6 +249,33 @@ static void pointer_into_deleted_buffer(void) {
   glVertexPointer(4, GL_FLOAT, 0, NULL);
 }
 
+/* With no buffer object bound, which error each buffer call gives for a bad parameter
+ * name or range: Mesa checks glGetBufferPointerv's parameter name and glMapBuffer's access
+ * (INVALID_ENUM) before the binding, the other calls the binding (INVALID_OPERATION)
+ * first; a bad target is INVALID_ENUM before either. */
+static void buffer_check_order(void) {
+  void *p;
+  GLint i;
+  GLubyte d[8] = {0};
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glGetBufferPointerv(GL_ARRAY_BUFFER, 0x1234, &p);
+  err("GetBufferPointerv(bad pname), unbound");
+  glGetBufferPointerv(0x1234, GL_BUFFER_MAP_POINTER, &p);
+  err("GetBufferPointerv(bad target), unbound");
+  glGetBufferPointerv(GL_ARRAY_BUFFER, GL_BUFFER_MAP_POINTER, &p);
+  err("GetBufferPointerv(MAP_POINTER), unbound");
+  glGetBufferParameteriv(GL_ARRAY_BUFFER, 0x1234, &i);
+  err("GetBufferParameteriv(bad pname), unbound");
+  glMapBuffer(GL_ARRAY_BUFFER, 0x1234);
+  err("MapBuffer(bad access), unbound");
+  glUnmapBuffer(GL_ARRAY_BUFFER);
+  err("UnmapBuffer, unbound");
+  glBufferSubData(GL_ARRAY_BUFFER, -1, 4, d);
+  err("BufferSubData(offset -1), unbound");
+  glGetBufferSubData(GL_ARRAY_BUFFER, 0, -1, d);
+  err("GetBufferSubData(size -1), unbound");
+}
+
 int main(int argc, char **argv) {
   OSMesaContext ctx;
   GLubyte *buf = open_window(&ctx, 8, 8);
@@ -259,5 +286,6 @@ int main(int argc, char **argv) {
   priorities_before_bind();
   one_colour_tex_images();
   pointer_into_deleted_buffer();
+  buffer_check_order();
   return finish(argc > 1 ? argv[1] : "/dev/null", ctx, buf, 8, 8);
 }
