@@ -662,10 +662,19 @@ impl ClientArrays {
                 let mode = c.enm(0)?;
                 let first = c.i32(1)?;
                 let count = c.i32(2)?;
-                if first < 0 || count < 0 {
-                    return Err(c.bad(2, "a first index and count of 0 or more"));
+                if count < 0 {
+                    return Err(c.bad(2, "a count of 0 or more"));
                 }
-                let which = Vertices::Run(first as usize, first as usize + count as usize);
+                // A first below 0 is no error (GL 1.5 defines none; Mesa raises none), but
+                // what Mesa draws is no read of pointer + first · stride: its vertex fetch
+                // takes the index as unsigned, past the array, and gives what its
+                // out-of-bounds fetch gives (measured: element −1 of V + 1 as (0, 0), while
+                // first −2 of V + 2 draws another shape again). The layer draws nothing
+                // for it (a documented deviation), and reads nothing before the array.
+                let Ok(first) = usize::try_from(first) else {
+                    return Ok(ClientEffect::Draw(None));
+                };
+                let which = Vertices::Run(first, first + count as usize);
                 return Ok(ClientEffect::Draw(self.geometry(mode, which, None, mem)));
             }
             Entry::DrawElements | Entry::DrawRangeElements => {
@@ -690,8 +699,7 @@ impl ClientArrays {
             // Checked in Mesa's order (measured with tests/c/multidraw.c): a drawcount
             // below 0 is INVALID_VALUE before the mode (and the index type) are
             // INVALID_ENUM, a count below 0 INVALID_VALUE after them. A first index below 0
-            // is no error on Mesa; the draw would read before the array, so the layer
-            // leaves that one out.
+            // is no error, and that draw is left out, as glDrawArrays leaves it.
             Entry::MultiDrawArrays => {
                 let n = draw_count(c, 3)?;
                 let mode: Primitive = c.enm(0)?;

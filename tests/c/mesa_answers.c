@@ -276,6 +276,31 @@ static void buffer_check_order(void) {
   err("GetBufferSubData(size -1), unbound");
 }
 
+/* glDrawArrays and glMultiDrawArrays with a first element below 0: no error (GL 1.5
+ * defines none, Mesa raises none); a count below 0 is still INVALID_VALUE, a bad mode
+ * INVALID_ENUM. What Mesa then draws is its vertex fetch past the array (the index taken
+ * as unsigned), not pointer + first · stride; the layer draws nothing, so only the
+ * errors are compared here. */
+static void negative_first(void) {
+  static const GLfloat v[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  GLint first[2] = {-1, 0};
+  GLsizei count[2] = {3, 3};
+  glVertexPointer(2, GL_FLOAT, 0, v + 1);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glDrawArrays(GL_TRIANGLES, -1, 3);
+  err("DrawArrays(first -1, count 3)");
+  glDrawArrays(GL_TRIANGLES, -1, 0);
+  err("DrawArrays(first -1, count 0)");
+  glDrawArrays(GL_TRIANGLES, -1, -1);
+  err("DrawArrays(first -1, count -1)");
+  glDrawArrays(0x1234, -1, 3);
+  err("DrawArrays(bad mode, first -1)");
+  glMultiDrawArrays(GL_TRIANGLES, first, count, 2);
+  err("MultiDrawArrays(first {-1, 0})");
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(4, GL_FLOAT, 0, NULL);
+}
+
 int main(int argc, char **argv) {
   OSMesaContext ctx;
   GLubyte *buf = open_window(&ctx, 8, 8);
@@ -287,5 +312,6 @@ int main(int argc, char **argv) {
   one_colour_tex_images();
   pointer_into_deleted_buffer();
   buffer_check_order();
+  negative_first();
   return finish(argc > 1 ? argv[1] : "/dev/null", ctx, buf, 8, 8);
 }
