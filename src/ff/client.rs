@@ -461,10 +461,34 @@ pub enum ClientEffect {
     /// disabled or the count is 0: GL draws nothing).
     Draw(Option<Geometry>),
     /// glMultiDrawArrays / glMultiDrawElements: one draw per list, in order (GL 1.5
-    /// §2.8: as that many glDrawArrays or glDrawElements), the empty ones left out.
-    Draws(Vec<Geometry>),
+    /// §2.8: as that many glDrawArrays or glDrawElements), the empty ones left out; and
+    /// whether the first list's count was 0, which Mesa draws differently when the call
+    /// is executed ([`FirstCount`]).
+    Draws(Vec<Geometry>, FirstCount),
     /// glArrayElement: the element's values, for immediate mode.
     Element(Element),
+}
+
+/// Whether a glMultiDraw* call's first count is 0. Executed, such a call draws nothing
+/// at all on Mesa 22.3 (llvmpipe), whatever the later counts (measured: LINE_STRIP counts
+/// {0, 4, 2} draw nothing, {4, 0, 2} both strips, {1, 4, 2} the 4-strip; drawcount 1
+/// with count 0 nothing; glMultiDrawElements {0, 4} nothing): its draw takes the first
+/// count for the whole call's. GL 1.5 §2.8 draws each list as glDrawArrays would; the
+/// layer follows Mesa (a Mesa deviation). A display list keeps the non-empty draws and
+/// draws them all when called, on Mesa as here.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FirstCount {
+    Empty,
+    NotEmpty,
+}
+
+impl FirstCount {
+    fn of(counts: &[usize]) -> FirstCount {
+        match counts.first() {
+            Some(0) => FirstCount::Empty,
+            _ => FirstCount::NotEmpty,
+        }
+    }
 }
 
 impl ClientArrays {
@@ -705,6 +729,7 @@ impl ClientArrays {
                 let mode: Primitive = c.enm(0)?;
                 let first = ints(c, 1, n)?;
                 let counts = counts(c, 2, n)?;
+                let first_count = FirstCount::of(&counts);
                 let draws = first
                     .iter()
                     .zip(counts)
@@ -714,13 +739,14 @@ impl ClientArrays {
                         self.geometry(mode, which, None, mem)
                     })
                     .collect();
-                return Ok(ClientEffect::Draws(draws));
+                return Ok(ClientEffect::Draws(draws, first_count));
             }
             Entry::MultiDrawElements => {
                 let n = draw_count(c, 4)?;
                 let mode: Primitive = c.enm(0)?;
                 let ty = index_type(c, 2)?;
                 let counts = counts(c, 1, n)?;
+                let first_count = FirstCount::of(&counts);
                 let lists = c.pointers(3, n, bound.element)?;
                 let mut draws = Vec::with_capacity(n);
                 for (data, k) in lists.iter().zip(counts) {
@@ -728,7 +754,7 @@ impl ClientArrays {
                         read_indices(mem, data, k, ty).ok_or_else(|| c.bad(3, "indices"))?;
                     draws.extend(self.indexed(mode, indices, mem));
                 }
-                return Ok(ClientEffect::Draws(draws));
+                return Ok(ClientEffect::Draws(draws, first_count));
             }
             Entry::ArrayElement => {
                 let i = c.i32(0)?;

@@ -8,7 +8,7 @@ use std::sync::Arc;
 
 use super::args::Args;
 use super::buffers::Buffers;
-use super::client::{ArrayData, ClientArrays, ClientEffect, ClientMemory};
+use super::client::{ArrayData, ClientArrays, ClientEffect, ClientMemory, FirstCount};
 use super::client_attrib::ClientAttribStack;
 use super::command::Command;
 use super::error::GlErrorKind;
@@ -219,7 +219,9 @@ impl Client {
                 }
                 out.push(Command::Draw(g));
             }
-            ClientEffect::Draws(draws) => {
+            // A glMultiDraw* executed with a first count of 0 draws nothing (Mesa 22.3).
+            ClientEffect::Draws(_, FirstCount::Empty) => {}
+            ClientEffect::Draws(draws, FirstCount::NotEmpty) => {
                 out.extend(draws.into_iter().map(|g| Command::Draw(Arc::new(g))));
             }
             ClientEffect::Element(e) => self
@@ -352,7 +354,7 @@ impl Client {
             )? {
                 ClientEffect::Element(el) => Item::Immediate(Op::Element(Box::new(el))),
                 ClientEffect::Draw(Some(g)) => Item::Command(Command::Draw(Arc::new(g))),
-                ClientEffect::Draws(draws) => {
+                ClientEffect::Draws(draws, _) => {
                     return Ok(draws
                         .into_iter()
                         .map(|g| Item::Command(Command::Draw(Arc::new(g))))

@@ -3,6 +3,9 @@
  * glGetError after it. Run on Mesa's OSMesa and on fixedfunc's library, the two outputs
  * must be the same.
  *
+ * Mesa deviations pinned here: glMultiDrawArrays and glMultiDrawElements whose first count
+ * is 0 draw nothing (multi_draw_first_empty).
+ *
  * usage: mesa_answers OUT.ppm */
 #define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
@@ -301,6 +304,50 @@ static void negative_first(void) {
   glVertexPointer(4, GL_FLOAT, 0, NULL);
 }
 
+/* Lit pixels of the 8×8 window (red above 0), then the window cleared. */
+static void lit(const char *what) {
+  GLubyte px[8 * 8 * 4];
+  int n = 0;
+  glReadPixels(0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  for (int i = 0; i < 8 * 8; i++) n += px[4 * i] != 0;
+  printf("%-40s lit %d  err 0x%x\n", what, n, glGetError());
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+
+/* glMultiDrawArrays and glMultiDrawElements whose first count is 0 draw nothing at all on
+ * Mesa 22.3, whatever the later counts (a Mesa deviation from GL 1.5 §2.8, which draws
+ * each list as glDrawArrays would); a later count of 0, or a first count of 1, does not
+ * stop the others. A display list keeps the non-empty draws and draws them. */
+static void multi_draw_first_empty(void) {
+  static const GLfloat v[4][2] = {{0.5f, 0.5f}, {7.5f, 0.5f}, {7.5f, 7.5f}, {0.5f, 7.5f}};
+  static const GLushort ix[4] = {0, 1, 2, 3};
+  const GLvoid *lists[2] = {ix, ix};
+  GLint first[3] = {0, 0, 1};
+  GLsizei empty_first[3] = {0, 4, 2}, empty_second[3] = {4, 0, 2}, one_first[3] = {1, 4, 2};
+  glVertexPointer(2, GL_FLOAT, 0, v);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glMultiDrawArrays(GL_LINE_STRIP, first, empty_first, 3);
+  lit("MultiDrawArrays counts {0, 4, 2}");
+  glMultiDrawArrays(GL_LINE_STRIP, first, empty_second, 3);
+  lit("MultiDrawArrays counts {4, 0, 2}");
+  glMultiDrawArrays(GL_LINE_STRIP, first, one_first, 3);
+  lit("MultiDrawArrays counts {1, 4, 2}");
+  glMultiDrawElements(GL_LINE_STRIP, empty_first, GL_UNSIGNED_SHORT, lists, 2);
+  lit("MultiDrawElements counts {0, 4}");
+  glMultiDrawElements(GL_LINE_STRIP, empty_second, GL_UNSIGNED_SHORT, lists, 2);
+  lit("MultiDrawElements counts {4, 0}");
+  glNewList(1, GL_COMPILE);
+  glMultiDrawArrays(GL_LINE_STRIP, first, empty_first, 3);
+  glEndList();
+  glCallList(1);
+  lit("list of MultiDrawArrays {0, 4, 2}");
+  glDeleteLists(1, 1);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(4, GL_FLOAT, 0, NULL);
+}
+
 int main(int argc, char **argv) {
   OSMesaContext ctx;
   GLubyte *buf = open_window(&ctx, 8, 8);
@@ -313,5 +360,6 @@ int main(int argc, char **argv) {
   pointer_into_deleted_buffer();
   buffer_check_order();
   negative_first();
+  multi_draw_first_empty();
   return finish(argc > 1 ? argv[1] : "/dev/null", ctx, buf, 8, 8);
 }

@@ -56,8 +56,8 @@ int main(int argc, char **argv) {
   glEnableClientState(GL_COLOR_ARRAY);
 
   /* GL 1.5 §2.8: each list is drawn as glDrawArrays would draw it. Mesa 22.3 draws
-   * nothing at all when the first list's count is 0 (the line differs between the
-   * libraries: the layer follows the specification); the window is cleared after. */
+   * nothing at all when the first list's count is 0, and the layer follows it (a Mesa
+   * deviation); the window is cleared after. */
   {
     GLint f[2] = {0, 3};
     GLsizei n[2] = {0, 3};

@@ -1383,10 +1383,15 @@ fn multi_draws_read_pointer_arrays_and_become_one_draw_per_list() {
         draws("glMultiDrawElements(GL_TRIANGLES, (GLsizei[]){3, 3}, GL_UNSIGNED_BYTE, (const void *[]){(GLubyte[]){0, 1, 2}, (GLubyte[]){1, 3, 2}}, 2);"),
         2
     );
-    // An empty list draws nothing of its own (GL 1.5 §2.8).
+    // A later empty list draws nothing of its own (GL 1.5 §2.8); an empty first list
+    // stops the whole call, as on Mesa 22.3 (`client::FirstCount`).
+    assert_eq!(
+        draws("glMultiDrawArrays(GL_TRIANGLES, (GLint[]){0, 1}, (GLsizei[]){3, 0}, 2);"),
+        1
+    );
     assert_eq!(
         draws("glMultiDrawArrays(GL_TRIANGLES, (GLint[]){0, 1}, (GLsizei[]){0, 3}, 2);"),
-        1
+        0
     );
     assert_eq!(
         draws("glMultiDrawArrays(GL_TRIANGLES, (GLint[]){0}, (GLsizei[]){3}, 0);"),
