@@ -165,7 +165,7 @@ glEdgeFlagv((GLboolean[]){1});
 glDrawArrays(GL_TRIANGLES, 0, 3);
 glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_BYTE, (GLubyte[]){0, 1, 2});
 glDrawRangeElements(GL_TRIANGLES, 0, 2, 3, GL_UNSIGNED_BYTE, (GLubyte[]){0, 1, 2});
-glMultiDrawArrays(GL_TRIANGLES, (GLint[]){0, 0}, (GLsizei[]){0, 3}, 2);
+glMultiDrawArrays(GL_TRIANGLES, (GLint[]){0, 0}, (GLsizei[]){3, 0}, 2);
 glMultiDrawElements(GL_TRIANGLES, (GLsizei[]){3}, GL_UNSIGNED_BYTE, (const void *[]){(GLubyte[]){2, 1, 0}}, 1);
 glBegin(GL_POINTS);
 glArrayElement(0);
