@@ -774,9 +774,6 @@ impl Context {
         }
     }
 
-    /// glReadPixels and glGetTexImage into the caller's memory: the bytes the pipeline
-    /// read, rows padded to GL_PACK_ALIGNMENT. A call that failed, or a glGetTexImage of a
-    /// level never specified, stored nothing and leaves the memory alone.
     /// The part of a glReadPixels rectangle (x, y, width, height) inside the read
     /// framebuffer (the window, or the object bound for reading), when the rectangle
     /// reaches beyond it, as (first column, first row, columns, rows) of the rectangle:
@@ -812,6 +809,9 @@ impl Context {
         Some([u(x0), u(y0), u(x1 - x0), u(y1 - y0)])
     }
 
+    /// glReadPixels and glGetTexImage into the caller's memory: the bytes the pipeline
+    /// read, rows padded to GL_PACK_ALIGNMENT. A call that failed, or a glGetTexImage of a
+    /// level never specified, stored nothing and leaves the memory alone.
     fn copy_pixels_out(&mut self, dst: Option<&CArg>, inside: Option<[usize; 4]>) {
         let Some(CArg::Ptr(dst, _)) = dst.copied() else {
             return;

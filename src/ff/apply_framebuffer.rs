@@ -11,7 +11,7 @@ use super::framebuffer::{
 };
 use super::state::FixedState;
 use super::texture::{
-    PixelFormat, TexFormat, TextureTarget, MAX_3D_TEXTURE_LEVEL, MAX_3D_TEXTURE_SIZE,
+    PixelFormat, TexFormat, TexLevel, TextureTarget, MAX_3D_TEXTURE_LEVEL, MAX_3D_TEXTURE_SIZE,
 };
 
 /// The largest texture level a framebuffer attachment may name: log2 of the largest
@@ -163,11 +163,7 @@ impl FixedState {
     /// glCheckFramebufferStatus of the framebuffer bound to `target`.
     pub fn framebuffer_status(&self, target: FramebufferTarget) -> Completeness {
         self.framebuffers.status(target, |tt, name, level, layer| {
-            let l = self
-                .textures
-                .get(&name)
-                .filter(|t| t.target == tt.binding())?
-                .level_in(tt, level)?;
+            let l = self.attached_level(tt, name, level)?;
             // A 3D layer at or past the depth is no image (INCOMPLETE_ATTACHMENT).
             if layer >= l.depth {
                 return None;
@@ -178,12 +174,16 @@ impl FixedState {
 
     /// The format of an attached texture image, if it exists.
     fn attached_format(&self, tt: TextureTarget, name: u32, level: i32) -> Option<TexFormat> {
-        let l = self
-            .textures
+        Some(self.attached_level(tt, name, level)?.internal_format)
+    }
+
+    /// The image an attachment names, if it exists: level `level` of image target `tt`
+    /// (a cube face names a face of a cube map object) of texture `name`.
+    fn attached_level(&self, tt: TextureTarget, name: u32, level: i32) -> Option<&TexLevel> {
+        self.textures
             .get(&name)
             .filter(|t| t.target == tt.binding())?
-            .level_in(tt, level)?;
-        Some(l.internal_format)
+            .level_in(tt, level)
     }
 
     /// The width and height of the framebuffer object bound for reading: the smallest of
@@ -201,10 +201,7 @@ impl FixedState {
                     level,
                     ..
                 } => self
-                    .textures
-                    .get(&name)
-                    .filter(|t| t.target == target.binding())?
-                    .level_in(target, level)
+                    .attached_level(target, name, level)
                     .map(|l| (l.width, l.height)),
                 Attached::Renderbuffer(r) => {
                     f.renderbuffers.get(&r).map(|rb| (rb.width, rb.height))

@@ -93,19 +93,6 @@ pub fn indices(data: &[u8], ty: PixelType) -> Vec<u32> {
         .collect()
 }
 
-/// INDEX_SHIFT and INDEX_OFFSET on an index of a texture image: i << s (s > 0) or i >> −s
-/// on 32 bits (a count of 32 or more taken mod 32, as x86 shifts), plus the offset,
-/// wrapping.
-pub fn shifted(i: u32, t: &PixelTransfer) -> u32 {
-    let s = t.index_shift;
-    let i = if s >= 0 {
-        i.wrapping_shl(s as u32)
-    } else {
-        i.wrapping_shr(s.unsigned_abs())
-    };
-    i.wrapping_add(t.index_offset as u32)
-}
-
 /// Index `i` through I_TO_R, I_TO_G, I_TO_B and I_TO_A, each entry i & (size − 1) kept as
 /// roundEven(255·v) (Mesa's CLAMPED_FLOAT_TO_UBYTE).
 pub fn rgba8(i: u32, maps: &PixelMaps) -> [u8; 4] {
@@ -115,12 +102,7 @@ pub fn rgba8(i: u32, maps: &PixelMaps) -> [u8; 4] {
         PixelMapName::IToB,
         PixelMapName::IToA,
     ]
-    .map(|m| {
-        let t = maps.get(m);
-        let k = i as usize & (t.len().max(1) - 1);
-        let v = t.get(k).copied().unwrap_or(0.0).clamp(0.0, 1.0);
-        (v * 255.0).round_ties_even() as u8
-    })
+    .map(|m| (maps.entry_masked(m, u64::from(i)).clamp(0.0, 1.0) * 255.0).round_ties_even() as u8)
 }
 
 /// A texture image's colours, 8 bits a component, RGBA: each index shifted and offset,
@@ -134,7 +116,7 @@ pub fn stored_colours(
     indices(data, ty)
         .into_iter()
         .map(|i| {
-            let c = rgba8(shifted(i, t), maps);
+            let c = rgba8(t.colour_index(i), maps);
             Vec4::from_array(c.map(|u| f32::from(u) / 255.0))
         })
         .collect()
@@ -210,11 +192,11 @@ mod tests {
         let mut t = PixelTransfer::DEFAULT;
         t.index_shift = 1;
         t.index_offset = 1;
-        assert_eq!(shifted(255, &t), 511);
+        assert_eq!(t.colour_index(255), 511);
         t.index_shift = -1;
         t.index_offset = -1;
-        assert_eq!(shifted(0, &t), u32::MAX);
-        assert_eq!(shifted(255, &t), 126);
+        assert_eq!(t.colour_index(0), u32::MAX);
+        assert_eq!(t.colour_index(255), 126);
     }
 
     #[test]

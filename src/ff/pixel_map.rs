@@ -195,9 +195,15 @@ impl PixelMaps {
 
     /// A stencil value through S_TO_S (MAP_STENCIL): entry s & (size − 1).
     pub fn stencil(&self, s: i64) -> f32 {
-        let t = self.get(PixelMapName::SToS);
-        let i = (s & (t.len() as i64 - 1)) as usize;
-        t.get(i).copied().unwrap_or(0.0)
+        self.entry_masked(PixelMapName::SToS, s as u64)
+    }
+
+    /// Entry i & (size − 1) of `map` (an index map's lookup, §3.6.5; a negative index
+    /// taken as its two's-complement bits).
+    pub fn entry_masked(&self, map: PixelMapName, i: u64) -> f32 {
+        let t = self.get(map);
+        let k = i & (t.len().max(1) as u64 - 1);
+        t.get(k as usize).copied().unwrap_or(0.0)
     }
 }
 

@@ -143,6 +143,19 @@ impl PixelTransfer {
         (shifted.wrapping_add(i64::from(self.index_offset)) & ((1 << STENCIL_BITS) - 1)) as u8
     }
 
+    /// The index arithmetic of §3.6.4 on a colour index of a texture image, as Mesa does it
+    /// on 32 bits: i << s (s > 0) or i >> −s (a count of 32 or more taken mod 32, as x86
+    /// shifts), plus the offset, wrapping (`index_pixels`).
+    pub fn colour_index(&self, i: u32) -> u32 {
+        let s = self.index_shift;
+        let i = if s >= 0 {
+            i.wrapping_shl(s as u32)
+        } else {
+            i.wrapping_shr(s.unsigned_abs())
+        };
+        i.wrapping_add(self.index_offset as u32)
+    }
+
     /// Whether a stencil value read goes through unchanged: no shift, no offset, no
     /// MAP_STENCIL.
     pub fn stencil_identity(&self) -> bool {
