@@ -14,12 +14,13 @@
 //! v0–v2, except each chunk of 1024 quads that has a vertex outside the clip volume, split
 //! v1–v3. Non-indexed QUADS are therefore uploaded in both splits, and each draw picks per
 //! chunk from the current matrices; everything else has one split. A non-indexed draw of
-//! a core type that repeats its vertices is uploaded indexed (`shared_vertices`).
+//! a core type that repeats its vertices is uploaded indexed (`shared_vertices`). The arrays
+//! of a geometry kept for more draws are interleaved in one buffer (`vertex_layout`).
 
 use std::collections::HashMap;
 use std::sync::Arc;
 
-use glam::{Vec3, Vec4};
+use glam::Vec4;
 use glow::HasContext;
 
 use super::assembly::{self, Diagonal};
@@ -30,6 +31,7 @@ use super::shadergen::{
     ATTRIB_TEXCOORD0,
 };
 use super::shared_vertices::{self, Shared};
+use super::vertex_layout::{self, Floats};
 use crate::ff::{
     Face, FixedState, FrontFace, Geometry, PolygonMode, Primitive, ShadeModel, MAX_TEXTURE_UNITS,
 };
@@ -210,48 +212,78 @@ fn corners_of(g: &Geometry, base: &[u32]) -> (Vec<Corner>, Vec<(Diagonal, i32)>)
     (corners, blocks)
 }
 
-/// One attribute array: the vertices' floats as bytes, `size` floats per vertex.
-struct Floats<'a> {
-    size: usize,
-    data: &'a [u8],
+/// What a vertex's shade attribute reads for an array.
+#[derive(Clone, Copy)]
+enum Shade {
+    /// The provoking vertex's values, at a location of their own (positions, normals).
+    Attribute(u32),
+    /// The own values, or the provoking vertex's in flat draws of split polygons: the
+    /// location's buffer is switched (colours, per-vertex materials).
+    Switched,
+    /// Only the own values (fog coordinates, texture coordinates).
+    Own,
 }
 
-impl<'a> Floats<'a> {
-    fn of4(v: &'a [Vec4]) -> Floats<'a> {
-        Floats {
-            size: 4,
-            data: bytemuck::cast_slice(v),
-        }
-    }
+/// One attribute array of a geometry and the locations that read it.
+struct AttributeArray<'a> {
+    floats: Floats<'a>,
+    location: u32,
+    shade: Shade,
+}
 
-    fn of1(v: &'a [f32]) -> Floats<'a> {
-        Floats {
-            size: 1,
-            data: bytemuck::cast_slice(v),
-        }
-    }
+/// How a geometry's arrays are uploaded (`vertex_layout`).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Layout {
+    /// One buffer, vertex after vertex; positions of w = 1 as three floats.
+    Interleaved,
+    /// One buffer per array, each uploaded as the geometry holds it.
+    PerArray,
+}
 
-    fn of3(v: &'a [Vec3]) -> Floats<'a> {
-        Floats {
-            size: 3,
-            data: bytemuck::cast_slice(v),
+/// The arrays `g` has, each with its location: positions, normals, fog and texture
+/// coordinates, colours, then per-vertex materials (glMaterial inside glBegin/glEnd).
+fn attribute_arrays(g: &Geometry, layout: Layout) -> Vec<AttributeArray<'_>> {
+    let array = |floats, location, shade| AttributeArray {
+        floats,
+        location,
+        shade,
+    };
+    let positions = match layout {
+        Layout::Interleaved => Floats::positions(&g.positions),
+        Layout::PerArray => Floats::of4(&g.positions),
+    };
+    let mut arrays = vec![array(
+        positions,
+        ATTRIB_POSITION,
+        Shade::Attribute(ATTRIB_SHADE_POSITION),
+    )];
+    if let Some(n) = &g.normals {
+        let shade = Shade::Attribute(ATTRIB_SHADE_NORMAL);
+        arrays.push(array(Floats::of3(n), ATTRIB_NORMAL, shade));
+    }
+    if let Some(f) = &g.fog_coords {
+        arrays.push(array(Floats::of1(f), ATTRIB_FOG_COORD, Shade::Own));
+    }
+    for (u, tc) in g.texcoords.iter().enumerate() {
+        if let Some(tc) = tc {
+            let location = ATTRIB_TEXCOORD0 + u as u32;
+            arrays.push(array(Floats::of4(tc), location, Shade::Own));
         }
     }
-
-    /// The bytes of the vertices in `order` (vertex indices; out of range gives nothing),
-    /// or of all of them as they are.
-    fn bytes(&self, order: Option<&[u32]>) -> std::borrow::Cow<'a, [u8]> {
-        let Some(order) = order else {
-            return std::borrow::Cow::Borrowed(self.data);
-        };
-        let vertex = self.size * 4;
-        let mut out = Vec::with_capacity(order.len() * vertex);
-        for &i in order {
-            let at = i as usize * vertex;
-            out.extend_from_slice(self.data.get(at..at + vertex).unwrap_or_default());
+    for (values, location) in [
+        (&g.colors, ATTRIB_COLOR),
+        (&g.secondary_colors, ATTRIB_SECONDARY),
+    ] {
+        if let Some(c) = values {
+            arrays.push(array(Floats::of4(c), location, Shade::Switched));
         }
-        std::borrow::Cow::Owned(out)
     }
+    let mask = g.materials.as_ref().map_or(0, |m| m.mask());
+    for (slot, values) in g.materials.iter().flat_map(|m| m.present()) {
+        let location = material_location(mask, slot.bit());
+        arrays.push(array(Floats::of4(values), location, Shade::Switched));
+    }
+    arrays
 }
 
 impl GpuGeometry {
@@ -279,6 +311,12 @@ impl GpuGeometry {
         // distinct vertex uploaded once (`shared_vertices`).
         let shared = shared.filter(|_| mode.is_some() && g.indices.is_none());
         let unshared = shared.is_none() && mode.is_some() && g.indices.is_none();
+        // Interleaved where the upload is kept for more draws (`vertex_layout`): not a
+        // split polygon's (its colours switch buffers) nor one that may be drawn once.
+        let layout = match !split && !unshared {
+            true => Layout::Interleaved,
+            false => Layout::PerArray,
+        };
         let (order, provoking) = match &shared {
             _ if split => (Some(order.as_slice()), Some(provoking.as_slice())),
             Some(s) => (Some(s.vertices.as_slice()), None),
@@ -297,73 +335,49 @@ impl GpuGeometry {
                 buffers.push(b);
                 Ok(b)
             };
-            let point = |b: glow::Buffer, location: u32, size: i32| {
+            let point = |b: glow::Buffer, location: u32, size: usize, stride: i32, at: i32| {
                 gl.bind_buffer(glow::ARRAY_BUFFER, Some(b));
-                gl.vertex_attrib_pointer_f32(location, size, glow::FLOAT, false, 0, 0);
+                gl.vertex_attrib_pointer_f32(location, size as i32, glow::FLOAT, false, stride, at);
                 gl.enable_vertex_attrib_array(location);
             };
-            // Own values per corner; shade values from the provoking vertex, or — for the
-            // types core GL draws — the same buffer (core GL's provoking vertex is GL 1.x's).
-            let mut upload = |a: Floats, location: u32, shade: Option<u32>| {
-                let size = a.size as i32;
-                let own = buffer(&a.bytes(order))?;
-                point(own, location, size);
-                if let Some(shade) = shade {
-                    let b = match provoking {
-                        Some(p) => buffer(&a.bytes(Some(p)))?,
-                        None => own,
-                    };
-                    point(b, shade, size);
-                }
-                Ok::<(), PipelineError>(())
-            };
-            upload(
-                Floats::of4(&g.positions),
-                ATTRIB_POSITION,
-                Some(ATTRIB_SHADE_POSITION),
-            )?;
-            if let Some(n) = &g.normals {
-                upload(Floats::of3(n), ATTRIB_NORMAL, Some(ATTRIB_SHADE_NORMAL))?;
-            }
-            if let Some(f) = &g.fog_coords {
-                upload(Floats::of1(f), ATTRIB_FOG_COORD, None)?;
-            }
-            for (u, tc) in g.texcoords.iter().enumerate() {
-                if let Some(tc) = tc {
-                    upload(Floats::of4(tc), ATTRIB_TEXCOORD0 + u as u32, None)?;
-                }
-            }
-            // Colours: the own values bound; a split polygon's provoking values kept for
-            // flat draws.
+            let arrays = attribute_arrays(g, layout);
             let mut colors = Vec::new();
-            for (values, location) in [
-                (&g.colors, ATTRIB_COLOR),
-                (&g.secondary_colors, ATTRIB_SECONDARY),
-            ] {
-                let Some(c) = values else { continue };
-                let a = Floats::of4(c);
-                let own = buffer(&a.bytes(order))?;
-                point(own, location, 4);
-                if let Some(p) = provoking {
-                    colors.push((location, own, buffer(&a.bytes(Some(p)))?));
+            if layout == Layout::Interleaved {
+                // One buffer (`vertex_layout`); the shade attributes of the types core GL
+                // draws read the same values (core GL's provoking vertex is GL 1.x's).
+                let floats: Vec<&Floats> = arrays.iter().map(|a| &a.floats).collect();
+                let all = vertex_layout::interleave(&floats, order, g.positions.len());
+                let b = buffer(&all.bytes)?;
+                for (a, &at) in arrays.iter().zip(&all.offsets) {
+                    point(b, a.location, a.floats.size, all.stride, at);
+                    if let Shade::Attribute(shade) = a.shade {
+                        point(b, shade, a.floats.size, all.stride, at);
+                    }
                 }
-            }
-            // Per-vertex materials (glMaterial inside glBegin/glEnd): bound as the colours
-            // are, a split polygon's provoking values kept for flat draws.
-            let mask = g.materials.as_ref().map_or(0, |m| m.mask());
-            for (slot, values) in g.materials.iter().flat_map(|m| m.present()) {
-                let location = material_location(mask, slot.bit());
-                let a = Floats::of4(values);
-                let own = buffer(&a.bytes(order))?;
-                point(own, location, 4);
-                if let Some(p) = provoking {
-                    colors.push((location, own, buffer(&a.bytes(Some(p)))?));
+            } else {
+                // One buffer per array. Own values per corner; shade values from the
+                // provoking vertex (split polygons) or the same buffer; a split polygon's
+                // colours and materials keep their provoking values for flat draws.
+                for a in &arrays {
+                    let size = a.floats.size;
+                    let own = buffer(&a.floats.bytes(order))?;
+                    point(own, a.location, size, 0, 0);
+                    match (a.shade, provoking) {
+                        (Shade::Attribute(shade), Some(p)) => {
+                            point(buffer(&a.floats.bytes(Some(p)))?, shade, size, 0, 0)
+                        }
+                        (Shade::Attribute(shade), None) => point(own, shade, size, 0, 0),
+                        (Shade::Switched, Some(p)) => {
+                            colors.push((a.location, own, buffer(&a.floats.bytes(Some(p)))?))
+                        }
+                        (Shade::Switched | Shade::Own, _) => {}
+                    }
                 }
             }
             if split {
                 let edges: Vec<f32> = corners.iter().flat_map(|c| c.edge).collect();
                 let b = buffer(bytemuck::cast_slice(&edges))?;
-                point(b, ATTRIB_EDGE, 4);
+                point(b, ATTRIB_EDGE, 4, 0, 0);
             }
             let shape = match (mode, indices) {
                 (Some(mode), Some(indices)) => {

@@ -34,6 +34,7 @@ pub mod texture_calls;
 pub mod textures;
 pub mod uniforms;
 pub mod user_program;
+pub mod vertex_layout;
 
 use std::rc::Rc;
 use std::sync::Arc;
