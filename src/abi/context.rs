@@ -534,6 +534,9 @@ impl Context {
             return Ret::None;
         }
         let inside = self.client.immediate.is_open() && entry.attrib_call().is_none();
+        if !inside && self.client.lists.compiling().is_none() && crate::ff::calls::direct(entry) {
+            return self.direct(entry, args);
+        }
         match entry {
             Entry::GetError if !inside => return Ret::Enum(self.take_error()),
             Entry::Finish | Entry::Flush if !inside => {
@@ -683,6 +686,23 @@ impl Context {
                 Ret::None
             }
         }
+    }
+
+    /// A call of [`calls::direct`](crate::ff::calls::direct) with no pair open and no list
+    /// being compiled: its Command, or its error, as the front end would give them.
+    fn direct(&mut self, entry: Entry, args: &[CArg]) -> Ret {
+        let c = CCall {
+            entry,
+            args,
+            unpack: self.client.pixel_store.unpack,
+            access: PixelAccess::Read,
+            unsupported: Default::default(),
+        };
+        match crate::ff::calls::command(&c) {
+            Ok(cmd) => self.execute(&cmd),
+            Err(kind) => self.record_error(kind),
+        }
+        Ret::Enum(0)
     }
 
     /// A vertex attribute inside glBegin/glEnd, straight to the open pair

@@ -50,6 +50,52 @@ pub fn command<A: Args>(c: &A) -> Result<Command, A::Error> {
     Err(c.unsupported())
 }
 
+/// The calls a front end may convert and run at once when no glBegin/glEnd pair is open
+/// and no display list is being compiled: each is the one Command [`command`] gives, with
+/// no reply, and no front-end state (client arrays, lists, buffers, the immediate pair,
+/// pixel storage) reads or changes it — the front end's routing would pass it through
+/// unchanged. A frame repeats them, a transform and a material per object, so they skip
+/// that routing (`benches/c/abi_bench.c`: 64 of a frame's ~90 calls).
+pub fn direct(entry: Entry) -> bool {
+    use Entry::*;
+    matches!(
+        entry,
+        MatrixMode
+            | LoadIdentity
+            | LoadMatrixf
+            | LoadMatrixd
+            | MultMatrixf
+            | MultMatrixd
+            | Translatef
+            | Translated
+            | Rotatef
+            | Rotated
+            | Scalef
+            | Scaled
+            | PushMatrix
+            | PopMatrix
+            | Frustum
+            | Ortho
+            | Viewport
+            | ShadeModel
+            | Lightf
+            | Lightfv
+            | Lighti
+            | Lightiv
+            | LightModelf
+            | LightModelfv
+            | LightModeli
+            | LightModeliv
+            | Materialf
+            | Materialfv
+            | Materiali
+            | Materialiv
+            | Clear
+            | ClearColor
+            | ClearDepth
+    )
+}
+
 fn clear_mask<A: Args>(c: &A) -> Result<ClearMask, A::Error> {
     const BITS: [&str; 4] = [
         "GL_COLOR_BUFFER_BIT",
@@ -854,4 +900,54 @@ pub fn combiners<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         _ => return Ok(None),
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ff::buffers::Buffers;
+    use crate::ff::client::ClientArrays;
+
+    /// Every direct call is one the front end's routing passes through unchanged: no
+    /// front-end state answers it, it is no vertex call, enable (client arrays), list or
+    /// framebuffer-name call, and it returns nothing.
+    #[test]
+    fn direct_calls_route_nowhere_else() {
+        let direct: Vec<Entry> = Entry::ALL.iter().copied().filter(|e| direct(*e)).collect();
+        assert_eq!(direct.len(), 33);
+        for e in direct {
+            assert!(
+                !crate::ff::front_state::handles(e),
+                "{e:?}: front-end state"
+            );
+            assert!(!Buffers::handles(e), "{e:?}: buffer objects");
+            assert!(!ClientArrays::handles(e), "{e:?}: client arrays");
+            assert!(e.attrib_call().is_none(), "{e:?}: a vertex attribute");
+            assert!(
+                !crate::ff::framebuffer::answered_by_front_end(e),
+                "{e:?}: framebuffer names"
+            );
+            assert_eq!(e.return_type(), "void", "{e:?}: a reply");
+            assert!(
+                !matches!(
+                    e,
+                    Entry::Begin
+                        | Entry::End
+                        | Entry::EdgeFlag
+                        | Entry::EdgeFlagv
+                        | Entry::Enable
+                        | Entry::Disable
+                        | Entry::NewList
+                        | Entry::EndList
+                        | Entry::GenLists
+                        | Entry::DeleteLists
+                        | Entry::IsList
+                        | Entry::CallList
+                        | Entry::CallLists
+                        | Entry::ListBase
+                ),
+                "{e:?}: routed by the front end"
+            );
+        }
+    }
 }
