@@ -1505,6 +1505,24 @@ fn clear_depth_is_kept_as_a_double_as_on_mesa() {
     );
 }
 
+/// `tests/c/stencil_clears.c`: a clear of depth alone keeps the window's stencil values as
+/// they are — after stencil-tested draws, scissored and masked stencil clears, full ones,
+/// a STENCIL_INDEX rectangle and its copy, a framebuffer object's own draws, a new buffer —
+/// while the layer clears depth and stencil together where the stencil holds one value
+/// (`pipeline::emulate::stencil_contents`): every stencil and depth value as Mesa's.
+#[test]
+fn depth_clears_keep_the_stencil_as_on_mesa() {
+    assert_prints_as_on_mesa(
+        "stencil_clears",
+        &[
+            "  cleared depth 0.25               stencil   5   5   5   5   5   5   0   0   0   0   0   0   0   0   0   0  depth 40000040 40000040  err 0x0",
+            "  cleared depth 1.00               stencil   7   7   7   7   7   7   7   7   9   9   9   9   7   7   7   7  depth ffffffff ffffffff  err 0x0",
+        ],
+        22,
+        "a stencil or depth value",
+    );
+}
+
 /// `tests/c/proc_aliases.c`: OSMesaGetProcAddress finds the extension names the registry
 /// makes aliases of GL 1.x calls (glBlendEquationEXT, glActiveTextureARB …), as Mesa's
 /// does, and calling through them is calling the core function.

@@ -460,6 +460,12 @@ impl Context {
             }
             let target = self.make_target(spec)?;
             target.bind(&self.gpu);
+            // A new buffer's stencil is undefined: made 0, so that clears of depth alone
+            // can take the stencil along (`pipeline::emulate::stencil_contents`).
+            let stencil = target.stencil_bits() > 0;
+            if stencil {
+                target.clear_stencil(&self.gpu);
+            }
             let (framebuffer, color_buffer) = (target.framebuffer(), target.color_buffer());
             self.target = Some(target);
             match &mut self.pipeline {
@@ -468,6 +474,9 @@ impl Context {
                     p.forget_sent_state();
                     p.set_window_framebuffer(&self.gpu, framebuffer, color_buffer);
                 }
+            }
+            if let (Some(p), true) = (self.pipeline.as_mut(), stencil) {
+                p.window_stencil_zeroed();
             }
             if let Some(p) = &mut self.pipeline {
                 p.set_accum_buffer(self.accum.then_some((w as usize, h as usize)));

@@ -337,6 +337,22 @@ impl RenderTarget {
         }
     }
 
+    /// Clears the target's stencil buffer to 0, all of it: the scissor test off and every
+    /// stencil bit writable (GL's defaults, left so), the target bound by [`bind`].
+    /// A new buffer's contents are undefined in GL; this makes its stencil known.
+    ///
+    /// [`bind`]: RenderTarget::bind
+    pub fn clear_stencil(&self, ctx: &GpuContext) {
+        let gl = ctx.gl();
+        // SAFETY: plain GL calls on the current context.
+        unsafe {
+            gl.disable(glow::SCISSOR_TEST);
+            gl.stencil_mask(!0);
+            gl.clear_stencil(0);
+            gl.clear(glow::STENCIL_BUFFER_BIT);
+        }
+    }
+
     /// Frees the GL objects. The context must be current.
     pub fn delete(self, ctx: &GpuContext) {
         let gl = ctx.gl();

@@ -27,6 +27,7 @@ pub mod program;
 pub mod repeat;
 pub mod shadergen;
 pub mod shared_vertices;
+pub mod stencil_contents;
 pub mod stipple_dashes;
 pub mod sync;
 pub mod texel_store;
@@ -45,6 +46,7 @@ use self::cache::ProgramCache;
 use self::draw::{GeometryCache, Winding};
 use self::key::{PointCut, PointKey, PositionSource, ShaderKey, SpriteKey};
 use self::program::Program;
+use self::stencil_contents::StencilContents;
 use self::sync::{CoreCalls, RasterSync};
 use self::textures::Textures;
 use super::core::{Core, Issue, PathPipeline};
@@ -103,6 +105,8 @@ pub struct Emulate {
     memo: Option<repeat::DrawMemo>,
     /// How many draws repeated the memo's.
     repeated: u64,
+    /// What the window's stencil buffer holds (`stencil_contents`).
+    window_stencil: StencilContents,
 }
 
 /// Commands executed by generated programs on a core 3.3 context.
@@ -138,6 +142,7 @@ impl EmulatedPipeline {
             framebuffers: FramebufferMirror::new(true),
             memo: None,
             repeated: 0,
+            window_stencil: StencilContents::Unknown,
         };
         Ok(PathPipeline::from_parts(core, path))
     }
@@ -164,6 +169,12 @@ impl EmulatedPipeline {
     /// pack alignment).
     pub fn forget_bound_framebuffers(&mut self) {
         self.path.framebuffers.invalidate();
+    }
+
+    /// The window's stencil buffer holds 0 everywhere: a caller cleared it so
+    /// (`RenderTarget::clear_stencil`), for a new window (`stencil_contents`).
+    pub fn window_stencil_zeroed(&mut self) {
+        self.path.window_stencil = StencilContents::Uniform(0);
     }
 
     /// The framebuffer that stands for the window (framebuffer 0) from now on, and its
@@ -406,7 +417,13 @@ impl Emulate {
 
     fn clear(&mut self, gl: &glow::Context, state: &FixedState, mask: crate::ff::ClearMask) {
         self.raster.sync(gl, state, None, Winding::AsGiven);
-        let c = state.clear;
+        let mut c = state.clear;
+        // Depth cleared with the stencil where that leaves the same contents, in llvmpipe's
+        // one-pass clear (`stencil_contents`).
+        let (mask, stencil) = self.window_stencil.clear(mask, state);
+        if let Some(v) = stencil {
+            c.stencil = i32::from(v);
+        }
         let mut bits = 0;
         unsafe {
             if mask.color {
@@ -443,6 +460,7 @@ impl Issue for Emulate {
         if !repeat::keeps(cmd, state) {
             self.memo = None;
         }
+        self.window_stencil = self.window_stencil.after(cmd, state);
         let textures = &mut self.textures;
         if self
             .framebuffers
