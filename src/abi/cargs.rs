@@ -133,7 +133,19 @@ pub struct CCall<'a> {
     pub unsupported: Cell<bool>,
 }
 
-impl CCall<'_> {
+impl<'a> CCall<'a> {
+    /// A call with `args`, unpacking client pixels by `unpack`, its pointer readable (the
+    /// general path narrows `access` for sizes GL refuses).
+    pub fn new(entry: Entry, args: &'a [CArg], unpack: Packing) -> CCall<'a> {
+        CCall {
+            entry,
+            args,
+            unpack,
+            access: PixelAccess::Read,
+            unsupported: Cell::new(false),
+        }
+    }
+
     /// Whether the call failed because the layer has no converter for it.
     pub fn was_unsupported(&self) -> bool {
         self.unsupported.get()

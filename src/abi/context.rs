@@ -20,7 +20,7 @@ use crate::ff::front::{Client, Reply};
 use crate::ff::lists::ListMode;
 use crate::ff::pixel_layout;
 use crate::ff::queries::{self, ObjectParam, QueryTarget};
-use crate::ff::upload_bounds::{pixel_access, CallTime, PixelAccess};
+use crate::ff::upload_bounds::{pixel_access, CallTime};
 use crate::ff::{Command, GlErrorKind};
 use crate::gpu::{
     Backend, ColorStorage, ContextRequest, DepthStencilBuffers, GpuContext, PbufferSpec, Profile,
@@ -626,13 +626,7 @@ impl Context {
         let Some(p) = self.pipeline.as_ref() else {
             return Ret::None;
         };
-        let mut c = CCall {
-            entry,
-            args,
-            unpack: self.client.pixel_store.unpack,
-            access: PixelAccess::Read,
-            unsupported: Default::default(),
-        };
+        let mut c = CCall::new(entry, args, self.client.pixel_store.unpack);
         let when = match self.client.lists.compiling() {
             Some(_) => CallTime::Compiled,
             None => CallTime::Now,
@@ -700,13 +694,7 @@ impl Context {
     /// A call of [`calls::direct`](crate::ff::calls::direct) with no pair open and no list
     /// being compiled: its Command, or its error, as the front end would give them.
     fn direct(&mut self, entry: Entry, args: &[CArg]) -> Ret {
-        let c = CCall {
-            entry,
-            args,
-            unpack: self.client.pixel_store.unpack,
-            access: PixelAccess::Read,
-            unsupported: Default::default(),
-        };
+        let c = CCall::new(entry, args, self.client.pixel_store.unpack);
         match crate::ff::calls::command(&c) {
             Ok(cmd) => self.execute(&cmd),
             Err(kind) => self.record_error(kind),

@@ -114,13 +114,7 @@ impl Front {
         if vertex_calls::in_pair(&mut self.client, entry, args) {
             return Reply::None;
         }
-        let c = CCall {
-            entry,
-            args,
-            unpack: self.client.pixel_store.unpack,
-            access: Default::default(),
-            unsupported: Default::default(),
-        };
+        let c = CCall::new(entry, args, self.client.pixel_store.unpack);
         match self.client.call(&c, state, &ProgramMemory, &mut self.made) {
             Ok(reply) => reply,
             Err(kind) => {

@@ -131,12 +131,7 @@ int main(int argc, char **argv) {
   err("ReadPixels COLOR_INDEX BITMAP");
 
   /* Texture images: shift and offset apply, scale and MAP_COLOR do not. */
-  GLuint tex;
-  glGenTextures(1, &tex);
-  glBindTexture(GL_TEXTURE_2D, tex);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  replace_texture();
   GLubyte ci[4] = {0, 1, 2, 3};
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, ci);
   err("TexImage2D UNSIGNED_BYTE");

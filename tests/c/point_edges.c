@@ -105,12 +105,8 @@ static void polygon_points(int x, int y, float side) {
 
 int main(int argc, char **argv) {
   OSMesaContext ctx;
-  image = open_window(&ctx, W, H);
+  image = open_window(&ctx, W, H); /* a unit a pixel */
   if (!image) return 3;
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, W, 0, H, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
   subpixel_rows(0, 0.0f);
   subpixel_rows(160, 0.5f);
   on_the_planes(8, 64, 0);

@@ -36,15 +36,21 @@ static inline void ints(const char *what, GLenum pname) {
   printf("%-40s %d  err 0x%x\n", what, v, glGetError());
 }
 
-/* A new texture object bound to TEXTURE_2D, sampled NEAREST and applied with REPLACE, over
- * a window cleared to dark grey: the start of the programs that draw a texture a panel. */
-static inline GLuint replace_texture_panels(void) {
+/* A new texture object bound to TEXTURE_2D, sampled NEAREST and applied with REPLACE. */
+static inline GLuint replace_texture(void) {
   GLuint tex;
   glGenTextures(1, &tex);
   glBindTexture(GL_TEXTURE_2D, tex);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  return tex;
+}
+
+/* A replace_texture() over a window cleared to dark grey: the start of the programs that
+ * draw a texture a panel. */
+static inline GLuint replace_texture_panels(void) {
+  GLuint tex = replace_texture();
   glClearColor(0.1f, 0.1f, 0.1f, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   return tex;

@@ -347,7 +347,7 @@ impl GpuGeometry {
                 // draws read the same values (core GL's provoking vertex is GL 1.x's).
                 let floats: Vec<&Floats> = arrays.iter().map(|a| &a.floats).collect();
                 let all = vertex_layout::interleave(&floats, order, g.positions.len());
-                let b = buffer(&all.bytes)?;
+                let b = buffer(bytemuck::cast_slice(&all.floats))?;
                 for (a, &at) in arrays.iter().zip(&all.offsets) {
                     point(b, a.location, a.floats.size, all.stride, at);
                     if let Shade::Attribute(shade) = a.shade {
@@ -360,16 +360,22 @@ impl GpuGeometry {
                 // colours and materials keep their provoking values for flat draws.
                 for a in &arrays {
                     let size = a.floats.size;
-                    let own = buffer(&a.floats.bytes(order))?;
+                    let own = buffer(bytemuck::cast_slice(&a.floats.values(order)))?;
                     point(own, a.location, size, 0, 0);
                     match (a.shade, provoking) {
-                        (Shade::Attribute(shade), Some(p)) => {
-                            point(buffer(&a.floats.bytes(Some(p)))?, shade, size, 0, 0)
-                        }
+                        (Shade::Attribute(shade), Some(p)) => point(
+                            buffer(bytemuck::cast_slice(&a.floats.values(Some(p))))?,
+                            shade,
+                            size,
+                            0,
+                            0,
+                        ),
                         (Shade::Attribute(shade), None) => point(own, shade, size, 0, 0),
-                        (Shade::Switched, Some(p)) => {
-                            colors.push((a.location, own, buffer(&a.floats.bytes(Some(p)))?))
-                        }
+                        (Shade::Switched, Some(p)) => colors.push((
+                            a.location,
+                            own,
+                            buffer(bytemuck::cast_slice(&a.floats.values(Some(p))))?,
+                        )),
                         (Shade::Switched | Shade::Own, _) => {}
                     }
                 }

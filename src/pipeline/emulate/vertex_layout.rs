@@ -15,72 +15,75 @@ use std::borrow::Cow;
 
 use glam::{Vec3, Vec4};
 
-/// One attribute array: the vertices' floats as bytes, `size` floats per vertex.
+/// One attribute array: `size` floats per vertex, read from the first `size` of every
+/// `stride` floats of the geometry's own vector (positions read as three of four floats
+/// need no copy).
 pub struct Floats<'a> {
     pub size: usize,
-    data: Cow<'a, [u8]>,
+    stride: usize,
+    data: &'a [f32],
 }
 
 impl<'a> Floats<'a> {
     pub fn of4(v: &'a [Vec4]) -> Floats<'a> {
-        Floats {
-            size: 4,
-            data: Cow::Borrowed(bytemuck::cast_slice(v)),
-        }
+        Floats::whole(4, bytemuck::cast_slice(v))
     }
 
     pub fn of3(v: &'a [Vec3]) -> Floats<'a> {
-        Floats {
-            size: 3,
-            data: Cow::Borrowed(bytemuck::cast_slice(v)),
-        }
+        Floats::whole(3, bytemuck::cast_slice(v))
     }
 
     pub fn of1(v: &'a [f32]) -> Floats<'a> {
+        Floats::whole(1, v)
+    }
+
+    fn whole(size: usize, data: &'a [f32]) -> Floats<'a> {
         Floats {
-            size: 1,
-            data: Cow::Borrowed(bytemuck::cast_slice(v)),
+            size,
+            stride: size,
+            data,
         }
     }
 
     /// Positions as three floats where every w is exactly 1 (the value a 3-component
     /// array gives the vertex stage's w), as four otherwise.
     pub fn positions(v: &'a [Vec4]) -> Floats<'a> {
-        if !v.iter().all(|p| p.w.to_bits() == 1f32.to_bits()) {
-            return Floats::of4(v);
-        }
-        let xyz: Vec<f32> = v.iter().flat_map(|p| [p.x, p.y, p.z]).collect();
+        let ones = v.iter().all(|p| p.w.to_bits() == 1f32.to_bits());
         Floats {
-            size: 3,
-            data: Cow::Owned(bytemuck::cast_slice(&xyz).to_vec()),
+            size: if ones { 3 } else { 4 },
+            stride: 4,
+            data: bytemuck::cast_slice(v),
         }
     }
 
-    /// Vertex `i`'s bytes (empty past the end).
-    fn vertex(&self, i: u32) -> &[u8] {
-        let bytes = self.size * 4;
-        let at = i as usize * bytes;
-        self.data.get(at..at + bytes).unwrap_or_default()
+    /// Vertex `i`'s floats (empty past the end).
+    fn vertex(&self, i: u32) -> &'a [f32] {
+        let at = i as usize * self.stride;
+        self.data.get(at..at + self.size).unwrap_or_default()
     }
 
-    /// The bytes of the vertices in `order` (vertex indices; out of range gives nothing),
+    /// The floats of the vertices in `order` (vertex indices; out of range gives nothing),
     /// or of all of them as they are.
-    pub fn bytes(&self, order: Option<&[u32]>) -> Cow<'_, [u8]> {
-        let Some(order) = order else {
-            return Cow::Borrowed(&self.data);
-        };
-        let mut out = Vec::with_capacity(order.len() * self.size * 4);
-        for &i in order {
-            out.extend_from_slice(self.vertex(i));
+    pub fn values(&self, order: Option<&[u32]>) -> Cow<'a, [f32]> {
+        match order {
+            None if self.size == self.stride => Cow::Borrowed(self.data),
+            None => {
+                let count = self.data.len() / self.stride;
+                self.gather((0..count as u32).map(|i| self.vertex(i)))
+            }
+            Some(order) => self.gather(order.iter().map(|&i| self.vertex(i))),
         }
-        Cow::Owned(out)
+    }
+
+    fn gather(&self, vertices: impl Iterator<Item = &'a [f32]>) -> Cow<'a, [f32]> {
+        Cow::Owned(vertices.flatten().copied().collect())
     }
 }
 
 /// Several attribute arrays in one buffer: vertex after vertex, each vertex's attributes
 /// in the order given; `offsets[k]` is array k's first byte, `stride` a vertex's bytes.
 pub struct Interleaved {
-    pub bytes: Vec<u8>,
+    pub floats: Vec<f32>,
     pub stride: i32,
     pub offsets: Vec<i32>,
 }
@@ -91,16 +94,16 @@ pub fn interleave(arrays: &[&Floats], order: Option<&[u32]>, vertices: usize) ->
     let mut offsets = Vec::with_capacity(arrays.len());
     let mut stride = 0;
     for a in arrays {
-        offsets.push(stride as i32);
-        stride += a.size * 4;
+        offsets.push((stride * 4) as i32);
+        stride += a.size;
     }
     let count = order.map_or(vertices, <[u32]>::len);
-    let mut bytes = Vec::with_capacity(count * stride);
+    let mut floats: Vec<f32> = Vec::with_capacity(count * stride);
     let mut put = |i: u32| {
         for a in arrays {
             let v = a.vertex(i);
-            bytes.extend_from_slice(v);
-            bytes.resize(bytes.len() + (a.size * 4 - v.len()), 0);
+            floats.extend_from_slice(v);
+            floats.resize(floats.len() + (a.size - v.len()), 0.0);
         }
     };
     match order {
@@ -108,8 +111,8 @@ pub fn interleave(arrays: &[&Floats], order: Option<&[u32]>, vertices: usize) ->
         None => (0..count as u32).for_each(put),
     }
     Interleaved {
-        bytes,
-        stride: stride as i32,
+        floats,
+        stride: (stride * 4) as i32,
         offsets,
     }
 }
@@ -123,10 +126,7 @@ mod tests {
         let ones = [Vec4::new(1.0, 2.0, 3.0, 1.0), Vec4::new(4.0, 5.0, 6.0, 1.0)];
         let f = Floats::positions(&ones);
         assert_eq!(f.size, 3);
-        assert_eq!(
-            bytemuck::cast_slice::<u8, f32>(&f.bytes(None)),
-            &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
-        );
+        assert_eq!(&*f.values(None), &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
         let homogeneous = [Vec4::new(1.0, 2.0, 3.0, 1.0), Vec4::new(4.0, 5.0, 6.0, 2.0)];
         assert_eq!(Floats::positions(&homogeneous).size, 4);
         // A NaN w is not 1: it is kept.
@@ -141,11 +141,11 @@ mod tests {
         let (p, f) = (Floats::of3(&p), Floats::of1(&f));
         let all = interleave(&[&p, &f], None, 2);
         assert_eq!((all.stride, all.offsets.as_slice()), (16, &[0, 12][..]));
-        let floats: &[f32] = bytemuck::cast_slice(&all.bytes);
+        let floats = all.floats.as_slice();
         assert_eq!(floats, &[1.0, 2.0, 3.0, 7.0, 4.0, 5.0, 6.0, 8.0]);
         // In an order, repeated and past the end (zeros).
         let some = interleave(&[&p, &f], Some(&[1, 1, 5]), 0);
-        let floats: &[f32] = bytemuck::cast_slice(&some.bytes);
+        let floats = some.floats.as_slice();
         assert_eq!(
             floats,
             &[4.0, 5.0, 6.0, 8.0, 4.0, 5.0, 6.0, 8.0, 0.0, 0.0, 0.0, 0.0]
