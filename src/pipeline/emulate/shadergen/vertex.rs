@@ -120,10 +120,13 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
 /// secondary, alpha too — as if clamped by a min and a max that drop a NaN operand. A NaN
 /// in the *current* colour drawn unlit becomes 0 (glColor4f(NaN, 0, 1, 1) before glBegin
 /// draws blue): that one is replaced on the CPU where it is sent (`draw::set_current_values`).
-/// GLSL leaves clamp() of NaN undefined, hence the explicit isnan. Clamping after
-/// interpolation instead would not do: ∞ interpolated across a triangle is NaN.
+/// GLSL leaves clamp() of NaN undefined; llvmpipe compiles `<` as IEEE 754's ordered
+/// compare, false for NaN, so v < 1 ? max(v, 0) : 1 gives 1 for NaN without an isnan — per
+/// component a compare, a max and a select, one instruction fewer than clamp and isnan, for
+/// every vertex (`tests/fidelity_nonfinite.rs` pins the NaN cases). Clamping after interpolation instead would not do: ∞ interpolated across
+/// a triangle is NaN.
 const SATURATE: &str =
-    "vec4 saturate(vec4 v) { return mix(clamp(v, 0.0, 1.0), vec4(1.0), isnan(v)); }";
+    "vec4 saturate(vec4 v) { return mix(vec4(1.0), max(v, 0.0), lessThan(v, vec4(1.0))); }";
 
 /// The secondary colour of an unlit vertex (GL 1.4 §2.7): its attribute (under flat
 /// shading the provoking vertex's, as for the primary colour), clamped as every colour
@@ -542,10 +545,12 @@ fn emit_light(
     // n·L of NaN (a NaN light position or direction) counts as facing away: no diffuse or
     // specular term, the ambient one stays — Mesa's LIT takes max(n·L, 0) with a max that
     // drops the NaN (measured: the light at (NaN, 0, 1, 0) leaves the ambient colour).
+    // `lit` is n·L > 0, false for NaN; it selects both the diffuse factor and the specular
+    // term (§2.14.1 adds the specular term only where n·L > 0).
     w.line(format!("float {v}_ndl = dot({n}, {v}_dir);"));
-    w.line(format!("if (isnan({v}_ndl)) {v}_ndl = 0.0;"));
+    w.line(format!("bool {v}_lit = {v}_ndl > 0.0;"));
     w.line(format!(
-        "vec3 {v}_c = {ambient} + max({v}_ndl, 0.0) * {diffuse};"
+        "vec3 {v}_c = {ambient} + ({v}_lit ? {v}_ndl : 0.0) * {diffuse};"
     ));
     // The specular term joins the primary sum, or its own for SEPARATE_SPECULAR_COLOR.
     let specular = if lighting.separate_specular {
@@ -568,7 +573,7 @@ fn emit_light(
         "float {v}_sp = ({shin} == 0.0) ? 1.0 : pow({v}_ndh, {shin});"
     ));
     w.line(format!(
-        "{specular} += ({v}_ndl > 0.0) ? {v}_sp * {specular_product} : vec3(0.0);"
+        "{specular} += {v}_lit ? {v}_sp * {specular_product} : vec3(0.0);"
     ));
     w.line(format!("{c} += {v}_att * {v}_c;"));
     if lighting.separate_specular {
