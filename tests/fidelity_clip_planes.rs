@@ -93,3 +93,51 @@ fn max_clip_planes_is_mesas() {
         support::assert_no_gl_error(&ctx);
     }
 }
+
+/// A smooth quad of four colours whose red first corner a plane cuts off: Mesa's draw
+/// module clips the quad and splits it (v0,v1,v3),(v1,v2,v3), so the kept corner is
+/// shaded from green, blue and white alone; split (v0,v1,v2),(v0,v2,v3), as an unclipped
+/// quad is, red would tint every pixel kept (`pipeline::emulate::assembly`).
+#[test]
+fn a_quad_cut_by_a_clip_plane_is_split_as_mesa_splits_it() {
+    let src = "glViewport(0, 0, 32, 32);
+glClearColor(0, 0, 0, 0);
+glClear(GL_COLOR_BUFFER_BIT);
+glMatrixMode(GL_PROJECTION);
+glLoadIdentity();
+glMatrixMode(GL_MODELVIEW);
+glLoadIdentity();
+glClipPlane(GL_CLIP_PLANE0, (GLdouble[]){1, 1, 0, 0.25});
+glEnable(GL_CLIP_PLANE0);
+glBegin(GL_QUADS);
+glColor3f(1, 0, 0);
+glVertex2f(-0.9, -0.9);
+glColor3f(0, 1, 0);
+glVertex2f(0.9, -0.9);
+glColor3f(0, 0, 1);
+glVertex2f(0.9, 0.9);
+glColor3f(1, 1, 1);
+glVertex2f(-0.9, 0.9);
+glEnd();
+";
+    let tol = Tolerance {
+        per_channel: 1,
+        max_bad_pixels: (FRAME.width * FRAME.height / 100) as usize,
+    };
+    for p in compare("clip-plane-quad", src, FRAME, tol) {
+        let out = &p.emulate;
+        // Pixel (24, 8), window y from the bottom: in the triangle (v1, v2, v3) and
+        // kept; red only from v3's white there.
+        let px = out.image.get_pixel(24, 31 - 8).0;
+        assert!(
+            px[1] > 100,
+            "{}: green from v1 at (24, 8): {px:?}",
+            p.backend
+        );
+        assert!(
+            px[0] < 64,
+            "{}: no red from the clipped v0: {px:?}",
+            p.backend
+        );
+    }
+}

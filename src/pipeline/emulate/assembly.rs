@@ -23,7 +23,9 @@
 //!   complete quads go in chunks of 1024 (4096 vertices): a chunk in which no vertex lies
 //!   outside the clip volume (|x|, |y|, |z| > w in clip coordinates; no guard band, a tenth
 //!   of a pixel out is enough) is split (v0,v1,v2),(v0,v2,v3) — the v0–v2 diagonal — and a
-//!   chunk with a vertex outside, v1–v3 like indexed quads. Under FLAT shading every quad is
+//!   chunk with a vertex outside, v1–v3 like indexed quads. Outside an enabled user clip
+//!   plane counts as outside (its eye-space equation · the vertex's eye position < 0):
+//!   measured, a smooth quad whose first corner a plane cuts off is drawn v1–v3. Under FLAT shading every quad is
 //!   v1–v3 (a non-convex or non-planar quad shows it; a convex planar one looks the same
 //!   either way). Lighting, textures,
 //!   two-sided lighting, culling and the polygon offset enables change nothing; the vertices
@@ -37,7 +39,7 @@ use std::ops::Range;
 
 use glam::{Mat4, Vec4};
 
-use crate::ff::{Geometry, Primitive, ShadeModel};
+use crate::ff::{FixedState, Geometry, Primitive, ShadeModel};
 
 /// The diagonal a quad is split along.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -131,13 +133,52 @@ pub fn clipped(mvp: Mat4, p: Vec4) -> bool {
     c.x.abs() > c.w || c.y.abs() > c.w || c.z.abs() > c.w || c.w.is_nan()
 }
 
-/// Mesa's diagonal for the complete quads of the QUADS draw `g` under `mvp` and `shading`,
+/// What clips a vertex in Mesa's draw module: the clip volume under `mvp`, and each
+/// enabled user clip plane (eye-space equation P; the vertex is outside where
+/// P · (modelview · p) < 0, GL 1.5 §2.12 — false for NaN, as the module's compare).
+pub struct ClipTest {
+    pub mvp: Mat4,
+    pub modelview: Mat4,
+    /// The enabled planes' eye-space equations.
+    pub planes: Vec<Vec4>,
+}
+
+impl ClipTest {
+    /// The test of `state`'s matrices and enabled clip planes.
+    pub fn of(state: &FixedState) -> ClipTest {
+        let modelview = state.modelview_matrix();
+        ClipTest {
+            mvp: state.projection_matrix() * modelview,
+            modelview,
+            planes: state
+                .clip_planes
+                .iter()
+                .filter(|p| p.enabled)
+                .map(|p| p.value)
+                .collect(),
+        }
+    }
+
+    /// True when the vertex at object position `p` is clipped.
+    pub fn clipped(&self, p: Vec4) -> bool {
+        if clipped(self.mvp, p) {
+            return true;
+        }
+        if self.planes.is_empty() {
+            return false;
+        }
+        let eye = self.modelview * p;
+        self.planes.iter().any(|plane| plane.dot(eye) < 0.0)
+    }
+}
+
+/// Mesa's diagonal for the complete quads of the QUADS draw `g` under `clip` and `shading`,
 /// as ranges of quad numbers: an indexed or flat-shaded draw is all v1–v3; otherwise each
 /// chunk of `QUAD_CHUNK` quads is v0–v2 unless one of its vertices is clipped. Adjacent
 /// chunks with the same diagonal are merged.
 pub fn quad_diagonals(
     g: &Geometry,
-    mvp: Mat4,
+    clip: &ClipTest,
     shading: ShadeModel,
 ) -> Vec<(Range<usize>, Diagonal)> {
     let quads = g.vertex_count() / 4;
@@ -149,7 +190,7 @@ pub fn quad_diagonals(
     }
     let mut out: Vec<(Range<usize>, Diagonal)> = Vec::new();
     for (c, chunk) in g.positions[..4 * quads].chunks(4 * QUAD_CHUNK).enumerate() {
-        let diagonal = if chunk.iter().any(|&p| clipped(mvp, p)) {
+        let diagonal = if chunk.iter().any(|&p| clip.clipped(p)) {
             Diagonal::V1V3
         } else {
             Diagonal::V0V2
@@ -218,17 +259,22 @@ mod tests {
         let inside = Vec4::new(0.5, 0.5, 0.0, 1.0);
         let outside = Vec4::new(1.001, 0.0, 0.0, 1.0);
         let mvp = Mat4::IDENTITY;
+        let clip = ClipTest {
+            mvp,
+            modelview: mvp,
+            planes: Vec::new(),
+        };
         let mut g = Geometry::new(Primitive::Quads, vec![inside; 4 * (QUAD_CHUNK + 2) + 3]);
         assert_eq!(
-            quad_diagonals(&g, mvp, ShadeModel::Smooth),
+            quad_diagonals(&g, &clip, ShadeModel::Smooth),
             [(0..QUAD_CHUNK + 2, Diagonal::V0V2)]
         );
         // Outside only in the trailing partial quad: not looked at.
         *g.positions.last_mut().unwrap() = outside;
-        assert_eq!(quad_diagonals(&g, mvp, ShadeModel::Smooth).len(), 1);
+        assert_eq!(quad_diagonals(&g, &clip, ShadeModel::Smooth).len(), 1);
         g.positions[4 * QUAD_CHUNK + 5] = outside;
         assert_eq!(
-            quad_diagonals(&g, mvp, ShadeModel::Smooth),
+            quad_diagonals(&g, &clip, ShadeModel::Smooth),
             [
                 (0..QUAD_CHUNK, Diagonal::V0V2),
                 (QUAD_CHUNK..QUAD_CHUNK + 2, Diagonal::V1V3)
@@ -236,19 +282,56 @@ mod tests {
         );
         // Flat shading: v1–v3 whatever the positions.
         assert_eq!(
-            quad_diagonals(&g, mvp, ShadeModel::Flat),
+            quad_diagonals(&g, &clip, ShadeModel::Flat),
             [(0..QUAD_CHUNK + 2, Diagonal::V1V3)]
         );
         // Indexed: v1–v3 whatever the positions.
         g.indices = Some(vec![0, 1, 2, 3, 4, 5, 6, 7, 8]);
         assert_eq!(
-            quad_diagonals(&g, mvp, ShadeModel::Smooth),
+            quad_diagonals(&g, &clip, ShadeModel::Smooth),
             [(0..2, Diagonal::V1V3)]
         );
         g.indices = Some(vec![0, 1, 2]);
-        assert!(quad_diagonals(&g, mvp, ShadeModel::Smooth).is_empty());
+        assert!(quad_diagonals(&g, &clip, ShadeModel::Smooth).is_empty());
         // Behind the eye (w < 0) is outside; on the boundary is inside.
         assert!(clipped(mvp, Vec4::new(0.0, 0.0, 0.0, -1.0)));
         assert!(!clipped(mvp, Vec4::new(1.0, -1.0, 1.0, 1.0)));
+    }
+
+    #[test]
+    fn a_vertex_outside_a_user_clip_plane_is_clipped() {
+        // x + y + 0.25 ≥ 0 in eye space, the modelview a translation by (0.5, 0, 0).
+        let modelview = Mat4::from_translation(glam::Vec3::new(0.5, 0.0, 0.0));
+        let clip = ClipTest {
+            mvp: modelview,
+            modelview,
+            planes: vec![Vec4::new(1.0, 1.0, 0.0, 0.25)],
+        };
+        // Eye (−0.4, −0.9): −1.05 < 0, outside; eye (0.1, −0.2): 0.15, inside; on the
+        // plane (eye (−0.125, −0.125): exactly 0) is inside.
+        assert!(clip.clipped(Vec4::new(-0.9, -0.9, 0.0, 1.0)));
+        assert!(!clip.clipped(Vec4::new(-0.4, -0.2, 0.0, 1.0)));
+        assert!(!clip.clipped(Vec4::new(-0.625, -0.125, 0.0, 1.0)));
+        let quad = |a: Vec4| {
+            let rest = [
+                Vec4::new(0.3, -0.5, 0.0, 1.0),
+                Vec4::new(0.3, 0.3, 0.0, 1.0),
+            ];
+            Geometry::new(Primitive::Quads, vec![a, rest[0], rest[1], rest[1]])
+        };
+        let cut = quad(Vec4::new(-0.9, -0.9, 0.0, 1.0));
+        assert_eq!(
+            quad_diagonals(&cut, &clip, ShadeModel::Smooth),
+            [(0..1, Diagonal::V1V3)]
+        );
+        // The same quad without the plane stays v0–v2.
+        let open = ClipTest {
+            planes: Vec::new(),
+            ..clip
+        };
+        assert_eq!(
+            quad_diagonals(&cut, &open, ShadeModel::Smooth),
+            [(0..1, Diagonal::V0V2)]
+        );
     }
 }

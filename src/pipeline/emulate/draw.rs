@@ -516,8 +516,8 @@ impl GpuGeometry {
                 .into_iter()
                 .collect();
         }
-        let mvp = state.projection_matrix() * state.modelview_matrix();
-        assembly::quad_diagonals(&self.source, mvp, state.shade_model)
+        let clip = assembly::ClipTest::of(state);
+        assembly::quad_diagonals(&self.source, &clip, state.shade_model)
             .into_iter()
             .filter_map(|(quads, diagonal)| {
                 let &(_, first) = blocks.iter().find(|(d, _)| *d == diagonal)?;
