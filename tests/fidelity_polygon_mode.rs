@@ -170,3 +170,49 @@ fn mesa_offsets_filled_polygons_when_only_line_offset_is_on() {
         }
     }
 }
+
+/// A filled front quad of four colours drawn while back faces are LINE: Mesa's draw module
+/// runs its pipeline stages for every triangle then and splits the quad (v0,v1,v3),
+/// (v1,v2,v3), not (v0,v1,v2),(v0,v2,v3) as in FILL mode (`pipeline::emulate::assembly`).
+/// With back faces culled the back mode is moot and the quad is split v0–v2: both cases
+/// against the native path.
+#[test]
+fn a_filled_quad_is_split_as_mesa_splits_it_while_back_faces_are_lines() {
+    let quad = "glBegin(GL_QUADS);
+glColor3f(1, 0, 0);
+glVertex2f(-0.9, -0.9);
+glColor3f(0, 1, 0);
+glVertex2f(0.9, -0.9);
+glColor3f(0, 0, 1);
+glVertex2f(0.9, 0.9);
+glColor3f(1, 1, 1);
+glVertex2f(-0.9, 0.9);
+glEnd();
+";
+    let head = "glViewport(0, 0, 32, 32);
+glClearColor(0, 0, 0, 0);
+glClear(GL_COLOR_BUFFER_BIT);
+glPolygonMode(GL_BACK, GL_LINE);
+";
+    let frame = Frame::new(32, 32);
+    let tol = Tolerance {
+        per_channel: 1,
+        max_bad_pixels: 10,
+    };
+    for (name, src, v0_v2) in [
+        ("back-lines-quad", format!("{head}{quad}"), false),
+        (
+            "back-culled-quad",
+            format!("{head}glEnable(GL_CULL_FACE);\n{quad}"),
+            true,
+        ),
+    ] {
+        for p in compare(name, &src, frame, tol) {
+            // Pixel (20, 28), window y from the bottom, at (0.28, 0.78) in NDC: in the
+            // triangle (v1, v2, v3) of a v1–v3 split, green 0.41 (105) from green v1 and
+            // white v3; in (v0, v2, v3) of a v0–v2 split, green 0.28 (71) from v3 alone.
+            let px = p.emulate.image.get_pixel(20, 31 - 28).0;
+            assert_eq!(px[1] < 88, v0_v2, "{name} {}: {px:?}", p.backend);
+        }
+    }
+}

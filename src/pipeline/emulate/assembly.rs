@@ -25,7 +25,10 @@
 //!   of a pixel out is enough) is split (v0,v1,v2),(v0,v2,v3) — the v0–v2 diagonal — and a
 //!   chunk with a vertex outside, v1–v3 like indexed quads. Outside an enabled user clip
 //!   plane counts as outside (its eye-space equation · the vertex's eye position < 0):
-//!   measured, a smooth quad whose first corner a plane cuts off is drawn v1–v3. Under FLAT shading every quad is
+//!   measured, a smooth quad whose first corner a plane cuts off is drawn v1–v3. So does
+//!   every quad while a face that is not culled has a polygon mode other than FILL (the
+//!   module's stages then run for every triangle; measured, a filled front quad drawn
+//!   while back faces are LINE is v1–v3). Under FLAT shading every quad is
 //!   v1–v3 (a non-convex or non-planar quad shows it; a convex planar one looks the same
 //!   either way). Lighting, textures,
 //!   two-sided lighting, culling and the polygon offset enables change nothing; the vertices
@@ -39,7 +42,7 @@ use std::ops::Range;
 
 use glam::{Mat4, Vec4};
 
-use crate::ff::{FixedState, Geometry, Primitive, ShadeModel};
+use crate::ff::{Face, FixedState, Geometry, PolygonMode, PolygonModes, Primitive, ShadeModel};
 
 /// The diagonal a quad is split along.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -133,20 +136,38 @@ pub fn clipped(mvp: Mat4, p: Vec4) -> bool {
     c.x.abs() > c.w || c.y.abs() > c.w || c.z.abs() > c.w || c.w.is_nan()
 }
 
-/// What clips a vertex in Mesa's draw module: the clip volume under `mvp`, and each
-/// enabled user clip plane (eye-space equation P; the vertex is outside where
+/// How Mesa's draw module routes a non-indexed QUADS draw: through its pipeline stages,
+/// which split v1–v3, when `staged` (a face that is not culled has a polygon mode other
+/// than FILL) or when a vertex of the chunk is clipped — outside the clip volume under
+/// `mvp`, or outside an enabled user clip plane (eye-space equation P; outside where
 /// P · (modelview · p) < 0, GL 1.5 §2.12 — false for NaN, as the module's compare).
 pub struct ClipTest {
     pub mvp: Mat4,
     pub modelview: Mat4,
     /// The enabled planes' eye-space equations.
     pub planes: Vec<Vec4>,
+    pub staged: bool,
 }
 
 impl ClipTest {
-    /// The test of `state`'s matrices and enabled clip planes.
+    /// The test of `state`'s matrices, enabled clip planes and polygon modes.
     pub fn of(state: &FixedState) -> ClipTest {
         let modelview = state.modelview_matrix();
+        // A culled face takes the other face's mode, as Mesa's state tracker sets the
+        // rasteriser's fill modes (front first, then back).
+        let PolygonModes {
+            mut front,
+            mut back,
+        } = state.polygon_mode;
+        if state.cull_face.enabled {
+            let culled = state.cull_face.value;
+            if matches!(culled, Face::Front | Face::FrontAndBack) {
+                front = back;
+            }
+            if matches!(culled, Face::Back | Face::FrontAndBack) {
+                back = front;
+            }
+        }
         ClipTest {
             mvp: state.projection_matrix() * modelview,
             modelview,
@@ -156,6 +177,7 @@ impl ClipTest {
                 .filter(|p| p.enabled)
                 .map(|p| p.value)
                 .collect(),
+            staged: front != PolygonMode::Fill || back != PolygonMode::Fill,
         }
     }
 
@@ -185,7 +207,7 @@ pub fn quad_diagonals(
     if quads == 0 {
         return Vec::new();
     }
-    if g.indices.is_some() || shading == ShadeModel::Flat {
+    if g.indices.is_some() || shading == ShadeModel::Flat || clip.staged {
         return vec![(0..quads, Diagonal::V1V3)];
     }
     let mut out: Vec<(Range<usize>, Diagonal)> = Vec::new();
@@ -263,6 +285,7 @@ mod tests {
             mvp,
             modelview: mvp,
             planes: Vec::new(),
+            staged: false,
         };
         let mut g = Geometry::new(Primitive::Quads, vec![inside; 4 * (QUAD_CHUNK + 2) + 3]);
         assert_eq!(
@@ -306,6 +329,7 @@ mod tests {
             mvp: modelview,
             modelview,
             planes: vec![Vec4::new(1.0, 1.0, 0.0, 0.25)],
+            staged: false,
         };
         // Eye (−0.4, −0.9): −1.05 < 0, outside; eye (0.1, −0.2): 0.15, inside; on the
         // plane (eye (−0.125, −0.125): exactly 0) is inside.
@@ -324,7 +348,7 @@ mod tests {
             quad_diagonals(&cut, &clip, ShadeModel::Smooth),
             [(0..1, Diagonal::V1V3)]
         );
-        // The same quad without the plane stays v0–v2.
+        // The same quad without the plane stays v0–v2, unless the module's stages run.
         let open = ClipTest {
             planes: Vec::new(),
             ..clip
@@ -332,6 +356,14 @@ mod tests {
         assert_eq!(
             quad_diagonals(&cut, &open, ShadeModel::Smooth),
             [(0..1, Diagonal::V0V2)]
+        );
+        let staged = ClipTest {
+            staged: true,
+            ..open
+        };
+        assert_eq!(
+            quad_diagonals(&cut, &staged, ShadeModel::Smooth),
+            [(0..1, Diagonal::V1V3)]
         );
     }
 }
