@@ -171,13 +171,13 @@ fn mesa_offsets_filled_polygons_when_only_line_offset_is_on() {
     }
 }
 
-/// A filled front quad of four colours drawn while back faces are LINE: Mesa's draw module
-/// runs its pipeline stages for every triangle then and splits the quad (v0,v1,v3),
-/// (v1,v2,v3), not (v0,v1,v2),(v0,v2,v3) as in FILL mode (`pipeline::emulate::assembly`).
-/// With back faces culled the back mode is moot and the quad is split v0–v2: both cases
-/// against the native path.
+/// A filled front quad of four colours drawn while back faces are LINE, or under
+/// POLYGON_STIPPLE: Mesa's draw module runs its pipeline stages for every triangle then and
+/// splits the quad (v0,v1,v3),(v1,v2,v3), not (v0,v1,v2),(v0,v2,v3) as in plain FILL mode
+/// (`pipeline::emulate::assembly`). With back faces culled the back mode is moot and the
+/// quad is split v0–v2: every case against the native path.
 #[test]
-fn a_filled_quad_is_split_as_mesa_splits_it_while_back_faces_are_lines() {
+fn a_filled_quad_is_split_as_mesa_splits_it_in_its_draw_stages() {
     let quad = "glBegin(GL_QUADS);
 glColor3f(1, 0, 0);
 glVertex2f(-0.9, -0.9);
@@ -192,22 +192,34 @@ glEnd();
     let head = "glViewport(0, 0, 32, 32);
 glClearColor(0, 0, 0, 0);
 glClear(GL_COLOR_BUFFER_BIT);
-glPolygonMode(GL_BACK, GL_LINE);
 ";
+    // Every other row of the stipple pattern set: pixel row 28 (even) is drawn.
+    let stipple = format!(
+        "glPolygonStipple((GLubyte[]){{{}}});\nglEnable(GL_POLYGON_STIPPLE);\n",
+        (0..128)
+            .map(|i| if (i / 4) % 2 == 0 { "255" } else { "0" })
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
     let frame = Frame::new(32, 32);
     let tol = Tolerance {
         per_channel: 1,
         max_bad_pixels: 10,
     };
-    for (name, src, v0_v2) in [
-        ("back-lines-quad", format!("{head}{quad}"), false),
+    for (name, set, v0_v2) in [
+        (
+            "back-lines-quad",
+            "glPolygonMode(GL_BACK, GL_LINE);\n".to_string(),
+            false,
+        ),
         (
             "back-culled-quad",
-            format!("{head}glEnable(GL_CULL_FACE);\n{quad}"),
+            "glPolygonMode(GL_BACK, GL_LINE);\nglEnable(GL_CULL_FACE);\n".to_string(),
             true,
         ),
+        ("stippled-quad", stipple, false),
     ] {
-        for p in compare(name, &src, frame, tol) {
+        for p in compare(name, &format!("{head}{set}{quad}"), frame, tol) {
             // Pixel (20, 28), window y from the bottom, at (0.28, 0.78) in NDC: in the
             // triangle (v1, v2, v3) of a v1–v3 split, green 0.41 (105) from green v1 and
             // white v3; in (v0, v2, v3) of a v0–v2 split, green 0.28 (71) from v3 alone.

@@ -25,10 +25,11 @@
 //!   of a pixel out is enough) is split (v0,v1,v2),(v0,v2,v3) — the v0–v2 diagonal — and a
 //!   chunk with a vertex outside, v1–v3 like indexed quads. Outside an enabled user clip
 //!   plane counts as outside (its eye-space equation · the vertex's eye position < 0):
-//!   measured, a smooth quad whose first corner a plane cuts off is drawn v1–v3. So does
-//!   every quad while a face that is not culled has a polygon mode other than FILL (the
-//!   module's stages then run for every triangle; measured, a filled front quad drawn
-//!   while back faces are LINE is v1–v3). Under FLAT shading every quad is
+//!   measured, a smooth quad whose first corner a plane cuts off is drawn v1–v3. So is
+//!   every quad while a face that is not culled has a polygon mode other than FILL, or
+//!   while POLYGON_STIPPLE is on (the module's stages then run for every triangle;
+//!   measured: a filled front quad drawn while back faces are LINE, and a stippled quad,
+//!   are v1–v3; the POLYGON_OFFSET_LINE and _POINT enables change nothing). Under FLAT shading every quad is
 //!   v1–v3 (a non-convex or non-planar quad shows it; a convex planar one looks the same
 //!   either way). Lighting, textures,
 //!   two-sided lighting, culling and the polygon offset enables change nothing; the vertices
@@ -138,7 +139,7 @@ pub fn clipped(mvp: Mat4, p: Vec4) -> bool {
 
 /// How Mesa's draw module routes a non-indexed QUADS draw: through its pipeline stages,
 /// which split v1–v3, when `staged` (a face that is not culled has a polygon mode other
-/// than FILL) or when a vertex of the chunk is clipped — outside the clip volume under
+/// than FILL, or POLYGON_STIPPLE is on) or when a vertex of the chunk is clipped — outside the clip volume under
 /// `mvp`, or outside an enabled user clip plane (eye-space equation P; outside where
 /// P · (modelview · p) < 0, GL 1.5 §2.12 — false for NaN, as the module's compare).
 pub struct ClipTest {
@@ -150,7 +151,7 @@ pub struct ClipTest {
 }
 
 impl ClipTest {
-    /// The test of `state`'s matrices, enabled clip planes and polygon modes.
+    /// The test of `state`'s matrices, enabled clip planes, polygon modes and stipple.
     pub fn of(state: &FixedState) -> ClipTest {
         let modelview = state.modelview_matrix();
         // A culled face takes the other face's mode, as Mesa's state tracker sets the
@@ -177,7 +178,9 @@ impl ClipTest {
                 .filter(|p| p.enabled)
                 .map(|p| p.value)
                 .collect(),
-            staged: front != PolygonMode::Fill || back != PolygonMode::Fill,
+            staged: front != PolygonMode::Fill
+                || back != PolygonMode::Fill
+                || state.polygon_stipple.enabled,
         }
     }
 
