@@ -492,8 +492,18 @@ pnames! {
     FOG_HINT => |s| enm(s.hints.fog),
     TEXTURE_COMPRESSION_HINT => |s| enm(s.hints.texture_compression),
     GENERATE_MIPMAP_HINT => |s| enm(s.hints.generate_mipmap),
-    // Selection and feedback are left out: the render mode is always RENDER.
+    // Selection, feedback and evaluators are left out: the render mode is always RENDER,
+    // and the state their calls would set keeps its initial values (Tables 6.25 and 6.31),
+    // which is what Mesa answers until such a call.
     RENDER_MODE => |_| vec![QueryValue::Enum(r::RENDER)],
+    NAME_STACK_DEPTH => |_| int(0),
+    SELECTION_BUFFER_SIZE => |_| int(0),
+    FEEDBACK_BUFFER_SIZE => |_| int(0),
+    FEEDBACK_BUFFER_TYPE => |_| vec![QueryValue::Enum(GL_2D)],
+    MAP1_GRID_DOMAIN => |_| floats(&[0.0, 1.0]),
+    MAP1_GRID_SEGMENTS => |_| int(1),
+    MAP2_GRID_DOMAIN => |_| floats(&[0.0, 1.0, 0.0, 1.0]),
+    MAP2_GRID_SEGMENTS => |_| vec![QueryValue::Int(1), QueryValue::Int(1)],
     // The S3TC formats the layer decodes, of Mesa's twelve (`ff::compressed`).
     NUM_COMPRESSED_TEXTURE_FORMATS => |_| count(CompressedFormat::LISTED.len()),
     COMPRESSED_TEXTURE_FORMATS => |_| CompressedFormat::LISTED
@@ -531,6 +541,10 @@ pnames! {
 
     // ── New pnames go here: `TOKEN => |s| helper(s.field),` as above. ──
 }
+
+/// GL_2D, the initial FEEDBACK_BUFFER_TYPE (the registry's name starts with a digit, so
+/// the generated table has no constant for it).
+const GL_2D: u32 = 0x0600;
 
 /// A texture name as glGetIntegerv reports it.
 fn name(n: u32) -> Queried {

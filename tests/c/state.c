@@ -209,6 +209,15 @@ int main(void) {
   glHint(GL_GENERATE_MIPMAP_HINT, GL_NICEST);
   ints("generate mipmap hint", GL_GENERATE_MIPMAP_HINT, 1);
   ints("render mode", GL_RENDER_MODE, 1);
+  /* The state of selection, feedback and evaluators before any of their calls. */
+  ints("name stack depth", GL_NAME_STACK_DEPTH, 1);
+  ints("selection buffer size", GL_SELECTION_BUFFER_SIZE, 1);
+  ints("feedback buffer size", GL_FEEDBACK_BUFFER_SIZE, 1);
+  ints("feedback buffer type", GL_FEEDBACK_BUFFER_TYPE, 1);
+  floats("map1 grid domain", GL_MAP1_GRID_DOMAIN, 2);
+  ints("map1 grid segments", GL_MAP1_GRID_SEGMENTS, 1);
+  doubles("map2 grid domain", GL_MAP2_GRID_DOMAIN, 4);
+  bools("map2 grid segments", GL_MAP2_GRID_SEGMENTS, 2);
   glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 2.5f);
   glGetTexEnvfv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, v);
   fv("lod bias", v, 1);
