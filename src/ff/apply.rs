@@ -452,6 +452,7 @@ impl FixedState {
             Capability::SampleCoverage => self.sample_coverage.coverage = on,
             Capability::SampleAlphaToCoverage => self.sample_coverage.alpha_to_coverage = on,
             Capability::SampleAlphaToOne => self.sample_coverage.alpha_to_one = on,
+            Capability::SampleCoverageInvert => self.sample_coverage.invert = on,
             Capability::AutoNormal => self.eval.auto_normal = on,
             Capability::Map(m) if on => self.eval.maps |= m.bit(),
             Capability::Map(m) => self.eval.maps &= !m.bit(),

@@ -105,6 +105,10 @@ pub enum Capability {
     SampleCoverage,
     SampleAlphaToCoverage,
     SampleAlphaToOne,
+    /// SAMPLE_COVERAGE_INVERT as a capability: Mesa 22.3 takes it in glEnable, glDisable and
+    /// glIsEnabled as the flag glSampleCoverage sets (measured; GL 1.3 makes it a value
+    /// only); ENABLE_BIT does not save it there, MULTISAMPLE_BIT does with the value.
+    SampleCoverageInvert,
     /// AUTO_NORMAL (§5.1): state only, evaluators being left out.
     AutoNormal,
     /// MAP1_* and MAP2_* (§5.1): state only, likewise.

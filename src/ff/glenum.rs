@@ -271,6 +271,7 @@ gl_enums!(Capability {
     SAMPLE_COVERAGE => Capability::SampleCoverage,
     SAMPLE_ALPHA_TO_COVERAGE => Capability::SampleAlphaToCoverage,
     SAMPLE_ALPHA_TO_ONE => Capability::SampleAlphaToOne,
+    SAMPLE_COVERAGE_INVERT => Capability::SampleCoverageInvert,
     AUTO_NORMAL => Capability::AutoNormal,
     MAP1_VERTEX_3 => Capability::Map(EvalMap { dims: MapDims::One, attribute: MapAttribute::Vertex3 }),
     MAP1_VERTEX_4 => Capability::Map(EvalMap { dims: MapDims::One, attribute: MapAttribute::Vertex4 }),

@@ -674,6 +674,7 @@ impl FixedState {
             Capability::SampleCoverage => self.sample_coverage.coverage,
             Capability::SampleAlphaToCoverage => self.sample_coverage.alpha_to_coverage,
             Capability::SampleAlphaToOne => self.sample_coverage.alpha_to_one,
+            Capability::SampleCoverageInvert => self.sample_coverage.invert,
             Capability::AutoNormal => self.eval.auto_normal,
             Capability::Map(m) => self.eval.maps & m.bit() != 0,
             Capability::PolygonStipple => self.polygon_stipple.enabled,

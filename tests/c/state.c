@@ -218,6 +218,15 @@ int main(void) {
   ints("map1 grid segments", GL_MAP1_GRID_SEGMENTS, 1);
   doubles("map2 grid domain", GL_MAP2_GRID_DOMAIN, 4);
   bools("map2 grid segments", GL_MAP2_GRID_SEGMENTS, 2);
+  /* SAMPLE_COVERAGE_INVERT, which Mesa also takes as a capability. */
+  glEnable(GL_SAMPLE_COVERAGE_INVERT);
+  enabled("enable coverage invert", GL_SAMPLE_COVERAGE_INVERT);
+  bools("coverage invert", GL_SAMPLE_COVERAGE_INVERT, 1);
+  glPushAttrib(GL_ENABLE_BIT);
+  glDisable(GL_SAMPLE_COVERAGE_INVERT);
+  glPopAttrib();
+  enabled("after an enable-bit pop", GL_SAMPLE_COVERAGE_INVERT);
+  glSampleCoverage(1.0f, GL_FALSE);
   glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 2.5f);
   glGetTexEnvfv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, v);
   fv("lod bias", v, 1);
