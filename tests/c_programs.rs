@@ -1851,3 +1851,20 @@ fn state_and_errors_answer_as_on_mesa() {
     );
     assert_same_text(&mesa, &ours, 90, "the answer");
 }
+
+/// `tests/c/single_components.c`: RED, GREEN and BLUE texture data, whole images and a
+/// sub-image, stored as RGBA with the missing components 0 and alpha 1: Mesa's image
+/// exactly, its errors and the values read back.
+#[test]
+fn single_component_texture_data_is_stored_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("single_components");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "depth red                                err 0x502",
+            "back 0 8 0 255 0 24 0 255 0 40 0 255 0 56 0 255",
+        ],
+    );
+    assert_same_text(&mesa_text, &ours_text, 8, "a single-component image");
+    assert_images_match("single_components", &ours, &mesa, Tolerance::EXACT);
+}

@@ -559,7 +559,7 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
-            let (format, ty, data) = pixel_types::model_pixels(c, 8, shape)?;
+            let (format, ty, data) = pixel_types::model_sub_texels(c, 8, shape)?;
             Command::TexSubImage2D(TexSubImage {
                 face,
                 level: c.i32(1)?,

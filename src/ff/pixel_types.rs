@@ -66,18 +66,84 @@ fn shape_to_model(shape: PixelShape, data: Arc<[u8]>) -> Arc<[u8]> {
     }
 }
 
-/// glTexImage's data of argument `i` (of `shape`) in the model's form. A script's
-/// readback slot is read as the slot holds it, so it takes only the model's own forms.
+/// The component RED, GREEN or BLUE data holds (0, 1, 2); `None` for other formats.
+fn single_component(format: PixelFormat) -> Option<usize> {
+    match format {
+        PixelFormat::Red => Some(0),
+        PixelFormat::Green => Some(1),
+        PixelFormat::Blue => Some(2),
+        _ => None,
+    }
+}
+
+/// The format and type the model keeps texture data of `format` in `ty` in: the model's
+/// form ([`model_form`]), but RGBA for RED, GREEN and BLUE, which a texture image stores
+/// converted to RGBA (GL 1.5 §3.6.4: the missing colour components 0, alpha 1).
+pub fn texel_form(format: PixelFormat, ty: PixelType) -> (PixelFormat, PixelType) {
+    match (single_component(format), model_form(format, ty)) {
+        (Some(_), (_, model_ty)) => (PixelFormat::Rgba, model_ty),
+        (None, form) => form,
+    }
+}
+
+/// Data of one component `k` a group, in `model_ty`, as RGBA groups: the others 0, alpha
+/// the type's 1 (its largest value for an unsigned type, which the model keeps as the
+/// bytes hold them; 1.0 as FLOAT).
+fn single_to_rgba(k: usize, model_ty: PixelType, data: &[u8]) -> Arc<[u8]> {
+    let size = model_ty.size();
+    let one: Vec<u8> = match model_ty {
+        PixelType::UnsignedByte => vec![u8::MAX],
+        PixelType::UnsignedShort => u16::MAX.to_ne_bytes().to_vec(),
+        PixelType::UnsignedInt => u32::MAX.to_ne_bytes().to_vec(),
+        _ => 1f32.to_ne_bytes().to_vec(),
+    };
+    let mut out = Vec::with_capacity(data.len() * 4);
+    for v in data.chunks_exact(size) {
+        for c in 0..4 {
+            match c {
+                _ if c == k => out.extend_from_slice(v),
+                3 => out.extend_from_slice(&one),
+                _ => out.extend(std::iter::repeat_n(0u8, size)),
+            }
+        }
+    }
+    out.into()
+}
+
+/// Texture data of `shape` in the texel form ([`texel_form`]).
+fn shape_to_texels(shape: PixelShape, data: Arc<[u8]>) -> Arc<[u8]> {
+    let model = shape_to_model(shape, data);
+    match single_component(shape.format) {
+        Some(k) => single_to_rgba(k, model_form(shape.format, shape.ty).1, &model),
+        None => model,
+    }
+}
+
+/// glTexSubImage's pixels of argument `i` (of `shape`) in the texel form.
+pub fn model_sub_texels<A: Args>(
+    c: &A,
+    i: usize,
+    shape: PixelShape,
+) -> Result<ModelPixels, A::Error> {
+    let (format, ty) = texel_form(shape.format, shape.ty);
+    let data = c.pixels(i, shape)?.map(|d| shape_to_texels(shape, d));
+    Ok((format, ty, data))
+}
+
+/// glTexImage's data of argument `i` (of `shape`) in the texel form ([`texel_form`]). A
+/// script's readback slot is read as the slot holds it, so it takes only the model's own
+/// forms.
 pub fn model_tex_data<A: Args>(
     c: &A,
     i: usize,
     shape: PixelShape,
 ) -> Result<(PixelFormat, PixelType, TexData), A::Error> {
-    let (format, ty) = model_form(shape.format, shape.ty);
+    let (format, ty) = texel_form(shape.format, shape.ty);
     let data = match c.tex_data(i, shape)? {
-        TexData::Bytes(d) => TexData::Bytes(shape_to_model(shape, d)),
+        TexData::Bytes(d) => TexData::Bytes(shape_to_texels(shape, d)),
         TexData::Null => TexData::Null,
         slot if is_model_form(shape.format, shape.ty)
+            && single_component(shape.format).is_none()
             && matches!(shape.kind, ShapeKind::Groups | ShapeKind::Bitmap) =>
         {
             slot

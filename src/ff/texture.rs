@@ -989,14 +989,6 @@ pub fn check_format_pair(internal: TexFormat, format: PixelFormat) -> GlResult {
             "STENCIL_INDEX data suits no texture internal format",
         ));
     }
-    if matches!(
-        format,
-        PixelFormat::Red | PixelFormat::Green | PixelFormat::Blue
-    ) {
-        return Err(GlError::invalid_enum(
-            "RED, GREEN and BLUE texture data are not modelled (glDrawPixels and glReadPixels take them)",
-        ));
-    }
     if internal.is_depth() != (format == PixelFormat::DepthComponent) {
         return Err(GlError::invalid_operation(
             "depth internal formats need DEPTH_COMPONENT pixel data and vice versa",

@@ -89,7 +89,7 @@ pub fn volume_calls<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             if let Some(refused) = pixel_types::refusal(c, shape.format, shape.ty) {
                 return Ok(Some(refused));
             }
-            let (format, ty, data) = pixel_types::model_pixels(c, 10, shape)?;
+            let (format, ty, data) = pixel_types::model_sub_texels(c, 10, shape)?;
             Command::TexSubImage3D(TexSubImage {
                 face: None,
                 level: c.i32(1)?,
