@@ -713,6 +713,11 @@ impl ClientArrays {
                     return Err(c.bad(1 + k, "a count of 0 or more"));
                 }
                 let ty = index_type(c, 2 + k)?;
+                // No indices are read for a count of 0: no draw, and no error even for a
+                // NULL pointer (GL 1.5 §2.8; measured on Mesa).
+                if count == 0 {
+                    return Ok(ClientEffect::Draw(None));
+                }
                 // With a buffer bound to ELEMENT_ARRAY_BUFFER, `indices` is an offset
                 // into it (GL 1.5 §2.9.5).
                 let data = Buffers::source(c, 3 + k, bound.element)?;

@@ -300,6 +300,12 @@ impl Client {
         }
         Ok(Some(match entry {
             Entry::NewList => {
+                // Inside a list's compilation glNewList is INVALID_OPERATION whatever its
+                // arguments: Mesa's compile table holds a glNewList that only raises it
+                // (measured: a bad mode or name 0 there too).
+                if self.lists.compiling().is_some() {
+                    return Err(c.immediate("glNewList while a list is being compiled"));
+                }
                 let name = c.u32(0)?;
                 if name == 0 {
                     return Err(c.bad(0, "a list name other than 0"));

@@ -96,6 +96,15 @@ int main(void) {
   CHECK((void)0);
   printf("residences untouched: %d %d\n", residences[0], residences[1]);
   printf("vendor set: %d\n", glGetString(GL_VENDOR) != NULL);
+  /* glNewList while a list is compiled: INVALID_OPERATION before its arguments are
+   * looked at (a bad mode, name 0). */
+  glNewList(5, GL_COMPILE);
+  CHECK(glNewList(6, GL_BYTE));
+  CHECK(glNewList(0, GL_COMPILE));
+  CHECK(glEndList());
+  /* No indices are read for a count of 0: no error for NULL. */
+  CHECK(glDrawElements(GL_TRIANGLES, 0, GL_UNSIGNED_SHORT, NULL));
+  CHECK(glDrawElements(GL_TRIANGLES, 0, GL_FLOAT, NULL));
   OSMesaDestroyContext(ctx);
   return 0;
 }
