@@ -297,7 +297,6 @@ pub(super) const LIGHT_PNAMES: &[&str] = &[
     "GL_LINEAR_ATTENUATION",
     "GL_QUADRATIC_ATTENUATION",
 ];
-const LIGHT_SCALARS: &[&str] = LIGHT_PNAMES.split_at(5).1;
 /// glMaterial's parameter names: the colours, the one scalar, and the colour-index
 /// lighting's three indices.
 pub(super) const MATERIAL_PNAMES: &[&str] = &[
@@ -329,10 +328,24 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::Lightf | Entry::Lighti => {
             c.count(3)?;
             let light = c.family(0, Family::Light)?;
-            Command::Light {
-                light,
-                param: light_scalar(c.pname(1, LIGHT_SCALARS)?, c.f32(2)?),
-            }
+            let pname = c.pname(1, LIGHT_PNAMES)?;
+            let v = c.f32(2)?;
+            // A vector parameter through the scalar form is (param, 0, 0, 0): Mesa passes
+            // the value on as the first of four, the rest 0 (measured; GL 1.5 names only the
+            // scalars here). glLighti's colours are then integers, mapped as glLightiv's.
+            let color = || match c.entry() {
+                Entry::Lighti => int_color_first(v),
+                _ => glam::Vec4::new(v, 0.0, 0.0, 0.0),
+            };
+            let param = match pname {
+                "GL_AMBIENT" => LightParam::Ambient(color()),
+                "GL_DIFFUSE" => LightParam::Diffuse(color()),
+                "GL_SPECULAR" => LightParam::Specular(color()),
+                "GL_POSITION" => LightParam::Position(glam::Vec4::new(v, 0.0, 0.0, 0.0)),
+                "GL_SPOT_DIRECTION" => LightParam::SpotDirection(glam::Vec3::new(v, 0.0, 0.0)),
+                p => light_scalar(p, v),
+            };
+            Command::Light { light, param }
         }
         Entry::LightModelfv => {
             c.count(2)?;
@@ -345,11 +358,17 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 "GL_LIGHT_MODEL_LOCAL_VIEWER",
                 "GL_LIGHT_MODEL_TWO_SIDE",
                 "GL_LIGHT_MODEL_COLOR_CONTROL",
+                "GL_LIGHT_MODEL_AMBIENT",
             ];
             Command::LightModel(match c.pname(0, &names)? {
                 "GL_LIGHT_MODEL_LOCAL_VIEWER" => LightModelParam::LocalViewer(c.boolean(1)?),
                 "GL_LIGHT_MODEL_TWO_SIDE" => LightModelParam::TwoSide(c.boolean(1)?),
-                _ => LightModelParam::ColorControl(c.enm(1)?),
+                "GL_LIGHT_MODEL_COLOR_CONTROL" => LightModelParam::ColorControl(c.enm(1)?),
+                // (param, 0, 0, 0), as glLight's vector parameters above (measured).
+                _ => LightModelParam::Ambient(match c.entry() {
+                    Entry::LightModeli => int_color_first(c.f32(1)?),
+                    _ => glam::Vec4::new(c.f32(1)?, 0.0, 0.0, 0.0),
+                }),
             })
         }
         Entry::Materialfv => {
@@ -381,6 +400,12 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         Entry::ShadeModel => c.count(1).and(c.enm(0)).map(Command::ShadeModel)?,
         _ => return Ok(None),
     }))
+}
+
+/// The colour (v, 0, 0, 0) of four signed integers, mapped as GL 1.5 Table 2.9 maps them:
+/// (2c + 1)/(2³² − 1), so 0 is not quite 0 (Mesa's glLighti and glLightModeli, measured).
+fn int_color_first(v: f32) -> glam::Vec4 {
+    glam::Vec4::from_array([f64::from(v), 0.0, 0.0, 0.0].map(|k| CType::Int.normalized(k)))
 }
 
 pub(super) fn light_scalar(pname: &str, v: f32) -> LightParam {
@@ -608,11 +633,22 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::TexGeni | Entry::TexGenf | Entry::TexGend => {
             c.count(3)?;
-            c.pname(1, &["GL_TEXTURE_GEN_MODE"])?;
-            Command::TexGen {
-                coord: c.enm(0)?,
-                param: TexGenParam::Mode(c.enm(2)?),
-            }
+            let pname = c.pname(
+                1,
+                &["GL_TEXTURE_GEN_MODE", "GL_OBJECT_PLANE", "GL_EYE_PLANE"],
+            )?;
+            let coord = c.enm(0)?;
+            // A plane through the scalar form is (param, 0, 0, 0), as Mesa takes it
+            // (measured; an eye plane is then carried by the inverse modelview as ever).
+            let plane = || -> Result<glam::Vec4, A::Error> {
+                Ok(glam::Vec4::new(c.f32(2)?, 0.0, 0.0, 0.0))
+            };
+            let param = match pname {
+                "GL_OBJECT_PLANE" => TexGenParam::ObjectPlane(plane()?),
+                "GL_EYE_PLANE" => TexGenParam::EyePlane(plane()?),
+                _ => TexGenParam::Mode(c.enm(2)?),
+            };
+            Command::TexGen { coord, param }
         }
         Entry::TexGenfv | Entry::TexGendv | Entry::TexGeniv => {
             c.count(3)?;
@@ -626,6 +662,16 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::TexEnvi | Entry::TexEnvf => {
             c.count(3)?;
+            // TEXTURE_ENV_COLOR through the scalar form is (param, 0, 0, 0), glTexEnvi's
+            // integer taken as a number, as Mesa takes both (measured: 2 is then clamped
+            // to 1).
+            let env = c.pname(0, &["GL_TEXTURE_ENV"]).is_ok();
+            if env && c.pname(1, &["GL_TEXTURE_ENV_COLOR"]).is_ok() {
+                let v = c.f32(2)?;
+                return Ok(Some(Command::TexEnv(TexEnvParam::Color(glam::Vec4::new(
+                    v, 0.0, 0.0, 0.0,
+                )))));
+            }
             Command::TexEnv(env_scalar(c)?)
         }
         Entry::TexEnvfv => {

@@ -6,15 +6,7 @@ use super::args::Args;
 use super::glenum::{Family, GlEnum};
 use super::*;
 
-const FOG_SCALARS: &[&str] = &[
-    "GL_FOG_MODE",
-    "GL_FOG_DENSITY",
-    "GL_FOG_START",
-    "GL_FOG_END",
-    "GL_FOG_INDEX",
-    "GL_FOG_COORD_SRC",
-];
-const FOG_VECTORS: &[&str] = &[
+const FOG_PNAMES: &[&str] = &[
     "GL_FOG_COLOR",
     "GL_FOG_DENSITY",
     "GL_FOG_START",
@@ -50,14 +42,17 @@ fn fog_scalar(pname: &str, value: f32) -> FogParam {
 fn fog<A: Args>(c: &A) -> Result<FogParam, A::Error> {
     c.count(2)?;
     Ok(match c.entry() {
-        Entry::Fogf | Entry::Fogi => match c.pname(0, FOG_SCALARS)? {
+        Entry::Fogf | Entry::Fogi => match c.pname(0, FOG_PNAMES)? {
             "GL_FOG_MODE" => FogParam::Mode(c.enm(1)?),
             "GL_FOG_COORD_SRC" => FogParam::CoordSource(c.enm(1)?),
+            // FOG_COLOR through the scalar form is (param, 0, 0, 0), glFogi's integer
+            // taken as a number, as Mesa takes both (measured).
+            "GL_FOG_COLOR" => FogParam::Color(glam::Vec4::new(c.f32(1)?, 0.0, 0.0, 0.0)),
             p => fog_scalar(p, c.f32(1)?),
         },
         _ => {
             let int = c.entry() == Entry::Fogiv;
-            match c.pname(0, FOG_VECTORS)? {
+            match c.pname(0, FOG_PNAMES)? {
                 "GL_FOG_COLOR" => {
                     let v = c.floats::<4>(1)?;
                     FogParam::Color(glam::Vec4::from_array(v.map(|x| {
@@ -76,13 +71,7 @@ fn fog<A: Args>(c: &A) -> Result<FogParam, A::Error> {
     })
 }
 
-const POINT_SCALARS: &[&str] = &[
-    "GL_POINT_SIZE_MIN",
-    "GL_POINT_SIZE_MAX",
-    "GL_POINT_FADE_THRESHOLD_SIZE",
-    "GL_POINT_SPRITE_COORD_ORIGIN",
-];
-const POINT_VECTORS: &[&str] = &[
+const POINT_PNAMES: &[&str] = &[
     "GL_POINT_SIZE_MIN",
     "GL_POINT_SIZE_MAX",
     "GL_POINT_FADE_THRESHOLD_SIZE",
@@ -92,8 +81,8 @@ const POINT_VECTORS: &[&str] = &[
 
 /// glPointParameter{f,i}(pname, param) and glPointParameter{f,i}v(pname, params), with
 /// their ARB and EXT names. Integers are taken as numbers (GL 1.5 §3.3). The scalar forms
-/// refuse POINT_DISTANCE_ATTENUATION (INVALID_ENUM, GL 1.4 §3.3: three values), which
-/// Mesa takes, reading three values from the one given.
+/// take POINT_DISTANCE_ATTENUATION as (param, 0, 0), as Mesa does (measured; GL 1.4 §3.3
+/// gives it three values).
 fn point_parameter<A: Args>(c: &A) -> Result<PointParam, A::Error> {
     c.count(2)?;
     let scalar = matches!(
@@ -103,7 +92,7 @@ fn point_parameter<A: Args>(c: &A) -> Result<PointParam, A::Error> {
             | Entry::PointParameterfARB
             | Entry::PointParameterfEXT
     );
-    let pname = c.pname(0, if scalar { POINT_SCALARS } else { POINT_VECTORS })?;
+    let pname = c.pname(0, POINT_PNAMES)?;
     let value = |c: &A| -> Result<f32, A::Error> {
         if scalar {
             c.f32(1)
@@ -120,6 +109,7 @@ fn point_parameter<A: Args>(c: &A) -> Result<PointParam, A::Error> {
             Ok(t) => t,
             Err(_) => value(c)? as u32,
         }),
+        _ if scalar => PointParam::DistanceAttenuation([value(c)?, 0.0, 0.0]),
         _ => PointParam::DistanceAttenuation(c.floats::<3>(1)?),
     })
 }

@@ -309,7 +309,7 @@ pnames! {
     INDEX_CLEAR_VALUE => |s| int(s.clear_index as i32),
     INDEX_WRITEMASK => |s| int(s.index_mask as i32),
     SAMPLE_COVERAGE_VALUE => |s| floats(&[s.sample_coverage.value]),
-    SAMPLE_COVERAGE_INVERT => |s| boolean(s.sample_coverage.invert),
+    // SAMPLE_COVERAGE_INVERT is answered as a capability (`Capability::SampleCoverageInvert`).
     CURRENT_TEXTURE_COORDS => |s| floats(&s.current.texcoords[s.active_unit()].to_array()),
 
     // The raster position (Table 6.5, `raster`): the active unit's texture coordinates.
