@@ -12,7 +12,7 @@
 mod fidelity;
 mod support;
 
-use fidelity::{compare, probe_gl, Frame};
+use fidelity::{compare, probe_gl, script_file, Frame};
 use fixedfunc::ff::MAX_CLIP_PLANES;
 use fixedfunc::gpu::Profile;
 use glow::HasContext;
@@ -100,7 +100,7 @@ fn max_clip_planes_is_mesas() {
 /// quad is, red would tint every pixel kept (`pipeline::emulate::assembly`).
 #[test]
 fn a_quad_cut_by_a_clip_plane_is_split_as_mesa_splits_it() {
-    let src = "glViewport(0, 0, 32, 32);
+    let head = "glViewport(0, 0, 32, 32);
 glClearColor(0, 0, 0, 0);
 glClear(GL_COLOR_BUFFER_BIT);
 glMatrixMode(GL_PROJECTION);
@@ -109,22 +109,13 @@ glMatrixMode(GL_MODELVIEW);
 glLoadIdentity();
 glClipPlane(GL_CLIP_PLANE0, (GLdouble[]){1, 1, 0, 0.25});
 glEnable(GL_CLIP_PLANE0);
-glBegin(GL_QUADS);
-glColor3f(1, 0, 0);
-glVertex2f(-0.9, -0.9);
-glColor3f(0, 1, 0);
-glVertex2f(0.9, -0.9);
-glColor3f(0, 0, 1);
-glVertex2f(0.9, 0.9);
-glColor3f(1, 1, 1);
-glVertex2f(-0.9, 0.9);
-glEnd();
 ";
+    let src = format!("{head}{}", script_file("four_colour_quad"));
     let tol = Tolerance {
         per_channel: 1,
         max_bad_pixels: (FRAME.width * FRAME.height / 100) as usize,
     };
-    for p in compare("clip-plane-quad", src, FRAME, tol) {
+    for p in compare("clip-plane-quad", &src, FRAME, tol) {
         let out = &p.emulate;
         // Pixel (24, 8), window y from the bottom: in the triangle (v1, v2, v3) and
         // kept; red only from v3's white there.

@@ -178,17 +178,7 @@ fn mesa_offsets_filled_polygons_when_only_line_offset_is_on() {
 /// quad is split v0–v2: every case against the native path.
 #[test]
 fn a_filled_quad_is_split_as_mesa_splits_it_in_its_draw_stages() {
-    let quad = "glBegin(GL_QUADS);
-glColor3f(1, 0, 0);
-glVertex2f(-0.9, -0.9);
-glColor3f(0, 1, 0);
-glVertex2f(0.9, -0.9);
-glColor3f(0, 0, 1);
-glVertex2f(0.9, 0.9);
-glColor3f(1, 1, 1);
-glVertex2f(-0.9, 0.9);
-glEnd();
-";
+    let quad = script_file("four_colour_quad");
     let head = "glViewport(0, 0, 32, 32);
 glClearColor(0, 0, 0, 0);
 glClear(GL_COLOR_BUFFER_BIT);

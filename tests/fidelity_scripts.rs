@@ -32,7 +32,7 @@ const fn case(name: &'static str, w: u32, h: u32, per_channel: u8, max_bad: usiz
 }
 
 /// The table. Tolerances are per channel (of 255) and a count of pixels allowed beyond it.
-const CASES: [Case; 24] = [
+const CASES: [Case; 25] = [
     case("alpha_test_boundaries", 8, 1, 0, 0),
     // GL's own glBlitFramebuffer on both paths (tests/fidelity_framebuffers.rs).
     Case {
@@ -42,6 +42,9 @@ const CASES: [Case; 24] = [
     // Fixed-point vs fp32 combine arithmetic: 1/255.
     case("combine_bugs_crossbar", 8, 1, 1, 0),
     case("depth_tex_compare", 128, 16, 0, 0),
+    // Also the quad of the diagonal tests (`fidelity_clip_planes`, `fidelity_polygon_mode`):
+    // unclipped and filled, split v0–v2 on both paths.
+    case("four_colour_quad", 32, 32, 1, 0),
     // fp32 fog factors on both paths; 3/255 on 99% as in tests/fidelity_fog.rs.
     case("fog", 64, 32, 3, 20),
     // Pixel rectangles into a framebuffer object smaller than the window: window

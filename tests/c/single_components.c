@@ -16,19 +16,6 @@
 
 static void panel(int i) { glViewport(i * 32, 0, 32, 64); }
 
-static void quad(void) {
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0);
-  glVertex2f(-1, -1);
-  glTexCoord2f(1, 0);
-  glVertex2f(1, -1);
-  glTexCoord2f(1, 1);
-  glVertex2f(1, 1);
-  glTexCoord2f(0, 1);
-  glVertex2f(-1, 1);
-  glEnd();
-}
-
 int main(int argc, char **argv) {
   OSMesaContext ctx;
   GLubyte *buf = open_window(&ctx, W, H);
@@ -63,21 +50,21 @@ int main(int argc, char **argv) {
     panel(f);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, formats[f], GL_UNSIGNED_BYTE, ub);
     err("teximage ub");
-    quad();
+    textured_square();
   }
   panel(3);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RED, GL_FLOAT, fl);
   err("teximage float");
-  quad();
+  textured_square();
   panel(4);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_GREEN, GL_SHORT, sh);
   err("teximage short");
-  quad();
+  textured_square();
   /* BLUE into LUMINANCE_ALPHA: luminance from red (0), alpha 1. */
   panel(5);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE_ALPHA, 4, 4, 0, GL_BLUE, GL_UNSIGNED_SHORT, us);
   err("teximage la");
-  quad();
+  textured_square();
   /* RED over the middle of an RGBA image: green and blue become 0 there, alpha 1. */
   panel(6);
   GLubyte rgba[64];
@@ -85,7 +72,7 @@ int main(int argc, char **argv) {
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_RED, GL_UNSIGNED_BYTE, ub);
   err("subimage");
-  quad();
+  textured_square();
   panel(7);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 4, 4, 0, GL_RED, GL_UNSIGNED_BYTE, ub);
   err("depth red");
