@@ -235,6 +235,27 @@ int main(int argc, char **argv) {
   glReadPixels(W * 3 / 4, H * 3 / 4, 2, 1, GL_BGRA, GL_BYTE, r);
   hex("non-finite read as BYTE", r, 8);
 
+  /* LUMINANCE and LUMINANCE_ALPHA as INT and UNSIGNED_INT: Mesa packs them through floats
+   * (x times 2^31 or 2^32 as a float), so a full luminance overflows (INT_MIN; 0). */
+  glColor4f(0.5f, 0.4f, 0.3f, 177 / 255.0f);
+  glDisable(GL_TEXTURE_2D);
+  glBegin(GL_QUADS);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  glVertex2f(1, 1);
+  glVertex2f(-1, 1);
+  glEnd();
+  static const GLenum luminance_formats[] = {GL_LUMINANCE, GL_LUMINANCE_ALPHA};
+  static const GLenum int_types[] = {GL_INT, GL_UNSIGNED_INT};
+  for (int f = 0; f < 2; f++)
+    for (int t = 0; t < 2; t++) {
+      GLubyte words[8];
+      memset(words, 0xab, sizeof words);
+      glReadPixels(1, 1, 1, 1, luminance_formats[f], int_types[t], words);
+      hex(f ? (t ? "LA as UNSIGNED_INT" : "LA as INT") : (t ? "L as UNSIGNED_INT" : "L as INT"),
+          words, 8);
+    }
+
   glViewport(0, 0, W, H);
   return finish(out, ctx, buf, W, H);
 }

@@ -697,11 +697,19 @@ fn read(gl: &glow::Context, r: &ReadPixels) -> Vec<u8> {
                     f32::from_ne_bytes([c[4 * i], c[4 * i + 1], c[4 * i + 2], c[4 * i + 3]])
                 });
                 let l = (p[0] + p[1] + p[2]).min(1.0);
+                // Mesa packs luminance groups as UNSIGNED_INT through floats (`pixel_types::
+                // luminance_uint`); alpha alone it reads straight (above).
+                let pack = |v: f32| match r.ty {
+                    PixelType::UnsignedInt => crate::ff::pixel_types::luminance_uint(v)
+                        .to_ne_bytes()
+                        .to_vec(),
+                    _ => encode(v, r.ty),
+                };
                 match r.format {
-                    PixelFormat::Luminance => out.extend(encode(l, r.ty)),
+                    PixelFormat::Luminance => out.extend(pack(l)),
                     PixelFormat::LuminanceAlpha => {
-                        out.extend(encode(l, r.ty));
-                        out.extend(encode(p[3], r.ty));
+                        out.extend(pack(l));
+                        out.extend(pack(p[3]));
                     }
                     _ => out.extend(encode(p[3], r.ty)),
                 }
