@@ -501,13 +501,6 @@ pub fn from_model(read: &[u8], format: PixelFormat, ty: PixelType, from: ReadFro
                     out.extend((value(i).snorm(16) as i16).to_ne_bytes());
                 }
             }
-            PixelType::Int
-                if matches!(format, PixelFormat::Luminance | PixelFormat::LuminanceAlpha) =>
-            {
-                for &i in &order {
-                    out.extend(luminance_int(read_f32(raw(i))).to_ne_bytes());
-                }
-            }
             PixelType::Int => {
                 for &i in &order {
                     out.extend((value(i).snorm(32) as i32).to_ne_bytes());
@@ -524,11 +517,28 @@ pub fn from_model(read: &[u8], format: PixelFormat, ty: PixelType, from: ReadFro
     out
 }
 
-/// A LUMINANCE or LUMINANCE_ALPHA component read as INT, as Mesa 22.3 packs it: through
-/// floats, (GLint)(x · 2147483647.0f) — the constant a float, 2³¹, so the product is exact
-/// and 1.0 overflows, which x86's truncating conversion gives as INT_MIN (measured:
-/// L = 1.0 reads 0x80000000, 177/255 reads 0x58d8d900 where x · (2³¹ − 1) would be
-/// 0x58d8d8d8). Other formats take [`Stored::snorm`]'s rule, as Mesa does for them.
+/// glReadPixels' LUMINANCE or LUMINANCE_ALPHA groups as INT from the FLOAT read (`read`,
+/// f32 values in the machine's order), each component by [`luminance_int`].
+pub fn luminance_ints(read: &[u8]) -> Vec<u8> {
+    read.chunks_exact(4)
+        .flat_map(|e| luminance_int(read_f32(e)).to_ne_bytes())
+        .collect()
+}
+
+/// glGetTexImage's LUMINANCE or LUMINANCE_ALPHA groups as UNSIGNED_INT from the FLOAT
+/// read, each component by [`luminance_uint`].
+pub fn luminance_uints(read: &[u8]) -> Vec<u8> {
+    read.chunks_exact(4)
+        .flat_map(|e| luminance_uint(read_f32(e)).to_ne_bytes())
+        .collect()
+}
+
+/// A LUMINANCE or LUMINANCE_ALPHA component glReadPixels reads as INT, as Mesa 22.3 packs
+/// it: through floats, (GLint)(x · 2147483647.0f) — the constant a float, 2³¹, so the
+/// product is exact and 1.0 overflows, which x86's truncating conversion gives as INT_MIN
+/// (measured: L = 1.0 reads 0x80000000, 177/255 reads 0x58d8d900 where x · (2³¹ − 1)
+/// would be 0x58d8d8d8). glGetTexImage and the other formats take [`Stored::snorm`]'s
+/// rule, as Mesa does for them.
 pub fn luminance_int(x: f32) -> i32 {
     let p = x * 2_147_483_647.0_f32;
     if p.is_nan() || !(-2_147_483_648.0..2_147_483_648.0).contains(&p) {
@@ -538,9 +548,10 @@ pub fn luminance_int(x: f32) -> i32 {
     }
 }
 
-/// A LUMINANCE or LUMINANCE_ALPHA component read as UNSIGNED_INT, as Mesa 22.3 packs it:
-/// (GLuint)(x · 4294967295.0f), the constant a float, 2³², the conversion x86's 64-bit
-/// truncation keeping the low 32 bits — so 1.0 reads 0 (measured), 177/255 0xb1b1b200.
+/// A LUMINANCE or LUMINANCE_ALPHA component read as UNSIGNED_INT (glReadPixels and
+/// glGetTexImage alike), as Mesa 22.3 packs it: (GLuint)(x · 4294967295.0f), the constant
+/// a float, 2³², the conversion x86's 64-bit truncation keeping the low 32 bits — so 1.0
+/// reads 0 (measured), 177/255 0xb1b1b200.
 pub fn luminance_uint(x: f32) -> u32 {
     let p = x * 4_294_967_295.0_f32;
     if p.is_nan() {

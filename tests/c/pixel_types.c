@@ -255,6 +255,15 @@ int main(int argc, char **argv) {
       hex(f ? (t ? "LA as UNSIGNED_INT" : "LA as INT") : (t ? "L as UNSIGNED_INT" : "L as INT"),
           words, 8);
     }
+  /* glGetTexImage packs luminance as UNSIGNED_INT through floats too, as INT exactly. */
+  static const GLubyte la[4] = {10, 177, 255, 255};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE_ALPHA, 2, 1, 0, GL_LUMINANCE_ALPHA,
+               GL_UNSIGNED_BYTE, la);
+  for (int t = 0; t < 2; t++) {
+    GLubyte words[16];
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_LUMINANCE_ALPHA, int_types[t], words);
+    hex(t ? "LA texture as UNSIGNED_INT" : "LA texture as INT", words, 16);
+  }
 
   glViewport(0, 0, W, H);
   return finish(out, ctx, buf, W, H);

@@ -550,22 +550,49 @@ impl Issue for Emulate {
                     readback.bytes = bytes;
                 }
                 let colour8 = state.draw_bits(state.framebuffers.window_bits).red == 8;
-                as_asked(&mut readback, asked.format, asked.ty, colour8);
+                let luminance = matches!(
+                    asked.format,
+                    PixelFormat::Luminance | PixelFormat::LuminanceAlpha
+                );
+                if luminance && asked.ty == PixelType::Int {
+                    // Mesa's float packing of luminance groups (`pixel_types::luminance_int`).
+                    readback.bytes = pixel_types::luminance_ints(&readback.bytes);
+                    readback.format = asked.format;
+                    readback.ty = asked.ty;
+                } else {
+                    as_asked(&mut readback, asked.format, asked.ty, colour8);
+                }
                 core.readbacks.insert(r.slot, readback);
             }
             Command::TexSubImage1D(t) => self.textures.sub_image_1d(ctx, state, t)?,
             Command::CopyTexImage1D(c) => self.textures.copy_image_1d(ctx, state, c)?,
             Command::CopyTexSubImage(c) => self.textures.copy_sub_image(ctx, state, c)?,
             Command::GetTexImage(asked) => {
-                let (format, ty) = pixel_types::read_form(asked.format, asked.ty);
+                // Luminance groups as UNSIGNED_INT: from floats, as Mesa packs them
+                // (`pixel_types::luminance_uint`).
+                let luminance_uint = asked.ty == PixelType::UnsignedInt
+                    && matches!(
+                        asked.format,
+                        PixelFormat::Luminance | PixelFormat::LuminanceAlpha
+                    );
+                let (format, ty) = match luminance_uint {
+                    true => (asked.format, PixelType::Float),
+                    false => pixel_types::read_form(asked.format, asked.ty),
+                };
                 let g = &GetTexImage {
                     format,
                     ty,
                     ..*asked
                 };
                 if let Some(mut r) = self.textures.get_image(gl, state, g)? {
-                    // Colour textures are stored in 8 bits (`TexFormat`).
-                    as_asked(&mut r, asked.format, asked.ty, true);
+                    if luminance_uint {
+                        r.bytes = pixel_types::luminance_uints(&r.bytes);
+                        r.format = asked.format;
+                        r.ty = asked.ty;
+                    } else {
+                        // Colour textures are stored in 8 bits (`TexFormat`).
+                        as_asked(&mut r, asked.format, asked.ty, true);
+                    }
                     core.readbacks.insert(g.slot, r);
                 }
             }
