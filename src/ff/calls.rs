@@ -330,19 +330,18 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let light = c.family(0, Family::Light)?;
             let pname = c.pname(1, LIGHT_PNAMES)?;
             let v = c.f32(2)?;
-            // A vector parameter through the scalar form is (param, 0, 0, 0): Mesa passes
-            // the value on as the first of four, the rest 0 (measured; GL 1.5 names only the
-            // scalars here). glLighti's colours are then integers, mapped as glLightiv's.
+            // A vector parameter is (param, 0, 0, 0) (`first_of_four`); glLighti's colours
+            // are then integers, mapped as glLightiv's.
             let color = || match c.entry() {
                 Entry::Lighti => int_color_first(v),
-                _ => glam::Vec4::new(v, 0.0, 0.0, 0.0),
+                _ => first_of_four(v),
             };
             let param = match pname {
                 "GL_AMBIENT" => LightParam::Ambient(color()),
                 "GL_DIFFUSE" => LightParam::Diffuse(color()),
                 "GL_SPECULAR" => LightParam::Specular(color()),
-                "GL_POSITION" => LightParam::Position(glam::Vec4::new(v, 0.0, 0.0, 0.0)),
-                "GL_SPOT_DIRECTION" => LightParam::SpotDirection(glam::Vec3::new(v, 0.0, 0.0)),
+                "GL_POSITION" => LightParam::Position(first_of_four(v)),
+                "GL_SPOT_DIRECTION" => LightParam::SpotDirection(first_of_four(v).truncate()),
                 p => light_scalar(p, v),
             };
             Command::Light { light, param }
@@ -364,10 +363,10 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 "GL_LIGHT_MODEL_LOCAL_VIEWER" => LightModelParam::LocalViewer(c.boolean(1)?),
                 "GL_LIGHT_MODEL_TWO_SIDE" => LightModelParam::TwoSide(c.boolean(1)?),
                 "GL_LIGHT_MODEL_COLOR_CONTROL" => LightModelParam::ColorControl(c.enm(1)?),
-                // (param, 0, 0, 0), as glLight's vector parameters above (measured).
+                // (param, 0, 0, 0), as glLight's vector parameters above.
                 _ => LightModelParam::Ambient(match c.entry() {
                     Entry::LightModeli => int_color_first(c.f32(1)?),
-                    _ => glam::Vec4::new(c.f32(1)?, 0.0, 0.0, 0.0),
+                    _ => first_of_four(c.f32(1)?),
                 }),
             })
         }
@@ -381,15 +380,6 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             };
             Command::Material { face, param }
         }
-        Entry::Materialf => {
-            c.count(3)?;
-            let face = c.enm(0)?;
-            c.pname(1, &["GL_SHININESS"])?;
-            Command::Material {
-                face,
-                param: MaterialParam::Shininess(c.f32(2)?),
-            }
-        }
         Entry::ColorMaterial => {
             c.count(2)?;
             Command::ColorMaterial {
@@ -402,10 +392,21 @@ pub fn lighting<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
     }))
 }
 
-/// The colour (v, 0, 0, 0) of four signed integers, mapped as GL 1.5 Table 2.9 maps them:
-/// (2c + 1)/(2³² − 1), so 0 is not quite 0 (Mesa's glLighti and glLightModeli, measured).
+/// A vector parameter given through a scalar form (glLightf, glLightModelf, glTexGenf,
+/// glTexEnvf, glFogf and their integer forms): Mesa passes the value on as the first of
+/// four, the rest 0 (measured; GL 1.5 names only the scalars there).
+pub(super) fn first_of_four(v: f32) -> glam::Vec4 {
+    glam::Vec4::new(v, 0.0, 0.0, 0.0)
+}
+
+/// [`first_of_four`] as a colour of four signed integers, mapped as GL 1.5 Table 2.9 maps
+/// them: (2c + 1)/(2³² − 1), so 0 is not quite 0 (Mesa's glLighti and glLightModeli).
 fn int_color_first(v: f32) -> glam::Vec4 {
-    glam::Vec4::from_array([f64::from(v), 0.0, 0.0, 0.0].map(|k| CType::Int.normalized(k)))
+    first_of_four(v)
+        .as_dvec4()
+        .to_array()
+        .map(|k| CType::Int.normalized(k))
+        .into()
 }
 
 pub(super) fn light_scalar(pname: &str, v: f32) -> LightParam {
@@ -638,11 +639,9 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
                 &["GL_TEXTURE_GEN_MODE", "GL_OBJECT_PLANE", "GL_EYE_PLANE"],
             )?;
             let coord = c.enm(0)?;
-            // A plane through the scalar form is (param, 0, 0, 0), as Mesa takes it
-            // (measured; an eye plane is then carried by the inverse modelview as ever).
-            let plane = || -> Result<glam::Vec4, A::Error> {
-                Ok(glam::Vec4::new(c.f32(2)?, 0.0, 0.0, 0.0))
-            };
+            // A plane is (param, 0, 0, 0) (`first_of_four`; an eye plane is then carried by
+            // the inverse modelview as ever).
+            let plane = || c.f32(2).map(first_of_four);
             let param = match pname {
                 "GL_OBJECT_PLANE" => TexGenParam::ObjectPlane(plane()?),
                 "GL_EYE_PLANE" => TexGenParam::EyePlane(plane()?),
@@ -662,15 +661,12 @@ pub fn texturing<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
         }
         Entry::TexEnvi | Entry::TexEnvf => {
             c.count(3)?;
-            // TEXTURE_ENV_COLOR through the scalar form is (param, 0, 0, 0), glTexEnvi's
-            // integer taken as a number, as Mesa takes both (measured: 2 is then clamped
-            // to 1).
+            // TEXTURE_ENV_COLOR is (param, 0, 0, 0) (`first_of_four`), glTexEnvi's integer
+            // taken as a number, as Mesa takes it (measured: 2 is then clamped to 1).
             let env = c.pname(0, &["GL_TEXTURE_ENV"]).is_ok();
             if env && c.pname(1, &["GL_TEXTURE_ENV_COLOR"]).is_ok() {
-                let v = c.f32(2)?;
-                return Ok(Some(Command::TexEnv(TexEnvParam::Color(glam::Vec4::new(
-                    v, 0.0, 0.0, 0.0,
-                )))));
+                let color = first_of_four(c.f32(2)?);
+                return Ok(Some(Command::TexEnv(TexEnvParam::Color(color))));
             }
             Command::TexEnv(env_scalar(c)?)
         }

@@ -45,9 +45,9 @@ fn fog<A: Args>(c: &A) -> Result<FogParam, A::Error> {
         Entry::Fogf | Entry::Fogi => match c.pname(0, FOG_PNAMES)? {
             "GL_FOG_MODE" => FogParam::Mode(c.enm(1)?),
             "GL_FOG_COORD_SRC" => FogParam::CoordSource(c.enm(1)?),
-            // FOG_COLOR through the scalar form is (param, 0, 0, 0), glFogi's integer
-            // taken as a number, as Mesa takes both (measured).
-            "GL_FOG_COLOR" => FogParam::Color(glam::Vec4::new(c.f32(1)?, 0.0, 0.0, 0.0)),
+            // FOG_COLOR is (param, 0, 0, 0) (`calls::first_of_four`), glFogi's integer taken
+            // as a number, as Mesa takes it (measured).
+            "GL_FOG_COLOR" => FogParam::Color(super::calls::first_of_four(c.f32(1)?)),
             p => fog_scalar(p, c.f32(1)?),
         },
         _ => {

@@ -14,7 +14,8 @@
 use super::api::{CType, Entry};
 use super::args::{Args, PixelShape};
 use super::calls::{
-    env_scalar, light_scalar, material_vector, tex_param, LIGHT_PNAMES, MATERIAL_PNAMES,
+    env_scalar, first_of_four, light_scalar, material_vector, tex_param, LIGHT_PNAMES,
+    MATERIAL_PNAMES,
 };
 use super::client::ArrayData;
 use super::command::TexData;
@@ -105,8 +106,8 @@ pub fn variants<A: Args>(c: &A) -> Result<Option<Command>, A::Error> {
             let v = c.f32(2)?;
             let param = match c.pname(1, MATERIAL_PNAMES)? {
                 "GL_SHININESS" => MaterialParam::Shininess(v),
-                "GL_COLOR_INDEXES" => MaterialParam::ColorIndexes(glam::Vec3::new(v, 0.0, 0.0)),
-                p => material_vector(p, glam::Vec4::new(v, 0.0, 0.0, 0.0)),
+                "GL_COLOR_INDEXES" => MaterialParam::ColorIndexes(first_of_four(v).truncate()),
+                p => material_vector(p, first_of_four(v)),
             };
             Command::Material { face, param }
         }

@@ -284,8 +284,22 @@ pub fn model_form(format: PixelFormat, ty: PixelType) -> (PixelFormat, PixelType
 pub fn read_form(format: PixelFormat, ty: PixelType) -> (PixelFormat, PixelType) {
     match model_form(format, ty) {
         (f, _) if matches!(ty, PixelType::Packed(_)) => (f, PixelType::Float),
+        // Mesa packs luminance as UNSIGNED_INT from floats ([`luminance_uint`]).
+        (f, PixelType::UnsignedInt) if is_luminance(f) => (f, PixelType::Float),
         form => form,
     }
+}
+
+/// LUMINANCE or LUMINANCE_ALPHA, which Mesa packs into the 32-bit types through floats.
+fn is_luminance(format: PixelFormat) -> bool {
+    matches!(format, PixelFormat::Luminance | PixelFormat::LuminanceAlpha)
+}
+
+/// The call a readback answers: Mesa packs luminance as INT differently in each.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Packer {
+    ReadPixels,
+    GetTexImage,
 }
 
 /// Whether `format` in `ty` is already the model's own form.
@@ -444,9 +458,31 @@ pub enum ReadFrom {
 }
 
 /// Tight data the pipeline read in the read form of (`format`, `ty`) ([`read_form`])
-/// as glReadPixels and glGetTexImage give it in `format` and `ty`: BGR(A) reordered, signed
-/// and packed types converted from the FLOAT read, from `from`'s storage.
-pub fn from_model(read: &[u8], format: PixelFormat, ty: PixelType, from: ReadFrom) -> Vec<u8> {
+/// as glReadPixels and glGetTexImage (`packer`) give it in `format` and `ty`: BGR(A)
+/// reordered, signed and packed types converted from the FLOAT read, from `from`'s
+/// storage; luminance in the 32-bit types by Mesa's float packing ([`luminance_uint`],
+/// [`luminance_int`]).
+pub fn from_model(
+    read: &[u8],
+    format: PixelFormat,
+    ty: PixelType,
+    from: ReadFrom,
+    packer: Packer,
+) -> Vec<u8> {
+    let each_float = |pack: fn(f32) -> [u8; 4]| -> Vec<u8> {
+        read.chunks_exact(4)
+            .flat_map(|e| pack(read_f32(e)))
+            .collect()
+    };
+    match ty {
+        PixelType::UnsignedInt if is_luminance(format) => {
+            return each_float(|x| luminance_uint(x).to_ne_bytes())
+        }
+        PixelType::Int if is_luminance(format) && packer == Packer::ReadPixels => {
+            return each_float(|x| luminance_int(x).to_ne_bytes())
+        }
+        _ => {}
+    }
     if is_model_form(format, ty) {
         return read.to_vec();
     }
@@ -517,29 +553,13 @@ pub fn from_model(read: &[u8], format: PixelFormat, ty: PixelType, from: ReadFro
     out
 }
 
-/// glReadPixels' LUMINANCE or LUMINANCE_ALPHA groups as INT from the FLOAT read (`read`,
-/// f32 values in the machine's order), each component by [`luminance_int`].
-pub fn luminance_ints(read: &[u8]) -> Vec<u8> {
-    read.chunks_exact(4)
-        .flat_map(|e| luminance_int(read_f32(e)).to_ne_bytes())
-        .collect()
-}
-
-/// glGetTexImage's LUMINANCE or LUMINANCE_ALPHA groups as UNSIGNED_INT from the FLOAT
-/// read, each component by [`luminance_uint`].
-pub fn luminance_uints(read: &[u8]) -> Vec<u8> {
-    read.chunks_exact(4)
-        .flat_map(|e| luminance_uint(read_f32(e)).to_ne_bytes())
-        .collect()
-}
-
 /// A LUMINANCE or LUMINANCE_ALPHA component glReadPixels reads as INT, as Mesa 22.3 packs
 /// it: through floats, (GLint)(x · 2147483647.0f) — the constant a float, 2³¹, so the
 /// product is exact and 1.0 overflows, which x86's truncating conversion gives as INT_MIN
 /// (measured: L = 1.0 reads 0x80000000, 177/255 reads 0x58d8d900 where x · (2³¹ − 1)
 /// would be 0x58d8d8d8). glGetTexImage and the other formats take [`Stored::snorm`]'s
 /// rule, as Mesa does for them.
-pub fn luminance_int(x: f32) -> i32 {
+fn luminance_int(x: f32) -> i32 {
     let p = x * 2_147_483_647.0_f32;
     if p.is_nan() || !(-2_147_483_648.0..2_147_483_648.0).contains(&p) {
         i32::MIN
@@ -552,7 +572,7 @@ pub fn luminance_int(x: f32) -> i32 {
 /// glGetTexImage alike), as Mesa 22.3 packs it: (GLuint)(x · 4294967295.0f), the constant
 /// a float, 2³², the conversion x86's 64-bit truncation keeping the low 32 bits — so 1.0
 /// reads 0 (measured), 177/255 0xb1b1b200.
-pub fn luminance_uint(x: f32) -> u32 {
+fn luminance_uint(x: f32) -> u32 {
     let p = x * 4_294_967_295.0_f32;
     if p.is_nan() {
         0

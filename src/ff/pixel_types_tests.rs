@@ -92,6 +92,7 @@ fn bgra_moves_components_and_keeps_their_bytes() {
         PixelFormat::Bgra,
         PixelType::UnsignedByte,
         ReadFrom::Unorm8,
+        Packer::ReadPixels,
     );
     assert_eq!(&back[..], &[1, 2, 3, 4, 5, 6, 7, 8]);
 }
@@ -131,7 +132,13 @@ fn reads_from_eight_bits_follow_mesas_integer_rules() {
     let read = |u: u8, ty: PixelType| -> Vec<u8> {
         let f = f32::from(u) / 255.0;
         let rgba: Vec<u8> = [f, f, f, f].iter().flat_map(|v| v.to_ne_bytes()).collect();
-        from_model(&rgba, PixelFormat::Rgba, ty, ReadFrom::Unorm8)
+        from_model(
+            &rgba,
+            PixelFormat::Rgba,
+            ty,
+            ReadFrom::Unorm8,
+            Packer::ReadPixels,
+        )
     };
     // Measured: 128 as INT is 0x40404040 (the bits repeated), not round(128/255 · (2³¹−1)).
     assert_eq!(
@@ -159,6 +166,7 @@ fn reads_from_floats_round_and_clamp() {
         PixelFormat::Rgba,
         PixelType::Byte,
         ReadFrom::Float,
+        Packer::ReadPixels,
     );
     assert_eq!(b, [0x81, 64, 0, 127]);
     let p = from_model(
@@ -166,6 +174,7 @@ fn reads_from_floats_round_and_clamp() {
         PixelFormat::Rgba,
         packed(PackedType::UnsignedShort4444),
         ReadFrom::Float,
+        Packer::ReadPixels,
     );
     assert_eq!(u16::from_ne_bytes([p[0], p[1]]), 0xf80f);
 }

@@ -239,12 +239,7 @@ int main(int argc, char **argv) {
    * (x times 2^31 or 2^32 as a float), so a full luminance overflows (INT_MIN; 0). */
   glColor4f(0.5f, 0.4f, 0.3f, 177 / 255.0f);
   glDisable(GL_TEXTURE_2D);
-  glBegin(GL_QUADS);
-  glVertex2f(-1, -1);
-  glVertex2f(1, -1);
-  glVertex2f(1, 1);
-  glVertex2f(-1, 1);
-  glEnd();
+  glRectf(-1, -1, 1, 1);
   static const GLenum luminance_formats[] = {GL_LUMINANCE, GL_LUMINANCE_ALPHA};
   static const GLenum int_types[] = {GL_INT, GL_UNSIGNED_INT};
   for (int f = 0; f < 2; f++)

@@ -29,8 +29,8 @@
 //!   every quad while a face that is not culled has a polygon mode other than FILL, or
 //!   while POLYGON_STIPPLE is on (the module's stages then run for every triangle;
 //!   measured: a filled front quad drawn while back faces are LINE, and a stippled quad,
-//!   are v1–v3; the POLYGON_OFFSET_LINE and _POINT enables change nothing). Under FLAT shading every quad is
-//!   v1–v3 (a non-convex or non-planar quad shows it; a convex planar one looks the same
+//!   are v1–v3; the POLYGON_OFFSET_LINE and _POINT enables change nothing). Under FLAT
+//!   shading every quad is v1–v3 (a non-convex or non-planar quad shows it; a convex planar one looks the same
 //!   either way). Lighting, textures,
 //!   two-sided lighting, culling and the polygon offset enables change nothing; the vertices
 //!   of a trailing partial quad are not looked at. The chunks were measured with arrays
@@ -139,10 +139,11 @@ pub fn clipped(mvp: Mat4, p: Vec4) -> bool {
 
 /// How Mesa's draw module routes a non-indexed QUADS draw: through its pipeline stages,
 /// which split v1–v3, when `staged` (a face that is not culled has a polygon mode other
-/// than FILL, or POLYGON_STIPPLE is on) or when a vertex of the chunk is clipped — outside the clip volume under
-/// `mvp`, or outside an enabled user clip plane (eye-space equation P; outside where
-/// P · (modelview · p) < 0, GL 1.5 §2.12 — false for NaN, as the module's compare).
-pub struct ClipTest {
+/// than FILL, or POLYGON_STIPPLE is on) or when a vertex of the chunk is clipped —
+/// outside the clip volume under `mvp`, or outside an enabled user clip plane (eye-space
+/// equation P; outside where P · (modelview · p) < 0, GL 1.5 §2.12 — false for NaN, as
+/// the module's compare).
+pub struct DrawRoute {
     pub mvp: Mat4,
     pub modelview: Mat4,
     /// The enabled planes' eye-space equations.
@@ -150,9 +151,9 @@ pub struct ClipTest {
     pub staged: bool,
 }
 
-impl ClipTest {
-    /// The test of `state`'s matrices, enabled clip planes, polygon modes and stipple.
-    pub fn of(state: &FixedState) -> ClipTest {
+impl DrawRoute {
+    /// The route under `state`'s matrices, enabled clip planes, polygon modes and stipple.
+    pub fn of(state: &FixedState) -> DrawRoute {
         let modelview = state.modelview_matrix();
         // A culled face takes the other face's mode, as Mesa's state tracker sets the
         // rasteriser's fill modes (front first, then back).
@@ -169,7 +170,7 @@ impl ClipTest {
                 back = front;
             }
         }
-        ClipTest {
+        DrawRoute {
             mvp: state.projection_matrix() * modelview,
             modelview,
             planes: state
@@ -184,7 +185,7 @@ impl ClipTest {
         }
     }
 
-    /// True when the vertex at object position `p` is clipped.
+    /// True when the vertex at object position `p` is clipped (and its chunk staged).
     pub fn clipped(&self, p: Vec4) -> bool {
         if clipped(self.mvp, p) {
             return true;
@@ -203,7 +204,7 @@ impl ClipTest {
 /// chunks with the same diagonal are merged.
 pub fn quad_diagonals(
     g: &Geometry,
-    clip: &ClipTest,
+    clip: &DrawRoute,
     shading: ShadeModel,
 ) -> Vec<(Range<usize>, Diagonal)> {
     let quads = g.vertex_count() / 4;
@@ -284,7 +285,7 @@ mod tests {
         let inside = Vec4::new(0.5, 0.5, 0.0, 1.0);
         let outside = Vec4::new(1.001, 0.0, 0.0, 1.0);
         let mvp = Mat4::IDENTITY;
-        let clip = ClipTest {
+        let clip = DrawRoute {
             mvp,
             modelview: mvp,
             planes: Vec::new(),
@@ -328,7 +329,7 @@ mod tests {
     fn a_vertex_outside_a_user_clip_plane_is_clipped() {
         // x + y + 0.25 ≥ 0 in eye space, the modelview a translation by (0.5, 0, 0).
         let modelview = Mat4::from_translation(glam::Vec3::new(0.5, 0.0, 0.0));
-        let clip = ClipTest {
+        let clip = DrawRoute {
             mvp: modelview,
             modelview,
             planes: vec![Vec4::new(1.0, 1.0, 0.0, 0.25)],
@@ -352,7 +353,7 @@ mod tests {
             [(0..1, Diagonal::V1V3)]
         );
         // The same quad without the plane stays v0–v2, unless the module's stages run.
-        let open = ClipTest {
+        let open = DrawRoute {
             planes: Vec::new(),
             ..clip
         };
@@ -360,7 +361,7 @@ mod tests {
             quad_diagonals(&cut, &open, ShadeModel::Smooth),
             [(0..1, Diagonal::V0V2)]
         );
-        let staged = ClipTest {
+        let staged = DrawRoute {
             staged: true,
             ..open
         };

@@ -516,7 +516,7 @@ impl GpuGeometry {
                 .into_iter()
                 .collect();
         }
-        let clip = assembly::ClipTest::of(state);
+        let clip = assembly::DrawRoute::of(state);
         assembly::quad_diagonals(&self.source, &clip, state.shade_model)
             .into_iter()
             .filter_map(|(quads, diagonal)| {

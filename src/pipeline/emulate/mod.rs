@@ -52,7 +52,7 @@ use self::textures::Textures;
 use super::core::{Core, Issue, PathPipeline};
 use super::framebuffers::FramebufferMirror;
 use super::{Counters, PipelineError, Readback};
-use crate::ff::pixel_types::ReadFrom;
+use crate::ff::pixel_types::{Packer, ReadFrom};
 use crate::ff::texture_calls::GetTexImage;
 use crate::ff::{
     pixel_types, Command, FixedState, Geometry, PixelFormat, PixelType, ReadPixels, TextureTarget,
@@ -550,49 +550,28 @@ impl Issue for Emulate {
                     readback.bytes = bytes;
                 }
                 let colour8 = state.draw_bits(state.framebuffers.window_bits).red == 8;
-                let luminance = matches!(
+                as_asked(
+                    &mut readback,
                     asked.format,
-                    PixelFormat::Luminance | PixelFormat::LuminanceAlpha
+                    asked.ty,
+                    colour8,
+                    Packer::ReadPixels,
                 );
-                if luminance && asked.ty == PixelType::Int {
-                    // Mesa's float packing of luminance groups (`pixel_types::luminance_int`).
-                    readback.bytes = pixel_types::luminance_ints(&readback.bytes);
-                    readback.format = asked.format;
-                    readback.ty = asked.ty;
-                } else {
-                    as_asked(&mut readback, asked.format, asked.ty, colour8);
-                }
                 core.readbacks.insert(r.slot, readback);
             }
             Command::TexSubImage1D(t) => self.textures.sub_image_1d(ctx, state, t)?,
             Command::CopyTexImage1D(c) => self.textures.copy_image_1d(ctx, state, c)?,
             Command::CopyTexSubImage(c) => self.textures.copy_sub_image(ctx, state, c)?,
             Command::GetTexImage(asked) => {
-                // Luminance groups as UNSIGNED_INT: from floats, as Mesa packs them
-                // (`pixel_types::luminance_uint`).
-                let luminance_uint = asked.ty == PixelType::UnsignedInt
-                    && matches!(
-                        asked.format,
-                        PixelFormat::Luminance | PixelFormat::LuminanceAlpha
-                    );
-                let (format, ty) = match luminance_uint {
-                    true => (asked.format, PixelType::Float),
-                    false => pixel_types::read_form(asked.format, asked.ty),
-                };
+                let (format, ty) = pixel_types::read_form(asked.format, asked.ty);
                 let g = &GetTexImage {
                     format,
                     ty,
                     ..*asked
                 };
                 if let Some(mut r) = self.textures.get_image(gl, state, g)? {
-                    if luminance_uint {
-                        r.bytes = pixel_types::luminance_uints(&r.bytes);
-                        r.format = asked.format;
-                        r.ty = asked.ty;
-                    } else {
-                        // Colour textures are stored in 8 bits (`TexFormat`).
-                        as_asked(&mut r, asked.format, asked.ty, true);
-                    }
+                    // Colour textures are stored in 8 bits (`TexFormat`).
+                    as_asked(&mut r, asked.format, asked.ty, true, Packer::GetTexImage);
                     core.readbacks.insert(g.slot, r);
                 }
             }
@@ -640,13 +619,13 @@ impl Issue for Emulate {
 /// A readback in the read form of (`format`, `ty`) as glReadPixels and glGetTexImage give
 /// it (`pixel_types::from_model`): from 8-bit storage when `colour8` and the data is no
 /// depth, from floats otherwise.
-fn as_asked(r: &mut Readback, format: PixelFormat, ty: PixelType, colour8: bool) {
+fn as_asked(r: &mut Readback, format: PixelFormat, ty: PixelType, colour8: bool, packer: Packer) {
     let from = if colour8 && format != PixelFormat::DepthComponent {
         ReadFrom::Unorm8
     } else {
         ReadFrom::Float
     };
-    r.bytes = pixel_types::from_model(&r.bytes, format, ty, from);
+    r.bytes = pixel_types::from_model(&r.bytes, format, ty, from, packer);
     r.format = format;
     r.ty = ty;
 }
@@ -724,19 +703,11 @@ fn read(gl: &glow::Context, r: &ReadPixels) -> Vec<u8> {
                     f32::from_ne_bytes([c[4 * i], c[4 * i + 1], c[4 * i + 2], c[4 * i + 3]])
                 });
                 let l = (p[0] + p[1] + p[2]).min(1.0);
-                // Mesa packs luminance groups as UNSIGNED_INT through floats (`pixel_types::
-                // luminance_uint`); alpha alone it reads straight (above).
-                let pack = |v: f32| match r.ty {
-                    PixelType::UnsignedInt => crate::ff::pixel_types::luminance_uint(v)
-                        .to_ne_bytes()
-                        .to_vec(),
-                    _ => encode(v, r.ty),
-                };
                 match r.format {
-                    PixelFormat::Luminance => out.extend(pack(l)),
+                    PixelFormat::Luminance => out.extend(encode(l, r.ty)),
                     PixelFormat::LuminanceAlpha => {
-                        out.extend(pack(l));
-                        out.extend(pack(p[3]));
+                        out.extend(encode(l, r.ty));
+                        out.extend(encode(p[3], r.ty));
                     }
                     _ => out.extend(encode(p[3], r.ty)),
                 }
