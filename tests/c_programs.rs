@@ -588,6 +588,26 @@ fn pixel_rectangles_draw_and_answer_as_on_mesa() {
     assert_images_match("pixels", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
 
+/// Zoomed images show, pixel for pixel, the image pixels Mesa's show where a pixel centre
+/// lies on a boundary between two of them (zoom 0.5, 1.5, 0.3 …: Mesa's rasteriser rounds
+/// which one), drawn and copied, in the window and in a framebuffer object larger than
+/// the window, colour, depth and stencil.
+#[test]
+fn zoomed_pixel_rectangles_pick_mesas_image_pixels() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("pixel_zoom");
+    assert!(
+        mesa_text.contains("object status                            0x8cd5"),
+        "the framebuffer object was incomplete on Mesa:\n{mesa_text}"
+    );
+    assert_same_text(
+        &mesa_text,
+        &ours_text,
+        5,
+        "a readback of the framebuffer object",
+    );
+    assert_images_match("pixel_zoom", &ours, &mesa, Tolerance::EXACT);
+}
+
 /// tests/c/pixels.c traced with FIXEDFUNC_TRACE replays to the image it rendered: the
 /// trace writes its raster positions, bitmaps, images (unpacked from the program's rows),
 /// copies, transfer and zoom calls as the script dialect, and `replay` draws them again.

@@ -184,6 +184,22 @@ fn transfer_scale_bias_and_fractional_zoom_match() {
     }
 }
 
+/// Zooms whose pixel centres fall on boundaries between image pixels — 0.5, 0.3, 0.7,
+/// 2.5 — draw and copy the image pixels Mesa's native path draws, exactly (Mesa's own
+/// rounding decides; `pipeline::emulate::pixel_fan`).
+#[test]
+fn zoom_ties_pick_the_native_paths_image_pixels() {
+    let img = ubytes(&gradient(12, 10, 4));
+    let src = format!(
+        "{}glPixelZoom(0.5, 0.5);\nglRasterPos2i(1, 1);\nglDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, {img});\n\
+         glPixelZoom(0.3, 0.7);\nglRasterPos2i(10, 2);\nglDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, {img});\n\
+         glPixelZoom(2.5, -0.5);\nglRasterPos2i(20, 46);\nglDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, {img});\n\
+         glPixelZoom(0.5, 1.5);\nglRasterPos2i(2, 20);\nglCopyPixels(20, 36, 12, 10, GL_COLOR);\n",
+        opening()
+    );
+    compare("zoom-ties", &src, FRAME, EXACT);
+}
+
 /// Fragments of an image go through texturing (raster texture coordinates), fog (raster
 /// distance), the alpha test and blending as Mesa draws them.
 #[test]

@@ -16,6 +16,7 @@ use super::cargs::{CArg, CCall, ProgramMemory, CALLER_SLOT};
 use super::AbiError;
 use crate::ff::api::Entry;
 use crate::ff::args::PixelShape;
+use crate::ff::framebuffer::FramebufferTarget;
 use crate::ff::front::{Client, Reply};
 use crate::ff::lists::ListMode;
 use crate::ff::pixel_layout;
@@ -805,7 +806,7 @@ impl Context {
                 (i64::from(target.width()), i64::from(target.height()))
             }
             _ => {
-                let (w, h) = state.read_framebuffer_size()?;
+                let (w, h) = state.framebuffer_size(FramebufferTarget::Read)?;
                 (i64::from(w), i64::from(h))
             }
         };

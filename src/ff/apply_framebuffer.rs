@@ -186,12 +186,13 @@ impl FixedState {
             .level_in(tt, level)
     }
 
-    /// The width and height of the framebuffer object bound for reading: the smallest of
-    /// its attached images' (where every image is, `_mesa_update_framebuffer_visual`);
-    /// `None` for the window or an object without a sized image.
-    pub fn read_framebuffer_size(&self) -> Option<(i32, i32)> {
+    /// The width and height of the framebuffer object bound to `target` (a query of
+    /// `Both` reads the draw binding): the smallest of its attached images' (where every
+    /// image is, `_mesa_update_framebuffer_visual`); `None` for the window or an object
+    /// without a sized image.
+    pub fn framebuffer_size(&self, target: FramebufferTarget) -> Option<(i32, i32)> {
         let f = &self.framebuffers;
-        let name = f.bound(FramebufferTarget::Read);
+        let name = f.bound(target);
         let fb = f.objects.get(&name).filter(|_| name != 0)?;
         fb.attached()
             .filter_map(|(_, a)| match a {

@@ -7,6 +7,7 @@
 //! COLOR_MATERIAL without two-sided lighting — enters the key as one fixed value, so the
 //! rule holds both ways: equal code ⇔ equal key (`key_tests` checks it case by case).
 
+use super::pixel_fan::PixelFan;
 use super::polygon::EdgeRule;
 use crate::ff::{
     AlphaTest, BaseFormat, ColorControl, ColorMaterialMode, Combine, CombineFunc, CombineOperand,
@@ -89,6 +90,10 @@ pub struct VertexKey {
     /// FOG_COORD_SRC). FRAGMENT_DEPTH whenever fog is off, so the unused source splits no
     /// programs.
     pub fog_source: FogCoordSource,
+    /// A glDrawPixels or glCopyPixels fan (`pixel_fan`): the program gives the fragment
+    /// the corners' texture coordinates, whose t this says. Set per draw, `None` from the
+    /// state alone.
+    pub pixel_fan: Option<PixelFan>,
 }
 
 /// A points pass's rasterisation: its shape, and whether sizes are attenuated by
@@ -372,8 +377,9 @@ pub struct FragmentKey {
     pub pixels: Option<PixelSource>,
 }
 
-/// What a pixel rectangle's image gives its fragments (GL 1.5 §3.6.4, §3.7), read with
-/// texelFetch at the fragment's pixel of the zoomed rectangle.
+/// What a pixel rectangle's image gives its fragments (GL 1.5 §3.6.4, §3.7): read at the
+/// fan's interpolated coordinates (`pixel_fan`), a bitmap with texelFetch at the
+/// fragment's pixel of the rectangle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PixelSource {
     /// A colour image: the fragment colour is the image's (in place of the primary colour).
@@ -448,6 +454,7 @@ impl ShaderKey {
                 Some(f) => f.coord_source,
                 None => FogCoordSource::FragmentDepth,
             },
+            pixel_fan: None,
         };
         let combiners = state.register_combiners.get().map(|rc| CombinersKey {
             stages: rc.active_stages().to_vec(),

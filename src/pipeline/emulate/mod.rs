@@ -21,6 +21,7 @@ pub mod glsl;
 pub mod key;
 pub mod line_stipple;
 pub mod outline_dashes;
+pub mod pixel_fan;
 pub mod pixels;
 pub mod polygon;
 pub mod program;
@@ -85,8 +86,8 @@ pub struct Emulate {
     raster: RasterSync,
     precision: Precision,
     framebuffers: FramebufferMirror,
-    /// The bound target's size (the viewport GL starts with): pixel rectangles are drawn
-    /// with it as the viewport (`pixels`).
+    /// The bound target's size (the viewport GL starts with): pixel rectangles drawn into
+    /// the window take it as the viewport (`pixels`).
     target: crate::ff::Viewport,
     /// The texture holding the last pixel rectangle's image (`pixels`).
     pixel_image: Option<glow::Texture>,

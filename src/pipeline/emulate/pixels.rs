@@ -2,7 +2,8 @@
 //! quad over the zoomed rectangle, drawn by the fixed-function program of the state with
 //! its key's `pixels` saying what the image gives the fragment (`key::PixelSource`). The
 //! image — converted on the CPU by `ff::pixels` (transfer scale, bias, shifts, clamps) — is
-//! a texture on [`PIXEL_IMAGE_UNIT`] read with texelFetch.
+//! a texture on [`PIXEL_IMAGE_UNIT`]: an image's quad is Mesa's fan, read with NEAREST at
+//! its interpolated coordinates (`pixel_fan`), a bitmap's a strip read with texelFetch.
 //!
 //! The quad is drawn under a copy of the state ([`rect_state`]) in which the raster
 //! position stands for the vertex (GL 1.5 §3.6.4, §3.7): the current colour and texture
@@ -10,8 +11,8 @@
 //! they were applied when the position was set); the modelview and projection put each
 //! corner at its window position with eye z = 0 (the fog distance Mesa gives rectangles,
 //! where GL gives CURRENT_RASTER_DISTANCE) and window z = CURRENT_RASTER_POSITION's z
-//! (depth range [0, 1]); the viewport is the whole target, so
-//! the rectangle is clipped by the window and the scissor only; FILL, no culling, no
+//! (depth range [0, 1]); the viewport is the whole draw framebuffer (the window, or the
+//! bound object's size), so the rectangle is clipped by the framebuffer and the scissor only; FILL, no culling, no
 //! polygon offset. Everything per fragment — texturing, fog, alpha, stencil and depth tests,
 //! blending, logic op, masks — is the state's.
 //!
@@ -27,8 +28,10 @@ use glam::{Mat4, Vec2, Vec4};
 use glow::HasContext;
 
 use super::key::{PixelSource, ShaderKey};
+use super::pixel_fan::{self, RowOrder};
 use super::polygon::PolygonPass;
 use super::Emulate;
+use crate::ff::framebuffer::FramebufferTarget;
 use crate::ff::pixel_map::PixelMaps;
 use crate::ff::pixel_types;
 use crate::ff::{
@@ -50,13 +53,15 @@ const PIXEL_FOG_DISTANCE: f32 = 0.0;
 /// Mesa's bitmap epsilon: the corner is ⌊x_r − x_o + 10⁻⁴⌋.
 const BITMAP_EPSILON: f32 = 1e-4;
 
-/// One rectangle to draw: its image, lower-left window corner and zoom.
+/// One rectangle to draw: its image, lower-left window corner and zoom, and the order
+/// Mesa's copy of the image would hold its rows in (`pixel_fan`).
 pub struct Rect<'a> {
     pub width: i32,
     pub height: i32,
     pub corner: Vec2,
     pub zoom: PixelZoom,
     pub image: &'a Converted,
+    pub rows: RowOrder,
 }
 
 /// The corner of glDrawPixels and glCopyPixels: the raster position rounded (Mesa).
@@ -82,7 +87,7 @@ pub fn bitmap_corner(state: &FixedState, origin: (f32, f32)) -> Vec2 {
 }
 
 /// The state a rectangle at `corner` is drawn under (see the module note); `target` is the
-/// bound target's size.
+/// whole draw framebuffer, the viewport it is drawn with.
 pub fn rect_state(
     state: &FixedState,
     target: Viewport,
@@ -264,9 +269,10 @@ fn stencil_bytes(s: u8, ty: PixelType) -> Vec<u8> {
     }
 }
 
-/// The image as a texture's bytes: (internal format, format, type, bytes).
-fn image_bytes(image: &Converted) -> (u32, u32, u32, Vec<u8>) {
-    match image {
+/// The image as a texture's bytes, `width` pixels a row: (internal format, format, type,
+/// bytes), its rows in `rows` order (the converted image holds them bottom first).
+fn image_bytes(image: &Converted, width: i32, rows: RowOrder) -> (u32, u32, u32, Vec<u8>) {
+    let (internal, format, ty, bytes): (u32, u32, u32, Vec<u8>) = match image {
         Converted::Color(c) => (
             glow::RGBA32F,
             glow::RGBA,
@@ -283,7 +289,20 @@ fn image_bytes(image: &Converted) -> (u32, u32, u32, Vec<u8>) {
             d.iter().flat_map(|v| v.to_ne_bytes()).collect(),
         ),
         Converted::Stencil(s) => (glow::R8, glow::RED, glow::UNSIGNED_BYTE, s.clone()),
-    }
+    };
+    let bytes = match rows {
+        RowOrder::BottomFirst => bytes,
+        RowOrder::TopFirst => {
+            let texel = match image {
+                Converted::Color(_) => 16,
+                Converted::Depth(_) => 4,
+                Converted::Stencil(_) => 1,
+            };
+            let row = texel * width.max(1) as usize;
+            bytes.chunks(row).rev().flatten().copied().collect()
+        }
+    };
+    (internal, format, ty, bytes)
 }
 
 impl Emulate {
@@ -314,18 +333,31 @@ impl Emulate {
                     corner: bitmap_corner(state, b.origin),
                     zoom: PixelZoom::DEFAULT,
                     image: &image,
+                    rows: RowOrder::BottomFirst,
                 };
                 self.pixel_rect(gl, state, rect, PixelSource::Bitmap)
             }
             Command::DrawPixels(d) => {
                 let image = d.convert(&state.pixel_transfer, &state.pixel_maps);
-                self.draw_converted(gl, state, d.width, d.height, &image)
+                let size = (d.width, d.height);
+                self.draw_converted(gl, state, size, &image, RowOrder::BottomFirst)
             }
+            // Mesa copies the read framebuffer's rows as they are stored.
             Command::CopyPixels(c) => {
                 let image = self.read_rect(gl, state, c);
-                self.draw_converted(gl, state, c.width, c.height, &image)
+                let rows = self.row_order(state.framebuffers.read);
+                self.draw_converted(gl, state, (c.width, c.height), &image, rows)
             }
             _ => Ok(()),
+        }
+    }
+
+    /// How the framebuffer `name` stores its rows: the window top row first when it is
+    /// GL's window-system framebuffer 0 (`Emulate::window_top_row_first`).
+    fn row_order(&self, name: u32) -> RowOrder {
+        match name == 0 && self.window_top_row_first {
+            true => RowOrder::TopFirst,
+            false => RowOrder::BottomFirst,
         }
     }
 
@@ -334,9 +366,9 @@ impl Emulate {
         &mut self,
         gl: &glow::Context,
         state: &FixedState,
-        width: i32,
-        height: i32,
+        (width, height): (i32, i32),
         image: &Converted,
+        rows: RowOrder,
     ) -> Result<(), PipelineError> {
         let source = match image {
             Converted::Color(_) => PixelSource::Color,
@@ -349,6 +381,7 @@ impl Emulate {
             corner: draw_corner(state),
             zoom: state.pixel_zoom,
             image,
+            rows,
         };
         self.pixel_rect(gl, state, rect, source)
     }
@@ -413,7 +446,7 @@ impl Emulate {
                 *ty,
                 glow::PixelUnpackData::Slice(Some(bytes)),
             );
-            // Level 0 alone, complete under NEAREST (texelFetch reads it unfiltered).
+            // Level 0 alone, complete under NEAREST (read unfiltered).
             gl.tex_parameter_i32(
                 glow::TEXTURE_2D,
                 glow::TEXTURE_MIN_FILTER,
@@ -425,6 +458,10 @@ impl Emulate {
                 glow::NEAREST as i32,
             );
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAX_LEVEL, 0);
+            // Mesa's drawpixels sampler: NEAREST, CLAMP_TO_EDGE (`pixel_fan`).
+            for wrap in [glow::TEXTURE_WRAP_S, glow::TEXTURE_WRAP_T] {
+                gl.tex_parameter_i32(glow::TEXTURE_2D, wrap, glow::CLAMP_TO_EDGE as i32);
+            }
         }
         Ok(())
     }
@@ -440,9 +477,22 @@ impl Emulate {
         if rect.width == 0 || rect.height == 0 {
             return Ok(());
         }
-        let bytes = image_bytes(rect.image);
+        let draw_rows = self.row_order(state.framebuffers.draw);
+        let size = match state.framebuffers.draw {
+            0 => None,
+            _ => state.framebuffer_size(FramebufferTarget::Draw),
+        }
+        .unwrap_or((self.target.width, self.target.height));
+        let bytes = image_bytes(rect.image, rect.width, rect.rows);
         self.upload_image(gl, rect.width, rect.height, &bytes)?;
-        let mut base = rect_state(state, self.target, rect.corner, rect.zoom);
+        // Mesa draws into the whole framebuffer, clipped by the scissor alone.
+        let whole = Viewport {
+            x: 0,
+            y: 0,
+            width: size.0,
+            height: size.1,
+        };
+        let mut base = rect_state(state, whole, rect.corner, rect.zoom);
         // Mesa adds the current secondary colour to glBitmap's fragments under COLOR_SUM,
         // and nothing to an image's (measured, tests/c/secondary.c); the fog distance
         // stays PIXEL_FOG_DISTANCE whatever FOG_COORD_SRC says (measured likewise).
@@ -450,22 +500,37 @@ impl Emulate {
             base.color_sum = false;
         }
         base.fog.value.coord_source = crate::ff::FogCoordSource::FragmentDepth;
-        let t = self.target;
-        let ndc = |x: f32, y: f32| {
-            Vec4::new(
-                2.0 * (x - t.x as f32) / t.width.max(1) as f32 - 1.0,
-                2.0 * (y - t.y as f32) / t.height.max(1) as f32 - 1.0,
-                0.0,
-                1.0,
-            )
+        let (quad, pixel_fan) = match source {
+            PixelSource::Bitmap => {
+                let ndc = |x: f32, y: f32| {
+                    Vec4::new(
+                        2.0 * x / size.0.max(1) as f32 - 1.0,
+                        2.0 * y / size.1.max(1) as f32 - 1.0,
+                        0.0,
+                        1.0,
+                    )
+                };
+                let (x0, y0) = (rect.corner.x, rect.corner.y);
+                let (x1, y1) = (x0 + rect.width as f32, y0 + rect.height as f32);
+                let strip = vec![ndc(x0, y0), ndc(x1, y0), ndc(x0, y1), ndc(x1, y1)];
+                (Geometry::new(Primitive::TriangleStrip, strip), None)
+            }
+            _ => {
+                let f = pixel_fan::fan(
+                    rect.corner,
+                    (rect.width, rect.height),
+                    rect.zoom,
+                    size,
+                    draw_rows,
+                    rect.rows,
+                );
+                (
+                    Geometry::new(Primitive::TriangleFan, f.corners.to_vec()),
+                    Some(f.t),
+                )
+            }
         };
-        let (x0, y0) = (rect.corner.x, rect.corner.y);
-        let x1 = x0 + rect.width as f32 * rect.zoom.x;
-        let y1 = y0 + rect.height as f32 * rect.zoom.y;
-        let quad = Arc::new(Geometry::new(
-            Primitive::TriangleStrip,
-            vec![ndc(x0, y0), ndc(x1, y0), ndc(x0, y1), ndc(x1, y1)],
-        ));
+        let quad = Arc::new(quad);
         let passes: Vec<FixedState> = match source {
             PixelSource::StencilBit => std::iter::once(0)
                 .chain((0..8).map(|b| 1u32 << b))
@@ -486,6 +551,7 @@ impl Emulate {
         for s in &passes {
             let mut key = ShaderKey::from_state(s, self.precision);
             key.fragment.pixels = Some(source);
+            key.vertex.pixel_fan = pixel_fan;
             self.draw_pass(gl, s, &key, &pass, super::Drawn::Geometry(&quad))?;
         }
         Ok(())

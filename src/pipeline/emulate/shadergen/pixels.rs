@@ -1,9 +1,10 @@
-//! The fragment code of a pixel rectangle (`key::PixelSource`): the fragment's pixel of the
-//! image is p = ⌊(x_f − x_0)/z_x⌋, ⌊(y_f − y_0)/z_y⌋ (a negative zoom: ⌈…⌉ − 1) for its
-//! window centre (x_f, y_f), the
-//! rectangle's corner (x_0, y_0) and zoom (GL 1.5 §3.6.4: group (n, m) covers
-//! [x_0 + n·z_x, x_0 + (n + 1)·z_x) × …, either sign of zoom); the image is read with
-//! texelFetch, so no filtering or normalisation touches the converted values.
+//! The fragment code of a pixel rectangle (`key::PixelSource`). An image of glDrawPixels
+//! or glCopyPixels is sampled with NEAREST at the texture coordinates the rasteriser
+//! interpolated across its fan (`pixel_fan`: Mesa's quad, so the pixel of the image each
+//! fragment gets is the one Mesa's gives it). A bitmap, never zoomed, is read with
+//! texelFetch at p = ⌊x_f − x_0⌋, ⌊y_f − y_0⌋ for the fragment's window centre (x_f, y_f)
+//! and the rectangle's corner (x_0, y_0) (GL 1.5 §3.7). No filtering or normalisation
+//! touches the converted values either way.
 
 use crate::pipeline::emulate::glsl::GlslWriter;
 use crate::pipeline::emulate::key::PixelSource;
@@ -12,20 +13,17 @@ use crate::pipeline::emulate::uniforms::UniformSource;
 /// Emits the image's effect on `primary` (declared already) or on the fragment.
 pub fn emit(w: &mut GlslWriter, source: PixelSource) {
     let image = w.uniform_typed(UniformSource::PixelImage, "sampler2D");
-    let rect = w.uniform(UniformSource::PixelRect);
-    // A centre on a group boundary (t integral) goes to the group above for a positive
-    // zoom, ⌊t⌋, and to the one below for a negative zoom, ⌈t⌉ − 1, as Mesa's rasteriser
-    // puts it (measured with zoom −1.5: `tests/fidelity_pixels.rs`).
-    w.line(format!(
-        "vec2 t = (gl_FragCoord.xy - {rect}.xy) / {rect}.zw;"
-    ));
-    w.line(format!(
-        "vec2 group = mix(floor(t), ceil(t) - 1.0, lessThan({rect}.zw, vec2(0.0)));"
-    ));
-    w.line(format!(
-        "ivec2 pixel = clamp(ivec2(group), ivec2(0), textureSize({image}, 0) - 1);"
-    ));
-    w.line(format!("vec4 image = texelFetch({image}, pixel, 0);"));
+    if source == PixelSource::Bitmap {
+        let rect = w.uniform(UniformSource::PixelRect);
+        w.line(format!(
+            "ivec2 pixel = clamp(ivec2(floor(gl_FragCoord.xy - {rect}.xy)), ivec2(0), \
+             textureSize({image}, 0) - 1);"
+        ));
+        w.line(format!("vec4 image = texelFetch({image}, pixel, 0);"));
+    } else {
+        w.declare("in vec2 v_pixel_st;");
+        w.line(format!("vec4 image = texture({image}, v_pixel_st);"));
+    }
     match source {
         PixelSource::Color => w.line("primary = image;"),
         PixelSource::Depth => w.line("gl_FragDepth = image.r;"),

@@ -14,6 +14,7 @@ use crate::pipeline::emulate::key::{
     ColorMaterialKey, CoordSource, FragmentKey, LightKey, LightingKey, PointKey, PointShape,
     PositionSource, VertexKey, VertexUnitKey,
 };
+use crate::pipeline::emulate::pixel_fan::PixelFan;
 use crate::pipeline::emulate::uniforms::{ColorTerm, LightValue, MaterialValue, UniformSource};
 
 use super::{
@@ -108,7 +109,22 @@ pub fn generate(key: &VertexKey, fragment: &FragmentKey) -> GlslWriter {
     if fragment.edges.is_some() {
         emit_edge(&mut w);
     }
+    if let Some(fan) = key.pixel_fan {
+        emit_pixel_fan(&mut w, fan);
+    }
     w
+}
+
+/// A pixel rectangle's texture coordinates at the fan's corners (`pixel_fan`): s = 0, 1,
+/// 1, 0 and t = a, a, b, b in drawing order, exact in every corner, for the rasteriser to
+/// interpolate as Mesa's drawpixels quad's.
+fn emit_pixel_fan(w: &mut GlslWriter, fan: PixelFan) {
+    let (a, b) = fan.corner_t();
+    w.declare("out vec2 v_pixel_st;");
+    w.line(format!(
+        "v_pixel_st = vec2(gl_VertexID == 1 || gl_VertexID == 2 ? 1.0 : 0.0, \
+         gl_VertexID < 2 ? {a:?} : {b:?});"
+    ));
 }
 
 /// The vertex colour clamp of GL 1.x (§2.13.6): every colour leaving the vertex stage is
