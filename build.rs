@@ -23,6 +23,7 @@ const MODEL_EXTENSIONS: &[&str] = &[
     "GL_ARB_texture_env_combine",
     "GL_ARB_texture_env_dot3",
     "GL_EXT_stencil_wrap",
+    "GL_EXT_abgr",
     "GL_NV_register_combiners",
     "GL_ARB_framebuffer_object",
     "GL_EXT_framebuffer_object",

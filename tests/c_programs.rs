@@ -588,6 +588,27 @@ fn pixel_rectangles_draw_and_answer_as_on_mesa() {
     assert_images_match("pixels", &ours, &mesa, within_3_on_99_percent(&mesa));
 }
 
+/// GL_ABGR_EXT images (EXT_abgr, which Mesa lists and the layer now lists too) draw, read
+/// and texture as on Mesa, in bytes, the four-component packed types and floats.
+#[test]
+fn abgr_images_draw_read_and_texture_as_on_mesa() {
+    let [(mesa_text, mesa), (ours_text, ours)] = texts_and_images("abgr");
+    assert_mesa_printed(
+        &mesa_text,
+        &[
+            "GL_EXT_abgr listed                       1",
+            "glReadPixels UNSIGNED_BYTE               err 0x0: 10 100 150 200",
+        ],
+    );
+    assert_same_text(
+        &mesa_text,
+        &ours_text,
+        12,
+        "an ABGR call's error or readback",
+    );
+    assert_images_match("abgr", &ours, &mesa, Tolerance::EXACT);
+}
+
 /// Zoomed images show, pixel for pixel, the image pixels Mesa's show where a pixel centre
 /// lies on a boundary between two of them (zoom 0.5, 1.5, 0.3 …: Mesa's rasteriser rounds
 /// which one), drawn and copied, in the window and in a framebuffer object larger than

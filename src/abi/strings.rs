@@ -46,6 +46,7 @@ pub const EXTENSIONS: &[&str] = &[
     "GL_ARB_texture_compression",
     "GL_EXT_texture_compression_s3tc",
     "GL_EXT_bgra",
+    "GL_EXT_abgr",
     "GL_EXT_packed_pixels",
     "GL_SGIS_texture_lod",
     "GL_EXT_texture_lod_bias",

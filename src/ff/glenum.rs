@@ -513,6 +513,7 @@ gl_enums!(PixelFormat {
     BLUE => PixelFormat::Blue,
     BGR => PixelFormat::Bgr,
     BGRA => PixelFormat::Bgra,
+    ABGR_EXT => PixelFormat::Abgr,
     COLOR_INDEX => PixelFormat::ColorIndex,
 });
 

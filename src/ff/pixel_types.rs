@@ -254,7 +254,10 @@ pub fn refused(format: PixelFormat, ty: PixelType) -> Option<GlErrorKind> {
     };
     let fits = match p.components() {
         3 => format == PixelFormat::Rgb,
-        _ => matches!(format, PixelFormat::Rgba | PixelFormat::Bgra),
+        _ => matches!(
+            format,
+            PixelFormat::Rgba | PixelFormat::Bgra | PixelFormat::Abgr
+        ),
     };
     (!fits).then_some(GlErrorKind::InvalidOperation)
 }
@@ -263,7 +266,7 @@ pub fn refused(format: PixelFormat, ty: PixelType) -> Option<GlErrorKind> {
 pub fn model_form(format: PixelFormat, ty: PixelType) -> (PixelFormat, PixelType) {
     let format = match format {
         PixelFormat::Bgr => PixelFormat::Rgb,
-        PixelFormat::Bgra => PixelFormat::Rgba,
+        PixelFormat::Bgra | PixelFormat::Abgr => PixelFormat::Rgba,
         f => f,
     };
     let ty = match (format, ty) {
@@ -307,12 +310,14 @@ pub fn is_model_form(format: PixelFormat, ty: PixelType) -> bool {
     model_form(format, ty) == (format, ty)
 }
 
-/// For BGR and BGRA, the element of the model's group each element of the client's group
-/// comes from (red and blue swap places); `None` for every other format.
+/// For BGR, BGRA and ABGR, the element of the model's group each element of the client's
+/// group comes from (red and blue swap places; ABGR reverses all four); `None` for every
+/// other format.
 fn swizzle(format: PixelFormat) -> Option<&'static [usize]> {
     match format {
         PixelFormat::Bgr => Some(&[2, 1, 0]),
         PixelFormat::Bgra => Some(&[2, 1, 0, 3]),
+        PixelFormat::Abgr => Some(&[3, 2, 1, 0]),
         _ => None,
     }
 }
@@ -350,7 +355,8 @@ pub fn to_model(format: PixelFormat, ty: PixelType, data: Arc<[u8]>) -> Arc<[u8]
     out.into()
 }
 
-/// The order in which the model's group takes the client's elements: BGR(A)'s swizzle,
+/// The order in which the model's group takes the client's elements: BGR(A)'s or ABGR's
+/// swizzle,
 /// or the elements as they come.
 fn client_order(format: PixelFormat) -> Vec<usize> {
     match swizzle(format) {

@@ -78,6 +78,30 @@ fn fields_widen_to_eight_bits_as_mesa_unpacks_them() {
     }
 }
 
+/// ABGR reverses the group both ways, in the model's RGBA and back.
+#[test]
+fn abgr_reverses_each_group() {
+    let data: Arc<[u8]> = vec![1, 2, 3, 4, 5, 6, 7, 8].into();
+    let model = to_model(PixelFormat::Abgr, PixelType::UnsignedByte, data);
+    assert_eq!(&model[..], &[4, 3, 2, 1, 8, 7, 6, 5]);
+    let back = from_model(
+        &model,
+        PixelFormat::Abgr,
+        PixelType::UnsignedByte,
+        ReadFrom::Unorm8,
+        Packer::ReadPixels,
+    );
+    assert_eq!(&back[..], &[1, 2, 3, 4, 5, 6, 7, 8]);
+    assert_eq!(
+        refused(PixelFormat::Abgr, packed(PackedType::UnsignedInt8888)),
+        None
+    );
+    assert_eq!(
+        refused(PixelFormat::Abgr, packed(PackedType::UnsignedShort565)),
+        Some(GlErrorKind::InvalidOperation)
+    );
+}
+
 #[test]
 fn bgra_moves_components_and_keeps_their_bytes() {
     let data: Arc<[u8]> = vec![1, 2, 3, 4, 5, 6, 7, 8].into();

@@ -462,6 +462,7 @@ fn to_rgba(format: PixelFormat, c: &[f32]) -> Vec4 {
         PixelFormat::Rgba => Vec4::new(c[0], c[1], c[2], c[3]),
         PixelFormat::Rgb => Vec4::new(c[0], c[1], c[2], 1.0),
         PixelFormat::Bgra => Vec4::new(c[2], c[1], c[0], c[3]),
+        PixelFormat::Abgr => Vec4::new(c[3], c[2], c[1], c[0]),
         PixelFormat::Bgr => Vec4::new(c[2], c[1], c[0], 1.0),
         PixelFormat::Luminance => Vec4::new(c[0], c[0], c[0], 1.0),
         PixelFormat::LuminanceAlpha => Vec4::new(c[0], c[0], c[0], c[1]),

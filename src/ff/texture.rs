@@ -195,6 +195,9 @@ pub enum PixelFormat {
     /// the layer (`pixel_types`); glReadPixels and glGetTexImage give them.
     Bgr,
     Bgra,
+    /// EXT_abgr's ABGR_EXT: RGBA with its components in reverse order (alpha first), taken
+    /// apart and given back as BGRA is.
+    Abgr,
     /// COLOR_INDEX (GL 1.5 §3.6.4): one index a group, which an RGBA context turns into
     /// a colour through the I_TO_R/G/B/A maps (`index_pixels`). glDrawPixels and the
     /// texture images take it; the layer keeps it in the client's type (GL_BITMAP as
@@ -206,7 +209,7 @@ impl PixelFormat {
     /// Components per pixel.
     pub fn components(self) -> usize {
         match self {
-            PixelFormat::Rgba | PixelFormat::Bgra => 4,
+            PixelFormat::Rgba | PixelFormat::Bgra | PixelFormat::Abgr => 4,
             PixelFormat::Rgb | PixelFormat::Bgr => 3,
             PixelFormat::LuminanceAlpha => 2,
             PixelFormat::Luminance

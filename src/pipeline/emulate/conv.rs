@@ -64,5 +64,8 @@ pub fn pixel_format(f: PixelFormat) -> u32 {
         PixelFormat::Blue => glow::BLUE,
         // Never uploaded as it is: a COLOR_INDEX image is stored through `texel_store`.
         PixelFormat::ColorIndex => glow::RED,
+        // Never uploaded or read as it is: ABGR data is taken apart into RGBA where it
+        // enters the layer and put together from RGBA reads (`pixel_types`).
+        PixelFormat::Abgr => glow::RGBA,
     }
 }

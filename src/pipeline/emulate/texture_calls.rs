@@ -317,6 +317,7 @@ fn convert(stored: &[u8], f: TexFormat, format: PixelFormat, ty: PixelType) -> V
             PixelFormat::Rgba => &[0, 1, 2, 3],
             PixelFormat::Rgb => &[0, 1, 2],
             PixelFormat::Bgra => &[2, 1, 0, 3],
+            PixelFormat::Abgr => &[3, 2, 1, 0],
             PixelFormat::Bgr => &[2, 1, 0],
             PixelFormat::Luminance => &[0],
             PixelFormat::LuminanceAlpha => &[0, 3],
