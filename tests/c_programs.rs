@@ -1342,6 +1342,20 @@ fn internal_formats_of_every_era_sample_as_on_mesa() {
     );
 }
 
+/// `tests/c/stored_bits.c`: glGetTexImage in wide types reads what the texture stores —
+/// packed 4-, 5-, 3-, 10-bit fields through Mesa's floats (an RGB5 alpha of 1.0 as
+/// UNSIGNED_INT wraps to 0), 16-bit components widened as integers — and an RGBA32F
+/// framebuffer reads as INT with Mesa's float packing, every value Mesa's.
+#[test]
+fn textures_of_other_than_8_bits_read_back_as_on_mesa() {
+    let (mesa, ours) = texts("stored_bits");
+    assert_mesa_printed(
+        &mesa,
+        &["RGBA32F read as INT                      err 0x0: -2147483648 1145252992 214748368 0"],
+    );
+    assert_same_text(&mesa, &ours, 80, "a texel read back");
+}
+
 /// `tests/c/pixel_types.c`: GL 1.0's signed types, GL 1.2's packed types and BGR/BGRA,
 /// into textures and glDrawPixels and out of glReadPixels and glGetTexImage, with the
 /// pairs each call refuses; every byte as Mesa gives it (its 5-bit fields widened by

@@ -24,9 +24,11 @@
 //! - a packed field of b bits to 8 bits: its bits repeated for b ≤ 8, rounded for 10
 //!   ([`field_to_unorm8`]), which is what an 8-bit texture or colour buffer keeps: Mesa
 //!   unpacks to 8 bits too, so the model's form loses nothing an 8-bit target keeps;
-//! - 8-bit storage to a signed or packed type: Mesa's integer rules ([`ReadFrom::Unorm8`]);
-//!   float storage: round(clamp(f, −1, 1) · (2ⁿ⁻¹ − 1)) and round(clamp(f, 0, 1) · (2ᵇ − 1)),
-//!   half away from zero.
+//! - 8- and 16-bit storage to a signed or packed type: Mesa's integer rules
+//!   ([`ReadFrom::Unorm8`], [`ReadFrom::Unorm16`]); float storage (and packed storage such
+//!   as RGB5, which Mesa unpacks to floats): round(clamp(f, −1, 1) · (2ⁿ⁻¹ − 1)) and
+//!   round(clamp(f, 0, 1) · (2ᵇ − 1)), half away from zero — INT as Mesa's
+//!   `_mesa_float_to_snorm`, whose float constant is 2³¹ (1.0 wraps to INT_MIN).
 
 use std::sync::Arc;
 
@@ -459,6 +461,9 @@ fn put_group(out: &mut Vec<u8>, values: &[f64], order: &[usize], model_ty: Pixel
 pub enum ReadFrom {
     /// An 8-bit colour buffer or texture: each value read is u / 255 for an integer u.
     Unorm8,
+    /// A texture of 16 bits a component (RGB16, RGBA12, LUMINANCE16 …): each value read
+    /// is u / 65535 for an integer u.
+    Unorm16,
     /// Float, 16-bit or depth storage.
     Float,
 }
@@ -590,7 +595,11 @@ fn luminance_uint(x: f32) -> u32 {
 /// One value read, as the storage held it.
 #[derive(Clone, Copy)]
 enum Stored {
-    Unorm8(u32),
+    /// An unsigned normalised integer `u` of `bits` bits.
+    Unorm {
+        u: u32,
+        bits: u32,
+    },
     Float(f32),
 }
 
@@ -598,19 +607,39 @@ impl Stored {
     fn of(f: f32, from: ReadFrom) -> Stored {
         match from {
             // f = u / 255 in f32: u is recovered exactly.
-            ReadFrom::Unorm8 => Stored::Unorm8((f.clamp(0.0, 1.0) * 255.0).round() as u32),
+            ReadFrom::Unorm8 => Stored::read_unorm(f, 8),
+            ReadFrom::Unorm16 => Stored::read_unorm(f, 16),
             ReadFrom::Float => Stored::Float(f),
         }
     }
 
-    /// As an unsigned field of `bits` bits. From 8 bits, Mesa's `_mesa_unorm_to_unorm`:
-    /// narrower ⌊(u·(2ᵇ − 1) + 127) / 255⌋, wider u·⌊(2ᵇ − 1)/255⌋ + (u >> (8 − b mod 8))
-    /// (its EXTEND_NORMALIZED_INT: the bits repeated; 10 bits: 4u + (u >> 6)); from a
-    /// float, round(clamp(f, 0, 1) · (2ᵇ − 1)).
+    /// f = u / (2ᵇ − 1) in f32: u is recovered exactly.
+    fn read_unorm(f: f32, bits: u32) -> Stored {
+        let max = ((1u64 << bits) - 1) as f32;
+        Stored::Unorm {
+            u: (f.clamp(0.0, 1.0) * max).round() as u32,
+            bits,
+        }
+    }
+
+    /// As an unsigned field of `bits` bits. A field of up to 8 bits is packed from the
+    /// value as 8 bits (Mesa packs such types from bytes: a 16-bit or 10-bit texel into
+    /// 5_6_5 goes through its byte, measured), by Mesa's `unorm_to` rule; a wider field
+    /// from 8 bits by that rule too, from anything else round(clamp(f, 0, 1) · (2ᵇ − 1)).
     fn unorm(self, bits: u32) -> u32 {
         let max = (1u64 << bits) - 1;
         match self {
-            Stored::Unorm8(u) => unorm8_to(u, bits),
+            Stored::Unorm { u, bits: from } if bits <= 8 || from == 8 => {
+                unorm_to(unorm_to(u, from, 8), 8, bits)
+            }
+            Stored::Float(f) if bits <= 8 => {
+                let f = if f.is_nan() { 0.0 } else { f.clamp(0.0, 1.0) };
+                unorm_to((f * 255.0).round_ties_even() as u32, 8, bits)
+            }
+            Stored::Unorm { u, bits: from } => {
+                let f = u as f32 * (1.0 / ((1u64 << from) - 1) as f32);
+                Stored::Float(f).unorm(bits)
+            }
             Stored::Float(f) => {
                 let f = if f.is_nan() { 0.0 } else { f.clamp(0.0, 1.0) };
                 (f64::from(f) * max as f64).round() as u32
@@ -618,30 +647,49 @@ impl Stored {
         }
     }
 
-    /// As a signed element of `bits` bits. From 8 bits, Mesa's `_mesa_unorm_to_snorm`: the
-    /// unsigned conversion to `bits` − 1 bits (255 → 2ⁿ⁻¹ − 1, never negative); from a
-    /// float, round(clamp(f, −1, 1) · (2ⁿ⁻¹ − 1)).
+    /// As a signed element of `bits` bits. From an integer, Mesa's `_mesa_unorm_to_snorm`:
+    /// the unsigned conversion to `bits` − 1 bits (255 → 2ⁿ⁻¹ − 1, never negative); from a
+    /// float, round(clamp(f, −1, 1) · (2ⁿ⁻¹ − 1)), but for 32 bits Mesa's
+    /// `_mesa_float_to_snorm`: the product with the f32 2³¹ (the nearest float to
+    /// 2³¹ − 1) rounded half to even and wrapped, so 1.0 gives INT_MIN (measured: an RGBA4
+    /// texel of 8/15 reads 1145324672 as INT, one of 15/15 −2147483648).
     fn snorm(self, bits: u32) -> i64 {
         match self {
-            Stored::Unorm8(u) => i64::from(unorm8_to(u, bits - 1)),
+            Stored::Unorm { u, bits: from } => i64::from(unorm_to(u, from, bits - 1)),
+            Stored::Float(f) if bits == 32 && (-1.0..=1.0).contains(&f) => {
+                let p = (f * 2_147_483_647.0_f32).round_ties_even();
+                i64::from(p as i64 as i32)
+            }
             Stored::Float(f) => snorm(f, (1i64 << (bits - 1)) - 1),
         }
     }
 }
 
-/// An unsigned 8-bit value as `bits` bits, by Mesa's integer rule (`Stored::unorm`).
-fn unorm8_to(u: u32, bits: u32) -> u32 {
-    let u = u64::from(u.min(255));
-    let max = (1u64 << bits) - 1;
-    let v = match bits.cmp(&8) {
-        std::cmp::Ordering::Less => (u * max + 127) / 255,
+/// An unsigned normalised `u` of `from` bits as `to` bits, by Mesa's integer rule
+/// (`_mesa_unorm_to_unorm`): narrower ⌊(u·(2ᵗᵒ − 1) + 2ᶠʳᵒᵐ⁻¹ − 1) / (2ᶠʳᵒᵐ − 1)⌋, wider
+/// its EXTEND_NORMALIZED_INT — u's bits repeated: 8 to 10 bits 4u + (u >> 6), 16 to 32
+/// bits u·65537, 16 to 31 bits (u << 15) | (u >> 1).
+fn unorm_to(u: u32, from: u32, to: u32) -> u32 {
+    let max = |b: u32| (1u64 << b) - 1;
+    let u = u64::from(u).min(max(from));
+    let v = match to.cmp(&from) {
+        std::cmp::Ordering::Less => (u * max(to) + (1u64 << (from - 1)) - 1) / max(from),
         std::cmp::Ordering::Equal => u,
-        std::cmp::Ordering::Greater => {
-            let rest = bits % 8;
-            u * (max / 255) + if rest == 0 { 0 } else { u >> (8 - rest) }
-        }
+        std::cmp::Ordering::Greater => extend(u, from, to),
     };
     v as u32
+}
+
+/// Mesa's EXTEND_NORMALIZED_INT(x, from, to): x shifted up to `to` bits, the gap below
+/// filled with x's own top bits, again and again while the gap is wider than x.
+fn extend(x: u64, from: u32, to: u32) -> u64 {
+    let gap = to - from;
+    let rest = if from >= gap {
+        x >> (from - gap)
+    } else {
+        extend(x, from, gap)
+    };
+    (x << gap) | rest
 }
 
 /// One component `v` in a signed type, as glReadPixels and glGetTexImage store it from

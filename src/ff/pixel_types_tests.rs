@@ -221,3 +221,25 @@ fn packed_groups_become_bytes_in_the_formats_order() {
     );
     assert_eq!(&m[..], &[0, 0, 255, 255]);
 }
+
+/// Mesa's integer widening and narrowing of unsigned normalised values
+/// (`_mesa_unorm_to_unorm`): the bits repeated going up, rounded going down.
+#[test]
+fn unorm_conversions_follow_mesas_integer_rules() {
+    assert_eq!(unorm_to(4369, 16, 31), 143_165_576); // (u << 15) | (u >> 1)
+    assert_eq!(unorm_to(4369, 16, 32), 286_331_153); // u · 65537
+    assert_eq!(unorm_to(255, 8, 31), i32::MAX as u32);
+    assert_eq!(unorm_to(177, 8, 10), 4 * 177 + (177 >> 6));
+    assert_eq!(unorm_to(65535, 16, 8), 255);
+    assert_eq!(unorm_to(32768, 16, 8), 128);
+    assert_eq!(unorm_to(3, 8, 5), 0); // (3·31 + 127) / 255
+}
+
+/// A float read as INT: the f32 product with 2³¹, so 1.0 wraps to INT_MIN.
+#[test]
+fn a_float_one_reads_as_int_min() {
+    assert_eq!(Stored::Float(1.0).snorm(32), i64::from(i32::MIN));
+    assert_eq!(Stored::Float(0.533_333_36).snorm(32), 1_145_324_672);
+    assert_eq!(Stored::Float(-1.0).snorm(32), i64::from(i32::MIN));
+    assert_eq!(Stored::Float(2.0).snorm(32), i64::from(i32::MAX));
+}

@@ -550,12 +550,15 @@ impl Issue for Emulate {
                 {
                     readback.bytes = bytes;
                 }
-                let colour8 = state.draw_bits(state.framebuffers.window_bits).red == 8;
+                let from = match state.draw_bits(state.framebuffers.window_bits).red {
+                    8 => ReadFrom::Unorm8,
+                    _ => ReadFrom::Float,
+                };
                 as_asked(
                     &mut readback,
                     asked.format,
                     asked.ty,
-                    colour8,
+                    from,
                     Packer::ReadPixels,
                 );
                 core.readbacks.insert(r.slot, readback);
@@ -570,9 +573,8 @@ impl Issue for Emulate {
                     ty,
                     ..*asked
                 };
-                if let Some(mut r) = self.textures.get_image(gl, state, g)? {
-                    // Colour textures are stored in 8 bits (`TexFormat`).
-                    as_asked(&mut r, asked.format, asked.ty, true, Packer::GetTexImage);
+                if let Some((mut r, from)) = self.textures.get_image(gl, state, g)? {
+                    as_asked(&mut r, asked.format, asked.ty, from, Packer::GetTexImage);
                     core.readbacks.insert(g.slot, r);
                 }
             }
@@ -618,13 +620,11 @@ impl Issue for Emulate {
 }
 
 /// A readback in the read form of (`format`, `ty`) as glReadPixels and glGetTexImage give
-/// it (`pixel_types::from_model`): from 8-bit storage when `colour8` and the data is no
-/// depth, from floats otherwise.
-fn as_asked(r: &mut Readback, format: PixelFormat, ty: PixelType, colour8: bool, packer: Packer) {
-    let from = if colour8 && format != PixelFormat::DepthComponent {
-        ReadFrom::Unorm8
-    } else {
-        ReadFrom::Float
+/// it (`pixel_types::from_model`): from the colour storage `from`, from floats for depth.
+fn as_asked(r: &mut Readback, format: PixelFormat, ty: PixelType, from: ReadFrom, packer: Packer) {
+    let from = match format {
+        PixelFormat::DepthComponent => ReadFrom::Float,
+        _ => from,
     };
     r.bytes = pixel_types::from_model(&r.bytes, format, ty, from, packer);
     r.format = format;

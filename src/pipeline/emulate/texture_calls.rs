@@ -11,9 +11,10 @@
 
 use std::ffi::c_void;
 
-use crate::ff::pixel_types;
-use crate::ff::texture::{BaseFormat, PixelFormat, PixelType, TexFormat, TextureTarget};
+use crate::ff::pixel_types::{self, ReadFrom};
+use crate::ff::texture::{BaseFormat, PixelFormat, PixelType, TexFormat, TexLevel, TextureTarget};
 use crate::ff::texture_calls::{CopyTexSubImage, GetTexImage};
+use crate::ff::texture_storage;
 use crate::ff::{CopyTexImage, FixedState, TexSubImage};
 use crate::gpu::GpuContext;
 use crate::pipeline::{PipelineError, Readback};
@@ -255,13 +256,14 @@ impl Textures {
         Ok(())
     }
 
-    /// glGetTexImage of a specified level (`None` for one never specified).
+    /// glGetTexImage of a specified level (`None` for one never specified), in the read
+    /// form of the call's format and type, and the storage its values come from.
     pub fn get_image(
         &mut self,
         gl: &glow::Context,
         state: &FixedState,
         g: &GetTexImage,
-    ) -> Result<Option<Readback>, PipelineError> {
+    ) -> Result<Option<(Readback, ReadFrom)>, PipelineError> {
         let Some(level) = state.get_tex_image_level(g) else {
             return Ok(None);
         };
@@ -269,7 +271,15 @@ impl Textures {
         let f = level.internal_format;
         let (w, h) = (level.width.max(0) as usize, level.height.max(0) as usize);
         let d = level.depth.max(0) as usize;
-        let (format, ty, size) = storage(f);
+        // A byte read is Mesa's own conversion to bytes from any storage (5-bit 3 → 24).
+        let from = match g.ty {
+            PixelType::UnsignedByte => ReadFrom::Unorm8,
+            _ => stored_as(level),
+        };
+        let (format, ty, size) = match (from, storage(f)) {
+            (ReadFrom::Unorm8, s) => s,
+            _ => (glow::RGBA, conv::value(g.ty), 4 * g.ty.size()),
+        };
         let mut stored = vec![0u8; w * h * d * size];
         self.edit(gl, (g.target, name))?;
         unsafe {
@@ -282,15 +292,87 @@ impl Textures {
                 glow::PixelPackData::Slice(Some(&mut stored)),
             );
         }
-        Ok(Some(Readback {
+        let bytes = match from {
+            ReadFrom::Unorm8 => convert(&stored, f, g.format, g.ty),
+            _ => from_core_read(&stored, f.base(), g.format, g.ty),
+        };
+        let readback = Readback {
             width: w as u32,
             height: h as u32,
             depth: (g.target == TextureTarget::Texture3D).then_some(d as u32),
             format: g.format,
             ty: g.ty,
-            bytes: convert(&stored, f, g.format, g.ty),
-        }))
+            bytes,
+        };
+        Ok(Some((readback, from)))
     }
+}
+
+/// The RGBA components (0 R, 1 G, 2 B, 3 A) glGetTexImage gives of each texel in
+/// `format`, in order (Table 6.1: luminance is R).
+fn picked(format: PixelFormat) -> &'static [usize] {
+    match format {
+        PixelFormat::Rgba => &[0, 1, 2, 3],
+        PixelFormat::Rgb => &[0, 1, 2],
+        PixelFormat::Bgra => &[2, 1, 0, 3],
+        PixelFormat::Abgr => &[3, 2, 1, 0],
+        PixelFormat::Bgr => &[2, 1, 0],
+        PixelFormat::Luminance => &[0],
+        PixelFormat::LuminanceAlpha => &[0, 3],
+        PixelFormat::Alpha => &[3],
+        PixelFormat::Red => &[0],
+        PixelFormat::Green => &[1],
+        PixelFormat::Blue => &[2],
+        // Not read here (glGetTexImage refuses them at the call).
+        PixelFormat::DepthComponent | PixelFormat::StencilIndex | PixelFormat::ColorIndex => &[],
+    }
+}
+
+/// What `level`'s texels are stored in, as Mesa converts from it: 8 bits a component
+/// (the base formats and their 8-bit sizes), 16 bits (RGB12, RGBA16, LUMINANCE16 …), or
+/// packed fields of other widths (RGB5, R3_G3_B2, RGBA4, RGB10 …, which Mesa unpacks to
+/// floats) — `texture_storage`.
+fn stored_as(level: &TexLevel) -> ReadFrom {
+    let Some(b) = level.requested.and_then(texture_storage::stored_bits) else {
+        return ReadFrom::Unorm8;
+    };
+    let bits = [b.red, b.green, b.blue, b.alpha, b.luminance, b.intensity];
+    let kept = || bits.into_iter().filter(|&b| b != 0);
+    if kept().all(|b| b == 8) {
+        ReadFrom::Unorm8
+    } else if kept().all(|b| b == 16) {
+        ReadFrom::Unorm16
+    } else {
+        ReadFrom::Float
+    }
+}
+
+/// The texels of a level read from the core texture as RGBA in the read form's `ty` (one
+/// of UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT: `pixel_types::read_form`), as
+/// glGetTexImage gives them in `format`: the core read is Mesa's own conversion from the
+/// stored bits (5-bit 5 as UNSIGNED_SHORT: round(5/31·65535) = 10570, where the byte 41
+/// widened would give 10537), its zeros and ones included (an RGB5 texel's alpha 1.0 reads
+/// 0 as UNSIGNED_INT, through Mesa's float packing). A legacy base is kept in the core
+/// texture's red (and green: `texel_store`).
+fn from_core_read(read: &[u8], base: BaseFormat, format: PixelFormat, ty: PixelType) -> Vec<u8> {
+    let c = ty.size();
+    let mut out = Vec::new();
+    for t in read.chunks_exact(4 * c) {
+        let channel = |k: usize| &t[k * c..(k + 1) * c];
+        // A legacy base's blue is 0 in every storage (R16, RG8, L4A4's RGBA4).
+        let (r, zero, one) = (channel(0), channel(2), channel(3));
+        // Table 6.1: the base components as R, G, B, A.
+        let rgba: [&[u8]; 4] = match base {
+            BaseFormat::Rgba | BaseFormat::Rgb => [r, channel(1), channel(2), channel(3)],
+            BaseFormat::LuminanceAlpha => [r, zero, zero, channel(1)],
+            BaseFormat::Luminance | BaseFormat::Intensity => [r, zero, zero, one],
+            BaseFormat::Alpha | BaseFormat::Depth => [zero, zero, zero, r],
+        };
+        for &k in picked(format) {
+            out.extend_from_slice(rgba[k]);
+        }
+    }
+    out
 }
 
 /// Stored texels as glGetTexImage gives them in `format` and `ty`.
@@ -313,23 +395,7 @@ fn convert(stored: &[u8], f: TexFormat, format: PixelFormat, ty: PixelType) -> V
             BaseFormat::Luminance | BaseFormat::Intensity => [t[0], 0, 0, 255],
             BaseFormat::Alpha | BaseFormat::Depth => [0, 0, 0, t[0]],
         };
-        let picked: &[usize] = match format {
-            PixelFormat::Rgba => &[0, 1, 2, 3],
-            PixelFormat::Rgb => &[0, 1, 2],
-            PixelFormat::Bgra => &[2, 1, 0, 3],
-            PixelFormat::Abgr => &[3, 2, 1, 0],
-            PixelFormat::Bgr => &[2, 1, 0],
-            PixelFormat::Luminance => &[0],
-            PixelFormat::LuminanceAlpha => &[0, 3],
-            PixelFormat::Alpha => &[3],
-            PixelFormat::Red => &[0],
-            PixelFormat::Green => &[1],
-            PixelFormat::Blue => &[2],
-            // Not read here (glGetTexImage refuses them at the call).
-            PixelFormat::DepthComponent | PixelFormat::StencilIndex | PixelFormat::ColorIndex => {
-                &[]
-            }
-        };
+        let picked = picked(format);
         for &k in picked {
             push_unorm8(&mut out, rgba[k], ty);
         }
