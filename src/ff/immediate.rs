@@ -445,9 +445,13 @@ impl Immediate {
     }
 
     /// glVertex: a vertex with the current values of every attribute with an array.
+    /// Outside glBegin/glEnd nothing, and no error: GL 1.5 §2.6.3 leaves such a vertex's
+    /// effect undefined and Mesa ignores it (measured: no error, nothing drawn, the next
+    /// primitive unchanged).
     fn vertex(&mut self, p: Vec4) -> Result<(), Rule> {
-        let open = self.open.as_mut().ok_or("glVertex outside glBegin/glEnd")?;
-        open.vertex(p);
+        if let Some(open) = self.open.as_mut() {
+            open.vertex(p);
+        }
         Ok(())
     }
 

@@ -43,6 +43,7 @@ int main(void) {
   CHECK(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 2, GL_RGBA, GL_UNSIGNED_BYTE, NULL));
   CHECK(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL));
   CHECK(glEnd());
+  CHECK(glVertex2f(0.5f, 0.5f));
   CHECK(glBegin(GL_TRIANGLES); glEnable(GL_LIGHTING); glEnd());
   CHECK(glBegin(GL_TRIANGLES); glBegin(GL_POINTS); glEnd());
   CHECK(glBegin(0x1234));
