@@ -633,17 +633,13 @@ impl Stored {
                 unorm_to(unorm_to(u, from, 8), 8, bits)
             }
             Stored::Float(f) if bits <= 8 => {
-                let f = if f.is_nan() { 0.0 } else { f.clamp(0.0, 1.0) };
-                unorm_to((f * 255.0).round_ties_even() as u32, 8, bits)
+                unorm_to((unit(f) * 255.0).round_ties_even() as u32, 8, bits)
             }
             Stored::Unorm { u, bits: from } => {
                 let f = u as f32 * (1.0 / ((1u64 << from) - 1) as f32);
                 Stored::Float(f).unorm(bits)
             }
-            Stored::Float(f) => {
-                let f = if f.is_nan() { 0.0 } else { f.clamp(0.0, 1.0) };
-                (f64::from(f) * max as f64).round() as u32
-            }
+            Stored::Float(f) => (f64::from(unit(f)) * max as f64).round() as u32,
         }
     }
 
@@ -662,6 +658,15 @@ impl Stored {
             }
             Stored::Float(f) => snorm(f, (1i64 << (bits - 1)) - 1),
         }
+    }
+}
+
+/// A stored float as an unsigned normalised value: clamped to [0, 1], NaN as 0.
+fn unit(f: f32) -> f32 {
+    if f.is_nan() {
+        0.0
+    } else {
+        f.clamp(0.0, 1.0)
     }
 }
 

@@ -46,6 +46,7 @@ use glow::HasContext;
 use self::cache::ProgramCache;
 use self::draw::{GeometryCache, Winding};
 use self::key::{PointCut, PointKey, PositionSource, ShaderKey, SpriteKey};
+use self::pixel_fan::RowOrder;
 use self::program::Program;
 use self::stencil_contents::StencilContents;
 use self::sync::{CoreCalls, RasterSync};
@@ -392,6 +393,15 @@ impl Emulate {
         Ok(())
     }
 
+    /// How the framebuffer `name` stores its rows: the window top row first when it is
+    /// GL's window-system framebuffer 0 (`window_top_row_first`), objects bottom row first.
+    fn row_order(&self, name: u32) -> RowOrder {
+        match name == 0 && self.window_top_row_first {
+            true => RowOrder::TopFirst,
+            false => RowOrder::BottomFirst,
+        }
+    }
+
     /// The raster state of `pass` synced (unless `raster` says GL has it already) and the
     /// geometry drawn, in the corner order the pass draws it with (`draw::Winding`, which
     /// core GL's front face follows).
@@ -403,11 +413,11 @@ impl Emulate {
         geometry: &Arc<Geometry>,
         raster: Raster,
     ) -> Result<(), PipelineError> {
+        let rows = self.row_order(state.framebuffers.draw);
         let gpu = self.geometry.get(gl, geometry)?;
-        let top_row_first = state.framebuffers.draw == 0 && self.window_top_row_first;
-        let winding = match top_row_first {
-            true => Winding::AsGiven,
-            false => gpu.winding(pass, state),
+        let winding = match rows {
+            RowOrder::TopFirst => Winding::AsGiven,
+            RowOrder::BottomFirst => gpu.winding(pass, state),
         };
         if raster == Raster::Sync {
             self.raster.sync(gl, state, Some(pass), winding);

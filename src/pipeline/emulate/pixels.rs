@@ -352,15 +352,6 @@ impl Emulate {
         }
     }
 
-    /// How the framebuffer `name` stores its rows: the window top row first when it is
-    /// GL's window-system framebuffer 0 (`Emulate::window_top_row_first`).
-    fn row_order(&self, name: u32) -> RowOrder {
-        match name == 0 && self.window_top_row_first {
-            true => RowOrder::TopFirst,
-            false => RowOrder::BottomFirst,
-        }
-    }
-
     /// A converted image at the rounded raster position with the pixel zoom.
     fn draw_converted(
         &mut self,
@@ -422,18 +413,32 @@ impl Emulate {
         height: i32,
         image: &(u32, u32, u32, Vec<u8>),
     ) -> Result<(), PipelineError> {
-        let texture = match self.pixel_image {
-            Some(t) => t,
+        let (texture, new) = match self.pixel_image {
+            Some(t) => (t, false),
             None => {
                 let t = unsafe { gl.create_texture() }.map_err(PipelineError::Object)?;
                 self.pixel_image = Some(t);
-                t
+                (t, true)
             }
         };
         let (internal, format, ty, bytes) = image;
         unsafe {
             gl.active_texture(glow::TEXTURE0 + PIXEL_IMAGE_UNIT);
             gl.bind_texture(glow::TEXTURE_2D, Some(texture));
+            if new {
+                // Level 0 alone, complete under NEAREST (read unfiltered), and Mesa's
+                // drawpixels sampler: NEAREST, CLAMP_TO_EDGE (`pixel_fan`). A new image
+                // keeps the object's parameters.
+                for (name, value) in [
+                    (glow::TEXTURE_MIN_FILTER, glow::NEAREST),
+                    (glow::TEXTURE_MAG_FILTER, glow::NEAREST),
+                    (glow::TEXTURE_WRAP_S, glow::CLAMP_TO_EDGE),
+                    (glow::TEXTURE_WRAP_T, glow::CLAMP_TO_EDGE),
+                ] {
+                    gl.tex_parameter_i32(glow::TEXTURE_2D, name, value as i32);
+                }
+                gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAX_LEVEL, 0);
+            }
             gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
             gl.tex_image_2d(
                 glow::TEXTURE_2D,
@@ -446,22 +451,6 @@ impl Emulate {
                 *ty,
                 glow::PixelUnpackData::Slice(Some(bytes)),
             );
-            // Level 0 alone, complete under NEAREST (read unfiltered).
-            gl.tex_parameter_i32(
-                glow::TEXTURE_2D,
-                glow::TEXTURE_MIN_FILTER,
-                glow::NEAREST as i32,
-            );
-            gl.tex_parameter_i32(
-                glow::TEXTURE_2D,
-                glow::TEXTURE_MAG_FILTER,
-                glow::NEAREST as i32,
-            );
-            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAX_LEVEL, 0);
-            // Mesa's drawpixels sampler: NEAREST, CLAMP_TO_EDGE (`pixel_fan`).
-            for wrap in [glow::TEXTURE_WRAP_S, glow::TEXTURE_WRAP_T] {
-                gl.tex_parameter_i32(glow::TEXTURE_2D, wrap, glow::CLAMP_TO_EDGE as i32);
-            }
         }
         Ok(())
     }
@@ -477,7 +466,6 @@ impl Emulate {
         if rect.width == 0 || rect.height == 0 {
             return Ok(());
         }
-        let draw_rows = self.row_order(state.framebuffers.draw);
         let size = match state.framebuffers.draw {
             0 => None,
             _ => state.framebuffer_size(FramebufferTarget::Draw),
@@ -500,37 +488,18 @@ impl Emulate {
             base.color_sum = false;
         }
         base.fog.value.coord_source = crate::ff::FogCoordSource::FragmentDepth;
-        let (quad, pixel_fan) = match source {
-            PixelSource::Bitmap => {
-                let ndc = |x: f32, y: f32| {
-                    Vec4::new(
-                        2.0 * x / size.0.max(1) as f32 - 1.0,
-                        2.0 * y / size.1.max(1) as f32 - 1.0,
-                        0.0,
-                        1.0,
-                    )
-                };
-                let (x0, y0) = (rect.corner.x, rect.corner.y);
-                let (x1, y1) = (x0 + rect.width as f32, y0 + rect.height as f32);
-                let strip = vec![ndc(x0, y0), ndc(x1, y0), ndc(x0, y1), ndc(x1, y1)];
-                (Geometry::new(Primitive::TriangleStrip, strip), None)
-            }
-            _ => {
-                let f = pixel_fan::fan(
-                    rect.corner,
-                    (rect.width, rect.height),
-                    rect.zoom,
-                    size,
-                    draw_rows,
-                    rect.rows,
-                );
-                (
-                    Geometry::new(Primitive::TriangleFan, f.corners.to_vec()),
-                    Some(f.t),
-                )
-            }
-        };
-        let quad = Arc::new(quad);
+        // A bitmap (never zoomed, at an integral corner) covers the same pixels through
+        // the fan and reads its image with texelFetch, not the fan's coordinates.
+        let fan = pixel_fan::fan(
+            rect.corner,
+            (rect.width, rect.height),
+            rect.zoom,
+            size,
+            self.row_order(state.framebuffers.draw),
+            rect.rows,
+        );
+        let pixel_fan = (source != PixelSource::Bitmap).then_some(fan.t);
+        let quad = Arc::new(Geometry::new(Primitive::TriangleFan, fan.corners.to_vec()));
         let passes: Vec<FixedState> = match source {
             PixelSource::StencilBit => std::iter::once(0)
                 .chain((0..8).map(|b| 1u32 << b))
